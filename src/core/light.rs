@@ -1,0 +1,246 @@
+//! Virtual lights (Section 4.2) and what each one delivers at a point P: the incidence vector
+//! L, the distance d, the falloff factor 1/d^f, the spot cone test and the colour I_l
+//! (Eq. 4.1–4.4). Ambient light has no direction and is kept apart, as a sum I_a.
+
+use super::real::{Real, Vector, V3};
+use super::vector::normalize;
+
+/// The falloff exponent f of Eq. 4.3.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Falloff {
+    /// f = 0: I_l = C_l.
+    None,
+    /// f = 1: I_l = C_l / d.
+    Linear,
+    /// f = 2: I_l = C_l / d².
+    Quadratic,
+}
+
+impl Falloff {
+    /// The falloff from its exponent f ∈ {0, 1, 2}.
+    pub fn from_exponent(f: u8) -> Option<Falloff> {
+        match f {
+            0 => Some(Falloff::None),
+            1 => Some(Falloff::Linear),
+            2 => Some(Falloff::Quadratic),
+            _ => None,
+        }
+    }
+
+    /// The exponent f.
+    pub fn exponent(self) -> u8 {
+        match self {
+            Falloff::None => 0,
+            Falloff::Linear => 1,
+            Falloff::Quadratic => 2,
+        }
+    }
+
+    /// The factor 1/d^f, computed as repeated division so that d² is never formed: d = 1e160
+    /// gives 1e-320 in f64 rather than overflowing d² to infinity.
+    #[inline]
+    pub fn factor<R: Real>(self, d: R) -> R {
+        match self {
+            Falloff::None => R::ONE,
+            Falloff::Linear => R::ONE / d,
+            Falloff::Quadratic => R::ONE / d / d,
+        }
+    }
+}
+
+/// The cone of a spot light (Eq. 4.4).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Cone<R: Real> {
+    /// D_l: the unit axis, pointing away from the apex.
+    pub axis: V3<R>,
+    /// γ_l in degrees, 0 ≤ γ ≤ 90: the angle between the axis and the cone's side.
+    pub angle_deg: R,
+    /// cos γ_l, precomputed.
+    pub cos_gamma: R,
+    /// e_l: the exponent of cos ψ.
+    pub exponent: R,
+}
+
+impl<R: Real> Cone<R> {
+    pub fn new(axis: V3<R>, angle_deg: R, exponent: R) -> Self {
+        Cone {
+            axis,
+            angle_deg,
+            cos_gamma: angle_deg.cos_deg(),
+            exponent,
+        }
+    }
+}
+
+/// Where the light is and how its colour decays.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum LightKind<R: Real> {
+    /// A point light at P_l.
+    Point { position: V3<R>, falloff: Falloff },
+    /// A directional light travelling along the unit vector D_l.
+    Directional { direction: V3<R> },
+    /// A spot light: a point light whose flux is restricted to a cone.
+    Spot {
+        position: V3<R>,
+        falloff: Falloff,
+        cone: Cone<R>,
+    },
+}
+
+/// A light other than ambient: its colour C_l and its kind.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Light<R: Real> {
+    pub color: V3<R>,
+    pub kind: LightKind<R>,
+}
+
+/// Whether a light's flux arrives at the point at all.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Reach {
+    /// The light arrives (it may still be behind the surface).
+    Arrives,
+    /// A spot light and the point lies outside its cone (ψ > γ): I_l = 0.
+    OutsideCone,
+    /// The point coincides with the light's position: L is undefined.
+    AtLight,
+}
+
+/// The result of the spot cone test, cos ψ against cos γ (Eq. 4.4).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ConeTest<R: Real> {
+    /// cos ψ = D_l · L.
+    pub cos_psi: R,
+    pub cos_gamma: R,
+    /// ψ ≤ γ (a point on the edge counts as inside).
+    pub inside: bool,
+    /// |cos ψ − cos γ| within rounding: the point sits on the cone's edge.
+    pub on_edge: bool,
+    /// (cos ψ)^e inside the cone, 0 outside.
+    pub factor: R,
+}
+
+/// What one light delivers at P (Eq. 4.1–4.4).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Arrival<R: Real> {
+    /// L: the unit vector from the light to P (the direction of travel for a directional light).
+    pub l: V3<R>,
+    /// d = ‖P − P_l‖; `None` for a directional light.
+    pub distance: Option<R>,
+    /// The falloff f; `None` for a directional light.
+    pub falloff: Option<Falloff>,
+    /// 1/d^f (1 for a directional light).
+    pub falloff_factor: R,
+    /// The spot cone test; `None` for other lights.
+    pub cone: Option<ConeTest<R>>,
+    /// I_l: the light's colour at P.
+    pub i_l: V3<R>,
+    pub reach: Reach,
+}
+
+/// Tolerance of the cone-edge test in units of machine epsilon: a point whose cos ψ lies
+/// within this of cos γ is on the edge, and the edge is lit (DESIGN.md).
+const CONE_EDGE_ULPS: f64 = 4.0;
+
+impl<R: Real> Light<R> {
+    /// What this light delivers at P (Eq. 4.1–4.4).
+    #[inline]
+    pub fn arrive(&self, p: V3<R>) -> Arrival<R> {
+        match self.kind {
+            LightKind::Directional { direction } => Arrival {
+                l: direction,
+                distance: None,
+                falloff: None,
+                falloff_factor: R::ONE,
+                cone: None,
+                i_l: self.color,
+                reach: Reach::Arrives,
+            },
+            LightKind::Point { position, falloff } => self.positional(p, position, falloff, None),
+            LightKind::Spot {
+                position,
+                falloff,
+                cone,
+            } => self.positional(p, position, falloff, Some(cone)),
+        }
+    }
+
+    fn positional(
+        &self,
+        p: V3<R>,
+        position: V3<R>,
+        falloff: Falloff,
+        cone: Option<Cone<R>>,
+    ) -> Arrival<R> {
+        // Compute the incidence vector and the distance, Eq. 4.1.
+        let Some(n) = normalize::<R>(p - position) else {
+            return Arrival {
+                l: V3::<R>::ZERO,
+                distance: Some(R::ZERO),
+                falloff: Some(falloff),
+                falloff_factor: R::ZERO,
+                cone: None,
+                i_l: V3::<R>::ZERO,
+                reach: Reach::AtLight,
+            };
+        };
+        let (l, d) = (n.unit, n.length);
+        // Attenuate by the falloff, Eq. 4.2 and 4.3.
+        let falloff_factor = falloff.factor(d);
+        let mut i_l = self.color * falloff_factor;
+        let mut reach = Reach::Arrives;
+        // Restrict to the cone and weight by cos(ψ)^e, Eq. 4.4.
+        let cone = cone.map(|c| {
+            let cos_psi = c.axis.dot(l);
+            let tol = R::from_f64(CONE_EDGE_ULPS) * R::EPSILON;
+            let inside = cos_psi >= c.cos_gamma - tol;
+            let on_edge = (cos_psi - c.cos_gamma).abs() <= tol;
+            // cos ψ may round a hair outside [0, 1] on the edge of a 90° cone or on the axis.
+            let factor = if inside {
+                cos_psi.max(R::ZERO).min(R::ONE).powf(c.exponent)
+            } else {
+                R::ZERO
+            };
+            ConeTest {
+                cos_psi,
+                cos_gamma: c.cos_gamma,
+                inside,
+                on_edge,
+                factor,
+            }
+        });
+        if let Some(t) = cone {
+            i_l = i_l * t.factor;
+            if !t.inside {
+                reach = Reach::OutsideCone;
+            }
+        }
+        Arrival {
+            l,
+            distance: Some(d),
+            falloff: Some(falloff),
+            falloff_factor,
+            cone,
+            i_l,
+            reach,
+        }
+    }
+
+    /// The light's position, for point and spot lights.
+    pub fn position(&self) -> Option<V3<R>> {
+        match self.kind {
+            LightKind::Point { position, .. } | LightKind::Spot { position, .. } => Some(position),
+            LightKind::Directional { .. } => None,
+        }
+    }
+}
+
+/// All the lights of a problem or scene.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct LightSet<R: Real> {
+    /// I_a: the sum of the ambient lights' colours; `None` when there is no ambient light.
+    pub ambient: Option<V3<R>>,
+    /// The point, directional and spot lights, in the order given.
+    pub lights: Vec<Light<R>>,
+}

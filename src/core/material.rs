@@ -1,0 +1,20 @@
+//! Surface materials (Section 4.3): the colours O_a, O_d, O_s (each already the product k·O),
+//! the shininess n_s and the reflectivity O_r of Section 4.4.
+
+use super::real::{Real, V3};
+
+/// A material as the core uses it. A colour that is `None` was not given; the term that needs
+/// it is not computed (the problem layer decides whether that is an error).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Material<R: Real> {
+    /// O_a = k_a·O_a, Eq. 4.5–4.6.
+    pub o_a: Option<V3<R>>,
+    /// O_d = k_d·O_d, Eq. 4.7–4.8.
+    pub o_d: Option<V3<R>>,
+    /// O_s = k_s·O_s, Eq. 4.9–4.10.
+    pub o_s: Option<V3<R>>,
+    /// n_s ≥ 0, the specular exponent.
+    pub n_s: R,
+    /// O_r, the reflectivity of Section 4.4 (explicit, or equal to O_s).
+    pub o_r: Option<V3<R>>,
+}

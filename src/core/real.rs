@@ -1,0 +1,225 @@
+//! One source for f32 and f64: the [`Real`] scalar trait and its [`Vector`] type.
+//!
+//! The core is written once against these two traits and instantiated for `f32` (with glam's
+//! `Vec3`) and `f64` (with glam's `DVec3`). Only the operations the core uses are here. The trait
+//! is sealed: the core's robustness arguments (ulps, ranges) are made for these two types only.
+
+use std::fmt::{Debug, Display};
+use std::ops::{Add, AddAssign, Div, Mul, Neg, Sub};
+
+mod sealed {
+    pub trait Sealed {}
+    impl Sealed for f32 {}
+    impl Sealed for f64 {}
+}
+
+/// A floating-point scalar the core can run in: `f32` or `f64`.
+pub trait Real:
+    sealed::Sealed
+    + Copy
+    + Debug
+    + Display
+    + Default
+    + PartialOrd
+    + Send
+    + Sync
+    + serde::Serialize
+    + 'static
+    + Add<Output = Self>
+    + Sub<Output = Self>
+    + Mul<Output = Self>
+    + Div<Output = Self>
+    + Neg<Output = Self>
+{
+    /// The three-component vector of this precision (also used for RGB colours).
+    type Vec3: Vector<Self>;
+    /// `"f32"` or `"f64"`, as the CLI and the JSON output name it.
+    const NAME: &'static str;
+    const ZERO: Self;
+    const ONE: Self;
+    const TWO: Self;
+    /// Machine epsilon (the gap between 1 and the next representable number).
+    const EPSILON: Self;
+    /// The largest finite value.
+    const MAX: Self;
+
+    /// Converts from f64, rounding to nearest (may give ±inf for f32; callers check).
+    fn from_f64(x: f64) -> Self;
+    /// Widens to f64 (exact for both precisions).
+    fn to_f64(self) -> f64;
+    fn sqrt(self) -> Self;
+    fn abs(self) -> Self;
+    fn powf(self, e: Self) -> Self;
+    fn max(self, o: Self) -> Self;
+    fn min(self, o: Self) -> Self;
+    fn is_finite(self) -> bool;
+    fn is_nan(self) -> bool;
+    /// Cosine of an angle given in degrees; exact at 0°, 60° and 90°, where the chapter's
+    /// cone tests most often sit on the edge.
+    fn cos_deg(self) -> Self;
+    /// Rounds towards zero to an integer value.
+    fn trunc(self) -> Self;
+}
+
+/// A 3-vector of [`Real`]s: glam's `Vec3` or `DVec3`. Multiplying two vectors is the
+/// component-wise product, which is also the chapter's "multiplication of colours" (Eq. 4.5).
+pub trait Vector<R>:
+    Copy
+    + Debug
+    + PartialEq
+    + Send
+    + Sync
+    + serde::Serialize
+    + Add<Output = Self>
+    + Sub<Output = Self>
+    + Neg<Output = Self>
+    + Mul<R, Output = Self>
+    + Mul<Self, Output = Self>
+    + Div<R, Output = Self>
+    + AddAssign
+{
+    const ZERO: Self;
+    fn new(x: R, y: R, z: R) -> Self;
+    fn splat(v: R) -> Self;
+    fn to_array(self) -> [R; 3];
+    fn dot(self, o: Self) -> R;
+    fn cross(self, o: Self) -> Self;
+    /// The Euclidean length computed naively (may underflow or overflow; see
+    /// [`super::vector::normalize`] for the robust form).
+    fn naive_length(self) -> R;
+    fn abs(self) -> Self;
+    fn max_element(self) -> R;
+    fn min_element(self) -> R;
+    fn is_finite(self) -> bool;
+}
+
+macro_rules! impl_real {
+    ($t:ty, $v:ty, $name:literal) => {
+        impl Real for $t {
+            type Vec3 = $v;
+            const NAME: &'static str = $name;
+            const ZERO: Self = 0.0;
+            const ONE: Self = 1.0;
+            const TWO: Self = 2.0;
+            const EPSILON: Self = <$t>::EPSILON;
+            const MAX: Self = <$t>::MAX;
+
+            #[inline]
+            fn from_f64(x: f64) -> Self {
+                x as $t
+            }
+            #[inline]
+            fn to_f64(self) -> f64 {
+                self as f64
+            }
+            #[inline]
+            fn sqrt(self) -> Self {
+                <$t>::sqrt(self)
+            }
+            #[inline]
+            fn abs(self) -> Self {
+                <$t>::abs(self)
+            }
+            #[inline]
+            fn powf(self, e: Self) -> Self {
+                <$t>::powf(self, e)
+            }
+            #[inline]
+            fn max(self, o: Self) -> Self {
+                <$t>::max(self, o)
+            }
+            #[inline]
+            fn min(self, o: Self) -> Self {
+                <$t>::min(self, o)
+            }
+            #[inline]
+            fn is_finite(self) -> bool {
+                <$t>::is_finite(self)
+            }
+            #[inline]
+            fn is_nan(self) -> bool {
+                <$t>::is_nan(self)
+            }
+            fn cos_deg(self) -> Self {
+                // Exact values where the decimal angle has an exact cosine; elsewhere the
+                // correctly reduced cosine of the radian value.
+                if self == 0.0 {
+                    1.0
+                } else if self == 60.0 {
+                    0.5
+                } else if self == 90.0 {
+                    0.0
+                } else {
+                    <$t>::cos(self.to_radians())
+                }
+            }
+            #[inline]
+            fn trunc(self) -> Self {
+                <$t>::trunc(self)
+            }
+        }
+
+        impl Vector<$t> for $v {
+            const ZERO: Self = <$v>::ZERO;
+            #[inline]
+            fn new(x: $t, y: $t, z: $t) -> Self {
+                <$v>::new(x, y, z)
+            }
+            #[inline]
+            fn splat(v: $t) -> Self {
+                <$v>::splat(v)
+            }
+            #[inline]
+            fn to_array(self) -> [$t; 3] {
+                <$v>::to_array(&self)
+            }
+            #[inline]
+            fn dot(self, o: Self) -> $t {
+                <$v>::dot(self, o)
+            }
+            #[inline]
+            fn cross(self, o: Self) -> Self {
+                <$v>::cross(self, o)
+            }
+            #[inline]
+            fn naive_length(self) -> $t {
+                <$v>::length(self)
+            }
+            #[inline]
+            fn abs(self) -> Self {
+                <$v>::abs(self)
+            }
+            #[inline]
+            fn max_element(self) -> $t {
+                <$v>::max_element(self)
+            }
+            #[inline]
+            fn min_element(self) -> $t {
+                <$v>::min_element(self)
+            }
+            #[inline]
+            fn is_finite(self) -> bool {
+                <$v>::is_finite(self)
+            }
+        }
+    };
+}
+
+impl_real!(f32, glam::Vec3, "f32");
+impl_real!(f64, glam::DVec3, "f64");
+
+/// Shorthand for the vector type of a precision.
+pub type V3<R> = <R as Real>::Vec3;
+
+/// Builds a vector of precision `R` from f64 components.
+#[inline]
+pub fn v3<R: Real>(a: [f64; 3]) -> V3<R> {
+    V3::<R>::new(R::from_f64(a[0]), R::from_f64(a[1]), R::from_f64(a[2]))
+}
+
+/// Widens a vector to f64 components.
+#[inline]
+pub fn to_f64_array<R: Real>(v: V3<R>) -> [f64; 3] {
+    let a = v.to_array();
+    [a[0].to_f64(), a[1].to_f64(), a[2].to_f64()]
+}

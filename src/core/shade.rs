@@ -1,0 +1,297 @@
+//! Phong's model at one point, Eq. 4.16, with the gating of DESIGN.md, recording every
+//! intermediate per light for callers that want it and nothing for callers that do not.
+//!
+//! The caller passes a [`Recorder`]: [`NoRecord`] (the tracer's hot path: no allocation, no
+//! literal values) or a `Vec<LightTerm>` (the solver's explanation). Shadowing is the caller's
+//! business, asked through a [`Visibility`]; the core itself does no I/O and knows no scene.
+
+use super::light::{Arrival, Light, LightSet, Reach};
+use super::material::Material;
+use super::real::{Real, Vector, V3};
+
+/// The point being shaded.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ShadingPoint<R: Real> {
+    /// P.
+    pub p: V3<R>,
+    /// N, unit length.
+    pub n: V3<R>,
+    /// V, unit, from the eye TO the point; `None` when the problem has no viewer.
+    pub v: Option<V3<R>>,
+}
+
+/// Why a light does or does not add diffuse and specular light.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum LightStatus {
+    /// cos θ > 0 and the light arrives: it adds diffuse (and specular where cos φ > 0).
+    Lit,
+    /// cos θ < 0: the light is on the back side of the surface.
+    BehindSurface,
+    /// cos θ = 0: the light lies in the tangent plane.
+    InTangentPlane,
+    /// A spot light and P is outside its cone.
+    OutsideCone,
+    /// P coincides with the light's position.
+    AtLight,
+    /// Something blocks the way from P to the light (decided by the caller).
+    InShadow,
+}
+
+/// Why the specular term is what it is.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum SpecularStatus {
+    /// cos φ > 0 and the light is lit: O_s I_l (cos φ)^n_s.
+    Lit,
+    /// cos φ ≤ 0: the reflection R points away from the viewer.
+    AwayFromViewer,
+    /// The light does not light the front of the surface (see the light's status).
+    LightNotLit,
+    /// No viewer: V, and so cos φ, cannot be computed.
+    NoViewer,
+    /// The material has no specular colour O_s.
+    NoSpecularColor,
+}
+
+/// The specular part of one light's contribution, Eq. 4.9–4.15.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct SpecularTerm<R: Real> {
+    pub status: SpecularStatus,
+    /// R = L − 2(N·L)N, Eq. 4.15 (computed only where needed).
+    pub r: Option<V3<R>>,
+    /// cos φ = −R·V, Eq. 4.10.
+    pub cos_phi: Option<R>,
+    /// (cos φ)^n_s where it was used (status `Lit`).
+    pub cos_phi_pow: Option<R>,
+    /// The gated term (zero unless `Lit`).
+    pub term: V3<R>,
+    /// O_s I_l (−R·V)^n_s without gating; `None` when not recorded, or undefined (a negative
+    /// cos φ raised to a non-integer n_s).
+    pub literal: Option<V3<R>>,
+}
+
+/// Everything one light contributes at P.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct LightTerm<R: Real> {
+    /// The light's position in the scene's list, from 0.
+    pub index: usize,
+    /// L, d, the falloff factor, the cone test and I_l (Eq. 4.1–4.4).
+    pub arrival: Arrival<R>,
+    /// N·L.
+    pub n_dot_l: R,
+    /// cos θ = −N·L, Eq. 4.7.
+    pub cos_theta: R,
+    pub status: LightStatus,
+    /// The gated diffuse term O_d I_l cos θ, Eq. 4.8; `None` when the material has no O_d.
+    pub diffuse: Option<V3<R>>,
+    /// O_d I_l cos θ without gating (recorded only when the recorder asks for detail).
+    pub diffuse_literal: Option<V3<R>>,
+    pub specular: SpecularTerm<R>,
+}
+
+/// The result of shading a point.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Shade<R: Real> {
+    /// O_a I_a, Eq. 4.6; `None` when there is no ambient light or no O_a.
+    pub ambient: Option<V3<R>>,
+    /// Σ diffuse terms.
+    pub diffuse: V3<R>,
+    /// Σ specular terms.
+    pub specular: V3<R>,
+    /// The total, Eq. 4.16 with gating, unclamped.
+    pub color: V3<R>,
+    /// Eq. 4.16 taken literally (no gating); `None` when not recorded or undefined.
+    pub literal: Option<V3<R>>,
+}
+
+/// Receives each light's record. `DETAIL` also asks the core for the literal (ungated) values
+/// and for R and cos φ of lights that do not light the point.
+pub trait Recorder<R: Real> {
+    const DETAIL: bool;
+    fn light(&mut self, term: &LightTerm<R>);
+}
+
+/// Records nothing: the tracer's hot path.
+pub struct NoRecord;
+
+impl<R: Real> Recorder<R> for NoRecord {
+    const DETAIL: bool = false;
+    #[inline(always)]
+    fn light(&mut self, _: &LightTerm<R>) {}
+}
+
+impl<R: Real> Recorder<R> for Vec<LightTerm<R>> {
+    const DETAIL: bool = true;
+    fn light(&mut self, term: &LightTerm<R>) {
+        self.push(*term);
+    }
+}
+
+/// Decides whether a light that faces the point actually reaches it (shadow rays).
+pub trait Visibility<R: Real> {
+    fn visible(&mut self, p: V3<R>, light: &Light<R>, arrival: &Arrival<R>) -> bool;
+}
+
+/// Every light reaches the point: the solver's single-point problems have no occluders.
+pub struct AllVisible;
+
+impl<R: Real> Visibility<R> for AllVisible {
+    #[inline(always)]
+    fn visible(&mut self, _: V3<R>, _: &Light<R>, _: &Arrival<R>) -> bool {
+        true
+    }
+}
+
+/// x^n_s where it is defined: a negative base has a real power only for an integer exponent.
+#[inline]
+fn literal_pow<R: Real>(x: R, n_s: R) -> Option<R> {
+    if x < R::ZERO && n_s.trunc() != n_s {
+        None
+    } else {
+        Some(x.min(R::ONE).powf(n_s))
+    }
+}
+
+/// Shades P with Phong's model, Eq. 4.16, gated as DESIGN.md reads the chapter: a light adds
+/// diffuse and specular only where cos θ > 0, and specular only where also cos φ > 0.
+#[inline]
+pub fn shade<R: Real, Rec: Recorder<R>, Vis: Visibility<R>>(
+    at: &ShadingPoint<R>,
+    m: &Material<R>,
+    lights: &LightSet<R>,
+    visibility: &mut Vis,
+    rec: &mut Rec,
+) -> Shade<R> {
+    // Ambient light, Eq. 4.6.
+    let ambient = match (m.o_a, lights.ambient) {
+        (Some(o_a), Some(i_a)) => Some(o_a * i_a),
+        _ => None,
+    };
+    let mut diffuse = V3::<R>::ZERO;
+    let mut specular = V3::<R>::ZERO;
+    let mut literal = ambient.unwrap_or(V3::<R>::ZERO);
+    let mut literal_defined = true;
+
+    for (index, light) in lights.lights.iter().enumerate() {
+        let arrival = light.arrive(at.p);
+        // Diffuse reflection, cos θ = −N·L, Eq. 4.7–4.8.
+        let n_dot_l = at.n.dot(arrival.l);
+        let cos_theta = -n_dot_l;
+        let mut status = match arrival.reach {
+            Reach::AtLight => LightStatus::AtLight,
+            Reach::OutsideCone => LightStatus::OutsideCone,
+            Reach::Arrives if cos_theta > R::ZERO => LightStatus::Lit,
+            Reach::Arrives if cos_theta < R::ZERO => LightStatus::BehindSurface,
+            Reach::Arrives => LightStatus::InTangentPlane,
+        };
+        if status == LightStatus::Lit && !visibility.visible(at.p, light, &arrival) {
+            status = LightStatus::InShadow;
+        }
+        let lit = status == LightStatus::Lit;
+        let arrives = arrival.reach == Reach::Arrives;
+
+        let diffuse_literal = match m.o_d {
+            Some(o_d) if Rec::DETAIL && arrives => Some(o_d * arrival.i_l * cos_theta),
+            Some(_) if Rec::DETAIL => Some(V3::<R>::ZERO),
+            _ => None,
+        };
+        let diffuse_term = m.o_d.map(|o_d| {
+            if lit {
+                o_d * arrival.i_l * cos_theta
+            } else {
+                V3::<R>::ZERO
+            }
+        });
+        if let Some(t) = diffuse_term {
+            diffuse += t;
+        }
+        if let Some(t) = diffuse_literal {
+            literal += t;
+        }
+
+        // Specular reflection, R = L − 2(N·L)N and cos φ = −R·V, Eq. 4.10 and 4.15.
+        let spec = match (m.o_s, at.v) {
+            (None, _) => SpecularTerm {
+                status: SpecularStatus::NoSpecularColor,
+                r: None,
+                cos_phi: None,
+                cos_phi_pow: None,
+                term: V3::<R>::ZERO,
+                literal: None,
+            },
+            (Some(_), None) => SpecularTerm {
+                status: SpecularStatus::NoViewer,
+                r: None,
+                cos_phi: None,
+                cos_phi_pow: None,
+                term: V3::<R>::ZERO,
+                literal: None,
+            },
+            (Some(_), Some(_)) if !lit && !Rec::DETAIL => SpecularTerm {
+                status: SpecularStatus::LightNotLit,
+                r: None,
+                cos_phi: None,
+                cos_phi_pow: None,
+                term: V3::<R>::ZERO,
+                literal: None,
+            },
+            (Some(o_s), Some(v)) => {
+                let r = arrival.l - at.n * (R::TWO * n_dot_l);
+                let cos_phi = -r.dot(v);
+                let (st, pow, term) = if !lit {
+                    (SpecularStatus::LightNotLit, None, V3::<R>::ZERO)
+                } else if cos_phi > R::ZERO {
+                    // cos φ can round a hair above 1; a huge n_s must not turn that into inf.
+                    let pow = cos_phi.min(R::ONE).powf(m.n_s);
+                    (SpecularStatus::Lit, Some(pow), o_s * arrival.i_l * pow)
+                } else {
+                    (SpecularStatus::AwayFromViewer, None, V3::<R>::ZERO)
+                };
+                let lit_value = if !Rec::DETAIL {
+                    None
+                } else if !arrives {
+                    Some(V3::<R>::ZERO)
+                } else {
+                    literal_pow(cos_phi, m.n_s).map(|p| o_s * arrival.i_l * p)
+                };
+                SpecularTerm {
+                    status: st,
+                    r: Some(r),
+                    cos_phi: Some(cos_phi),
+                    cos_phi_pow: pow,
+                    term,
+                    literal: lit_value,
+                }
+            }
+        };
+        specular += spec.term;
+        if Rec::DETAIL && m.o_s.is_some() && at.v.is_some() {
+            match spec.literal {
+                Some(t) => literal += t,
+                None => literal_defined = false,
+            }
+        }
+
+        rec.light(&LightTerm {
+            index,
+            arrival,
+            n_dot_l,
+            cos_theta,
+            status,
+            diffuse: diffuse_term,
+            diffuse_literal,
+            specular: spec,
+        });
+    }
+
+    // The total, Eq. 4.16.
+    let color = ambient.unwrap_or(V3::<R>::ZERO) + diffuse + specular;
+    Shade {
+        ambient,
+        diffuse,
+        specular,
+        color,
+        literal: (Rec::DETAIL && literal_defined).then_some(literal),
+    }
+}

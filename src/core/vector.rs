@@ -1,0 +1,86 @@
+//! Robust vector operations: lengths and unit vectors that neither underflow nor overflow.
+//!
+//! `x*x + y*y + z*z` underflows to zero for a vector of length 1e-300 and overflows for 1e300 in
+//! f64 (1e-30 and 1e30 in f32). Scaling by the largest component first keeps every square in
+//! [0, 1], so [`normalize`] works for any finite non-zero vector.
+
+use super::real::{Real, Vector, V3};
+
+/// A unit vector together with the length of the vector it came from.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Normalized<R: Real> {
+    pub unit: V3<R>,
+    /// ‖v‖; may be +inf when the true length exceeds the precision's range (|v| near MAX).
+    pub length: R,
+}
+
+/// Normalises `v` without needless underflow or overflow. `None` for a zero or non-finite vector.
+#[inline]
+pub fn normalize<R: Real>(v: V3<R>) -> Option<Normalized<R>> {
+    if !v.is_finite() {
+        return None;
+    }
+    // Scale by the largest magnitude so that the squares stay in [0, 1].
+    let m = v.abs().max_element();
+    if m == R::ZERO {
+        return None;
+    }
+    let w = v / m;
+    let l = w.naive_length(); // in [1, √3]
+    Some(Normalized {
+        unit: w / l,
+        length: m * l,
+    })
+}
+
+/// The robust Euclidean length ‖v‖ (0 for the zero vector).
+#[inline]
+pub fn length<R: Real>(v: V3<R>) -> R {
+    normalize(v).map_or(R::ZERO, |n| n.length)
+}
+
+/// The largest component magnitude of `v`.
+#[inline]
+pub fn max_abs<R: Real>(v: V3<R>) -> R {
+    v.abs().max_element()
+}
+
+/// Whether `v` (a unit-normalised input) differed in length from 1 by more than rounding.
+#[inline]
+pub fn is_unit_length<R: Real>(length: R) -> bool {
+    (length - R::ONE).abs() <= R::from_f64(8.0) * R::EPSILON
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use glam::{DVec3, Vec3};
+
+    fn check_f64(scale: f64) {
+        let n = normalize::<f64>(DVec3::new(3.0, 0.0, 4.0) * scale).unwrap();
+        assert!((n.unit - DVec3::new(0.6, 0.0, 0.8)).abs().max_element() < 1e-15);
+        assert!((n.length / (5.0 * scale) - 1.0).abs() < 1e-15);
+    }
+
+    #[test]
+    fn normalize_survives_tiny_and_huge_vectors_in_f64() {
+        for s in [1e-300, 1e-6, 1.0, 1e6, 1e300] {
+            check_f64(s);
+        }
+    }
+
+    #[test]
+    fn normalize_survives_tiny_and_huge_vectors_in_f32() {
+        for s in [1e-30f32, 1e-6, 1.0, 1e6, 1e30] {
+            let n = normalize::<f32>(Vec3::new(3.0, 0.0, 4.0) * s).unwrap();
+            assert!((n.unit - Vec3::new(0.6, 0.0, 0.8)).abs().max_element() < 1e-6);
+        }
+    }
+
+    #[test]
+    fn zero_and_non_finite_vectors_have_no_direction() {
+        assert!(normalize::<f64>(DVec3::ZERO).is_none());
+        assert!(normalize::<f64>(DVec3::new(f64::NAN, 0.0, 1.0)).is_none());
+        assert!(normalize::<f64>(DVec3::new(f64::INFINITY, 0.0, 1.0)).is_none());
+    }
+}

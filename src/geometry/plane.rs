@@ -1,0 +1,62 @@
+//! An infinite plane through a point with a unit normal.
+
+use super::ray::Ray;
+use crate::core::{Real, Vector, V3};
+
+/// The plane N·(X − Q) = 0.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Plane<R: Real> {
+    /// Q, a point on the plane.
+    pub point: V3<R>,
+    /// N, unit length, as given (not turned towards anything).
+    pub normal: V3<R>,
+}
+
+impl<R: Real> Plane<R> {
+    /// t where the ray's line meets the plane, of either sign: t = N·(Q − O) / (N·D).
+    /// `None` when the line is parallel to the plane (or lies in it).
+    #[inline]
+    pub fn intersect_line(&self, ray: &Ray<R>) -> Option<R> {
+        let denom = self.normal.dot(ray.direction);
+        if denom == R::ZERO {
+            return None;
+        }
+        let t = self.normal.dot(self.point - ray.origin) / denom;
+        t.is_finite().then_some(t)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use glam::DVec3;
+
+    #[test]
+    fn line_meets_plane_behind_the_origin_with_negative_t() {
+        // Exercise 4.3: 18 + 0.2·t/... = 0 along D = (0.8, 0, −0.6) from (8, 4, 6).
+        let n = DVec3::ONE / 3f64.sqrt();
+        let plane = Plane::<f64> {
+            point: DVec3::ZERO,
+            normal: n,
+        };
+        let ray = Ray::<f64> {
+            origin: DVec3::new(8.0, 4.0, 6.0),
+            direction: DVec3::new(0.8, 0.0, -0.6),
+        };
+        let t = plane.intersect_line(&ray).unwrap();
+        assert!((t + 90.0).abs() < 1e-12, "t = {t}");
+    }
+
+    #[test]
+    fn parallel_line_misses_plane() {
+        let plane = Plane::<f64> {
+            point: DVec3::ZERO,
+            normal: DVec3::Z,
+        };
+        let ray = Ray::<f64> {
+            origin: DVec3::new(0.0, 0.0, 1.0),
+            direction: DVec3::X,
+        };
+        assert_eq!(plane.intersect_line(&ray), None);
+    }
+}

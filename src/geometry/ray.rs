@@ -1,0 +1,19 @@
+//! A ray: an origin and a unit direction.
+
+use crate::core::{Real, V3};
+
+/// A ray O + tD with a unit direction D.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Ray<R: Real> {
+    pub origin: V3<R>,
+    /// Unit length.
+    pub direction: V3<R>,
+}
+
+impl<R: Real> Ray<R> {
+    /// The point O + tD.
+    #[inline]
+    pub fn at(&self, t: R) -> V3<R> {
+        self.origin + self.direction * t
+    }
+}

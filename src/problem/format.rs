@@ -1,0 +1,301 @@
+//! The JSON problem format, as read from a file: plain serde types that mirror the file, with
+//! unknown fields rejected everywhere. [`super::validate`] turns them into the core's types.
+//!
+//! The same types derive the JSON Schema that `phong schema` prints, so the two cannot drift.
+
+use std::collections::BTreeMap;
+use std::fmt;
+
+use schemars::JsonSchema;
+use serde::de::{self, MapAccess, SeqAccess, Visitor};
+use serde::{Deserialize, Deserializer};
+
+/// An RGB colour or a 3-vector, `[x, y, z]`.
+pub type Triple = [f64; 3];
+
+/// A problem (or, with a camera in a later version, a scene). It names only what its question
+/// needs: a material and an ambient light (4.1); a point, normal, viewer, lights and material
+/// (4.2); a ray and surfaces whose nearest hit gives the point and normal (4.3).
+#[derive(Debug, Clone, Deserialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+#[schemars(title = "phong problem")]
+pub struct ProblemFile {
+    /// The schema this file follows (ignored; lets editors validate the file).
+    #[serde(rename = "$schema", default)]
+    pub schema: Option<String>,
+    /// A short title, such as "Exercise 4.2".
+    #[serde(default)]
+    pub title: Option<String>,
+    /// The question as the exercise words it.
+    #[serde(default)]
+    pub question: Option<String>,
+    /// Named materials, referred to by name from `point.material` or `surfaces[i].material`.
+    #[serde(default)]
+    pub materials: BTreeMap<String, MaterialSpec>,
+    /// The lights: ambient, point, directional and spot, in any order.
+    #[serde(default)]
+    pub lights: Vec<LightSpec>,
+    /// E: the position of the viewer (observer). Needed for the specular term.
+    #[serde(default)]
+    pub viewer: Option<Triple>,
+    /// A point problem: the point being shaded. Give either `point` or `ray` + `surfaces`.
+    #[serde(default)]
+    pub point: Option<PointSpec>,
+    /// A ray problem: the ray whose nearest hit (t > 0) with `surfaces` is shaded.
+    #[serde(default)]
+    pub ray: Option<RaySpec>,
+    /// The surfaces of a ray problem.
+    #[serde(default)]
+    pub surfaces: Vec<SurfaceSpec>,
+}
+
+/// The point being shaded. `position` is needed by point and spot lights and by the viewer;
+/// `normal` by every light other than ambient.
+#[derive(Debug, Clone, Deserialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct PointSpec {
+    /// P.
+    #[serde(default)]
+    pub position: Option<Triple>,
+    /// N (normalised if its length is not 1; the explanation says so).
+    #[serde(default)]
+    pub normal: Option<Triple>,
+    /// The material at P: a name from `materials`, or a material written in place.
+    pub material: MaterialRef,
+}
+
+/// A ray: origin and direction (normalised if its length is not 1).
+#[derive(Debug, Clone, Deserialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct RaySpec {
+    pub origin: Triple,
+    pub direction: Triple,
+}
+
+/// A surface of a ray problem.
+#[derive(Debug, Clone, Deserialize, JsonSchema)]
+#[serde(tag = "type", rename_all = "snake_case", deny_unknown_fields)]
+pub enum SurfaceSpec {
+    /// The plane through `point` with normal `normal` (used as given, normalised).
+    Plane {
+        point: Triple,
+        normal: Triple,
+        material: MaterialRef,
+    },
+    /// The sphere with centre `center` and radius `radius` > 0; its normal points outward.
+    Sphere {
+        center: Triple,
+        radius: f64,
+        material: MaterialRef,
+    },
+}
+
+/// A light. Colours are RGB, each component ≥ 0 (values above 1 are allowed for lights).
+#[derive(Debug, Clone, Deserialize, JsonSchema)]
+#[serde(tag = "type", rename_all = "snake_case", deny_unknown_fields)]
+pub enum LightSpec {
+    /// Ambient light I_a (Eq. 4.5–4.6). Several ambient lights add up.
+    Ambient {
+        color: Triple,
+        #[serde(default)]
+        name: Option<String>,
+    },
+    /// A point light at `position` with colour C_l and falloff f ∈ {0, 1, 2} (Eq. 4.1–4.3).
+    Point {
+        position: Triple,
+        color: Triple,
+        /// f: 0 none, 1 linear, 2 quadratic (Eq. 4.3).
+        falloff: f64,
+        #[serde(default)]
+        name: Option<String>,
+    },
+    /// A directional light travelling along `direction` (D_l), no falloff.
+    Directional {
+        direction: Triple,
+        color: Triple,
+        #[serde(default)]
+        name: Option<String>,
+    },
+    /// A spot light (Eq. 4.4): apex `position`, cone axis `axis` (D_l), half-angle `angle`
+    /// γ in degrees (0–90), exponent e ≥ 0 and falloff f ∈ {0, 1, 2}.
+    Spot {
+        position: Triple,
+        axis: Triple,
+        /// γ_l in degrees, between the axis and the cone's side, 0 ≤ γ ≤ 90.
+        angle: f64,
+        /// e_l ≥ 0.
+        exponent: f64,
+        color: Triple,
+        /// f: 0 none, 1 linear, 2 quadratic (Eq. 4.3).
+        falloff: f64,
+        #[serde(default)]
+        name: Option<String>,
+    },
+}
+
+impl LightSpec {
+    pub fn name(&self) -> Option<&str> {
+        match self {
+            LightSpec::Ambient { name, .. }
+            | LightSpec::Point { name, .. }
+            | LightSpec::Directional { name, .. }
+            | LightSpec::Spot { name, .. } => name.as_deref(),
+        }
+    }
+
+    pub fn kind(&self) -> &'static str {
+        match self {
+            LightSpec::Ambient { .. } => "ambient",
+            LightSpec::Point { .. } => "point",
+            LightSpec::Directional { .. } => "directional",
+            LightSpec::Spot { .. } => "spot",
+        }
+    }
+}
+
+/// A material. Every field is optional: give what the question uses. A term whose light and
+/// geometry are present but whose colour is missing is an error that names the field.
+#[derive(Debug, Clone, Default, Deserialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct MaterialSpec {
+    /// O_a (or k_a and O_a), Eq. 4.5–4.6.
+    #[serde(default)]
+    pub ambient: Option<ColorSpec>,
+    /// O_d (or k_d and O_d), Eq. 4.7–4.8.
+    #[serde(default)]
+    pub diffuse: Option<ColorSpec>,
+    /// O_s (or k_s and O_s), Eq. 4.9–4.10.
+    #[serde(default)]
+    pub specular: Option<ColorSpec>,
+    /// n_s ≥ 0, Eq. 4.9.
+    #[serde(default)]
+    pub shininess: Option<f64>,
+    /// O_r (Section 4.4): an RGB colour, or "specular" to take O_r = O_s.
+    #[serde(default)]
+    pub reflectivity: Option<ReflectivitySpec>,
+}
+
+/// A material colour: `[r, g, b]` (the product k·O) or `{"k": k, "color": [r, g, b]}`.
+#[derive(Debug, Clone, Copy, PartialEq, JsonSchema)]
+#[serde(untagged)]
+pub enum ColorSpec {
+    /// The product k·O, as one RGB colour.
+    Rgb(Triple),
+    /// A coefficient 0 ≤ k ≤ 1 and a colour O.
+    Scaled(ScaledColor),
+}
+
+/// A coefficient k and a colour O; the material colour is k·O.
+#[derive(Debug, Clone, Copy, PartialEq, Deserialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct ScaledColor {
+    pub k: f64,
+    pub color: Triple,
+}
+
+impl ColorSpec {
+    /// The product k·O.
+    pub fn product(&self) -> Triple {
+        match *self {
+            ColorSpec::Rgb(c) => c,
+            ColorSpec::Scaled(ScaledColor { k, color }) => color.map(|c| k * c),
+        }
+    }
+}
+
+/// The reflectivity O_r: an RGB colour, or the word "specular" for O_r = O_s.
+#[derive(Debug, Clone, Copy, PartialEq, JsonSchema)]
+#[serde(untagged)]
+pub enum ReflectivitySpec {
+    Rgb(Triple),
+    /// Always "specular".
+    Same(SameAsSpecular),
+}
+
+/// The word "specular".
+#[derive(Debug, Clone, Copy, PartialEq, JsonSchema)]
+pub enum SameAsSpecular {
+    #[serde(rename = "specular")]
+    Specular,
+}
+
+/// A material: the name of one in `materials`, or one written in place.
+#[derive(Debug, Clone, JsonSchema)]
+#[serde(untagged)]
+pub enum MaterialRef {
+    Name(String),
+    Inline(MaterialSpec),
+}
+
+// Hand-written deserializers for the "either" types: serde's untagged enums would replace the
+// precise error ("unknown field `difuse`") with "data did not match any variant".
+
+impl<'de> Deserialize<'de> for ColorSpec {
+    fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        struct V;
+        impl<'de> Visitor<'de> for V {
+            type Value = ColorSpec;
+            fn expecting(&self, f: &mut fmt::Formatter) -> fmt::Result {
+                f.write_str("a colour [r, g, b] or {\"k\": k, \"color\": [r, g, b]}")
+            }
+            fn visit_seq<A: SeqAccess<'de>>(self, seq: A) -> Result<ColorSpec, A::Error> {
+                Triple::deserialize(de::value::SeqAccessDeserializer::new(seq)).map(ColorSpec::Rgb)
+            }
+            fn visit_map<A: MapAccess<'de>>(self, map: A) -> Result<ColorSpec, A::Error> {
+                ScaledColor::deserialize(de::value::MapAccessDeserializer::new(map))
+                    .map(ColorSpec::Scaled)
+            }
+        }
+        d.deserialize_any(V)
+    }
+}
+
+impl<'de> Deserialize<'de> for ReflectivitySpec {
+    fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        struct V;
+        impl<'de> Visitor<'de> for V {
+            type Value = ReflectivitySpec;
+            fn expecting(&self, f: &mut fmt::Formatter) -> fmt::Result {
+                f.write_str("a colour [r, g, b] or the word \"specular\"")
+            }
+            fn visit_seq<A: SeqAccess<'de>>(self, seq: A) -> Result<ReflectivitySpec, A::Error> {
+                Triple::deserialize(de::value::SeqAccessDeserializer::new(seq))
+                    .map(ReflectivitySpec::Rgb)
+            }
+            fn visit_str<E: de::Error>(self, s: &str) -> Result<ReflectivitySpec, E> {
+                if s == "specular" {
+                    Ok(ReflectivitySpec::Same(SameAsSpecular::Specular))
+                } else {
+                    Err(E::invalid_value(de::Unexpected::Str(s), &self))
+                }
+            }
+        }
+        d.deserialize_any(V)
+    }
+}
+
+impl<'de> Deserialize<'de> for MaterialRef {
+    fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        struct V;
+        impl<'de> Visitor<'de> for V {
+            type Value = MaterialRef;
+            fn expecting(&self, f: &mut fmt::Formatter) -> fmt::Result {
+                f.write_str("the name of a material in \"materials\", or a material object")
+            }
+            fn visit_str<E: de::Error>(self, s: &str) -> Result<MaterialRef, E> {
+                Ok(MaterialRef::Name(s.to_owned()))
+            }
+            fn visit_map<A: MapAccess<'de>>(self, map: A) -> Result<MaterialRef, A::Error> {
+                MaterialSpec::deserialize(de::value::MapAccessDeserializer::new(map))
+                    .map(MaterialRef::Inline)
+            }
+        }
+        d.deserialize_any(V)
+    }
+}
+
+/// The JSON Schema of the problem format, pretty-printed.
+pub fn schema_json() -> String {
+    let schema = schemars::schema_for!(ProblemFile);
+    serde_json::to_string_pretty(&schema).expect("a schema always serialises")
+}

@@ -1,0 +1,556 @@
+//! Validation: turns a parsed [`ProblemFile`] into a [`Problem`] in precision `R`, or says which
+//! field is wrong and how to fix it. Every number is checked to be finite in `R`; every vector
+//! that is used as a direction to be non-zero; every term the question needs to have its inputs.
+
+use super::error::Invalid;
+use super::format::{
+    ColorSpec, LightSpec, MaterialRef, MaterialSpec, ProblemFile, ReflectivitySpec, ScaledColor,
+    SurfaceSpec, Triple,
+};
+use super::model::{
+    AmbientInfo, GivenVector, LightInfo, NamedMaterial, Problem, ReflectivitySource, Surface,
+    Target,
+};
+use crate::core::vector::{is_unit_length, normalize};
+use crate::core::{Cone, Falloff, Light, LightKind, LightSet, Material, Real, Vector, V3};
+use crate::geometry::{Plane, Ray, Shape, Sphere};
+
+/// Validates a parsed problem in precision `R`.
+pub fn validate<R: Real>(file: &ProblemFile) -> Result<Problem<R>, Invalid> {
+    let (lights, light_info, ambient_info) = lights::<R>(&file.lights)?;
+    let viewer = file
+        .viewer
+        .map(|v| vector::<R>(v, "viewer"))
+        .transpose()?;
+    let first_light = light_info.first().map(|i| light_label(i.file_index, i.kind));
+    let has_ambient = !ambient_info.is_empty();
+
+    let target = match (&file.point, &file.ray) {
+        (Some(_), Some(_)) => {
+            return Err(Invalid::new(
+                "ray",
+                "the problem gives both \"point\" and \"ray\"",
+                "give either a point (with its normal) or a ray with surfaces, not both",
+            ))
+        }
+        (None, None) => {
+            return Err(Invalid::new(
+                "point",
+                "the problem has nothing to shade",
+                "give \"point\" (with \"material\", and \"position\" and \"normal\" where lights \
+                 need them) or \"ray\" with \"surfaces\"",
+            ))
+        }
+        (Some(point), None) => {
+            if !file.surfaces.is_empty() {
+                return Err(Invalid::new(
+                    "surfaces",
+                    "surfaces are only used by a ray problem, and this problem gives a point",
+                    "remove \"surfaces\", or replace \"point\" with a \"ray\"",
+                ));
+            }
+            let position = point
+                .position
+                .map(|p| vector::<R>(p, "point.position"))
+                .transpose()?;
+            let normal = point
+                .normal
+                .map(|n| direction::<R>(n, "point.normal", "the normal N"))
+                .transpose()?;
+            let (mat_field, material) = resolve_material::<R>(file, &point.material, "point.material")?;
+            let needs = Needs {
+                ambient: has_ambient,
+                diffuse: first_light.clone(),
+                specular: viewer.and(first_light.clone()),
+            };
+            needs.check(&material.spec, &mat_field)?;
+            // Point and normal: only where the question needs them.
+            let positional = light_info
+                .iter()
+                .zip(&lights.lights)
+                .find(|(_, l)| l.position().is_some());
+            if position.is_none() {
+                if let Some((info, _)) = positional {
+                    return Err(Invalid::new(
+                        "point.position",
+                        format!(
+                            "missing: {} needs P for L and d (Eq. 4.1)",
+                            light_label(info.file_index, info.kind)
+                        ),
+                        "add \"position\": [x, y, z] to \"point\"",
+                    ));
+                }
+                if viewer.is_some() {
+                    return Err(Invalid::new(
+                        "point.position",
+                        "missing: the viewer needs P for V = (P − E)/‖P − E‖",
+                        "add \"position\": [x, y, z] to \"point\", or remove \"viewer\"",
+                    ));
+                }
+            }
+            if normal.is_none() {
+                if let Some(l) = &first_light {
+                    return Err(Invalid::new(
+                        "point.normal",
+                        format!("missing: {l} needs N for cos θ = −N·L (Eq. 4.7)"),
+                        "add \"normal\": [x, y, z] to \"point\"",
+                    ));
+                }
+            }
+            if let Some(p) = position {
+                check_not_at_point::<R>(p, viewer, &lights, &light_info)?;
+            }
+            Target::Point {
+                position,
+                normal,
+                material,
+            }
+        }
+        (None, Some(ray)) => {
+            let origin = vector::<R>(ray.origin, "ray.origin")?;
+            let dir = direction::<R>(ray.direction, "ray.direction", "the ray's direction")?;
+            if file.surfaces.is_empty() {
+                return Err(Invalid::new(
+                    "surfaces",
+                    "missing: a ray problem needs at least one surface for the ray to hit",
+                    "add \"surfaces\": [{\"type\": \"plane\", ...}] or a sphere",
+                ));
+            }
+            let needs = Needs {
+                ambient: has_ambient,
+                diffuse: first_light.clone(),
+                // V comes from the viewer, or from the ray itself: specular always has one.
+                specular: first_light.clone(),
+            };
+            let mut surfaces = Vec::with_capacity(file.surfaces.len());
+            for (i, s) in file.surfaces.iter().enumerate() {
+                surfaces.push(surface::<R>(file, s, i, &needs)?);
+            }
+            Target::Ray {
+                ray: Ray {
+                    origin,
+                    direction: dir.unit,
+                },
+                direction: dir,
+                surfaces,
+            }
+        }
+    };
+
+    Ok(Problem {
+        title: file.title.clone(),
+        question: file.question.clone(),
+        lights,
+        light_info,
+        ambient_info,
+        viewer,
+        target,
+    })
+}
+
+/// "lights[1] (point)".
+pub fn light_label(file_index: usize, kind: &str) -> String {
+    format!("lights[{file_index}] ({kind})")
+}
+
+/// Which terms the question computes, and so which material fields it needs.
+struct Needs {
+    ambient: bool,
+    /// The first light that needs O_d, if any.
+    diffuse: Option<String>,
+    /// The first light that needs O_s and n_s (there is a viewer), if any.
+    specular: Option<String>,
+}
+
+impl Needs {
+    fn check(&self, m: &MaterialSpec, field: &str) -> Result<(), Invalid> {
+        const COLOR_FORM: &str = "[r, g, b] (or {\"k\": k, \"color\": [r, g, b]})";
+        if self.ambient && m.ambient.is_none() {
+            return Err(Invalid::new(
+                format!("{field}.ambient"),
+                "missing: the ambient term O_a I_a (Eq. 4.6) needs it, since the problem has an \
+                 ambient light",
+                format!("add \"ambient\": {COLOR_FORM}; [0, 0, 0] if the surface reflects no ambient light"),
+            ));
+        }
+        if let Some(l) = &self.diffuse {
+            if m.diffuse.is_none() {
+                return Err(Invalid::new(
+                    format!("{field}.diffuse"),
+                    format!("missing: the diffuse term O_d I_l cos θ (Eq. 4.8) of {l} needs it"),
+                    format!("add \"diffuse\": {COLOR_FORM}; [0, 0, 0] for no diffuse reflection"),
+                ));
+            }
+        }
+        if let Some(l) = &self.specular {
+            if m.specular.is_none() {
+                return Err(Invalid::new(
+                    format!("{field}.specular"),
+                    format!(
+                        "missing: the specular term O_s I_l (cos φ)^n_s (Eq. 4.10) of {l} needs it, \
+                         since the problem has a viewer"
+                    ),
+                    format!("add \"specular\": {COLOR_FORM}; [0, 0, 0] for a matte surface"),
+                ));
+            }
+            if m.shininess.is_none() {
+                return Err(Invalid::new(
+                    format!("{field}.shininess"),
+                    format!("missing: the specular term (Eq. 4.10) of {l} needs the exponent n_s"),
+                    "add \"shininess\": n_s (a number ≥ 0)",
+                ));
+            }
+        }
+        Ok(())
+    }
+}
+
+fn check_not_at_point<R: Real>(
+    p: V3<R>,
+    viewer: Option<V3<R>>,
+    lights: &LightSet<R>,
+    info: &[LightInfo<R>],
+) -> Result<(), Invalid> {
+    if viewer == Some(p) {
+        return Err(Invalid::new(
+            "viewer",
+            "the viewer is exactly at the point P, so V = (P − E)/‖P − E‖ is undefined",
+            "move the viewer away from the point",
+        ));
+    }
+    for (light, info) in lights.lights.iter().zip(info) {
+        if light.position() == Some(p) {
+            return Err(Invalid::new(
+                format!("lights[{}].position", info.file_index),
+                "the light is exactly at the point P, so L = (P − P_l)/‖P − P_l‖ (Eq. 4.1) is \
+                 undefined",
+                "move the light or the point",
+            ));
+        }
+    }
+    Ok(())
+}
+
+type Lights<R> = (LightSet<R>, Vec<LightInfo<R>>, Vec<AmbientInfo<R>>);
+
+fn lights<R: Real>(specs: &[LightSpec]) -> Result<Lights<R>, Invalid> {
+    let mut set = LightSet {
+        ambient: None,
+        lights: Vec::new(),
+    };
+    let mut info = Vec::new();
+    let mut ambient_info = Vec::new();
+    for (i, spec) in specs.iter().enumerate() {
+        let f = |name: &str| format!("lights[{i}].{name}");
+        let name = spec.name().map(str::to_owned);
+        let mut direction_length = None;
+        let light = match spec {
+            LightSpec::Ambient { color: c, .. } => {
+                let c = color::<R>(*c, &f("color"), ColorRange::Light)?;
+                set.ambient = Some(set.ambient.map_or(c, |a| a + c));
+                ambient_info.push(AmbientInfo {
+                    file_index: i,
+                    name,
+                    color: c,
+                });
+                continue;
+            }
+            LightSpec::Point {
+                position,
+                color: c,
+                falloff: fo,
+                ..
+            } => Light {
+                color: color::<R>(*c, &f("color"), ColorRange::Light)?,
+                kind: LightKind::Point {
+                    position: vector::<R>(*position, &f("position"))?,
+                    falloff: falloff(*fo, &f("falloff"))?,
+                },
+            },
+            LightSpec::Directional {
+                direction: d,
+                color: c,
+                ..
+            } => {
+                let d = direction::<R>(*d, &f("direction"), "the light's direction D_l")?;
+                direction_length = (!is_unit_length(d.length)).then_some(d.length);
+                Light {
+                    color: color::<R>(*c, &f("color"), ColorRange::Light)?,
+                    kind: LightKind::Directional { direction: d.unit },
+                }
+            }
+            LightSpec::Spot {
+                position,
+                axis,
+                angle,
+                exponent,
+                color: c,
+                falloff: fo,
+                ..
+            } => {
+                let axis = direction::<R>(*axis, &f("axis"), "the cone's axis D_l")?;
+                direction_length = (!is_unit_length(axis.length)).then_some(axis.length);
+                if !(0.0..=90.0).contains(angle) {
+                    return Err(Invalid::new(
+                        f("angle"),
+                        format!("{angle}° is outside [0°, 90°]"),
+                        "γ is the angle between the cone's axis and its side, 0 ≤ γ ≤ 90 degrees \
+                         (Eq. 4.4)",
+                    ));
+                }
+                let e = number::<R>(*exponent, &f("exponent"))?;
+                if e < R::ZERO {
+                    return Err(Invalid::new(
+                        f("exponent"),
+                        format!("{exponent} is negative"),
+                        "the spot exponent e of cos(ψ)^e (Eq. 4.4) must be ≥ 0, e.g. 0, 1 or 2",
+                    ));
+                }
+                Light {
+                    color: color::<R>(*c, &f("color"), ColorRange::Light)?,
+                    kind: LightKind::Spot {
+                        position: vector::<R>(*position, &f("position"))?,
+                        falloff: falloff(*fo, &f("falloff"))?,
+                        cone: Cone::new(axis.unit, number::<R>(*angle, &f("angle"))?, e),
+                    },
+                }
+            }
+        };
+        set.lights.push(light);
+        info.push(LightInfo {
+            file_index: i,
+            name,
+            kind: spec.kind(),
+            direction_length,
+        });
+    }
+    Ok((set, info, ambient_info))
+}
+
+fn falloff(x: f64, field: &str) -> Result<Falloff, Invalid> {
+    let f = if x == 0.0 || x == 1.0 || x == 2.0 {
+        Falloff::from_exponent(x as u8)
+    } else {
+        None
+    };
+    f.ok_or_else(|| {
+        Invalid::new(
+            field,
+            format!("{x} is not a falloff exponent"),
+            "use 0 (no falloff), 1 (linear) or 2 (quadratic), Eq. 4.3",
+        )
+    })
+}
+
+fn surface<R: Real>(
+    file: &ProblemFile,
+    s: &SurfaceSpec,
+    i: usize,
+    needs: &Needs,
+) -> Result<Surface<R>, Invalid> {
+    let f = |name: &str| format!("surfaces[{i}].{name}");
+    let (shape, normal, mref) = match s {
+        SurfaceSpec::Plane {
+            point,
+            normal,
+            material,
+        } => {
+            let n = direction::<R>(*normal, &f("normal"), "the plane's normal")?;
+            let plane = Plane {
+                point: vector::<R>(*point, &f("point"))?,
+                normal: n.unit,
+            };
+            (Shape::Plane(plane), Some(n), material)
+        }
+        SurfaceSpec::Sphere {
+            center,
+            radius,
+            material,
+        } => {
+            let r = number::<R>(*radius, &f("radius"))?;
+            if r <= R::ZERO {
+                return Err(Invalid::new(
+                    f("radius"),
+                    format!("{radius} is not a radius"),
+                    "give the sphere a radius > 0",
+                ));
+            }
+            let sphere = Sphere {
+                center: vector::<R>(*center, &f("center"))?,
+                radius: r,
+            };
+            (Shape::Sphere(sphere), None, material)
+        }
+    };
+    let (mat_field, material) = resolve_material::<R>(file, mref, &f("material"))?;
+    needs.check(&material.spec, &mat_field)?;
+    Ok(Surface {
+        shape,
+        material,
+        normal,
+    })
+}
+
+/// Looks a material up by name, or takes it in place; returns the field path to report
+/// errors in it under, and the material.
+fn resolve_material<R: Real>(
+    file: &ProblemFile,
+    r: &MaterialRef,
+    field: &str,
+) -> Result<(String, NamedMaterial<R>), Invalid> {
+    let (path, name, spec) = match r {
+        MaterialRef::Inline(spec) => (field.to_owned(), None, spec),
+        MaterialRef::Name(name) => match file.materials.get(name) {
+            Some(spec) => (format!("materials.{name}"), Some(name.clone()), spec),
+            None => {
+                let known: Vec<_> = file.materials.keys().map(|k| format!("\"{k}\"")).collect();
+                let fix = if known.is_empty() {
+                    "define it under \"materials\", or write the material in place".to_owned()
+                } else {
+                    format!("use one of {}, or define it under \"materials\"", known.join(", "))
+                };
+                return Err(Invalid::new(
+                    field,
+                    format!("there is no material named \"{name}\""),
+                    fix,
+                ));
+            }
+        },
+    };
+    let mut m = material::<R>(spec, &path)?;
+    m.name = name;
+    Ok((path, m))
+}
+
+fn material<R: Real>(spec: &MaterialSpec, field: &str) -> Result<NamedMaterial<R>, Invalid> {
+    let f = |name: &str| format!("{field}.{name}");
+    let col = |c: &Option<ColorSpec>, name: &str| -> Result<Option<V3<R>>, Invalid> {
+        c.as_ref()
+            .map(|c| material_color::<R>(c, &f(name)))
+            .transpose()
+    };
+    let o_a = col(&spec.ambient, "ambient")?;
+    let o_d = col(&spec.diffuse, "diffuse")?;
+    let o_s = col(&spec.specular, "specular")?;
+    let n_s = match spec.shininess {
+        Some(x) => {
+            let n = number::<R>(x, &f("shininess"))?;
+            if n < R::ZERO {
+                return Err(Invalid::new(
+                    f("shininess"),
+                    format!("{x} is negative"),
+                    "the specular exponent n_s (Eq. 4.9) must be ≥ 0",
+                ));
+            }
+            n
+        }
+        None => R::ZERO,
+    };
+    let (o_r, source) = match &spec.reflectivity {
+        None => (None, None),
+        Some(ReflectivitySpec::Rgb(c)) => (
+            Some(color::<R>(*c, &f("reflectivity"), ColorRange::Material)?),
+            Some(ReflectivitySource::Explicit),
+        ),
+        Some(ReflectivitySpec::Same(_)) => match o_s {
+            Some(s) => (Some(s), Some(ReflectivitySource::Specular)),
+            None => {
+                return Err(Invalid::new(
+                    f("reflectivity"),
+                    "is \"specular\" but the material has no specular colour",
+                    "give \"specular\", or give the reflectivity as [r, g, b]",
+                ))
+            }
+        },
+    };
+    Ok(NamedMaterial {
+        name: None,
+        spec: spec.clone(),
+        material: Material {
+            o_a,
+            o_d,
+            o_s,
+            n_s,
+            o_r,
+        },
+        reflectivity: source,
+    })
+}
+
+fn material_color<R: Real>(c: &ColorSpec, field: &str) -> Result<V3<R>, Invalid> {
+    if let ColorSpec::Scaled(ScaledColor { k, .. }) = c {
+        if !(0.0..=1.0).contains(k) {
+            return Err(Invalid::new(
+                format!("{field}.k"),
+                format!("{k} is outside [0, 1]"),
+                "the chapter's coefficients k_a, k_d, k_s lie in [0, 1] (Eq. 4.5, 4.7, 4.9); \
+                 give the product as one colour [r, g, b] if you mean something else",
+            ));
+        }
+        if let ColorSpec::Scaled(ScaledColor { color: o, .. }) = c {
+            color::<R>(*o, &format!("{field}.color"), ColorRange::Material)?;
+        }
+    }
+    color::<R>(c.product(), field, ColorRange::Material)
+}
+
+#[derive(Clone, Copy)]
+enum ColorRange {
+    Light,
+    Material,
+}
+
+fn color<R: Real>(c: Triple, field: &str, range: ColorRange) -> Result<V3<R>, Invalid> {
+    let v = vector::<R>(c, field)?;
+    if c.iter().any(|&x| x < 0.0) {
+        let what = match range {
+            ColorRange::Light => "a light's colour",
+            ColorRange::Material => "a material colour",
+        };
+        return Err(Invalid::new(
+            field,
+            format!("{what} has a negative component: {c:?}"),
+            "colour components must be ≥ 0",
+        ));
+    }
+    Ok(v)
+}
+
+fn number<R: Real>(x: f64, field: &str) -> Result<R, Invalid> {
+    let r = R::from_f64(x);
+    if !x.is_finite() || !r.is_finite() {
+        return Err(Invalid::new(
+            field,
+            format!("{x} is not a finite {} number", R::NAME),
+            if R::NAME == "f32" {
+                "use a number within ±3.4e38, or --precision f64"
+            } else {
+                "use a finite number"
+            },
+        ));
+    }
+    Ok(r)
+}
+
+fn vector<R: Real>(a: Triple, field: &str) -> Result<V3<R>, Invalid> {
+    let x = number::<R>(a[0], &format!("{field}[0]"))?;
+    let y = number::<R>(a[1], &format!("{field}[1]"))?;
+    let z = number::<R>(a[2], &format!("{field}[2]"))?;
+    Ok(V3::<R>::new(x, y, z))
+}
+
+fn direction<R: Real>(a: Triple, field: &str, what: &str) -> Result<GivenVector<R>, Invalid> {
+    let v = vector::<R>(a, field)?;
+    match normalize::<R>(v) {
+        Some(n) => Ok(GivenVector {
+            given: v,
+            length: n.length,
+            unit: n.unit,
+        }),
+        None => Err(Invalid::new(
+            field,
+            format!("{what} is the zero vector (in {}), which has no direction", R::NAME),
+            "give a non-zero vector",
+        )),
+    }
+}
