@@ -295,3 +295,175 @@ pub fn shade<R: Real, Rec: Recorder<R>, Vis: Visibility<R>>(
         literal: (Rec::DETAIL && literal_defined).then_some(literal),
     }
 }
+
+#[cfg(test)]
+mod tests {
+    //! Each test is written once and instantiated for f32 and f64. Expected values are worked
+    //! out by hand in the comments.
+    use super::*;
+    use crate::core::light::{Cone, Falloff, LightKind};
+    use crate::core::real::v3;
+
+    fn matte_and_shiny<R: Real>() -> Material<R> {
+        Material {
+            o_a: Some(v3::<R>([0.5, 0.4, 0.6])),
+            o_d: Some(v3::<R>([0.7, 0.8, 0.6])),
+            o_s: Some(v3::<R>([0.2, 0.3, 0.4])),
+            n_s: R::ONE,
+            o_r: None,
+        }
+    }
+
+    fn point_light<R: Real>(pos: [f64; 3], falloff: Falloff) -> Light<R> {
+        Light {
+            color: v3::<R>([1.0; 3]),
+            kind: LightKind::Point {
+                position: v3::<R>(pos),
+                falloff,
+            },
+        }
+    }
+
+    fn at_origin<R: Real>(viewer_dir: Option<[f64; 3]>) -> ShadingPoint<R> {
+        ShadingPoint {
+            p: v3::<R>([0.0; 3]),
+            n: v3::<R>([0.0, 0.0, 1.0]),
+            v: viewer_dir.map(v3::<R>),
+        }
+    }
+
+    fn close<R: Real>(a: V3<R>, b: [f64; 3], tol: f64) -> bool {
+        let a = crate::core::real::to_f64_array::<R>(a);
+        (0..3).all(|i| (a[i] - b[i]).abs() <= tol)
+    }
+
+    fn light_behind_surface_adds_nothing<R: Real>() {
+        let lights = LightSet {
+            ambient: None,
+            lights: vec![point_light::<R>([0.0, 0.0, -2.0], Falloff::None)],
+        };
+        let mut rec = Vec::new();
+        let s = shade(
+            &at_origin::<R>(Some([0.0, 0.0, -1.0])),
+            &matte_and_shiny::<R>(),
+            &lights,
+            &mut AllVisible,
+            &mut rec,
+        );
+        assert_eq!(rec[0].status, LightStatus::BehindSurface);
+        assert!(close::<R>(s.color, [0.0; 3], 0.0));
+        // Literally: L = (0,0,1), cos θ = −1, so diffuse O_d·(−1); R = L − 2(N·L)N = (0,0,−1)
+        // and V = (0,0,−1), so cos φ = −R·V = −1 and specular O_s·(−1)¹.
+        assert!(close::<R>(s.literal.unwrap(), [-0.9, -1.1, -1.0], 1e-6));
+    }
+
+    fn light_in_tangent_plane_adds_nothing<R: Real>() {
+        let lights = LightSet {
+            ambient: None,
+            lights: vec![point_light::<R>([5.0, 0.0, 0.0], Falloff::None)],
+        };
+        let mut rec = Vec::new();
+        let s = shade(&at_origin::<R>(None), &matte_and_shiny::<R>(), &lights, &mut AllVisible, &mut rec);
+        assert_eq!(rec[0].status, LightStatus::InTangentPlane);
+        assert!(close::<R>(s.color, [0.0; 3], 0.0));
+    }
+
+    fn mirror_viewer_sees_full_highlight<R: Real>() {
+        // Light at (3,0,4), d = 5, falloff 2 with C_l = 25: I_l = 1, cos θ = 0.8.
+        // Viewer at the mirror position (−3,0,4): cos φ = 1, so specular = O_s.
+        let mut l = point_light::<R>([3.0, 0.0, 4.0], Falloff::Quadratic);
+        l.color = v3::<R>([25.0; 3]);
+        let lights = LightSet {
+            ambient: None,
+            lights: vec![l],
+        };
+        let s = shade(
+            &at_origin::<R>(Some([0.6, 0.0, -0.8])),
+            &matte_and_shiny::<R>(),
+            &lights,
+            &mut AllVisible,
+            &mut NoRecord,
+        );
+        assert!(close::<R>(s.diffuse, [0.56, 0.64, 0.48], 1e-6));
+        assert!(close::<R>(s.specular, [0.2, 0.3, 0.4], 1e-6));
+        assert_eq!(s.literal, None, "NoRecord computes no literal value");
+    }
+
+    fn recording_does_not_change_the_colour<R: Real>() {
+        let lights = LightSet {
+            ambient: Some(v3::<R>([0.1, 0.2, 0.3])),
+            lights: vec![
+                point_light::<R>([1.0, 2.0, 3.0], Falloff::Linear),
+                point_light::<R>([-1.0, 0.5, 2.0], Falloff::Quadratic),
+                point_light::<R>([0.0, 1.0, -3.0], Falloff::None),
+            ],
+        };
+        let at = at_origin::<R>(Some([0.1, -0.2, -0.97]));
+        let m = matte_and_shiny::<R>();
+        let a = shade(&at, &m, &lights, &mut AllVisible, &mut NoRecord);
+        let b = shade(&at, &m, &lights, &mut AllVisible, &mut Vec::new());
+        assert_eq!(a.color, b.color);
+    }
+
+    fn spot_cone_edge_is_lit_and_outside_is_dark<R: Real>() {
+        // Apex (0,0,4), axis (0,0,−1), γ = 45°: P = (4,0,0) is on the edge, (4.1,0,0) outside.
+        let spot = Light {
+            color: v3::<R>([1.0; 3]),
+            kind: LightKind::Spot {
+                position: v3::<R>([0.0, 0.0, 4.0]),
+                falloff: Falloff::None,
+                cone: Cone::new(v3::<R>([0.0, 0.0, -1.0]), R::from_f64(45.0), R::ONE),
+            },
+        };
+        let on = spot.arrive(v3::<R>([4.0, 0.0, 0.0]));
+        let cone = on.cone.unwrap();
+        assert!(cone.inside && cone.on_edge);
+        assert_eq!(on.reach, Reach::Arrives);
+        let off = spot.arrive(v3::<R>([4.1, 0.0, 0.0]));
+        assert_eq!(off.reach, Reach::OutsideCone);
+        assert!(close::<R>(off.i_l, [0.0; 3], 0.0));
+    }
+
+    fn huge_shininess_with_cos_phi_rounded_above_one_stays_finite<R: Real>() {
+        // The mirror configuration again, n_s = 1e30: cos φ may round to 1 + ε.
+        let mut m = matte_and_shiny::<R>();
+        m.n_s = R::from_f64(1e30);
+        let lights = LightSet {
+            ambient: None,
+            lights: vec![point_light::<R>([3.0, 0.0, 4.0], Falloff::None)],
+        };
+        let s = shade(
+            &at_origin::<R>(Some([0.6, 0.0, -0.8])),
+            &m,
+            &lights,
+            &mut AllVisible,
+            &mut Vec::new(),
+        );
+        assert!(s.color.is_finite());
+        assert!(s.specular.max_element() <= R::from_f64(0.4));
+    }
+
+    macro_rules! for_both_precisions {
+        ($($name:ident),* $(,)?) => {
+            mod f32_tests { $( #[test] fn $name() { super::$name::<f32>() } )* }
+            mod f64_tests { $( #[test] fn $name() { super::$name::<f64>() } )* }
+        };
+    }
+
+    for_both_precisions!(
+        light_behind_surface_adds_nothing,
+        light_in_tangent_plane_adds_nothing,
+        mirror_viewer_sees_full_highlight,
+        recording_does_not_change_the_colour,
+        spot_cone_edge_is_lit_and_outside_is_dark,
+        huge_shininess_with_cos_phi_rounded_above_one_stays_finite,
+    );
+
+    #[test]
+    fn quadratic_falloff_far_away_neither_overflows_nor_flushes_to_zero() {
+        // d = 1e160: d² would overflow f64, but 1/d/d = 1e-320 (subnormal) is representable.
+        let f = Falloff::Quadratic.factor(1e160f64);
+        assert!(f > 0.0 && f.is_finite());
+        assert!((f / 1e-320 - 1.0).abs() < 1e-2);
+    }
+}

@@ -298,10 +298,10 @@ fn light<R: Real>(out: &mut String, problem: &Problem<R>, t: &LightTerm<R>) {
         );
         step(out, 6, &format!("spot factor (cos ψ)^e = {}", n(c.factor)), "Eq. 4.4");
     }
-    let eq_il = if a.cone.is_some() {
-        "Eq. 4.4"
-    } else {
-        "Eq. 4.2"
+    let eq_il = match (a.cone.is_some(), a.distance.is_some()) {
+        (true, _) => "Eq. 4.4",
+        (false, true) => "Eq. 4.2",
+        (false, false) => "Sec. 4.2",
     };
     let formula = match (a.cone.is_some(), a.distance.is_some()) {
         (true, _) => "I_l = C_l/d^f · (cos ψ)^e",
