@@ -19,7 +19,8 @@ fn settings() -> insta::Settings {
 
 /// The path relative to the crate root, as a user would type it.
 fn relative(path: &Path) -> &Path {
-    path.strip_prefix(env!("CARGO_MANIFEST_DIR")).unwrap_or(path)
+    path.strip_prefix(env!("CARGO_MANIFEST_DIR"))
+        .unwrap_or(path)
 }
 
 /// Rounds every non-integer number to 10 significant digits.
@@ -27,7 +28,9 @@ fn rounded(v: Value) -> Value {
     match v {
         Value::Number(n) if n.is_f64() => {
             let x = n.as_f64().expect("an f64 number");
-            let r: f64 = format!("{x:.9e}").parse().expect("a formatted number parses");
+            let r: f64 = format!("{x:.9e}")
+                .parse()
+                .expect("a formatted number parses");
             // Fold -0 into 0: the sign of a zero is last-bit noise here.
             let r = if r == 0.0 { 0.0 } else { r };
             serde_json::Number::from_f64(r).map_or(Value::Null, Value::Number)

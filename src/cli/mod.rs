@@ -146,7 +146,11 @@ pub fn solve_json(path: &Path, precision: Precision) -> Result<serde_json::Value
 pub fn solve_text(path: &Path, precision: Precision) -> Result<String, ProblemError> {
     fn go<R: Real>(path: &Path) -> Result<String, ProblemError> {
         let (problem, solution) = solve_file::<R>(path)?;
-        Ok(report::text::render(&path.display().to_string(), &problem, &solution))
+        Ok(report::text::render(
+            &path.display().to_string(),
+            &problem,
+            &solution,
+        ))
     }
     match precision {
         Precision::F32 => go::<f32>(path),

@@ -363,7 +363,13 @@ mod tests {
             lights: vec![point_light::<R>([5.0, 0.0, 0.0], Falloff::None)],
         };
         let mut rec = Vec::new();
-        let s = shade(&at_origin::<R>(None), &matte_and_shiny::<R>(), &lights, &mut AllVisible, &mut rec);
+        let s = shade(
+            &at_origin::<R>(None),
+            &matte_and_shiny::<R>(),
+            &lights,
+            &mut AllVisible,
+            &mut rec,
+        );
         assert_eq!(rec[0].status, LightStatus::InTangentPlane);
         assert!(close::<R>(s.color, [0.0; 3], 0.0));
     }

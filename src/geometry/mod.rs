@@ -37,7 +37,12 @@ impl<R: Real> LineHits<R> {
 
     /// The hit behind the origin (t ≤ 0) nearest to it.
     pub fn nearest_behind(&self) -> Option<R> {
-        self.t.iter().rev().flatten().copied().find(|&t| t <= R::ZERO)
+        self.t
+            .iter()
+            .rev()
+            .flatten()
+            .copied()
+            .find(|&t| t <= R::ZERO)
     }
 }
 

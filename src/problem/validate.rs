@@ -18,124 +18,123 @@ use crate::geometry::{Plane, Ray, Shape, Sphere};
 /// Validates a parsed problem in precision `R`.
 pub fn validate<R: Real>(file: &ProblemFile) -> Result<Problem<R>, Invalid> {
     let (lights, light_info, ambient_info) = lights::<R>(&file.lights)?;
-    let viewer = file
-        .viewer
-        .map(|v| vector::<R>(v, "viewer"))
-        .transpose()?;
-    let first_light = light_info.first().map(|i| light_label(i.file_index, i.kind));
+    let viewer = file.viewer.map(|v| vector::<R>(v, "viewer")).transpose()?;
+    let first_light = light_info
+        .first()
+        .map(|i| light_label(i.file_index, i.kind));
     let has_ambient = !ambient_info.is_empty();
 
-    let target = match (&file.point, &file.ray) {
-        (Some(_), Some(_)) => {
-            return Err(Invalid::new(
-                "ray",
-                "the problem gives both \"point\" and \"ray\"",
-                "give either a point (with its normal) or a ray with surfaces, not both",
-            ))
-        }
-        (None, None) => {
-            return Err(Invalid::new(
+    let target =
+        match (&file.point, &file.ray) {
+            (Some(_), Some(_)) => {
+                return Err(Invalid::new(
+                    "ray",
+                    "the problem gives both \"point\" and \"ray\"",
+                    "give either a point (with its normal) or a ray with surfaces, not both",
+                ))
+            }
+            (None, None) => return Err(Invalid::new(
                 "point",
                 "the problem has nothing to shade",
                 "give \"point\" (with \"material\", and \"position\" and \"normal\" where lights \
                  need them) or \"ray\" with \"surfaces\"",
-            ))
-        }
-        (Some(point), None) => {
-            if !file.surfaces.is_empty() {
-                return Err(Invalid::new(
-                    "surfaces",
-                    "surfaces are only used by a ray problem, and this problem gives a point",
-                    "remove \"surfaces\", or replace \"point\" with a \"ray\"",
-                ));
-            }
-            let position = point
-                .position
-                .map(|p| vector::<R>(p, "point.position"))
-                .transpose()?;
-            let normal = point
-                .normal
-                .map(|n| direction::<R>(n, "point.normal", "the normal N"))
-                .transpose()?;
-            let (mat_field, material) = resolve_material::<R>(file, &point.material, "point.material")?;
-            let needs = Needs {
-                ambient: has_ambient,
-                diffuse: first_light.clone(),
-                specular: viewer.and(first_light.clone()),
-            };
-            needs.check(&material.spec, &mat_field)?;
-            // Point and normal: only where the question needs them.
-            let positional = light_info
-                .iter()
-                .zip(&lights.lights)
-                .find(|(_, l)| l.position().is_some());
-            if position.is_none() {
-                if let Some((info, _)) = positional {
+            )),
+            (Some(point), None) => {
+                if !file.surfaces.is_empty() {
                     return Err(Invalid::new(
-                        "point.position",
-                        format!(
-                            "missing: {} needs P for L and d (Eq. 4.1)",
-                            light_label(info.file_index, info.kind)
-                        ),
-                        "add \"position\": [x, y, z] to \"point\"",
+                        "surfaces",
+                        "surfaces are only used by a ray problem, and this problem gives a point",
+                        "remove \"surfaces\", or replace \"point\" with a \"ray\"",
                     ));
                 }
-                if viewer.is_some() {
-                    return Err(Invalid::new(
-                        "point.position",
-                        "missing: the viewer needs P for V = (P − E)/‖P − E‖",
-                        "add \"position\": [x, y, z] to \"point\", or remove \"viewer\"",
-                    ));
+                let position = point
+                    .position
+                    .map(|p| vector::<R>(p, "point.position"))
+                    .transpose()?;
+                let normal = point
+                    .normal
+                    .map(|n| direction::<R>(n, "point.normal", "the normal N"))
+                    .transpose()?;
+                let (mat_field, material) =
+                    resolve_material::<R>(file, &point.material, "point.material")?;
+                let needs = Needs {
+                    ambient: has_ambient,
+                    diffuse: first_light.clone(),
+                    specular: viewer.and(first_light.clone()),
+                };
+                needs.check(&material.spec, &mat_field)?;
+                // Point and normal: only where the question needs them.
+                let positional = light_info
+                    .iter()
+                    .zip(&lights.lights)
+                    .find(|(_, l)| l.position().is_some());
+                if position.is_none() {
+                    if let Some((info, _)) = positional {
+                        return Err(Invalid::new(
+                            "point.position",
+                            format!(
+                                "missing: {} needs P for L and d (Eq. 4.1)",
+                                light_label(info.file_index, info.kind)
+                            ),
+                            "add \"position\": [x, y, z] to \"point\"",
+                        ));
+                    }
+                    if viewer.is_some() {
+                        return Err(Invalid::new(
+                            "point.position",
+                            "missing: the viewer needs P for V = (P − E)/‖P − E‖",
+                            "add \"position\": [x, y, z] to \"point\", or remove \"viewer\"",
+                        ));
+                    }
+                }
+                if normal.is_none() {
+                    if let Some(l) = &first_light {
+                        return Err(Invalid::new(
+                            "point.normal",
+                            format!("missing: {l} needs N for cos θ = −N·L (Eq. 4.7)"),
+                            "add \"normal\": [x, y, z] to \"point\"",
+                        ));
+                    }
+                }
+                if let Some(p) = position {
+                    check_not_at_point::<R>(p, viewer, &lights, &light_info)?;
+                }
+                Target::Point {
+                    position,
+                    normal,
+                    material,
                 }
             }
-            if normal.is_none() {
-                if let Some(l) = &first_light {
+            (None, Some(ray)) => {
+                let origin = vector::<R>(ray.origin, "ray.origin")?;
+                let dir = direction::<R>(ray.direction, "ray.direction", "the ray's direction")?;
+                if file.surfaces.is_empty() {
                     return Err(Invalid::new(
-                        "point.normal",
-                        format!("missing: {l} needs N for cos θ = −N·L (Eq. 4.7)"),
-                        "add \"normal\": [x, y, z] to \"point\"",
+                        "surfaces",
+                        "missing: a ray problem needs at least one surface for the ray to hit",
+                        "add \"surfaces\": [{\"type\": \"plane\", ...}] or a sphere",
                     ));
                 }
+                let needs = Needs {
+                    ambient: has_ambient,
+                    diffuse: first_light.clone(),
+                    // V comes from the viewer, or from the ray itself: specular always has one.
+                    specular: first_light.clone(),
+                };
+                let mut surfaces = Vec::with_capacity(file.surfaces.len());
+                for (i, s) in file.surfaces.iter().enumerate() {
+                    surfaces.push(surface::<R>(file, s, i, &needs)?);
+                }
+                Target::Ray {
+                    ray: Ray {
+                        origin,
+                        direction: dir.unit,
+                    },
+                    direction: dir,
+                    surfaces,
+                }
             }
-            if let Some(p) = position {
-                check_not_at_point::<R>(p, viewer, &lights, &light_info)?;
-            }
-            Target::Point {
-                position,
-                normal,
-                material,
-            }
-        }
-        (None, Some(ray)) => {
-            let origin = vector::<R>(ray.origin, "ray.origin")?;
-            let dir = direction::<R>(ray.direction, "ray.direction", "the ray's direction")?;
-            if file.surfaces.is_empty() {
-                return Err(Invalid::new(
-                    "surfaces",
-                    "missing: a ray problem needs at least one surface for the ray to hit",
-                    "add \"surfaces\": [{\"type\": \"plane\", ...}] or a sphere",
-                ));
-            }
-            let needs = Needs {
-                ambient: has_ambient,
-                diffuse: first_light.clone(),
-                // V comes from the viewer, or from the ray itself: specular always has one.
-                specular: first_light.clone(),
-            };
-            let mut surfaces = Vec::with_capacity(file.surfaces.len());
-            for (i, s) in file.surfaces.iter().enumerate() {
-                surfaces.push(surface::<R>(file, s, i, &needs)?);
-            }
-            Target::Ray {
-                ray: Ray {
-                    origin,
-                    direction: dir.unit,
-                },
-                direction: dir,
-                surfaces,
-            }
-        }
-    };
+        };
 
     Ok(Problem {
         title: file.title.clone(),
@@ -407,7 +406,10 @@ fn resolve_material<R: Real>(
                 let fix = if known.is_empty() {
                     "define it under \"materials\", or write the material in place".to_owned()
                 } else {
-                    format!("use one of {}, or define it under \"materials\"", known.join(", "))
+                    format!(
+                        "use one of {}, or define it under \"materials\"",
+                        known.join(", ")
+                    )
                 };
                 return Err(Invalid::new(
                     field,
@@ -549,7 +551,10 @@ fn direction<R: Real>(a: Triple, field: &str, what: &str) -> Result<GivenVector<
         }),
         None => Err(Invalid::new(
             field,
-            format!("{what} is the zero vector (in {}), which has no direction", R::NAME),
+            format!(
+                "{what} is the zero vector (in {}), which has no direction",
+                R::NAME
+            ),
             "give a non-zero vector",
         )),
     }

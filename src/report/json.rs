@@ -7,9 +7,7 @@
 use serde::Serialize;
 
 use super::messages;
-use crate::core::{
-    Falloff, LightKind, LightStatus, LightTerm, Real, SpecularStatus, Vector, V3,
-};
+use crate::core::{Falloff, LightKind, LightStatus, LightTerm, Real, SpecularStatus, Vector, V3};
 use crate::problem::model::ReflectivitySource;
 use crate::problem::Problem;
 use crate::solve::{

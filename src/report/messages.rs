@@ -9,7 +9,10 @@ use crate::solve::{Finding, FindingCode, Omission, OmissionReason, ReadingCode, 
 
 /// "lights[1] (point)" for the light at a file index.
 pub fn light_name<R: Real>(problem: &Problem<R>, file_index: usize) -> String {
-    let info = problem.light_info.iter().find(|i| i.file_index == file_index);
+    let info = problem
+        .light_info
+        .iter()
+        .find(|i| i.file_index == file_index);
     let kind = info.map_or("light", |i| i.kind);
     match info.and_then(|i| i.name.as_deref()) {
         Some(name) => format!("{} \"{name}\"", light_label(file_index, kind)),
@@ -34,9 +37,9 @@ pub fn finding<R: Real>(problem: &Problem<R>, f: &Finding) -> String {
              diffuse and no specular light",
             v("cos_theta")
         ),
-        FindingCode::LightInTangentPlane => format!(
-            "{light} lies in the surface's tangent plane (cos θ = 0): it adds nothing"
-        ),
+        FindingCode::LightInTangentPlane => {
+            format!("{light} lies in the surface's tangent plane (cos θ = 0): it adds nothing")
+        }
         FindingCode::LightOutsideCone => format!(
             "the point is outside the cone of {light}: cos ψ = {} < cos γ = {} (ψ > γ), so \
              I_l = 0 (Eq. 4.4)",
@@ -70,7 +73,10 @@ pub fn finding<R: Real>(problem: &Problem<R>, f: &Finding) -> String {
             } else {
                 format!("the direction of {light}")
             };
-            format!("{what} has length {}, not 1: it is used normalised", v("length"))
+            format!(
+                "{what} has length {}, not 1: it is used normalised",
+                v("length")
+            )
         }
         FindingCode::LiteralDiffers => "Eq. 4.16 applied literally (negative cosines included, \
              no gating) gives a different colour; both are shown"
@@ -135,11 +141,15 @@ pub fn reading_label(code: ReadingCode) -> &'static str {
 /// Why a reading is shown and what it assumes.
 pub fn reading_explanation(code: ReadingCode) -> &'static str {
     match code {
-        ReadingCode::NormalReversed => "every direct light is behind the surface as given. \
+        ReadingCode::NormalReversed => {
+            "every direct light is behind the surface as given. \
              Reversing N makes the surface face the light, which is what taking |cos θ| \
              amounts to; the viewer may then be on the back side. This is not the problem as \
-             written",
-        ReadingCode::LineBehindOrigin => "the hit at t < 0 is behind the ray's origin; it is \
-             the hit of the ray with its direction reversed. This is not the problem as written",
+             written"
+        }
+        ReadingCode::LineBehindOrigin => {
+            "the hit at t < 0 is behind the ray's origin; it is \
+             the hit of the ray with its direction reversed. This is not the problem as written"
+        }
     }
 }

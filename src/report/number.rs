@@ -45,7 +45,7 @@ mod tests {
     fn numbers_read_as_a_person_writes_them() {
         assert_eq!(num(0.6), "0.6");
         assert_eq!(num(0.35355339059327373), "0.353553");
-        assert_eq!(num(-0.98994949366116658), "-0.989949");
+        assert_eq!(num(-0.9899494936611666), "-0.989949");
         assert_eq!(num(2.8284271247461903), "2.82843");
         assert_eq!(num(-90.00000000000001), "-90");
         assert_eq!(num(1.0), "1");

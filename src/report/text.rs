@@ -96,7 +96,12 @@ fn intersection<R: Real>(out: &mut String, x: &Intersection<R>) {
             "",
         );
     } else {
-        step(out, 2, &format!("direction D = {}", v::<R>(x.direction)), "");
+        step(
+            out,
+            2,
+            &format!("direction D = {}", v::<R>(x.direction)),
+            "",
+        );
     }
     match (x.t, x.point, x.kind) {
         (Some(t), Some(p), Some(kind)) => {
@@ -163,16 +168,34 @@ fn evaluation<R: Real>(out: &mut String, problem: &Problem<R>, e: &Evaluation<R>
         }
     }
     let m = &e.material;
-    let name = m.name.as_deref().map_or(String::new(), |n| format!(" \"{n}\""));
+    let name = m
+        .name
+        .as_deref()
+        .map_or(String::new(), |n| format!(" \"{n}\""));
     step(out, 4, &format!("material{name}:"), "");
     if m.material.o_a.is_some() {
-        step(out, 6, &format!("O_a = {}", color_spec(&m.spec.ambient)), "Eq. 4.5–4.6");
+        step(
+            out,
+            6,
+            &format!("O_a = {}", color_spec(&m.spec.ambient)),
+            "Eq. 4.5–4.6",
+        );
     }
     if m.material.o_d.is_some() {
-        step(out, 6, &format!("O_d = {}", color_spec(&m.spec.diffuse)), "Eq. 4.7–4.8");
+        step(
+            out,
+            6,
+            &format!("O_d = {}", color_spec(&m.spec.diffuse)),
+            "Eq. 4.7–4.8",
+        );
     }
     if m.material.o_s.is_some() {
-        step(out, 6, &format!("O_s = {}", color_spec(&m.spec.specular)), "Eq. 4.9–4.10");
+        step(
+            out,
+            6,
+            &format!("O_s = {}", color_spec(&m.spec.specular)),
+            "Eq. 4.9–4.10",
+        );
     }
     if m.spec.shininess.is_some() {
         step(out, 6, &format!("n_s = {}", n(m.material.n_s)), "Eq. 4.9");
@@ -201,17 +224,24 @@ fn evaluation<R: Real>(out: &mut String, problem: &Problem<R>, e: &Evaluation<R>
         step(out, 6, &format!("N·V = {}: {side}", n(vw.n_dot_v)), "");
     }
     // Ambient.
-    match (problem.lights.ambient, e.shade.ambient) {
-        (Some(i_a), Some(term)) => {
-            if problem.ambient_info.len() > 1 {
-                let parts: Vec<_> = problem.ambient_info.iter().map(|a| v::<R>(a.color)).collect();
-                step(out, 4, &format!("I_a = {} = {}", parts.join(" + "), v::<R>(i_a)), "");
-            } else {
-                step(out, 4, &format!("I_a = {}", v::<R>(i_a)), "");
-            }
-            step(out, 4, &format!("ambient O_a I_a = {}", v::<R>(term)), "Eq. 4.6");
+    if let (Some(i_a), Some(term)) = (problem.lights.ambient, e.shade.ambient) {
+        if problem.ambient_info.len() > 1 {
+            let parts: Vec<_> = problem
+                .ambient_info
+                .iter()
+                .map(|a| v::<R>(a.color))
+                .collect();
+            let sum = format!("I_a = {} = {}", parts.join(" + "), v::<R>(i_a));
+            step(out, 4, &sum, "");
+        } else {
+            step(out, 4, &format!("I_a = {}", v::<R>(i_a)), "");
         }
-        _ => {}
+        step(
+            out,
+            4,
+            &format!("ambient O_a I_a = {}", v::<R>(term)),
+            "Eq. 4.6",
+        );
     }
     for o in &e.omitted {
         step(out, 4, &messages::omission(o), "");
@@ -222,10 +252,30 @@ fn evaluation<R: Real>(out: &mut String, problem: &Problem<R>, e: &Evaluation<R>
     // The total.
     out.push_str("  Total\n");
     let zero = <V3<R> as crate::core::Vector<R>>::ZERO;
-    step(out, 4, &format!("ambient   {}", v::<R>(e.shade.ambient.unwrap_or(zero))), "");
-    step(out, 4, &format!("diffuse   {}", v::<R>(e.shade.diffuse)), "Σ Eq. 4.8");
-    step(out, 4, &format!("specular  {}", v::<R>(e.shade.specular)), "Σ Eq. 4.10");
-    step(out, 4, &format!("I = {}", v::<R>(e.shade.color)), "Eq. 4.16");
+    step(
+        out,
+        4,
+        &format!("ambient   {}", v::<R>(e.shade.ambient.unwrap_or(zero))),
+        "",
+    );
+    step(
+        out,
+        4,
+        &format!("diffuse   {}", v::<R>(e.shade.diffuse)),
+        "Σ Eq. 4.8",
+    );
+    step(
+        out,
+        4,
+        &format!("specular  {}", v::<R>(e.shade.specular)),
+        "Σ Eq. 4.10",
+    );
+    step(
+        out,
+        4,
+        &format!("I = {}", v::<R>(e.shade.color)),
+        "Eq. 4.16",
+    );
     step(
         out,
         4,
@@ -240,7 +290,12 @@ fn evaluation<R: Real>(out: &mut String, problem: &Problem<R>, e: &Evaluation<R>
     );
     if let Some(l) = e.shade.literal {
         if l != e.shade.color {
-            step(out, 4, &format!("Eq. 4.16 taken literally (no gating): {}", v::<R>(l)), "");
+            step(
+                out,
+                4,
+                &format!("Eq. 4.16 taken literally (no gating): {}", v::<R>(l)),
+                "",
+            );
         }
     }
 }
@@ -261,14 +316,24 @@ fn light<R: Real>(out: &mut String, problem: &Problem<R>, t: &LightTerm<R>) {
         ),
         LightKind::Directional { direction } => format!("direction D_l = {}", v::<R>(direction)),
     };
-    step(out, 4, &format!("Light {name} {head}, C_l = {}", v::<R>(l.color)), "");
+    step(
+        out,
+        4,
+        &format!("Light {name} {head}, C_l = {}", v::<R>(l.color)),
+        "",
+    );
     if t.status == LightStatus::AtLight {
         step(out, 6, messages::light_status(t.status), "");
         return;
     }
     match (a.distance, a.falloff) {
         (Some(d), Some(f)) => {
-            step(out, 6, &format!("L = (P − P_l)/‖P − P_l‖ = {}", v::<R>(a.l)), "Eq. 4.1");
+            step(
+                out,
+                6,
+                &format!("L = (P − P_l)/‖P − P_l‖ = {}", v::<R>(a.l)),
+                "Eq. 4.1",
+            );
             step(out, 6, &format!("d = ‖P − P_l‖ = {}", n(d)), "");
             let kind = match f {
                 Falloff::None => "none",
@@ -278,11 +343,20 @@ fn light<R: Real>(out: &mut String, problem: &Problem<R>, t: &LightTerm<R>) {
             step(
                 out,
                 6,
-                &format!("falloff f = {} ({kind}): 1/d^f = {}", f.exponent(), n(a.falloff_factor)),
+                &format!(
+                    "falloff f = {} ({kind}): 1/d^f = {}",
+                    f.exponent(),
+                    n(a.falloff_factor)
+                ),
                 "Eq. 4.3",
             );
         }
-        _ => step(out, 6, &format!("L = D_l = {}; no falloff", v::<R>(a.l)), "Sec. 4.2"),
+        _ => step(
+            out,
+            6,
+            &format!("L = D_l = {}; no falloff", v::<R>(a.l)),
+            "Sec. 4.2",
+        ),
     }
     if let Some(c) = &a.cone {
         let verdict = match (c.inside, c.on_edge) {
@@ -293,10 +367,19 @@ fn light<R: Real>(out: &mut String, problem: &Problem<R>, t: &LightTerm<R>) {
         step(
             out,
             6,
-            &format!("cos ψ = D_l·L = {} vs cos γ = {}: {verdict}", n(c.cos_psi), n(c.cos_gamma)),
+            &format!(
+                "cos ψ = D_l·L = {} vs cos γ = {}: {verdict}",
+                n(c.cos_psi),
+                n(c.cos_gamma)
+            ),
             "Eq. 4.4",
         );
-        step(out, 6, &format!("spot factor (cos ψ)^e = {}", n(c.factor)), "Eq. 4.4");
+        step(
+            out,
+            6,
+            &format!("spot factor (cos ψ)^e = {}", n(c.factor)),
+            "Eq. 4.4",
+        );
     }
     let eq_il = match (a.cone.is_some(), a.distance.is_some()) {
         (true, _) => "Eq. 4.4",
@@ -310,7 +393,12 @@ fn light<R: Real>(out: &mut String, problem: &Problem<R>, t: &LightTerm<R>) {
     };
     step(out, 6, &format!("{formula} = {}", v::<R>(a.i_l)), eq_il);
     if t.status == LightStatus::OutsideCone {
-        step(out, 6, &format!("status: {}", messages::light_status(t.status)), "");
+        step(
+            out,
+            6,
+            &format!("status: {}", messages::light_status(t.status)),
+            "",
+        );
         return;
     }
     step(
@@ -319,7 +407,12 @@ fn light<R: Real>(out: &mut String, problem: &Problem<R>, t: &LightTerm<R>) {
         &format!("N·L = {};  cos θ = −N·L = {}", n(t.n_dot_l), n(t.cos_theta)),
         "Eq. 4.7",
     );
-    step(out, 6, &format!("status: {}", messages::light_status(t.status)), "");
+    step(
+        out,
+        6,
+        &format!("status: {}", messages::light_status(t.status)),
+        "",
+    );
     if let Some(d) = t.diffuse {
         let mut line = format!("diffuse O_d I_l cos θ = {}", v::<R>(d));
         if let Some(lit) = t.diffuse_literal.filter(|l| *l != d) {
@@ -329,12 +422,20 @@ fn light<R: Real>(out: &mut String, problem: &Problem<R>, t: &LightTerm<R>) {
     }
     let s = &t.specular;
     match s.status {
-        SpecularStatus::NoViewer | SpecularStatus::NoSpecularColor => {
-            step(out, 6, &format!("specular: {}", messages::specular_status(s.status)), "")
-        }
+        SpecularStatus::NoViewer | SpecularStatus::NoSpecularColor => step(
+            out,
+            6,
+            &format!("specular: {}", messages::specular_status(s.status)),
+            "",
+        ),
         _ => {
             if let Some(r) = s.r {
-                step(out, 6, &format!("R = L − 2(N·L)N = {}", v::<R>(r)), "Eq. 4.15");
+                step(
+                    out,
+                    6,
+                    &format!("R = L − 2(N·L)N = {}", v::<R>(r)),
+                    "Eq. 4.15",
+                );
             }
             if let Some(c) = s.cos_phi {
                 step(out, 6, &format!("cos φ = −R·V = {}", n(c)), "Eq. 4.10");

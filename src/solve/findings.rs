@@ -87,9 +87,9 @@ pub(super) fn find<R: Real>(problem: &Problem<R>, s: &Solution<R>) -> Vec<Findin
         for (t, info) in e.lights.iter().zip(&problem.light_info) {
             let f = |code| Finding::new(code).light(info.file_index);
             match t.status {
-                LightStatus::BehindSurface => out.push(
-                    f(FindingCode::LightBehindSurface).value("cos_theta", t.cos_theta),
-                ),
+                LightStatus::BehindSurface => {
+                    out.push(f(FindingCode::LightBehindSurface).value("cos_theta", t.cos_theta))
+                }
                 LightStatus::InTangentPlane => out.push(f(FindingCode::LightInTangentPlane)),
                 LightStatus::OutsideCone => {
                     let c = t.arrival.cone.expect("an outside-cone light is a spot");
@@ -139,7 +139,9 @@ pub(super) fn find<R: Real>(problem: &Problem<R>, s: &Solution<R>) -> Vec<Findin
     }
     if let Target::Ray { direction, .. } = &problem.target {
         if !is_unit_length(direction.length) {
-            out.push(Finding::new(FindingCode::DirectionNormalized).value("length", direction.length));
+            out.push(
+                Finding::new(FindingCode::DirectionNormalized).value("length", direction.length),
+            );
         }
     }
     for info in &problem.light_info {

@@ -166,7 +166,10 @@ pub fn solve<R: Real>(problem: &Problem<R>) -> Result<Solution<R>, Invalid> {
             });
             let eval = evaluate(problem, *position, normal, None, material)?;
             // Reading: every direct light behind the surface.
-            let behind = eval.lights.iter().any(|t| t.status == LightStatus::BehindSurface);
+            let behind = eval
+                .lights
+                .iter()
+                .any(|t| t.status == LightStatus::BehindSurface);
             let lit = eval.lights.iter().any(|t| t.status == LightStatus::Lit);
             if behind && !lit {
                 let reversed = normal.map(|n| NormalUsed {
@@ -310,7 +313,13 @@ fn evaluate<R: Real>(
         v: viewer.map(|v| v.v),
     };
     let mut lights = Vec::with_capacity(problem.lights.lights.len());
-    let shade = shade(&at, &material.material, &problem.lights, &mut AllVisible, &mut lights);
+    let shade = shade(
+        &at,
+        &material.material,
+        &problem.lights,
+        &mut AllVisible,
+        &mut lights,
+    );
     check_finite(problem, &shade, &lights)?;
 
     let m = &material.material;
