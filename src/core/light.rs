@@ -3,7 +3,7 @@
 //! (Eq. 4.1–4.4). Ambient light has no direction and is kept apart, as a sum I_a.
 
 use super::real::{Real, Vector, V3};
-use super::vector::normalize;
+use super::vector::between;
 
 /// The falloff exponent f of Eq. 4.3.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize)]
@@ -174,7 +174,7 @@ impl<R: Real> Light<R> {
         cone: Option<Cone<R>>,
     ) -> Arrival<R> {
         // Compute the incidence vector and the distance, Eq. 4.1.
-        let Some(n) = normalize::<R>(p - position) else {
+        let Some(n) = between::<R>(position, p) else {
             return Arrival {
                 l: V3::<R>::ZERO,
                 distance: Some(R::ZERO),

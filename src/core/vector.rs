@@ -33,6 +33,26 @@ pub fn normalize<R: Real>(v: V3<R>) -> Option<Normalized<R>> {
     })
 }
 
+/// The unit vector from `a` to `b` and the distance between them, robust where `b − a`
+/// overflows although both points are finite (it then works on the halves; the distance may
+/// still be +inf, which the caller must treat as out of range). `None` only when `a == b` or a
+/// point is not finite.
+#[inline]
+pub fn between<R: Real>(a: V3<R>, b: V3<R>) -> Option<Normalized<R>> {
+    let d = b - a;
+    if d.is_finite() {
+        return normalize(d);
+    }
+    if !(a.is_finite() && b.is_finite()) {
+        return None;
+    }
+    let half = R::ONE / R::TWO;
+    normalize::<R>(b * half - a * half).map(|n| Normalized {
+        unit: n.unit,
+        length: n.length * R::TWO,
+    })
+}
+
 /// The robust Euclidean length ‖v‖ (0 for the zero vector).
 #[inline]
 pub fn length<R: Real>(v: V3<R>) -> R {
@@ -75,6 +95,16 @@ mod tests {
             let n = normalize::<f32>(Vec3::new(3.0, 0.0, 4.0) * s).unwrap();
             assert!((n.unit - Vec3::new(0.6, 0.0, 0.8)).abs().max_element() < 1e-6);
         }
+    }
+
+    #[test]
+    fn direction_between_far_apart_points_survives_overflow_of_the_difference() {
+        let a = DVec3::new(-1e308, 0.0, 0.0);
+        let b = DVec3::new(1e308, 0.0, 0.0);
+        let n = between::<f64>(a, b).unwrap();
+        assert_eq!(n.unit, DVec3::X);
+        assert!(n.length.is_infinite(), "2e308 is beyond f64");
+        assert!(between::<f64>(b, b).is_none());
     }
 
     #[test]

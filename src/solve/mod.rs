@@ -5,7 +5,7 @@
 
 mod findings;
 
-use crate::core::vector::normalize;
+use crate::core::vector::between;
 use crate::core::{shade, AllVisible, LightStatus, LightTerm, Real, Shade, Vector, V3};
 use crate::problem::validate::light_label;
 use crate::problem::{Invalid, NamedMaterial, Problem, Target};
@@ -266,13 +266,23 @@ fn evaluate<R: Real>(
     // The viewing direction V = (P − E)/‖P − E‖, from the eye to the point (Eq. 4.10).
     let viewer = match (problem.viewer, p, ray_direction) {
         (Some(e), Some(p), _) => {
-            let v = normalize::<R>(p - e).ok_or_else(|| {
+            let v = between::<R>(e, p).ok_or_else(|| {
                 Invalid::new(
                     "viewer",
                     "the viewer is exactly at the point being shaded, so V is undefined",
                     "move the viewer away from the point",
                 )
             })?;
+            if !v.length.is_finite() {
+                return Err(Invalid::new(
+                    "viewer",
+                    format!(
+                        "the distance from the viewer to the point overflows {}",
+                        R::NAME
+                    ),
+                    "bring the coordinates into a smaller range",
+                ));
+            }
             Some((Some(e), v.unit))
         }
         (None, Some(_), Some(d)) => Some((None, d)),
@@ -372,7 +382,8 @@ fn check_finite<R: Real>(
     lights: &[LightTerm<R>],
 ) -> Result<(), Invalid> {
     for (t, info) in lights.iter().zip(&problem.light_info) {
-        let ok = t.arrival.i_l.is_finite()
+        let ok = t.arrival.distance.is_none_or(|d| d.is_finite())
+            && t.arrival.i_l.is_finite()
             && t.arrival.falloff_factor.is_finite()
             && t.diffuse.is_none_or(|d| d.is_finite())
             && t.diffuse_literal.is_none_or(|d| d.is_finite())
