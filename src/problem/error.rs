@@ -5,7 +5,7 @@ use std::path::PathBuf;
 /// Something wrong with a problem file. Every variant maps to exit code 2.
 #[derive(Debug, thiserror::Error)]
 pub enum ProblemError {
-    #[error("{path}: cannot read the file: {source}")]
+    #[error("{path}: cannot read the file: {source}. Fix: check the path, and that the file exists and is readable")]
     Read {
         path: PathBuf,
         #[source]
@@ -16,6 +16,8 @@ pub enum ProblemError {
         path: PathBuf,
         line: usize,
         column: usize,
+        /// The field where the parser stopped, when it knows (`lights[1].falloff`).
+        field: Option<String>,
         message: String,
         fix: String,
     },
@@ -50,7 +52,8 @@ impl ProblemError {
     pub fn field(&self) -> Option<&str> {
         match self {
             ProblemError::Invalid { field, .. } => Some(field),
-            _ => None,
+            ProblemError::Syntax { field, .. } => field.as_deref(),
+            ProblemError::Read { .. } => None,
         }
     }
 }

@@ -72,10 +72,72 @@ pub struct RaySpec {
     pub direction: Triple,
 }
 
-/// A surface of a ray problem.
-#[derive(Debug, Clone, Deserialize, JsonSchema)]
+/// A surface of a ray problem, as read: `type` and the fields of that type. Parsed flat (not as
+/// a tagged enum) so that an error inside it names its exact field; [`SurfaceType::fields`]
+/// says which fields each type takes, and validation enforces it.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct SurfaceSpec {
+    #[serde(rename = "type")]
+    pub kind: SurfaceType,
+    #[serde(default)]
+    pub point: Option<Triple>,
+    #[serde(default)]
+    pub normal: Option<Triple>,
+    #[serde(default)]
+    pub center: Option<Triple>,
+    #[serde(default)]
+    pub radius: Option<f64>,
+    #[serde(default)]
+    pub material: Option<MaterialRef>,
+}
+
+/// The kinds of surface.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, JsonSchema)]
+#[serde(rename_all = "snake_case")]
+pub enum SurfaceType {
+    Plane,
+    Sphere,
+}
+
+impl SurfaceType {
+    pub fn name(self) -> &'static str {
+        match self {
+            SurfaceType::Plane => "plane",
+            SurfaceType::Sphere => "sphere",
+        }
+    }
+
+    /// The fields this type takes (besides `type`); all are required.
+    pub fn fields(self) -> &'static [&'static str] {
+        match self {
+            SurfaceType::Plane => &["point", "normal", "material"],
+            SurfaceType::Sphere => &["center", "radius", "material"],
+        }
+    }
+}
+
+impl SurfaceSpec {
+    /// The names of the fields present in the file (besides `type`).
+    pub fn present(&self) -> Vec<&'static str> {
+        let fields = [
+            ("point", self.point.is_some()),
+            ("normal", self.normal.is_some()),
+            ("center", self.center.is_some()),
+            ("radius", self.radius.is_some()),
+            ("material", self.material.is_some()),
+        ];
+        fields.iter().filter(|f| f.1).map(|f| f.0).collect()
+    }
+}
+
+// The schema of a surface, one shape per type, for `phong schema`. The parser reads
+// `SurfaceSpec`; a test checks that both agree on the fields of each type.
+/// A surface of a ray problem: `type` selects the kind.
+#[derive(JsonSchema)]
 #[serde(tag = "type", rename_all = "snake_case", deny_unknown_fields)]
-pub enum SurfaceSpec {
+#[allow(dead_code)]
+enum SurfaceSchema {
     /// The plane through `point` with normal `normal` (used as given, normalised).
     Plane {
         point: Triple,
@@ -90,30 +152,110 @@ pub enum SurfaceSpec {
     },
 }
 
-/// A light. Colours are RGB, each component ≥ 0 (values above 1 are allowed for lights).
-#[derive(Debug, Clone, Deserialize, JsonSchema)]
+impl JsonSchema for SurfaceSpec {
+    fn schema_name() -> std::borrow::Cow<'static, str> {
+        "Surface".into()
+    }
+    fn json_schema(g: &mut schemars::SchemaGenerator) -> schemars::Schema {
+        SurfaceSchema::json_schema(g)
+    }
+}
+
+/// A light, as read: `type` and the fields of that type (see [`LightType::fields`]), parsed
+/// flat so that an error names its exact field. Colours are RGB, each component ≥ 0 (values
+/// above 1 are allowed for lights).
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct LightSpec {
+    #[serde(rename = "type")]
+    pub kind: LightType,
+    #[serde(default)]
+    pub name: Option<String>,
+    #[serde(default)]
+    pub color: Option<Triple>,
+    #[serde(default)]
+    pub position: Option<Triple>,
+    #[serde(default)]
+    pub direction: Option<Triple>,
+    #[serde(default)]
+    pub axis: Option<Triple>,
+    #[serde(default)]
+    pub angle: Option<f64>,
+    #[serde(default)]
+    pub exponent: Option<f64>,
+    #[serde(default)]
+    pub falloff: Option<f64>,
+}
+
+/// The kinds of light.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, JsonSchema)]
+#[serde(rename_all = "snake_case")]
+pub enum LightType {
+    Ambient,
+    Point,
+    Directional,
+    Spot,
+}
+
+impl LightType {
+    pub fn name(self) -> &'static str {
+        match self {
+            LightType::Ambient => "ambient",
+            LightType::Point => "point",
+            LightType::Directional => "directional",
+            LightType::Spot => "spot",
+        }
+    }
+
+    /// The fields this type takes besides `type` and the optional `name`; all are required.
+    pub fn fields(self) -> &'static [&'static str] {
+        match self {
+            LightType::Ambient => &["color"],
+            LightType::Point => &["position", "color", "falloff"],
+            LightType::Directional => &["direction", "color"],
+            LightType::Spot => &["position", "axis", "angle", "exponent", "color", "falloff"],
+        }
+    }
+}
+
+impl LightSpec {
+    /// The names of the fields present in the file (besides `type` and `name`).
+    pub fn present(&self) -> Vec<&'static str> {
+        let fields = [
+            ("color", self.color.is_some()),
+            ("position", self.position.is_some()),
+            ("direction", self.direction.is_some()),
+            ("axis", self.axis.is_some()),
+            ("angle", self.angle.is_some()),
+            ("exponent", self.exponent.is_some()),
+            ("falloff", self.falloff.is_some()),
+        ];
+        fields.iter().filter(|f| f.1).map(|f| f.0).collect()
+    }
+}
+
+// The schema of a light, one shape per type, for `phong schema`. The parser reads `LightSpec`;
+// a test checks that both agree on the fields of each type.
+/// A light: `type` selects the kind. Colours are RGB, each component ≥ 0 (above 1 is allowed).
+#[derive(JsonSchema)]
 #[serde(tag = "type", rename_all = "snake_case", deny_unknown_fields)]
-pub enum LightSpec {
+#[allow(dead_code)]
+enum LightSchema {
     /// Ambient light I_a (Eq. 4.5–4.6). Several ambient lights add up.
-    Ambient {
-        color: Triple,
-        #[serde(default)]
-        name: Option<String>,
-    },
+    Ambient { color: Triple, name: Option<String> },
     /// A point light at `position` with colour C_l and falloff f ∈ {0, 1, 2} (Eq. 4.1–4.3).
     Point {
         position: Triple,
         color: Triple,
         /// f: 0 none, 1 linear, 2 quadratic (Eq. 4.3).
-        falloff: f64,
-        #[serde(default)]
+        #[schemars(range(min = 0, max = 2))]
+        falloff: u8,
         name: Option<String>,
     },
     /// A directional light travelling along `direction` (D_l), no falloff.
     Directional {
         direction: Triple,
         color: Triple,
-        #[serde(default)]
         name: Option<String>,
     },
     /// A spot light (Eq. 4.4): apex `position`, cone axis `axis` (D_l), half-angle `angle`
@@ -127,29 +269,18 @@ pub enum LightSpec {
         exponent: f64,
         color: Triple,
         /// f: 0 none, 1 linear, 2 quadratic (Eq. 4.3).
-        falloff: f64,
-        #[serde(default)]
+        #[schemars(range(min = 0, max = 2))]
+        falloff: u8,
         name: Option<String>,
     },
 }
 
-impl LightSpec {
-    pub fn name(&self) -> Option<&str> {
-        match self {
-            LightSpec::Ambient { name, .. }
-            | LightSpec::Point { name, .. }
-            | LightSpec::Directional { name, .. }
-            | LightSpec::Spot { name, .. } => name.as_deref(),
-        }
+impl JsonSchema for LightSpec {
+    fn schema_name() -> std::borrow::Cow<'static, str> {
+        "Light".into()
     }
-
-    pub fn kind(&self) -> &'static str {
-        match self {
-            LightSpec::Ambient { .. } => "ambient",
-            LightSpec::Point { .. } => "point",
-            LightSpec::Directional { .. } => "directional",
-            LightSpec::Spot { .. } => "spot",
-        }
+    fn json_schema(g: &mut schemars::SchemaGenerator) -> schemars::Schema {
+        LightSchema::json_schema(g)
     }
 }
 
@@ -298,4 +429,57 @@ impl<'de> Deserialize<'de> for MaterialRef {
 pub fn schema_json() -> String {
     let schema = schemars::schema_for!(ProblemFile);
     serde_json::to_string_pretty(&schema).expect("a schema always serialises")
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The property names of each `type` in a oneOf schema, without `type` and `name`.
+    fn schema_fields(schema: &serde_json::Value) -> Vec<(String, Vec<String>)> {
+        let mut out = Vec::new();
+        for variant in schema["oneOf"].as_array().expect("one shape per type") {
+            let props = variant["properties"].as_object().expect("properties");
+            let kind = props["type"]["const"]
+                .as_str()
+                .expect("a const type")
+                .to_owned();
+            let mut fields: Vec<String> = props
+                .keys()
+                .filter(|k| *k != "type" && *k != "name")
+                .cloned()
+                .collect();
+            fields.sort();
+            out.push((kind, fields));
+        }
+        out
+    }
+
+    fn sorted(fields: &[&str]) -> Vec<String> {
+        let mut v: Vec<String> = fields.iter().map(|s| s.to_string()).collect();
+        v.sort();
+        v
+    }
+
+    #[test]
+    fn light_schema_and_parser_agree_on_the_fields_of_each_type() {
+        let schema = serde_json::to_value(schemars::schema_for!(LightSpec)).unwrap();
+        let by_type = schema_fields(&schema);
+        assert_eq!(by_type.len(), 4);
+        for (kind, fields) in by_type {
+            let t: LightType = serde_json::from_value(serde_json::Value::String(kind)).unwrap();
+            assert_eq!(fields, sorted(t.fields()), "{}", t.name());
+        }
+    }
+
+    #[test]
+    fn surface_schema_and_parser_agree_on_the_fields_of_each_type() {
+        let schema = serde_json::to_value(schemars::schema_for!(SurfaceSpec)).unwrap();
+        let by_type = schema_fields(&schema);
+        assert_eq!(by_type.len(), 2);
+        for (kind, fields) in by_type {
+            let t: SurfaceType = serde_json::from_value(serde_json::Value::String(kind)).unwrap();
+            assert_eq!(fields, sorted(t.fields()), "{}", t.name());
+        }
+    }
 }

@@ -38,15 +38,18 @@ pub fn parse_str(path: &Path, text: &str) -> Result<ProblemFile, ProblemError> {
             .map_or(text.as_str(), |(m, _)| m)
             .to_owned();
         let fix = syntax_fix(&inner, &message);
-        let message = if field.is_empty() || field == "." {
-            message
-        } else {
-            format!("{field}: {message}")
+        // serde_path_to_error writes "." for the top level and "?" for an unknown position.
+        let field = field.trim_end_matches(".?").to_owned();
+        let field = (!field.is_empty() && field != "." && field != "?").then_some(field);
+        let message = match &field {
+            Some(f) => format!("{f}: {message}"),
+            None => message,
         };
         ProblemError::Syntax {
             path: path.to_owned(),
             line: inner.line(),
             column: inner.column(),
+            field,
             message,
             fix,
         }
@@ -57,6 +60,10 @@ fn syntax_fix(e: &serde_json::Error, message: &str) -> String {
     use serde_json::error::Category;
     match e.classify() {
         Category::Eof => "the file ends too early: close every { and [".into(),
+        Category::Syntax if message.starts_with("number out of range") => {
+            "the number is beyond the range of f64 (about ±1.8e308); every number must be finite"
+                .into()
+        }
         Category::Syntax => "check the JSON just before this position (a missing comma, \
                              quote, bracket or brace, or a trailing comma)"
             .into(),
@@ -80,7 +87,7 @@ fn syntax_fix(e: &serde_json::Error, message: &str) -> String {
 }
 
 /// What a required field of the format is used for, to say why it is needed.
-fn field_purpose(name: &str) -> Option<&'static str> {
+pub(crate) fn field_purpose(name: &str) -> Option<&'static str> {
     Some(match name {
         "falloff" => "f in I_l = C_l/d^f (Eq. 4.2, 4.3): 0 none, 1 linear, 2 quadratic",
         "position" => "P_l, for L and d (Eq. 4.1)",

@@ -4,8 +4,8 @@
 
 use super::error::Invalid;
 use super::format::{
-    ColorSpec, LightSpec, MaterialRef, MaterialSpec, ProblemFile, ReflectivitySpec, ScaledColor,
-    SurfaceSpec, Triple,
+    ColorSpec, LightSpec, LightType, MaterialRef, MaterialSpec, ProblemFile, ReflectivitySpec,
+    ScaledColor, SurfaceSpec, SurfaceType, Triple,
 };
 use super::model::{
     AmbientInfo, GivenVector, LightInfo, NamedMaterial, Problem, ReflectivitySource, Surface,
@@ -240,12 +240,19 @@ fn lights<R: Real>(specs: &[LightSpec]) -> Result<Lights<R>, Invalid> {
     let mut info = Vec::new();
     let mut ambient_info = Vec::new();
     for (i, spec) in specs.iter().enumerate() {
-        let f = |name: &str| format!("lights[{i}].{name}");
-        let name = spec.name().map(str::to_owned);
+        let base = format!("lights[{i}]");
+        let f = |name: &str| format!("{base}.{name}");
+        let what = format!("{} light", spec.kind.name());
+        check_fields(&base, &what, spec.kind.fields(), &spec.present())?;
+        let name = spec.name.clone();
+        let c = color::<R>(
+            required(spec.color, &base, "color", &what)?,
+            &f("color"),
+            ColorRange::Light,
+        )?;
         let mut direction_length = None;
-        let light = match spec {
-            LightSpec::Ambient { color: c, .. } => {
-                let c = color::<R>(*c, &f("color"), ColorRange::Light)?;
+        let kind = match spec.kind {
+            LightType::Ambient => {
                 set.ambient = Some(set.ambient.map_or(c, |a| a + c));
                 ambient_info.push(AmbientInfo {
                     file_index: i,
@@ -254,76 +261,105 @@ fn lights<R: Real>(specs: &[LightSpec]) -> Result<Lights<R>, Invalid> {
                 });
                 continue;
             }
-            LightSpec::Point {
-                position,
-                color: c,
-                falloff: fo,
-                ..
-            } => Light {
-                color: color::<R>(*c, &f("color"), ColorRange::Light)?,
-                kind: LightKind::Point {
-                    position: vector::<R>(*position, &f("position"))?,
-                    falloff: falloff(*fo, &f("falloff"))?,
-                },
+            LightType::Point => LightKind::Point {
+                position: vector::<R>(
+                    required(spec.position, &base, "position", &what)?,
+                    &f("position"),
+                )?,
+                falloff: falloff(
+                    required(spec.falloff, &base, "falloff", &what)?,
+                    &f("falloff"),
+                )?,
             },
-            LightSpec::Directional {
-                direction: d,
-                color: c,
-                ..
-            } => {
-                let d = direction::<R>(*d, &f("direction"), "the light's direction D_l")?;
+            LightType::Directional => {
+                let d = required(spec.direction, &base, "direction", &what)?;
+                let d = direction::<R>(d, &f("direction"), "the light's direction D_l")?;
                 direction_length = (!is_unit_length(d.length)).then_some(d.length);
-                Light {
-                    color: color::<R>(*c, &f("color"), ColorRange::Light)?,
-                    kind: LightKind::Directional { direction: d.unit },
-                }
+                LightKind::Directional { direction: d.unit }
             }
-            LightSpec::Spot {
-                position,
-                axis,
-                angle,
-                exponent,
-                color: c,
-                falloff: fo,
-                ..
-            } => {
-                let axis = direction::<R>(*axis, &f("axis"), "the cone's axis D_l")?;
+            LightType::Spot => {
+                let axis = required(spec.axis, &base, "axis", &what)?;
+                let axis = direction::<R>(axis, &f("axis"), "the cone's axis D_l")?;
                 direction_length = (!is_unit_length(axis.length)).then_some(axis.length);
-                if !(0.0..=90.0).contains(angle) {
+                let angle = required(spec.angle, &base, "angle", &what)?;
+                if !(0.0..=90.0).contains(&angle) {
                     return Err(Invalid::new(
                         f("angle"),
-                        format!("{angle}° is outside [0°, 90°]"),
+                        format!("{}° is outside [0°, 90°]", show(angle)),
                         "γ is the angle between the cone's axis and its side, 0 ≤ γ ≤ 90 degrees \
                          (Eq. 4.4)",
                     ));
                 }
-                let e = number::<R>(*exponent, &f("exponent"))?;
+                let exponent = required(spec.exponent, &base, "exponent", &what)?;
+                let e = number::<R>(exponent, &f("exponent"))?;
                 if e < R::ZERO {
                     return Err(Invalid::new(
                         f("exponent"),
-                        format!("{exponent} is negative"),
+                        format!("{} is negative", show(exponent)),
                         "the spot exponent e of cos(ψ)^e (Eq. 4.4) must be ≥ 0, e.g. 0, 1 or 2",
                     ));
                 }
-                Light {
-                    color: color::<R>(*c, &f("color"), ColorRange::Light)?,
-                    kind: LightKind::Spot {
-                        position: vector::<R>(*position, &f("position"))?,
-                        falloff: falloff(*fo, &f("falloff"))?,
-                        cone: Cone::new(axis.unit, number::<R>(*angle, &f("angle"))?, e),
-                    },
+                LightKind::Spot {
+                    position: vector::<R>(
+                        required(spec.position, &base, "position", &what)?,
+                        &f("position"),
+                    )?,
+                    falloff: falloff(
+                        required(spec.falloff, &base, "falloff", &what)?,
+                        &f("falloff"),
+                    )?,
+                    cone: Cone::new(axis.unit, number::<R>(angle, &f("angle"))?, e),
                 }
             }
         };
-        set.lights.push(light);
+        set.lights.push(Light { color: c, kind });
         info.push(LightInfo {
             file_index: i,
             name,
-            kind: spec.kind(),
+            kind: spec.kind.name(),
             direction_length,
         });
     }
     Ok((set, info, ambient_info))
+}
+
+/// Rejects a field that the light's or surface's type does not take.
+fn check_fields(base: &str, what: &str, takes: &[&str], present: &[&str]) -> Result<(), Invalid> {
+    match present.iter().find(|f| !takes.contains(f)) {
+        Some(extra) => Err(Invalid::new(
+            format!("{base}.{extra}"),
+            format!("a {what} has no \"{extra}\""),
+            format!("remove it; a {what} takes {}", quoted(takes)),
+        )),
+        None => Ok(()),
+    }
+}
+
+/// A field the type requires: its value, or an error naming it and what it is for.
+fn required<T>(value: Option<T>, base: &str, name: &str, what: &str) -> Result<T, Invalid> {
+    value.ok_or_else(|| {
+        let purpose =
+            super::field_purpose(name).map_or(String::new(), |p| format!(": it gives {p}"));
+        Invalid::new(
+            format!("{base}.{name}"),
+            format!("missing: a {what} needs \"{name}\"{purpose}"),
+            format!("add \"{name}\""),
+        )
+    })
+}
+
+fn quoted(fields: &[&str]) -> String {
+    let q: Vec<String> = fields.iter().map(|f| format!("\"{f}\"")).collect();
+    q.join(", ")
+}
+
+/// A number as a person wrote it: `3`, `1.5`, `1e300` (never hundreds of digits).
+pub fn show(x: f64) -> String {
+    if x.fract() == 0.0 && x.abs() < 1e15 {
+        format!("{x}")
+    } else {
+        format!("{x:?}")
+    }
 }
 
 fn falloff(x: f64, field: &str) -> Result<Falloff, Invalid> {
@@ -335,7 +371,7 @@ fn falloff(x: f64, field: &str) -> Result<Falloff, Invalid> {
     f.ok_or_else(|| {
         Invalid::new(
             field,
-            format!("{x} is not a falloff exponent"),
+            format!("{} is not a falloff exponent", show(x)),
             "use 0 (no falloff), 1 (linear) or 2 (quadratic), Eq. 4.3",
         )
     })
@@ -347,40 +383,38 @@ fn surface<R: Real>(
     i: usize,
     needs: &Needs,
 ) -> Result<Surface<R>, Invalid> {
-    let f = |name: &str| format!("surfaces[{i}].{name}");
-    let (shape, normal, mref) = match s {
-        SurfaceSpec::Plane {
-            point,
-            normal,
-            material,
-        } => {
-            let n = direction::<R>(*normal, &f("normal"), "the plane's normal")?;
+    let base = format!("surfaces[{i}]");
+    let f = |name: &str| format!("{base}.{name}");
+    let what = s.kind.name();
+    check_fields(&base, what, s.kind.fields(), &s.present())?;
+    let (shape, normal) = match s.kind {
+        SurfaceType::Plane => {
+            let n = required(s.normal, &base, "normal", what)?;
+            let n = direction::<R>(n, &f("normal"), "the plane's normal")?;
             let plane = Plane {
-                point: vector::<R>(*point, &f("point"))?,
+                point: vector::<R>(required(s.point, &base, "point", what)?, &f("point"))?,
                 normal: n.unit,
             };
-            (Shape::Plane(plane), Some(n), material)
+            (Shape::Plane(plane), Some(n))
         }
-        SurfaceSpec::Sphere {
-            center,
-            radius,
-            material,
-        } => {
-            let r = number::<R>(*radius, &f("radius"))?;
+        SurfaceType::Sphere => {
+            let radius = required(s.radius, &base, "radius", what)?;
+            let r = number::<R>(radius, &f("radius"))?;
             if r <= R::ZERO {
                 return Err(Invalid::new(
                     f("radius"),
-                    format!("{radius} is not a radius"),
+                    format!("{} is not a radius", show(radius)),
                     "give the sphere a radius > 0",
                 ));
             }
             let sphere = Sphere {
-                center: vector::<R>(*center, &f("center"))?,
+                center: vector::<R>(required(s.center, &base, "center", what)?, &f("center"))?,
                 radius: r,
             };
-            (Shape::Sphere(sphere), None, material)
+            (Shape::Sphere(sphere), None)
         }
     };
+    let mref = required(s.material.as_ref(), &base, "material", what)?;
     let (mat_field, material) = resolve_material::<R>(file, mref, &f("material"))?;
     needs.check(&material.spec, &mat_field)?;
     Ok(Surface {
@@ -440,7 +474,7 @@ fn material<R: Real>(spec: &MaterialSpec, field: &str) -> Result<NamedMaterial<R
             if n < R::ZERO {
                 return Err(Invalid::new(
                     f("shininess"),
-                    format!("{x} is negative"),
+                    format!("{} is negative", show(x)),
                     "the specular exponent n_s (Eq. 4.9) must be ≥ 0",
                 ));
             }
@@ -484,7 +518,7 @@ fn material_color<R: Real>(c: &ColorSpec, field: &str) -> Result<V3<R>, Invalid>
         if !(0.0..=1.0).contains(k) {
             return Err(Invalid::new(
                 format!("{field}.k"),
-                format!("{k} is outside [0, 1]"),
+                format!("{} is outside [0, 1]", show(*k)),
                 "the chapter's coefficients k_a, k_d, k_s lie in [0, 1] (Eq. 4.5, 4.7, 4.9); \
                  give the product as one colour [r, g, b] if you mean something else",
             ));
@@ -523,7 +557,7 @@ fn number<R: Real>(x: f64, field: &str) -> Result<R, Invalid> {
     if !x.is_finite() || !r.is_finite() {
         return Err(Invalid::new(
             field,
-            format!("{x} is not a finite {} number", R::NAME),
+            format!("{} is not a finite {} number", show(x), R::NAME),
             if R::NAME == "f32" {
                 "use a number within ±3.4e38, or --precision f64"
             } else {
