@@ -261,16 +261,10 @@ fn lights<R: Real>(specs: &[LightSpec]) -> Result<Lights<R>, Invalid> {
                 });
                 continue;
             }
-            LightType::Point => LightKind::Point {
-                position: vector::<R>(
-                    required(spec.position, &base, "position", &what)?,
-                    &f("position"),
-                )?,
-                falloff: falloff(
-                    required(spec.falloff, &base, "falloff", &what)?,
-                    &f("falloff"),
-                )?,
-            },
+            LightType::Point => {
+                let (position, falloff) = position_and_falloff::<R>(spec, &base, &what)?;
+                LightKind::Point { position, falloff }
+            }
             LightType::Directional => {
                 let d = required(spec.direction, &base, "direction", &what)?;
                 let d = direction::<R>(d, &f("direction"), "the light's direction D_l")?;
@@ -299,15 +293,10 @@ fn lights<R: Real>(specs: &[LightSpec]) -> Result<Lights<R>, Invalid> {
                         "the spot exponent e of cos(ψ)^e (Eq. 4.4) must be ≥ 0, e.g. 0, 1 or 2",
                     ));
                 }
+                let (position, falloff) = position_and_falloff::<R>(spec, &base, &what)?;
                 LightKind::Spot {
-                    position: vector::<R>(
-                        required(spec.position, &base, "position", &what)?,
-                        &f("position"),
-                    )?,
-                    falloff: falloff(
-                        required(spec.falloff, &base, "falloff", &what)?,
-                        &f("falloff"),
-                    )?,
+                    position,
+                    falloff,
                     cone: Cone::new(axis.unit, number::<R>(angle, &f("angle"))?, e),
                 }
             }
@@ -321,6 +310,20 @@ fn lights<R: Real>(specs: &[LightSpec]) -> Result<Lights<R>, Invalid> {
         });
     }
     Ok((set, info, ambient_info))
+}
+
+/// P_l and f of a point or spot light.
+fn position_and_falloff<R: Real>(
+    spec: &LightSpec,
+    base: &str,
+    what: &str,
+) -> Result<(V3<R>, Falloff), Invalid> {
+    let position = required(spec.position, base, "position", what)?;
+    let f = required(spec.falloff, base, "falloff", what)?;
+    Ok((
+        vector::<R>(position, &format!("{base}.position"))?,
+        falloff(f, &format!("{base}.falloff"))?,
+    ))
 }
 
 /// Rejects a field that the light's or surface's type does not take.
