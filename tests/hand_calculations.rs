@@ -280,6 +280,18 @@ fn check_str(doc: &Value, pointer: &str, expected: &str) {
     assert_eq!(at(doc, pointer).as_str(), Some(expected), "{pointer}");
 }
 
+/// The JSON pointer of the reading with this code.
+fn reading(doc: &Value, code: &str) -> String {
+    let readings = at(doc, "/readings")
+        .as_array()
+        .expect("readings is an array");
+    let i = readings
+        .iter()
+        .position(|r| r["code"] == code)
+        .unwrap_or_else(|| panic!("no reading {code:?} in {}", doc["readings"]));
+    format!("/readings/{i}/solution")
+}
+
 fn finding<'a>(doc: &'a Value, code: &str) -> &'a Value {
     at(doc, "/findings")
         .as_array()
@@ -487,8 +499,7 @@ fn exercise_4_2_light_is_behind_the_surface() {
 #[test]
 fn exercise_4_2_reading_with_the_normal_reversed_lights_the_point_diffusely() {
     let doc = solve("4.2.json");
-    check_str(&doc, "/readings/0/code", "normal_reversed");
-    let base = "/readings/0/solution";
+    let base = &reading(&doc, "normal_reversed");
     let n_reversed = scale(N_4_2, -1.0);
     let s = shade(P_4_2, n_reversed, EYE_4_2, None, LIGHT_4_2, M);
 
@@ -519,6 +530,43 @@ fn exercise_4_2_reading_with_the_normal_reversed_lights_the_point_diffusely() {
     check3(&doc, &format!("{base}/color/rgb8"), [62.0, 71.0, 54.0]);
     // With N reversed, N·V > 0: the viewer is behind the surface in this reading.
     check_str(&doc, &format!("{base}/viewer/side"), "back");
+}
+
+#[test]
+fn exercise_4_2_reading_with_the_light_vector_reversed_uses_every_term() {
+    // L taken from the point to the light, the opposite of Eq. 4.1, is the light mirrored
+    // through P: 2P − P_l = 2·(3,1,3) − (1,1,1) = (5,1,5), in front of the surface.
+    let doc = solve("4.2.json");
+    let base = &reading(&doc, "light_reversed");
+    let mirrored = PointLight {
+        position: [5.0, 1.0, 5.0],
+        ..LIGHT_4_2
+    };
+    let s = shade(P_4_2, N_4_2, EYE_4_2, None, mirrored, M);
+    check_light(&doc, base, 0, mirrored, &s);
+    check_evaluation(&doc, base, &s);
+
+    // Both cosines are now positive: cos θ = +1.4/√2, cos φ = +5.08/√44.
+    let r2 = 2f64.sqrt();
+    check(&doc, &format!("{base}/lights/0/cos_theta"), 1.4 / r2);
+    check(
+        &doc,
+        &format!("{base}/lights/0/specular/cos_phi"),
+        5.08 / 44f64.sqrt(),
+    );
+    check_str(&doc, &format!("{base}/lights/0/specular/status"), "lit");
+    check_str(&doc, &format!("{base}/viewer/side"), "front");
+    // With n_s = 1 (odd) every term is the negative of the literal Eq. 4.16 of the problem as
+    // written, whose diffuse and specular parts are 0.35·O_d·(−1) and O_s·I_l·(−5.08/√44).
+    let i_l = 1.0 / (2.0 * r2);
+    let expected = add(scale(M.o_d, 0.35), scale(M.o_s, i_l * 5.08 / 44f64.sqrt()));
+    check3(&doc, &format!("{base}/color/unclamped"), expected);
+    let literal = vec3(&doc, "/solution/color/literal");
+    same3(
+        "minus the literal value as written",
+        scale(literal, -1.0),
+        expected,
+    );
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -625,8 +673,7 @@ fn exercise_4_3_ray_meets_the_plane_only_behind_its_origin() {
 #[test]
 fn exercise_4_3_reading_shades_the_point_where_the_line_meets_the_plane() {
     let doc = solve("4.3.json");
-    check_str(&doc, "/readings/0/code", "line_behind_origin");
-    let base = "/readings/0/solution";
+    let base = &reading(&doc, "line_behind_origin");
     let (_, p) = point_4_3();
     let s = shade(p, PLANE_N, EYE_4_3, Some(RED), LIGHT_4_3, M);
 

@@ -37,14 +37,25 @@ impl Falloff {
         }
     }
 
-    /// The factor 1/d^f, computed as repeated division so that d² is never formed: d = 1e160
-    /// gives 1e-320 in f64 rather than overflowing d² to infinity.
+    /// The factor 1/d^f, for the record, computed as repeated division so that d² is never
+    /// formed: d = 1e160 gives 1e-320 in f64 rather than overflowing d² to infinity.
     #[inline]
     pub fn factor<R: Real>(self, d: R) -> R {
         match self {
             Falloff::None => R::ONE,
             Falloff::Linear => R::ONE / d,
             Falloff::Quadratic => R::ONE / d / d,
+        }
+    }
+
+    /// C_l / d^f, Eq. 4.2, dividing the colour itself so that neither d^f nor 1/d^f is formed:
+    /// a tiny colour close to the light, or a huge one far from it, stays representable.
+    #[inline]
+    pub fn attenuate<R: Real, V: Vector<R>>(self, color: V, d: R) -> V {
+        match self {
+            Falloff::None => color,
+            Falloff::Linear => color / d,
+            Falloff::Quadratic => color / d / d,
         }
     }
 }
@@ -56,7 +67,9 @@ pub struct Cone<R: Real> {
     pub axis: V3<R>,
     /// γ_l in degrees, 0 ≤ γ ≤ 90: the angle between the axis and the cone's side.
     pub angle_deg: R,
-    /// cos γ_l, precomputed.
+    /// γ_l in radians, precomputed.
+    pub gamma: R,
+    /// cos γ_l, precomputed (for the record).
     pub cos_gamma: R,
     /// e_l: the exponent of cos ψ.
     pub exponent: R,
@@ -67,6 +80,7 @@ impl<R: Real> Cone<R> {
         Cone {
             axis,
             angle_deg,
+            gamma: angle_deg.to_radians(),
             cos_gamma: angle_deg.cos_deg(),
             exponent,
         }
@@ -107,15 +121,18 @@ pub enum Reach {
     AtLight,
 }
 
-/// The result of the spot cone test, cos ψ against cos γ (Eq. 4.4).
+/// The result of the spot cone test, ψ against γ (Eq. 4.4).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct ConeTest<R: Real> {
     /// cos ψ = D_l · L.
     pub cos_psi: R,
+    /// ψ in degrees, from atan2(‖D_l × L‖, D_l · L): accurate at every angle, where acos(cos ψ)
+    /// loses half the digits near 0°.
+    pub psi_deg: R,
     pub cos_gamma: R,
     /// ψ ≤ γ (a point on the edge counts as inside).
     pub inside: bool,
-    /// |cos ψ − cos γ| within rounding: the point sits on the cone's edge.
+    /// |ψ − γ| within rounding: the point sits on the cone's edge.
     pub on_edge: bool,
     /// (cos ψ)^e inside the cone, 0 outside.
     pub factor: R,
@@ -139,8 +156,8 @@ pub struct Arrival<R: Real> {
     pub reach: Reach,
 }
 
-/// Tolerance of the cone-edge test in units of machine epsilon: a point whose cos ψ lies
-/// within this of cos γ is on the edge, and the edge is lit (DESIGN.md).
+/// Tolerance of the cone-edge test in units of machine epsilon (radians, relative to 1 + γ):
+/// a point whose ψ lies within this of γ is on the edge, and the edge is lit (DESIGN.md).
 const CONE_EDGE_ULPS: f64 = 4.0;
 
 impl<R: Real> Light<R> {
@@ -188,14 +205,17 @@ impl<R: Real> Light<R> {
         let (l, d) = (n.unit, n.length);
         // Attenuate by the falloff, Eq. 4.2 and 4.3.
         let falloff_factor = falloff.factor(d);
-        let mut i_l = self.color * falloff_factor;
+        let mut i_l = falloff.attenuate(self.color, d);
         let mut reach = Reach::Arrives;
-        // Restrict to the cone and weight by cos(ψ)^e, Eq. 4.4.
+        // Restrict to the cone and weight by cos(ψ)^e, Eq. 4.4. The test compares angles: ψ from
+        // atan2 is accurate to a few ulps everywhere, so the decision is the same in f32 and
+        // f64 except within rounding of the edge.
         let cone = cone.map(|c| {
             let cos_psi = c.axis.dot(l);
-            let tol = R::from_f64(CONE_EDGE_ULPS) * R::EPSILON;
-            let inside = cos_psi >= c.cos_gamma - tol;
-            let on_edge = (cos_psi - c.cos_gamma).abs() <= tol;
+            let psi = c.axis.cross(l).naive_length().atan2(cos_psi);
+            let tol = R::from_f64(CONE_EDGE_ULPS) * R::EPSILON * (R::ONE + c.gamma);
+            let inside = psi <= c.gamma + tol;
+            let on_edge = (psi - c.gamma).abs() <= tol;
             // cos ψ may round a hair outside [0, 1] on the edge of a 90° cone or on the axis.
             let factor = if inside {
                 cos_psi.max(R::ZERO).min(R::ONE).powf(c.exponent)
@@ -204,6 +224,7 @@ impl<R: Real> Light<R> {
             };
             ConeTest {
                 cos_psi,
+                psi_deg: psi.to_degrees(),
                 cos_gamma: c.cos_gamma,
                 inside,
                 on_edge,

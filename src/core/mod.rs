@@ -31,10 +31,4 @@ pub use shade::{
     shade, AllVisible, LightStatus, LightTerm, NoRecord, Recorder, Shade, ShadingPoint,
     SpecularStatus, SpecularTerm, Visibility,
 };
-pub use vector::{normalize, Normalized};
-
-/// The reflection direction of a ray, R_V = V − 2(N·V)N, Eq. 4.17 (V and N unit).
-#[inline]
-pub fn reflect<R: Real>(v: V3<R>, n: V3<R>) -> V3<R> {
-    v - n * (R::TWO * n.dot(v))
-}
+pub use vector::{between, normalize, Normalized};

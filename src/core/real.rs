@@ -40,8 +40,6 @@ pub trait Real:
     const TWO: Self;
     /// Machine epsilon (the gap between 1 and the next representable number).
     const EPSILON: Self;
-    /// The largest finite value.
-    const MAX: Self;
 
     /// Converts from f64, rounding to nearest (may give ±inf for f32; callers check).
     fn from_f64(x: f64) -> Self;
@@ -53,7 +51,10 @@ pub trait Real:
     fn max(self, o: Self) -> Self;
     fn min(self, o: Self) -> Self;
     fn is_finite(self) -> bool;
-    fn is_nan(self) -> bool;
+    /// The angle of (x = `other`, y = `self`) in radians, as `f64::atan2`.
+    fn atan2(self, other: Self) -> Self;
+    fn to_radians(self) -> Self;
+    fn to_degrees(self) -> Self;
     /// Cosine of an angle given in degrees; exact at 0°, 60° and 90°, where the chapter's
     /// cone tests most often sit on the edge.
     fn cos_deg(self) -> Self;
@@ -89,7 +90,6 @@ pub trait Vector<R>:
     fn naive_length(self) -> R;
     fn abs(self) -> Self;
     fn max_element(self) -> R;
-    fn min_element(self) -> R;
     fn is_finite(self) -> bool;
 }
 
@@ -102,7 +102,6 @@ macro_rules! impl_real {
             const ONE: Self = 1.0;
             const TWO: Self = 2.0;
             const EPSILON: Self = <$t>::EPSILON;
-            const MAX: Self = <$t>::MAX;
 
             #[inline]
             fn from_f64(x: f64) -> Self {
@@ -137,8 +136,16 @@ macro_rules! impl_real {
                 <$t>::is_finite(self)
             }
             #[inline]
-            fn is_nan(self) -> bool {
-                <$t>::is_nan(self)
+            fn atan2(self, other: Self) -> Self {
+                <$t>::atan2(self, other)
+            }
+            #[inline]
+            fn to_radians(self) -> Self {
+                <$t>::to_radians(self)
+            }
+            #[inline]
+            fn to_degrees(self) -> Self {
+                <$t>::to_degrees(self)
             }
             fn cos_deg(self) -> Self {
                 // Exact values where the decimal angle has an exact cosine; elsewhere the
@@ -192,10 +199,6 @@ macro_rules! impl_real {
             #[inline]
             fn max_element(self) -> $t {
                 <$v>::max_element(self)
-            }
-            #[inline]
-            fn min_element(self) -> $t {
-                <$v>::min_element(self)
             }
             #[inline]
             fn is_finite(self) -> bool {

@@ -144,12 +144,14 @@ impl<R: Real> Visibility<R> for AllVisible {
 }
 
 /// x^n_s where it is defined: a negative base has a real power only for an integer exponent.
+/// x is a cosine: it is clamped to [−1, 1] first, so that a value rounded a hair beyond ±1
+/// cannot grow without bound under a huge n_s.
 #[inline]
 fn literal_pow<R: Real>(x: R, n_s: R) -> Option<R> {
     if x < R::ZERO && n_s.trunc() != n_s {
         None
     } else {
-        Some(x.min(R::ONE).powf(n_s))
+        Some(x.max(-R::ONE).min(R::ONE).powf(n_s))
     }
 }
 
@@ -170,8 +172,12 @@ pub fn shade<R: Real, Rec: Recorder<R>, Vis: Visibility<R>>(
     };
     let mut diffuse = V3::<R>::ZERO;
     let mut specular = V3::<R>::ZERO;
-    let mut literal = ambient.unwrap_or(V3::<R>::ZERO);
+    // The literal sums are formed in the same order as the gated ones, so that where nothing
+    // was gated the two totals agree to the last bit.
+    let mut literal_diffuse = V3::<R>::ZERO;
+    let mut literal_specular = V3::<R>::ZERO;
     let mut literal_defined = true;
+    let contributes = m.o_d.is_some() || (m.o_s.is_some() && at.v.is_some());
 
     for (index, light) in lights.lights.iter().enumerate() {
         let arrival = light.arrive(at.p);
@@ -185,7 +191,12 @@ pub fn shade<R: Real, Rec: Recorder<R>, Vis: Visibility<R>>(
             Reach::Arrives if cos_theta < R::ZERO => LightStatus::BehindSurface,
             Reach::Arrives => LightStatus::InTangentPlane,
         };
-        if status == LightStatus::Lit && !visibility.visible(at.p, light, &arrival) {
+        // Ask for a shadow ray only where the light could add something.
+        if status == LightStatus::Lit
+            && contributes
+            && arrival.i_l != V3::<R>::ZERO
+            && !visibility.visible(at.p, light, &arrival)
+        {
             status = LightStatus::InShadow;
         }
         let lit = status == LightStatus::Lit;
@@ -207,7 +218,7 @@ pub fn shade<R: Real, Rec: Recorder<R>, Vis: Visibility<R>>(
             diffuse += t;
         }
         if let Some(t) = diffuse_literal {
-            literal += t;
+            literal_diffuse += t;
         }
 
         // Specular reflection, R = L − 2(N·L)N and cos φ = −R·V, Eq. 4.10 and 4.15.
@@ -268,7 +279,7 @@ pub fn shade<R: Real, Rec: Recorder<R>, Vis: Visibility<R>>(
         specular += spec.term;
         if Rec::DETAIL && m.o_s.is_some() && at.v.is_some() {
             match spec.literal {
-                Some(t) => literal += t,
+                Some(t) => literal_specular += t,
                 None => literal_defined = false,
             }
         }
@@ -286,13 +297,13 @@ pub fn shade<R: Real, Rec: Recorder<R>, Vis: Visibility<R>>(
     }
 
     // The total, Eq. 4.16.
-    let color = ambient.unwrap_or(V3::<R>::ZERO) + diffuse + specular;
+    let a = ambient.unwrap_or(V3::<R>::ZERO);
     Shade {
         ambient,
         diffuse,
         specular,
-        color,
-        literal: (Rec::DETAIL && literal_defined).then_some(literal),
+        color: a + diffuse + specular,
+        literal: (Rec::DETAIL && literal_defined).then(|| a + literal_diffuse + literal_specular),
     }
 }
 

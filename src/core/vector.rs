@@ -59,12 +59,6 @@ pub fn length<R: Real>(v: V3<R>) -> R {
     normalize(v).map_or(R::ZERO, |n| n.length)
 }
 
-/// The largest component magnitude of `v`.
-#[inline]
-pub fn max_abs<R: Real>(v: V3<R>) -> R {
-    v.abs().max_element()
-}
-
 /// Whether `v` (a unit-normalised input) differed in length from 1 by more than rounding.
 #[inline]
 pub fn is_unit_length<R: Real>(length: R) -> bool {

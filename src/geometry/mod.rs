@@ -35,14 +35,19 @@ impl<R: Real> LineHits<R> {
         self.t.iter().flatten().copied().find(|&t| t > R::ZERO)
     }
 
-    /// The hit behind the origin (t ≤ 0) nearest to it.
+    /// The hit behind the origin (t < 0) nearest to it.
     pub fn nearest_behind(&self) -> Option<R> {
         self.t
             .iter()
             .rev()
             .flatten()
             .copied()
-            .find(|&t| t <= R::ZERO)
+            .find(|&t| t < R::ZERO)
+    }
+
+    /// Whether the line meets the surface exactly at the origin (t = 0).
+    pub fn at_origin(&self) -> bool {
+        self.t.iter().flatten().any(|&t| t == R::ZERO)
     }
 }
 
@@ -53,12 +58,7 @@ impl<R: Real> Shape<R> {
             Shape::Plane(p) => LineHits {
                 t: [p.intersect_line(ray), None],
             },
-            Shape::Sphere(s) => match s.intersect_line(ray) {
-                Some((t0, t1)) => LineHits {
-                    t: [Some(t0), Some(t1)],
-                },
-                None => LineHits::NONE,
-            },
+            Shape::Sphere(s) => s.intersect_line(ray),
         }
     }
 
@@ -71,10 +71,11 @@ impl<R: Real> Shape<R> {
     }
 
     /// The surface's own unit normal at a point on it (the plane's as given, the sphere's
-    /// outward); turning it to face a ray is the caller's choice.
-    pub fn normal_at(&self, p: V3<R>) -> V3<R> {
+    /// outward); turning it to face a ray is the caller's choice. `None` when the precision
+    /// cannot resolve it (see [`Sphere::normal_at`]).
+    pub fn normal_at(&self, p: V3<R>) -> Option<V3<R>> {
         match self {
-            Shape::Plane(pl) => pl.normal,
+            Shape::Plane(pl) => Some(pl.normal),
             Shape::Sphere(s) => s.normal_at(p),
         }
     }

@@ -21,7 +21,15 @@ impl<R: Real> Plane<R> {
         if denom == R::ZERO {
             return None;
         }
-        let t = self.normal.dot(self.point - ray.origin) / denom;
+        // Q − O may overflow although both are finite: then work on the halves.
+        let diff = self.point - ray.origin;
+        let along = if diff.is_finite() {
+            self.normal.dot(diff)
+        } else {
+            let half = R::ONE / R::TWO;
+            self.normal.dot(self.point * half - ray.origin * half) * R::TWO
+        };
+        let t = along / denom;
         t.is_finite().then_some(t)
     }
 }

@@ -1,7 +1,8 @@
 //! A sphere, intersected with the numerically stable quadratic (pbrt-v4).
 
 use super::ray::Ray;
-use crate::core::vector::normalize;
+use super::LineHits;
+use crate::core::vector::{length, normalize};
 use crate::core::{Real, Vector, V3};
 
 /// The sphere ‖X − C‖ = r.
@@ -13,39 +14,49 @@ pub struct Sphere<R: Real> {
 }
 
 impl<R: Real> Sphere<R> {
-    /// The two parameters where the ray's line meets the sphere, t0 ≤ t1, of either sign.
+    /// The parameters t0 ≤ t1 where the ray's line meets the sphere, of either sign.
     ///
     /// With f = O − C and unit D: b' = D·f, and the discriminant is formed as
-    /// r² − ‖f − b'D‖² (the distance of the line from C), which does not cancel the way
-    /// b'² − (f·f − r²) does for a small sphere far away. Then q = −(b' + sign(b')·√disc),
-    /// t0 = q, t1 = c/q (no cancellation in either root).
+    /// (r − ‖f − b'D‖)(r + ‖f − b'D‖), from the distance of the line to C, which does not cancel
+    /// the way b'² − (f·f − r²) does for a small sphere far away. Then q = −(b' + sign(b')·√disc),
+    /// t0 = q, t1 = c/q with c = (‖f‖ − r)(‖f‖ + r): no cancellation in either root. Lengths are
+    /// the robust ones, so nothing is squared that could overflow.
     #[inline]
-    pub fn intersect_line(&self, ray: &Ray<R>) -> Option<(R, R)> {
+    pub fn intersect_line(&self, ray: &Ray<R>) -> LineHits<R> {
         let f = ray.origin - self.center;
         let b = ray.direction.dot(f);
-        let perp = f - ray.direction * b;
-        let disc = (self.radius - perp.naive_length()) * (self.radius + perp.naive_length());
-        if disc < R::ZERO {
-            return None;
+        let perp = length::<R>(f - ray.direction * b);
+        let disc = (self.radius - perp) * (self.radius + perp);
+        if !(disc >= R::ZERO) {
+            return LineHits::NONE;
         }
         let root = disc.sqrt();
         let q = if b < R::ZERO { -b + root } else { -b - root };
-        let c = (f.naive_length() - self.radius) * (f.naive_length() + self.radius);
+        let dist = length::<R>(f);
+        // t1 = c/q, with c = (‖f‖ − r)(‖f‖ + r) divided before it is multiplied out, so that c
+        // itself (the square of a large distance) is never formed.
         let (mut t0, mut t1) = if q == R::ZERO {
             (R::ZERO, R::ZERO)
         } else {
-            (q, c / q)
+            (q, (dist - self.radius) * ((dist + self.radius) / q))
         };
         if t0 > t1 {
             std::mem::swap(&mut t0, &mut t1);
         }
-        (t0.is_finite() && t1.is_finite()).then_some((t0, t1))
+        if t0.is_finite() && t1.is_finite() {
+            LineHits {
+                t: [Some(t0), Some(t1)],
+            }
+        } else {
+            LineHits::NONE
+        }
     }
 
-    /// The outward unit normal at a point on the sphere.
+    /// The outward unit normal at a point on the sphere; `None` when the point cannot be told
+    /// from the centre in this precision (a radius below the rounding of the coordinates).
     #[inline]
-    pub fn normal_at(&self, p: V3<R>) -> V3<R> {
-        normalize::<R>(p - self.center).map_or(V3::<R>::ZERO, |n| n.unit)
+    pub fn normal_at(&self, p: V3<R>) -> Option<V3<R>> {
+        normalize::<R>(p - self.center).map(|n| n.unit)
     }
 
     /// Moves a point computed as O + tD back onto the sphere's surface.
@@ -73,7 +84,7 @@ mod tests {
             origin: DVec3::ZERO,
             direction: DVec3::new(0.0, 0.0, -1.0),
         };
-        assert_eq!(s.intersect_line(&ray), Some((4.0, 6.0)));
+        assert_eq!(s.intersect_line(&ray).t, [Some(4.0), Some(6.0)]);
     }
 
     #[test]
@@ -86,7 +97,7 @@ mod tests {
             origin: DVec3::ZERO,
             direction: DVec3::X,
         };
-        assert_eq!(s.intersect_line(&ray), Some((-2.0, 2.0)));
+        assert_eq!(s.intersect_line(&ray).t, [Some(-2.0), Some(2.0)]);
     }
 
     #[test]
@@ -100,9 +111,24 @@ mod tests {
             origin: DVec3::new(0.5, 0.0, 0.0),
             direction: DVec3::new(0.0, 0.0, -1.0),
         };
-        let (t0, _) = s.intersect_line(&ray).unwrap();
+        let t0 = s.intersect_line(&ray).t[0].unwrap();
         let expected = 1e7 - (1.0f64 - 0.25).sqrt();
         assert!((t0 - expected).abs() < 1e-8, "{t0} vs {expected}");
+    }
+
+    #[test]
+    fn huge_sphere_far_away_is_hit_without_overflow() {
+        // Radius 1e150 at the origin, ray from z = 1e160 downwards: squares would overflow.
+        let s = Sphere::<f64> {
+            center: DVec3::ZERO,
+            radius: 1e150,
+        };
+        let ray = Ray::<f64> {
+            origin: DVec3::new(0.0, 0.0, 1e160),
+            direction: DVec3::new(0.0, 0.0, -1.0),
+        };
+        let t = s.intersect_line(&ray).t;
+        assert_eq!(t, [Some(1e160 - 1e150), Some(1e160 + 1e150)]);
     }
 
     #[test]
@@ -115,6 +141,6 @@ mod tests {
             origin: DVec3::ZERO,
             direction: DVec3::new(0.0, 0.0, -1.0),
         };
-        assert_eq!(s.intersect_line(&ray), None);
+        assert_eq!(s.intersect_line(&ray), LineHits::NONE);
     }
 }

@@ -96,9 +96,6 @@ pub fn validate<R: Real>(file: &ProblemFile) -> Result<Problem<R>, Invalid> {
                         ));
                     }
                 }
-                if let Some(p) = position {
-                    check_not_at_point::<R>(p, viewer, &lights, &light_info)?;
-                }
                 Target::Point {
                     position,
                     normal,
@@ -202,32 +199,6 @@ impl Needs {
         }
         Ok(())
     }
-}
-
-fn check_not_at_point<R: Real>(
-    p: V3<R>,
-    viewer: Option<V3<R>>,
-    lights: &LightSet<R>,
-    info: &[LightInfo<R>],
-) -> Result<(), Invalid> {
-    if viewer == Some(p) {
-        return Err(Invalid::new(
-            "viewer",
-            "the viewer is exactly at the point P, so V = (P − E)/‖P − E‖ is undefined",
-            "move the viewer away from the point",
-        ));
-    }
-    for (light, info) in lights.lights.iter().zip(info) {
-        if light.position() == Some(p) {
-            return Err(Invalid::new(
-                format!("lights[{}].position", info.file_index),
-                "the light is exactly at the point P, so L = (P − P_l)/‖P − P_l‖ (Eq. 4.1) is \
-                 undefined",
-                "move the light or the point",
-            ));
-        }
-    }
-    Ok(())
 }
 
 type Lights<R> = (LightSet<R>, Vec<LightInfo<R>>, Vec<AmbientInfo<R>>);
@@ -403,6 +374,17 @@ fn surface<R: Real>(
         SurfaceType::Sphere => {
             let radius = required(s.radius, &base, "radius", what)?;
             let r = number::<R>(radius, &f("radius"))?;
+            if radius > 0.0 && r == R::ZERO {
+                return Err(Invalid::new(
+                    f("radius"),
+                    format!(
+                        "{} is too small for {}: it rounds to 0",
+                        show(radius),
+                        R::NAME
+                    ),
+                    "use --precision f64, or scale the problem",
+                ));
+            }
             if r <= R::ZERO {
                 return Err(Invalid::new(
                     f("radius"),
@@ -517,7 +499,7 @@ fn material<R: Real>(spec: &MaterialSpec, field: &str) -> Result<NamedMaterial<R
 }
 
 fn material_color<R: Real>(c: &ColorSpec, field: &str) -> Result<V3<R>, Invalid> {
-    if let ColorSpec::Scaled(ScaledColor { k, .. }) = c {
+    if let ColorSpec::Scaled(ScaledColor { k, color: o }) = c {
         if !(0.0..=1.0).contains(k) {
             return Err(Invalid::new(
                 format!("{field}.k"),
@@ -526,9 +508,7 @@ fn material_color<R: Real>(c: &ColorSpec, field: &str) -> Result<V3<R>, Invalid>
                  give the product as one colour [r, g, b] if you mean something else",
             ));
         }
-        if let ColorSpec::Scaled(ScaledColor { color: o, .. }) = c {
-            color::<R>(*o, &format!("{field}.color"), ColorRange::Material)?;
-        }
+        color::<R>(*o, &format!("{field}.color"), ColorRange::Material)?;
     }
     color::<R>(c.product(), field, ColorRange::Material)
 }

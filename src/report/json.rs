@@ -7,12 +7,12 @@
 use serde::Serialize;
 
 use super::messages;
+use crate::core::LightSet;
 use crate::core::{Falloff, LightKind, LightStatus, LightTerm, Real, SpecularStatus, Vector, V3};
 use crate::problem::model::ReflectivitySource;
 use crate::problem::Problem;
 use crate::solve::{
-    Evaluation, Finding, FindingCode, Intersection, OmissionReason, ReadingCode, Side, Solution,
-    Term,
+    Evaluation, Intersection, OmissionReason, ReadingCode, Side, Solution, Term, ViewSource,
 };
 
 /// The version of this output format.
@@ -38,7 +38,7 @@ pub struct Document<'a, R: Real> {
 #[derive(Serialize)]
 pub struct FindingOut {
     #[serde(flatten)]
-    pub finding: Finding,
+    pub finding: crate::solve::Finding,
     pub message: String,
 }
 
@@ -88,11 +88,14 @@ pub struct NormalOut<R: Real> {
 
 #[derive(Serialize)]
 pub struct ViewerOut<R: Real> {
-    /// E; `null` when V is the ray's direction.
+    /// E; `null` when V comes from the ray.
     pub position: Option<V3<R>>,
+    /// "viewer", "ray" (V = D) or "reversed_ray" (V = −D).
+    pub source: ViewSource,
     pub v: V3<R>,
-    pub n_dot_v: R,
-    pub side: Side,
+    /// `null` when the problem gives no normal.
+    pub n_dot_v: Option<R>,
+    pub side: Option<Side>,
 }
 
 #[derive(Serialize)]
@@ -122,6 +125,8 @@ pub struct ConeOut<R: Real> {
     pub angle_deg: R,
     pub exponent: R,
     pub cos_psi: R,
+    /// ψ in degrees, the angle between the axis and L.
+    pub psi_deg: R,
     pub cos_gamma: R,
     pub inside: bool,
     pub on_edge: bool,
@@ -259,6 +264,7 @@ fn evaluation<R: Real>(problem: &Problem<R>, e: &Evaluation<R>) -> EvaluationOut
         }),
         viewer: e.viewer.map(|v| ViewerOut {
             position: v.position,
+            source: v.source,
             v: v.v,
             n_dot_v: v.n_dot_v,
             side: v.side,
@@ -274,11 +280,15 @@ fn evaluation<R: Real>(problem: &Problem<R>, e: &Evaluation<R>) -> EvaluationOut
         },
         ambient: AmbientOut {
             lights: problem.ambient_info.iter().map(|a| a.color).collect(),
-            i_a: problem.lights.ambient,
+            i_a: e.lights_used(problem).ambient,
             o_a: m.o_a,
             term: ambient_term,
         },
-        lights: e.lights.iter().map(|t| light(problem, t)).collect(),
+        lights: e
+            .lights
+            .iter()
+            .map(|t| light(problem, e.lights_used(problem), t))
+            .collect(),
         totals: TotalsOut {
             ambient: ambient_term.unwrap_or(V3::<R>::ZERO),
             diffuse: e.shade.diffuse,
@@ -302,8 +312,8 @@ fn evaluation<R: Real>(problem: &Problem<R>, e: &Evaluation<R>) -> EvaluationOut
     }
 }
 
-fn light<R: Real>(problem: &Problem<R>, t: &LightTerm<R>) -> LightOut<R> {
-    let light = &problem.lights.lights[t.index];
+fn light<R: Real>(problem: &Problem<R>, set: &LightSet<R>, t: &LightTerm<R>) -> LightOut<R> {
+    let light = &set.lights[t.index];
     let info = &problem.light_info[t.index];
     let a = &t.arrival;
     let cone = match (light.kind, a.cone) {
@@ -312,6 +322,7 @@ fn light<R: Real>(problem: &Problem<R>, t: &LightTerm<R>) -> LightOut<R> {
             angle_deg: cone.angle_deg,
             exponent: cone.exponent,
             cos_psi: test.cos_psi,
+            psi_deg: test.psi_deg,
             cos_gamma: test.cos_gamma,
             inside: test.inside,
             on_edge: test.on_edge,
@@ -348,9 +359,4 @@ fn light<R: Real>(problem: &Problem<R>, t: &LightTerm<R>) -> LightOut<R> {
             literal: t.specular.literal,
         },
     }
-}
-
-/// Whether any finding has this code (a convenience for callers and tests).
-pub fn has_finding(s: &[Finding], code: FindingCode) -> bool {
-    s.iter().any(|f| f.code == code)
 }

@@ -32,6 +32,9 @@ pub fn finding<R: Real>(problem: &Problem<R>, f: &Finding) -> String {
             v("t")
         ),
         FindingCode::NoIntersection => "the ray's line meets no surface: nothing to shade".into(),
+        FindingCode::RayStartsOnSurface => "the ray starts on a surface (t = 0), which is not a \
+             hit (a hit needs t > 0)"
+            .into(),
         FindingCode::LightBehindSurface => format!(
             "{light} is on the back side of the surface: cos θ = −N·L = {} < 0, so it adds no \
              diffuse and no specular light",
@@ -51,7 +54,7 @@ pub fn finding<R: Real>(problem: &Problem<R>, f: &Finding) -> String {
         ),
         FindingCode::ViewerBehindSurface => format!(
             "the viewer is on the back side of the surface (N·V = {} > 0): it sees the side the \
-             normal points away from; the normal is used as given",
+             normal points away from",
             v("n_dot_v")
         ),
         FindingCode::ViewerInTangentPlane => {
@@ -131,7 +134,10 @@ pub fn omission(o: &Omission) -> String {
 /// The label of a reading.
 pub fn reading_label(code: ReadingCode) -> &'static str {
     match code {
-        ReadingCode::NormalReversed => "likely intended reading: the normal reversed",
+        ReadingCode::LightReversed => {
+            "likely intended reading: L from the point to the light (the light mirrored to the front)"
+        }
+        ReadingCode::NormalReversed => "another reading: the normal reversed",
         ReadingCode::LineBehindOrigin => {
             "likely intended reading: the point where the ray's line meets the surface"
         }
@@ -141,15 +147,23 @@ pub fn reading_label(code: ReadingCode) -> &'static str {
 /// Why a reading is shown and what it assumes.
 pub fn reading_explanation(code: ReadingCode) -> &'static str {
     match code {
+        ReadingCode::LightReversed => {
+            "as written, no light lights the surface and one is behind \
+             it. Taking L = (P_l − P)/‖P_l − P‖, the opposite of Eq. 4.1 (a common slip, and the \
+             convention of many textbooks), is the same as mirroring each light through P to the \
+             front: light and viewer are then on the same side and every term of Eq. 4.16 is \
+             used. Its colour is the negative of the literal Eq. 4.16 where n_s is odd. This is \
+             not the problem as written"
+        }
         ReadingCode::NormalReversed => {
-            "every direct light is behind the surface as given. \
-             Reversing N makes the surface face the light, which is what taking |cos θ| \
-             amounts to; the viewer may then be on the back side. This is not the problem as \
-             written"
+            "the surface taken as lit from behind: reversing N makes \
+             it face the light, which is what taking |cos θ| amounts to; the viewer is then on \
+             the back side, so there is no specular term. This is not the problem as written"
         }
         ReadingCode::LineBehindOrigin => {
             "the hit at t < 0 is behind the ray's origin; it is \
-             the hit of the ray with its direction reversed. This is not the problem as written"
+             the hit of the ray with its direction reversed, so V = −D where no viewer is \
+             given. This is not the problem as written"
         }
     }
 }

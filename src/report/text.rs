@@ -6,11 +6,11 @@ use std::fmt::Write;
 use super::messages;
 use super::number::{num, vec3};
 use crate::core::real::to_f64_array;
-use crate::core::{Falloff, LightKind, LightStatus, LightTerm, Real, SpecularStatus, V3};
+use crate::core::{Falloff, LightKind, LightSet, LightStatus, LightTerm, Real, SpecularStatus, V3};
 use crate::problem::format::ColorSpec;
 use crate::problem::model::ReflectivitySource;
 use crate::problem::Problem;
-use crate::solve::{Evaluation, Intersection, Side, Solution};
+use crate::solve::{Evaluation, Intersection, Side, Solution, ViewSource};
 
 /// Column at which equation references start.
 const EQ_COLUMN: usize = 64;
@@ -210,21 +210,23 @@ fn evaluation<R: Real>(out: &mut String, problem: &Problem<R>, e: &Evaluation<R>
 
     out.push_str("  Steps\n");
     if let Some(vw) = &e.viewer {
-        let how = if vw.position.is_some() {
-            "V = (P − E)/‖P − E‖"
-        } else {
-            "V = D (the ray's direction)"
+        let how = match vw.source {
+            ViewSource::Viewer => "V = (P − E)/‖P − E‖",
+            ViewSource::Ray => "V = D (the ray comes from the eye)",
+            ViewSource::ReversedRay => "V = −D (the reversed ray)",
         };
         step(out, 4, &format!("{how} = {}", v::<R>(vw.v)), "Eq. 4.10");
-        let side = match vw.side {
-            Side::Front => "the viewer is in front of the surface",
-            Side::Back => "the viewer is BEHIND the surface",
-            Side::InPlane => "the viewer is in the tangent plane",
-        };
-        step(out, 6, &format!("N·V = {}: {side}", n(vw.n_dot_v)), "");
+        if let (Some(d), Some(side)) = (vw.n_dot_v, vw.side) {
+            let side = match side {
+                Side::Front => "the viewer is in front of the surface",
+                Side::Back => "the viewer is BEHIND the surface",
+                Side::InPlane => "the viewer is in the tangent plane",
+            };
+            step(out, 6, &format!("N·V = {}: {side}", n(d)), "");
+        }
     }
     // Ambient.
-    if let (Some(i_a), Some(term)) = (problem.lights.ambient, e.shade.ambient) {
+    if let (Some(i_a), Some(term)) = (e.lights_used(problem).ambient, e.shade.ambient) {
         if problem.ambient_info.len() > 1 {
             let parts: Vec<_> = problem
                 .ambient_info
@@ -247,7 +249,7 @@ fn evaluation<R: Real>(out: &mut String, problem: &Problem<R>, e: &Evaluation<R>
         step(out, 4, &messages::omission(o), "");
     }
     for t in &e.lights {
-        light(out, problem, t);
+        light(out, problem, e.lights_used(problem), t);
     }
     // The total.
     out.push_str("  Total\n");
@@ -300,8 +302,8 @@ fn evaluation<R: Real>(out: &mut String, problem: &Problem<R>, e: &Evaluation<R>
     }
 }
 
-fn light<R: Real>(out: &mut String, problem: &Problem<R>, t: &LightTerm<R>) {
-    let l = &problem.lights.lights[t.index];
+fn light<R: Real>(out: &mut String, problem: &Problem<R>, set: &LightSet<R>, t: &LightTerm<R>) {
+    let l = &set.lights[t.index];
     let info = &problem.light_info[t.index];
     let a = &t.arrival;
     let name = messages::light_name(problem, info.file_index);
@@ -364,16 +366,16 @@ fn light<R: Real>(out: &mut String, problem: &Problem<R>, t: &LightTerm<R>) {
             (true, false) => "inside the cone (ψ < γ)",
             _ => "OUTSIDE the cone (ψ > γ)",
         };
-        step(
-            out,
-            6,
-            &format!(
-                "cos ψ = D_l·L = {} vs cos γ = {}: {verdict}",
-                n(c.cos_psi),
-                n(c.cos_gamma)
-            ),
-            "Eq. 4.4",
+        let gamma = match l.kind {
+            LightKind::Spot { cone, .. } => n(cone.angle_deg),
+            _ => String::new(),
+        };
+        let test = format!(
+            "cos ψ = D_l·L = {}, ψ = {}° vs γ = {gamma}°: {verdict}",
+            n(c.cos_psi),
+            n(c.psi_deg)
         );
+        step(out, 6, &test, "Eq. 4.4");
         step(
             out,
             6,

@@ -17,6 +17,8 @@ pub enum FindingCode {
     HitBehindOrigin,
     /// The ray's line meets no surface at all.
     NoIntersection,
+    /// The ray starts on a surface (t = 0), which is not a hit (t > 0).
+    RayStartsOnSurface,
     /// A light is on the back side of the surface (cos θ < 0).
     LightBehindSurface,
     /// A light lies in the tangent plane (cos θ = 0).
@@ -74,8 +76,15 @@ impl Finding {
 }
 
 /// The findings of a solved problem, in order of importance.
-pub(super) fn find<R: Real>(problem: &Problem<R>, s: &Solution<R>) -> Vec<Finding> {
+pub(super) fn find<R: Real>(
+    problem: &Problem<R>,
+    s: &Solution<R>,
+    starts_on_surface: bool,
+) -> Vec<Finding> {
     let mut out = Vec::new();
+    if starts_on_surface && s.evaluation.is_none() {
+        out.push(Finding::new(FindingCode::RayStartsOnSurface));
+    }
     if let Some(x) = &s.intersection {
         match (x.t, x.in_front) {
             (Some(t), false) => out.push(Finding::new(FindingCode::HitBehindOrigin).value("t", t)),
@@ -106,12 +115,14 @@ pub(super) fn find<R: Real>(problem: &Problem<R>, s: &Solution<R>) -> Vec<Findin
             }
         }
         if let Some(v) = &e.viewer {
-            match v.side {
-                Side::Back => out.push(
-                    Finding::new(FindingCode::ViewerBehindSurface).value("n_dot_v", v.n_dot_v),
-                ),
-                Side::InPlane => out.push(Finding::new(FindingCode::ViewerInTangentPlane)),
-                Side::Front => {}
+            match (v.side, v.n_dot_v) {
+                (Some(Side::Back), Some(d)) => {
+                    out.push(Finding::new(FindingCode::ViewerBehindSurface).value("n_dot_v", d))
+                }
+                (Some(Side::InPlane), _) => {
+                    out.push(Finding::new(FindingCode::ViewerInTangentPlane))
+                }
+                _ => {}
             }
         }
     }

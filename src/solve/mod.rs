@@ -6,8 +6,10 @@
 mod findings;
 
 use crate::core::vector::between;
-use crate::core::{shade, AllVisible, LightStatus, LightTerm, Real, Shade, Vector, V3};
-use crate::problem::validate::light_label;
+use crate::core::{
+    shade, AllVisible, Light, LightKind, LightSet, LightStatus, LightTerm, Real, Shade, Vector, V3,
+};
+use crate::problem::validate::{light_label, show};
 use crate::problem::{Invalid, NamedMaterial, Problem, Target};
 
 pub use findings::{Finding, FindingCode};
@@ -67,16 +69,29 @@ pub enum Side {
     InPlane,
 }
 
+/// Where V comes from.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum ViewSource {
+    /// V = (P − E)/‖P − E‖ from the viewer's position.
+    Viewer,
+    /// V = D: the ray comes from the eye.
+    Ray,
+    /// V = −D: the reversed ray of a reading.
+    ReversedRay,
+}
+
 /// The viewing direction used at the point.
 #[derive(Clone, Copy, Debug)]
 pub struct ViewerUsed<R: Real> {
-    /// E; `None` when V is the ray's own direction.
+    /// E, when V comes from the viewer.
     pub position: Option<V3<R>>,
-    /// V = (P − E)/‖P − E‖, from the eye to the point.
+    pub source: ViewSource,
+    /// V, unit, from the eye to the point.
     pub v: V3<R>,
-    /// N·V (negative when the viewer is in front of the surface).
-    pub n_dot_v: R,
-    pub side: Side,
+    /// N·V (negative when the viewer is in front of the surface); `None` without a normal.
+    pub n_dot_v: Option<R>,
+    pub side: Option<Side>,
 }
 
 /// A term of Eq. 4.16.
@@ -113,6 +128,8 @@ pub struct Evaluation<R: Real> {
     pub normal: Option<NormalUsed<R>>,
     pub viewer: Option<ViewerUsed<R>>,
     pub material: NamedMaterial<R>,
+    /// The lights as shaded, when a reading changed them (the problem's otherwise).
+    pub light_set: Option<LightSet<R>>,
     /// The per-light record of the core.
     pub lights: Vec<LightTerm<R>>,
     pub shade: Shade<R>,
@@ -134,12 +151,23 @@ pub struct Reading<R: Real> {
 #[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize)]
 #[serde(rename_all = "snake_case")]
 pub enum ReadingCode {
-    /// Every direct light is behind the surface: the normal reversed, as if the surface faced
-    /// the light (what taking |cos θ| amounts to).
+    /// No light lights the surface as given and one is behind it: L taken from the point to
+    /// the light, the opposite of Eq. 4.1, which is the same as mirroring each light through P
+    /// to the front side. Light and viewer are then both in front.
+    LightReversed,
+    /// The same situation read as a surface lit from behind: the normal reversed (what taking
+    /// |cos θ| amounts to); the viewer is then behind it.
     NormalReversed,
     /// The ray meets the surface only behind its origin: the point where its line does (t < 0),
     /// which is the hit of the reversed ray.
     LineBehindOrigin,
+}
+
+impl<R: Real> Evaluation<R> {
+    /// The lights this evaluation shaded with.
+    pub fn lights_used<'a>(&'a self, problem: &'a Problem<R>) -> &'a LightSet<R> {
+        self.light_set.as_ref().unwrap_or(&problem.lights)
+    }
 }
 
 /// Solves a validated problem.
@@ -152,6 +180,7 @@ pub fn solve<R: Real>(problem: &Problem<R>) -> Result<Solution<R>, Invalid> {
         evaluation: None,
         readings: Vec::new(),
     };
+    let mut starts_on_surface = false;
     match &problem.target {
         Target::Point {
             position,
@@ -164,24 +193,33 @@ pub fn solve<R: Real>(problem: &Problem<R>) -> Result<Solution<R>, Invalid> {
                 used: n.unit,
                 reversed: false,
             });
-            let eval = evaluate(problem, *position, normal, None, material)?;
-            // Reading: every direct light behind the surface.
+            let lights = &problem.lights;
+            let at = |n, lights: Option<LightSet<R>>| {
+                evaluate(problem, *position, n, None, material, lights)
+            };
+            let eval = at(normal, None)?;
+            // Readings: no light lights the surface as given, and one is behind it.
             let behind = eval
                 .lights
                 .iter()
                 .any(|t| t.status == LightStatus::BehindSurface);
             let lit = eval.lights.iter().any(|t| t.status == LightStatus::Lit);
-            if behind && !lit {
+            if let (true, false, Some(p)) = (behind, lit, *position) {
+                let mirrored = mirror_lights(lights, p);
+                solution.readings.push(Reading {
+                    code: ReadingCode::LightReversed,
+                    intersection: None,
+                    evaluation: at(normal, Some(mirrored))?,
+                });
                 let reversed = normal.map(|n| NormalUsed {
                     used: -n.used,
                     reversed: true,
                     ..n
                 });
-                let alt = evaluate(problem, *position, reversed, None, material)?;
                 solution.readings.push(Reading {
                     code: ReadingCode::NormalReversed,
                     intersection: None,
-                    evaluation: alt,
+                    evaluation: at(reversed, None)?,
                 });
             }
             solution.evaluation = Some(eval);
@@ -196,6 +234,7 @@ pub fn solve<R: Real>(problem: &Problem<R>) -> Result<Solution<R>, Invalid> {
             let mut behind: Option<(usize, R)> = None;
             for (i, s) in surfaces.iter().enumerate() {
                 let hits = s.shape.line_hits(ray);
+                starts_on_surface |= hits.at_origin();
                 if let Some(t) = hits.nearest_in_front() {
                     if front.is_none_or(|(_, best)| t < best) {
                         front = Some((i, t));
@@ -218,10 +257,24 @@ pub fn solve<R: Real>(problem: &Problem<R>) -> Result<Solution<R>, Invalid> {
                 in_front: hit.is_some_and(|(_, t)| t > R::ZERO),
             };
             // The incoming direction: the ray's, or the reversed ray's for a hit behind.
-            let at_hit = |(i, t): (usize, R), incoming: V3<R>| {
+            let at_hit = |(i, t): (usize, R), source: ViewSource| {
                 let s = &surfaces[i];
                 let p = s.shape.point_at(ray, t);
-                let own = s.shape.normal_at(p);
+                let own = s.shape.normal_at(p).ok_or_else(|| {
+                    Invalid::new(
+                        format!("surfaces[{i}]"),
+                        format!(
+                            "the hit point cannot be told from the sphere's centre in {}: the \
+                             radius is below the rounding of the coordinates",
+                            R::NAME
+                        ),
+                        "use --precision f64, a larger radius, or coordinates nearer the origin",
+                    )
+                })?;
+                let incoming = match source {
+                    ViewSource::ReversedRay => -ray.direction,
+                    _ => ray.direction,
+                };
                 // Turn the normal to face the incoming ray (DESIGN.md, as in the tracer).
                 let reversed = own.dot(incoming) > R::ZERO;
                 let normal = NormalUsed {
@@ -230,41 +283,91 @@ pub fn solve<R: Real>(problem: &Problem<R>) -> Result<Solution<R>, Invalid> {
                     used: if reversed { -own } else { own },
                     reversed,
                 };
-                evaluate(problem, Some(p), Some(normal), Some(incoming), &s.material)
+                evaluate(
+                    problem,
+                    Some(p),
+                    Some(normal),
+                    Some((incoming, source)),
+                    &s.material,
+                    None,
+                )
             };
             match (front, behind) {
                 (Some(hit), _) => {
                     solution.intersection = Some(record(Some(hit)));
-                    solution.evaluation = Some(at_hit(hit, ray.direction)?);
+                    solution.evaluation = Some(at_hit(hit, ViewSource::Ray)?);
                 }
                 (None, Some(hit)) => {
                     let rec = record(Some(hit));
                     solution.intersection = Some(rec);
-                    let eval = at_hit(hit, -ray.direction)?;
                     solution.readings.push(Reading {
                         code: ReadingCode::LineBehindOrigin,
                         intersection: Some(rec),
-                        evaluation: eval,
+                        evaluation: at_hit(hit, ViewSource::ReversedRay)?,
                     });
                 }
                 (None, None) => solution.intersection = Some(record(None)),
             }
         }
     }
-    solution.findings = findings::find(problem, &solution);
+    solution.findings = findings::find(problem, &solution, starts_on_surface);
     Ok(solution)
 }
 
-/// Shades one point with the core, recording every intermediate.
+/// Each light mirrored through P: a point or spot light moves to 2P − P_l (a spot's axis
+/// reversed with it), a directional light travels the other way. Every L, R and cos ψ is
+/// then the negative of the original (cos ψ unchanged), d unchanged: exactly "L reversed".
+fn mirror_lights<R: Real>(lights: &LightSet<R>, p: V3<R>) -> LightSet<R> {
+    let mirror = |q: V3<R>| p * R::TWO - q;
+    let mirrored = lights
+        .lights
+        .iter()
+        .map(|l| Light {
+            color: l.color,
+            kind: match l.kind {
+                LightKind::Point { position, falloff } => LightKind::Point {
+                    position: mirror(position),
+                    falloff,
+                },
+                LightKind::Directional { direction } => LightKind::Directional {
+                    direction: -direction,
+                },
+                LightKind::Spot {
+                    position,
+                    falloff,
+                    mut cone,
+                } => {
+                    cone.axis = -cone.axis;
+                    LightKind::Spot {
+                        position: mirror(position),
+                        falloff,
+                        cone,
+                    }
+                }
+            },
+        })
+        .collect();
+    LightSet {
+        ambient: lights.ambient,
+        lights: mirrored,
+    }
+}
+
+/// Shades one point with the core, recording every intermediate. `ray` is the incoming
+/// direction and where V comes from when the problem has no viewer; `lights` replaces the
+/// problem's lights in a reading that changes them. Undefined L or V is an error here, for
+/// point and ray problems alike.
 fn evaluate<R: Real>(
     problem: &Problem<R>,
     p: Option<V3<R>>,
     normal: Option<NormalUsed<R>>,
-    ray_direction: Option<V3<R>>,
+    ray: Option<(V3<R>, ViewSource)>,
     material: &NamedMaterial<R>,
+    lights: Option<LightSet<R>>,
 ) -> Result<Evaluation<R>, Invalid> {
-    // The viewing direction V = (P − E)/‖P − E‖, from the eye to the point (Eq. 4.10).
-    let viewer = match (problem.viewer, p, ray_direction) {
+    let set = lights.as_ref().unwrap_or(&problem.lights);
+    // The viewing direction V, from the eye to the point (Eq. 4.10).
+    let viewer = match (problem.viewer, p, ray) {
         (Some(e), Some(p), _) => {
             let v = between::<R>(e, p).ok_or_else(|| {
                 Invalid::new(
@@ -283,35 +386,38 @@ fn evaluate<R: Real>(
                     "bring the coordinates into a smaller range",
                 ));
             }
-            Some((Some(e), v.unit))
+            Some((Some(e), ViewSource::Viewer, v.unit))
         }
-        (None, Some(_), Some(d)) => Some((None, d)),
+        (None, Some(_), Some((d, source))) => Some((None, source, d)),
         _ => None,
     };
-    let n_used = normal.map_or(V3::<R>::ZERO, |n| n.used);
-    let viewer = viewer.map(|(position, v)| {
-        let n_dot_v = n_used.dot(v);
+    let viewer = viewer.map(|(position, source, v)| {
+        let n_dot_v = normal.map(|n| n.used.dot(v));
         ViewerUsed {
             position,
+            source,
             v,
             n_dot_v,
-            side: if n_dot_v < R::ZERO {
-                Side::Front
-            } else if n_dot_v > R::ZERO {
-                Side::Back
-            } else {
-                Side::InPlane
-            },
+            side: n_dot_v.map(|d| {
+                if d < R::ZERO {
+                    Side::Front
+                } else if d > R::ZERO {
+                    Side::Back
+                } else {
+                    Side::InPlane
+                }
+            }),
         }
     });
-    // Lights exactly at a hit point (ray problems; point problems are checked on loading).
+    // A light exactly at the point: L (Eq. 4.1) is undefined.
     if let Some(p) = p {
-        for (l, info) in problem.lights.lights.iter().zip(&problem.light_info) {
+        for (l, info) in set.lights.iter().zip(&problem.light_info) {
             if l.position() == Some(p) {
                 return Err(Invalid::new(
                     format!("lights[{}].position", info.file_index),
-                    "the light is exactly at the point being shaded, so L (Eq. 4.1) is undefined",
-                    "move the light",
+                    "the light is exactly at the point being shaded, so \
+                     L = (P − P_l)/‖P − P_l‖ (Eq. 4.1) is undefined",
+                    "move the light or the point",
                 ));
             }
         }
@@ -319,28 +425,22 @@ fn evaluate<R: Real>(
 
     let at = crate::core::ShadingPoint {
         p: p.unwrap_or(V3::<R>::ZERO),
-        n: n_used,
+        n: normal.map_or(V3::<R>::ZERO, |n| n.used),
         v: viewer.map(|v| v.v),
     };
-    let mut lights = Vec::with_capacity(problem.lights.lights.len());
-    let shade = shade(
-        &at,
-        &material.material,
-        &problem.lights,
-        &mut AllVisible,
-        &mut lights,
-    );
-    check_finite(problem, &shade, &lights)?;
+    let mut records = Vec::with_capacity(set.lights.len());
+    let shade = shade(&at, &material.material, set, &mut AllVisible, &mut records);
+    check_finite(problem, &shade, &records)?;
 
     let m = &material.material;
     let mut omitted = Vec::new();
     let mut omit = |term, reason| omitted.push(Omission { term, reason });
-    match (problem.lights.ambient, m.o_a) {
+    match (set.ambient, m.o_a) {
         (None, _) => omit(Term::Ambient, OmissionReason::NoAmbientLight),
         (Some(_), None) => omit(Term::Ambient, OmissionReason::NoAmbientColor),
         _ => {}
     }
-    if problem.lights.lights.is_empty() {
+    if set.lights.is_empty() {
         omit(Term::Diffuse, OmissionReason::NoDirectLight);
         omit(Term::Specular, OmissionReason::NoDirectLight);
     } else {
@@ -362,7 +462,8 @@ fn evaluate<R: Real>(
         normal,
         viewer,
         material: material.clone(),
-        lights,
+        light_set: lights,
+        lights: records,
         shade,
         omitted,
         clamped,
@@ -381,24 +482,37 @@ fn check_finite<R: Real>(
     shade: &Shade<R>,
     lights: &[LightTerm<R>],
 ) -> Result<(), Invalid> {
+    let fix = if R::NAME == "f32" {
+        "use --precision f64, or bring the numbers into a smaller range"
+    } else {
+        "bring the numbers (colours, distances, coordinates) into a smaller range"
+    };
     for (t, info) in lights.iter().zip(&problem.light_info) {
-        let ok = t.arrival.distance.is_none_or(|d| d.is_finite())
-            && t.arrival.i_l.is_finite()
-            && t.arrival.falloff_factor.is_finite()
-            && t.diffuse.is_none_or(|d| d.is_finite())
+        let a = &t.arrival;
+        let name = light_label(info.file_index, info.kind);
+        let distance = a
+            .distance
+            .map_or(String::new(), |d| format!(" (d = {})", show(d.to_f64())));
+        let what = if !a.distance.is_none_or(|d| d.is_finite()) {
+            Some(format!("the distance from {name} to the point"))
+        } else if !a.falloff_factor.is_finite() {
+            Some(format!("the falloff factor 1/d^f of {name}{distance}"))
+        } else if !a.i_l.is_finite() {
+            Some(format!("the light I_l arriving from {name}{distance}"))
+        } else if !(t.diffuse.is_none_or(|d| d.is_finite())
             && t.diffuse_literal.is_none_or(|d| d.is_finite())
             && t.specular.term.is_finite()
-            && t.specular.literal.is_none_or(|d| d.is_finite());
-        if !ok {
+            && t.specular.literal.is_none_or(|d| d.is_finite()))
+        {
+            Some(format!("the diffuse or specular term of {name}"))
+        } else {
+            None
+        };
+        if let Some(what) = what {
             return Err(Invalid::new(
                 format!("lights[{}]", info.file_index),
-                format!(
-                    "the light reaching the point from {} overflows {} (d = {})",
-                    light_label(info.file_index, info.kind),
-                    R::NAME,
-                    t.arrival.distance.map_or("∞".into(), |d| d.to_string())
-                ),
-                "use --precision f64, or bring the numbers into a smaller range",
+                format!("{what} overflows {}", R::NAME),
+                fix,
             ));
         }
     }
@@ -407,7 +521,7 @@ fn check_finite<R: Real>(
         return Err(Invalid::new(
             "lights",
             format!("the total colour overflows {}", R::NAME),
-            "use --precision f64, or bring the numbers into a smaller range",
+            fix,
         ));
     }
     Ok(())
