@@ -27,7 +27,8 @@ impl<R: Real> Sphere<R> {
         let b = ray.direction.dot(f);
         let perp = length::<R>(f - ray.direction * b);
         let disc = (self.radius - perp) * (self.radius + perp);
-        if !(disc >= R::ZERO) {
+        // A negative (or NaN) discriminant: the line misses.
+        if disc.partial_cmp(&R::ZERO).is_none_or(|o| o.is_lt()) {
             return LineHits::NONE;
         }
         let root = disc.sqrt();
