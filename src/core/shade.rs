@@ -71,6 +71,20 @@ pub struct SpecularTerm<R: Real> {
     pub literal: Option<V3<R>>,
 }
 
+impl<R: Real> SpecularTerm<R> {
+    /// A specular term that was not computed, for the reason `status` gives.
+    fn skipped(status: SpecularStatus) -> Self {
+        SpecularTerm {
+            status,
+            r: None,
+            cos_phi: None,
+            cos_phi_pow: None,
+            term: V3::<R>::ZERO,
+            literal: None,
+        }
+    }
+}
+
 /// Everything one light contributes at P.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct LightTerm<R: Real> {
@@ -202,18 +216,19 @@ pub fn shade<R: Real, Rec: Recorder<R>, Vis: Visibility<R>>(
         let lit = status == LightStatus::Lit;
         let arrives = arrival.reach == Reach::Arrives;
 
-        let diffuse_literal = match m.o_d {
-            Some(o_d) if Rec::DETAIL && arrives => Some(o_d * arrival.i_l * cos_theta),
-            Some(_) if Rec::DETAIL => Some(V3::<R>::ZERO),
-            _ => None,
-        };
-        let diffuse_term = m.o_d.map(|o_d| {
-            if lit {
-                o_d * arrival.i_l * cos_theta
-            } else {
-                V3::<R>::ZERO
+        // O_d I_l cos θ, formed once: used where the light is lit, recorded literally on request.
+        let (diffuse_term, diffuse_literal) = match m.o_d {
+            None => (None, None),
+            Some(o_d) => {
+                let value = if arrives && (lit || Rec::DETAIL) {
+                    o_d * arrival.i_l * cos_theta
+                } else {
+                    V3::<R>::ZERO
+                };
+                let term = if lit { value } else { V3::<R>::ZERO };
+                (Some(term), Rec::DETAIL.then_some(value))
             }
-        });
+        };
         if let Some(t) = diffuse_term {
             diffuse += t;
         }
@@ -223,30 +238,11 @@ pub fn shade<R: Real, Rec: Recorder<R>, Vis: Visibility<R>>(
 
         // Specular reflection, R = L − 2(N·L)N and cos φ = −R·V, Eq. 4.10 and 4.15.
         let spec = match (m.o_s, at.v) {
-            (None, _) => SpecularTerm {
-                status: SpecularStatus::NoSpecularColor,
-                r: None,
-                cos_phi: None,
-                cos_phi_pow: None,
-                term: V3::<R>::ZERO,
-                literal: None,
-            },
-            (Some(_), None) => SpecularTerm {
-                status: SpecularStatus::NoViewer,
-                r: None,
-                cos_phi: None,
-                cos_phi_pow: None,
-                term: V3::<R>::ZERO,
-                literal: None,
-            },
-            (Some(_), Some(_)) if !lit && !Rec::DETAIL => SpecularTerm {
-                status: SpecularStatus::LightNotLit,
-                r: None,
-                cos_phi: None,
-                cos_phi_pow: None,
-                term: V3::<R>::ZERO,
-                literal: None,
-            },
+            (None, _) => SpecularTerm::skipped(SpecularStatus::NoSpecularColor),
+            (Some(_), None) => SpecularTerm::skipped(SpecularStatus::NoViewer),
+            (Some(_), Some(_)) if !lit && !Rec::DETAIL => {
+                SpecularTerm::skipped(SpecularStatus::LightNotLit)
+            }
             (Some(o_s), Some(v)) => {
                 let r = arrival.l - at.n * (R::TWO * n_dot_l);
                 let cos_phi = -r.dot(v);

@@ -126,16 +126,11 @@ fn intersection<R: Real>(out: &mut String, x: &Intersection<R>) {
     }
 }
 
-fn color_spec(c: &Option<ColorSpec>) -> String {
+/// A material colour as given: "O", or "k·O = k × O".
+fn color_spec(c: &ColorSpec) -> String {
     match c {
-        Some(ColorSpec::Scaled(s)) => format!(
-            "{} = {} × {}",
-            vec3(c.as_ref().map_or([0.0; 3], |c| c.product())),
-            num(s.k),
-            vec3(s.color)
-        ),
-        Some(c) => vec3(c.product()),
-        None => "—".into(),
+        ColorSpec::Scaled(s) => format!("{} = {} × {}", vec3(c.product()), num(s.k), vec3(s.color)),
+        ColorSpec::Rgb(rgb) => vec3(*rgb),
     }
 }
 
@@ -173,29 +168,15 @@ fn evaluation<R: Real>(out: &mut String, problem: &Problem<R>, e: &Evaluation<R>
         .as_deref()
         .map_or(String::new(), |n| format!(" \"{n}\""));
     step(out, 4, &format!("material{name}:"), "");
-    if m.material.o_a.is_some() {
-        step(
-            out,
-            6,
-            &format!("O_a = {}", color_spec(&m.spec.ambient)),
-            "Eq. 4.5–4.6",
-        );
-    }
-    if m.material.o_d.is_some() {
-        step(
-            out,
-            6,
-            &format!("O_d = {}", color_spec(&m.spec.diffuse)),
-            "Eq. 4.7–4.8",
-        );
-    }
-    if m.material.o_s.is_some() {
-        step(
-            out,
-            6,
-            &format!("O_s = {}", color_spec(&m.spec.specular)),
-            "Eq. 4.9–4.10",
-        );
+    let colors = [
+        ("O_a", &m.spec.ambient, "Eq. 4.5–4.6"),
+        ("O_d", &m.spec.diffuse, "Eq. 4.7–4.8"),
+        ("O_s", &m.spec.specular, "Eq. 4.9–4.10"),
+    ];
+    for (symbol, spec, eq) in colors {
+        if let Some(c) = spec {
+            step(out, 6, &format!("{symbol} = {}", color_spec(c)), eq);
+        }
     }
     if m.spec.shininess.is_some() {
         step(out, 6, &format!("n_s = {}", n(m.material.n_s)), "Eq. 4.9");

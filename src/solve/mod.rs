@@ -193,7 +193,6 @@ pub fn solve<R: Real>(problem: &Problem<R>) -> Result<Solution<R>, Invalid> {
                 used: n.unit,
                 reversed: false,
             });
-            let lights = &problem.lights;
             let at = |n, lights: Option<LightSet<R>>| {
                 evaluate(problem, *position, n, None, material, lights)
             };
@@ -205,7 +204,7 @@ pub fn solve<R: Real>(problem: &Problem<R>) -> Result<Solution<R>, Invalid> {
                 .any(|t| t.status == LightStatus::BehindSurface);
             let lit = eval.lights.iter().any(|t| t.status == LightStatus::Lit);
             if let (true, false, Some(p)) = (behind, lit, *position) {
-                let mirrored = mirror_lights(lights, p);
+                let mirrored = mirror_lights(&problem.lights, p);
                 solution.readings.push(Reading {
                     code: ReadingCode::LightReversed,
                     intersection: None,
