@@ -2,6 +2,7 @@
 //! wording lives in [`messages`], so both formats say the same thing.
 
 pub mod json;
+pub mod lang;
 pub mod messages;
 pub mod number;
 pub mod text;

@@ -1,0 +1,13 @@
+//! The language of explanations and verdicts: English, or Portuguese (the chapter's own language,
+//! with its terms: luz ambiente, reflexão difusa, reflexão especular, decaimento, …).
+
+/// A language every user-facing phrase exists in.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash, clap::ValueEnum, serde::Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Lang {
+    /// English.
+    #[default]
+    En,
+    /// Portuguese (português), as in the course notes.
+    Pt,
+}
