@@ -14,3 +14,4 @@ pub mod geometry;
 pub mod problem;
 pub mod report;
 pub mod solve;
+pub mod tracer;

@@ -8,6 +8,7 @@ use std::process::ExitCode;
 use clap::{Args, Parser, Subcommand, ValueEnum};
 
 use crate::core::Real;
+use crate::tracer::output::ImageFormat;
 use crate::problem::{self, ProblemError};
 use crate::report;
 use crate::solve;
@@ -24,8 +25,71 @@ pub struct Cli {
 pub enum Command {
     /// Solve problem files, printing every intermediate quantity with its equation.
     Solve(SolveArgs),
+    /// Render a scene (a problem file with a camera) with the Whitted ray tracer, or explain
+    /// one pixel of it step by step.
+    Render(RenderArgs),
     /// Print the JSON Schema of the problem format.
     Schema(SchemaArgs),
+}
+
+#[derive(Debug, Args)]
+pub struct RenderArgs {
+    /// The scene: a problem file with a "camera" and "surfaces".
+    #[arg(value_name = "SCENE")]
+    pub scene: PathBuf,
+    /// The image to write (atomically): .png or .ppm. Required unless --explain-pixel.
+    #[arg(short, long, value_name = "PATH", required_unless_present = "explain_pixel")]
+    pub output: Option<PathBuf>,
+    /// The image format, when the output's extension does not say.
+    #[arg(long, value_enum, value_name = "FORMAT")]
+    pub image_format: Option<ImageFormat>,
+    /// The maximum recursion level (primary rays are level 1) [scene's, or 5].
+    #[arg(long, value_name = "N")]
+    pub max_level: Option<u32>,
+    /// The minimum weight of a reflection ray [scene's, or 1/255].
+    #[arg(long, value_name = "W")]
+    pub min_weight: Option<f64>,
+    /// Samples per pixel, 1 to 4096, stratified and deterministic [scene's, or 1].
+    #[arg(long, value_name = "N")]
+    pub samples: Option<u32>,
+    /// Shadow rays on or off [scene's, or on].
+    #[arg(long, value_enum, value_name = "ON|OFF")]
+    pub shadows: Option<Switch>,
+    /// Floating-point precision of the whole calculation.
+    #[arg(long, value_enum, default_value_t = Precision::F64)]
+    pub precision: Precision,
+    /// Worker threads (default: one per core). The image is the same for any number.
+    #[arg(long, value_name = "N")]
+    pub threads: Option<usize>,
+    /// Explain pixel X,Y (from the top-left corner, 0-based) step by step instead of writing
+    /// the image: its rays, each hit solved as `phong solve` solves a ray problem.
+    #[arg(long, value_name = "X,Y", value_parser = parse_pixel)]
+    pub explain_pixel: Option<(u32, u32)>,
+    /// Format of the explanation.
+    #[arg(long, value_enum, default_value_t = Format::Text)]
+    pub format: Format,
+    /// Print the number of rays traced and the time taken to stderr.
+    #[arg(long)]
+    pub stats: bool,
+}
+
+/// On or off.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum Switch {
+    On,
+    Off,
+}
+
+fn parse_pixel(s: &str) -> Result<(u32, u32), String> {
+    let (x, y) = s
+        .split_once(',')
+        .ok_or_else(|| format!("\"{s}\" is not X,Y (two whole numbers and a comma, e.g. 320,240)"))?;
+    let int = |t: &str| {
+        t.trim()
+            .parse::<u32>()
+            .map_err(|_| format!("\"{t}\" is not a pixel coordinate (a whole number ≥ 0)"))
+    };
+    Ok((int(x)?, int(y)?))
 }
 
 #[derive(Debug, Args)]
@@ -78,6 +142,7 @@ pub fn main() -> ExitCode {
 pub fn run(cli: &Cli) -> u8 {
     match &cli.command {
         Command::Solve(args) => solve_command(args),
+        Command::Render(args) => render_command(args),
         Command::Schema(args) => {
             let mut text = problem::schema_json();
             text.push('\n');
@@ -127,6 +192,181 @@ fn solve_command(args: &SolveArgs) -> u8 {
     } else {
         code
     }
+}
+
+fn render_command(args: &RenderArgs) -> u8 {
+    let result = match args.precision {
+        Precision::F32 => render_scene::<f32>(args),
+        Precision::F64 => render_scene::<f64>(args),
+    };
+    match result {
+        Ok(code) => code,
+        Err(e) => {
+            eprintln!("error: {e}");
+            EXIT_BAD_INPUT
+        }
+    }
+}
+
+/// Applies the command line's settings over the scene's; an invalid one names its flag.
+fn apply_settings<R: Real>(
+    args: &RenderArgs,
+    problem: &mut problem::Problem<R>,
+) -> Result<(), ProblemError> {
+    use crate::problem::validate::{check_max_level, check_min_weight, check_samples};
+    let flag = |name: &str, (message, fix): (String, String)| ProblemError::Usage {
+        flag: name.to_owned(),
+        message,
+        fix,
+    };
+    let s = &mut problem.render;
+    if let Some(level) = args.max_level {
+        check_max_level(level).map_err(|e| flag("--max-level", e))?;
+        s.max_level = level;
+    }
+    if let Some(w) = args.min_weight {
+        check_min_weight(w).map_err(|e| flag("--min-weight", e))?;
+        s.min_weight = R::from_f64(w);
+    }
+    if let Some(n) = args.samples {
+        check_samples(n).map_err(|e| flag("--samples", e))?;
+        s.samples = n;
+    }
+    if let Some(sw) = args.shadows {
+        s.shadows = sw == Switch::On;
+    }
+    Ok(())
+}
+
+fn render_scene<R: Real>(args: &RenderArgs) -> Result<u8, ProblemError> {
+    let path = &args.scene;
+    let (_, mut problem) = problem::load::<R>(path)?;
+    apply_settings(args, &mut problem)?;
+    let Some(camera) = problem.camera else {
+        return Err(crate::problem::Invalid::new(
+            "camera",
+            "missing: rendering needs a camera",
+            "add \"camera\": {\"eye\": [x, y, z], \"look_at\": [x, y, z], \"fov\": 45, \
+             \"width\": 640, \"height\": 480}",
+        )
+        .at(path));
+    };
+    if problem.surfaces().is_empty() {
+        return Err(crate::problem::Invalid::new(
+            "surfaces",
+            "missing: a scene needs surfaces for its rays to hit (this is a point problem)",
+            "add \"surfaces\" and a \"camera\", or solve it with `phong solve`",
+        )
+        .at(path));
+    }
+    let image_format = match (&args.output, args.image_format) {
+        (_, Some(f)) => Some(f),
+        (Some(out), None) => Some(ImageFormat::from_path(out).ok_or_else(|| ProblemError::Usage {
+            flag: "--output".into(),
+            message: format!("{} does not end in .png or .ppm", out.display()),
+            fix: "name the image *.png or *.ppm, or give --image-format png|ppm".into(),
+        })?),
+        (None, None) => None,
+    };
+    let pool = {
+        let mut b = rayon::ThreadPoolBuilder::new();
+        if let Some(n) = args.threads {
+            if n == 0 {
+                return Err(ProblemError::Usage {
+                    flag: "--threads".into(),
+                    message: "0 threads cannot render".into(),
+                    fix: "give --threads 1 or more (or leave it out: one per core)".into(),
+                });
+            }
+            b = b.num_threads(n);
+        }
+        b.build().map_err(|e| ProblemError::Usage {
+            flag: "--threads".into(),
+            message: format!("cannot start the worker threads: {e}"),
+            fix: "give fewer --threads".into(),
+        })?
+    };
+    let started = std::time::Instant::now();
+    let scene = pool.install(|| crate::tracer::Scene::new(&problem));
+    let file = path.display().to_string();
+
+    if let Some((x, y)) = args.explain_pixel {
+        if x >= camera.width || y >= camera.height {
+            return Err(ProblemError::Usage {
+                flag: "--explain-pixel".into(),
+                message: format!(
+                    "pixel {x},{y} is outside the {}×{} image",
+                    camera.width, camera.height
+                ),
+                fix: format!(
+                    "give X from 0 to {} and Y from 0 to {}",
+                    camera.width - 1,
+                    camera.height - 1
+                ),
+            });
+        }
+        let e = crate::tracer::explain_pixel(&problem, &camera, &scene, x, y)
+            .map_err(|e| e.at(path))?;
+        let out = match args.format {
+            Format::Text => report::explain::render_text(&file, &problem, &e),
+            Format::Json => {
+                let doc = report::explain::document(&file, &problem, &e);
+                let mut s = serde_json::to_string_pretty(
+                    &serde_json::to_value(doc).expect("the explanation serialises"),
+                )
+                .expect("JSON values serialise");
+                s.push('\n');
+                s
+            }
+        };
+        return Ok(emit(args.output.as_deref(), &out));
+    }
+
+    let out = args.output.as_deref().expect("clap requires --output here");
+    let bar = progress_bar(u64::from(camera.height));
+    let (image, counts) = pool.install(|| {
+        crate::tracer::render(&problem, &camera, &scene, &|| bar.inc(1))
+    });
+    bar.finish_and_clear();
+    let elapsed = started.elapsed();
+    let bytes = crate::tracer::output::encode(&image, image_format.expect("known format"));
+    if let Err(e) = write_atomically(out, &bytes) {
+        eprintln!("error: cannot write {}: {e}", out.display());
+        return Ok(EXIT_BAD_INPUT);
+    }
+    if args.stats {
+        let secs = elapsed.as_secs_f64();
+        eprintln!(
+            "{}×{}, {} sample(s)/pixel, {}: {} rays ({} primary, {} reflection, {} shadow) in \
+             {:.3} s, {:.2} Mrays/s",
+            image.width,
+            image.height,
+            problem.render.samples,
+            R::NAME,
+            counts.total(),
+            counts.primary,
+            counts.reflection,
+            counts.shadow,
+            secs,
+            counts.total() as f64 / secs / 1e6
+        );
+    }
+    Ok(EXIT_OK)
+}
+
+/// A progress bar on stderr when it is a terminal; hidden otherwise (and under CI).
+fn progress_bar(rows: u64) -> indicatif::ProgressBar {
+    use std::io::IsTerminal;
+    if !std::io::stderr().is_terminal() {
+        return indicatif::ProgressBar::hidden();
+    }
+    let bar = indicatif::ProgressBar::new(rows);
+    if let Ok(style) =
+        indicatif::ProgressStyle::with_template("rendering {bar:40} {pos}/{len} rows {elapsed}")
+    {
+        bar.set_style(style);
+    }
+    bar
 }
 
 /// Solves one file and returns its stable JSON document.

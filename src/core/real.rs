@@ -60,6 +60,14 @@ pub trait Real:
     fn cos_deg(self) -> Self;
     /// Rounds towards zero to an integer value.
     fn trunc(self) -> Self;
+    /// Tangent of an angle in radians.
+    fn tan(self) -> Self;
+    /// The next representable number towards +∞ (towards −∞ for `next_down`): rounding an
+    /// offset ray origin outward, as pbrt does.
+    fn next_up(self) -> Self;
+    fn next_down(self) -> Self;
+    /// Raises to an integer power by repeated multiplication.
+    fn powi(self, n: i32) -> Self;
 }
 
 /// A 3-vector of [`Real`]s: glam's `Vec3` or `DVec3`. Multiplying two vectors is the
@@ -91,6 +99,9 @@ pub trait Vector<R>:
     fn abs(self) -> Self;
     fn max_element(self) -> R;
     fn is_finite(self) -> bool;
+    fn x(self) -> R;
+    fn y(self) -> R;
+    fn z(self) -> R;
 }
 
 macro_rules! impl_real {
@@ -164,6 +175,22 @@ macro_rules! impl_real {
             fn trunc(self) -> Self {
                 <$t>::trunc(self)
             }
+            #[inline]
+            fn tan(self) -> Self {
+                <$t>::tan(self)
+            }
+            #[inline]
+            fn next_up(self) -> Self {
+                <$t>::next_up(self)
+            }
+            #[inline]
+            fn next_down(self) -> Self {
+                <$t>::next_down(self)
+            }
+            #[inline]
+            fn powi(self, n: i32) -> Self {
+                <$t>::powi(self, n)
+            }
         }
 
         impl Vector<$t> for $v {
@@ -199,6 +226,18 @@ macro_rules! impl_real {
             #[inline]
             fn max_element(self) -> $t {
                 <$v>::max_element(self)
+            }
+            #[inline]
+            fn x(self) -> $t {
+                self.x
+            }
+            #[inline]
+            fn y(self) -> $t {
+                self.y
+            }
+            #[inline]
+            fn z(self) -> $t {
+                self.z
             }
             #[inline]
             fn is_finite(self) -> bool {

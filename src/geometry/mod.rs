@@ -4,21 +4,32 @@
 //! hit behind the origin (t ≤ 0) counts is the caller's decision (DESIGN.md: a hit needs t > 0,
 //! and the solver reports what the line would give when it meets a surface only behind).
 
+pub mod aggregate;
+pub mod bounds;
+pub mod bvh;
+pub mod hit;
 pub mod plane;
 pub mod ray;
 pub mod sphere;
+pub mod triangle;
 
+pub use aggregate::{Aggregate, AggregateHit, ShadowRays};
+pub use bounds::Aabb;
+pub use bvh::{Bvh, BvhHit};
+pub use hit::{gamma, offset_origin, SurfaceHit};
 pub use plane::Plane;
 pub use ray::Ray;
 pub use sphere::Sphere;
+pub use triangle::{Triangle, TriangleHit};
 
-use crate::core::{Real, V3};
+use crate::core::{Real, Vector, V3};
 
 /// A surface of a ray problem or scene.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum Shape<R: Real> {
     Plane(Plane<R>),
     Sphere(Sphere<R>),
+    Triangle(Triangle<R>),
 }
 
 /// Where the line of a ray meets a surface: up to two parameters, nearest first.
@@ -59,13 +70,66 @@ impl<R: Real> Shape<R> {
                 t: [p.intersect_line(ray), None],
             },
             Shape::Sphere(s) => s.intersect_line(ray),
+            Shape::Triangle(t) => LineHits {
+                t: [t.line_t(ray), None],
+            },
+        }
+    }
+
+    /// The nearest hit with 0 < t < `t_max`, its point computed the accurate way for the shape
+    /// and bounded in error (for [`offset_origin`]). This is the one intersection routine of the
+    /// tracer and of the solver's ray problems.
+    #[inline]
+    pub fn hit(&self, ray: &Ray<R>, t_max: R) -> Option<SurfaceHit<R>> {
+        match self {
+            Shape::Plane(pl) => {
+                let t = pl.intersect_line(ray)?;
+                if !(t > R::ZERO && t < t_max) {
+                    return None;
+                }
+                // t carries the rounding of N·(Q − O)/(N·D); O + tD adds two more.
+                let p = ray.at(t);
+                let scale = ray.origin.abs() + pl.point.abs() + (ray.direction * t).abs();
+                Some(SurfaceHit {
+                    t,
+                    p,
+                    p_error: scale * gamma::<R>(7),
+                    normal: pl.normal,
+                })
+            }
+            Shape::Sphere(s) => {
+                let t = s
+                    .intersect_line(ray)
+                    .t
+                    .into_iter()
+                    .flatten()
+                    .find(|&t| t > R::ZERO && t < t_max)?;
+                // Re-projected onto the sphere: C + r·(P − C)/‖P − C‖, a few roundings of |C|
+                // and |P| (pbrt re-projects in object space; here C is not at the origin).
+                let p = s.project(ray.at(t));
+                Some(SurfaceHit {
+                    t,
+                    p,
+                    p_error: (s.center.abs() + p.abs()) * gamma::<R>(6),
+                    normal: s.normal_at(p)?,
+                })
+            }
+            Shape::Triangle(tri) => {
+                let h = tri.intersect(ray, t_max)?;
+                Some(SurfaceHit {
+                    t: h.t,
+                    p: h.p,
+                    p_error: h.p_error,
+                    normal: tri.normal()?,
+                })
+            }
         }
     }
 
     /// The point at t, re-projected onto the surface where that reduces rounding error.
     pub fn point_at(&self, ray: &Ray<R>, t: R) -> V3<R> {
         match self {
-            Shape::Plane(_) => ray.at(t),
+            Shape::Plane(_) | Shape::Triangle(_) => ray.at(t),
             Shape::Sphere(s) => s.project(ray.at(t)),
         }
     }
@@ -77,14 +141,16 @@ impl<R: Real> Shape<R> {
         match self {
             Shape::Plane(pl) => Some(pl.normal),
             Shape::Sphere(s) => s.normal_at(p),
+            Shape::Triangle(t) => t.normal(),
         }
     }
 
-    /// "plane" or "sphere".
+    /// "plane", "sphere" or "triangle".
     pub fn kind(&self) -> &'static str {
         match self {
             Shape::Plane(_) => "plane",
             Shape::Sphere(_) => "sphere",
+            Shape::Triangle(_) => "triangle",
         }
     }
 }

@@ -28,6 +28,13 @@ pub enum ProblemError {
         message: String,
         fix: String,
     },
+    /// A command-line setting that is out of range (`--samples 0`).
+    #[error("{flag}: {message}{}", fix_suffix(.fix))]
+    Usage {
+        flag: String,
+        message: String,
+        fix: String,
+    },
 }
 
 fn fix_suffix(fix: &str) -> String {
@@ -39,12 +46,13 @@ fn fix_suffix(fix: &str) -> String {
 }
 
 impl ProblemError {
-    /// A stable machine-readable kind for the JSON output: "read", "syntax" or "invalid".
+    /// A stable machine-readable kind for the JSON output: "read", "syntax", "invalid" or "usage".
     pub fn kind(&self) -> &'static str {
         match self {
             ProblemError::Read { .. } => "read",
             ProblemError::Syntax { .. } => "syntax",
             ProblemError::Invalid { .. } => "invalid",
+            ProblemError::Usage { .. } => "usage",
         }
     }
 
@@ -52,6 +60,7 @@ impl ProblemError {
     pub fn field(&self) -> Option<&str> {
         match self {
             ProblemError::Invalid { field, .. } => Some(field),
+            ProblemError::Usage { flag, .. } => Some(flag),
             ProblemError::Syntax { field, .. } => field.as_deref(),
             ProblemError::Read { .. } => None,
         }

@@ -44,9 +44,59 @@ pub struct ProblemFile {
     /// A ray problem: the ray whose nearest hit (t > 0) with `surfaces` is shaded.
     #[serde(default)]
     pub ray: Option<RaySpec>,
-    /// The surfaces of a ray problem.
+    /// The surfaces of a ray problem or a scene.
     #[serde(default)]
     pub surfaces: Vec<SurfaceSpec>,
+    /// A scene: the camera that `phong render` looks through. With a camera, `point` and `ray`
+    /// are optional.
+    #[serde(default)]
+    pub camera: Option<CameraSpec>,
+    /// The colour of a ray that hits nothing (default black).
+    #[serde(default)]
+    pub background: Option<Triple>,
+    /// How rays are traced: recursion level, minimum weight, shadows, samples per pixel.
+    #[serde(default)]
+    pub render: Option<RenderSpec>,
+}
+
+/// A pinhole camera.
+#[derive(Debug, Clone, Deserialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct CameraSpec {
+    /// The eye (the viewer E of every primary ray).
+    pub eye: Triple,
+    /// The point the camera looks at (the centre of the image).
+    pub look_at: Triple,
+    /// Which way is up in the image (default [0, 1, 0]); need not be unit or perpendicular.
+    #[serde(default)]
+    pub up: Option<Triple>,
+    /// The vertical field of view in degrees, 0 < fov < 180.
+    pub fov: f64,
+    /// Image width in pixels, 1 to 16384.
+    pub width: u32,
+    /// Image height in pixels, 1 to 16384.
+    pub height: u32,
+}
+
+/// Settings of the ray tracer (Section 4.4); each can be overridden on the command line.
+#[derive(Debug, Clone, Default, Deserialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct RenderSpec {
+    /// The maximum recursion level: the primary ray has level 1 and a ray is traced while its
+    /// level ≤ this (default 5; 1 means primary rays only).
+    #[serde(default)]
+    pub max_level: Option<u32>,
+    /// A reflection ray is traced only while its weight w_s = w_p·max(O_r) exceeds this
+    /// (default 1/255: below it a ray cannot change an 8-bit pixel of a colour in [0, 1]).
+    #[serde(default)]
+    pub min_weight: Option<f64>,
+    /// Whether shadow rays are traced (default true).
+    #[serde(default)]
+    pub shadows: Option<bool>,
+    /// Samples per pixel, 1 to 4096, on a stratified deterministic pattern (default 1: the
+    /// pixel's centre).
+    #[serde(default)]
+    pub samples: Option<u32>,
 }
 
 /// The point being shaded. `position` is needed by point and spot lights and by the viewer;
@@ -89,6 +139,10 @@ pub struct SurfaceSpec {
     #[serde(default)]
     pub radius: Option<f64>,
     #[serde(default)]
+    pub vertices: Option<[Triple; 3]>,
+    #[serde(default)]
+    pub file: Option<String>,
+    #[serde(default)]
     pub material: Option<MaterialRef>,
 }
 
@@ -98,6 +152,8 @@ pub struct SurfaceSpec {
 pub enum SurfaceType {
     Plane,
     Sphere,
+    Triangle,
+    Mesh,
 }
 
 impl SurfaceType {
@@ -105,6 +161,8 @@ impl SurfaceType {
         match self {
             SurfaceType::Plane => "plane",
             SurfaceType::Sphere => "sphere",
+            SurfaceType::Triangle => "triangle",
+            SurfaceType::Mesh => "mesh",
         }
     }
 
@@ -113,6 +171,8 @@ impl SurfaceType {
         match self {
             SurfaceType::Plane => &["point", "normal", "material"],
             SurfaceType::Sphere => &["center", "radius", "material"],
+            SurfaceType::Triangle => &["vertices", "material"],
+            SurfaceType::Mesh => &["file", "material"],
         }
     }
 }
@@ -125,6 +185,8 @@ impl SurfaceSpec {
             ("normal", self.normal.is_some()),
             ("center", self.center.is_some()),
             ("radius", self.radius.is_some()),
+            ("vertices", self.vertices.is_some()),
+            ("file", self.file.is_some()),
             ("material", self.material.is_some()),
         ];
         fields.iter().filter(|f| f.1).map(|f| f.0).collect()
@@ -150,6 +212,15 @@ enum SurfaceSchema {
         radius: f64,
         material: MaterialRef,
     },
+    /// The triangle with corners `vertices` (not all on one line); its normal is
+    /// (v1 − v0) × (v2 − v0), turned to face the incoming ray.
+    Triangle {
+        vertices: [Triple; 3],
+        material: MaterialRef,
+    },
+    /// The triangles of a Wavefront OBJ file (`file`, relative to this file's folder), all of
+    /// one material; polygons are split into triangles.
+    Mesh { file: String, material: MaterialRef },
 }
 
 impl JsonSchema for SurfaceSpec {
@@ -476,7 +547,7 @@ mod tests {
     fn surface_schema_and_parser_agree_on_the_fields_of_each_type() {
         let schema = serde_json::to_value(schemars::schema_for!(SurfaceSpec)).unwrap();
         let by_type = schema_fields(&schema);
-        assert_eq!(by_type.len(), 2);
+        assert_eq!(by_type.len(), 4);
         for (kind, fields) in by_type {
             let t: SurfaceType = serde_json::from_value(serde_json::Value::String(kind)).unwrap();
             assert_eq!(fields, sorted(t.fields()), "{}", t.name());

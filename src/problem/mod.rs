@@ -5,6 +5,7 @@
 
 pub mod error;
 pub mod format;
+pub mod mesh;
 pub mod model;
 pub mod validate;
 
@@ -12,7 +13,9 @@ use std::path::Path;
 
 pub use error::{Invalid, ProblemError};
 pub use format::{schema_json, ProblemFile};
-pub use model::{GivenVector, NamedMaterial, Problem, Surface, Target};
+pub use model::{
+    Camera, GivenVector, NamedMaterial, Problem, RenderSettings, Surface, SurfaceSource, Target,
+};
 
 use crate::core::Real;
 
@@ -102,7 +105,13 @@ pub(crate) fn field_purpose(name: &str) -> Option<&'static str> {
         "normal" => "the plane's normal",
         "point" => "a point of the plane",
         "k" => "the coefficient k of k·O",
-        "type" => "the kind: ambient, point, directional or spot (lights); plane or sphere",
+        "type" => {
+            "the kind: ambient, point, directional or spot (lights); plane, sphere, triangle or \
+             mesh (surfaces)"
+        }
+        "vertices" => "the triangle's three corners",
+        "file" => "the mesh's Wavefront OBJ file",
+        "eye" | "look_at" | "fov" | "width" | "height" => "the camera",
         _ => return None,
     })
 }
@@ -110,6 +119,6 @@ pub(crate) fn field_purpose(name: &str) -> Option<&'static str> {
 /// Reads, parses and validates a problem file in precision `R`.
 pub fn load<R: Real>(path: &Path) -> Result<(ProblemFile, Problem<R>), ProblemError> {
     let file = parse_file(path)?;
-    let problem = validate::validate::<R>(&file).map_err(|e| e.at(path))?;
+    let problem = validate::validate_in::<R>(&file, path.parent()).map_err(|e| e.at(path))?;
     Ok((file, problem))
 }

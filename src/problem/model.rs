@@ -19,7 +19,69 @@ pub struct Problem<R: Real> {
     /// E, the viewer's position.
     pub viewer: Option<V3<R>>,
     pub target: Target<R>,
+    /// The camera of a scene (`phong render`).
+    pub camera: Option<Camera<R>>,
+    /// The colour of a ray that hits nothing.
+    pub background: V3<R>,
+    /// How rays are traced (Section 4.4).
+    pub render: RenderSettings<R>,
 }
+
+impl<R: Real> Problem<R> {
+    /// The surfaces rays can hit: a ray problem's or a scene's (none for a point problem).
+    pub fn surfaces(&self) -> &[Surface<R>] {
+        match &self.target {
+            Target::Point { .. } => &[],
+            Target::Ray { surfaces, .. } | Target::Scene { surfaces } => surfaces,
+        }
+    }
+}
+
+/// A pinhole camera, validated: the eye differs from the look-at point and `up` is not along
+/// the line of sight.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Camera<R: Real> {
+    pub eye: V3<R>,
+    pub look_at: V3<R>,
+    pub up: V3<R>,
+    /// Vertical field of view in degrees, 0 < fov < 180.
+    pub fov: R,
+    pub width: u32,
+    pub height: u32,
+}
+
+/// The tracer's settings (Section 4.4 and DESIGN.md).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct RenderSettings<R: Real> {
+    /// Rays are traced while their level ≤ this; the primary ray has level 1.
+    pub max_level: u32,
+    /// A reflection ray is traced only while its weight exceeds this.
+    pub min_weight: R,
+    /// Whether shadow rays are traced.
+    pub shadows: bool,
+    /// Samples per pixel.
+    pub samples: u32,
+}
+
+impl<R: Real> Default for RenderSettings<R> {
+    fn default() -> Self {
+        RenderSettings {
+            max_level: DEFAULT_MAX_LEVEL,
+            min_weight: R::from_f64(DEFAULT_MIN_WEIGHT),
+            shadows: true,
+            samples: 1,
+        }
+    }
+}
+
+/// The default maximum recursion level.
+pub const DEFAULT_MAX_LEVEL: u32 = 5;
+/// The default minimum weight, 1/255: a ray of lower weight cannot change an 8-bit pixel of a
+/// colour in [0, 1] by a whole step. POV-Ray's `adc_bailout` default is the same.
+pub const DEFAULT_MIN_WEIGHT: f64 = 1.0 / 255.0;
+/// The largest image side and the most samples per pixel accepted.
+pub const MAX_IMAGE_SIDE: u32 = 16384;
+pub const MAX_SAMPLES: u32 = 4096;
 
 /// Where a light came from in the file.
 #[derive(Clone, Debug)]
@@ -82,6 +144,8 @@ pub enum Target<R: Real> {
         direction: GivenVector<R>,
         surfaces: Vec<Surface<R>>,
     },
+    /// A scene to render: surfaces and a camera, nothing single to shade.
+    Scene { surfaces: Vec<Surface<R>> },
 }
 
 /// A surface of a ray problem.
@@ -91,4 +155,14 @@ pub struct Surface<R: Real> {
     pub material: NamedMaterial<R>,
     /// A plane's normal as given.
     pub normal: Option<GivenVector<R>>,
+    /// Where it came from: its index in the file's `surfaces`, and for a mesh the triangle's
+    /// index in the mesh.
+    pub source: SurfaceSource,
+}
+
+/// Where a surface came from in the file.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct SurfaceSource {
+    pub index: usize,
+    pub triangle: Option<usize>,
 }

@@ -2,21 +2,31 @@
 //! field is wrong and how to fix it. Every number is checked to be finite in `R`; every vector
 //! that is used as a direction to be non-zero; every term the question needs to have its inputs.
 
+use std::path::{Path, PathBuf};
+
 use super::error::Invalid;
 use super::format::{
-    ColorSpec, LightSpec, LightType, MaterialRef, MaterialSpec, ProblemFile, ReflectivitySpec,
-    ScaledColor, SurfaceSpec, SurfaceType, Triple,
+    CameraSpec, ColorSpec, LightSpec, LightType, MaterialRef, MaterialSpec, ProblemFile,
+    ReflectivitySpec, RenderSpec, ScaledColor, SurfaceSpec, SurfaceType, Triple,
 };
+use super::mesh;
 use super::model::{
-    AmbientInfo, GivenVector, LightInfo, NamedMaterial, Problem, ReflectivitySource, Surface,
-    Target,
+    AmbientInfo, Camera, GivenVector, LightInfo, NamedMaterial, Problem, ReflectivitySource,
+    RenderSettings, Surface, SurfaceSource, Target, MAX_IMAGE_SIDE, MAX_SAMPLES,
 };
-use crate::core::vector::{is_unit_length, normalize};
+use crate::core::vector::{between, is_unit_length, normalize};
 use crate::core::{Cone, Falloff, Light, LightKind, LightSet, Material, Real, Vector, V3};
-use crate::geometry::{Plane, Ray, Shape, Sphere};
+use crate::geometry::{Plane, Ray, Shape, Sphere, Triangle};
 
-/// Validates a parsed problem in precision `R`.
+/// Validates a parsed problem in precision `R`; mesh files are looked up from the working
+/// folder (see [`validate_in`]).
 pub fn validate<R: Real>(file: &ProblemFile) -> Result<Problem<R>, Invalid> {
+    validate_in::<R>(file, None)
+}
+
+/// Validates a parsed problem in precision `R`, reading a mesh's OBJ file relative to `base`
+/// (the problem file's folder).
+pub fn validate_in<R: Real>(file: &ProblemFile, base: Option<&Path>) -> Result<Problem<R>, Invalid> {
     let (lights, light_info, ambient_info) = lights::<R>(&file.lights)?;
     let viewer = file.viewer.map(|v| vector::<R>(v, "viewer")).transpose()?;
     let first_light = light_info
@@ -33,11 +43,30 @@ pub fn validate<R: Real>(file: &ProblemFile) -> Result<Problem<R>, Invalid> {
                     "give either a point (with its normal) or a ray with surfaces, not both",
                 ))
             }
+            (None, None) if file.camera.is_some() => {
+                if file.surfaces.is_empty() {
+                    return Err(Invalid::new(
+                        "surfaces",
+                        "missing: a scene needs at least one surface for its rays to hit",
+                        "add \"surfaces\": [{\"type\": \"sphere\", ...}], a plane, a triangle \
+                         or a mesh",
+                    ));
+                }
+                let needs = Needs {
+                    ambient: has_ambient,
+                    diffuse: first_light.clone(),
+                    // Every camera ray gives V: specular always has one.
+                    specular: first_light.clone(),
+                };
+                Target::Scene {
+                    surfaces: surfaces::<R>(file, base, &needs)?,
+                }
+            }
             (None, None) => return Err(Invalid::new(
                 "point",
                 "the problem has nothing to shade",
                 "give \"point\" (with \"material\", and \"position\" and \"normal\" where lights \
-                 need them) or \"ray\" with \"surfaces\"",
+                 need them), \"ray\" with \"surfaces\", or a \"camera\" with \"surfaces\"",
             )),
             (Some(point), None) => {
                 if !file.surfaces.is_empty() {
@@ -118,10 +147,7 @@ pub fn validate<R: Real>(file: &ProblemFile) -> Result<Problem<R>, Invalid> {
                     // V comes from the viewer, or from the ray itself: specular always has one.
                     specular: first_light.clone(),
                 };
-                let mut surfaces = Vec::with_capacity(file.surfaces.len());
-                for (i, s) in file.surfaces.iter().enumerate() {
-                    surfaces.push(surface::<R>(file, s, i, &needs)?);
-                }
+                let surfaces = surfaces::<R>(file, base, &needs)?;
                 Target::Ray {
                     ray: Ray {
                         origin,
@@ -141,7 +167,130 @@ pub fn validate<R: Real>(file: &ProblemFile) -> Result<Problem<R>, Invalid> {
         ambient_info,
         viewer,
         target,
+        camera: file.camera.as_ref().map(camera::<R>).transpose()?,
+        background: match file.background {
+            Some(c) => color::<R>(c, "background", ColorRange::Light)?,
+            None => V3::<R>::ZERO,
+        },
+        render: render_settings::<R>(file.render.as_ref())?,
     })
+}
+
+/// The camera: E ≠ the look-at point, `up` not along the line of sight, 0 < fov < 180, and an
+/// image size the tracer accepts.
+fn camera<R: Real>(c: &CameraSpec) -> Result<Camera<R>, Invalid> {
+    let eye = vector::<R>(c.eye, "camera.eye")?;
+    let look_at = vector::<R>(c.look_at, "camera.look_at")?;
+    let up = vector::<R>(c.up.unwrap_or([0.0, 1.0, 0.0]), "camera.up")?;
+    let Some(forward) = between::<R>(eye, look_at) else {
+        return Err(Invalid::new(
+            "camera.look_at",
+            "the camera looks at its own eye: no line of sight",
+            "give a look_at point different from eye",
+        ));
+    };
+    if normalize::<R>(Vector::cross(forward.unit, up)).is_none() {
+        return Err(Invalid::new(
+            "camera.up",
+            "up is zero or along the line of sight, so the image has no up direction",
+            "give an up vector not parallel to look_at − eye, such as [0, 1, 0] or [0, 0, 1]",
+        ));
+    }
+    if !(c.fov > 0.0 && c.fov < 180.0) {
+        return Err(Invalid::new(
+            "camera.fov",
+            format!("{} degrees is not a field of view", show(c.fov)),
+            "give the vertical field of view in degrees, 0 < fov < 180 (e.g. 45)",
+        ));
+    }
+    for (name, side) in [("width", c.width), ("height", c.height)] {
+        if side == 0 || side > MAX_IMAGE_SIDE {
+            return Err(Invalid::new(
+                format!("camera.{name}"),
+                format!("{side} pixels is outside 1 to {MAX_IMAGE_SIDE}"),
+                format!("give the image {name} in pixels, 1 to {MAX_IMAGE_SIDE}"),
+            ));
+        }
+    }
+    Ok(Camera {
+        eye,
+        look_at,
+        up,
+        fov: number::<R>(c.fov, "camera.fov")?,
+        width: c.width,
+        height: c.height,
+    })
+}
+
+/// The tracer's settings, with the defaults of [`RenderSettings::default`].
+fn render_settings<R: Real>(r: Option<&RenderSpec>) -> Result<RenderSettings<R>, Invalid> {
+    let mut s = RenderSettings::<R>::default();
+    let Some(r) = r else { return Ok(s) };
+    if let Some(level) = r.max_level {
+        check_max_level(level).map_err(|(m, f)| Invalid::new("render.max_level", m, f))?;
+        s.max_level = level;
+    }
+    if let Some(w) = r.min_weight {
+        check_min_weight(w).map_err(|(m, f)| Invalid::new("render.min_weight", m, f))?;
+        s.min_weight = number::<R>(w, "render.min_weight")?;
+    }
+    if let Some(n) = r.samples {
+        check_samples(n).map_err(|(m, f)| Invalid::new("render.samples", m, f))?;
+        s.samples = n;
+    }
+    if let Some(on) = r.shadows {
+        s.shadows = on;
+    }
+    Ok(s)
+}
+
+/// A message and a fix, for a setting given in a file or on the command line.
+pub type SettingError = (String, String);
+
+/// The maximum level must let at least the primary rays through.
+pub fn check_max_level(level: u32) -> Result<(), SettingError> {
+    if level == 0 {
+        return Err((
+            "0 traces nothing: the primary ray already has level 1".into(),
+            "give a maximum level ≥ 1 (1 = primary rays only)".into(),
+        ));
+    }
+    Ok(())
+}
+
+/// The minimum weight is a finite number ≥ 0.
+pub fn check_min_weight(w: f64) -> Result<(), SettingError> {
+    if !(w.is_finite() && w >= 0.0) {
+        return Err((
+            format!("{} is not a weight", show(w)),
+            "give a minimum weight ≥ 0 (0 traces every reflection up to the maximum level)".into(),
+        ));
+    }
+    Ok(())
+}
+
+/// Samples per pixel: 1 to [`MAX_SAMPLES`].
+pub fn check_samples(n: u32) -> Result<(), SettingError> {
+    if n == 0 || n > MAX_SAMPLES {
+        return Err((
+            format!("{n} samples per pixel is outside 1 to {MAX_SAMPLES}"),
+            format!("give 1 to {MAX_SAMPLES} samples per pixel"),
+        ));
+    }
+    Ok(())
+}
+
+/// Every surface of the file, a mesh expanded into its triangles.
+fn surfaces<R: Real>(
+    file: &ProblemFile,
+    base: Option<&Path>,
+    needs: &Needs,
+) -> Result<Vec<Surface<R>>, Invalid> {
+    let mut out = Vec::with_capacity(file.surfaces.len());
+    for (i, s) in file.surfaces.iter().enumerate() {
+        surface::<R>(file, base, s, i, needs, &mut out)?;
+    }
+    Ok(out)
 }
 
 /// "lights[1] (point)".
@@ -353,10 +502,12 @@ fn falloff(x: f64, field: &str) -> Result<Falloff, Invalid> {
 
 fn surface<R: Real>(
     file: &ProblemFile,
+    folder: Option<&Path>,
     s: &SurfaceSpec,
     i: usize,
     needs: &Needs,
-) -> Result<Surface<R>, Invalid> {
+    out: &mut Vec<Surface<R>>,
+) -> Result<(), Invalid> {
     let base = format!("surfaces[{i}]");
     let f = |name: &str| format!("{base}.{name}");
     let what = s.kind.name();
@@ -398,15 +549,63 @@ fn surface<R: Real>(
             };
             (Shape::Sphere(sphere), None)
         }
+        SurfaceType::Triangle => {
+            let v = required(s.vertices, &base, "vertices", what)?;
+            let mut p = [V3::<R>::ZERO; 3];
+            for (k, corner) in v.iter().enumerate() {
+                p[k] = vector::<R>(*corner, &format!("{base}.vertices[{k}]"))?;
+            }
+            let t = Triangle { p };
+            if t.normal().is_none() {
+                return Err(Invalid::new(
+                    f("vertices"),
+                    format!(
+                        "the triangle is degenerate in {}: its corners lie on one line, so it \
+                         has no area and no normal",
+                        R::NAME
+                    ),
+                    "give three corners that are not on one line",
+                ));
+            }
+            (Shape::Triangle(t), None)
+        }
+        SurfaceType::Mesh => {
+            let name = required(s.file.as_ref(), &base, "file", what)?;
+            let mref = required(s.material.as_ref(), &base, "material", what)?;
+            let (mat_field, material) = resolve_material::<R>(file, mref, &f("material"))?;
+            needs.check(&material.spec, &mat_field)?;
+            let path = match folder {
+                Some(dir) => dir.join(name),
+                None => PathBuf::from(name),
+            };
+            let triangles = mesh::load_obj::<R>(&path).map_err(|e| {
+                Invalid::new(f("file"), format!("{}: {}", path.display(), e.message), e.fix)
+            })?;
+            out.extend(triangles.into_iter().enumerate().map(|(k, t)| Surface {
+                shape: Shape::Triangle(t),
+                material: material.clone(),
+                normal: None,
+                source: SurfaceSource {
+                    index: i,
+                    triangle: Some(k),
+                },
+            }));
+            return Ok(());
+        }
     };
     let mref = required(s.material.as_ref(), &base, "material", what)?;
     let (mat_field, material) = resolve_material::<R>(file, mref, &f("material"))?;
     needs.check(&material.spec, &mat_field)?;
-    Ok(Surface {
+    out.push(Surface {
         shape,
         material,
         normal,
-    })
+        source: SurfaceSource {
+            index: i,
+            triangle: None,
+        },
+    });
+    Ok(())
 }
 
 /// Looks a material up by name, or takes it in place; returns the field path to report

@@ -47,7 +47,11 @@ pub struct IntersectionOut<R: Real> {
     pub origin: V3<R>,
     pub direction_given: V3<R>,
     pub direction: V3<R>,
+    /// The surface's index in the file's `surfaces`.
     pub surface: Option<usize>,
+    /// For a mesh, the triangle's index in it (absent otherwise).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub triangle: Option<usize>,
     pub surface_type: Option<&'static str>,
     pub t: Option<R>,
     pub point: Option<V3<R>>,
@@ -243,7 +247,8 @@ fn intersection<R: Real>(x: &Intersection<R>) -> IntersectionOut<R> {
         origin: x.origin,
         direction_given: x.direction_given,
         direction: x.direction,
-        surface: x.surface,
+        surface: x.source.map(|s| s.index),
+        triangle: x.source.and_then(|s| s.triangle),
         surface_type: x.kind,
         t: x.t,
         point: x.point,

@@ -167,3 +167,14 @@ pub fn reading_explanation(code: ReadingCode) -> &'static str {
         }
     }
 }
+
+/// "surfaces[2]", or "surfaces[2] (mesh), triangle 17".
+pub fn surface_label(source: Option<crate::problem::SurfaceSource>) -> String {
+    match source {
+        None => "no surface".into(),
+        Some(s) => match s.triangle {
+            None => format!("surfaces[{}]", s.index),
+            Some(t) => format!("surfaces[{}] (mesh), triangle {t}", s.index),
+        },
+    }
+}

@@ -114,8 +114,8 @@ fn intersection<R: Real>(out: &mut String, x: &Intersection<R>) {
                 out,
                 2,
                 &format!(
-                    "{kind} (surfaces[{}]): t = {}, O + tD = {}  → {verdict}",
-                    x.surface.unwrap_or(0),
+                    "{kind} ({}): t = {}, O + tD = {}  → {verdict}",
+                    messages::surface_label(x.source),
                     n::<R>(t),
                     v::<R>(p)
                 ),

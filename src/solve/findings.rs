@@ -6,8 +6,8 @@ use std::collections::BTreeMap;
 
 use super::{Side, Solution};
 use crate::core::vector::is_unit_length;
-use crate::core::{LightStatus, Real, Vector};
-use crate::problem::{Problem, Target};
+use crate::core::{LightStatus, Real, Vector, V3};
+use crate::problem::{GivenVector, Problem, Target};
 
 /// What kind of finding.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, serde::Serialize)]
@@ -75,9 +75,16 @@ impl Finding {
     }
 }
 
+/// What was asked of the problem: the viewer E used, and for a ray, its direction as given.
+pub(super) struct Query<'a, R: Real> {
+    pub viewer: Option<V3<R>>,
+    pub ray: Option<&'a GivenVector<R>>,
+}
+
 /// The findings of a solved problem, in order of importance.
 pub(super) fn find<R: Real>(
     problem: &Problem<R>,
+    query: &Query<R>,
     s: &Solution<R>,
     starts_on_surface: bool,
 ) -> Vec<Finding> {
@@ -126,8 +133,8 @@ pub(super) fn find<R: Real>(
             }
         }
     }
-    if let (Target::Ray { ray, .. }, Some(e)) = (&problem.target, problem.viewer) {
-        if e != ray.origin {
+    if let (Some(x), Some(e)) = (&s.intersection, query.viewer) {
+        if e != x.origin {
             out.push(Finding::new(FindingCode::ViewerNotAtRayOrigin));
         }
     }
@@ -139,16 +146,16 @@ pub(super) fn find<R: Real>(
     // Normals and directions that were normalised.
     let normal_length = match &problem.target {
         Target::Point { normal, .. } => normal.map(|n| n.length),
-        Target::Ray { surfaces, .. } => s
+        Target::Ray { .. } | Target::Scene { .. } => s
             .intersection
             .and_then(|x| x.surface)
-            .and_then(|i| surfaces[i].normal)
+            .and_then(|i| problem.surfaces()[i].normal)
             .map(|n| n.length),
     };
     if let Some(l) = normal_length.filter(|&l| !is_unit_length(l)) {
         out.push(Finding::new(FindingCode::NormalNormalized).value("length", l));
     }
-    if let Target::Ray { direction, .. } = &problem.target {
+    if let Some(direction) = query.ray {
         if !is_unit_length(direction.length) {
             out.push(
                 Finding::new(FindingCode::DirectionNormalized).value("length", direction.length),

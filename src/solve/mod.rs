@@ -7,10 +7,12 @@ mod findings;
 
 use crate::core::vector::between;
 use crate::core::{
-    shade, AllVisible, Light, LightKind, LightSet, LightStatus, LightTerm, Real, Shade, Vector, V3,
+    shade, AllVisible, Light, LightKind, LightSet, LightStatus, LightTerm, Real, Shade, Vector,
+    Visibility, V3,
 };
+use crate::geometry::{gamma, Aggregate, Ray, ShadowRays, SurfaceHit};
 use crate::problem::validate::{light_label, show};
-use crate::problem::{Invalid, NamedMaterial, Problem, Target};
+use crate::problem::{GivenVector, Invalid, NamedMaterial, Problem, SurfaceSource, Target};
 
 pub use findings::{Finding, FindingCode};
 
@@ -37,8 +39,11 @@ pub struct Intersection<R: Real> {
     pub direction_given: V3<R>,
     /// D, unit.
     pub direction: V3<R>,
-    /// The surface met (index in `surfaces`), if any.
+    /// The surface met (index in the problem's surfaces, a mesh counted triangle by triangle),
+    /// if any.
     pub surface: Option<usize>,
+    /// Where that surface is in the file (its index in `surfaces`, and a mesh's triangle).
+    pub source: Option<SurfaceSource>,
     pub kind: Option<&'static str>,
     /// The parameter t of the hit along the line (negative: behind the origin).
     pub t: Option<R>,
@@ -180,7 +185,6 @@ pub fn solve<R: Real>(problem: &Problem<R>) -> Result<Solution<R>, Invalid> {
         evaluation: None,
         readings: Vec::new(),
     };
-    let mut starts_on_surface = false;
     match &problem.target {
         Target::Point {
             position,
@@ -194,7 +198,8 @@ pub fn solve<R: Real>(problem: &Problem<R>) -> Result<Solution<R>, Invalid> {
                 reversed: false,
             });
             let at = |n, lights: Option<LightSet<R>>| {
-                evaluate(problem, *position, n, None, material, lights)
+                let viewer = problem.viewer;
+                evaluate(problem, viewer, *position, n, None, material, lights, &mut AllVisible)
             };
             let eval = at(normal, None)?;
             // Readings: no light lights the surface as given, and one is behind it.
@@ -223,93 +228,148 @@ pub fn solve<R: Real>(problem: &Problem<R>) -> Result<Solution<R>, Invalid> {
             }
             solution.evaluation = Some(eval);
         }
-        Target::Ray {
-            ray,
-            direction,
-            surfaces,
-        } => {
-            // Find the nearest hit in front of the origin, Section 4.4 (t > 0).
-            let mut front: Option<(usize, R)> = None;
-            let mut behind: Option<(usize, R)> = None;
-            for (i, s) in surfaces.iter().enumerate() {
-                let hits = s.shape.line_hits(ray);
-                starts_on_surface |= hits.at_origin();
-                if let Some(t) = hits.nearest_in_front() {
-                    if front.is_none_or(|(_, best)| t < best) {
-                        front = Some((i, t));
-                    }
-                }
-                if let Some(t) = hits.nearest_behind() {
-                    if behind.is_none_or(|(_, best)| t > best) {
-                        behind = Some((i, t));
-                    }
-                }
-            }
-            let record = |hit: Option<(usize, R)>| Intersection {
-                origin: ray.origin,
-                direction_given: direction.given,
-                direction: ray.direction,
-                surface: hit.map(|(i, _)| i),
-                kind: hit.map(|(i, _)| surfaces[i].shape.kind()),
-                t: hit.map(|(_, t)| t),
-                point: hit.map(|(i, t)| surfaces[i].shape.point_at(ray, t)),
-                in_front: hit.is_some_and(|(_, t)| t > R::ZERO),
-            };
-            // The incoming direction: the ray's, or the reversed ray's for a hit behind.
-            let at_hit = |(i, t): (usize, R), source: ViewSource| {
-                let s = &surfaces[i];
-                let p = s.shape.point_at(ray, t);
-                let own = s.shape.normal_at(p).ok_or_else(|| {
-                    Invalid::new(
-                        format!("surfaces[{i}]"),
-                        format!(
-                            "the hit point cannot be told from the sphere's centre in {}: the \
-                             radius is below the rounding of the coordinates",
-                            R::NAME
-                        ),
-                        "use --precision f64, a larger radius, or coordinates nearer the origin",
-                    )
-                })?;
-                let incoming = match source {
-                    ViewSource::ReversedRay => -ray.direction,
-                    _ => ray.direction,
-                };
-                // Turn the normal to face the incoming ray (DESIGN.md, as in the tracer).
-                let reversed = own.dot(incoming) > R::ZERO;
-                let normal = NormalUsed {
-                    given: s.normal.map_or(own, |n| n.given),
-                    length: s.normal.map_or(R::ONE, |n| n.length),
-                    used: if reversed { -own } else { own },
-                    reversed,
-                };
-                evaluate(
-                    problem,
-                    Some(p),
-                    Some(normal),
-                    Some((incoming, source)),
-                    &s.material,
-                    None,
-                )
-            };
-            match (front, behind) {
-                (Some(hit), _) => {
-                    solution.intersection = Some(record(Some(hit)));
-                    solution.evaluation = Some(at_hit(hit, ViewSource::Ray)?);
-                }
-                (None, Some(hit)) => {
-                    let rec = record(Some(hit));
-                    solution.intersection = Some(rec);
-                    solution.readings.push(Reading {
-                        code: ReadingCode::LineBehindOrigin,
-                        intersection: Some(rec),
-                        evaluation: at_hit(hit, ViewSource::ReversedRay)?,
-                    });
-                }
-                (None, None) => solution.intersection = Some(record(None)),
-            }
+        Target::Ray { ray, direction, .. } => {
+            let aggregate = aggregate(problem);
+            return solve_ray(problem, problem.viewer, ray, direction, &aggregate);
+        }
+        Target::Scene { .. } => {
+            return Err(Invalid::new(
+                "ray",
+                "this file is a scene (a camera and surfaces): it has no point or ray to solve",
+                "render it with `phong render FILE -o image.png` (and explain one pixel with \
+                 --explain-pixel X,Y), or add a \"ray\" to solve one ray",
+            ))
         }
     }
-    solution.findings = findings::find(problem, &solution, starts_on_surface);
+    let query = findings::Query {
+        viewer: problem.viewer,
+        ray: None,
+    };
+    solution.findings = findings::find(problem, &query, &solution, false);
+    Ok(solution)
+}
+
+/// The surfaces of a problem as one [`Aggregate`], to find hits and cast shadow rays.
+pub fn aggregate<R: Real>(problem: &Problem<R>) -> Aggregate<R> {
+    Aggregate::new(problem.surfaces().iter().map(|s| s.shape).collect())
+}
+
+/// Solves one ray against the problem's surfaces and lights: the nearest hit in front of the
+/// origin (t > 0) found by the same [`Aggregate::nearest`] as the tracer, shaded by the core
+/// with the tracer's shadow rays (when `problem.render.shadows`). `viewer` is E, or `None` for
+/// V = D, the ray coming from the eye (as every ray of the tracer does); `direction` is D as
+/// given. This is what `phong render --explain-pixel` calls for every ray of a pixel.
+pub fn solve_ray<R: Real>(
+    problem: &Problem<R>,
+    viewer: Option<V3<R>>,
+    ray: &Ray<R>,
+    direction: &GivenVector<R>,
+    aggregate: &Aggregate<R>,
+) -> Result<Solution<R>, Invalid> {
+    let mut solution = Solution {
+        title: problem.title.clone(),
+        question: problem.question.clone(),
+        findings: Vec::new(),
+        intersection: None,
+        evaluation: None,
+        readings: Vec::new(),
+    };
+    let surfaces = problem.surfaces();
+    let record = |hit: Option<(usize, R, V3<R>)>| Intersection {
+        origin: ray.origin,
+        direction_given: direction.given,
+        direction: ray.direction,
+        surface: hit.map(|(i, _, _)| i),
+        source: hit.map(|(i, _, _)| surfaces[i].source),
+        kind: hit.map(|(i, _, _)| surfaces[i].shape.kind()),
+        t: hit.map(|(_, t, _)| t),
+        point: hit.map(|(_, _, p)| p),
+        in_front: hit.is_some_and(|(_, t, _)| t > R::ZERO),
+    };
+    // The shading at a hit, V from the incoming direction (the ray's, or the reversed ray's
+    // for a hit behind) and N turned to face it (DESIGN.md, as in the tracer).
+    let at_hit = |i: usize, hit: &SurfaceHit<R>, source: ViewSource| {
+        let s = &surfaces[i];
+        let incoming = match source {
+            ViewSource::ReversedRay => -ray.direction,
+            _ => ray.direction,
+        };
+        let own = hit.normal;
+        let reversed = own.dot(incoming) > R::ZERO;
+        let normal = NormalUsed {
+            given: s.normal.map_or(own, |n| n.given),
+            length: s.normal.map_or(R::ONE, |n| n.length),
+            used: if reversed { -own } else { own },
+            reversed,
+        };
+        let view = Some((incoming, source));
+        if problem.render.shadows {
+            let mut rays = ShadowRays {
+                aggregate,
+                p_error: hit.p_error,
+                normal: own,
+                traced: 0,
+            };
+            evaluate(problem, viewer, Some(hit.p), Some(normal), view, &s.material, None, &mut rays)
+        } else {
+            evaluate(problem, viewer, Some(hit.p), Some(normal), view, &s.material, None, &mut AllVisible)
+        }
+    };
+    // The nearest hit in front of the origin, Section 4.4 (t > 0).
+    let unresolved = |i: usize| {
+        Invalid::new(
+            format!("surfaces[{}]", surfaces[i].source.index),
+            format!(
+                "the hit point cannot be told from the sphere's centre in {}: the radius is \
+                 below the rounding of the coordinates",
+                R::NAME
+            ),
+            "use --precision f64, a larger radius, or coordinates nearer the origin",
+        )
+    };
+    let mut starts_on_surface = false;
+    if let Some(h) = aggregate.nearest(ray, R::from_f64(f64::INFINITY)) {
+        solution.intersection = Some(record(Some((h.index, h.hit.t, h.hit.p))));
+        solution.evaluation = Some(at_hit(h.index, &h.hit, ViewSource::Ray)?);
+    } else {
+        // No hit in front: where does the line meet a surface behind the origin?
+        let mut behind: Option<(usize, R)> = None;
+        for (i, s) in surfaces.iter().enumerate() {
+            let hits = s.shape.line_hits(ray);
+            starts_on_surface |= hits.at_origin();
+            if let Some(t) = hits.nearest_behind() {
+                if behind.is_none_or(|(_, best)| t > best) {
+                    behind = Some((i, t));
+                }
+            }
+        }
+        match behind {
+            Some((i, t)) => {
+                let shape = &surfaces[i].shape;
+                let p = shape.point_at(ray, t);
+                let hit = SurfaceHit {
+                    t,
+                    p,
+                    p_error: (ray.origin.abs() + p.abs() + (ray.direction * t).abs())
+                        * gamma::<R>(8),
+                    normal: shape.normal_at(p).ok_or_else(|| unresolved(i))?,
+                };
+                let rec = record(Some((i, t, p)));
+                solution.intersection = Some(rec);
+                solution.readings.push(Reading {
+                    code: ReadingCode::LineBehindOrigin,
+                    intersection: Some(rec),
+                    evaluation: at_hit(i, &hit, ViewSource::ReversedRay)?,
+                });
+            }
+            None => solution.intersection = Some(record(None)),
+        }
+    }
+    let query = findings::Query {
+        viewer,
+        ray: Some(direction),
+    };
+    solution.findings = findings::find(problem, &query, &solution, starts_on_surface);
     Ok(solution)
 }
 
@@ -356,17 +416,20 @@ fn mirror_lights<R: Real>(lights: &LightSet<R>, p: V3<R>) -> LightSet<R> {
 /// direction and where V comes from when the problem has no viewer; `lights` replaces the
 /// problem's lights in a reading that changes them. Undefined L or V is an error here, for
 /// point and ray problems alike.
-fn evaluate<R: Real>(
+#[allow(clippy::too_many_arguments)]
+fn evaluate<R: Real, Vis: Visibility<R>>(
     problem: &Problem<R>,
+    viewer: Option<V3<R>>,
     p: Option<V3<R>>,
     normal: Option<NormalUsed<R>>,
     ray: Option<(V3<R>, ViewSource)>,
     material: &NamedMaterial<R>,
     lights: Option<LightSet<R>>,
+    visibility: &mut Vis,
 ) -> Result<Evaluation<R>, Invalid> {
     let set = lights.as_ref().unwrap_or(&problem.lights);
     // The viewing direction V, from the eye to the point (Eq. 4.10).
-    let viewer = match (problem.viewer, p, ray) {
+    let viewer = match (viewer, p, ray) {
         (Some(e), Some(p), _) => {
             let v = between::<R>(e, p).ok_or_else(|| {
                 Invalid::new(
@@ -428,7 +491,7 @@ fn evaluate<R: Real>(
         v: viewer.map(|v| v.v),
     };
     let mut records = Vec::with_capacity(set.lights.len());
-    let shade = shade(&at, &material.material, set, &mut AllVisible, &mut records);
+    let shade = shade(&at, &material.material, set, visibility, &mut records);
     check_finite(problem, &shade, &records)?;
 
     let m = &material.material;

@@ -1,0 +1,154 @@
+//! All the surfaces of a scene behind one question, "what does this ray hit first?", and its
+//! cheaper sibling, "does anything block this shadow ray?". Bounded shapes (spheres, triangles)
+//! sit in a BVH, so the cost grows about logarithmically with their number; planes, which no box
+//! bounds, are tested one by one.
+//!
+//! The tracer and the solver's ray problems both ask here, so a pixel and the equivalent ray
+//! problem meet the same surface at the same point.
+
+use super::bounds::Aabb;
+use super::bvh::Bvh;
+use super::hit::{gamma, offset_origin, SurfaceHit};
+use super::{Ray, Shape};
+use crate::core::vector::between;
+use crate::core::{Arrival, Light, Real, Visibility, V3};
+
+/// The surfaces of a scene, indexed in the order given.
+#[derive(Clone, Debug)]
+pub struct Aggregate<R: Real> {
+    shapes: Vec<Shape<R>>,
+    /// Indices of the shapes without a bounding box (planes).
+    unbounded: Vec<u32>,
+    /// Indices of the bounded shapes; the BVH's primitive `k` is `bounded[k]`.
+    bounded: Vec<u32>,
+    bvh: Bvh<R>,
+}
+
+/// The nearest hit of a ray: which shape, and where.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct AggregateHit<R: Real> {
+    /// The shape's index in the order given.
+    pub index: usize,
+    pub hit: SurfaceHit<R>,
+}
+
+impl<R: Real> Aggregate<R> {
+    /// Builds the BVH over the bounded shapes.
+    pub fn new(shapes: Vec<Shape<R>>) -> Self {
+        let mut unbounded = Vec::new();
+        let mut bounded = Vec::new();
+        let mut boxes = Vec::new();
+        for (i, s) in shapes.iter().enumerate() {
+            let i = u32::try_from(i).expect("fewer than 2^32 surfaces");
+            match s {
+                Shape::Plane(_) => unbounded.push(i),
+                Shape::Sphere(sp) => {
+                    bounded.push(i);
+                    boxes.push(Aabb::of_sphere(sp.center, sp.radius));
+                }
+                Shape::Triangle(t) => {
+                    bounded.push(i);
+                    boxes.push(t.bounds());
+                }
+            }
+        }
+        Aggregate {
+            bvh: Bvh::build(&boxes),
+            shapes,
+            unbounded,
+            bounded,
+        }
+    }
+
+    /// The shapes, in the order given.
+    pub fn shapes(&self) -> &[Shape<R>] {
+        &self.shapes
+    }
+
+    /// The nearest hit with 0 < t < `t_max`.
+    pub fn nearest(&self, ray: &Ray<R>, t_max: R) -> Option<AggregateHit<R>> {
+        let mut best: Option<AggregateHit<R>> = None;
+        let mut t_max = t_max;
+        for &i in &self.unbounded {
+            if let Some(hit) = self.shapes[i as usize].hit(ray, t_max) {
+                t_max = hit.t;
+                best = Some(AggregateHit {
+                    index: i as usize,
+                    hit,
+                });
+            }
+        }
+        // The BVH shrinks its t_max to each hit it accepts, so every accepted hit is nearer.
+        self.bvh.nearest(ray, t_max, |k, t_max| {
+            let index = self.bounded[k as usize] as usize;
+            let hit = self.shapes[index].hit(ray, t_max)?;
+            best = Some(AggregateHit { index, hit });
+            Some(hit.t)
+        });
+        best
+    }
+
+    /// Whether any surface meets the ray with 0 < t < `t_max`.
+    pub fn occluded(&self, ray: &Ray<R>, t_max: R) -> bool {
+        self.unbounded
+            .iter()
+            .any(|&i| self.shapes[i as usize].hit(ray, t_max).is_some())
+            || self.bvh.any(ray, t_max, |k, t_max| {
+                self.shapes[self.bounded[k as usize] as usize]
+                    .hit(ray, t_max)
+                    .is_some()
+            })
+    }
+}
+
+/// Shadow rays from a hit point, as the core's [`Visibility`]: each one leaves from the hit's
+/// offset origin towards the light; to a point or spot light it stops a relative hair short of
+/// the light (pbrt's `1 − ShadowEpsilon`), to a directional light it goes on for ever.
+pub struct ShadowRays<'a, R: Real> {
+    pub aggregate: &'a Aggregate<R>,
+    /// The hit point's error bound and the surface's own normal, for the offset.
+    pub p_error: V3<R>,
+    pub normal: V3<R>,
+    /// How many shadow rays were traced.
+    pub traced: u64,
+}
+
+impl<R: Real> ShadowRays<'_, R> {
+    /// The shadow ray from `p` towards a light whose L (light to point) is `l`, and how far
+    /// it may go; `None` when the light is too close to the point to be told apart.
+    pub fn ray(&self, p: V3<R>, light: &Light<R>, l: V3<R>) -> Option<(Ray<R>, R)> {
+        let towards = -l;
+        let origin = offset_origin::<R>(p, self.p_error, self.normal, towards);
+        match light.position() {
+            None => Some((
+                Ray {
+                    origin,
+                    direction: towards,
+                },
+                R::from_f64(f64::INFINITY),
+            )),
+            Some(pos) => {
+                let to_light = between::<R>(origin, pos)?;
+                let t_max: R = to_light.length * (R::ONE - gamma::<R>(64));
+                Some((
+                    Ray {
+                        origin,
+                        direction: to_light.unit,
+                    },
+                    t_max,
+                ))
+            }
+        }
+    }
+}
+
+impl<R: Real> Visibility<R> for ShadowRays<'_, R> {
+    #[inline]
+    fn visible(&mut self, p: V3<R>, light: &Light<R>, arrival: &Arrival<R>) -> bool {
+        self.traced += 1;
+        match self.ray(p, light, arrival.l) {
+            Some((ray, t_max)) => !self.aggregate.occluded(&ray, t_max),
+            None => true,
+        }
+    }
+}

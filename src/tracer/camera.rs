@@ -1,0 +1,92 @@
+//! A pinhole camera: the primary ray through a point of a pixel. The image plane is one unit in
+//! front of the eye, spanning tan(fov/2) up and down; x grows to the right and y downwards, as
+//! in the image file. Right-handed: looking along −z with up +y, +x is to the right.
+
+use crate::core::vector::normalize;
+use crate::core::{Real, Vector, V3};
+use crate::geometry::Ray;
+use crate::problem::Camera;
+
+/// The camera's frame, ready to make rays.
+#[derive(Clone, Copy, Debug)]
+pub struct CameraRays<R: Real> {
+    pub eye: V3<R>,
+    /// Unit vectors: forward (towards the look-at point), right and up in the image.
+    pub forward: V3<R>,
+    pub right: V3<R>,
+    pub up: V3<R>,
+    /// Half the image plane's extent at distance 1.
+    pub half_width: R,
+    pub half_height: R,
+    pub width: u32,
+    pub height: u32,
+}
+
+impl<R: Real> CameraRays<R> {
+    /// The frame of a validated camera (eye ≠ look-at, up not along the line of sight).
+    pub fn new(c: &Camera<R>) -> Self {
+        let unit = |v: V3<R>| normalize::<R>(v).expect("validated camera").unit;
+        let forward = unit(c.look_at - c.eye);
+        let right = unit(forward.cross(c.up));
+        let up = right.cross(forward);
+        let half_height = (c.fov.to_radians() / R::TWO).tan();
+        let aspect = R::from_f64(f64::from(c.width) / f64::from(c.height));
+        CameraRays {
+            eye: c.eye,
+            forward,
+            right,
+            up,
+            half_width: half_height * aspect,
+            half_height,
+            width: c.width,
+            height: c.height,
+        }
+    }
+
+    /// The ray from the eye through the point (x + sx, y + sy) of the image, with (sx, sy) in
+    /// [0, 1)²; (0.5, 0.5) is the pixel's centre.
+    #[inline]
+    pub fn ray(&self, x: u32, y: u32, sx: f64, sy: f64) -> Ray<R> {
+        let ndc_x = R::from_f64((f64::from(x) + sx) / f64::from(self.width) * 2.0 - 1.0);
+        let ndc_y = R::from_f64(1.0 - (f64::from(y) + sy) / f64::from(self.height) * 2.0);
+        let d = self.forward + self.right * (ndc_x * self.half_width) + self.up * (ndc_y * self.half_height);
+        Ray {
+            origin: self.eye,
+            direction: normalize::<R>(d).expect("a camera ray has a direction").unit,
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use glam::DVec3;
+
+    fn camera() -> CameraRays<f64> {
+        CameraRays::new(&Camera {
+            eye: DVec3::new(0.0, 0.0, 5.0),
+            look_at: DVec3::ZERO,
+            up: DVec3::Y,
+            fov: 90.0,
+            width: 4,
+            height: 2,
+        })
+    }
+
+    #[test]
+    fn the_centre_of_the_image_looks_at_the_look_at_point() {
+        let c = camera();
+        // Between the four central pixels: x = 2, y = 1 exactly.
+        let r = c.ray(1, 0, 1.0, 1.0);
+        assert!((r.direction - DVec3::new(0.0, 0.0, -1.0)).length() < 1e-15);
+    }
+
+    #[test]
+    fn the_top_right_corner_is_up_and_to_the_right() {
+        let c = camera();
+        // fov 90°: tan 45° = 1 up; aspect 2: 2 to the right. Corner (4, 0) → (2, 1, −1)/√6.
+        let r = c.ray(3, 0, 1.0, 0.0);
+        let expected = DVec3::new(2.0, 1.0, -1.0) / 6f64.sqrt();
+        assert!((r.direction - expected).length() < 1e-15, "{:?}", r.direction);
+    }
+}

@@ -1,0 +1,96 @@
+//! The image: every pixel's samples traced and averaged, rows in parallel (rayon). Each row is
+//! computed by itself and the rows are gathered by index, so the bytes never depend on the
+//! number of threads or on which thread did what.
+
+use rayon::prelude::*;
+
+use super::camera::CameraRays;
+use super::sampler::sample;
+use super::trace::{Counts, Scene, Tracer};
+use crate::core::{Real, Vector, V3};
+use crate::problem::{Camera, Problem};
+
+/// An 8-bit RGB image, rows top to bottom.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Image {
+    pub width: u32,
+    pub height: u32,
+    /// width × height × 3 bytes.
+    pub rgb: Vec<u8>,
+}
+
+/// A pixel's value: the mean of its samples, each clamped to [0, 1] (what the chapter would
+/// display for that ray), then round(255·c), as the solver's 8-bit colour.
+#[inline]
+pub fn to_rgb8(sum: [f64; 3], samples: u32) -> [u8; 3] {
+    sum.map(|c| (c / f64::from(samples) * 255.0).round() as u8)
+}
+
+/// A colour clamped to [0, 1] and widened, to be summed over samples.
+#[inline]
+pub fn clamped<R: Real>(c: V3<R>) -> [f64; 3] {
+    c.to_array().map(|x| x.max(R::ZERO).min(R::ONE).to_f64())
+}
+
+/// The colour of pixel (x, y): its samples traced and averaged.
+#[inline]
+pub fn pixel<R: Real>(
+    tracer: &Tracer<R>,
+    camera: &CameraRays<R>,
+    x: u32,
+    y: u32,
+    counts: &mut Counts,
+) -> [u8; 3] {
+    let n = tracer.settings.samples;
+    let mut sum = [0.0f64; 3];
+    for i in 0..n {
+        let (sx, sy) = sample(i, n);
+        let c = clamped::<R>(tracer.trace(camera.ray(x, y, sx, sy), counts, &mut ()));
+        for k in 0..3 {
+            sum[k] += c[k];
+        }
+    }
+    to_rgb8(sum, n)
+}
+
+/// Renders the image with the problem's render settings. `progress` is called once per finished row (from any thread).
+pub fn render<R: Real>(
+    problem: &Problem<R>,
+    camera: &Camera<R>,
+    scene: &Scene<R>,
+    progress: &(dyn Fn() + Sync),
+) -> (Image, Counts) {
+    let rays = CameraRays::new(camera);
+    let tracer = Tracer {
+        scene,
+        problem,
+        settings: problem.render,
+    };
+    let width = camera.width;
+    let rows: Vec<(Vec<u8>, Counts)> = (0..camera.height)
+        .into_par_iter()
+        .map(|y| {
+            let mut counts = Counts::default();
+            let mut row = Vec::with_capacity(width as usize * 3);
+            for x in 0..width {
+                row.extend_from_slice(&pixel(&tracer, &rays, x, y, &mut counts));
+            }
+            progress();
+            (row, counts)
+        })
+        .collect();
+    let mut counts = Counts::default();
+    let mut rgb = Vec::with_capacity(width as usize * camera.height as usize * 3);
+    for (row, c) in rows {
+        rgb.extend_from_slice(&row);
+        counts += c;
+    }
+    (
+        Image {
+            width,
+            height: camera.height,
+            rgb,
+        },
+        counts,
+    )
+}

@@ -1,0 +1,227 @@
+//! One ray's path through the scene, Section 4.4. A Whitted tracer with reflection only follows
+//! a single path: the primary ray, then at each hit at most one reflection ray. Its colour is
+//! C = C_local,1 + O_r,1 (C_local,2 + O_r,2 (…)), accumulated front to back as
+//! Σ_k (O_r,1 ⋯ O_r,k−1) C_local,k, so no recursion and no allocation; the explanation shows
+//! each ray's factor and share.
+//!
+//! The local colour of every hit is the core's [`shade`], with the core's gating, given shadow
+//! rays through [`ShadowRays`].
+
+use crate::core::vector::normalize;
+use crate::core::{shade, AllVisible, Material, NoRecord, Real, ShadingPoint, Vector, V3};
+use crate::geometry::{offset_origin, Aggregate, AggregateHit, Ray, ShadowRays};
+use crate::problem::{Problem, RenderSettings};
+
+/// The geometry and materials of a scene, built once for a render.
+pub struct Scene<R: Real> {
+    pub aggregate: Aggregate<R>,
+    /// The material of each surface, by index (a mesh's triangles each have their mesh's).
+    pub materials: Vec<Material<R>>,
+}
+
+impl<R: Real> Scene<R> {
+    /// The problem's surfaces, in a BVH.
+    pub fn new(problem: &Problem<R>) -> Self {
+        Scene {
+            aggregate: crate::solve::aggregate(problem),
+            materials: problem.surfaces().iter().map(|s| s.material.material).collect(),
+        }
+    }
+}
+
+/// Why a path ended.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Stop {
+    /// The ray hit nothing: its colour is the background.
+    Miss,
+    /// The surface has no reflectivity (O_r absent or zero): no reflection ray.
+    NotReflective,
+    /// The reflection ray's level would exceed the maximum level.
+    MaxLevel,
+    /// The reflection ray's weight w_s = w_p·max(O_r) would not exceed the minimum weight.
+    MinWeight,
+}
+
+/// How many rays of each kind were traced.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, serde::Serialize)]
+pub struct Counts {
+    pub primary: u64,
+    pub reflection: u64,
+    pub shadow: u64,
+}
+
+impl Counts {
+    pub fn total(&self) -> u64 {
+        self.primary + self.reflection + self.shadow
+    }
+}
+
+impl std::ops::AddAssign for Counts {
+    fn add_assign(&mut self, o: Counts) {
+        self.primary += o.primary;
+        self.reflection += o.reflection;
+        self.shadow += o.shadow;
+    }
+}
+
+/// Where a secondary ray left from: the hit point, its error bound, the surface's own normal,
+/// and the offset origin (pbrt's `OffsetRayOrigin`).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Spawn<R: Real> {
+    pub from: V3<R>,
+    pub p_error: V3<R>,
+    pub normal: V3<R>,
+    pub origin: V3<R>,
+}
+
+/// One ray of a path, as the explanation shows it.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct RayRecord<R: Real> {
+    /// 1 for the primary ray.
+    pub level: u32,
+    /// w: 1 for the primary ray, w_p·max(O_r) for a reflection ray.
+    pub weight: R,
+    /// The product of the O_r of the hits before this ray: its colour's factor in the pixel.
+    pub factor: V3<R>,
+    pub ray: Ray<R>,
+    /// For a reflection ray, where it left from.
+    pub spawn: Option<Spawn<R>>,
+    pub hit: Option<AggregateHit<R>>,
+    /// The local colour (Eq. 4.16) at the hit, or the background on a miss.
+    pub local: V3<R>,
+    /// O_r at the hit, when the material has one.
+    pub o_r: Option<V3<R>>,
+    /// The weight a reflection ray would have, when there is one to weigh.
+    pub next_weight: Option<R>,
+    /// Why the path ended here, or `None` when a reflection ray follows.
+    pub stop: Option<Stop>,
+}
+
+/// Receives each ray of a path; the hot path passes `()`, which records nothing.
+pub trait PathRecorder<R: Real> {
+    fn ray(&mut self, record: &RayRecord<R>);
+}
+
+impl<R: Real> PathRecorder<R> for () {
+    #[inline(always)]
+    fn ray(&mut self, _: &RayRecord<R>) {}
+}
+
+impl<R: Real> PathRecorder<R> for Vec<RayRecord<R>> {
+    fn ray(&mut self, record: &RayRecord<R>) {
+        self.push(*record);
+    }
+}
+
+/// Traces paths through a scene with a problem's lights and settings.
+pub struct Tracer<'a, R: Real> {
+    pub scene: &'a Scene<R>,
+    pub problem: &'a Problem<R>,
+    pub settings: RenderSettings<R>,
+}
+
+impl<R: Real> Tracer<'_, R> {
+    /// The colour seen along a primary ray, unclamped.
+    #[inline]
+    pub fn trace(&self, primary: Ray<R>, counts: &mut Counts, rec: &mut impl PathRecorder<R>) -> V3<R> {
+        let infinity = R::from_f64(f64::INFINITY);
+        let lights = &self.problem.lights;
+        let mut color = V3::<R>::ZERO;
+        let mut factor = V3::<R>::splat(R::ONE);
+        let mut weight = R::ONE;
+        let mut level = 1;
+        let mut ray = primary;
+        let mut spawn = None;
+        counts.primary += 1;
+        loop {
+            let mut record = RayRecord {
+                level,
+                weight,
+                factor,
+                ray,
+                spawn,
+                hit: None,
+                local: self.problem.background,
+                o_r: None,
+                next_weight: None,
+                stop: Some(Stop::Miss),
+            };
+            // The nearest hit in front of the origin; a miss sees the background.
+            let Some(h) = self.scene.aggregate.nearest(&ray, infinity) else {
+                color += factor * self.problem.background;
+                rec.ray(&record);
+                return color;
+            };
+            record.hit = Some(h);
+            let m = &self.scene.materials[h.index];
+            // N turned to face the incoming ray; V is the ray's direction (Eq. 4.10).
+            let own = h.hit.normal;
+            let n = if own.dot(ray.direction) > R::ZERO { -own } else { own };
+            let at = ShadingPoint {
+                p: h.hit.p,
+                n,
+                v: Some(ray.direction),
+            };
+            // The local colour, Eq. 4.16, by the core.
+            let local = if self.settings.shadows {
+                let mut shadows = ShadowRays {
+                    aggregate: &self.scene.aggregate,
+                    p_error: h.hit.p_error,
+                    normal: own,
+                    traced: 0,
+                };
+                let c = shade(&at, m, lights, &mut shadows, &mut NoRecord).color;
+                counts.shadow += shadows.traced;
+                c
+            } else {
+                shade(&at, m, lights, &mut AllVisible, &mut NoRecord).color
+            };
+            color += factor * local;
+            record.local = local;
+            record.o_r = m.o_r;
+            // A reflection ray only where O_r ≠ 0, its level ≤ the maximum and its weight
+            // w_s = w_p·max(O_r) above the minimum (DESIGN.md).
+            record.stop = match m.o_r {
+                None => Some(Stop::NotReflective),
+                Some(o_r) if o_r == V3::<R>::ZERO => Some(Stop::NotReflective),
+                Some(o_r) => {
+                    let w_s = weight * o_r.max_element();
+                    record.next_weight = Some(w_s);
+                    if level >= self.settings.max_level {
+                        Some(Stop::MaxLevel)
+                    } else if w_s <= self.settings.min_weight {
+                        Some(Stop::MinWeight)
+                    } else {
+                        None
+                    }
+                }
+            };
+            rec.ray(&record);
+            if record.stop.is_some() {
+                return color;
+            }
+            let o_r = m.o_r.expect("a reflection ray needs O_r");
+            // The reflection direction R_V = V − 2(N·V)N, Eq. 4.17.
+            let r_v = ray.direction - n * (R::TWO * n.dot(ray.direction));
+            let Some(r_v) = normalize::<R>(r_v) else {
+                return color;
+            };
+            let origin = offset_origin::<R>(h.hit.p, h.hit.p_error, own, r_v.unit);
+            spawn = Some(Spawn {
+                from: h.hit.p,
+                p_error: h.hit.p_error,
+                normal: own,
+                origin,
+            });
+            ray = Ray {
+                origin,
+                direction: r_v.unit,
+            };
+            factor = factor * o_r;
+            weight = weight * o_r.max_element();
+            level += 1;
+            counts.reflection += 1;
+        }
+    }
+}
