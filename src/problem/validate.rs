@@ -760,10 +760,12 @@ fn vector<R: Real>(a: Triple, field: &str) -> Result<V3<R>, Invalid> {
 fn direction<R: Real>(a: Triple, field: &str, what: &str) -> Result<GivenVector<R>, Invalid> {
     let v = vector::<R>(a, field)?;
     match normalize::<R>(v) {
+        // A vector of length 1 within rounding is used as given, so that a direction written
+        // out by phong itself (an explained ray) is read back bit for bit.
         Some(n) => Ok(GivenVector {
             given: v,
             length: n.length,
-            unit: n.unit,
+            unit: if is_unit_length(n.length) { v } else { n.unit },
         }),
         None => Err(Invalid::new(
             field,

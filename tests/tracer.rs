@@ -1,0 +1,479 @@
+//! The tracer, end to end through the `phong` binary: pixels explained exactly as the solver
+//! explains the equivalent ray problem; closed-form pixels worked out by hand (shadow, reflection
+//! and the level and weight rules); the same image at every scale and with any thread count;
+//! and bad scenes refused with exit code 2 and no image written.
+
+use std::fs;
+use std::path::{Path, PathBuf};
+
+use assert_cmd::Command;
+use serde_json::{json, Value};
+use tempfile::TempDir;
+
+const BAD_INPUT: i32 = 2;
+
+fn phong() -> Command {
+    Command::cargo_bin("phong").expect("the phong binary")
+}
+
+fn repo(path: &str) -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join(path)
+}
+
+fn write(dir: &TempDir, name: &str, v: &Value) -> PathBuf {
+    let p = dir.path().join(name);
+    fs::write(&p, serde_json::to_string_pretty(v).unwrap()).unwrap();
+    p
+}
+
+fn read_json(path: &Path) -> Value {
+    serde_json::from_str(&fs::read_to_string(path).unwrap()).unwrap()
+}
+
+/// Runs `phong render SCENE ARGS… -o DIR/name.ppm` and returns the image's (width, height, rgb).
+fn render_ppm(scene: &Path, dir: &TempDir, name: &str, args: &[&str]) -> (u32, u32, Vec<u8>) {
+    let out = dir.path().join(name);
+    phong()
+        .arg("render")
+        .arg(scene)
+        .arg("-o")
+        .arg(&out)
+        .args(args)
+        .assert()
+        .success();
+    let bytes = fs::read(&out).unwrap();
+    let img = phong::tracer::output::decode_ppm(&bytes).expect("a P6 image");
+    (img.width, img.height, img.rgb)
+}
+
+fn explain_json(scene: &Path, x: u32, y: u32, args: &[&str]) -> Value {
+    let out = phong()
+        .arg("render")
+        .arg(scene)
+        .arg("--explain-pixel")
+        .arg(format!("{x},{y}"))
+        .args(["--format", "json"])
+        .args(args)
+        .output()
+        .unwrap();
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    serde_json::from_slice(&out.stdout).unwrap()
+}
+
+fn solve_json(problem: &Path) -> Value {
+    let out = phong()
+        .arg("solve")
+        .arg(problem)
+        .args(["--format", "json"])
+        .output()
+        .unwrap();
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    serde_json::from_slice(&out.stdout).unwrap()
+}
+
+/// The scene turned into the ray problem of one ray: same lights, materials and surfaces, no
+/// camera, the ray given, no viewer (V is the ray's direction, as for every ray of the tracer).
+fn ray_problem(scene: &Value, origin: &Value, direction: &Value) -> Value {
+    let mut p = scene.clone();
+    let o = p.as_object_mut().unwrap();
+    o.remove("camera");
+    o.remove("background");
+    o.remove("viewer");
+    o.insert("ray".into(), json!({ "origin": origin, "direction": direction }));
+    p
+}
+
+fn without_file(mut v: Value) -> Value {
+    v.as_object_mut().unwrap().remove("file");
+    v
+}
+
+// ---------------------------------------------------------------------------------------------
+// Explained pixels are the solver's solutions
+// ---------------------------------------------------------------------------------------------
+
+#[test]
+fn every_ray_of_an_explained_pixel_is_what_phong_solve_says_of_that_ray() {
+    let dir = TempDir::new().unwrap();
+    let scene_path = repo("scenes/classic.json");
+    let scene = read_json(&scene_path);
+    // (320, 300): the mirror sphere, whose reflection ray hits the floor, which reflects again.
+    // (100, 250): the red sphere. (600, 20): the background.
+    for (x, y) in [(320, 300), (100, 250), (500, 280), (600, 20)] {
+        let e = explain_json(&scene_path, x, y, &[]);
+        let rays = e["samples"][0]["rays"].as_array().unwrap();
+        assert!(!rays.is_empty());
+        for (k, ray) in rays.iter().enumerate() {
+            let problem = ray_problem(&scene, &ray["origin"], &ray["direction"]);
+            let path = write(&dir, &format!("ray-{x}-{y}-{k}.json"), &problem);
+            let solved = solve_json(&path);
+            if ray["hit"].as_bool().unwrap() {
+                assert_eq!(
+                    without_file(ray["solve"].clone()),
+                    without_file(solved),
+                    "pixel ({x}, {y}), ray {k}"
+                );
+                // The tracer's own (unrecorded) local colour is the solver's colour.
+                assert_eq!(
+                    ray["local"], ray["solve"]["solution"]["color"]["unclamped"],
+                    "pixel ({x}, {y}), ray {k}"
+                );
+            } else {
+                assert!(solved["solution"].is_null(), "a miss has nothing to shade");
+            }
+        }
+    }
+}
+
+#[test]
+fn an_explained_pixel_has_the_colour_the_image_gives_it() {
+    let dir = TempDir::new().unwrap();
+    let scene = repo("scenes/classic.json");
+    let (w, _, rgb) = render_ppm(&scene, &dir, "classic.ppm", &[]);
+    for (x, y) in [(320, 300), (100, 250), (500, 280), (600, 20), (0, 479), (639, 0)] {
+        let e = explain_json(&scene, x, y, &[]);
+        let i = 3 * (y as usize * w as usize + x as usize);
+        let expected: Vec<Value> = rgb[i..i + 3].iter().map(|&c| json!(c)).collect();
+        assert_eq!(e["rgb8"], Value::Array(expected), "pixel ({x}, {y})");
+    }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Pixels worked out by hand
+// ---------------------------------------------------------------------------------------------
+
+/// A 1×1 image whose only ray, through the pixel's centre, goes from (3, 0, 5) to the origin,
+/// where it meets the plane z = 0 (normal +z). A directional light shines straight down.
+fn plane_scene(material: Value, extra_surfaces: Vec<Value>, background: [f64; 3]) -> Value {
+    let mut surfaces = vec![json!({
+        "type": "plane", "point": [0, 0, 0], "normal": [0, 0, 1], "material": material
+    })];
+    surfaces.extend(extra_surfaces);
+    json!({
+        "lights": [
+            { "type": "ambient", "color": [1, 1, 1] },
+            { "type": "directional", "direction": [0, 0, -1], "color": [1, 1, 1] }
+        ],
+        "surfaces": surfaces,
+        "camera": { "eye": [3, 0, 5], "look_at": [0, 0, 0], "up": [0, 0, 1], "fov": 30,
+                    "width": 1, "height": 1 },
+        "background": background
+    })
+}
+
+fn path_color(e: &Value) -> [f64; 3] {
+    let c = e["samples"][0]["color"].as_array().unwrap();
+    [0, 1, 2].map(|i| c[i].as_f64().unwrap())
+}
+
+fn assert_close(a: [f64; 3], b: [f64; 3]) {
+    for i in 0..3 {
+        assert!((a[i] - b[i]).abs() < 1e-12, "{a:?} ≠ {b:?}");
+    }
+}
+
+#[test]
+fn a_sphere_between_the_light_and_the_point_leaves_only_ambient_light() {
+    let dir = TempDir::new().unwrap();
+    let matte = json!({ "ambient": [0.2, 0.2, 0.2], "diffuse": [0.4, 0.4, 0.4],
+                        "specular": [0, 0, 0], "shininess": 1 });
+    // The sphere at (0, 0, 2), radius 0.5, is straight above the origin, in the light's way,
+    // and 1.2 from the camera ray (at (1.2, 0, 2)), so the camera sees past it.
+    let blocker = json!({ "type": "sphere", "center": [0, 0, 2], "radius": 0.5, "material": matte });
+    let scene = write(&dir, "shadow.json", &plane_scene(matte.clone(), vec![blocker], [0.0; 3]));
+    // In shadow: O_a I_a = 0.2. Without shadow rays: 0.2 + 0.4·1·cos 0 = 0.6.
+    let e = explain_json(&scene, 0, 0, &[]);
+    assert_close(path_color(&e), [0.2; 3]);
+    assert_eq!(e["samples"][0]["rays"][0]["solve"]["solution"]["lights"][0]["status"], "in_shadow");
+    assert_eq!(e["rgb8"], json!([51, 51, 51]));
+    let e = explain_json(&scene, 0, 0, &["--shadows", "off"]);
+    assert_close(path_color(&e), [0.6; 3]);
+    assert_eq!(e["rgb8"], json!([153, 153, 153]));
+}
+
+#[test]
+fn a_reflective_plane_adds_its_reflectivity_times_the_background() {
+    let dir = TempDir::new().unwrap();
+    let mirror = json!({ "ambient": [0.1, 0.1, 0.1], "diffuse": [0.3, 0.3, 0.3],
+                         "specular": [0, 0, 0], "shininess": 1,
+                         "reflectivity": [0.5, 0.25, 0.5] });
+    let scene = write(&dir, "mirror.json", &plane_scene(mirror, vec![], [0.2, 0.6, 1.0]));
+    // Local: 0.1 + 0.3·cos 0 = 0.4. The reflection ray R_V = V − 2(N·V)N leaves upwards and
+    // sees the background: C = 0.4 + O_r·(0.2, 0.6, 1.0) = (0.5, 0.55, 0.9).
+    let e = explain_json(&scene, 0, 0, &[]);
+    assert_close(path_color(&e), [0.5, 0.55, 0.9]);
+    let rays = e["samples"][0]["rays"].as_array().unwrap();
+    assert_eq!(rays.len(), 2);
+    assert_eq!(rays[1]["level"], 2);
+    assert_eq!(rays[1]["weight"], 0.5, "w_s = 1·max(O_r)");
+    assert_eq!(rays[1]["stop"], "miss");
+    // R_V: V = (−3, 0, −5)/√34, N = (0, 0, 1): R_V = (−3, 0, 5)/√34.
+    let d = rays[1]["direction"].as_array().unwrap();
+    let s = 34f64.sqrt();
+    assert_close([0, 1, 2].map(|i| d[i].as_f64().unwrap()), [-3.0 / s, 0.0, 5.0 / s]);
+    // It leaves from just above the origin: the offset is tiny and on the ray's side.
+    let z = rays[1]["origin"][2].as_f64().unwrap();
+    assert!(z > 0.0 && z < 1e-12, "origin z = {z}");
+
+    // Maximum level 1: primary rays only, C = 0.4.
+    let e = explain_json(&scene, 0, 0, &["--max-level", "1"]);
+    assert_close(path_color(&e), [0.4; 3]);
+    assert_eq!(e["samples"][0]["rays"][0]["stop"], "max_level");
+    // Minimum weight 0.5: w_s = 0.5 is not above it, so no reflection ray.
+    let e = explain_json(&scene, 0, 0, &["--min-weight", "0.5"]);
+    assert_close(path_color(&e), [0.4; 3]);
+    assert_eq!(e["samples"][0]["rays"][0]["stop"], "min_weight");
+    // Just below 0.5, the ray is traced.
+    let e = explain_json(&scene, 0, 0, &["--min-weight", "0.4999"]);
+    assert_close(path_color(&e), [0.5, 0.55, 0.9]);
+}
+
+#[test]
+fn two_facing_mirrors_stop_at_the_maximum_level_or_when_the_weight_runs_out() {
+    let dir = TempDir::new().unwrap();
+    // The camera, at z = 1 between the mirrors z = 0 and z = 2, looks straight down: its ray
+    // bounces up and down between them for ever. Each mirror has O_a = 1 and O_r = 0.5; the
+    // only light is an ambient 0.1 and the background is black.
+    let m = json!({ "ambient": [1, 1, 1], "reflectivity": [0.5, 0.5, 0.5] });
+    let scene = json!({
+        "lights": [{ "type": "ambient", "color": [0.1, 0.1, 0.1] }],
+        "surfaces": [
+            { "type": "plane", "point": [0, 0, 0], "normal": [0, 0, 1], "material": m },
+            { "type": "plane", "point": [0, 0, 2], "normal": [0, 0, 1], "material": m }
+        ],
+        "camera": { "eye": [0, 0, 1], "look_at": [0, 0, 0], "up": [0, 1, 0], "fov": 30,
+                    "width": 1, "height": 1 }
+    });
+    let path = write(&dir, "mirrors.json", &scene);
+    // Each hit adds 0.1, weighted by 0.5^(level − 1): with n levels C = 0.1·(1 − 0.5^n)/(1 − 0.5).
+    for n in [1u32, 2, 5, 10] {
+        let e = explain_json(&path, 0, 0, &["--max-level", &n.to_string(), "--min-weight", "0"]);
+        let rays = e["samples"][0]["rays"].as_array().unwrap();
+        assert_eq!(rays.len(), n as usize, "level {n}");
+        let expected = 0.2 * (1.0 - 0.5f64.powi(n as i32));
+        assert_close(path_color(&e), [expected; 3]);
+        assert_eq!(rays[n as usize - 1]["stop"], "max_level");
+    }
+    // Minimum weight 0.1: weights 1, 0.5, 0.25, 0.125 are traced, 0.0625 is not.
+    let e = explain_json(&path, 0, 0, &["--max-level", "100", "--min-weight", "0.1"]);
+    let rays = e["samples"][0]["rays"].as_array().unwrap();
+    assert_eq!(rays.len(), 4);
+    assert_eq!(rays[3]["stop"], "min_weight");
+    assert_eq!(rays[3]["next_weight"], 0.0625);
+}
+
+// ---------------------------------------------------------------------------------------------
+// Scale and threads
+// ---------------------------------------------------------------------------------------------
+
+/// The classic scene with every length multiplied by `s`; a light with falloff f has its colour
+/// multiplied by s^f, so that C/d^f, and so the image, is unchanged.
+fn scaled(scene: &Value, s: f64) -> Value {
+    let mut v = scene.clone();
+    let scale = |a: &mut Value| {
+        for x in a.as_array_mut().unwrap() {
+            *x = json!(x.as_f64().unwrap() * s);
+        }
+    };
+    for light in v["lights"].as_array_mut().unwrap() {
+        if light.get("position").is_some() {
+            scale(&mut light["position"]);
+            let f = light["falloff"].as_f64().unwrap();
+            for c in light["color"].as_array_mut().unwrap() {
+                *c = json!(c.as_f64().unwrap() * s.powf(f));
+            }
+        }
+    }
+    for surface in v["surfaces"].as_array_mut().unwrap() {
+        for key in ["point", "center"] {
+            if surface.get(key).is_some() {
+                scale(&mut surface[key]);
+            }
+        }
+        if let Some(r) = surface.get("radius").and_then(Value::as_f64) {
+            surface["radius"] = json!(r * s);
+        }
+    }
+    scale(&mut v["camera"]["eye"]);
+    scale(&mut v["camera"]["look_at"]);
+    v["camera"]["width"] = json!(160);
+    v["camera"]["height"] = json!(120);
+    v
+}
+
+#[test]
+fn the_same_scene_scaled_by_a_thousandth_or_a_million_renders_the_same_image() {
+    let dir = TempDir::new().unwrap();
+    let classic = read_json(&repo("scenes/classic.json"));
+    let base = write(&dir, "s1.json", &scaled(&classic, 1.0));
+    let (_, _, reference) = render_ppm(&base, &dir, "s1.ppm", &[]);
+    for (name, s) in [("milli", 1e-3), ("mega", 1e6)] {
+        let path = write(&dir, &format!("{name}.json"), &scaled(&classic, s));
+        let (_, _, img) = render_ppm(&path, &dir, &format!("{name}.ppm"), &[]);
+        let differ: Vec<usize> = (0..img.len()).filter(|&i| img[i] != reference[i]).collect();
+        let worst = differ
+            .iter()
+            .map(|&i| (i32::from(img[i]) - i32::from(reference[i])).abs())
+            .max()
+            .unwrap_or(0);
+        assert!(
+            differ.is_empty(),
+            "scale {s}: {} of {} channels differ, by up to {worst}",
+            differ.len(),
+            img.len()
+        );
+    }
+}
+
+#[test]
+fn any_number_of_threads_writes_the_same_bytes() {
+    let dir = TempDir::new().unwrap();
+    let classic = read_json(&repo("scenes/classic.json"));
+    let scene = write(&dir, "small.json", &scaled(&classic, 1.0));
+    let one = render_ppm(&scene, &dir, "t1.ppm", &["--threads", "1", "--samples", "4"]);
+    for t in ["2", "3", "7"] {
+        let other = render_ppm(&scene, &dir, &format!("t{t}.ppm"), &["--threads", t, "--samples", "4"]);
+        assert!(one == other, "--threads {t} changed the image");
+    }
+    // And PNG is the same pixels.
+    let png = dir.path().join("t.png");
+    phong().arg("render").arg(&scene).arg("-o").arg(&png).assert().success();
+    assert!(fs::read(&png).unwrap().starts_with(b"\x89PNG\r\n\x1a\n"));
+}
+
+// ---------------------------------------------------------------------------------------------
+// Bad scenes
+// ---------------------------------------------------------------------------------------------
+
+/// Runs `phong render` on a scene that must be refused: exit 2, stderr naming the file and
+/// `field`, a fix, no panic, and no image written.
+fn refused(dir: &TempDir, scene: &Value, extra: &[&str], field: &str) {
+    let path = write(dir, "bad.json", scene);
+    let out_path = dir.path().join("out.png");
+    let _ = fs::remove_file(&out_path);
+    let out = phong()
+        .arg("render")
+        .arg(&path)
+        .arg("-o")
+        .arg(&out_path)
+        .args(extra)
+        .output()
+        .unwrap();
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(BAD_INPUT), "{stderr}");
+    assert!(stderr.contains(field), "names {field}: {stderr}");
+    assert!(stderr.contains("Fix:"), "says how to fix it: {stderr}");
+    assert!(!stderr.contains("panicked"), "{stderr}");
+    assert!(!out_path.exists(), "no image is written: {stderr}");
+    let leftovers: Vec<_> = fs::read_dir(dir.path())
+        .unwrap()
+        .filter_map(|e| e.ok())
+        .filter(|e| e.file_name().to_string_lossy().starts_with(".tmp"))
+        .collect();
+    assert!(leftovers.is_empty(), "no temporary file is left behind");
+}
+
+fn small_scene() -> Value {
+    json!({
+        "lights": [{ "type": "ambient", "color": [1, 1, 1] }],
+        "surfaces": [{ "type": "sphere", "center": [0, 0, 0], "radius": 1,
+                       "material": { "ambient": [0.5, 0.5, 0.5] } }],
+        "camera": { "eye": [0, 0, 5], "look_at": [0, 0, 0], "fov": 40, "width": 8, "height": 6 }
+    })
+}
+
+#[test]
+fn a_scene_without_a_camera_cannot_be_rendered() {
+    let dir = TempDir::new().unwrap();
+    let mut s = small_scene();
+    s.as_object_mut().unwrap().remove("camera");
+    s["ray"] = json!({ "origin": [0, 0, 5], "direction": [0, 0, -1] });
+    refused(&dir, &s, &[], "camera");
+}
+
+#[test]
+fn image_sizes_of_zero_or_over_16384_are_refused() {
+    let dir = TempDir::new().unwrap();
+    for (key, n) in [("width", 0), ("height", 0), ("width", 16385), ("height", 100000)] {
+        let mut s = small_scene();
+        s["camera"][key] = json!(n);
+        refused(&dir, &s, &[], &format!("camera.{key}"));
+    }
+}
+
+#[test]
+fn more_than_4096_samples_are_refused_in_the_file_and_on_the_command_line() {
+    let dir = TempDir::new().unwrap();
+    let mut s = small_scene();
+    s["render"] = json!({ "samples": 4097 });
+    refused(&dir, &s, &[], "render.samples");
+    refused(&dir, &small_scene(), &["--samples", "5000"], "--samples");
+    refused(&dir, &small_scene(), &["--samples", "0"], "--samples");
+    refused(&dir, &small_scene(), &["--max-level", "0"], "--max-level");
+    refused(&dir, &small_scene(), &["--min-weight=-1"], "--min-weight");
+    refused(&dir, &small_scene(), &["--threads", "0"], "--threads");
+}
+
+#[test]
+fn a_degenerate_triangle_is_refused() {
+    let dir = TempDir::new().unwrap();
+    let mut s = small_scene();
+    s["surfaces"] = json!([{ "type": "triangle", "vertices": [[0, 0, 0], [1, 1, 1], [2, 2, 2]],
+                             "material": { "ambient": [0.5, 0.5, 0.5] } }]);
+    refused(&dir, &s, &[], "surfaces[0].vertices");
+}
+
+#[test]
+fn unreadable_or_malformed_obj_files_are_refused() {
+    let dir = TempDir::new().unwrap();
+    let mesh = |file: &str| {
+        let mut s = small_scene();
+        s["surfaces"] = json!([{ "type": "mesh", "file": file,
+                                 "material": { "ambient": [0.5, 0.5, 0.5] } }]);
+        s
+    };
+    refused(&dir, &mesh("missing.obj"), &[], "surfaces[0].file");
+    fs::write(dir.path().join("broken.obj"), "v 0 0 0\nv 1 0 0\nf 1 2 7\n").unwrap();
+    refused(&dir, &mesh("broken.obj"), &[], "surfaces[0].file");
+    fs::write(dir.path().join("garbage.obj"), "v zero one two\nf 1 2 3\n").unwrap();
+    refused(&dir, &mesh("garbage.obj"), &[], "surfaces[0].file");
+    fs::write(dir.path().join("empty.obj"), "# nothing\n").unwrap();
+    refused(&dir, &mesh("empty.obj"), &[], "surfaces[0].file");
+    fs::write(dir.path().join("flat.obj"), "v 0 0 0\nv 1 1 1\nv 2 2 2\nf 1 2 3\n").unwrap();
+    refused(&dir, &mesh("flat.obj"), &[], "surfaces[0].file");
+}
+
+#[test]
+fn an_existing_image_is_left_untouched_when_the_scene_is_bad() {
+    let dir = TempDir::new().unwrap();
+    let out = dir.path().join("keep.png");
+    fs::write(&out, b"previous image").unwrap();
+    let mut s = small_scene();
+    s["camera"]["width"] = json!(0);
+    let path = write(&dir, "bad.json", &s);
+    phong().arg("render").arg(&path).arg("-o").arg(&out).assert().code(BAD_INPUT);
+    assert_eq!(fs::read(&out).unwrap(), b"previous image");
+}
+
+#[test]
+fn a_pixel_outside_the_image_cannot_be_explained() {
+    let dir = TempDir::new().unwrap();
+    let path = write(&dir, "s.json", &small_scene());
+    let out = phong()
+        .arg("render")
+        .arg(&path)
+        .args(["--explain-pixel", "8,0"])
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(BAD_INPUT));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("--explain-pixel"));
+}
+
+#[test]
+fn solving_a_scene_without_a_ray_says_to_render_it() {
+    let dir = TempDir::new().unwrap();
+    let path = write(&dir, "s.json", &small_scene());
+    let out = phong().arg("solve").arg(&path).output().unwrap();
+    assert_eq!(out.status.code(), Some(BAD_INPUT));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("phong render"));
+}
