@@ -30,6 +30,31 @@ pub enum Command {
     Render(RenderArgs),
     /// Print the JSON Schema of the problem format.
     Schema(SchemaArgs),
+    /// Write a scene as POV-Ray 3.7 SDL that computes the same model (for cross-checking),
+    /// or say why POV-Ray cannot express it (exit 2).
+    ExportPov(ExportPovArgs),
+}
+
+#[derive(Debug, Args)]
+pub struct ExportPovArgs {
+    /// The scene: a problem file with a "camera" and "surfaces".
+    #[arg(value_name = "SCENE")]
+    pub scene: PathBuf,
+    /// Write the SDL to this file (atomically) instead of standard output.
+    #[arg(short, long, value_name = "PATH")]
+    pub output: Option<PathBuf>,
+    /// The maximum recursion level (primary rays are level 1) [scene's, or 5].
+    #[arg(long, value_name = "N")]
+    pub max_level: Option<u32>,
+    /// The minimum weight of a reflection ray [scene's, or 1/255].
+    #[arg(long, value_name = "W")]
+    pub min_weight: Option<f64>,
+    /// Shadow rays on or off [scene's, or on].
+    #[arg(long, value_enum, value_name = "ON|OFF")]
+    pub shadows: Option<Switch>,
+    /// Samples per pixel [scene's, or 1]; POV-Ray can only match 1.
+    #[arg(long, value_name = "N")]
+    pub samples: Option<u32>,
 }
 
 #[derive(Debug, Args)]
@@ -147,6 +172,49 @@ pub fn run(cli: &Cli) -> u8 {
             let mut text = problem::schema_json();
             text.push('\n');
             emit(args.output.as_deref(), &text)
+        }
+        Command::ExportPov(args) => export_pov_command(args),
+    }
+}
+
+/// `phong export-pov`: the scene in f64 (POV-Ray computes in double), with the command line's
+/// settings, as POV-Ray SDL; exit 2 when the file is bad or POV-Ray cannot express the scene.
+fn export_pov_command(args: &ExportPovArgs) -> u8 {
+    use crate::problem::validate::{check_max_level, check_min_weight, check_samples};
+    let run = || -> Result<String, String> {
+        let path = &args.scene;
+        let (_, mut problem) = problem::load::<f64>(path).map_err(|e| e.to_string())?;
+        let flag = |name: &str, (message, fix): (String, String)| {
+            ProblemError::Usage {
+                flag: name.to_owned(),
+                message,
+                fix,
+            }
+            .to_string()
+        };
+        let s = &mut problem.render;
+        if let Some(level) = args.max_level {
+            check_max_level(level).map_err(|e| flag("--max-level", e))?;
+            s.max_level = level;
+        }
+        if let Some(w) = args.min_weight {
+            check_min_weight(w).map_err(|e| flag("--min-weight", e))?;
+            s.min_weight = w;
+        }
+        if let Some(n) = args.samples {
+            check_samples(n).map_err(|e| flag("--samples", e))?;
+            s.samples = n;
+        }
+        if let Some(sw) = args.shadows {
+            s.shadows = sw == Switch::On;
+        }
+        crate::export::pov::export(&problem).map_err(|e| format!("{}: {e}", path.display()))
+    };
+    match run() {
+        Ok(sdl) => emit(args.output.as_deref(), &sdl),
+        Err(message) => {
+            eprintln!("error: {message}");
+            EXIT_BAD_INPUT
         }
     }
 }
@@ -308,9 +376,9 @@ fn render_scene<R: Real>(args: &RenderArgs) -> Result<u8, ProblemError> {
         let e = crate::tracer::explain_pixel(&problem, &camera, &scene, x, y)
             .map_err(|e| e.at(path))?;
         let out = match args.format {
-            Format::Text => report::explain::render_text(&file, &problem, &e),
+            Format::Text => report::pixel::render_text(&file, &problem, &e),
             Format::Json => {
-                let doc = report::explain::document(&file, &problem, &e);
+                let doc = report::pixel::document(&file, &problem, &e);
                 let mut s = serde_json::to_string_pretty(
                     &serde_json::to_value(doc).expect("the explanation serialises"),
                 )

@@ -1,7 +1,7 @@
 //! Reports: a solved problem written for people (text) or for scripts (stable JSON). All
 //! wording lives in [`messages`], so both formats say the same thing.
 
-pub mod explain;
+pub mod pixel;
 pub mod json;
 pub mod lang;
 pub mod messages;
