@@ -775,3 +775,95 @@ pub fn nest(steps: &[Step]) -> Vec<Node<'_>> {
 pub fn language_tag(lang: Lang) -> &'static str {
     pick(lang, "en", "pt-BR")
 }
+
+/// A stretch of a line in one notation: words, or a run of math (formulas and the numbers
+/// they equal, with the spaces between them), or a swatch.
+#[derive(Debug, PartialEq)]
+pub enum Run<'a> {
+    Text(String),
+    Math(Vec<&'a Inline>),
+    Swatch([u8; 3]),
+}
+
+/// Splits a line into runs of words and runs of math, so that LaTeX and Markdown put a whole
+/// formula with its value in one `$…$`. A piece of blank text between two math pieces stays
+/// inside the math.
+pub fn runs(line: &[Inline]) -> Vec<Run<'_>> {
+    let is_math = |x: &Inline| {
+        matches!(
+            x,
+            Inline::Math(_)
+                | Inline::Num(_)
+                | Inline::Vector(_)
+                | Inline::Color(_)
+                | Inline::Degrees(_)
+        )
+    };
+    let mut out: Vec<Run> = Vec::new();
+    for (i, piece) in line.iter().enumerate() {
+        let blank_between_math = matches!(piece, Inline::Text(s) if s.trim().is_empty())
+            && i > 0
+            && is_math(&line[i - 1])
+            && line.get(i + 1).is_some_and(is_math);
+        if is_math(piece) || blank_between_math {
+            match out.last_mut() {
+                Some(Run::Math(m)) => m.push(piece),
+                _ => out.push(Run::Math(vec![piece])),
+            }
+            continue;
+        }
+        let text = match piece {
+            Inline::Swatch(rgb) => {
+                out.push(Run::Swatch(*rgb));
+                continue;
+            }
+            other => plain(std::slice::from_ref(other)),
+        };
+        match out.last_mut() {
+            Some(Run::Text(s)) => s.push_str(&text),
+            _ => out.push(Run::Text(text)),
+        }
+    }
+    out
+}
+
+/// A colour clamped to [0, 1] in 8 bits, for a swatch.
+pub fn to_rgb8(c: [f64; 3]) -> [u8; 3] {
+    c.map(|x| (x.clamp(0.0, 1.0) * 255.0).round() as u8)
+}
+
+/// A number in LaTeX math: "1.5e9" becomes "1.5 \times 10^{9}".
+pub fn latex_number(x: f64) -> String {
+    let s = super::number::num(x);
+    match s.split_once('e') {
+        Some((m, e)) => format!("{m} \\times 10^{{{e}}}"),
+        None => s,
+    }
+}
+
+/// A math run in LaTeX.
+pub fn latex_math(run: &[&Inline]) -> String {
+    let mut s = String::new();
+    let vector = |x: &[f64; 3]| {
+        format!(
+            "({}, {}, {})",
+            latex_number(x[0]),
+            latex_number(x[1]),
+            latex_number(x[2])
+        )
+    };
+    for piece in run {
+        match piece {
+            Inline::Math(f) => s.push_str(f.latex()),
+            Inline::Num(x) => s.push_str(&latex_number(*x)),
+            Inline::Vector(x) | Inline::Color(x) => s.push_str(&vector(x)),
+            Inline::Degrees(x) => {
+                s.push_str(&latex_number(*x));
+                s.push_str("^\\circ");
+            }
+            Inline::Text(t) => s.push_str(if t.trim().is_empty() { " " } else { t }),
+            Inline::Rgb8(_) | Inline::Swatch(_) => {}
+        }
+    }
+    s.trim().to_owned()
+}

@@ -66,7 +66,6 @@ phrases! {
     Direction => "direction ", "direção ";
     Plane => "plane", "plano";
     Sphere => "sphere", "esfera";
-    Surface => "surface", "superfície";
     Hit => "hit (t > 0)", "interseção (t > 0)";
     NotAHit => "behind the origin (t ≤ 0): not a hit", "atrás da origem (t ≤ 0): não é interseção";
     LineMeetsNothing => "the ray's line meets no surface", "a reta do raio não encontra nenhuma superfície";
@@ -127,8 +126,6 @@ phrases! {
         "V é perpendicular a este plano e não é desenhado.";
     LAlongN => "L is along N: every plane through N is a plane of incidence; this one is chosen to hold V.",
         "L está na direção de N: todo plano que contém N é um plano de incidência; este foi escolhido para conter V.";
-    NoDiagram => "No diagram: the problem gives no normal or no light with a direction.",
-        "Sem diagrama: o problema não dá normal ou fonte de luz com direção.";
     Swatch => "the colour, clamped to [0, 1]", "a cor, limitada a [0, 1]";
 }
 

@@ -5,10 +5,14 @@
 //! and [`html`] only lay them out. All wording lives in [`messages`], every formula in
 //! [`formula`].
 
+pub mod diagram;
 pub mod explain;
 pub mod formula;
+pub mod html;
 pub mod json;
 pub mod lang;
+pub mod latex;
+pub mod markdown;
 pub mod messages;
 pub mod number;
 pub mod text;
