@@ -236,7 +236,7 @@ pub fn svg(d: &Diagram, id: &str, lang: Lang) -> String {
             &mut out,
             &format!("{id}-R-label"),
             "sym",
-            beside(ra, rb, 0.8, 1.0),
+            beside(ra, rb, 0.8, -1.0),
             "R",
         );
     }
@@ -269,7 +269,7 @@ pub fn svg(d: &Diagram, id: &str, lang: Lang) -> String {
                 &mut out,
                 &format!("{id}-V-label"),
                 "sym",
-                beside(-va, -vb, 0.5, -1.0),
+                beside(-va, -vb, 0.5, 1.0),
                 "V",
             );
             let _ = writeln!(
