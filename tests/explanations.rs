@@ -289,7 +289,10 @@ fn the_readmes_screenshot_is_there_and_stays_small() {
     let size = std::fs::metadata("docs/explain-4.2.png")
         .expect("README.md shows docs/explain-4.2.png")
         .len();
-    assert!(size < 60_000, "docs/explain-4.2.png is {size} bytes: shrink it (pngquant)");
+    assert!(
+        size < 60_000,
+        "docs/explain-4.2.png is {size} bytes: shrink it (pngquant)"
+    );
     let readme = std::fs::read_to_string("README.md").unwrap();
     assert!(readme.contains("docs/explain-4.2.png"));
 }
