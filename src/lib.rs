@@ -5,7 +5,8 @@
 //! - [`geometry`]: rays, planes, spheres and their intersections.
 //! - [`problem`]: the JSON problem format, its parsing and validation.
 //! - [`solve`]: turns a validated problem into a solution with every intermediate.
-//! - [`report`]: writes a solution as text or as stable JSON.
+//! - [`report`]: explains a solution (text, Markdown, LaTeX, HTML; English or Portuguese) or
+//!   writes it as stable JSON.
 //! - [`cli`]: the `phong` command line.
 
 pub mod cli;

@@ -11,6 +11,8 @@ use crate::core::Real;
 use crate::tracer::output::ImageFormat;
 use crate::problem::{self, ProblemError};
 use crate::report;
+use crate::report::explain::Explanation;
+use crate::report::lang::Lang;
 use crate::solve;
 
 /// Solve and explain the illumination exercises of Chapter 4 (Phong's model).
@@ -122,9 +124,19 @@ pub struct SolveArgs {
     /// Problem files (JSON). Each is solved even when another one is bad.
     #[arg(required = true, value_name = "FILE")]
     pub files: Vec<PathBuf>,
-    /// Output format: text for people, json for scripts (stable field names, format_version).
+    /// Output format: text for people (a terminal), markdown, latex or html explanations for
+    /// notes and course pages, json for scripts (stable field names, format_version).
     #[arg(long, value_enum, default_value_t = Format::Text)]
     pub format: Format,
+    /// Language of the explanation (text, markdown, latex, html); json is language-neutral.
+    #[arg(long, value_enum, default_value_t = Lang::En)]
+    pub lang: Lang,
+    /// Colour in the text format: auto (on a terminal, unless NO_COLOR is set), always, never.
+    #[arg(long, value_enum, default_value_t = ColorChoice::Auto)]
+    pub color: ColorChoice,
+    /// latex and html only: write the body without the preamble or page around it.
+    #[arg(long)]
+    pub fragment: bool,
     /// Floating-point precision of the whole calculation.
     #[arg(long, value_enum, default_value_t = Precision::F64)]
     pub precision: Precision,
@@ -143,7 +155,18 @@ pub struct SchemaArgs {
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
 pub enum Format {
     Text,
+    Markdown,
+    Latex,
+    Html,
     Json,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum ColorChoice {
+    /// Colour when writing to a terminal and NO_COLOR is not set.
+    Auto,
+    Always,
+    Never,
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
@@ -220,18 +243,20 @@ fn export_pov_command(args: &ExportPovArgs) -> u8 {
 }
 
 fn solve_command(args: &SolveArgs) -> u8 {
+    if args.fragment && !matches!(args.format, Format::Latex | Format::Html) {
+        eprintln!(
+            "error: --fragment applies to --format latex and html only. Fix: drop --fragment, \
+             or use --format latex or html"
+        );
+        return EXIT_BAD_INPUT;
+    }
     let mut failed = false;
     let mut docs = Vec::new();
-    let mut text = String::new();
+    let mut explanations = Vec::new();
     for path in &args.files {
         let result = match args.format {
             Format::Json => solve_json(path, args.precision).map(|v| docs.push(v)),
-            Format::Text => solve_text(path, args.precision).map(|t| {
-                if !text.is_empty() {
-                    text.push('\n');
-                }
-                text.push_str(&t);
-            }),
+            _ => explain_file(path, args.precision, args.lang).map(|x| explanations.push(x)),
         };
         if let Err(e) = result {
             failed = true;
@@ -242,7 +267,28 @@ fn solve_command(args: &SolveArgs) -> u8 {
         }
     }
     let out = match args.format {
-        Format::Text => text,
+        Format::Text => {
+            let color = use_color(args.color, args.output.is_some());
+            explanations
+                .iter()
+                .map(|x| report::text::write_explanation(x, color))
+                .collect::<Vec<_>>()
+                .join("\n")
+        }
+        Format::Markdown => report::markdown::write_all(&explanations),
+        Format::Latex => report::latex::write_all(
+            &explanations,
+            report::latex::LatexOptions {
+                fragment: args.fragment,
+            },
+        ),
+        Format::Html => report::html::write_all(
+            &explanations,
+            report::html::HtmlOptions {
+                fragment: args.fragment,
+            },
+            args.lang,
+        ),
         Format::Json => {
             let value = if docs.len() == 1 {
                 docs.pop().expect("one document")
@@ -376,6 +422,13 @@ fn render_scene<R: Real>(args: &RenderArgs) -> Result<u8, ProblemError> {
         let e = crate::tracer::explain_pixel(&problem, &camera, &scene, x, y)
             .map_err(|e| e.at(path))?;
         let out = match args.format {
+            Format::Markdown | Format::Latex | Format::Html => {
+                return Err(ProblemError::Usage {
+                    flag: "--format".into(),
+                    message: "a pixel's explanation is written as text or json".into(),
+                    fix: "give --format text or --format json with --explain-pixel".into(),
+                })
+            }
             Format::Text => report::pixel::render_text(&file, &problem, &e),
             Format::Json => {
                 let doc = report::pixel::document(&file, &problem, &e);
@@ -435,6 +488,44 @@ fn progress_bar(rows: u64) -> indicatif::ProgressBar {
         bar.set_style(style);
     }
     bar
+}
+
+/// Whether the text report is coloured: `always`, `never`, or for `auto` when writing to a
+/// terminal (not a file or a pipe), NO_COLOR is unset or empty (no-color.org) and TERM is not
+/// "dumb".
+fn use_color(choice: ColorChoice, to_file: bool) -> bool {
+    use std::io::IsTerminal;
+    match choice {
+        ColorChoice::Always => true,
+        ColorChoice::Never => false,
+        ColorChoice::Auto => {
+            let no_color = std::env::var_os("NO_COLOR").is_some_and(|v| !v.is_empty());
+            let dumb = std::env::var_os("TERM").is_some_and(|t| t == "dumb");
+            !to_file && !no_color && !dumb && std::io::stdout().is_terminal()
+        }
+    }
+}
+
+/// Solves one file and returns its explanation in `lang`, for the text, Markdown, LaTeX and
+/// HTML formats.
+pub fn explain_file(
+    path: &Path,
+    precision: Precision,
+    lang: Lang,
+) -> Result<Explanation, ProblemError> {
+    fn go<R: Real>(path: &Path, lang: Lang) -> Result<Explanation, ProblemError> {
+        let (problem, solution) = solve_file::<R>(path)?;
+        Ok(report::explain::explain(
+            &path.display().to_string(),
+            &problem,
+            &solution,
+            lang,
+        ))
+    }
+    match precision {
+        Precision::F32 => go::<f32>(path, lang),
+        Precision::F64 => go::<f64>(path, lang),
+    }
 }
 
 /// Solves one file and returns its stable JSON document.

@@ -1,9 +1,19 @@
-//! Reports: a solved problem written for people (text) or for scripts (stable JSON). All
-//! wording lives in [`messages`], so both formats say the same thing.
+//! Reports: a solved problem written for people (text, Markdown, LaTeX, HTML, in English or
+//! Portuguese) or for scripts (stable, language-neutral JSON).
+//!
+//! [`explain`] walks a solution once and decides the steps; [`text`], [`markdown`], [`latex`]
+//! and [`html`] only lay them out. All wording lives in [`messages`], every formula in
+//! [`formula`].
 
-pub mod pixel;
+pub mod diagram;
+pub mod explain;
+pub mod formula;
+pub mod html;
 pub mod json;
 pub mod lang;
+pub mod latex;
+pub mod markdown;
 pub mod messages;
 pub mod number;
+pub mod pixel;
 pub mod text;

@@ -1,0 +1,869 @@
+//! The explanation of a solution, independent of any output format: the one walk over a
+//! [`Solution`] that decides what the steps are, in which order, with which formula, value and
+//! equation number. The text, Markdown, LaTeX and HTML renderers only lay it out, so they cannot
+//! disagree about the steps.
+//!
+//! A step's line is a sequence of [`Inline`] pieces: words (already in the explanation's
+//! language), formulas from [`Formula`] (each written in Unicode and in LaTeX), numbers,
+//! vectors and colours. Each renderer writes the pieces in its own notation.
+
+use super::formula::Formula;
+use super::lang::Lang;
+use super::messages::{self, pick, Phrase};
+use crate::core::real::to_f64_array;
+use crate::core::{Falloff, LightKind, LightSet, LightStatus, LightTerm, Real, SpecularStatus, V3};
+use crate::problem::format::ColorSpec;
+use crate::problem::model::ReflectivitySource;
+use crate::problem::Problem;
+use crate::solve::{Evaluation, Intersection, Solution, ViewSource};
+
+/// One piece of a step's line.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Inline {
+    /// Words in the explanation's language (may hold a user's text, such as a light's name).
+    Text(String),
+    /// A formula or symbol.
+    Math(Formula),
+    /// A number.
+    Num(f64),
+    /// A vector (or a colour that may be negative, such as a literal value).
+    Vector([f64; 3]),
+    /// A colour (HTML shows a swatch beside it, clamped to [0, 1]).
+    Color([f64; 3]),
+    /// An angle in degrees.
+    Degrees(f64),
+    /// An 8-bit colour "(r, g, b)".
+    Rgb8([u8; 3]),
+    /// Where a renderer that can show colour puts a swatch of this 8-bit colour (nothing in
+    /// plain text).
+    Swatch([u8; 3]),
+}
+
+/// A reference to the chapter: an equation, a range of equations, a sum of an equation over
+/// the lights, or a section.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Ref {
+    Eq(&'static str),
+    Eqs(&'static str, &'static str),
+    SumEq(&'static str),
+    Sec(&'static str),
+}
+
+impl Ref {
+    /// "Eq. 4.10", "Eq. 4.5–4.6", "Σ Eq. 4.8", "Sec. 4.2" (in `lang`).
+    pub fn text(self, lang: Lang) -> String {
+        let eq = Phrase::EqAbbrev.get(lang);
+        match self {
+            Ref::Eq(n) => format!("{eq} {n}"),
+            Ref::Eqs(a, b) => format!("{eq} {a}–{b}"),
+            Ref::SumEq(n) => format!("Σ {eq} {n}"),
+            Ref::Sec(n) => format!("{} {n}", Phrase::SecAbbrev.get(lang)),
+        }
+    }
+}
+
+/// One step (or one given quantity): its line, its depth under the step above, and the
+/// chapter's equation.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Step {
+    /// 0 for a step, 1 for a part of the step above, 2 for a note on that part.
+    pub depth: usize,
+    pub line: Vec<Inline>,
+    pub eq: Option<Ref>,
+}
+
+/// The explanation of one solved problem.
+#[derive(Clone, Debug)]
+pub struct Explanation {
+    pub lang: Lang,
+    /// The problem's title, or "Problem".
+    pub title: String,
+    pub file: String,
+    /// "f32" or "f64".
+    pub precision: &'static str,
+    pub question: Option<String>,
+    /// The findings, as sentences.
+    pub findings: Vec<String>,
+    /// A ray problem's intersection, as written.
+    pub ray: Option<Vec<Step>>,
+    /// The problem as written, then any other readings.
+    pub parts: Vec<Part>,
+}
+
+/// The problem as written, or another reading of it.
+#[derive(Clone, Debug)]
+pub struct Part {
+    /// "Solution (the problem as written)" or "Reading: …".
+    pub heading: String,
+    /// Why a reading is shown and what it assumes.
+    pub explanation: Option<String>,
+    /// A reading's own intersection.
+    pub ray: Option<Vec<Step>>,
+    /// `None` when there is nothing to shade.
+    pub shading: Option<Shading>,
+}
+
+/// The shading of the point, in three lists of steps.
+#[derive(Clone, Debug)]
+pub struct Shading {
+    pub given: Vec<Step>,
+    pub steps: Vec<Step>,
+    pub total: Vec<Step>,
+    /// The colour clamped to [0, 1] and in 8 bits.
+    pub clamped: [f64; 3],
+    pub rgb8: [u8; 3],
+    /// One plane of incidence per light that has a direction at the point.
+    pub diagrams: Vec<Diagram>,
+}
+
+/// What a diagram of the plane of incidence needs: the unit vectors at P for one light.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Diagram {
+    /// The light's label ("lights[0] (point) \"white light\"").
+    pub light: String,
+    /// Its index in the file's `lights`.
+    pub light_index: usize,
+    pub directional: bool,
+    pub n: [f64; 3],
+    /// L, from the light to the point.
+    pub l: [f64; 3],
+    /// R, where the explanation computed it.
+    pub r: Option<[f64; 3]>,
+    /// V, from the eye to the point, when there is a viewer.
+    pub v: Option<[f64; 3]>,
+    pub status: LightStatus,
+}
+
+fn v<R: Real>(x: V3<R>) -> [f64; 3] {
+    to_f64_array::<R>(x)
+}
+
+fn t(s: impl Into<String>) -> Inline {
+    Inline::Text(s.into())
+}
+
+fn p(phrase: Phrase, lang: Lang) -> Inline {
+    Inline::Text(phrase.get(lang).to_owned())
+}
+
+use Inline::{Color, Math, Num, Vector};
+
+const EQ: Inline = Math(Formula::Equals);
+
+/// Collects steps.
+struct Steps(Vec<Step>);
+
+impl Steps {
+    fn push(&mut self, depth: usize, line: Vec<Inline>, eq: Option<Ref>) {
+        self.0.push(Step { depth, line, eq });
+    }
+}
+
+/// Explains a solved problem in `lang`.
+pub fn explain<R: Real>(
+    file: &str,
+    problem: &Problem<R>,
+    s: &Solution<R>,
+    lang: Lang,
+) -> Explanation {
+    let parts = std::iter::once(Part {
+        heading: Phrase::AsWritten.get(lang).to_owned(),
+        explanation: None,
+        ray: None,
+        shading: s.evaluation.as_ref().map(|e| shading(problem, e, lang)),
+    })
+    .chain(s.readings.iter().map(|r| Part {
+        heading: format!(
+            "{}{}",
+            Phrase::ReadingHeading.get(lang),
+            messages::reading_label_in(r.code, lang)
+        ),
+        explanation: Some(messages::reading_explanation_in(r.code, lang).to_owned()),
+        ray: r.intersection.as_ref().map(|x| intersection(x, lang)),
+        shading: Some(shading(problem, &r.evaluation, lang)),
+    }))
+    .collect();
+    Explanation {
+        lang,
+        title: s
+            .title
+            .clone()
+            .unwrap_or_else(|| Phrase::Problem.get(lang).to_owned()),
+        file: file.to_owned(),
+        precision: R::NAME,
+        question: s.question.clone(),
+        findings: s
+            .findings
+            .iter()
+            .map(|f| messages::finding_in(problem, f, lang))
+            .collect(),
+        ray: s.intersection.as_ref().map(|x| intersection(x, lang)),
+        parts,
+    }
+}
+
+fn intersection<R: Real>(x: &Intersection<R>, lang: Lang) -> Vec<Step> {
+    let mut out = Steps(Vec::new());
+    out.push(
+        0,
+        vec![
+            p(Phrase::Origin, lang),
+            Math(Formula::O),
+            EQ,
+            Vector(v::<R>(x.origin)),
+        ],
+        None,
+    );
+    let length = crate::core::vector::length::<R>(x.direction_given);
+    let mut line = vec![p(Phrase::Direction, lang), Math(Formula::D), EQ];
+    if !crate::core::vector::is_unit_length(length) {
+        line.extend([
+            Vector(v::<R>(x.direction_given)),
+            t(" "),
+            Math(Formula::OverNorm),
+            EQ,
+        ]);
+    }
+    line.push(Vector(v::<R>(x.direction)));
+    out.push(0, line, None);
+    match (x.t, x.point, x.kind) {
+        (Some(tt), Some(pt), Some(kind)) => {
+            let verdict = if x.in_front {
+                Phrase::Hit
+            } else {
+                Phrase::NotAHit
+            };
+            out.push(
+                0,
+                vec![
+                    t(format!(
+                        "{} ({}): ",
+                        messages::surface_kind(kind, lang),
+                        messages::surface_label(x.source)
+                    )),
+                    Math(Formula::T),
+                    EQ,
+                    Num(tt.to_f64()),
+                    t(", "),
+                    Math(Formula::OPlusTD),
+                    EQ,
+                    Vector(v::<R>(pt)),
+                    t("  → "),
+                    p(verdict, lang),
+                ],
+                None,
+            );
+        }
+        _ => out.push(0, vec![p(Phrase::LineMeetsNothing, lang)], None),
+    }
+    out.0
+}
+
+/// A material colour as given: "O", or "k·O = k × O".
+fn color_spec(c: &ColorSpec) -> Vec<Inline> {
+    match c {
+        ColorSpec::Scaled(s) => vec![
+            Color(c.product()),
+            EQ,
+            Num(s.k),
+            Math(Formula::Times),
+            Color(s.color),
+        ],
+        ColorSpec::Rgb(rgb) => vec![Color(*rgb)],
+    }
+}
+
+fn shading<R: Real>(problem: &Problem<R>, e: &Evaluation<R>, lang: Lang) -> Shading {
+    // What is given.
+    let mut given = Steps(Vec::new());
+    if let Some(pt) = e.point {
+        given.push(0, vec![Math(Formula::P), EQ, Vector(v::<R>(pt))], None);
+    }
+    if let Some(nu) = &e.normal {
+        let mut line = vec![Math(Formula::N), EQ, Vector(v::<R>(nu.used))];
+        let unit = crate::core::vector::is_unit_length(nu.length);
+        match (unit, nu.reversed) {
+            (true, false) => {}
+            (true, true) => line.extend([t("  ("), p(Phrase::Reversed, lang), t(")")]),
+            (false, reversed) => {
+                line.extend([
+                    t("  ("),
+                    p(Phrase::NormalisedFrom, lang),
+                    Vector(v::<R>(nu.given)),
+                    t(" ("),
+                    p(Phrase::Length, lang),
+                    Num(nu.length.to_f64()),
+                    t(")"),
+                ]);
+                if reversed {
+                    line.push(p(Phrase::ThenReversed, lang));
+                }
+                line.push(t(")"));
+            }
+        }
+        given.push(0, line, None);
+    }
+    if let Some(pos) = e.viewer.and_then(|vw| vw.position) {
+        given.push(
+            0,
+            vec![
+                p(Phrase::Viewer, lang),
+                Math(Formula::E),
+                EQ,
+                Vector(v::<R>(pos)),
+            ],
+            None,
+        );
+    }
+    let m = &e.material;
+    let name = m
+        .name
+        .as_deref()
+        .map_or(String::new(), |n| format!(" \"{n}\""));
+    given.push(
+        0,
+        vec![p(Phrase::Material, lang), t(format!("{name}:"))],
+        None,
+    );
+    let colors = [
+        (Formula::OA, &m.spec.ambient, Ref::Eqs("4.5", "4.6")),
+        (Formula::OD, &m.spec.diffuse, Ref::Eqs("4.7", "4.8")),
+        (Formula::OS, &m.spec.specular, Ref::Eqs("4.9", "4.10")),
+    ];
+    for (symbol, spec, eq) in colors {
+        if let Some(c) = spec {
+            let mut line = vec![Math(symbol), EQ];
+            line.extend(color_spec(c));
+            given.push(1, line, Some(eq));
+        }
+    }
+    if m.spec.shininess.is_some() {
+        given.push(
+            1,
+            vec![Math(Formula::NS), EQ, Num(m.material.n_s.to_f64())],
+            Some(Ref::Eq("4.9")),
+        );
+    }
+    if let Some(o_r) = m.material.o_r {
+        let mut line = vec![Math(Formula::OR), EQ, Color(v::<R>(o_r))];
+        if m.reflectivity == Some(ReflectivitySource::Specular) {
+            line.push(p(Phrase::TakenEqualToOs, lang));
+        }
+        given.push(1, line, Some(Ref::Sec("4.4")));
+    }
+
+    // The steps.
+    let mut steps = Steps(Vec::new());
+    if let Some(vw) = &e.viewer {
+        let how = match vw.source {
+            ViewSource::Viewer => vec![Math(Formula::VFromViewer)],
+            ViewSource::Ray => vec![Math(Formula::VIsD), p(Phrase::RayFromEye, lang)],
+            ViewSource::ReversedRay => vec![Math(Formula::VIsMinusD), p(Phrase::ReversedRay, lang)],
+        };
+        let mut line = how;
+        line.extend([EQ, Vector(v::<R>(vw.v))]);
+        steps.push(0, line, Some(Ref::Eq("4.10")));
+        if let (Some(d), Some(side)) = (vw.n_dot_v, vw.side) {
+            steps.push(
+                1,
+                vec![
+                    Math(Formula::NDotV),
+                    EQ,
+                    Num(d.to_f64()),
+                    t(": "),
+                    t(messages::side(side, lang)),
+                ],
+                None,
+            );
+        }
+    }
+    // Ambient light, Eq. 4.6.
+    if let (Some(i_a), Some(term)) = (e.lights_used(problem).ambient, e.shade.ambient) {
+        let mut line = vec![Math(Formula::IA), EQ];
+        if problem.ambient_info.len() > 1 {
+            for (i, a) in problem.ambient_info.iter().enumerate() {
+                if i > 0 {
+                    line.push(Math(Formula::Plus));
+                }
+                line.push(Color(v::<R>(a.color)));
+            }
+            line.push(EQ);
+        }
+        line.push(Color(v::<R>(i_a)));
+        steps.push(0, line, None);
+        steps.push(
+            0,
+            vec![
+                p(Phrase::Ambient, lang),
+                t(" "),
+                Math(Formula::Ambient),
+                EQ,
+                Color(v::<R>(term)),
+            ],
+            Some(Ref::Eq("4.6")),
+        );
+    }
+    for o in &e.omitted {
+        steps.push(0, vec![t(messages::omission_in(o, lang))], None);
+    }
+    let mut diagrams = Vec::new();
+    for term in &e.lights {
+        light(
+            &mut steps,
+            problem,
+            e.lights_used(problem),
+            term,
+            lang,
+            &mut diagrams,
+            e,
+        );
+    }
+
+    // The total.
+    let mut total = Steps(Vec::new());
+    let zero = <V3<R> as crate::core::Vector<R>>::ZERO;
+    let labels = [Phrase::Ambient, Phrase::Diffuse, Phrase::Specular];
+    let width = labels
+        .iter()
+        .map(|l| l.get(lang).chars().count())
+        .max()
+        .unwrap_or(0)
+        + 2;
+    let values = [
+        (e.shade.ambient.unwrap_or(zero), None),
+        (e.shade.diffuse, Some(Ref::SumEq("4.8"))),
+        (e.shade.specular, Some(Ref::SumEq("4.10"))),
+    ];
+    for (label, (value, eq)) in labels.iter().zip(values) {
+        let word = label.get(lang);
+        let pad = width - word.chars().count();
+        total.push(
+            0,
+            vec![t(word), t(" ".repeat(pad)), Color(v::<R>(value))],
+            eq,
+        );
+    }
+    total.push(
+        0,
+        vec![Math(Formula::I), EQ, Color(v::<R>(e.shade.color))],
+        Some(Ref::Eq("4.16")),
+    );
+    total.push(
+        0,
+        vec![
+            p(Phrase::Colour, lang),
+            Color(v::<R>(e.clamped)),
+            p(Phrase::ClampedTo, lang),
+            Inline::Rgb8(e.rgb8),
+            Inline::Swatch(e.rgb8),
+        ],
+        None,
+    );
+    if let Some(l) = e.shade.literal.filter(|l| *l != e.shade.color) {
+        total.push(
+            0,
+            vec![p(Phrase::LiteralTotal, lang), Vector(v::<R>(l))],
+            None,
+        );
+    }
+    Shading {
+        given: given.0,
+        steps: steps.0,
+        total: total.0,
+        clamped: v::<R>(e.clamped),
+        rgb8: e.rgb8,
+        diagrams,
+    }
+}
+
+fn light<R: Real>(
+    out: &mut Steps,
+    problem: &Problem<R>,
+    set: &LightSet<R>,
+    term: &LightTerm<R>,
+    lang: Lang,
+    diagrams: &mut Vec<Diagram>,
+    e: &Evaluation<R>,
+) {
+    let l = &set.lights[term.index];
+    let info = &problem.light_info[term.index];
+    let a = &term.arrival;
+    let name = messages::light_name_in(problem, info.file_index, lang);
+    let mut head = vec![p(Phrase::Light, lang), t(format!("{name} "))];
+    match l.kind {
+        LightKind::Point { position, .. } => {
+            head.extend([p(Phrase::At, lang), Vector(v::<R>(position))]);
+        }
+        LightKind::Spot { position, cone, .. } => head.extend([
+            p(Phrase::At, lang),
+            Vector(v::<R>(position)),
+            p(Phrase::Axis, lang),
+            Math(Formula::DL),
+            EQ,
+            Vector(v::<R>(cone.axis)),
+            t(", "),
+            Math(Formula::Gamma),
+            EQ,
+            Inline::Degrees(cone.angle_deg.to_f64()),
+            t(", "),
+            Math(Formula::SpotExponent),
+            EQ,
+            Num(cone.exponent.to_f64()),
+        ]),
+        LightKind::Directional { direction } => head.extend([
+            p(Phrase::Direction, lang),
+            Math(Formula::DL),
+            EQ,
+            Vector(v::<R>(direction)),
+        ]),
+    }
+    head.extend([t(", "), Math(Formula::CL), EQ, Color(v::<R>(l.color))]);
+    out.push(0, head, None);
+    if term.status == LightStatus::AtLight {
+        out.push(
+            1,
+            vec![t(messages::light_status_in(term.status, lang))],
+            None,
+        );
+        return;
+    }
+    let status_line = |out: &mut Steps| {
+        out.push(
+            1,
+            vec![
+                p(Phrase::Status, lang),
+                t(messages::light_status_in(term.status, lang)),
+            ],
+            None,
+        );
+    };
+    // Where the light comes from, Eq. 4.1–4.3.
+    match (a.distance, a.falloff) {
+        (Some(d), Some(f)) => {
+            out.push(
+                1,
+                vec![Math(Formula::LFromLight), EQ, Vector(v::<R>(a.l))],
+                Some(Ref::Eq("4.1")),
+            );
+            out.push(1, vec![Math(Formula::Distance), EQ, Num(d.to_f64())], None);
+            let kind = match f {
+                Falloff::None => Phrase::FalloffNone,
+                Falloff::Linear => Phrase::FalloffLinear,
+                Falloff::Quadratic => Phrase::FalloffQuadratic,
+            };
+            out.push(
+                1,
+                vec![
+                    p(Phrase::Falloff, lang),
+                    Math(Formula::F),
+                    EQ,
+                    Num(f64::from(f.exponent())),
+                    t(format!(" ({}): ", kind.get(lang))),
+                    Math(Formula::FalloffFactor),
+                    EQ,
+                    Num(a.falloff_factor.to_f64()),
+                ],
+                Some(Ref::Eq("4.3")),
+            );
+        }
+        _ => out.push(
+            1,
+            vec![
+                Math(Formula::LIsDl),
+                EQ,
+                Vector(v::<R>(a.l)),
+                p(Phrase::NoFalloff, lang),
+            ],
+            Some(Ref::Sec("4.2")),
+        ),
+    }
+    // The spot's cone, Eq. 4.4.
+    if let Some(c) = &a.cone {
+        let verdict = match (c.inside, c.on_edge) {
+            (true, true) => Phrase::OnConeEdge,
+            (true, false) => Phrase::InsideCone,
+            _ => Phrase::OutsideCone,
+        };
+        let gamma = match l.kind {
+            LightKind::Spot { cone, .. } => cone.angle_deg.to_f64(),
+            _ => c.cos_gamma.to_f64().acos().to_degrees(),
+        };
+        out.push(
+            1,
+            vec![
+                Math(Formula::CosPsi),
+                EQ,
+                Num(c.cos_psi.to_f64()),
+                t(", "),
+                Math(Formula::Psi),
+                EQ,
+                Inline::Degrees(c.psi_deg.to_f64()),
+                p(Phrase::Versus, lang),
+                Math(Formula::Gamma),
+                EQ,
+                Inline::Degrees(gamma),
+                t(": "),
+                p(verdict, lang),
+            ],
+            Some(Ref::Eq("4.4")),
+        );
+        out.push(
+            1,
+            vec![
+                p(Phrase::SpotFactor, lang),
+                Math(Formula::SpotFactor),
+                EQ,
+                Num(c.factor.to_f64()),
+            ],
+            Some(Ref::Eq("4.4")),
+        );
+    }
+    // The light arriving at P, Eq. 4.2 or 4.4.
+    let (formula, eq) = match (a.cone.is_some(), a.distance.is_some()) {
+        (true, _) => (Formula::IlSpot, Ref::Eq("4.4")),
+        (false, true) => (Formula::IlPoint, Ref::Eq("4.2")),
+        (false, false) => (Formula::IlDirectional, Ref::Sec("4.2")),
+    };
+    out.push(1, vec![Math(formula), EQ, Color(v::<R>(a.i_l))], Some(eq));
+    if term.status == LightStatus::OutsideCone {
+        status_line(out);
+        return;
+    }
+    // Diffuse reflection, Eq. 4.7–4.8.
+    out.push(
+        1,
+        vec![
+            Math(Formula::NDotL),
+            EQ,
+            Num(term.n_dot_l.to_f64()),
+            t(";  "),
+            Math(Formula::CosTheta),
+            EQ,
+            Num(term.cos_theta.to_f64()),
+        ],
+        Some(Ref::Eq("4.7")),
+    );
+    status_line(out);
+    if let Some(d) = term.diffuse {
+        let mut line = vec![
+            p(Phrase::Diffuse, lang),
+            t(" "),
+            Math(Formula::Diffuse),
+            EQ,
+            Color(v::<R>(d)),
+        ];
+        if let Some(lit) = term.diffuse_literal.filter(|l| *l != d) {
+            line.extend([p(Phrase::Literally, lang), Vector(v::<R>(lit)), t("]")]);
+        }
+        out.push(1, line, Some(Ref::Eq("4.8")));
+    }
+    // Specular reflection, Eq. 4.9–4.15.
+    let s = &term.specular;
+    match s.status {
+        SpecularStatus::NoViewer | SpecularStatus::NoSpecularColor => out.push(
+            1,
+            vec![
+                p(Phrase::Specular, lang),
+                t(": "),
+                t(messages::specular_status(s.status, lang)),
+            ],
+            None,
+        ),
+        _ => {
+            if let Some(r) = s.r {
+                out.push(
+                    1,
+                    vec![Math(Formula::R), EQ, Vector(v::<R>(r))],
+                    Some(Ref::Eq("4.15")),
+                );
+            }
+            if let Some(c) = s.cos_phi {
+                out.push(
+                    1,
+                    vec![Math(Formula::CosPhi), EQ, Num(c.to_f64())],
+                    Some(Ref::Eq("4.10")),
+                );
+            }
+            if let Some(pow) = s.cos_phi_pow {
+                out.push(
+                    1,
+                    vec![Math(Formula::CosPhiPow), EQ, Num(pow.to_f64())],
+                    Some(Ref::Eq("4.10")),
+                );
+            }
+            let mut line = vec![
+                p(Phrase::Specular, lang),
+                t(" "),
+                Math(Formula::Specular),
+                EQ,
+                Color(v::<R>(s.term)),
+            ];
+            match s.literal {
+                Some(lit) if lit != s.term => {
+                    line.extend([p(Phrase::Literally, lang), Vector(v::<R>(lit)), t("]")]);
+                }
+                None if s.cos_phi.is_some() => line.push(p(Phrase::LiterallyUndefined, lang)),
+                _ => {}
+            }
+            out.push(1, line, Some(Ref::Eq("4.10")));
+            if s.status != SpecularStatus::Lit {
+                out.push(2, vec![t(messages::specular_status(s.status, lang))], None);
+            }
+        }
+    }
+    // The plane of incidence, for the diagram.
+    if let Some(nu) = &e.normal {
+        diagrams.push(Diagram {
+            light: name,
+            light_index: info.file_index,
+            directional: matches!(l.kind, LightKind::Directional { .. }),
+            n: v::<R>(nu.used),
+            l: v::<R>(a.l),
+            r: s.r.map(v::<R>),
+            v: e.viewer.map(|vw| v::<R>(vw.v)),
+            status: term.status,
+        });
+    }
+}
+
+/// The text of the pieces in Unicode (the plain-text notation), without swatches.
+pub fn plain(line: &[Inline]) -> String {
+    use super::number::{num, vec3};
+    let mut s = String::new();
+    for piece in line {
+        match piece {
+            Inline::Text(x) => s.push_str(x),
+            Inline::Math(f) => s.push_str(f.unicode()),
+            Inline::Num(x) => s.push_str(&num(*x)),
+            Inline::Vector(x) | Inline::Color(x) => s.push_str(&vec3(*x)),
+            Inline::Degrees(x) => {
+                s.push_str(&num(*x));
+                s.push('°');
+            }
+            Inline::Rgb8([r, g, b]) => s.push_str(&format!("({r}, {g}, {b})")),
+            Inline::Swatch(_) => {}
+        }
+    }
+    s
+}
+
+/// Steps as a tree: each step with the steps below it (deeper ones), for renderers that nest
+/// lists.
+pub struct Node<'a> {
+    pub step: &'a Step,
+    pub children: Vec<Node<'a>>,
+}
+
+/// Nests a flat list of steps by depth.
+pub fn nest(steps: &[Step]) -> Vec<Node<'_>> {
+    fn take<'a>(steps: &'a [Step], i: &mut usize, depth: usize) -> Vec<Node<'a>> {
+        let mut out = Vec::new();
+        while *i < steps.len() && steps[*i].depth >= depth {
+            let step = &steps[*i];
+            *i += 1;
+            let children = take(steps, i, step.depth + 1);
+            out.push(Node { step, children });
+        }
+        out
+    }
+    let mut i = 0;
+    let base = steps.iter().map(|s| s.depth).min().unwrap_or(0);
+    take(steps, &mut i, base)
+}
+
+/// The language tag of a page or document.
+pub fn language_tag(lang: Lang) -> &'static str {
+    pick(lang, "en", "pt-BR")
+}
+
+/// A stretch of a line in one notation: words, or a run of math (formulas and the numbers
+/// they equal, with the spaces between them), or a swatch.
+#[derive(Debug, PartialEq)]
+pub enum Run<'a> {
+    Text(String),
+    Math(Vec<&'a Inline>),
+    Swatch([u8; 3]),
+}
+
+/// Splits a line into runs of words and runs of math, so that LaTeX and Markdown put a whole
+/// formula with its value in one `$…$`. A piece of blank text between two math pieces stays
+/// inside the math.
+pub fn runs(line: &[Inline]) -> Vec<Run<'_>> {
+    let is_math = |x: &Inline| {
+        matches!(
+            x,
+            Inline::Math(_)
+                | Inline::Num(_)
+                | Inline::Vector(_)
+                | Inline::Color(_)
+                | Inline::Degrees(_)
+        )
+    };
+    let mut out: Vec<Run> = Vec::new();
+    for (i, piece) in line.iter().enumerate() {
+        let blank_between_math = matches!(piece, Inline::Text(s) if s.trim().is_empty())
+            && i > 0
+            && is_math(&line[i - 1])
+            && line.get(i + 1).is_some_and(is_math);
+        if is_math(piece) || blank_between_math {
+            match out.last_mut() {
+                Some(Run::Math(m)) => m.push(piece),
+                _ => out.push(Run::Math(vec![piece])),
+            }
+            continue;
+        }
+        let text = match piece {
+            Inline::Swatch(rgb) => {
+                out.push(Run::Swatch(*rgb));
+                continue;
+            }
+            other => plain(std::slice::from_ref(other)),
+        };
+        match out.last_mut() {
+            Some(Run::Text(s)) => s.push_str(&text),
+            _ => out.push(Run::Text(text)),
+        }
+    }
+    out
+}
+
+/// A colour clamped to [0, 1] in 8 bits, for a swatch.
+pub fn to_rgb8(c: [f64; 3]) -> [u8; 3] {
+    c.map(|x| (x.clamp(0.0, 1.0) * 255.0).round() as u8)
+}
+
+/// A number in LaTeX math: "1.5e9" becomes "1.5 \times 10^{9}".
+pub fn latex_number(x: f64) -> String {
+    let s = super::number::num(x);
+    match s.split_once('e') {
+        Some((m, e)) => format!("{m} \\times 10^{{{e}}}"),
+        None => s,
+    }
+}
+
+/// A math run in LaTeX.
+pub fn latex_math(run: &[&Inline]) -> String {
+    let mut s = String::new();
+    let vector = |x: &[f64; 3]| {
+        format!(
+            "({}, {}, {})",
+            latex_number(x[0]),
+            latex_number(x[1]),
+            latex_number(x[2])
+        )
+    };
+    for piece in run {
+        match piece {
+            Inline::Math(f) => s.push_str(f.latex()),
+            Inline::Num(x) => s.push_str(&latex_number(*x)),
+            Inline::Vector(x) | Inline::Color(x) => s.push_str(&vector(x)),
+            Inline::Degrees(x) => {
+                s.push_str(&latex_number(*x));
+                s.push_str("^\\circ");
+            }
+            Inline::Text(t) => s.push_str(if t.trim().is_empty() { " " } else { t }),
+            Inline::Rgb8(_) | Inline::Swatch(_) => {}
+        }
+    }
+    s.trim().to_owned()
+}

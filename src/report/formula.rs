@@ -1,0 +1,262 @@
+//! The formulas and symbols of the explanations, each written once in two notations: Unicode
+//! (text, Markdown's plain parts and HTML) and LaTeX math (LaTeX and Markdown's `$…$`). The
+//! symbols are the chapter's (Eq. 4.1–4.17): vectors in bold in LaTeX, as the chapter prints
+//! them.
+
+/// A formula or symbol of the explanation.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Formula {
+    /// " = ".
+    Equals,
+    /// " + ".
+    Plus,
+    /// " × ".
+    Times,
+    /// "/ ‖·‖": a vector divided by its length.
+    OverNorm,
+    /// The ray's origin O.
+    O,
+    /// The ray's direction D.
+    D,
+    /// t, the ray parameter.
+    T,
+    /// O + tD.
+    OPlusTD,
+    P,
+    N,
+    /// The viewer's position E.
+    E,
+    OA,
+    OD,
+    OS,
+    NS,
+    OR,
+    /// V = (P − E)/‖P − E‖.
+    VFromViewer,
+    /// V = D.
+    VIsD,
+    /// V = −D.
+    VIsMinusD,
+    /// N·V.
+    NDotV,
+    IA,
+    /// O_a I_a.
+    Ambient,
+    CL,
+    /// D_l, a light's direction or a spot's axis.
+    DL,
+    Gamma,
+    /// e, a spot's exponent.
+    SpotExponent,
+    /// L = (P − P_l)/‖P − P_l‖.
+    LFromLight,
+    /// d = ‖P − P_l‖.
+    Distance,
+    /// f, the falloff exponent.
+    F,
+    /// 1/d^f.
+    FalloffFactor,
+    /// L = D_l.
+    LIsDl,
+    /// cos ψ = D_l·L.
+    CosPsi,
+    Psi,
+    /// (cos ψ)^e.
+    SpotFactor,
+    /// I_l = C_l/d^f · (cos ψ)^e.
+    IlSpot,
+    /// I_l = C_l/d^f.
+    IlPoint,
+    /// I_l = C_l.
+    IlDirectional,
+    /// N·L.
+    NDotL,
+    /// cos θ = −N·L.
+    CosTheta,
+    /// O_d I_l cos θ.
+    Diffuse,
+    /// R = L − 2(N·L)N.
+    R,
+    /// cos φ = −R·V.
+    CosPhi,
+    /// (cos φ)^n_s.
+    CosPhiPow,
+    /// O_s I_l (cos φ)^n_s.
+    Specular,
+    /// I, the colour of Eq. 4.16.
+    I,
+}
+
+impl Formula {
+    /// The formula in Unicode, as the text report prints it.
+    pub fn unicode(self) -> &'static str {
+        use Formula::*;
+        match self {
+            Equals => " = ",
+            Plus => " + ",
+            Times => " × ",
+            OverNorm => "/ ‖·‖",
+            O => "O",
+            D => "D",
+            T => "t",
+            OPlusTD => "O + tD",
+            P => "P",
+            N => "N",
+            E => "E",
+            OA => "O_a",
+            OD => "O_d",
+            OS => "O_s",
+            NS => "n_s",
+            OR => "O_r",
+            VFromViewer => "V = (P − E)/‖P − E‖",
+            VIsD => "V = D",
+            VIsMinusD => "V = −D",
+            NDotV => "N·V",
+            IA => "I_a",
+            Ambient => "O_a I_a",
+            CL => "C_l",
+            DL => "D_l",
+            Gamma => "γ",
+            SpotExponent => "e",
+            LFromLight => "L = (P − P_l)/‖P − P_l‖",
+            Distance => "d = ‖P − P_l‖",
+            F => "f",
+            FalloffFactor => "1/d^f",
+            LIsDl => "L = D_l",
+            CosPsi => "cos ψ = D_l·L",
+            Psi => "ψ",
+            SpotFactor => "(cos ψ)^e",
+            IlSpot => "I_l = C_l/d^f · (cos ψ)^e",
+            IlPoint => "I_l = C_l/d^f",
+            IlDirectional => "I_l = C_l",
+            NDotL => "N·L",
+            CosTheta => "cos θ = −N·L",
+            Diffuse => "O_d I_l cos θ",
+            R => "R = L − 2(N·L)N",
+            CosPhi => "cos φ = −R·V",
+            CosPhiPow => "(cos φ)^n_s",
+            Specular => "O_s I_l (cos φ)^n_s",
+            I => "I",
+        }
+    }
+
+    /// The formula in LaTeX math mode.
+    pub fn latex(self) -> &'static str {
+        use Formula::*;
+        match self {
+            Equals => " = ",
+            Plus => " + ",
+            Times => " \\times ",
+            OverNorm => "/\\lVert\\cdot\\rVert",
+            O => "O",
+            D => "\\mathbf{D}",
+            T => "t",
+            OPlusTD => "O + t\\mathbf{D}",
+            P => "P",
+            N => "\\mathbf{N}",
+            E => "E",
+            OA => "O_a",
+            OD => "O_d",
+            OS => "O_s",
+            NS => "n_s",
+            OR => "O_r",
+            VFromViewer => "\\mathbf{V} = \\frac{P - E}{\\lVert P - E\\rVert}",
+            VIsD => "\\mathbf{V} = \\mathbf{D}",
+            VIsMinusD => "\\mathbf{V} = -\\mathbf{D}",
+            NDotV => "\\mathbf{N}\\cdot\\mathbf{V}",
+            IA => "I_a",
+            Ambient => "O_a I_a",
+            CL => "C_l",
+            DL => "\\mathbf{D}_l",
+            Gamma => "\\gamma",
+            SpotExponent => "e",
+            LFromLight => "\\mathbf{L} = \\frac{P - P_l}{\\lVert P - P_l\\rVert}",
+            Distance => "d = \\lVert P - P_l\\rVert",
+            F => "f",
+            FalloffFactor => "1/d^f",
+            LIsDl => "\\mathbf{L} = \\mathbf{D}_l",
+            CosPsi => "\\cos\\psi = \\mathbf{D}_l\\cdot\\mathbf{L}",
+            Psi => "\\psi",
+            SpotFactor => "(\\cos\\psi)^e",
+            IlSpot => "I_l = \\frac{C_l}{d^f}(\\cos\\psi)^e",
+            IlPoint => "I_l = \\frac{C_l}{d^f}",
+            IlDirectional => "I_l = C_l",
+            NDotL => "\\mathbf{N}\\cdot\\mathbf{L}",
+            CosTheta => "\\cos\\theta = -\\mathbf{N}\\cdot\\mathbf{L}",
+            Diffuse => "O_d I_l \\cos\\theta",
+            R => "\\mathbf{R} = \\mathbf{L} - 2(\\mathbf{N}\\cdot\\mathbf{L})\\mathbf{N}",
+            CosPhi => "\\cos\\phi = -\\mathbf{R}\\cdot\\mathbf{V}",
+            CosPhiPow => "(\\cos\\phi)^{n_s}",
+            Specular => "O_s I_l (\\cos\\phi)^{n_s}",
+            I => "I",
+        }
+    }
+}
+
+/// Unicode math as HTML: `X_ab` becomes X<sub>ab</sub> and `x^e` (or `x^n_s`) a superscript;
+/// everything else is escaped.
+pub fn unicode_to_html(s: &str) -> String {
+    let mut out = String::new();
+    let chars: Vec<char> = s.chars().collect();
+    let mut i = 0;
+    let word = |i: &mut usize| {
+        let start = *i;
+        while *i < chars.len() && chars[*i].is_ascii_alphanumeric() {
+            *i += 1;
+        }
+        chars[start..*i].iter().collect::<String>()
+    };
+    while i < chars.len() {
+        match chars[i] {
+            '_' if i + 1 < chars.len() && chars[i + 1].is_ascii_alphanumeric() => {
+                i += 1;
+                let w = word(&mut i);
+                out.push_str(&format!("<sub>{w}</sub>"));
+            }
+            '^' if i + 1 < chars.len() && chars[i + 1].is_ascii_alphanumeric() => {
+                i += 1;
+                let mut w = word(&mut i);
+                if i + 1 < chars.len() && chars[i] == '_' && chars[i + 1].is_ascii_alphanumeric() {
+                    i += 1;
+                    w = format!("{w}<sub>{}</sub>", word(&mut i));
+                }
+                out.push_str(&format!("<sup>{w}</sup>"));
+            }
+            c => {
+                push_html_escaped(&mut out, c);
+                i += 1;
+            }
+        }
+    }
+    out
+}
+
+/// Appends one character escaped for HTML text and attribute values.
+pub fn push_html_escaped(out: &mut String, c: char) {
+    match c {
+        '&' => out.push_str("&amp;"),
+        '<' => out.push_str("&lt;"),
+        '>' => out.push_str("&gt;"),
+        '"' => out.push_str("&quot;"),
+        '\'' => out.push_str("&#39;"),
+        c => out.push(c),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn subscripts_and_superscripts_become_html_tags() {
+        assert_eq!(
+            unicode_to_html("I_l = C_l/d^f"),
+            "I<sub>l</sub> = C<sub>l</sub>/d<sup>f</sup>"
+        );
+        assert_eq!(
+            unicode_to_html("(cos φ)^n_s"),
+            "(cos φ)<sup>n<sub>s</sub></sup>"
+        );
+        assert_eq!(unicode_to_html("a < b & c"), "a &lt; b &amp; c");
+    }
+}

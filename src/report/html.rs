@@ -1,0 +1,234 @@
+//! The HTML explanation (`phong solve --format html`): one self-contained page (inline CSS and
+//! SVG, no scripts, no fonts or anything else fetched), with colour swatches beside every
+//! colour, the final colour as a large swatch, and a diagram of the plane of incidence for each
+//! light ([`super::diagram`]). It lays out an [`Explanation`]; `--fragment` gives the
+//! `<article>`s only, for embedding in a page that brings the same stylesheet ([`STYLE`]).
+
+use std::fmt::Write;
+
+use super::diagram;
+use super::explain::{language_tag, nest, to_rgb8, Explanation, Inline, Node, Shading, Step};
+use super::formula::{push_html_escaped, unicode_to_html};
+use super::lang::Lang;
+use super::messages::Phrase;
+use super::number::{num, vec3};
+
+/// The page's stylesheet.
+pub const STYLE: &str = "\
+body{font-family:system-ui,-apple-system,'Segoe UI',Roboto,'DejaVu Sans',sans-serif;max-width:60rem;margin:1.5rem auto;padding:0 1rem;line-height:1.45;color:#1a1a1a;background:#fff}
+h1{font-size:1.5rem;margin-bottom:.2rem}h2{font-size:1.2rem;margin-top:1.6rem;border-bottom:1px solid #ddd}h3{font-size:1rem;margin:.9rem 0 .3rem}
+.source{color:#666;margin-top:0}
+blockquote{margin:.5rem 0;padding:.4rem .8rem;border-left:4px solid #bbb;background:#f7f7f7}
+.findings li{list-style:none;margin-left:-1.2rem}.findings li::before{content:'! ';font-weight:bold;color:#b36b00}
+ol,ul{padding-left:1.6rem}li{margin:.1rem 0}
+.eq{float:right;color:#777;font-size:.85em;margin-left:1rem}
+.m{font-family:'DejaVu Serif',Georgia,serif;font-style:italic;white-space:nowrap}
+.sw{display:inline-block;width:.9em;height:.9em;border:1px solid #555;vertical-align:-.1em;margin-left:.25em}
+.result{display:flex;align-items:center;gap:1rem;margin:.6rem 0;padding:.5rem;background:#fafafa;border:1px solid #e3e3e3}
+.big{width:4rem;height:4rem;border:1px solid #333;flex:none}
+.reading{color:#444;font-style:italic}
+.diagrams{display:flex;flex-wrap:wrap;gap:1rem}
+figure.diagram{margin:.4rem 0;max-width:340px}figcaption{font-size:.8em;color:#555}
+svg text{font-family:'DejaVu Sans',sans-serif;font-size:14px}svg text.sym{font-weight:bold;font-style:italic}svg text.note{font-size:11px;fill:#777}svg text.mark{font-size:12px}
+";
+
+fn esc(s: &str) -> String {
+    let mut out = String::with_capacity(s.len());
+    for c in s.chars() {
+        push_html_escaped(&mut out, c);
+    }
+    out
+}
+
+fn swatch(rgb: [u8; 3], class: &str, title: &str) -> String {
+    let [r, g, b] = rgb;
+    format!(
+        "<span class=\"{class}\" style=\"background:rgb({r},{g},{b})\" title=\"{}\"></span>",
+        esc(title)
+    )
+}
+
+/// A line's pieces as HTML.
+fn line(pieces: &[Inline]) -> String {
+    let mut s = String::new();
+    for piece in pieces {
+        match piece {
+            Inline::Text(t) => s.push_str(&esc(t)),
+            Inline::Math(f) => {
+                let _ = write!(
+                    s,
+                    "<span class=\"m\">{}</span>",
+                    unicode_to_html(f.unicode())
+                );
+            }
+            Inline::Num(x) => s.push_str(&num(*x)),
+            Inline::Vector(x) => s.push_str(&vec3(*x)),
+            Inline::Color(x) => {
+                s.push_str(&vec3(*x));
+                s.push_str(&swatch(to_rgb8(*x), "sw", &vec3(*x)));
+            }
+            Inline::Degrees(x) => {
+                s.push_str(&num(*x));
+                s.push('°');
+            }
+            Inline::Rgb8([r, g, b]) => {
+                let _ = write!(s, "({r}, {g}, {b})");
+            }
+            Inline::Swatch(_) => {}
+        }
+    }
+    s
+}
+
+fn step(step: &Step, lang: Lang) -> String {
+    let eq = step.eq.map_or(String::new(), |e| {
+        format!("<span class=\"eq\">{}</span>", esc(&e.text(lang)))
+    });
+    format!("{eq}{}", line(&step.line))
+}
+
+fn list(out: &mut String, nodes: &[Node], numbered: bool, lang: Lang) {
+    if nodes.is_empty() {
+        return;
+    }
+    let tag = if numbered { "ol" } else { "ul" };
+    let _ = writeln!(out, "<{tag}>");
+    for node in nodes {
+        let _ = write!(out, "<li>{}", step(node.step, lang));
+        if !node.children.is_empty() {
+            out.push('\n');
+            list(out, &node.children, numbered, lang);
+        }
+        out.push_str("</li>\n");
+    }
+    let _ = writeln!(out, "</{tag}>");
+}
+
+fn shading(out: &mut String, sh: &Shading, lang: Lang, id: &str) {
+    // The result first: the colour, large.
+    let total = sh
+        .total
+        .iter()
+        .find(|s| s.line.first() == Some(&Inline::Math(super::formula::Formula::I)));
+    let _ = writeln!(
+        out,
+        "<div class=\"result\">{}<div>{}<br>{}</div></div>",
+        swatch(sh.rgb8, "big", Phrase::Swatch.get(lang)),
+        total.map_or(String::new(), |s| line(&s.line)),
+        sh.total
+            .iter()
+            .find(|s| s.line.iter().any(|p| matches!(p, Inline::Swatch(_))))
+            .map_or(String::new(), |s| line(&s.line)),
+    );
+    if !sh.diagrams.is_empty() {
+        out.push_str("<div class=\"diagrams\">\n");
+        for d in &sh.diagrams {
+            let did = format!("{id}-light{}", d.light_index);
+            out.push_str(&diagram::svg(d, &did, lang));
+        }
+        out.push_str("</div>\n");
+    }
+    for (heading, steps, numbered) in [
+        (Phrase::Given, &sh.given, false),
+        (Phrase::Steps, &sh.steps, true),
+        (Phrase::Total, &sh.total, false),
+    ] {
+        if !steps.is_empty() {
+            let _ = writeln!(out, "<h3>{}</h3>", heading.get(lang));
+            list(out, &nest(steps), numbered, lang);
+        }
+    }
+}
+
+/// The `<article>` of one explanation; `index` makes its ids unique in the page.
+pub fn write_article(x: &Explanation, index: usize) -> String {
+    let lang = x.lang;
+    let mut out = String::new();
+    let _ = writeln!(out, "<article class=\"problem\" id=\"problem-{index}\">");
+    let _ = writeln!(
+        out,
+        "<h1>{}</h1>\n<p class=\"source\">{} · {}</p>",
+        esc(&x.title),
+        esc(&x.file),
+        x.precision
+    );
+    if let Some(q) = &x.question {
+        let _ = writeln!(
+            out,
+            "<blockquote class=\"question\">{}</blockquote>",
+            esc(q)
+        );
+    }
+    if !x.findings.is_empty() {
+        let _ = writeln!(
+            out,
+            "<section class=\"findings\">\n<h2>{}</h2>\n<ul>",
+            Phrase::Findings.get(lang)
+        );
+        for f in &x.findings {
+            let _ = writeln!(out, "<li>{}</li>", esc(f));
+        }
+        out.push_str("</ul>\n</section>\n");
+    }
+    if let Some(ray) = &x.ray {
+        let _ = writeln!(
+            out,
+            "<section class=\"ray\">\n<h2>{}</h2>",
+            Phrase::Ray.get(lang)
+        );
+        list(&mut out, &nest(ray), false, lang);
+        out.push_str("</section>\n");
+    }
+    for (i, part) in x.parts.iter().enumerate() {
+        let id = format!("diagram-{index}-{i}");
+        let _ = writeln!(
+            out,
+            "<section class=\"part\" id=\"part-{index}-{i}\">\n<h2>{}</h2>",
+            esc(&part.heading)
+        );
+        if let Some(e) = &part.explanation {
+            let _ = writeln!(out, "<p class=\"reading\">{}</p>", esc(e));
+        }
+        if let Some(ray) = &part.ray {
+            list(&mut out, &nest(ray), false, lang);
+        }
+        match &part.shading {
+            Some(sh) => shading(&mut out, sh, lang, &id),
+            None => {
+                let _ = writeln!(out, "<p>{}</p>", esc(Phrase::NothingToShade.get(lang)));
+            }
+        }
+        out.push_str("</section>\n");
+    }
+    out.push_str("</article>\n");
+    out
+}
+
+/// How to write the HTML.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct HtmlOptions {
+    /// The `<article>`s only, without `<html>`, `<head>` and the stylesheet.
+    pub fragment: bool,
+}
+
+/// The HTML of several explanations: one page, or the articles only.
+pub fn write_all(xs: &[Explanation], options: HtmlOptions, lang: Lang) -> String {
+    let articles: String = xs
+        .iter()
+        .enumerate()
+        .map(|(i, x)| write_article(x, i))
+        .collect();
+    if options.fragment {
+        return articles;
+    }
+    let title = match xs {
+        [one] => esc(&one.title),
+        _ => "phong".to_owned(),
+    };
+    format!(
+        "<!DOCTYPE html>\n<html lang=\"{}\">\n<head>\n<meta charset=\"utf-8\">\n\
+         <meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n\
+         <title>{title}</title>\n<style>\n{STYLE}</style>\n</head>\n<body>\n{articles}</body>\n</html>\n",
+        language_tag(lang)
+    )
+}

@@ -1,0 +1,176 @@
+//! The HTML explanation in a real browser: Debian's `chromium`, headless, loads the page from a
+//! file (no network), and
+//! - the DOM after rendering holds each light's diagram with N, L, R, V, the light and the
+//!   viewer, labelled in the page's language;
+//! - a screenshot is not blank: it shows the final colour's swatch and the light's marker in
+//!   their exact colours.
+//!
+//! `.ci/run` installs chromium. Under `CI=true` a missing chromium is a failure; elsewhere the
+//! test says it was skipped and why.
+
+mod support;
+
+use std::path::{Path, PathBuf};
+use std::time::Duration;
+
+use assert_cmd::Command;
+
+const INSTALL: &str = "apt-get install -y --no-install-recommends chromium";
+
+/// Writes `phong solve FILE --format html --lang LANG` into `dir` and returns the page's path.
+fn page(dir: &Path, exercise: &str, lang: &str) -> PathBuf {
+    let path = dir.join(format!("{exercise}-{lang}.html"));
+    let run = Command::cargo_bin("phong")
+        .unwrap()
+        .args(["solve", &format!("exercises/{exercise}.json")])
+        .args(["--format", "html", "--lang", lang, "-o"])
+        .arg(&path)
+        .output()
+        .unwrap();
+    assert!(
+        run.status.success(),
+        "{}",
+        String::from_utf8_lossy(&run.stderr)
+    );
+    path
+}
+
+/// Runs headless chromium with a fresh profile and no network services.
+fn chromium(browser: &Path, profile: &Path, args: &[&str], url: &Path) -> std::process::Output {
+    let out = Command::new(browser)
+        .args([
+            "--headless",
+            "--no-sandbox",
+            "--disable-gpu",
+            "--disable-quic",
+            "--no-first-run",
+            "--disable-background-networking",
+            "--disable-component-update",
+            "--disable-sync",
+            "--hide-scrollbars",
+        ])
+        .arg(format!("--user-data-dir={}", profile.display()))
+        .args(args)
+        .arg(format!("file://{}", url.display()))
+        .timeout(Duration::from_secs(120))
+        .output()
+        .expect("chromium runs");
+    assert!(
+        out.status.success(),
+        "chromium failed: {}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    out
+}
+
+#[test]
+fn the_rendered_page_holds_the_diagram_of_each_light_with_its_labels() {
+    let Some(browser) = support::require("chromium", INSTALL) else {
+        return;
+    };
+    let dir = tempfile::tempdir().unwrap();
+    let profile = tempfile::tempdir().unwrap();
+    for (exercise, lang, light, viewer) in [
+        ("4.2", "en", "light", "viewer"),
+        ("several-lights", "pt", "fonte de luz", "observador"),
+    ] {
+        let html = page(dir.path(), exercise, lang);
+        let dom = chromium(&browser, profile.path(), &["--dump-dom"], &html);
+        let dom = String::from_utf8(dom.stdout).unwrap();
+        assert!(
+            dom.contains("<svg id=\"diagram-0-0-light"),
+            "{exercise}: no diagram"
+        );
+        // The first light of the solution as written.
+        let first = if exercise == "4.2" { 0 } else { 1 };
+        let id = format!("diagram-0-0-light{first}");
+        for part in ["N", "L", "R", "V", "light", "viewer", "surface"] {
+            assert!(
+                dom.contains(&format!("id=\"{id}-{part}\"")),
+                "{exercise}: no element {id}-{part} in the rendered DOM"
+            );
+        }
+        for (part, text) in [
+            ("N-label", "N"),
+            ("L-label", "L"),
+            ("R-label", "R"),
+            ("V-label", "V"),
+            ("light-label", light),
+            ("viewer-label", viewer),
+        ] {
+            let tag = format!("id=\"{id}-{part}\"");
+            let at = dom
+                .find(&tag)
+                .unwrap_or_else(|| panic!("{exercise}: no {tag}"));
+            let rest = &dom[at..];
+            let content = &rest[rest.find('>').unwrap() + 1..rest.find("</text>").unwrap()];
+            assert_eq!(content, text, "{exercise}: label {part}");
+        }
+    }
+    // several-lights: one diagram per light with a direction at the point (lights[1]–[4]).
+    let html = page(dir.path(), "several-lights", "en");
+    let dom = String::from_utf8(chromium(&browser, profile.path(), &["--dump-dom"], &html).stdout)
+        .unwrap();
+    for light in 1..=4 {
+        assert!(dom.contains(&format!("<svg id=\"diagram-0-0-light{light}\"")));
+    }
+}
+
+/// The number of pixels of exactly this colour in an RGB or RGBA PNG.
+fn pixels_of(png_path: &Path, rgb: [u8; 3]) -> (usize, usize) {
+    let decoder = png::Decoder::new(std::io::BufReader::new(
+        std::fs::File::open(png_path).unwrap(),
+    ));
+    let mut reader = decoder.read_info().unwrap();
+    let mut buf = vec![0; reader.output_buffer_size().unwrap()];
+    let info = reader.next_frame(&mut buf).unwrap();
+    let channels = match info.color_type {
+        png::ColorType::Rgb => 3,
+        png::ColorType::Rgba => 4,
+        other => panic!("unexpected PNG colour type {other:?}"),
+    };
+    let data = &buf[..info.buffer_size()];
+    let total = data.len() / channels;
+    let hits = data
+        .chunks_exact(channels)
+        .filter(|p| p[..3] == rgb)
+        .count();
+    (hits, total)
+}
+
+#[test]
+fn a_screenshot_shows_the_colour_swatch_and_the_diagram() {
+    let Some(browser) = support::require("chromium", INSTALL) else {
+        return;
+    };
+    let dir = tempfile::tempdir().unwrap();
+    let profile = tempfile::tempdir().unwrap();
+    let shot = |exercise: &str| {
+        let html = page(dir.path(), exercise, "en");
+        let png = dir.path().join(format!("{exercise}.png"));
+        chromium(
+            &browser,
+            profile.path(),
+            &[
+                "--window-size=900,1100",
+                &format!("--screenshot={}", png.display()),
+            ],
+            &html,
+        );
+        png
+    };
+    // 4.1: the colour (0.5, 0.7, 0.3) is (128, 179, 77) in 8 bits (0.7·255 = 178.5 rounds up
+    // in f64); the large swatch is 4rem square, at least 60×60 pixels.
+    let png = shot("4.1");
+    let (white, total) = pixels_of(&png, [255, 255, 255]);
+    assert!(white < total * 97 / 100, "the screenshot is blank");
+    let (swatch, _) = pixels_of(&png, [128, 179, 77]);
+    assert!(
+        swatch >= 60 * 60,
+        "only {swatch} pixels of the colour swatch"
+    );
+    // 4.2: the diagram is drawn: the light's marker is filled with #ffd633.
+    let png = shot("4.2");
+    let (marker, _) = pixels_of(&png, [0xff, 0xd6, 0x33]);
+    assert!(marker >= 100, "only {marker} pixels of the light's marker");
+}
