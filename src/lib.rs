@@ -7,10 +7,12 @@
 //! - [`solve`]: turns a validated problem into a solution with every intermediate.
 //! - [`report`]: explains a solution (text, Markdown, LaTeX, HTML; English or Portuguese) or
 //!   writes it as stable JSON.
+//! - [`export`]: the scene for other renderers (POV-Ray), to cross-check the tracer.
 //! - [`cli`]: the `phong` command line.
 
 pub mod cli;
 pub mod core;
+pub mod export;
 pub mod geometry;
 pub mod problem;
 pub mod report;
