@@ -354,7 +354,9 @@ fn apply_settings<R: Real>(
 
 fn render_scene<R: Real>(args: &RenderArgs) -> Result<u8, ProblemError> {
     let path = &args.scene;
+    let started = std::time::Instant::now();
     let (_, mut problem) = problem::load::<R>(path)?;
+    let loaded = started.elapsed();
     apply_settings(args, &mut problem)?;
     let Some(camera) = problem.camera else {
         return Err(crate::problem::Invalid::new(
@@ -400,8 +402,9 @@ fn render_scene<R: Real>(args: &RenderArgs) -> Result<u8, ProblemError> {
             fix: "give fewer --threads".into(),
         })?
     };
-    let started = std::time::Instant::now();
+    let building = std::time::Instant::now();
     let scene = pool.install(|| crate::tracer::Scene::new(&problem));
+    let built = building.elapsed();
     let file = path.display().to_string();
 
     if let Some((x, y)) = args.explain_pixel {
@@ -445,25 +448,31 @@ fn render_scene<R: Real>(args: &RenderArgs) -> Result<u8, ProblemError> {
 
     let out = args.output.as_deref().expect("clap requires --output here");
     let bar = progress_bar(u64::from(camera.height));
+    let tracing = std::time::Instant::now();
     let (image, counts) = pool.install(|| {
         crate::tracer::render(&problem, &camera, &scene, &|| bar.inc(1))
     });
     bar.finish_and_clear();
-    let elapsed = started.elapsed();
+    let traced = tracing.elapsed();
     let bytes = crate::tracer::output::encode(&image, image_format.expect("known format"));
     if let Err(e) = write_atomically(out, &bytes) {
         eprintln!("error: cannot write {}: {e}", out.display());
         return Ok(EXIT_BAD_INPUT);
     }
     if args.stats {
-        let secs = elapsed.as_secs_f64();
+        let secs = traced.as_secs_f64();
         eprintln!(
-            "{}×{}, {} sample(s)/pixel, {}: {} rays ({} primary, {} reflection, {} shadow) in \
-             {:.3} s, {:.2} Mrays/s",
+            "{}×{}, {} sample(s)/pixel, {}, {} thread(s): read and validated in {:.3} s, BVH of \
+             {} surfaces built in {:.3} s, traced {} rays ({} primary, {} reflection, {} shadow) \
+             in {:.3} s: {:.2} Mrays/s",
             image.width,
             image.height,
             problem.render.samples,
             R::NAME,
+            pool.current_num_threads(),
+            loaded.as_secs_f64(),
+            problem.surfaces().len(),
+            built.as_secs_f64(),
             counts.total(),
             counts.primary,
             counts.reflection,

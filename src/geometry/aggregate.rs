@@ -67,35 +67,36 @@ impl<R: Real> Aggregate<R> {
 
     /// The nearest hit with 0 < t < `t_max`.
     pub fn nearest(&self, ray: &Ray<R>, t_max: R) -> Option<AggregateHit<R>> {
-        let mut best: Option<AggregateHit<R>> = None;
+        let mut best: Option<(usize, R)> = None;
         let mut t_max = t_max;
         for &i in &self.unbounded {
-            if let Some(hit) = self.shapes[i as usize].hit(ray, t_max) {
-                t_max = hit.t;
-                best = Some(AggregateHit {
-                    index: i as usize,
-                    hit,
-                });
+            if let Some(t) = self.shapes[i as usize].hit_t(ray, t_max) {
+                t_max = t;
+                best = Some((i as usize, t));
             }
         }
         // The BVH shrinks its t_max to each hit it accepts, so every accepted hit is nearer.
-        self.bvh.nearest(ray, t_max, |k, t_max| {
-            let index = self.bounded[k as usize] as usize;
-            let hit = self.shapes[index].hit(ray, t_max)?;
-            best = Some(AggregateHit { index, hit });
-            Some(hit.t)
-        });
-        best
+        if let Some(h) = self.bvh.nearest(ray, t_max, |k, t_max| {
+            self.shapes[self.bounded[k as usize] as usize].hit_t(ray, t_max)
+        }) {
+            best = Some((self.bounded[h.prim as usize] as usize, h.t));
+        }
+        // Only the nearest hit gets its point, error bound and normal.
+        let (index, t) = best?;
+        Some(AggregateHit {
+            index,
+            hit: self.shapes[index].hit_at(ray, t)?,
+        })
     }
 
     /// Whether any surface meets the ray with 0 < t < `t_max`.
     pub fn occluded(&self, ray: &Ray<R>, t_max: R) -> bool {
         self.unbounded
             .iter()
-            .any(|&i| self.shapes[i as usize].hit(ray, t_max).is_some())
+            .any(|&i| self.shapes[i as usize].hit_t(ray, t_max).is_some())
             || self.bvh.any(ray, t_max, |k, t_max| {
                 self.shapes[self.bounded[k as usize] as usize]
-                    .hit(ray, t_max)
+                    .hit_t(ray, t_max)
                     .is_some()
             })
     }

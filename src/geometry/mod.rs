@@ -76,17 +76,42 @@ impl<R: Real> Shape<R> {
         }
     }
 
+    /// The nearest t with 0 < t < `t_max` where the ray meets the surface: the cheap test the
+    /// BVH asks of every candidate; [`Shape::hit_at`] then completes the winner.
+    #[inline]
+    pub fn hit_t(&self, ray: &Ray<R>, t_max: R) -> Option<R> {
+        let inside = |t: &R| *t > R::ZERO && *t < t_max;
+        match self {
+            Shape::Plane(pl) => pl.intersect_line(ray).filter(inside),
+            Shape::Sphere(s) => s.intersect_line(ray).t.into_iter().flatten().find(inside),
+            Shape::Triangle(tri) => tri.intersect(ray, t_max).map(|h| h.t),
+        }
+    }
+
     /// The nearest hit with 0 < t < `t_max`, its point computed the accurate way for the shape
     /// and bounded in error (for [`offset_origin`]). This is the one intersection routine of the
     /// tracer and of the solver's ray problems.
     #[inline]
     pub fn hit(&self, ray: &Ray<R>, t_max: R) -> Option<SurfaceHit<R>> {
         match self {
+            Shape::Triangle(tri) => {
+                let h = tri.intersect(ray, t_max)?;
+                Some(SurfaceHit {
+                    t: h.t,
+                    p: h.p,
+                    p_error: h.p_error,
+                    normal: tri.normal()?,
+                })
+            }
+            _ => self.hit_at(ray, self.hit_t(ray, t_max)?),
+        }
+    }
+
+    /// The hit at a t found by [`Shape::hit_t`].
+    #[inline]
+    pub fn hit_at(&self, ray: &Ray<R>, t: R) -> Option<SurfaceHit<R>> {
+        match self {
             Shape::Plane(pl) => {
-                let t = pl.intersect_line(ray)?;
-                if !(t > R::ZERO && t < t_max) {
-                    return None;
-                }
                 // t carries the rounding of N·(Q − O)/(N·D); O + tD adds two more.
                 let p = ray.at(t);
                 let scale = ray.origin.abs() + pl.point.abs() + (ray.direction * t).abs();
@@ -98,12 +123,6 @@ impl<R: Real> Shape<R> {
                 })
             }
             Shape::Sphere(s) => {
-                let t = s
-                    .intersect_line(ray)
-                    .t
-                    .into_iter()
-                    .flatten()
-                    .find(|&t| t > R::ZERO && t < t_max)?;
                 // Re-projected onto the sphere: C + r·(P − C)/‖P − C‖, a few roundings of |C|
                 // and |P| (pbrt re-projects in object space; here C is not at the origin).
                 let p = s.project(ray.at(t));
@@ -114,15 +133,8 @@ impl<R: Real> Shape<R> {
                     normal: s.normal_at(p)?,
                 })
             }
-            Shape::Triangle(tri) => {
-                let h = tri.intersect(ray, t_max)?;
-                Some(SurfaceHit {
-                    t: h.t,
-                    p: h.p,
-                    p_error: h.p_error,
-                    normal: tri.normal()?,
-                })
-            }
+            // The same t again, with the barycentric point and its error bound.
+            Shape::Triangle(_) => self.hit(ray, t.next_up()),
         }
     }
 

@@ -287,10 +287,44 @@ fn surfaces<R: Real>(
     needs: &Needs,
 ) -> Result<Vec<Surface<R>>, Invalid> {
     let mut out = Vec::with_capacity(file.surfaces.len());
+    let mut materials = MaterialCache::default();
     for (i, s) in file.surfaces.iter().enumerate() {
-        surface::<R>(file, base, s, i, needs, &mut out)?;
+        surface::<R>(file, base, s, i, needs, &mut materials, &mut out)?;
     }
     Ok(out)
+}
+
+/// Named materials validated once, however many surfaces use them (a scene of 100,000
+/// spheres names a handful of materials).
+struct MaterialCache<R: Real> {
+    named: std::collections::BTreeMap<String, (String, NamedMaterial<R>)>,
+}
+
+impl<R: Real> Default for MaterialCache<R> {
+    fn default() -> Self {
+        MaterialCache {
+            named: Default::default(),
+        }
+    }
+}
+
+impl<R: Real> MaterialCache<R> {
+    fn resolve(
+        &mut self,
+        file: &ProblemFile,
+        r: &MaterialRef,
+        field: &str,
+    ) -> Result<(String, NamedMaterial<R>), Invalid> {
+        if let MaterialRef::Name(name) = r {
+            if let Some(hit) = self.named.get(name) {
+                return Ok(hit.clone());
+            }
+            let resolved = resolve_material::<R>(file, r, field)?;
+            self.named.insert(name.clone(), resolved.clone());
+            return Ok(resolved);
+        }
+        resolve_material::<R>(file, r, field)
+    }
 }
 
 /// "lights[1] (point)".
@@ -506,6 +540,7 @@ fn surface<R: Real>(
     s: &SurfaceSpec,
     i: usize,
     needs: &Needs,
+    materials: &mut MaterialCache<R>,
     out: &mut Vec<Surface<R>>,
 ) -> Result<(), Invalid> {
     let base = format!("surfaces[{i}]");
@@ -572,7 +607,7 @@ fn surface<R: Real>(
         SurfaceType::Mesh => {
             let name = required(s.file.as_ref(), &base, "file", what)?;
             let mref = required(s.material.as_ref(), &base, "material", what)?;
-            let (mat_field, material) = resolve_material::<R>(file, mref, &f("material"))?;
+            let (mat_field, material) = materials.resolve(file, mref, &f("material"))?;
             needs.check(&material.spec, &mat_field)?;
             let path = match folder {
                 Some(dir) => dir.join(name),
@@ -594,7 +629,7 @@ fn surface<R: Real>(
         }
     };
     let mref = required(s.material.as_ref(), &base, "material", what)?;
-    let (mat_field, material) = resolve_material::<R>(file, mref, &f("material"))?;
+    let (mat_field, material) = materials.resolve(file, mref, &f("material"))?;
     needs.check(&material.spec, &mat_field)?;
     out.push(Surface {
         shape,
