@@ -1,12 +1,13 @@
 //! phong: solve, check and explain the illumination exercises of Chapter 4 ("Modelos de
-//! Iluminação") and, later, render their scenes with the same shading core.
+//! Iluminação") and render their scenes with the same shading core.
 //!
 //! - [`core`]: the Phong model itself, pure, generic over f32/f64.
-//! - [`geometry`]: rays, planes, spheres and their intersections.
+//! - [`geometry`]: rays, planes, spheres, triangles, their intersections and the BVH.
 //! - [`problem`]: the JSON problem format, its parsing and validation.
 //! - [`solve`]: turns a validated problem into a solution with every intermediate.
 //! - [`report`]: explains a solution (text, Markdown, LaTeX, HTML; English or Portuguese) or
 //!   writes it as stable JSON.
+//! - [`tracer`]: the Whitted ray tracer, shading with the same core.
 //! - [`export`]: the scene for other renderers (POV-Ray), to cross-check the tracer.
 //! - [`cli`]: the `phong` command line.
 
