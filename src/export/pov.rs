@@ -23,7 +23,9 @@
 //! - **Lights**: a point light is a `light_source`; a spot light adds `spotlight`,
 //!   `point_at` P + D_l, `radius` = `falloff` = γ (a hard cone, lit on its edge) and
 //!   `tightness` e (POV-Ray multiplies by cos(ψ)^tightness); a directional light is a
-//!   `parallel` light placed far beyond the scene. POV-Ray's only distance falloff is
+//!   `parallel` light placed beyond any point a path can reach ((levels + 1)·1e7 units):
+//!   POV-Ray's shadow rays to a parallel light stop at the plane through its location, and a
+//!   point on an infinite plane can be far away. POV-Ray's only distance falloff is
 //!   2/(1 + (d/D₀)^p): with D₀ tiny and the colour scaled by 1/(2D₀^p) it is
 //!   C/(D₀^p + d^p) = C/d^p · 1/(1 + (D₀/d)^p); D₀ is chosen per light from the nearest
 //!   surface so that the relative error (D₀/d)^p is at most 1e-9.
@@ -205,7 +207,11 @@ pub fn export(problem: &Problem<f64>) -> Result<String, Unexpressible> {
         let _ = writeln!(out, "// {name}");
         match light.kind {
             LightKind::Directional { direction } => {
-                let far = extent.center - direction * (extent.radius * 1.0e3 + extent.radius);
+                // POV-Ray's shadow rays to a parallel light end at the plane through
+                // its location: put it beyond every point a ray can shade (each of the
+                // max_level rays of a path travels at most 1e7 units from the eye's side).
+                let reach = f64::from(max_level + 1) * POV_MAX_DISTANCE + 2.0 * extent.radius;
+                let far = extent.center - direction * reach;
                 let _ = writeln!(
                     out,
                     "light_source {{ {} color rgb {} parallel point_at {} }}",
