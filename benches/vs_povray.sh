@@ -1,0 +1,93 @@
+#!/usr/bin/env bash
+# phong against POV-Ray 3.7, side by side in one run (issue 3, "Speed to reach"):
+# the classic scene at 640×480, maximum level 5, no anti-aliasing, ONE thread.
+#
+#   1. trace time: phong's own (`--stats`, "traced … in S s") against POV-Ray's own ("Trace Time"
+#      in its render statistics), the median of RUNS alternating runs of each;
+#   2. whole-process wall time of both commands (hyperfine when installed, else a loop timed
+#      with `date`), the PPM written to /tmp in both cases.
+#
+# Targets: phong's trace time ≥ 4× faster than POV-Ray's, whole process ≥ 8× faster.
+# Usage: benches/vs_povray.sh [RUNS]   (default 7; needs `povray`, optionally `hyperfine`)
+set -euo pipefail
+cd "$(dirname "$0")/.."
+runs=${1:-7}
+command -v povray >/dev/null || { echo "povray is not installed (apt-get install povray)" >&2; exit 2; }
+
+cargo build --release --quiet
+phong=target/release/phong
+scene=scenes/classic.json
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+"$phong" export-pov "$scene" --max-level 5 --samples 1 -o "$work/classic.pov"
+read -r width height < <(grep -o '+W[0-9]* +H[0-9]*' "$work/classic.pov" | head -1 | tr -d '+WH')
+phong_cmd=("$phong" render "$scene" -o "$work/phong.ppm" --max-level 5 --samples 1 --threads 1)
+pov_cmd=(povray -D -A +Q9 File_Gamma=1.0 -GA -V +WT1 "+W$width" "+H$height" +FP "+O$work/povray.ppm" "$work/classic.pov")
+
+median() { sort -g | awk '{a[NR]=$1} END {print (NR % 2) ? a[(NR+1)/2] : (a[NR/2] + a[NR/2+1]) / 2}'; }
+
+echo "machine: $(nproc) cores, load average $(cut -d' ' -f1-3 /proc/loadavg); $(povray --version 2>&1 | grep -m1 '^POV-Ray')"
+echo "phong:   ${phong_cmd[*]} --precision f64|f32 --stats"
+echo "POV-Ray: ${pov_cmd[*]} (+ render statistics on stderr)"
+echo
+
+: >"$work/pov.txt"
+for p in f64 f32; do : >"$work/phong-$p.txt"; done
+for ((i = 0; i < runs; i++)); do
+  for p in f64 f32; do
+    "${phong_cmd[@]}" --precision "$p" --stats 2>&1 |
+      sed -n 's/.* in \([0-9.]*\) s: .*/\1/p' >>"$work/phong-$p.txt"
+  done
+  # POV-Ray: "Trace Time: 0 hours 0 minutes 0 seconds (0.688 seconds)", printed only with its
+  # output streams on (-GA silences it), so this run drops -GA -V.
+  "${pov_cmd[@]}" +GA +V 2>&1 | tr '\r' '\n' |
+    sed -n 's/.*Trace Time:.*(\([0-9.]*\) seconds).*/\1/p' >>"$work/pov.txt"
+done
+pov=$(median <"$work/pov.txt")
+echo "trace time, median of $runs (seconds):"
+printf '  POV-Ray        %8.3f\n' "$pov"
+for p in f64 f32; do
+  t=$(median <"$work/phong-$p.txt")
+  printf '  phong %s      %8.3f   POV-Ray / phong = %5.2f×   (target ≥ 4×)\n' "$p" "$t" "$(echo "$pov / $t" | bc -l)"
+done
+echo
+
+echo "whole process, wall time:"
+if command -v hyperfine >/dev/null; then
+  hyperfine --style basic --warmup 1 --runs "$runs" \
+    --export-json "$work/wall.json" \
+    -n povray "${pov_cmd[*]}" \
+    -n phong-f64 "${phong_cmd[*]} --precision f64" \
+    -n phong-f32 "${phong_cmd[*]} --precision f32" >/dev/null
+  python3 - "$work/wall.json" <<'EOF'
+import json, sys
+r = {x["command"]: x for x in json.load(open(sys.argv[1]))["results"]}
+pov = r["povray"]["median"]
+print(f"  POV-Ray        {pov:8.3f} s (median; mean {r['povray']['mean']:.3f} ± {r['povray']['stddev']:.3f})")
+for p in ("phong-f64", "phong-f32"):
+    t = r[p]["median"]
+    print(f"  {p:<14} {t:8.3f} s   POV-Ray / phong = {pov / t:5.2f}×   (target ≥ 8×)")
+EOF
+else
+  for name in povray phong-f64 phong-f32; do
+    : >"$work/wall-$name.txt"
+  done
+  for ((i = 0; i < runs; i++)); do
+    for name in povray phong-f64 phong-f32; do
+      case $name in
+        povray) cmd=("${pov_cmd[@]}") ;;
+        phong-f64) cmd=("${phong_cmd[@]}" --precision f64) ;;
+        phong-f32) cmd=("${phong_cmd[@]}" --precision f32) ;;
+      esac
+      start=$(date +%s.%N)
+      "${cmd[@]}" >/dev/null 2>&1
+      echo "$(date +%s.%N) - $start" | bc -l >>"$work/wall-$name.txt"
+    done
+  done
+  pw=$(median <"$work/wall-povray.txt")
+  printf '  POV-Ray        %8.3f s (median)\n' "$pw"
+  for name in phong-f64 phong-f32; do
+    t=$(median <"$work/wall-$name.txt")
+    printf '  %-14s %8.3f s   POV-Ray / phong = %5.2f×   (target ≥ 8×)\n' "$name" "$t" "$(echo "$pw / $t" | bc -l)"
+  done
+fi
