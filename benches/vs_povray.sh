@@ -32,6 +32,7 @@ echo "POV-Ray: ${pov_cmd[*]} (+ render statistics on stderr)"
 echo
 
 : >"$work/pov.txt"
+: >"$work/pov-cpu.txt"
 for p in f64 f32; do : >"$work/phong-$p.txt"; done
 for ((i = 0; i < runs; i++)); do
   for p in f64 f32; do
@@ -40,12 +41,15 @@ for ((i = 0; i < runs; i++)); do
   done
   # POV-Ray: "Trace Time: 0 hours 0 minutes 0 seconds (0.688 seconds)", printed only with its
   # output streams on (-GA silences it), so this run drops -GA -V.
-  "${pov_cmd[@]}" +GA +V 2>&1 | tr '\r' '\n' |
-    sed -n 's/.*Trace Time:.*(\([0-9.]*\) seconds).*/\1/p' >>"$work/pov.txt"
+  "${pov_cmd[@]}" +GA +V 2>&1 | tr '\r' '\n' >"$work/pov-stats.txt"
+  sed -n 's/.*Trace Time:.*(\([0-9.]*\) seconds).*/\1/p' "$work/pov-stats.txt" >>"$work/pov.txt"
+  # "using 1 thread(s) with 0.545 CPU-seconds total", the line after the trace time.
+  sed -n '/Trace Time/{n;s/.* with \([0-9.]*\) CPU-seconds.*/\1/p}' "$work/pov-stats.txt" >>"$work/pov-cpu.txt"
 done
 pov=$(median <"$work/pov.txt")
+pov_cpu=$(median <"$work/pov-cpu.txt")
 echo "trace time, median of $runs (seconds):"
-printf '  POV-Ray        %8.3f\n' "$pov"
+printf '  POV-Ray        %8.3f   (its CPU time for the trace: %.3f s)\n' "$pov" "$pov_cpu"
 for p in f64 f32; do
   t=$(median <"$work/phong-$p.txt")
   printf '  phong %s      %8.3f   POV-Ray / phong = %5.2f×   (target ≥ 4×)\n' "$p" "$t" "$(echo "$pov / $t" | bc -l)"
@@ -89,5 +93,30 @@ else
   for name in phong-f64 phong-f32; do
     t=$(median <"$work/wall-$name.txt")
     printf '  %-14s %8.3f s   POV-Ray / phong = %5.2f×   (target ≥ 8×)\n' "$name" "$t" "$(echo "$pw / $t" | bc -l)"
+  done
+fi
+
+# On a shared machine wall times include waiting for a core; CPU time (user + sys, from
+# /usr/bin/time) of the whole process is steadier.
+if [ -x /usr/bin/time ]; then
+  echo
+  echo "whole process, CPU time (user + sys), median of $runs:"
+  for name in povray phong-f64 phong-f32; do : >"$work/cpu-$name.txt"; done
+  for ((i = 0; i < runs; i++)); do
+    for name in povray phong-f64 phong-f32; do
+      case $name in
+        povray) cmd=("${pov_cmd[@]}") ;;
+        phong-f64) cmd=("${phong_cmd[@]}" --precision f64) ;;
+        phong-f32) cmd=("${phong_cmd[@]}" --precision f32) ;;
+      esac
+      /usr/bin/time -f '%U %S' -o "$work/t" "${cmd[@]}" >/dev/null 2>&1
+      awk '{print $1 + $2}' "$work/t" >>"$work/cpu-$name.txt"
+    done
+  done
+  pc=$(median <"$work/cpu-povray.txt")
+  printf '  POV-Ray        %8.3f s\n' "$pc"
+  for name in phong-f64 phong-f32; do
+    t=$(median <"$work/cpu-$name.txt")
+    printf '  %-14s %8.3f s   POV-Ray / phong = %5.2f×\n' "$name" "$t" "$(echo "$pc / $t" | bc -l)"
   done
 fi
