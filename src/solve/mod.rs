@@ -7,7 +7,8 @@ mod findings;
 
 use crate::core::vector::between;
 use crate::core::{
-    shade, AllVisible, Light, LightKind, LightSet, LightStatus, LightTerm, Real, Shade, Vector, V3,
+    shade_with, AllVisible, Chapter, Formulas, Light, LightKind, LightSet, LightStatus, LightTerm,
+    Real, Shade, Vector, V3,
 };
 use crate::problem::validate::{light_label, show};
 use crate::problem::{Invalid, NamedMaterial, Problem, Target};
@@ -163,6 +164,17 @@ pub enum ReadingCode {
     LineBehindOrigin,
 }
 
+impl ReadingCode {
+    /// Whether the reading is what the problem's author most likely meant (the report labels it
+    /// "likely intended reading"), rather than another way to read it.
+    pub fn likely_intended(self) -> bool {
+        match self {
+            ReadingCode::LightReversed | ReadingCode::LineBehindOrigin => true,
+            ReadingCode::NormalReversed => false,
+        }
+    }
+}
+
 impl<R: Real> Evaluation<R> {
     /// The lights this evaluation shaded with.
     pub fn lights_used<'a>(&'a self, problem: &'a Problem<R>) -> &'a LightSet<R> {
@@ -172,6 +184,15 @@ impl<R: Real> Evaluation<R> {
 
 /// Solves a validated problem.
 pub fn solve<R: Real>(problem: &Problem<R>) -> Result<Solution<R>, Invalid> {
+    solve_with(problem, Chapter)
+}
+
+/// Solves a validated problem with the core's formulas switched as `formulas` says: the mistake
+/// diagnosis of `phong check` reproduces a slip inside a formula this way.
+pub fn solve_with<R: Real, F: Formulas>(
+    problem: &Problem<R>,
+    formulas: F,
+) -> Result<Solution<R>, Invalid> {
     let mut solution = Solution {
         title: problem.title.clone(),
         question: problem.question.clone(),
@@ -194,7 +215,7 @@ pub fn solve<R: Real>(problem: &Problem<R>) -> Result<Solution<R>, Invalid> {
                 reversed: false,
             });
             let at = |n, lights: Option<LightSet<R>>| {
-                evaluate(problem, *position, n, None, material, lights)
+                evaluate(problem, formulas, *position, n, None, material, lights)
             };
             let eval = at(normal, None)?;
             // Readings: no light lights the surface as given, and one is behind it.
@@ -284,6 +305,7 @@ pub fn solve<R: Real>(problem: &Problem<R>) -> Result<Solution<R>, Invalid> {
                 };
                 evaluate(
                     problem,
+                    formulas,
                     Some(p),
                     Some(normal),
                     Some((incoming, source)),
@@ -316,7 +338,7 @@ pub fn solve<R: Real>(problem: &Problem<R>) -> Result<Solution<R>, Invalid> {
 /// Each light mirrored through P: a point or spot light moves to 2P − P_l (a spot's axis
 /// reversed with it), a directional light travels the other way. Every L, R and cos ψ is
 /// then the negative of the original (cos ψ unchanged), d unchanged: exactly "L reversed".
-fn mirror_lights<R: Real>(lights: &LightSet<R>, p: V3<R>) -> LightSet<R> {
+pub(crate) fn mirror_lights<R: Real>(lights: &LightSet<R>, p: V3<R>) -> LightSet<R> {
     let mirror = |q: V3<R>| p * R::TWO - q;
     let mirrored = lights
         .lights
@@ -356,8 +378,9 @@ fn mirror_lights<R: Real>(lights: &LightSet<R>, p: V3<R>) -> LightSet<R> {
 /// direction and where V comes from when the problem has no viewer; `lights` replaces the
 /// problem's lights in a reading that changes them. Undefined L or V is an error here, for
 /// point and ray problems alike.
-fn evaluate<R: Real>(
+fn evaluate<R: Real, F: Formulas>(
     problem: &Problem<R>,
+    formulas: F,
     p: Option<V3<R>>,
     normal: Option<NormalUsed<R>>,
     ray: Option<(V3<R>, ViewSource)>,
@@ -428,7 +451,14 @@ fn evaluate<R: Real>(
         v: viewer.map(|v| v.v),
     };
     let mut records = Vec::with_capacity(set.lights.len());
-    let shade = shade(&at, &material.material, set, &mut AllVisible, &mut records);
+    let shade = shade_with(
+        formulas,
+        &at,
+        &material.material,
+        set,
+        &mut AllVisible,
+        &mut records,
+    );
     check_finite(problem, &shade, &records)?;
 
     let m = &material.material;
