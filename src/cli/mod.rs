@@ -319,10 +319,7 @@ fn grade_command(args: &GradeArgs) -> u8 {
 fn new_command(args: &NewArgs) -> u8 {
     let problems = generate::generate(args.kind, args.count, args.seed);
     match &args.output {
-        None => {
-            let docs: Vec<serde_json::Value> = problems.into_iter().map(|p| p.json).collect();
-            emit(None, &json_text(docs))
-        }
+        None => emit(None, &generate::text_of_all(&problems)),
         Some(dir) => {
             if let Err(e) = std::fs::create_dir_all(dir) {
                 eprintln!("error: {}: cannot create the folder: {e}", dir.display());

@@ -38,20 +38,60 @@ impl Kind {
 }
 
 /// One generated problem.
-#[derive(Clone, Debug)]
 pub struct Generated {
     /// `KIND-SEED-NNN.json`.
     pub file_name: String,
-    pub json: serde_json::Value,
+    problem: ProblemOut,
 }
 
 impl Generated {
-    /// The file's text: pretty JSON and a final newline.
+    /// The file's text: pretty JSON (fields in the order a person reads them) and a newline.
     pub fn text(&self) -> String {
-        let mut s = serde_json::to_string_pretty(&self.json).expect("JSON values serialise");
+        let mut s = serde_json::to_string_pretty(&self.problem).expect("a problem serialises");
         s.push('\n');
         s
     }
+
+    /// The answer key written in the problem.
+    pub fn answer(&self) -> [f64; 3] {
+        self.problem
+            .answer
+            .expect("every generated problem has its key")
+            .map(|n| n.0)
+    }
+}
+
+/// Several problems as one text: one JSON document, or an array for several.
+pub fn text_of_all(problems: &[Generated]) -> String {
+    let mut s = if problems.len() == 1 {
+        serde_json::to_string_pretty(&problems[0].problem)
+    } else {
+        let all: Vec<&ProblemOut> = problems.iter().map(|p| &p.problem).collect();
+        serde_json::to_string_pretty(&all)
+    }
+    .expect("problems serialise");
+    s.push('\n');
+    s
+}
+
+/// A number written as a person would: `4`, not `4.0`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+struct Num(f64);
+
+impl Serialize for Num {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        if self.0.fract() == 0.0 && self.0.abs() < 1e15 {
+            s.serialize_i64(self.0 as i64)
+        } else {
+            s.serialize_f64(self.0)
+        }
+    }
+}
+
+type N3 = [Num; 3];
+
+fn n3(v: [f64; 3]) -> N3 {
+    v.map(|x| Num(if x == 0.0 { 0.0 } else { x }))
 }
 
 /// Unit vectors with exact two-decimal components: integer numerators over a denominator.
@@ -125,8 +165,8 @@ impl Draw {
         }
     }
     /// A colour with one decimal per channel, each in [lo, hi] tenths.
-    fn color(&mut self, lo: i64, hi: i64) -> [f64; 3] {
-        [0; 3].map(|_| self.range(lo, hi) as f64 / 10.0)
+    fn color(&mut self, lo: i64, hi: i64) -> N3 {
+        n3([0; 3].map(|_| self.range(lo, hi) as f64 / 10.0))
     }
     /// An integer point with coordinates in [−r, r].
     fn point(&mut self, r: i64) -> [i64; 3] {
@@ -135,12 +175,12 @@ impl Draw {
 }
 
 /// P + d·u, exactly (every coordinate a short decimal).
-fn offset(p: [i64; 3], d: i64, u: Unit) -> [f64; 3] {
-    [0, 1, 2].map(|i| (p[i] * u.den + d * u.num[i]) as f64 / u.den as f64)
+fn offset(p: [i64; 3], d: i64, u: Unit) -> N3 {
+    n3([0, 1, 2].map(|i| (p[i] * u.den + d * u.num[i]) as f64 / u.den as f64))
 }
 
-fn f3(p: [i64; 3]) -> [f64; 3] {
-    p.map(|x| x as f64)
+fn f3(p: [i64; 3]) -> N3 {
+    n3(p.map(|x| x as f64))
 }
 
 #[derive(Serialize)]
@@ -148,19 +188,19 @@ struct LightOut {
     #[serde(rename = "type")]
     kind: &'static str,
     #[serde(skip_serializing_if = "Option::is_none")]
-    position: Option<[f64; 3]>,
-    color: [f64; 3],
+    position: Option<N3>,
+    color: N3,
     #[serde(skip_serializing_if = "Option::is_none")]
     falloff: Option<u8>,
 }
 
 #[derive(Serialize)]
 struct MaterialOut {
-    ambient: [f64; 3],
+    ambient: N3,
     #[serde(skip_serializing_if = "Option::is_none")]
-    diffuse: Option<[f64; 3]>,
+    diffuse: Option<N3>,
     #[serde(skip_serializing_if = "Option::is_none")]
-    specular: Option<[f64; 3]>,
+    specular: Option<N3>,
     #[serde(skip_serializing_if = "Option::is_none")]
     shininess: Option<u32>,
 }
@@ -168,24 +208,24 @@ struct MaterialOut {
 #[derive(Serialize)]
 struct PointOut {
     #[serde(skip_serializing_if = "Option::is_none")]
-    position: Option<[f64; 3]>,
+    position: Option<N3>,
     #[serde(skip_serializing_if = "Option::is_none")]
-    normal: Option<[f64; 3]>,
+    normal: Option<N3>,
     material: &'static str,
 }
 
 #[derive(Serialize)]
 struct RayOut {
-    origin: [f64; 3],
-    direction: [f64; 3],
+    origin: N3,
+    direction: N3,
 }
 
 #[derive(Serialize)]
 struct PlaneOut {
     #[serde(rename = "type")]
     kind: &'static str,
-    point: [f64; 3],
-    normal: [f64; 3],
+    point: N3,
+    normal: N3,
     material: &'static str,
 }
 
@@ -196,7 +236,7 @@ struct ProblemOut {
     materials: std::collections::BTreeMap<&'static str, MaterialOut>,
     lights: Vec<LightOut>,
     #[serde(skip_serializing_if = "Option::is_none")]
-    viewer: Option<[f64; 3]>,
+    viewer: Option<N3>,
     #[serde(skip_serializing_if = "Option::is_none")]
     point: Option<PointOut>,
     #[serde(skip_serializing_if = "Option::is_none")]
@@ -204,20 +244,21 @@ struct ProblemOut {
     #[serde(skip_serializing_if = "Vec::is_empty")]
     surfaces: Vec<PlaneOut>,
     #[serde(skip_serializing_if = "Option::is_none")]
-    answer: Option<[f64; 3]>,
+    answer: Option<N3>,
 }
 
 /// Writes `count` problems of `kind` from `seed`.
 pub fn generate(kind: Kind, count: u32, seed: u64) -> Vec<Generated> {
     (1..=count)
         .map(|i| {
+            // One stream per kind and problem: problem i is the same whatever the count.
             let mut rng = ChaCha8Rng::seed_from_u64(seed);
-            rng.set_stream(u64::from(i));
+            rng.set_stream((kind as u64) << 32 | u64::from(i));
             let mut problem = draw(kind, &mut Draw(rng), i, seed);
-            problem.answer = Some(answer_key(&problem));
+            problem.answer = Some(n3(answer_key(&problem)));
             Generated {
                 file_name: format!("{}-{seed}-{i:03}.json", kind.name()),
-                json: serde_json::to_value(&problem).expect("a problem serialises"),
+                problem,
             }
         })
         .collect()
@@ -231,14 +272,14 @@ fn draw(kind: Kind, r: &mut Draw, i: u32, seed: u64) -> ProblemOut {
             let mut lights = vec![LightOut {
                 kind: "ambient",
                 position: None,
-                color: [0; 3].map(|_| r.pick(&[0.5, 1.0])),
+                color: n3([0; 3].map(|_| r.pick(&[0.5, 1.0]))),
                 falloff: None,
             }];
             if r.below(2) == 1 {
                 lights.push(LightOut {
                     kind: "ambient",
                     position: None,
-                    color: [0; 3].map(|_| r.pick(&[0.0, 0.5])),
+                    color: n3([0; 3].map(|_| r.pick(&[0.0, 0.5]))),
                     falloff: None,
                 });
             }
@@ -278,14 +319,14 @@ fn draw(kind: Kind, r: &mut Draw, i: u32, seed: u64) -> ProblemOut {
                 lights.push(LightOut {
                     kind: "ambient",
                     position: None,
-                    color: [0; 3].map(|_| r.pick(&[0.0, 0.5, 1.0])),
+                    color: n3([0; 3].map(|_| r.pick(&[0.0, 0.5, 1.0]))),
                     falloff: None,
                 });
             }
             lights.push(LightOut {
                 kind: "point",
                 position: Some(offset(p, d, light_dir)),
-                color: [0; 3].map(|_| r.pick(&[0.5, 1.0])),
+                color: n3([0; 3].map(|_| r.pick(&[0.5, 1.0]))),
                 falloff: Some(falloff),
             });
             materials.insert(
@@ -310,7 +351,7 @@ fn draw(kind: Kind, r: &mut Draw, i: u32, seed: u64) -> ProblemOut {
                     viewer: Some(viewer),
                     point: Some(PointOut {
                         position: Some(f3(p)),
-                        normal: Some(n.f()),
+                        normal: Some(n3(n.f())),
                         material: "M",
                     }),
                     ray: None,
@@ -321,10 +362,11 @@ fn draw(kind: Kind, r: &mut Draw, i: u32, seed: u64) -> ProblemOut {
                 // The ray arrives from N's side: its origin is P + t·u with u·N > 0, D = −u.
                 let toward = r.unit_facing(n, 0.2);
                 let t = r.range(2, 6);
-                // The plane through a point Q of it other than P: Q = P + k·(N × u), integer.
-                let c = cross(n.num, toward.num);
-                let k = r.range(-1, 1);
-                let q = [0, 1, 2].map(|i| p[i] + k * c[i] / gcd3(c).max(1));
+                // The plane through a point Q of it other than P: Q = P ± T, T an integer
+                // tangent.
+                let tangent = tangent(n.num);
+                let k = r.pick(&[-1, 1]);
+                let q = [0, 1, 2].map(|i| p[i] + k * tangent[i]);
                 let with_viewer = r.below(2) == 1;
                 ProblemOut {
                     title,
@@ -336,12 +378,12 @@ fn draw(kind: Kind, r: &mut Draw, i: u32, seed: u64) -> ProblemOut {
                     point: None,
                     ray: Some(RayOut {
                         origin: offset(p, t, toward),
-                        direction: toward.f().map(|x| if x == 0.0 { 0.0 } else { -x }),
+                        direction: n3(toward.f().map(|x| -x)),
                     }),
                     surfaces: vec![PlaneOut {
                         kind: "plane",
                         point: f3(q),
-                        normal: n.f(),
+                        normal: n3(n.f()),
                         material: "M",
                     }],
                     answer: None,
@@ -351,15 +393,9 @@ fn draw(kind: Kind, r: &mut Draw, i: u32, seed: u64) -> ProblemOut {
     }
 }
 
-fn cross(a: [i64; 3], b: [i64; 3]) -> [i64; 3] {
-    [
-        a[1] * b[2] - a[2] * b[1],
-        a[2] * b[0] - a[0] * b[2],
-        a[0] * b[1] - a[1] * b[0],
-    ]
-}
-
-fn gcd3(v: [i64; 3]) -> i64 {
+/// The shortest integer vector perpendicular to `n` among (b, −a, 0), (0, c, −b), (c, 0, −a),
+/// each divided by the gcd of its components.
+fn tangent(n: [i64; 3]) -> [i64; 3] {
     fn gcd(a: i64, b: i64) -> i64 {
         if b == 0 {
             a.abs()
@@ -367,7 +403,16 @@ fn gcd3(v: [i64; 3]) -> i64 {
             gcd(b, a % b)
         }
     }
-    gcd(gcd(v[0], v[1]), v[2])
+    let [a, b, c] = n;
+    [[b, -a, 0], [0, c, -b], [c, 0, -a]]
+        .into_iter()
+        .filter(|t| t.iter().any(|&x| x != 0))
+        .map(|t| {
+            let g = gcd(gcd(t[0], t[1]), t[2]);
+            t.map(|x| x / g)
+        })
+        .min_by_key(|t| t.iter().map(|x| x * x).sum::<i64>())
+        .expect("a unit vector has a non-zero component")
 }
 
 /// The answer key: the solver's colour (clamped), rounded to six decimals.
