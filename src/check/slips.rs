@@ -5,7 +5,8 @@
 //!   light removed, n_s = 1, the viewer or the lights mirrored through P, the normal reversed or
 //!   left unnormalised, a spot made a point light, the ray reversed);
 //! - two live inside a formula and are switched in the core ([`Slipped`]: |cos θ|, Blinn's
-//!   half-vector), at no cost to the chapter's path;
+//!   half-vector), at no cost to the chapter's path; a third switch lets an unnormalised
+//!   normal's "cos φ" exceed 1, as it does by hand;
 //! - "no clamping" reads the literal Eq. 4.16 that the core records anyway.
 //!
 //! A slip is offered only where it applies to the problem, and kept only where it changes the
@@ -181,7 +182,11 @@ impl Variant {
             Slip::AbsCosTheta => !std::mem::replace(&mut v.formulas.abs_cos_theta, true),
             Slip::HalfVector => !std::mem::replace(&mut v.formulas.half_vector, true),
             Slip::NoClamping => !std::mem::replace(&mut v.literal, true),
-            Slip::NormalNotNormalized => unnormalize(&mut v.problem),
+            Slip::NormalNotNormalized => {
+                // cos φ is then no cosine: the core must not clamp it to 1.
+                v.formulas.raw_normal = true;
+                unnormalize(&mut v.problem)
+            }
             Slip::FalloffForgotten => refall(&mut v.problem, |f| f != Falloff::None, Falloff::None),
             Slip::FalloffLinearNotQuadratic => {
                 refall(&mut v.problem, |f| f == Falloff::Quadratic, Falloff::Linear)

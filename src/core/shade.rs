@@ -161,11 +161,13 @@ impl<R: Real> Visibility<R> for AllVisible {
 /// x is a cosine: it is clamped to [−1, 1] first, so that a value rounded a hair beyond ±1
 /// cannot grow without bound under a huge n_s.
 #[inline]
-fn literal_pow<R: Real>(x: R, n_s: R) -> Option<R> {
+fn literal_pow<R: Real>(x: R, n_s: R, clamp: bool) -> Option<R> {
     if x < R::ZERO && n_s.trunc() != n_s {
         None
-    } else {
+    } else if clamp {
         Some(x.max(-R::ONE).min(R::ONE).powf(n_s))
+    } else {
+        Some(x.powf(n_s))
     }
 }
 
@@ -179,6 +181,9 @@ pub trait Formulas: Copy {
     /// cos φ taken as N·H with Blinn's half-vector H = (−L − V)/‖−L − V‖ instead of −R·V
     /// (Eq. 4.10, 4.15).
     fn half_vector(self) -> bool;
+    /// N is used as given, not of unit length: cos φ is then not a cosine and is not clamped to
+    /// [−1, 1] (the clamp guards unit vectors against rounding only).
+    fn raw_normal(self) -> bool;
 }
 
 /// The chapter's formulas, unchanged: the tracer's and the solver's.
@@ -194,6 +199,10 @@ impl Formulas for Chapter {
     fn half_vector(self) -> bool {
         false
     }
+    #[inline(always)]
+    fn raw_normal(self) -> bool {
+        false
+    }
 }
 
 /// Formula switches chosen at run time (the mistake diagnosis of `phong check`).
@@ -201,6 +210,7 @@ impl Formulas for Chapter {
 pub struct Slipped {
     pub abs_cos_theta: bool,
     pub half_vector: bool,
+    pub raw_normal: bool,
 }
 
 impl Formulas for Slipped {
@@ -211,6 +221,10 @@ impl Formulas for Slipped {
     #[inline]
     fn half_vector(self) -> bool {
         self.half_vector
+    }
+    #[inline]
+    fn raw_normal(self) -> bool {
+        self.raw_normal
     }
 }
 
@@ -319,7 +333,11 @@ pub fn shade_with<R: Real, Rec: Recorder<R>, Vis: Visibility<R>, F: Formulas>(
                     (SpecularStatus::LightNotLit, None, V3::<R>::ZERO)
                 } else if cos_phi > R::ZERO {
                     // cos φ can round a hair above 1; a huge n_s must not turn that into inf.
-                    let pow = cos_phi.min(R::ONE).powf(m.n_s);
+                    let pow = if formulas.raw_normal() {
+                        cos_phi.powf(m.n_s)
+                    } else {
+                        cos_phi.min(R::ONE).powf(m.n_s)
+                    };
                     (SpecularStatus::Lit, Some(pow), o_s * arrival.i_l * pow)
                 } else {
                     (SpecularStatus::AwayFromViewer, None, V3::<R>::ZERO)
@@ -329,7 +347,8 @@ pub fn shade_with<R: Real, Rec: Recorder<R>, Vis: Visibility<R>, F: Formulas>(
                 } else if !arrives {
                     Some(V3::<R>::ZERO)
                 } else {
-                    literal_pow(cos_phi, m.n_s).map(|p| o_s * arrival.i_l * p)
+                    literal_pow(cos_phi, m.n_s, !formulas.raw_normal())
+                        .map(|p| o_s * arrival.i_l * p)
                 };
                 SpecularTerm {
                     status: st,
