@@ -149,8 +149,8 @@ pub fn expected_source(reading: Option<ReadingCode>, against: Against, lang: Lan
     let how = match (lang, against) {
         (Lang::En, Against::Clamped) => "clamped to [0, 1]",
         (Lang::En, Against::Unclamped) => "unclamped (Eq. 4.16 as summed)",
-        (Lang::Pt, Against::Clamped) => "limitada a [0, 1]",
-        (Lang::Pt, Against::Unclamped) => "sem limitar (a soma da Eq. 4.16)",
+        (Lang::Pt, Against::Clamped) => "com a cor limitada a [0, 1]",
+        (Lang::Pt, Against::Unclamped) => "com a cor sem limite (a soma da Eq. 4.16)",
     };
     format!("{what}, {how}")
 }

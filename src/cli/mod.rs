@@ -52,7 +52,7 @@ pub struct CheckArgs {
     pub scale: check::Scale,
     /// The largest difference accepted per channel, on the answer's scale [default: the key's
     /// own, else 0.005 on the 0–1 scale, 1 on the 255 scale].
-    #[arg(long, value_name = "T")]
+    #[arg(long, value_name = "T", allow_hyphen_values = true)]
     pub tolerance: Option<f64>,
     /// Accept only the problem as written, not its likely intended reading.
     #[arg(long)]
@@ -87,7 +87,7 @@ pub struct GradeArgs {
     #[arg(long, value_enum, default_value = "1")]
     pub scale: check::Scale,
     /// The largest difference accepted per channel [default: 0.005 on the 0–1 scale, 1 on 255].
-    #[arg(long, value_name = "T")]
+    #[arg(long, value_name = "T", allow_hyphen_values = true)]
     pub tolerance: Option<f64>,
     /// Accept only the problem as written, not its likely intended reading.
     #[arg(long)]
