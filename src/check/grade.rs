@@ -310,8 +310,10 @@ fn summarise(rows: &[RowOut]) -> Vec<SummaryOut> {
                     count,
                 })
                 .collect();
-            // Most common first; the BTreeMap order breaks ties, so the output is stable.
-            counts.sort_by_key(|c| std::cmp::Reverse(c.count));
+            // Most common first, then single slips before pairs, then the slips' order: stable.
+            counts.sort_by(|a, b| {
+                (b.count, a.slips.len(), &a.slips).cmp(&(a.count, b.slips.len(), &b.slips))
+            });
             s.slips = counts;
             s
         })
