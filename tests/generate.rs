@@ -167,7 +167,10 @@ fn the_numbers_are_friendly_to_hand_calculation() {
             let l = v3(&point_light.unwrap()["position"]);
             let to_light = sub(l, at);
             let d = dot(to_light, to_light).sqrt();
-            assert!((d - d.round()).abs() < 1e-9 && d.round() >= 1.0, "{name}: d = {d}");
+            assert!(
+                (d - d.round()).abs() < 1e-9 && d.round() >= 1.0,
+                "{name}: d = {d}"
+            );
             assert!(
                 dot(to_light, n) / d >= 0.2 - 1e-12,
                 "{name}: the light in front"
