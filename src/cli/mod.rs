@@ -1,5 +1,6 @@
 //! The `phong` command line: parse the arguments, run the command, map the outcome to an exit
-//! code (0 solved, 2 bad input or usage). Output files are written atomically.
+//! code (0 solved or right, 1 a checked answer is wrong, 2 bad input or usage). Output files are
+//! written atomically.
 
 use std::io::Write;
 use std::path::{Path, PathBuf};
@@ -7,13 +8,15 @@ use std::process::ExitCode;
 
 use clap::{Args, Parser, Subcommand, ValueEnum};
 
+use crate::check;
 use crate::core::Real;
-use crate::tracer::output::ImageFormat;
+use crate::generate;
 use crate::problem::{self, ProblemError};
 use crate::report;
 use crate::report::explain::Explanation;
 use crate::report::lang::Lang;
 use crate::solve;
+use crate::tracer::output::ImageFormat;
 
 /// Solve and explain the illumination exercises of Chapter 4 (Phong's model).
 #[derive(Debug, Parser)]
@@ -35,6 +38,12 @@ pub enum Command {
     /// Write a scene as POV-Ray 3.7 SDL that computes the same model (for cross-checking),
     /// or say why POV-Ray cannot express it (exit 2).
     ExportPov(ExportPovArgs),
+    /// Check an answer (or each file's answer key) and name the slips behind a wrong one.
+    Check(CheckArgs),
+    /// Grade a CSV of answers (student, exercise, answer): one verdict per row, a summary per exercise.
+    Grade(GradeArgs),
+    /// Write fresh problems with numbers friendly to hand calculation, each with its answer key.
+    New(NewArgs),
 }
 
 #[derive(Debug, Args)]
@@ -65,7 +74,12 @@ pub struct RenderArgs {
     #[arg(value_name = "SCENE")]
     pub scene: PathBuf,
     /// The image to write (atomically): .png or .ppm. Required unless --explain-pixel.
-    #[arg(short, long, value_name = "PATH", required_unless_present = "explain_pixel")]
+    #[arg(
+        short,
+        long,
+        value_name = "PATH",
+        required_unless_present = "explain_pixel"
+    )]
     pub output: Option<PathBuf>,
     /// The image format, when the output's extension does not say.
     #[arg(long, value_enum, value_name = "FORMAT")]
@@ -108,15 +122,106 @@ pub enum Switch {
 }
 
 fn parse_pixel(s: &str) -> Result<(u32, u32), String> {
-    let (x, y) = s
-        .split_once(',')
-        .ok_or_else(|| format!("\"{s}\" is not X,Y (two whole numbers and a comma, e.g. 320,240)"))?;
+    let (x, y) = s.split_once(',').ok_or_else(|| {
+        format!("\"{s}\" is not X,Y (two whole numbers and a comma, e.g. 320,240)")
+    })?;
     let int = |t: &str| {
         t.trim()
             .parse::<u32>()
             .map_err(|_| format!("\"{t}\" is not a pixel coordinate (a whole number ≥ 0)"))
     };
     Ok((int(x)?, int(y)?))
+}
+
+#[derive(Debug, Args)]
+pub struct CheckArgs {
+    /// Problem files (JSON). Without --answer, each file's answer key is checked.
+    #[arg(required = true, value_name = "FILE")]
+    pub files: Vec<PathBuf>,
+    /// The answer to check: "0.52 0.03 0", "(0.52, 0.03, 0)", "[0.52; 0.03; 0]", "#RRGGBB", or
+    /// three integers 0–255 with --scale 255. Only with one FILE.
+    #[arg(long, value_name = "ANSWER", allow_hyphen_values = true)]
+    pub answer: Option<String>,
+    /// The answer's scale: 1 (components on [0, 1]) or 255 (8-bit integers). "#RRGGBB" is 255.
+    #[arg(long, value_enum, default_value = "1")]
+    pub scale: check::Scale,
+    /// The largest difference accepted per channel, on the answer's scale [default: the key's
+    /// own, else 0.005 on the 0–1 scale, 1 on the 255 scale].
+    #[arg(long, value_name = "T", allow_hyphen_values = true)]
+    pub tolerance: Option<f64>,
+    /// Accept only the problem as written, not its likely intended reading.
+    #[arg(long)]
+    pub strict: bool,
+    /// Instead of checking an answer, list what each applicable slip (and pair) gives.
+    #[arg(long, conflicts_with_all = ["answer", "format"])]
+    pub slips: bool,
+    /// Output format: text for people, json for scripts (stable field names, format_version).
+    #[arg(long, value_enum, default_value_t = CheckFormat::Text)]
+    pub format: CheckFormat,
+    /// Language of the text output.
+    #[arg(long, value_enum, default_value_t = Lang::En)]
+    pub lang: Lang,
+    /// Write the output to this file (atomically) instead of standard output.
+    #[arg(short, long, value_name = "PATH")]
+    pub output: Option<PathBuf>,
+}
+
+#[derive(Debug, Args)]
+pub struct GradeArgs {
+    /// The submissions: a CSV file with the columns student, exercise, answer (a first row
+    /// starting with "student" is a header).
+    #[arg(value_name = "SUBMISSIONS")]
+    pub submissions: PathBuf,
+    /// The folder of exercise files: exercise "4.2" is DIR/4.2.json.
+    #[arg(long, value_name = "DIR")]
+    pub exercises: PathBuf,
+    /// Report format: one CSV line per input row, or JSON with the rows and the summary.
+    #[arg(long, value_enum, default_value_t = GradeFormat::Csv)]
+    pub format: GradeFormat,
+    /// The scale of answers that are not "#RRGGBB".
+    #[arg(long, value_enum, default_value = "1")]
+    pub scale: check::Scale,
+    /// The largest difference accepted per channel [default: 0.005 on the 0–1 scale, 1 on 255].
+    #[arg(long, value_name = "T", allow_hyphen_values = true)]
+    pub tolerance: Option<f64>,
+    /// Accept only the problem as written, not its likely intended reading.
+    #[arg(long)]
+    pub strict: bool,
+    /// Write the report to this file (atomically) instead of standard output.
+    #[arg(short, long, value_name = "PATH")]
+    pub output: Option<PathBuf>,
+    /// Also write the summary per exercise as CSV to this file (atomically).
+    #[arg(long, value_name = "PATH")]
+    pub summary: Option<PathBuf>,
+}
+
+#[derive(Debug, Args)]
+pub struct NewArgs {
+    /// The kind of problem.
+    #[arg(long, value_enum)]
+    pub kind: generate::Kind,
+    /// How many problems.
+    #[arg(long, default_value_t = 1, value_parser = clap::value_parser!(u32).range(1..=10000))]
+    pub count: u32,
+    /// The seed: the same seed, kind and count give the same files, byte for byte.
+    #[arg(long, default_value_t = 1)]
+    pub seed: u64,
+    /// Write each problem to DIR/KIND-SEED-I.json (atomically); without it, print them (one JSON
+    /// document, or an array for several).
+    #[arg(short, long, value_name = "DIR")]
+    pub output: Option<PathBuf>,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum CheckFormat {
+    Text,
+    Json,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum GradeFormat {
+    Csv,
+    Json,
 }
 
 #[derive(Debug, Args)]
@@ -175,8 +280,10 @@ pub enum Precision {
     F64,
 }
 
-/// Exit code: everything solved.
+/// Exit code: everything solved (or every checked answer accepted).
 pub const EXIT_OK: u8 = 0;
+/// Exit code: a checked answer is wrong.
+pub const EXIT_WRONG: u8 = 1;
 /// Exit code: bad input (a file that cannot be read, parsed or validated) or bad usage.
 pub const EXIT_BAD_INPUT: u8 = 2;
 
@@ -197,6 +304,9 @@ pub fn run(cli: &Cli) -> u8 {
             emit(args.output.as_deref(), &text)
         }
         Command::ExportPov(args) => export_pov_command(args),
+        Command::Check(args) => check_command(args),
+        Command::Grade(args) => grade_command(args),
+        Command::New(args) => new_command(args),
     }
 }
 
@@ -240,6 +350,161 @@ fn export_pov_command(args: &ExportPovArgs) -> u8 {
             EXIT_BAD_INPUT
         }
     }
+}
+
+fn check_command(args: &CheckArgs) -> u8 {
+    if args.answer.is_some() && args.files.len() > 1 {
+        eprintln!(
+            "error: --answer checks one file, and {} were given. Fix: check one file at a time,              or put each file's answer in its \"answer\" field and leave out --answer",
+            args.files.len()
+        );
+        return EXIT_BAD_INPUT;
+    }
+    if let Some(t) = args.tolerance {
+        if let Err(e) = check::answer::check_tolerance(t) {
+            eprintln!("error: --tolerance: {e}");
+            return EXIT_BAD_INPUT;
+        }
+    }
+    if args.slips {
+        return slips_command(args);
+    }
+    let options = check::CheckOptions {
+        answer: args.answer.clone(),
+        scale: args.scale,
+        tolerance: args.tolerance,
+        strict: args.strict,
+    };
+    let mut code = EXIT_OK;
+    let mut text = String::new();
+    let mut docs = Vec::new();
+    for path in &args.files {
+        let c = check::check_file(path, &options);
+        code = code.max(c.exit_code());
+        if let Err(f) = &c.outcome {
+            eprintln!("error: {}", f.message);
+        }
+        match args.format {
+            CheckFormat::Text => {
+                if c.outcome.is_ok() {
+                    text.push_str(&check::report::text(&c, args.lang));
+                }
+            }
+            CheckFormat::Json => docs
+                .push(serde_json::to_value(check::report::json(&c)).expect("a verdict serialises")),
+        }
+    }
+    let out = match args.format {
+        CheckFormat::Text => text,
+        CheckFormat::Json => json_text(docs),
+    };
+    code.max(emit(args.output.as_deref(), &out))
+}
+
+/// `phong check --slips`: what each applicable slip gives, for an instructor.
+fn slips_command(args: &CheckArgs) -> u8 {
+    let mut code = EXIT_OK;
+    let mut text = String::new();
+    for path in &args.files {
+        let expected = problem::load::<f64>(path)
+            .and_then(|(_, p)| check::Expected::of(&p).map_err(|e| e.at(path)));
+        match expected {
+            Ok(x) => text.push_str(&check::report::slips_text(
+                &path.display().to_string(),
+                &x,
+                args.lang,
+            )),
+            Err(e) => {
+                eprintln!("error: {e}");
+                code = EXIT_BAD_INPUT;
+            }
+        }
+    }
+    code.max(emit(args.output.as_deref(), &text))
+}
+
+fn grade_command(args: &GradeArgs) -> u8 {
+    if let Some(t) = args.tolerance {
+        if let Err(e) = check::answer::check_tolerance(t) {
+            eprintln!("error: --tolerance: {e}");
+            return EXIT_BAD_INPUT;
+        }
+    }
+    if !args.exercises.is_dir() {
+        eprintln!(
+            "error: {}: --exercises: not a folder. Fix: give the folder that holds the exercise \
+             files (exercise 4.2 is DIR/4.2.json)",
+            args.exercises.display()
+        );
+        return EXIT_BAD_INPUT;
+    }
+    let options = check::grade::Options {
+        exercises: args.exercises.clone(),
+        scale: args.scale,
+        tolerance: args.tolerance,
+        strict: args.strict,
+    };
+    let report = match check::grade::grade_file(&args.submissions, &options) {
+        Ok(r) => r,
+        Err(e) => {
+            eprintln!("error: {e}");
+            return EXIT_BAD_INPUT;
+        }
+    };
+    let body = match args.format {
+        GradeFormat::Csv => check::grade::rows_csv(&report),
+        GradeFormat::Json => {
+            let mut s = serde_json::to_string_pretty(&report).expect("a report serialises");
+            s.push('\n');
+            s.into_bytes()
+        }
+    };
+    let total =
+        |f: fn(&check::grade::SummaryOut) -> usize| report.summary.iter().map(f).sum::<usize>();
+    eprintln!(
+        "graded {} rows: {} right, {} by the likely intended reading, {} wrong, {} invalid",
+        report.rows.len(),
+        total(|s| s.right),
+        total(|s| s.reading),
+        total(|s| s.wrong),
+        total(|s| s.invalid)
+    );
+    let mut code = emit_bytes(args.output.as_deref(), &body);
+    if let Some(p) = &args.summary {
+        code = code.max(emit_bytes(Some(p), &check::grade::summary_csv(&report)));
+    }
+    code
+}
+
+fn new_command(args: &NewArgs) -> u8 {
+    let problems = generate::generate(args.kind, args.count, args.seed);
+    match &args.output {
+        None => emit(None, &generate::text_of_all(&problems)),
+        Some(dir) => {
+            if let Err(e) = std::fs::create_dir_all(dir) {
+                eprintln!("error: {}: cannot create the folder: {e}", dir.display());
+                return EXIT_BAD_INPUT;
+            }
+            let mut code = EXIT_OK;
+            for p in problems {
+                let path = dir.join(&p.file_name);
+                code = code.max(emit(Some(&path), &p.text()));
+            }
+            code
+        }
+    }
+}
+
+/// One JSON document, or an array for several, pretty-printed with a final newline.
+fn json_text(mut docs: Vec<serde_json::Value>) -> String {
+    let value = if docs.len() == 1 {
+        docs.pop().expect("one document")
+    } else {
+        serde_json::Value::Array(docs)
+    };
+    let mut s = serde_json::to_string_pretty(&value).expect("JSON values serialise");
+    s.push('\n');
+    s
 }
 
 fn solve_command(args: &SolveArgs) -> u8 {
@@ -377,11 +642,15 @@ fn render_scene<R: Real>(args: &RenderArgs) -> Result<u8, ProblemError> {
     }
     let image_format = match (&args.output, args.image_format) {
         (_, Some(f)) => Some(f),
-        (Some(out), None) => Some(ImageFormat::from_path(out).ok_or_else(|| ProblemError::Usage {
-            flag: "--output".into(),
-            message: format!("{} does not end in .png or .ppm", out.display()),
-            fix: "name the image *.png or *.ppm, or give --image-format png|ppm".into(),
-        })?),
+        (Some(out), None) => {
+            Some(
+                ImageFormat::from_path(out).ok_or_else(|| ProblemError::Usage {
+                    flag: "--output".into(),
+                    message: format!("{} does not end in .png or .ppm", out.display()),
+                    fix: "name the image *.png or *.ppm, or give --image-format png|ppm".into(),
+                })?,
+            )
+        }
         (None, None) => None,
     };
     let pool = {
@@ -449,9 +718,8 @@ fn render_scene<R: Real>(args: &RenderArgs) -> Result<u8, ProblemError> {
     let out = args.output.as_deref().expect("clap requires --output here");
     let bar = progress_bar(u64::from(camera.height));
     let tracing = std::time::Instant::now();
-    let (image, counts) = pool.install(|| {
-        crate::tracer::render(&problem, &camera, &scene, &|| bar.inc(1))
-    });
+    let (image, counts) =
+        pool.install(|| crate::tracer::render(&problem, &camera, &scene, &|| bar.inc(1)));
     bar.finish_and_clear();
     let traced = tracing.elapsed();
     let bytes = crate::tracer::output::encode(&image, image_format.expect("known format"));
@@ -590,12 +858,16 @@ fn error_json(path: &Path, e: &ProblemError) -> serde_json::Value {
 /// Writes the output to stdout, or atomically to a file (a temporary file in the same folder,
 /// renamed into place), so that a failure never leaves a half-written file.
 fn emit(path: Option<&Path>, text: &str) -> u8 {
+    emit_bytes(path, text.as_bytes())
+}
+
+fn emit_bytes(path: Option<&Path>, bytes: &[u8]) -> u8 {
     let result = match path {
         None => {
             let mut out = std::io::stdout().lock();
-            out.write_all(text.as_bytes()).and_then(|_| out.flush())
+            out.write_all(bytes).and_then(|_| out.flush())
         }
-        Some(p) => write_atomically(p, text.as_bytes()),
+        Some(p) => write_atomically(p, bytes),
     };
     match result {
         Ok(()) => EXIT_OK,

@@ -28,7 +28,7 @@ pub use light::{Arrival, Cone, ConeTest, Falloff, Light, LightKind, LightSet, Re
 pub use material::Material;
 pub use real::{Real, Vector, V3};
 pub use shade::{
-    shade, AllVisible, LightStatus, LightTerm, NoRecord, Recorder, Shade, ShadingPoint,
-    SpecularStatus, SpecularTerm, Visibility,
+    shade, shade_with, AllVisible, Chapter, Formulas, LightStatus, LightTerm, NoRecord, Recorder,
+    Shade, ShadingPoint, Slipped, SpecularStatus, SpecularTerm, Visibility,
 };
 pub use vector::{between, normalize, Normalized};

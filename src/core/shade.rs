@@ -161,11 +161,70 @@ impl<R: Real> Visibility<R> for AllVisible {
 /// x is a cosine: it is clamped to [−1, 1] first, so that a value rounded a hair beyond ±1
 /// cannot grow without bound under a huge n_s.
 #[inline]
-fn literal_pow<R: Real>(x: R, n_s: R) -> Option<R> {
+fn literal_pow<R: Real>(x: R, n_s: R, clamp: bool) -> Option<R> {
     if x < R::ZERO && n_s.trunc() != n_s {
         None
-    } else {
+    } else if clamp {
         Some(x.max(-R::ONE).min(R::ONE).powf(n_s))
+    } else {
+        Some(x.powf(n_s))
+    }
+}
+
+/// The two places where a classic slip lives *inside* a formula of the core, so that `phong
+/// check` can reproduce it with the same code (every other slip is a change of the input).
+/// [`Chapter`] answers `false` to both as a constant, so the chapter's path compiles to exactly
+/// the code it would be without these switches; [`Slipped`] answers at run time.
+pub trait Formulas: Copy {
+    /// cos θ taken as |N·L| instead of −N·L (Eq. 4.7): a light behind the surface lights it.
+    fn abs_cos_theta(self) -> bool;
+    /// cos φ taken as N·H with Blinn's half-vector H = (−L − V)/‖−L − V‖ instead of −R·V
+    /// (Eq. 4.10, 4.15).
+    fn half_vector(self) -> bool;
+    /// N is used as given, not of unit length: cos φ is then not a cosine and is not clamped to
+    /// [−1, 1] (the clamp guards unit vectors against rounding only).
+    fn raw_normal(self) -> bool;
+}
+
+/// The chapter's formulas, unchanged: the tracer's and the solver's.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct Chapter;
+
+impl Formulas for Chapter {
+    #[inline(always)]
+    fn abs_cos_theta(self) -> bool {
+        false
+    }
+    #[inline(always)]
+    fn half_vector(self) -> bool {
+        false
+    }
+    #[inline(always)]
+    fn raw_normal(self) -> bool {
+        false
+    }
+}
+
+/// Formula switches chosen at run time (the mistake diagnosis of `phong check`).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Slipped {
+    pub abs_cos_theta: bool,
+    pub half_vector: bool,
+    pub raw_normal: bool,
+}
+
+impl Formulas for Slipped {
+    #[inline]
+    fn abs_cos_theta(self) -> bool {
+        self.abs_cos_theta
+    }
+    #[inline]
+    fn half_vector(self) -> bool {
+        self.half_vector
+    }
+    #[inline]
+    fn raw_normal(self) -> bool {
+        self.raw_normal
     }
 }
 
@@ -173,6 +232,20 @@ fn literal_pow<R: Real>(x: R, n_s: R) -> Option<R> {
 /// diffuse and specular only where cos θ > 0, and specular only where also cos φ > 0.
 #[inline]
 pub fn shade<R: Real, Rec: Recorder<R>, Vis: Visibility<R>>(
+    at: &ShadingPoint<R>,
+    m: &Material<R>,
+    lights: &LightSet<R>,
+    visibility: &mut Vis,
+    rec: &mut Rec,
+) -> Shade<R> {
+    shade_with(Chapter, at, m, lights, visibility, rec)
+}
+
+/// [`shade`] with a formula switched as `formulas` says (see [`Formulas`]); with [`Chapter`]
+/// it is [`shade`] itself.
+#[inline]
+pub fn shade_with<R: Real, Rec: Recorder<R>, Vis: Visibility<R>, F: Formulas>(
+    formulas: F,
     at: &ShadingPoint<R>,
     m: &Material<R>,
     lights: &LightSet<R>,
@@ -197,7 +270,11 @@ pub fn shade<R: Real, Rec: Recorder<R>, Vis: Visibility<R>>(
         let arrival = light.arrive(at.p);
         // Diffuse reflection, cos θ = −N·L, Eq. 4.7–4.8.
         let n_dot_l = at.n.dot(arrival.l);
-        let cos_theta = -n_dot_l;
+        let cos_theta = if formulas.abs_cos_theta() {
+            n_dot_l.abs()
+        } else {
+            -n_dot_l
+        };
         let mut status = match arrival.reach {
             Reach::AtLight => LightStatus::AtLight,
             Reach::OutsideCone => LightStatus::OutsideCone,
@@ -245,12 +322,22 @@ pub fn shade<R: Real, Rec: Recorder<R>, Vis: Visibility<R>>(
             }
             (Some(o_s), Some(v)) => {
                 let r = arrival.l - at.n * (R::TWO * n_dot_l);
-                let cos_phi = -r.dot(v);
+                let cos_phi = if formulas.half_vector() {
+                    // Blinn: H halfway between the directions to the light and to the eye.
+                    crate::core::vector::normalize::<R>(-arrival.l - v)
+                        .map_or(R::ZERO, |h| at.n.dot(h.unit))
+                } else {
+                    -r.dot(v)
+                };
                 let (st, pow, term) = if !lit {
                     (SpecularStatus::LightNotLit, None, V3::<R>::ZERO)
                 } else if cos_phi > R::ZERO {
                     // cos φ can round a hair above 1; a huge n_s must not turn that into inf.
-                    let pow = cos_phi.min(R::ONE).powf(m.n_s);
+                    let pow = if formulas.raw_normal() {
+                        cos_phi.powf(m.n_s)
+                    } else {
+                        cos_phi.min(R::ONE).powf(m.n_s)
+                    };
                     (SpecularStatus::Lit, Some(pow), o_s * arrival.i_l * pow)
                 } else {
                     (SpecularStatus::AwayFromViewer, None, V3::<R>::ZERO)
@@ -260,7 +347,8 @@ pub fn shade<R: Real, Rec: Recorder<R>, Vis: Visibility<R>>(
                 } else if !arrives {
                     Some(V3::<R>::ZERO)
                 } else {
-                    literal_pow(cos_phi, m.n_s).map(|p| o_s * arrival.i_l * p)
+                    literal_pow(cos_phi, m.n_s, !formulas.raw_normal())
+                        .map(|p| o_s * arrival.i_l * p)
                 };
                 SpecularTerm {
                     status: st,

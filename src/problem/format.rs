@@ -57,6 +57,10 @@ pub struct ProblemFile {
     /// How rays are traced: recursion level, minimum weight, shadows, samples per pixel.
     #[serde(default)]
     pub render: Option<RenderSpec>,
+    /// The expected answer (an answer key): `phong check FILE` with no `--answer` checks it
+    /// against the solution; `phong solve` does not use it.
+    #[serde(default)]
+    pub answer: Option<AnswerSpec>,
 }
 
 /// A pinhole camera.
@@ -97,6 +101,52 @@ pub struct RenderSpec {
     /// pixel's centre).
     #[serde(default)]
     pub samples: Option<u32>,
+}
+
+/// An answer key: `[r, g, b]` on the 0–1 scale, `"#RRGGBB"` (8 bits), or an object with the
+/// colour and its own scale and tolerance.
+#[derive(Debug, Clone, PartialEq, JsonSchema)]
+#[serde(untagged)]
+pub enum AnswerSpec {
+    /// The colour `[r, g, b]` (0–1 scale) or `"#RRGGBB"`.
+    Color(AnswerColor),
+    /// The colour with its scale and tolerance.
+    Key(AnswerKey),
+}
+
+/// The colour of an answer key.
+#[derive(Debug, Clone, PartialEq, JsonSchema)]
+#[serde(untagged)]
+pub enum AnswerColor {
+    /// `[r, g, b]`, on the key's scale (0–1 unless `scale` is 255).
+    Rgb(Triple),
+    /// `"#RRGGBB"`: 8 bits per channel.
+    Hex(String),
+}
+
+/// An answer key with its scale and tolerance.
+#[derive(Debug, Clone, PartialEq, Deserialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct AnswerKey {
+    /// `[r, g, b]` or `"#RRGGBB"`.
+    pub color: AnswerColor,
+    /// 1 (the default): components on [0, 1]; 255: 8-bit integers 0–255.
+    #[serde(default)]
+    pub scale: Option<f64>,
+    /// The largest difference accepted in any channel, on the key's scale (default 0.005 on the
+    /// 0–1 scale, 1 on the 255 scale).
+    #[serde(default)]
+    pub tolerance: Option<f64>,
+}
+
+impl AnswerSpec {
+    /// The colour, the scale and the tolerance the key gives.
+    pub fn parts(&self) -> (&AnswerColor, Option<f64>, Option<f64>) {
+        match self {
+            AnswerSpec::Color(c) => (c, None, None),
+            AnswerSpec::Key(k) => (&k.color, k.scale, k.tolerance),
+        }
+    }
 }
 
 /// The point being shaded. `position` is needed by point and spot lights and by the viewer;
@@ -470,6 +520,52 @@ impl<'de> Deserialize<'de> for ReflectivitySpec {
                 } else {
                     Err(E::invalid_value(de::Unexpected::Str(s), &self))
                 }
+            }
+        }
+        d.deserialize_any(V)
+    }
+}
+
+impl<'de> Deserialize<'de> for AnswerColor {
+    fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        struct V;
+        impl<'de> Visitor<'de> for V {
+            type Value = AnswerColor;
+            fn expecting(&self, f: &mut fmt::Formatter) -> fmt::Result {
+                f.write_str("a colour [r, g, b] or \"#RRGGBB\"")
+            }
+            fn visit_seq<A: SeqAccess<'de>>(self, seq: A) -> Result<AnswerColor, A::Error> {
+                Triple::deserialize(de::value::SeqAccessDeserializer::new(seq))
+                    .map(AnswerColor::Rgb)
+            }
+            fn visit_str<E: de::Error>(self, s: &str) -> Result<AnswerColor, E> {
+                Ok(AnswerColor::Hex(s.to_owned()))
+            }
+        }
+        d.deserialize_any(V)
+    }
+}
+
+impl<'de> Deserialize<'de> for AnswerSpec {
+    fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        struct V;
+        impl<'de> Visitor<'de> for V {
+            type Value = AnswerSpec;
+            fn expecting(&self, f: &mut fmt::Formatter) -> fmt::Result {
+                f.write_str(
+                    "an answer: [r, g, b], \"#RRGGBB\" or {\"color\": …, \"scale\": …, \"tolerance\": …}",
+                )
+            }
+            fn visit_seq<A: SeqAccess<'de>>(self, seq: A) -> Result<AnswerSpec, A::Error> {
+                Triple::deserialize(de::value::SeqAccessDeserializer::new(seq))
+                    .map(|c| AnswerSpec::Color(AnswerColor::Rgb(c)))
+            }
+            fn visit_str<E: de::Error>(self, s: &str) -> Result<AnswerSpec, E> {
+                Ok(AnswerSpec::Color(AnswerColor::Hex(s.to_owned())))
+            }
+            fn visit_map<A: MapAccess<'de>>(self, map: A) -> Result<AnswerSpec, A::Error> {
+                AnswerKey::deserialize(de::value::MapAccessDeserializer::new(map))
+                    .map(AnswerSpec::Key)
             }
         }
         d.deserialize_any(V)

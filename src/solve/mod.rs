@@ -7,8 +7,8 @@ mod findings;
 
 use crate::core::vector::between;
 use crate::core::{
-    shade, AllVisible, Light, LightKind, LightSet, LightStatus, LightTerm, Real, Shade, Vector,
-    Visibility, V3,
+    shade_with, AllVisible, Chapter, Formulas, Light, LightKind, LightSet, LightStatus, LightTerm,
+    Real, Shade, Vector, Visibility, V3,
 };
 use crate::geometry::{gamma, Aggregate, Ray, ShadowRays, SurfaceHit};
 use crate::problem::validate::{light_label, show};
@@ -168,6 +168,17 @@ pub enum ReadingCode {
     LineBehindOrigin,
 }
 
+impl ReadingCode {
+    /// Whether the reading is what the problem's author most likely meant (the report labels it
+    /// "likely intended reading"), rather than another way to read it.
+    pub fn likely_intended(self) -> bool {
+        match self {
+            ReadingCode::LightReversed | ReadingCode::LineBehindOrigin => true,
+            ReadingCode::NormalReversed => false,
+        }
+    }
+}
+
 impl<R: Real> Evaluation<R> {
     /// The lights this evaluation shaded with.
     pub fn lights_used<'a>(&'a self, problem: &'a Problem<R>) -> &'a LightSet<R> {
@@ -177,6 +188,15 @@ impl<R: Real> Evaluation<R> {
 
 /// Solves a validated problem.
 pub fn solve<R: Real>(problem: &Problem<R>) -> Result<Solution<R>, Invalid> {
+    solve_with(problem, Chapter)
+}
+
+/// Solves a validated problem with the core's formulas switched as `formulas` says: the mistake
+/// diagnosis of `phong check` reproduces a slip inside a formula this way.
+pub fn solve_with<R: Real, F: Formulas>(
+    problem: &Problem<R>,
+    formulas: F,
+) -> Result<Solution<R>, Invalid> {
     let mut solution = Solution {
         title: problem.title.clone(),
         question: problem.question.clone(),
@@ -199,7 +219,10 @@ pub fn solve<R: Real>(problem: &Problem<R>) -> Result<Solution<R>, Invalid> {
             });
             let at = |n, lights: Option<LightSet<R>>| {
                 let viewer = problem.viewer;
-                evaluate(problem, viewer, *position, n, None, material, lights, &mut AllVisible)
+                let vis = &mut AllVisible;
+                evaluate(
+                    problem, formulas, viewer, *position, n, None, material, lights, vis,
+                )
             };
             let eval = at(normal, None)?;
             // Readings: no light lights the surface as given, and one is behind it.
@@ -230,7 +253,14 @@ pub fn solve<R: Real>(problem: &Problem<R>) -> Result<Solution<R>, Invalid> {
         }
         Target::Ray { ray, direction, .. } => {
             let aggregate = aggregate(problem);
-            return solve_ray(problem, problem.viewer, ray, direction, &aggregate);
+            return solve_ray_with(
+                problem,
+                formulas,
+                problem.viewer,
+                ray,
+                direction,
+                &aggregate,
+            );
         }
         Target::Scene { .. } => {
             return Err(Invalid::new(
@@ -261,6 +291,18 @@ pub fn aggregate<R: Real>(problem: &Problem<R>) -> Aggregate<R> {
 /// given. This is what `phong render --explain-pixel` calls for every ray of a pixel.
 pub fn solve_ray<R: Real>(
     problem: &Problem<R>,
+    viewer: Option<V3<R>>,
+    ray: &Ray<R>,
+    direction: &GivenVector<R>,
+    aggregate: &Aggregate<R>,
+) -> Result<Solution<R>, Invalid> {
+    solve_ray_with(problem, Chapter, viewer, ray, direction, aggregate)
+}
+
+/// [`solve_ray`] with the core's formulas switched as `formulas` says (mistake diagnosis).
+pub fn solve_ray_with<R: Real, F: Formulas>(
+    problem: &Problem<R>,
+    formulas: F,
     viewer: Option<V3<R>>,
     ray: &Ray<R>,
     direction: &GivenVector<R>,
@@ -310,9 +352,31 @@ pub fn solve_ray<R: Real>(
                 normal: own,
                 traced: 0,
             };
-            evaluate(problem, viewer, Some(hit.p), Some(normal), view, &s.material, None, &mut rays)
+            let m = &s.material;
+            evaluate(
+                problem,
+                formulas,
+                viewer,
+                Some(hit.p),
+                Some(normal),
+                view,
+                m,
+                None,
+                &mut rays,
+            )
         } else {
-            evaluate(problem, viewer, Some(hit.p), Some(normal), view, &s.material, None, &mut AllVisible)
+            let (m, vis) = (&s.material, &mut AllVisible);
+            evaluate(
+                problem,
+                formulas,
+                viewer,
+                Some(hit.p),
+                Some(normal),
+                view,
+                m,
+                None,
+                vis,
+            )
         }
     };
     // The nearest hit in front of the origin, Section 4.4 (t > 0).
@@ -376,7 +440,7 @@ pub fn solve_ray<R: Real>(
 /// Each light mirrored through P: a point or spot light moves to 2P − P_l (a spot's axis
 /// reversed with it), a directional light travels the other way. Every L, R and cos ψ is
 /// then the negative of the original (cos ψ unchanged), d unchanged: exactly "L reversed".
-fn mirror_lights<R: Real>(lights: &LightSet<R>, p: V3<R>) -> LightSet<R> {
+pub(crate) fn mirror_lights<R: Real>(lights: &LightSet<R>, p: V3<R>) -> LightSet<R> {
     let mirror = |q: V3<R>| p * R::TWO - q;
     let mirrored = lights
         .lights
@@ -417,8 +481,9 @@ fn mirror_lights<R: Real>(lights: &LightSet<R>, p: V3<R>) -> LightSet<R> {
 /// problem's lights in a reading that changes them. Undefined L or V is an error here, for
 /// point and ray problems alike.
 #[allow(clippy::too_many_arguments)]
-fn evaluate<R: Real, Vis: Visibility<R>>(
+fn evaluate<R: Real, F: Formulas, Vis: Visibility<R>>(
     problem: &Problem<R>,
+    formulas: F,
     viewer: Option<V3<R>>,
     p: Option<V3<R>>,
     normal: Option<NormalUsed<R>>,
@@ -491,7 +556,14 @@ fn evaluate<R: Real, Vis: Visibility<R>>(
         v: viewer.map(|v| v.v),
     };
     let mut records = Vec::with_capacity(set.lights.len());
-    let shade = shade(&at, &material.material, set, visibility, &mut records);
+    let shade = shade_with(
+        formulas,
+        &at,
+        &material.material,
+        set,
+        visibility,
+        &mut records,
+    );
     check_finite(problem, &shade, &records)?;
 
     let m = &material.material;

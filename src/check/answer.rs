@@ -1,0 +1,324 @@
+//! Answers as people write them: three numbers separated by spaces, commas or semicolons,
+//! optionally in parentheses or brackets (`0.52 0.03 0`, `(0.52, 0.03, 0)`, `[0.52;0.03;0]`,
+//! `0,52 0,03 0` with decimal commas, `3/5` fractions), 8-bit integers with `--scale 255`, or
+//! `#RRGGBB`. The tolerance an answer is compared under has a default per scale.
+
+use crate::problem::format::{AnswerColor, AnswerSpec};
+
+/// The scale an answer is written on.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize, clap::ValueEnum)]
+pub enum Scale {
+    /// Components on [0, 1] (unclamped colours may exceed 1 or be negative).
+    #[value(name = "1")]
+    #[serde(rename = "1")]
+    Unit,
+    /// 8-bit integers 0–255 (the clamped colour times 255).
+    #[value(name = "255")]
+    #[serde(rename = "255")]
+    Bits8,
+}
+
+impl Scale {
+    /// 1 or 255.
+    pub fn factor(self) -> f64 {
+        match self {
+            Scale::Unit => 1.0,
+            Scale::Bits8 => 255.0,
+        }
+    }
+
+    /// The default tolerance on this scale (per channel, inclusive):
+    /// - 0.005 on [0, 1]: half a unit of the second decimal place, so an answer correctly
+    ///   rounded to two decimals (the precision of a hand calculation with a pocket calculator,
+    ///   rounding intermediates to three or four digits) is accepted, while the classic slips,
+    ///   which change a channel by several hundredths, are not;
+    /// - 1 on the 255 scale: round, floor and ceil of 255·c all lie within 1 of 255·c, and
+    ///   255·c itself may sit on a rounding midpoint (0.7·255 = 178.5).
+    pub fn default_tolerance(self) -> f64 {
+        match self {
+            Scale::Unit => 0.005,
+            Scale::Bits8 => 1.0,
+        }
+    }
+}
+
+/// An answer: three numbers on a scale.
+#[derive(Clone, Copy, Debug, PartialEq, serde::Serialize)]
+pub struct Answer {
+    pub values: [f64; 3],
+    pub scale: Scale,
+}
+
+/// Why an answer cannot be read; the message says what was expected.
+#[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
+#[error("{message}")]
+pub struct BadAnswer {
+    pub message: String,
+}
+
+fn bad(message: impl Into<String>) -> BadAnswer {
+    BadAnswer {
+        message: message.into(),
+    }
+}
+
+const FORMS: &str = "write three numbers such as \"0.52 0.03 0\", \"(0.52, 0.03, 0)\" or \
+                     \"[0.52; 0.03; 0]\", three integers 0–255 with --scale 255, or \"#RRGGBB\"";
+
+/// Reads an answer written on `scale` (a `#RRGGBB` answer is always on the 255 scale).
+pub fn parse(text: &str, scale: Scale) -> Result<Answer, BadAnswer> {
+    let t = text.trim();
+    if t.is_empty() {
+        return Err(bad(format!("the answer is empty: {FORMS}")));
+    }
+    if let Some(hex) = t.strip_prefix('#') {
+        return parse_hex(hex).map(|values| Answer {
+            values,
+            scale: Scale::Bits8,
+        });
+    }
+    let inner = strip_brackets(t);
+    let tokens =
+        split(inner).ok_or_else(|| bad(format!("\"{t}\" is not three numbers: {FORMS}")))?;
+    let mut values = [0.0; 3];
+    for (v, tok) in values.iter_mut().zip(&tokens) {
+        *v = number(tok)
+            .ok_or_else(|| bad(format!("\"{tok}\" in \"{t}\" is not a number: {FORMS}")))?;
+    }
+    check_scale(values, scale, t)?;
+    Ok(Answer { values, scale })
+}
+
+/// Checks that an answer's numbers fit its scale.
+fn check_scale(values: [f64; 3], scale: Scale, shown: &str) -> Result<(), BadAnswer> {
+    if scale == Scale::Bits8
+        && !values
+            .iter()
+            .all(|&x| x.fract() == 0.0 && (0.0..=255.0).contains(&x))
+    {
+        return Err(bad(format!(
+            "\"{shown}\" is not three integers 0–255, as --scale 255 expects: give 8-bit values, \
+             or leave out --scale for components on [0, 1]"
+        )));
+    }
+    Ok(())
+}
+
+/// An answer key from a problem file.
+pub fn from_key(key: &AnswerSpec) -> Result<(Answer, Option<f64>), BadAnswer> {
+    let (color, scale, tolerance) = key.parts();
+    let scale = match scale {
+        None => None,
+        Some(1.0) => Some(Scale::Unit),
+        Some(255.0) => Some(Scale::Bits8),
+        Some(s) => {
+            return Err(bad(format!(
+                "answer.scale: {s} is not a scale: use 1 (components on [0, 1]) or 255 (8-bit)"
+            )))
+        }
+    };
+    let answer = match color {
+        AnswerColor::Hex(h) => {
+            let hex = h.strip_prefix('#').ok_or_else(|| {
+                bad(format!(
+                    "answer: \"{h}\" is not a colour: write \"#RRGGBB\" or [r, g, b]"
+                ))
+            })?;
+            if scale == Some(Scale::Unit) {
+                return Err(bad(
+                    "answer.scale: a \"#RRGGBB\" colour has 8 bits per channel: \
+                                remove \"scale\" or set it to 255",
+                ));
+            }
+            Answer {
+                values: parse_hex(hex).map_err(|e| bad(format!("answer: {e}")))?,
+                scale: Scale::Bits8,
+            }
+        }
+        AnswerColor::Rgb(c) => {
+            let scale = scale.unwrap_or(Scale::Unit);
+            check_scale(*c, scale, &format!("{c:?}")).map_err(|e| bad(format!("answer: {e}")))?;
+            Answer { values: *c, scale }
+        }
+    };
+    if let Some(t) = tolerance {
+        check_tolerance(t).map_err(|e| bad(format!("answer.tolerance: {e}")))?;
+    }
+    Ok((answer, tolerance))
+}
+
+/// A tolerance must be a finite number ≥ 0.
+pub fn check_tolerance(t: f64) -> Result<(), BadAnswer> {
+    if t.is_finite() && t >= 0.0 {
+        Ok(())
+    } else {
+        Err(bad(format!(
+            "{t} is not a tolerance: give the largest difference accepted per channel, a number ≥ 0 \
+             (e.g. 0.005 on the 0–1 scale, 1 on the 255 scale)"
+        )))
+    }
+}
+
+fn parse_hex(hex: &str) -> Result<[f64; 3], BadAnswer> {
+    if hex.len() != 6 || !hex.chars().all(|c| c.is_ascii_hexdigit()) {
+        return Err(bad(format!(
+            "\"#{hex}\" is not a colour \"#RRGGBB\": six hexadecimal digits after #"
+        )));
+    }
+    let byte = |i: usize| f64::from(u8::from_str_radix(&hex[i..i + 2], 16).expect("hex digits"));
+    Ok([byte(0), byte(2), byte(4)])
+}
+
+/// Removes one pair of surrounding brackets: (), [], {}, or a leading "rgb(".
+fn strip_brackets(t: &str) -> &str {
+    let t = t.strip_prefix("rgb").map_or(t, str::trim_start);
+    for (open, close) in [('(', ')'), ('[', ']'), ('{', '}')] {
+        if let Some(inner) = t.strip_prefix(open).and_then(|s| s.strip_suffix(close)) {
+            return inner.trim();
+        }
+    }
+    t
+}
+
+/// Splits into exactly three number tokens. Semicolons, when present, are the only separators
+/// (and a comma is then a decimal comma). Otherwise spaces and commas separate; if that does not
+/// give three tokens, spaces alone with decimal commas ("0,52 0,03 0").
+fn split(s: &str) -> Option<Vec<String>> {
+    let three = |v: Vec<String>| (v.len() == 3).then_some(v);
+    if s.contains(';') {
+        return three(s.split(';').map(|x| x.trim().replace(',', ".")).collect());
+    }
+    let by_both: Vec<String> = s
+        .split(|c: char| c == ',' || c.is_whitespace())
+        .filter(|x| !x.is_empty())
+        .map(str::to_owned)
+        .collect();
+    if by_both.len() == 3 {
+        return Some(by_both);
+    }
+    three(
+        s.split_whitespace()
+            .map(|x| x.trim_end_matches(',').replace(',', "."))
+            .collect(),
+    )
+}
+
+/// A finite decimal number, or a fraction a/b.
+fn number(tok: &str) -> Option<f64> {
+    let x = match tok.split_once('/') {
+        Some((a, b)) => decimal(a)? / decimal(b)?,
+        None => decimal(tok)?,
+    };
+    x.is_finite().then_some(x)
+}
+
+/// A decimal number (no "inf", "nan" or hexadecimal).
+fn decimal(tok: &str) -> Option<f64> {
+    let t = tok.trim();
+    let ok = !t.is_empty()
+        && t.chars()
+            .all(|c| c.is_ascii_digit() || matches!(c, '.' | '-' | '+' | 'e' | 'E'))
+        && t.chars().any(|c| c.is_ascii_digit());
+    if ok {
+        t.parse().ok()
+    } else {
+        None
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn unit(text: &str) -> [f64; 3] {
+        parse(text, Scale::Unit).expect(text).values
+    }
+
+    #[test]
+    fn the_forms_people_write_all_read_the_same_numbers() {
+        let want = [0.52, 0.03, 0.0];
+        for text in [
+            "0.52 0.03 0",
+            "0.52, 0.03, 0",
+            "0.52,0.03,0",
+            "(0.52, 0.03, 0)",
+            "[0.52 0.03 0]",
+            "{0.52; 0.03; 0}",
+            "  ( 0.52 ,  0.03 , 0 )  ",
+            "0,52 0,03 0",
+            "0,52; 0,03; 0",
+            "rgb(0.52, 0.03, 0)",
+            "52e-2 3E-2 -0",
+        ] {
+            assert_eq!(unit(text), want, "{text}");
+        }
+        assert_eq!(unit("3/5 0 4/5"), [0.6, 0.0, 0.8]);
+        assert_eq!(unit("-0.299 -0.36 -0.25"), [-0.299, -0.36, -0.25]);
+    }
+
+    #[test]
+    fn eight_bit_answers_need_integers_from_0_to_255() {
+        let a = parse("134 7 0", Scale::Bits8).unwrap();
+        assert_eq!(a.values, [134.0, 7.0, 0.0]);
+        assert!(parse("134 7 256", Scale::Bits8).is_err());
+        assert!(parse("0.5 7 0", Scale::Bits8).is_err());
+        assert!(parse("-1 7 0", Scale::Bits8).is_err());
+    }
+
+    #[test]
+    fn a_hex_colour_is_read_on_the_255_scale_whatever_the_flag() {
+        let a = parse("#86070a", Scale::Unit).unwrap();
+        assert_eq!(a.scale, Scale::Bits8);
+        assert_eq!(a.values, [134.0, 7.0, 10.0]);
+        assert!(parse("#86070", Scale::Unit).is_err());
+        assert!(parse("#86070g", Scale::Unit).is_err());
+    }
+
+    #[test]
+    fn what_is_not_three_finite_numbers_is_refused_with_the_forms_expected() {
+        for text in [
+            "",
+            "0.5 0.5",
+            "0.5 0.5 0.5 0.5",
+            "a b c",
+            "inf 0 0",
+            "nan 0 0",
+            "1/0 0 0",
+            "0x1 0 0",
+            "0,5,0,3,0",
+        ] {
+            let e = parse(text, Scale::Unit).unwrap_err();
+            assert!(
+                e.message.contains("three numbers")
+                    || e.message.contains("not a number")
+                    || e.message.contains("empty"),
+                "{text}: {e}"
+            );
+        }
+    }
+
+    #[test]
+    fn an_answer_key_reads_its_own_scale_and_tolerance() {
+        let key: AnswerSpec =
+            serde_json::from_str(r#"{"color": [134, 7, 0], "scale": 255, "tolerance": 2}"#)
+                .unwrap();
+        let (a, t) = from_key(&key).unwrap();
+        assert_eq!(
+            (a.values, a.scale, t),
+            ([134.0, 7.0, 0.0], Scale::Bits8, Some(2.0))
+        );
+        let key: AnswerSpec = serde_json::from_str(r##""#FF8000""##).unwrap();
+        assert_eq!(from_key(&key).unwrap().0.values, [255.0, 128.0, 0.0]);
+        let key: AnswerSpec = serde_json::from_str("[0.5, 0.7, 0.3]").unwrap();
+        assert_eq!(from_key(&key).unwrap().0.scale, Scale::Unit);
+        let key: AnswerSpec =
+            serde_json::from_str(r#"{"color": [1, 2, 3], "scale": 100}"#).unwrap();
+        assert!(from_key(&key).unwrap_err().message.contains("answer.scale"));
+        let key: AnswerSpec =
+            serde_json::from_str(r#"{"color": [1, 2, 3], "tolerance": -1}"#).unwrap();
+        assert!(from_key(&key)
+            .unwrap_err()
+            .message
+            .contains("answer.tolerance"));
+    }
+}

@@ -1,0 +1,418 @@
+//! Checking answers: `phong check` and `phong grade`.
+//!
+//! A problem is solved once into an [`Expected`]: the colour of the problem as written, the
+//! colours of its readings, and the colour each classic slip (and pair of slips) gives, all
+//! computed by the same solver and core ([`slips`]). Judging an answer against it is then a few
+//! comparisons, cheap enough to grade a class's CSV in one pass ([`grade`]).
+//!
+//! Verdicts (see README "Checking answers"):
+//! - `right` (accepted, exit 0): within the tolerance of the problem as written, its colour
+//!   clamped to [0, 1] or, on the 0–1 scale, unclamped (Eq. 4.16 does not clamp; the chapter
+//!   clamps only for display, so both are right answers);
+//! - `reading` (accepted, exit 0, unless `--strict`): the problem as written is surprising and
+//!   the answer matches the reading the solver labels *likely intended* (4.2: L reversed; 4.3:
+//!   the line's hit behind the origin);
+//! - `wrong` (exit 1): anything else, with the slips whose colour it matches, and the other
+//!   reading it matches, if any (4.2's "normal reversed" is |cos θ|, a slip, not an intent).
+
+pub mod answer;
+pub mod grade;
+pub mod messages;
+pub mod report;
+pub mod slips;
+
+use crate::problem::Problem;
+use crate::solve::{Evaluation, ReadingCode};
+
+pub use answer::{Answer, BadAnswer, Scale};
+pub use slips::{Outcome, Slip};
+
+/// A colour an answer can be compared with, on the 0–1 scale.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Target {
+    /// The colour of Eq. 4.16 (for a literal slip: with negative cosines kept).
+    pub unclamped: [f64; 3],
+    /// Clamped to [0, 1]; `None` for the literal value, which is a colour only unclamped.
+    pub clamped: Option<[f64; 3]>,
+}
+
+impl Target {
+    fn of(e: &Evaluation<f64>) -> Self {
+        use crate::core::Vector;
+        Target {
+            unclamped: e.shade.color.to_array(),
+            clamped: Some(e.clamped.to_array()),
+        }
+    }
+}
+
+/// Which value of a target an answer was compared with.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Against {
+    /// The colour clamped to [0, 1] (times 255 on the 255 scale).
+    Clamped,
+    /// The colour before clamping.
+    Unclamped,
+}
+
+/// An answer against one target.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Comparison {
+    pub against: Against,
+    /// The target's value on the answer's scale.
+    pub expected: [f64; 3],
+    /// answer − expected, per channel, on the answer's scale.
+    pub difference: [f64; 3],
+    /// Every |difference| within the tolerance.
+    pub within: bool,
+}
+
+/// Compares an answer with a target: the clamped colour first, then (0–1 scale only) the
+/// unclamped one; the first within the tolerance, or else the clamped one. `None` when the
+/// target has no value on the answer's scale (a literal value against an 8-bit answer).
+pub fn compare(answer: &Answer, target: &Target, tolerance: f64) -> Option<Comparison> {
+    let with = |against, expected: [f64; 3]| {
+        let difference = [0, 1, 2].map(|i| answer.values[i] - expected[i]);
+        // A decimal answer is not exact in binary: 0.25 − 0.245 is 0.0050000000000000044.
+        let slack = tolerance * 1e-9 + 1e-12;
+        Comparison {
+            against,
+            expected,
+            difference,
+            within: difference.iter().all(|d| d.abs() <= tolerance + slack),
+        }
+    };
+    let k = answer.scale.factor();
+    let clamped = target
+        .clamped
+        .map(|c| with(Against::Clamped, c.map(|x| x * k)));
+    let unclamped =
+        (answer.scale == Scale::Unit).then(|| with(Against::Unclamped, target.unclamped));
+    match (clamped, unclamped) {
+        (Some(c), _) if c.within => Some(c),
+        (_, Some(u)) if u.within => Some(u),
+        (Some(c), _) => Some(c),
+        (None, u) => u,
+    }
+}
+
+/// A reading of the problem and its colour.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ReadingTarget {
+    pub code: ReadingCode,
+    /// The solver labels it the likely intended reading.
+    pub likely_intended: bool,
+    pub target: Target,
+}
+
+/// Everything an answer to one problem is judged against, computed once.
+#[derive(Clone, Debug)]
+pub struct Expected {
+    /// The problem as written; `None` when there is nothing to shade (the ray hits nothing).
+    pub solution: Option<Target>,
+    pub readings: Vec<ReadingTarget>,
+    /// What each applicable slip, and pair of slips, gives.
+    pub outcomes: Vec<Outcome>,
+}
+
+impl Expected {
+    /// Solves the problem, its readings and its slips (f64, the reference precision).
+    pub fn of(problem: &Problem<f64>) -> Result<Expected, crate::problem::Invalid> {
+        let solution = crate::solve::solve(problem)?;
+        let base = solution.evaluation.as_ref().map(Target::of);
+        let readings = solution
+            .readings
+            .iter()
+            .map(|r| ReadingTarget {
+                code: r.code,
+                likely_intended: r.code.likely_intended(),
+                target: Target::of(&r.evaluation),
+            })
+            .collect();
+        Ok(Expected {
+            solution: base,
+            readings,
+            outcomes: slips::outcomes(problem, base.as_ref()),
+        })
+    }
+
+    /// The colour an answer is measured against: the problem as written, or, when it has none,
+    /// its likely intended reading.
+    pub fn reference(&self) -> Option<(Target, Option<ReadingCode>)> {
+        match self.solution {
+            Some(t) => Some((t, None)),
+            None => self
+                .readings
+                .iter()
+                .find(|r| r.likely_intended)
+                .map(|r| (r.target, Some(r.code))),
+        }
+    }
+}
+
+/// The verdict on an answer.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum VerdictKind {
+    Right,
+    Reading,
+    Wrong,
+}
+
+/// A slip (or pair) the answer matches.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Diagnosis {
+    pub slips: Vec<Slip>,
+    /// Those of `slips` that are the likely intended reading (not counted as mistakes).
+    pub intended: Vec<Slip>,
+    pub comparison: Comparison,
+}
+
+impl Diagnosis {
+    /// The slips that are mistakes (all but the likely intended reading's).
+    pub fn mistakes(&self) -> Vec<Slip> {
+        let m: Vec<Slip> = self
+            .slips
+            .iter()
+            .copied()
+            .filter(|s| !self.intended.contains(s))
+            .collect();
+        if m.is_empty() {
+            self.slips.clone()
+        } else {
+            m
+        }
+    }
+}
+
+/// The verdict on one answer, with everything the report says about it.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Verdict {
+    pub kind: VerdictKind,
+    /// Right, or a likely intended reading without `--strict`: exit 0.
+    pub accepted: bool,
+    /// The answer against the problem as written (or the reading it matches, or, when the
+    /// problem as written has no colour, its likely intended reading).
+    pub comparison: Option<Comparison>,
+    /// The answer against the problem as written; `None` when it has no colour.
+    pub written: Option<Comparison>,
+    /// What `comparison` is against: `None` for the problem as written, or a reading.
+    pub compared_reading: Option<ReadingCode>,
+    /// A reading the answer matches (for a wrong answer: one not likely intended).
+    pub reading: Option<ReadingTarget>,
+    /// The slips whose colour the answer matches: single slips, or pairs where no single does.
+    pub diagnosis: Vec<Diagnosis>,
+    /// The diagnosis needed pairs of slips (no single slip matched).
+    pub pairs: bool,
+    /// A wrong 0–1 answer whose numbers look like 8-bit values (integers, some above 1).
+    pub looks_8bit: bool,
+}
+
+/// Judges an answer.
+pub fn judge(expected: &Expected, answer: &Answer, tolerance: f64, strict: bool) -> Verdict {
+    let mut v = Verdict {
+        kind: VerdictKind::Wrong,
+        accepted: false,
+        comparison: None,
+        written: None,
+        compared_reading: None,
+        reading: None,
+        diagnosis: Vec::new(),
+        pairs: false,
+        looks_8bit: false,
+    };
+    if let Some(t) = &expected.solution {
+        v.comparison = compare(answer, t, tolerance);
+        v.written = v.comparison;
+        if v.comparison.is_some_and(|c| c.within) {
+            v.kind = VerdictKind::Right;
+            v.accepted = true;
+            return v;
+        }
+    }
+    for r in &expected.readings {
+        if let Some(c) = compare(answer, &r.target, tolerance).filter(|c| c.within) {
+            v.reading = Some(r.clone());
+            if r.likely_intended {
+                v.kind = VerdictKind::Reading;
+                v.accepted = !strict;
+                v.comparison = Some(c);
+                v.compared_reading = Some(r.code);
+                return v;
+            }
+        }
+    }
+    if v.comparison.is_none() {
+        if let Some((t, code)) = expected.reference() {
+            v.comparison = compare(answer, &t, tolerance);
+            v.compared_reading = code;
+        }
+    }
+    // A slip that is the likely intended reading of the problem (L reversed in 4.2, the hit
+    // behind the origin in 4.3) does not count as a second slip: a pair made of it and one
+    // slip is the one slip, made in the intended reading.
+    let intended: Vec<Slip> = expected
+        .readings
+        .iter()
+        .filter(|r| r.likely_intended)
+        .filter_map(|r| match r.code {
+            ReadingCode::LightReversed => Some(Slip::LightReversed),
+            ReadingCode::LineBehindOrigin => Some(Slip::HitBehindOrigin),
+            ReadingCode::NormalReversed => None,
+        })
+        .collect();
+    let level = |o: &&Outcome| {
+        let free = o.slips.iter().filter(|s| intended.contains(s)).count();
+        o.slips.len() - free.min(o.slips.len() - 1)
+    };
+    let matching = |pairs: bool| {
+        expected
+            .outcomes
+            .iter()
+            .filter(|o| (level(o) > 1) == pairs)
+            .filter_map(|o| {
+                compare(answer, &o.target, tolerance)
+                    .filter(|c| c.within)
+                    .map(|comparison| Diagnosis {
+                        slips: o.slips.clone(),
+                        intended: o
+                            .slips
+                            .iter()
+                            .copied()
+                            .filter(|s| o.slips.len() > 1 && intended.contains(s))
+                            .collect(),
+                        comparison,
+                    })
+            })
+            .collect::<Vec<_>>()
+    };
+    v.diagnosis = matching(false);
+    if v.diagnosis.is_empty() {
+        v.diagnosis = matching(true);
+        v.pairs = !v.diagnosis.is_empty();
+    }
+    v.looks_8bit = answer.scale == Scale::Unit
+        && answer
+            .values
+            .iter()
+            .all(|x| x.fract() == 0.0 && (0.0..=255.0).contains(x))
+        && answer.values.iter().any(|&x| x > 1.0);
+    v
+}
+
+/// How `phong check` reads and judges an answer.
+#[derive(Clone, Debug)]
+pub struct CheckOptions {
+    /// The answer as written; `None` to check the file's answer key.
+    pub answer: Option<String>,
+    /// The scale of an answer that is not `#RRGGBB`.
+    pub scale: Scale,
+    /// `None`: the key's tolerance, or the scale's default.
+    pub tolerance: Option<f64>,
+    /// Only the problem as written is right.
+    pub strict: bool,
+}
+
+/// Checks one problem file's answer (given, or its key). Never fails: a bad file or answer is
+/// reported in the result, which names the file, the field and the fix.
+pub fn check_file(path: &std::path::Path, options: &CheckOptions) -> report::Checked {
+    use report::{AnswerSource, Checked, Failure};
+    let file = path.display().to_string();
+    let source = if options.answer.is_some() {
+        AnswerSource::Argument
+    } else {
+        AnswerSource::Key
+    };
+    let mut checked = Checked {
+        file: file.clone(),
+        text: options.answer.clone(),
+        source,
+        outcome: Err(Failure {
+            kind: "no_answer",
+            field: None,
+            message: String::new(),
+        }),
+    };
+    let problem_error = |e: crate::problem::ProblemError| Failure {
+        kind: e.kind(),
+        field: e.field().map(str::to_owned),
+        message: e.to_string(),
+    };
+    let parsed = match crate::problem::parse_file(path) {
+        Ok(f) => f,
+        Err(e) => {
+            checked.outcome = Err(problem_error(e));
+            return checked;
+        }
+    };
+    // The answer: --answer, or the file's key.
+    let answer = match (&options.answer, &parsed.answer) {
+        (Some(text), _) => answer::parse(text, options.scale)
+            .map(|a| (a, None))
+            .map_err(|e| Failure {
+                kind: "answer",
+                field: Some("--answer".into()),
+                message: format!("{file}: --answer: {e}"),
+            }),
+        (None, Some(key)) => {
+            checked.text = Some(serde_json::to_string(&key_json(key)).unwrap_or_default());
+            answer::from_key(key).map_err(|e| Failure {
+                kind: "answer",
+                field: Some("answer".into()),
+                message: format!("{file}: {e}"),
+            })
+        }
+        (None, None) => Err(Failure {
+            kind: "no_answer",
+            field: Some("answer".into()),
+            message: format!(
+                "{file}: answer: missing: the file has no answer key to check. Fix: pass \
+                 --answer \"r g b\", or add \"answer\": [r, g, b] to the file"
+            ),
+        }),
+    };
+    let (answer, key_tolerance) = match answer {
+        Ok(a) => a,
+        Err(f) => {
+            checked.outcome = Err(f);
+            return checked;
+        }
+    };
+    let problem = match crate::problem::validate::validate::<f64>(&parsed) {
+        Ok(p) => p,
+        Err(e) => {
+            checked.outcome = Err(problem_error(e.at(path)));
+            return checked;
+        }
+    };
+    let expected = match Expected::of(&problem) {
+        Ok(x) => x,
+        Err(e) => {
+            checked.outcome = Err(problem_error(e.at(path)));
+            return checked;
+        }
+    };
+    let tolerance = options
+        .tolerance
+        .or(key_tolerance)
+        .unwrap_or_else(|| answer.scale.default_tolerance());
+    let verdict = judge(&expected, &answer, tolerance, options.strict);
+    checked.outcome = Ok((answer, tolerance, verdict));
+    checked
+}
+
+/// The key as the file wrote it, for the report.
+fn key_json(key: &crate::problem::format::AnswerSpec) -> serde_json::Value {
+    use crate::problem::format::{AnswerColor, AnswerSpec};
+    let color = |c: &AnswerColor| match c {
+        AnswerColor::Rgb(v) => serde_json::json!(v),
+        AnswerColor::Hex(h) => serde_json::json!(h),
+    };
+    match key {
+        AnswerSpec::Color(c) => color(c),
+        AnswerSpec::Key(k) => serde_json::json!({
+            "color": color(&k.color), "scale": k.scale, "tolerance": k.tolerance
+        }),
+    }
+}

@@ -1,0 +1,359 @@
+//! The verdict of `phong check` for people (text, English or Portuguese) and for scripts (stable
+//! JSON, [`CHECK_FORMAT_VERSION`]). Field names are part of the interface: renaming or removing
+//! one bumps the version; adding one does not.
+
+use std::fmt::Write;
+
+use serde::Serialize;
+
+use super::messages::{self, Line};
+use super::{Answer, Comparison, Scale, Verdict, VerdictKind};
+use crate::report::lang::Lang;
+use crate::report::number::num;
+use crate::solve::ReadingCode;
+
+/// The version of the JSON output of `phong check` and `phong grade`.
+pub const CHECK_FORMAT_VERSION: u32 = 1;
+
+/// Where the answer came from.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum AnswerSource {
+    /// `--answer` (or a CSV row).
+    Argument,
+    /// The problem file's `answer` field.
+    Key,
+}
+
+/// One checked answer, or why it could not be checked.
+#[derive(Clone, Debug)]
+pub struct Checked {
+    pub file: String,
+    /// The answer as written, when there is one.
+    pub text: Option<String>,
+    pub source: AnswerSource,
+    pub outcome: Result<(Answer, f64, Verdict), Failure>,
+}
+
+/// Why an answer could not be checked.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct Failure {
+    /// "read", "syntax" or "invalid" (the problem file), "answer" (the answer), "no_answer".
+    pub kind: &'static str,
+    pub field: Option<String>,
+    pub message: String,
+}
+
+impl Checked {
+    /// 0 accepted, 1 wrong (or a reading under --strict), 2 cannot be checked.
+    pub fn exit_code(&self) -> u8 {
+        match &self.outcome {
+            Ok((_, _, v)) if v.accepted => 0,
+            Ok(_) => 1,
+            Err(_) => 2,
+        }
+    }
+}
+
+fn signed(x: f64) -> String {
+    let s = num(x);
+    if x > 0.0 && s != "0" {
+        format!("+{s}")
+    } else {
+        s
+    }
+}
+
+fn triple(v: [f64; 3], f: fn(f64) -> String) -> String {
+    format!("({}, {}, {})", f(v[0]), f(v[1]), f(v[2]))
+}
+
+/// The text report of one check.
+pub fn text(c: &Checked, lang: Lang) -> String {
+    let mut out = String::new();
+    let (answer, tolerance, v) = match &c.outcome {
+        Err(f) => {
+            let _ = writeln!(
+                out,
+                "{}: {}: {}",
+                c.file,
+                messages::invalid(lang),
+                f.message
+            );
+            return out;
+        }
+        Ok(x) => x,
+    };
+    let _ = writeln!(
+        out,
+        "{}: {}",
+        c.file,
+        messages::verdict(v.kind, v.accepted, lang)
+    );
+    let label = |l| format!("{:<11}", messages::line(l, lang));
+    let _ = writeln!(
+        out,
+        "  {}{}",
+        label(Line::Answer),
+        triple(answer.values, num)
+    );
+    match &v.comparison {
+        Some(cmp) => {
+            let _ = writeln!(
+                out,
+                "  {}{}  {}",
+                label(Line::Expected),
+                triple(cmp.expected, num),
+                messages::expected_source(v.compared_reading, cmp.against, lang)
+            );
+            let _ = writeln!(
+                out,
+                "  {}{}",
+                label(Line::Difference),
+                triple(cmp.difference, signed)
+            );
+        }
+        None => {
+            let _ = writeln!(out, "  {}", messages::nothing_to_shade(lang));
+        }
+    }
+    let _ = writeln!(
+        out,
+        "  {}±{} {}",
+        label(Line::Tolerance),
+        num(*tolerance),
+        messages::per_channel(answer.scale, lang)
+    );
+    if v.comparison
+        .is_some_and(|c| c.within && c.against == super::Against::Unclamped)
+    {
+        let _ = writeln!(out, "  {}", messages::unclamped_note(lang));
+    }
+    if let Some(r) = &v.reading {
+        let likely = v.kind == VerdictKind::Reading;
+        let _ = writeln!(out, "  {}", messages::matches_reading(r.code, likely, lang));
+        if likely {
+            match &v.written {
+                Some(w) => {
+                    let _ = writeln!(
+                        out,
+                        "  {:<11}{}",
+                        messages::as_written(lang),
+                        triple(w.expected, num)
+                    );
+                }
+                None => {
+                    let _ = writeln!(out, "  {}", messages::nothing_to_shade(lang));
+                }
+            }
+        }
+    }
+    if v.kind == VerdictKind::Wrong {
+        if v.diagnosis.is_empty() {
+            let _ = writeln!(out, "  {}", messages::no_diagnosis(lang));
+        } else {
+            let _ = writeln!(out, "  {}", messages::diagnosis_intro(v.pairs, lang));
+            for d in &v.diagnosis {
+                let within = if d.intended.is_empty() {
+                    String::new()
+                } else {
+                    format!(" ({})", messages::in_intended_reading(lang))
+                };
+                let _ = writeln!(
+                    out,
+                    "    - {}{within}: {}",
+                    messages::slips(&d.mistakes(), lang),
+                    triple(d.comparison.expected, num)
+                );
+            }
+        }
+        if v.looks_8bit {
+            let _ = writeln!(out, "  {}", messages::looks_8bit(lang));
+        }
+    }
+    out
+}
+
+/// The JSON form of a comparison's target.
+#[derive(Serialize)]
+pub struct ExpectedOut {
+    /// The colour compared with, on the answer's scale.
+    pub color: [f64; 3],
+    /// "solution" (the problem as written) or "reading".
+    pub source: &'static str,
+    /// The reading's code when `source` is "reading".
+    pub reading: Option<ReadingCode>,
+    /// "clamped" or "unclamped".
+    pub against: super::Against,
+}
+
+#[derive(Serialize)]
+pub struct AnswerOut {
+    pub text: Option<String>,
+    pub source: AnswerSource,
+    /// 1 or 255.
+    pub scale: Option<u32>,
+    pub values: Option<[f64; 3]>,
+}
+
+#[derive(Serialize)]
+pub struct ReadingOut {
+    pub code: ReadingCode,
+    pub likely_intended: bool,
+    pub label: &'static str,
+}
+
+#[derive(Serialize)]
+pub struct DiagnosisOut {
+    /// The slips' codes (one, or two made together).
+    pub slips: Vec<super::Slip>,
+    /// Those of `slips` that are the likely intended reading of the problem, not mistakes.
+    pub intended: Vec<super::Slip>,
+    /// The mistakes, in words.
+    pub description: String,
+    /// The colour those slips give, on the answer's scale.
+    pub color: [f64; 3],
+    pub difference: [f64; 3],
+}
+
+/// One check, for scripts.
+#[derive(Serialize)]
+pub struct CheckOut {
+    pub format_version: u32,
+    pub file: String,
+    pub answer: AnswerOut,
+    pub tolerance: Option<f64>,
+    /// "right", "reading", "wrong" or "invalid".
+    pub verdict: &'static str,
+    /// Exit code 0: right, or a likely intended reading without --strict.
+    pub accepted: bool,
+    pub message: String,
+    pub expected: Option<ExpectedOut>,
+    pub difference: Option<[f64; 3]>,
+    pub reading: Option<ReadingOut>,
+    pub diagnosis: Vec<DiagnosisOut>,
+    pub error: Option<Failure>,
+}
+
+fn expected_out(cmp: &Comparison, reading: Option<ReadingCode>) -> ExpectedOut {
+    ExpectedOut {
+        color: cmp.expected,
+        source: if reading.is_some() {
+            "reading"
+        } else {
+            "solution"
+        },
+        reading,
+        against: cmp.against,
+    }
+}
+
+/// The JSON document of one check.
+pub fn json(c: &Checked) -> CheckOut {
+    let mut out = CheckOut {
+        format_version: CHECK_FORMAT_VERSION,
+        file: c.file.clone(),
+        answer: AnswerOut {
+            text: c.text.clone(),
+            source: c.source,
+            scale: None,
+            values: None,
+        },
+        tolerance: None,
+        verdict: "invalid",
+        accepted: false,
+        message: String::new(),
+        expected: None,
+        difference: None,
+        reading: None,
+        diagnosis: Vec::new(),
+        error: None,
+    };
+    match &c.outcome {
+        Err(f) => {
+            out.message = f.message.clone();
+            out.error = Some(f.clone());
+        }
+        Ok((answer, tolerance, v)) => {
+            out.answer.scale = Some(scale_number(answer.scale));
+            out.answer.values = Some(answer.values);
+            out.tolerance = Some(*tolerance);
+            out.verdict = verdict_code(v.kind);
+            out.accepted = v.accepted;
+            out.message = messages::summary(v.kind, v.accepted, v.reading.as_ref().map(|r| r.code));
+            out.expected = v
+                .comparison
+                .as_ref()
+                .map(|cmp| expected_out(cmp, v.compared_reading));
+            out.difference = v.comparison.map(|c| c.difference);
+            out.reading = v.reading.as_ref().map(|r| ReadingOut {
+                code: r.code,
+                likely_intended: r.likely_intended,
+                label: messages::reading(r.code, Lang::En),
+            });
+            out.diagnosis = v
+                .diagnosis
+                .iter()
+                .map(|d| DiagnosisOut {
+                    slips: d.slips.clone(),
+                    intended: d.intended.clone(),
+                    description: messages::slips(&d.mistakes(), Lang::En),
+                    color: d.comparison.expected,
+                    difference: d.comparison.difference,
+                })
+                .collect();
+        }
+    }
+    out
+}
+
+/// 1 or 255.
+pub fn scale_number(s: Scale) -> u32 {
+    match s {
+        Scale::Unit => 1,
+        Scale::Bits8 => 255,
+    }
+}
+
+/// The stable code of a verdict.
+pub fn verdict_code(k: VerdictKind) -> &'static str {
+    match k {
+        VerdictKind::Right => "right",
+        VerdictKind::Reading => "reading",
+        VerdictKind::Wrong => "wrong",
+    }
+}
+
+/// What the problem, its readings and each applicable slip give (`phong check --slips`).
+pub fn slips_text(file: &str, x: &super::Expected, lang: Lang) -> String {
+    let mut out = String::new();
+    let _ = writeln!(out, "{file}");
+    let show = |t: &super::Target| match t.clamped {
+        Some(c) if c != t.unclamped => {
+            format!("{}  ({})", triple(c, num), triple(t.unclamped, num))
+        }
+        Some(c) => triple(c, num),
+        None => format!("({})", triple(t.unclamped, num)),
+    };
+    match &x.solution {
+        Some(t) => {
+            let _ = writeln!(out, "  {:<11}{}", messages::as_written(lang), show(t));
+        }
+        None => {
+            let _ = writeln!(out, "  {}", messages::nothing_to_shade(lang));
+        }
+    }
+    for r in &x.readings {
+        let _ = writeln!(
+            out,
+            "  {}: {}",
+            messages::reading(r.code, lang),
+            show(&r.target)
+        );
+    }
+    for o in &x.outcomes {
+        let codes: Vec<_> = o.slips.iter().map(|s| s.code()).collect();
+        let _ = writeln!(out, "  {:<44} {}", codes.join(" + "), show(&o.target));
+    }
+    out
+}

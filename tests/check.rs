@@ -1,0 +1,395 @@
+//! `phong check` from the outside: exit codes (0 accepted, 1 wrong, 2 bad input), the forms
+//! of answers, scales and tolerances, answer keys, readings, the JSON fields, and insta
+//! snapshots of the text and JSON verdicts on the chapter's exercises.
+//!
+//! Expected colours are worked out by hand in the comments (4.1: O_a·I_a; the others are the
+//! values README and tests/hand_calculations.rs derive independently).
+
+use std::io::Write;
+
+use assert_cmd::Command;
+use predicates::prelude::*;
+use serde_json::Value;
+
+fn phong() -> Command {
+    let mut c = Command::cargo_bin("phong").unwrap();
+    c.current_dir(env!("CARGO_MANIFEST_DIR"));
+    c
+}
+
+fn check(file: &str, args: &[&str]) -> (i32, String, String) {
+    let out = phong()
+        .arg("check")
+        .arg(format!("exercises/{file}"))
+        .args(args)
+        .output()
+        .unwrap();
+    (
+        out.status.code().unwrap(),
+        String::from_utf8(out.stdout).unwrap(),
+        String::from_utf8(out.stderr).unwrap(),
+    )
+}
+
+fn check_json(file: &str, args: &[&str]) -> (i32, Value) {
+    let mut a = vec!["--format", "json"];
+    a.extend_from_slice(args);
+    let (code, out, _) = check(file, &a);
+    (code, serde_json::from_str(&out).expect("JSON"))
+}
+
+fn temp_problem(text: &str) -> tempfile::NamedTempFile {
+    let mut f = tempfile::Builder::new().suffix(".json").tempfile().unwrap();
+    f.write_all(text.as_bytes()).unwrap();
+    f
+}
+
+// Exercise 4.1: O_a = 1·(0.5, 0.7, 0.3), I_a = (1, 1, 1): the colour is (0.5, 0.7, 0.3).
+
+#[test]
+fn a_right_answer_exits_0_in_every_form_people_write() {
+    for answer in [
+        "0.5 0.7 0.3",
+        "0.5, 0.7, 0.3",
+        "(0.5, 0.7, 0.3)",
+        "[0.5; 0.7; 0.3]",
+        "0,5 0,7 0,3",
+        "1/2 7/10 3/10",
+    ] {
+        let (code, out, _) = check("4.1.json", &["--answer", answer]);
+        assert_eq!(code, 0, "{answer}: {out}");
+        assert!(out.contains(": right"), "{out}");
+    }
+}
+
+#[test]
+fn the_default_tolerance_is_half_a_unit_of_the_second_decimal() {
+    // 0.505 is 0.005 from 0.5: accepted (inclusive); 0.506 is not.
+    assert_eq!(check("4.1.json", &["--answer", "0.505 0.7 0.3"]).0, 0);
+    assert_eq!(check("4.1.json", &["--answer", "0.506 0.7 0.3"]).0, 1);
+    // Two decimals, correctly rounded, always pass: 0.25 for 0.245 (4.2's reading below).
+    assert_eq!(
+        check(
+            "4.1.json",
+            &["--answer", "0.506 0.7 0.3", "--tolerance", "0.01"]
+        )
+        .0,
+        0
+    );
+}
+
+#[test]
+fn eight_bit_answers_accept_round_floor_and_ceil_of_255_c() {
+    // 255·(0.5, 0.7, 0.3) = (127.5, 178.5, 76.5): 127/128, 178/179, 76/77 all within 1.
+    for answer in ["128 179 77", "127 178 76", "#80B34D", "#7fb24c"] {
+        let (code, out, _) = check("4.1.json", &["--answer", answer, "--scale", "255"]);
+        assert_eq!(code, 0, "{answer}: {out}");
+    }
+    assert_eq!(
+        check("4.1.json", &["--answer", "126 178 76", "--scale", "255"]).0,
+        1
+    );
+    let (code, json) = check_json("4.1.json", &["--answer", "#80B34D"]);
+    assert_eq!(code, 0);
+    assert_eq!(json["answer"]["scale"], 255);
+    assert_eq!(json["tolerance"], 1.0);
+    assert_eq!(
+        json["expected"]["color"],
+        serde_json::json!([127.5, 178.5, 76.5])
+    );
+}
+
+#[test]
+fn a_0_to_1_answer_that_looks_8_bit_gets_a_hint() {
+    let (code, out, _) = check("4.1.json", &["--answer", "128 179 77"]);
+    assert_eq!(code, 1);
+    assert!(out.contains("--scale 255"), "{out}");
+}
+
+#[test]
+fn an_unclamped_answer_is_accepted_and_said_to_be_unclamped() {
+    // O_a·I_a = (0.5, 0.4, 0.2)·(3, 1, 1) = (1.5, 0.4, 0.2); clamped (1, 0.4, 0.2).
+    let f = temp_problem(
+        r#"{"lights": [{"type": "ambient", "color": [3, 1, 1]}],
+            "point": {"material": {"ambient": [0.5, 0.4, 0.2]}}}"#,
+    );
+    for (answer, against) in [("1 0.4 0.2", "clamped"), ("1.5 0.4 0.2", "unclamped")] {
+        let out = phong()
+            .args(["check", "--format", "json", "--answer", answer])
+            .arg(f.path())
+            .output()
+            .unwrap();
+        assert_eq!(out.status.code(), Some(0), "{answer}");
+        let json: Value = serde_json::from_slice(&out.stdout).unwrap();
+        assert_eq!(json["expected"]["against"], against);
+    }
+    // The 8-bit colour is always the clamped one: 255·(1, 0.4, 0.2) = (255, 102, 51).
+    phong()
+        .args(["check", "--answer", "255 102 51", "--scale", "255"])
+        .arg(f.path())
+        .assert()
+        .code(0);
+}
+
+#[test]
+fn the_4_2_answer_with_the_normal_reversed_exits_1_and_names_the_slip() {
+    // The reversed normal (|cos θ|): diffuse only, 0.7·cos θ/d etc. = (0.245, 0.28, 0.21).
+    let (code, out, _) = check("4.2.json", &["--answer", "0.245 0.28 0.21"]);
+    assert_eq!(code, 1, "{out}");
+    assert!(out.contains("wrong"), "{out}");
+    assert!(out.contains("the normal reversed"), "{out}");
+    assert!(out.contains("|cos θ| taken"), "{out}");
+    assert!(
+        out.contains("it matches the reading \"normal reversed\""),
+        "{out}"
+    );
+}
+
+#[test]
+fn the_likely_intended_reading_of_4_2_is_accepted_unless_strict() {
+    // L reversed: (0.299153, 0.361229, 0.318306); the problem as written gives (0, 0, 0).
+    let (code, json) = check_json("4.2.json", &["--answer", "0.3 0.36 0.32"]);
+    assert_eq!(code, 0);
+    assert_eq!(json["verdict"], "reading");
+    assert_eq!(json["accepted"], true);
+    assert_eq!(json["reading"]["code"], "light_reversed");
+    assert_eq!(json["expected"]["source"], "reading");
+    let (code, json) = check_json("4.2.json", &["--answer", "0.3 0.36 0.32", "--strict"]);
+    assert_eq!(code, 1);
+    assert_eq!(json["verdict"], "reading");
+    assert_eq!(json["accepted"], false);
+    // The problem as written is right too.
+    assert_eq!(check("4.2.json", &["--answer", "0 0 0"]).0, 0);
+}
+
+#[test]
+fn exercise_4_3_has_no_colour_as_written_and_its_reading_is_accepted() {
+    let (code, out, _) = check("4.3.json", &["--answer", "0.52 0.03 0"]);
+    assert_eq!(code, 0, "{out}");
+    assert!(out.contains("its ray hits nothing"), "{out}");
+}
+
+#[test]
+fn an_unreadable_answer_exits_2_naming_the_option_and_the_forms() {
+    let (code, json) = check_json("4.1.json", &["--answer", "0.5 0.7"]);
+    assert_eq!(code, 2);
+    assert_eq!(json["verdict"], "invalid");
+    assert_eq!(json["error"]["kind"], "answer");
+    assert_eq!(json["error"]["field"], "--answer");
+    let (code, _, err) = check("4.1.json", &["--answer", "0.5 0.7 x"]);
+    assert_eq!(code, 2);
+    assert!(
+        err.contains("--answer") && err.contains("three numbers such as"),
+        "{err}"
+    );
+    let (code, _, err) = check("4.1.json", &["--answer", "300 0 0", "--scale", "255"]);
+    assert_eq!(code, 2);
+    assert!(err.contains("0–255"), "{err}");
+}
+
+#[test]
+fn bad_usage_exits_2() {
+    phong()
+        .args([
+            "check",
+            "exercises/4.1.json",
+            "exercises/4.2.json",
+            "--answer",
+            "0 0 0",
+        ])
+        .assert()
+        .code(2)
+        .stderr(predicate::str::contains("--answer checks one file"));
+    phong()
+        .args([
+            "check",
+            "exercises/4.1.json",
+            "--answer",
+            "0 0 0",
+            "--tolerance",
+            "-1",
+        ])
+        .assert()
+        .code(2)
+        .stderr(predicate::str::contains("--tolerance"));
+    phong()
+        .args([
+            "check",
+            "exercises/4.1.json",
+            "--answer",
+            "0 0 0",
+            "--scale",
+            "100",
+        ])
+        .assert()
+        .code(2);
+}
+
+#[test]
+fn every_answer_key_of_the_chapter_checks_in_one_command() {
+    phong()
+        .args([
+            "check",
+            "exercises/4.1.json",
+            "exercises/4.2.json",
+            "exercises/4.3.json",
+        ])
+        .assert()
+        .code(0);
+}
+
+#[test]
+fn a_batch_of_keys_goes_on_past_bad_files_and_reports_each_in_order() {
+    let wrong_key = temp_problem(
+        r#"{"lights": [{"type": "ambient", "color": [1, 1, 1]}],
+            "point": {"material": {"ambient": [0.5, 0.7, 0.3]}},
+            "answer": {"color": [0.5, 0.7, 0.33], "tolerance": 0.05}}"#,
+    );
+    let broken = temp_problem("{");
+    let out = phong()
+        .args(["check", "--format", "json", "exercises/4.1.json"])
+        .arg(broken.path())
+        .arg(wrong_key.path())
+        .arg("exercises/spot-edge.json")
+        .arg("exercises/4.3.json")
+        .output()
+        .unwrap();
+    // The worst outcome decides: a bad file (2) over a wrong key (1) over right (0).
+    assert_eq!(out.status.code(), Some(2));
+    let docs: Value = serde_json::from_slice(&out.stdout).unwrap();
+    let verdicts: Vec<&str> = docs
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|d| d["verdict"].as_str().unwrap())
+        .collect();
+    // The key's own tolerance 0.05 accepts 0.33 for 0.3.
+    assert_eq!(
+        verdicts,
+        ["right", "invalid", "right", "invalid", "reading"]
+    );
+    assert_eq!(docs[1]["error"]["kind"], "syntax");
+    assert_eq!(docs[3]["error"]["kind"], "no_answer");
+    assert_eq!(docs[2]["tolerance"], 0.05);
+    assert_eq!(docs[2]["answer"]["source"], "key");
+}
+
+#[test]
+fn a_wrong_key_exits_1() {
+    let f = temp_problem(
+        r##"{"lights": [{"type": "ambient", "color": [1, 1, 1]}],
+            "point": {"material": {"ambient": [0.5, 0.7, 0.3]}}, "answer": "#FFFFFF"}"##,
+    );
+    phong().arg("check").arg(f.path()).assert().code(1);
+}
+
+#[test]
+fn the_json_verdict_has_its_stable_fields() {
+    let (_, json) = check_json("4.2.json", &["--answer", "0.245 0.28 0.21"]);
+    let keys: Vec<&str> = json
+        .as_object()
+        .unwrap()
+        .keys()
+        .map(String::as_str)
+        .collect();
+    assert_eq!(
+        keys,
+        [
+            "accepted",
+            "answer",
+            "diagnosis",
+            "difference",
+            "error",
+            "expected",
+            "file",
+            "format_version",
+            "message",
+            "reading",
+            "tolerance",
+            "verdict"
+        ]
+    );
+    assert_eq!(json["format_version"], 1);
+    let d = &json["diagnosis"][0];
+    for k in ["slips", "intended", "description", "color", "difference"] {
+        assert!(d.get(k).is_some(), "{k}");
+    }
+}
+
+#[test]
+fn solve_ignores_the_answer_key() {
+    // The key is checked by `phong check`; `phong solve` reads the file as before.
+    phong()
+        .args(["solve", "exercises/4.1.json"])
+        .assert()
+        .code(0)
+        .stdout(predicate::str::contains("answer").not());
+}
+
+#[test]
+fn portuguese_verdicts_use_the_chapters_terms() {
+    let (code, out, _) = check("4.2.json", &["--answer", "0.245 0.28 0.21", "--lang", "pt"]);
+    assert_eq!(code, 1);
+    assert!(
+        out.contains("errada") && out.contains("a normal invertida"),
+        "{out}"
+    );
+}
+
+// Snapshots: the verdicts a student sees for the chapter's exercises.
+
+/// Rounds every non-integer number to 10 significant digits (as tests/snapshots.rs does), and
+/// differences below 1e-12 (last-bit noise) to 0.
+fn rounded(v: Value) -> Value {
+    match v {
+        Value::Number(n) if n.is_f64() => {
+            let x = n.as_f64().unwrap();
+            let r: f64 = format!("{x:.9e}").parse().unwrap();
+            let r = if r.abs() < 1e-12 { 0.0 } else { r };
+            serde_json::Number::from_f64(r).map_or(Value::Null, Value::Number)
+        }
+        Value::Array(a) => Value::Array(a.into_iter().map(rounded).collect()),
+        Value::Object(o) => Value::Object(o.into_iter().map(|(k, v)| (k, rounded(v))).collect()),
+        other => other,
+    }
+}
+
+fn settings() -> insta::Settings {
+    let mut s = insta::Settings::clone_current();
+    s.set_snapshot_path("../snapshots");
+    s.set_prepend_module_to_snapshot(false);
+    s
+}
+
+const CASES: [(&str, &str, &str); 8] = [
+    ("4.1", "4.1.json", "0.5 0.7 0.3"),
+    ("4.1-8bit", "4.1.json", "#80B34D"),
+    ("4.2-as-written", "4.2.json", "0 0 0"),
+    ("4.2-light-reversed", "4.2.json", "0.299 0.361 0.318"),
+    ("4.2-normal-reversed", "4.2.json", "0.245 0.28 0.21"),
+    ("4.2-literal", "4.2.json", "-0.299 -0.361 -0.318"),
+    ("4.3-line", "4.3.json", "0.52 0.03 0"),
+    ("4.3-ambient-forgotten", "4.3.json", "0.024 0.027 0"),
+];
+
+#[test]
+fn text_verdicts_on_the_chapters_exercises() {
+    settings().bind(|| {
+        for (name, file, answer) in CASES {
+            let (_, out, _) = check(file, &["--answer", answer]);
+            insta::assert_snapshot!(format!("check-text@{name}"), out);
+        }
+        let (_, out, _) = check("4.2.json", &["--answer", "0.245 0.28 0.21", "--lang", "pt"]);
+        insta::assert_snapshot!("check-text-pt@4.2-normal-reversed", out);
+    });
+}
+
+#[test]
+fn json_verdicts_on_the_chapters_exercises() {
+    settings().bind(|| {
+        for (name, file, answer) in CASES {
+            let (_, json) = check_json(file, &["--answer", answer]);
+            insta::assert_json_snapshot!(format!("check-json@{name}"), rounded(json));
+        }
+    });
+}
