@@ -54,10 +54,9 @@ fn bench_precision<R: Real>(c: &mut Criterion, scenes: &[(&str, String)]) {
 }
 
 fn benches(c: &mut Criterion) {
-    let classic = std::fs::read_to_string(
-        Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/classic.json"),
-    )
-    .expect("scenes/classic.json");
+    let classic =
+        std::fs::read_to_string(Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/classic.json"))
+            .expect("scenes/classic.json");
     let scenes = [
         ("classic", classic),
         ("100k-spheres", many_spheres::scene(100_000).to_string()),

@@ -56,7 +56,11 @@ fn explain_json(scene: &Path, x: u32, y: u32, args: &[&str]) -> Value {
         .args(args)
         .output()
         .unwrap();
-    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
     serde_json::from_slice(&out.stdout).unwrap()
 }
 
@@ -67,7 +71,11 @@ fn solve_json(problem: &Path) -> Value {
         .args(["--format", "json"])
         .output()
         .unwrap();
-    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
     serde_json::from_slice(&out.stdout).unwrap()
 }
 
@@ -79,7 +87,10 @@ fn ray_problem(scene: &Value, origin: &Value, direction: &Value) -> Value {
     o.remove("camera");
     o.remove("background");
     o.remove("viewer");
-    o.insert("ray".into(), json!({ "origin": origin, "direction": direction }));
+    o.insert(
+        "ray".into(),
+        json!({ "origin": origin, "direction": direction }),
+    );
     p
 }
 
@@ -130,7 +141,14 @@ fn an_explained_pixel_has_the_colour_the_image_gives_it() {
     let dir = TempDir::new().unwrap();
     let scene = repo("scenes/classic.json");
     let (w, _, rgb) = render_ppm(&scene, &dir, "classic.ppm", &[]);
-    for (x, y) in [(320, 300), (100, 250), (500, 280), (600, 20), (0, 479), (639, 0)] {
+    for (x, y) in [
+        (320, 300),
+        (100, 250),
+        (500, 280),
+        (600, 20),
+        (0, 479),
+        (639, 0),
+    ] {
         let e = explain_json(&scene, x, y, &[]);
         let i = 3 * (y as usize * w as usize + x as usize);
         let expected: Vec<Value> = rgb[i..i + 3].iter().map(|&c| json!(c)).collect();
@@ -179,12 +197,20 @@ fn a_sphere_between_the_light_and_the_point_leaves_only_ambient_light() {
                         "specular": [0, 0, 0], "shininess": 1 });
     // The sphere at (0, 0, 2), radius 0.5, is straight above the origin, in the light's way,
     // and 1.2 from the camera ray (at (1.2, 0, 2)), so the camera sees past it.
-    let blocker = json!({ "type": "sphere", "center": [0, 0, 2], "radius": 0.5, "material": matte });
-    let scene = write(&dir, "shadow.json", &plane_scene(matte.clone(), vec![blocker], [0.0; 3]));
+    let blocker =
+        json!({ "type": "sphere", "center": [0, 0, 2], "radius": 0.5, "material": matte });
+    let scene = write(
+        &dir,
+        "shadow.json",
+        &plane_scene(matte.clone(), vec![blocker], [0.0; 3]),
+    );
     // In shadow: O_a I_a = 0.2. Without shadow rays: 0.2 + 0.4·1·cos 0 = 0.6.
     let e = explain_json(&scene, 0, 0, &[]);
     assert_close(path_color(&e), [0.2; 3]);
-    assert_eq!(e["samples"][0]["rays"][0]["solve"]["solution"]["lights"][0]["status"], "in_shadow");
+    assert_eq!(
+        e["samples"][0]["rays"][0]["solve"]["solution"]["lights"][0]["status"],
+        "in_shadow"
+    );
     assert_eq!(e["rgb8"], json!([51, 51, 51]));
     let e = explain_json(&scene, 0, 0, &["--shadows", "off"]);
     assert_close(path_color(&e), [0.6; 3]);
@@ -197,7 +223,11 @@ fn a_reflective_plane_adds_its_reflectivity_times_the_background() {
     let mirror = json!({ "ambient": [0.1, 0.1, 0.1], "diffuse": [0.3, 0.3, 0.3],
                          "specular": [0, 0, 0], "shininess": 1,
                          "reflectivity": [0.5, 0.25, 0.5] });
-    let scene = write(&dir, "mirror.json", &plane_scene(mirror, vec![], [0.2, 0.6, 1.0]));
+    let scene = write(
+        &dir,
+        "mirror.json",
+        &plane_scene(mirror, vec![], [0.2, 0.6, 1.0]),
+    );
     // Local: 0.1 + 0.3·cos 0 = 0.4. The reflection ray R_V = V − 2(N·V)N leaves upwards and
     // sees the background: C = 0.4 + O_r·(0.2, 0.6, 1.0) = (0.5, 0.55, 0.9).
     let e = explain_json(&scene, 0, 0, &[]);
@@ -210,7 +240,10 @@ fn a_reflective_plane_adds_its_reflectivity_times_the_background() {
     // R_V: V = (−3, 0, −5)/√34, N = (0, 0, 1): R_V = (−3, 0, 5)/√34.
     let d = rays[1]["direction"].as_array().unwrap();
     let s = 34f64.sqrt();
-    assert_close([0, 1, 2].map(|i| d[i].as_f64().unwrap()), [-3.0 / s, 0.0, 5.0 / s]);
+    assert_close(
+        [0, 1, 2].map(|i| d[i].as_f64().unwrap()),
+        [-3.0 / s, 0.0, 5.0 / s],
+    );
     // It leaves from just above the origin: the offset is tiny and on the ray's side.
     let z = rays[1]["origin"][2].as_f64().unwrap();
     assert!(z > 0.0 && z < 1e-12, "origin z = {z}");
@@ -247,7 +280,12 @@ fn two_facing_mirrors_stop_at_the_maximum_level_or_when_the_weight_runs_out() {
     let path = write(&dir, "mirrors.json", &scene);
     // Each hit adds 0.1, weighted by 0.5^(level − 1): with n levels C = 0.1·(1 − 0.5^n)/(1 − 0.5).
     for n in [1u32, 2, 5, 10] {
-        let e = explain_json(&path, 0, 0, &["--max-level", &n.to_string(), "--min-weight", "0"]);
+        let e = explain_json(
+            &path,
+            0,
+            0,
+            &["--max-level", &n.to_string(), "--min-weight", "0"],
+        );
         let rays = e["samples"][0]["rays"].as_array().unwrap();
         assert_eq!(rays.len(), n as usize, "level {n}");
         let expected = 0.2 * (1.0 - 0.5f64.powi(n as i32));
@@ -330,14 +368,30 @@ fn any_number_of_threads_writes_the_same_bytes() {
     let dir = TempDir::new().unwrap();
     let classic = read_json(&repo("scenes/classic.json"));
     let scene = write(&dir, "small.json", &scaled(&classic, 1.0));
-    let one = render_ppm(&scene, &dir, "t1.ppm", &["--threads", "1", "--samples", "4"]);
+    let one = render_ppm(
+        &scene,
+        &dir,
+        "t1.ppm",
+        &["--threads", "1", "--samples", "4"],
+    );
     for t in ["2", "3", "7"] {
-        let other = render_ppm(&scene, &dir, &format!("t{t}.ppm"), &["--threads", t, "--samples", "4"]);
+        let other = render_ppm(
+            &scene,
+            &dir,
+            &format!("t{t}.ppm"),
+            &["--threads", t, "--samples", "4"],
+        );
         assert!(one == other, "--threads {t} changed the image");
     }
     // And PNG is the same pixels.
     let png = dir.path().join("t.png");
-    phong().arg("render").arg(&scene).arg("-o").arg(&png).assert().success();
+    phong()
+        .arg("render")
+        .arg(&scene)
+        .arg("-o")
+        .arg(&png)
+        .assert()
+        .success();
     assert!(fs::read(&png).unwrap().starts_with(b"\x89PNG\r\n\x1a\n"));
 }
 
@@ -394,7 +448,12 @@ fn a_scene_without_a_camera_cannot_be_rendered() {
 #[test]
 fn image_sizes_of_zero_or_over_16384_are_refused() {
     let dir = TempDir::new().unwrap();
-    for (key, n) in [("width", 0), ("height", 0), ("width", 16385), ("height", 100000)] {
+    for (key, n) in [
+        ("width", 0),
+        ("height", 0),
+        ("width", 16385),
+        ("height", 100000),
+    ] {
         let mut s = small_scene();
         s["camera"][key] = json!(n);
         refused(&dir, &s, &[], &format!("camera.{key}"));
@@ -439,7 +498,11 @@ fn unreadable_or_malformed_obj_files_are_refused() {
     refused(&dir, &mesh("garbage.obj"), &[], "surfaces[0].file");
     fs::write(dir.path().join("empty.obj"), "# nothing\n").unwrap();
     refused(&dir, &mesh("empty.obj"), &[], "surfaces[0].file");
-    fs::write(dir.path().join("flat.obj"), "v 0 0 0\nv 1 1 1\nv 2 2 2\nf 1 2 3\n").unwrap();
+    fs::write(
+        dir.path().join("flat.obj"),
+        "v 0 0 0\nv 1 1 1\nv 2 2 2\nf 1 2 3\n",
+    )
+    .unwrap();
     refused(&dir, &mesh("flat.obj"), &[], "surfaces[0].file");
 }
 
@@ -451,7 +514,13 @@ fn an_existing_image_is_left_untouched_when_the_scene_is_bad() {
     let mut s = small_scene();
     s["camera"]["width"] = json!(0);
     let path = write(&dir, "bad.json", &s);
-    phong().arg("render").arg(&path).arg("-o").arg(&out).assert().code(BAD_INPUT);
+    phong()
+        .arg("render")
+        .arg(&path)
+        .arg("-o")
+        .arg(&out)
+        .assert()
+        .code(BAD_INPUT);
     assert_eq!(fs::read(&out).unwrap(), b"previous image");
 }
 

@@ -127,7 +127,8 @@ pub struct ConeTest<R: Real> {
     /// cos ψ = D_l · L.
     pub cos_psi: R,
     /// ψ in degrees, from atan2(‖D_l × L‖, D_l · L): accurate at every angle, where acos(cos ψ)
-    /// loses half the digits near 0°.
+    /// loses half the digits near 0°. Left at 0 by [`Light::arrive_with`] without detail where
+    /// cos ψ alone decided the test.
     pub psi_deg: R,
     pub cos_gamma: R,
     /// ψ ≤ γ (a point on the edge counts as inside).
@@ -159,11 +160,21 @@ pub struct Arrival<R: Real> {
 /// Tolerance of the cone-edge test in units of machine epsilon (radians, relative to 1 + γ):
 /// a point whose ψ lies within this of γ is on the edge, and the edge is lit (DESIGN.md).
 const CONE_EDGE_ULPS: f64 = 4.0;
+/// Away from the edge by more than this many ε in cos ψ − cos γ, the cheap cosine comparison
+/// and the angle comparison agree (each side is rounded by a few ε).
+const CONE_COS_MARGIN_ULPS: f64 = 64.0;
 
 impl<R: Real> Light<R> {
-    /// What this light delivers at P (Eq. 4.1–4.4).
+    /// What this light delivers at P (Eq. 4.1–4.4), with every intermediate.
     #[inline]
     pub fn arrive(&self, p: V3<R>) -> Arrival<R> {
+        self.arrive_with(p, true)
+    }
+
+    /// [`Light::arrive`]; without `detail`, a spot's ψ (degrees) is left at 0 where cos ψ alone
+    /// decides the cone test, to spare an atan2 on the tracer's hot path.
+    #[inline]
+    pub fn arrive_with(&self, p: V3<R>, detail: bool) -> Arrival<R> {
         match self.kind {
             LightKind::Directional { direction } => Arrival {
                 l: direction,
@@ -174,12 +185,14 @@ impl<R: Real> Light<R> {
                 i_l: self.color,
                 reach: Reach::Arrives,
             },
-            LightKind::Point { position, falloff } => self.positional(p, position, falloff, None),
+            LightKind::Point { position, falloff } => {
+                self.positional(p, position, falloff, None, detail)
+            }
             LightKind::Spot {
                 position,
                 falloff,
                 cone,
-            } => self.positional(p, position, falloff, Some(cone)),
+            } => self.positional(p, position, falloff, Some(cone), detail),
         }
     }
 
@@ -189,6 +202,7 @@ impl<R: Real> Light<R> {
         position: V3<R>,
         falloff: Falloff,
         cone: Option<Cone<R>>,
+        detail: bool,
     ) -> Arrival<R> {
         // Compute the incidence vector and the distance, Eq. 4.1.
         let Some(n) = between::<R>(position, p) else {
@@ -212,13 +226,21 @@ impl<R: Real> Light<R> {
         // f64 except within rounding of the edge.
         let cone = cone.map(|c| {
             let cos_psi = c.axis.dot(l);
-            let psi = c.axis.cross(l).naive_length().atan2(cos_psi);
-            let tol = R::from_f64(CONE_EDGE_ULPS) * R::EPSILON * (R::ONE + c.gamma);
-            let inside = psi <= c.gamma + tol;
-            let on_edge = (psi - c.gamma).abs() <= tol;
+            // Far from the edge (by many times the rounding of either side), cos ψ against
+            // cos γ decides the same way and costs no atan2; ψ itself is then only formed
+            // for a caller that records it.
+            let margin = R::from_f64(CONE_COS_MARGIN_ULPS) * R::EPSILON;
+            let clear = (cos_psi - c.cos_gamma).abs() > margin;
+            let (psi, inside, on_edge) = if clear && !detail {
+                (R::ZERO, cos_psi > c.cos_gamma, false)
+            } else {
+                let psi = c.axis.cross(l).naive_length().atan2(cos_psi);
+                let tol = R::from_f64(CONE_EDGE_ULPS) * R::EPSILON * (R::ONE + c.gamma);
+                (psi, psi <= c.gamma + tol, (psi - c.gamma).abs() <= tol)
+            };
             // cos ψ may round a hair outside [0, 1] on the edge of a 90° cone or on the axis.
             let factor = if inside {
-                cos_psi.max(R::ZERO).min(R::ONE).powf(c.exponent)
+                cos_psi.max(R::ZERO).min(R::ONE).pow(c.exponent)
             } else {
                 R::ZERO
             };

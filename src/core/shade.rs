@@ -165,9 +165,9 @@ fn literal_pow<R: Real>(x: R, n_s: R, clamp: bool) -> Option<R> {
     if x < R::ZERO && n_s.trunc() != n_s {
         None
     } else if clamp {
-        Some(x.max(-R::ONE).min(R::ONE).powf(n_s))
+        Some(x.max(-R::ONE).min(R::ONE).pow(n_s))
     } else {
-        Some(x.powf(n_s))
+        Some(x.pow(n_s))
     }
 }
 
@@ -267,7 +267,7 @@ pub fn shade_with<R: Real, Rec: Recorder<R>, Vis: Visibility<R>, F: Formulas>(
     let contributes = m.o_d.is_some() || (m.o_s.is_some() && at.v.is_some());
 
     for (index, light) in lights.lights.iter().enumerate() {
-        let arrival = light.arrive(at.p);
+        let arrival = light.arrive_with(at.p, Rec::DETAIL);
         // Diffuse reflection, cos θ = −N·L, Eq. 4.7–4.8.
         let n_dot_l = at.n.dot(arrival.l);
         let cos_theta = if formulas.abs_cos_theta() {
@@ -334,9 +334,9 @@ pub fn shade_with<R: Real, Rec: Recorder<R>, Vis: Visibility<R>, F: Formulas>(
                 } else if cos_phi > R::ZERO {
                     // cos φ can round a hair above 1; a huge n_s must not turn that into inf.
                     let pow = if formulas.raw_normal() {
-                        cos_phi.powf(m.n_s)
+                        cos_phi.pow(m.n_s)
                     } else {
-                        cos_phi.min(R::ONE).powf(m.n_s)
+                        cos_phi.min(R::ONE).pow(m.n_s)
                     };
                     (SpecularStatus::Lit, Some(pow), o_s * arrival.i_l * pow)
                 } else {

@@ -17,6 +17,15 @@ pub struct Normalized<R: Real> {
 /// Normalises `v` without needless underflow or overflow. `None` for a zero or non-finite vector.
 #[inline]
 pub fn normalize<R: Real>(v: V3<R>) -> Option<Normalized<R>> {
+    // The common case: v·v neither overflows nor underflows, so ‖v‖ = √(v·v).
+    let sq = v.dot(v);
+    if sq > R::SAFE_SQUARED_MIN && sq < R::SAFE_SQUARED_MAX {
+        let length = sq.sqrt();
+        return Some(Normalized {
+            unit: v * (R::ONE / length),
+            length,
+        });
+    }
     if !v.is_finite() {
         return None;
     }
@@ -56,6 +65,10 @@ pub fn between<R: Real>(a: V3<R>, b: V3<R>) -> Option<Normalized<R>> {
 /// The robust Euclidean length ‖v‖ (0 for the zero vector).
 #[inline]
 pub fn length<R: Real>(v: V3<R>) -> R {
+    let sq = v.dot(v);
+    if sq > R::SAFE_SQUARED_MIN && sq < R::SAFE_SQUARED_MAX {
+        return sq.sqrt();
+    }
     normalize(v).map_or(R::ZERO, |n| n.length)
 }
 

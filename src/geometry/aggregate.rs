@@ -13,6 +13,9 @@ use super::{Ray, Shape};
 use crate::core::vector::between;
 use crate::core::{Arrival, Light, Real, Visibility, V3};
 
+/// Up to this many bounded shapes are tested in a plain loop rather than through the BVH.
+const FLAT: usize = 8;
+
 /// The surfaces of a scene, indexed in the order given.
 #[derive(Clone, Debug)]
 pub struct Aggregate<R: Real> {
@@ -75,8 +78,16 @@ impl<R: Real> Aggregate<R> {
                 best = Some((i as usize, t));
             }
         }
-        // The BVH shrinks its t_max to each hit it accepts, so every accepted hit is nearer.
-        if let Some(h) = self.bvh.nearest(ray, t_max, |k, t_max| {
+        if self.bounded.len() <= FLAT {
+            // A handful of shapes: a plain loop costs less than the boxes around them.
+            for &i in &self.bounded {
+                if let Some(t) = self.shapes[i as usize].hit_t(ray, t_max) {
+                    t_max = t;
+                    best = Some((i as usize, t));
+                }
+            }
+        } else if let Some(h) = self.bvh.nearest(ray, t_max, |k, t_max| {
+            // The BVH shrinks its t_max to each hit it accepts, so every accepted hit is nearer.
             self.shapes[self.bounded[k as usize] as usize].hit_t(ray, t_max)
         }) {
             best = Some((self.bounded[h.prim as usize] as usize, h.t));
@@ -91,14 +102,18 @@ impl<R: Real> Aggregate<R> {
 
     /// Whether any surface meets the ray with 0 < t < `t_max`.
     pub fn occluded(&self, ray: &Ray<R>, t_max: R) -> bool {
-        self.unbounded
-            .iter()
-            .any(|&i| self.shapes[i as usize].hit_t(ray, t_max).is_some())
-            || self.bvh.any(ray, t_max, |k, t_max| {
-                self.shapes[self.bounded[k as usize] as usize]
-                    .hit_t(ray, t_max)
-                    .is_some()
-            })
+        let blocks = |i: &u32| self.shapes[*i as usize].hit_t(ray, t_max).is_some();
+        if self.unbounded.iter().any(blocks) {
+            return true;
+        }
+        if self.bounded.len() <= FLAT {
+            return self.bounded.iter().any(blocks);
+        }
+        self.bvh.any(ray, t_max, |k, t_max| {
+            self.shapes[self.bounded[k as usize] as usize]
+                .hit_t(ray, t_max)
+                .is_some()
+        })
     }
 }
 

@@ -25,7 +25,15 @@ impl<R: Real> Sphere<R> {
     pub fn intersect_line(&self, ray: &Ray<R>) -> LineHits<R> {
         let f = ray.origin - self.center;
         let b = ray.direction.dot(f);
-        let perp = length::<R>(f - ray.direction * b);
+        let q = f - ray.direction * b;
+        // Most lines miss: where the squares are safe and the line passes clearly outside
+        // (by more than their rounding), say so without a square root.
+        let (perp2, r2) = (q.dot(q), self.radius * self.radius);
+        let safe = |x: R| x > R::SAFE_SQUARED_MIN && x < R::SAFE_SQUARED_MAX;
+        if safe(perp2) && safe(r2) && perp2 > r2 * (R::ONE + R::from_f64(16.0) * R::EPSILON) {
+            return LineHits::NONE;
+        }
+        let perp = length::<R>(q);
         let disc = (self.radius - perp) * (self.radius + perp);
         // A negative (or NaN) discriminant: the line misses.
         if disc.partial_cmp(&R::ZERO).is_none_or(|o| o.is_lt()) {

@@ -26,11 +26,9 @@ pub fn load_obj<R: Real>(path: &Path) -> Result<Vec<Triangle<R>>, MeshError> {
         ..Default::default()
     };
     // The material loader is never asked to read anything: `.mtl` files are ignored.
-    let (models, _) = tobj::load_obj_buf(
-        &mut std::io::BufReader::new(file),
-        &options,
-        |_| Ok(Default::default()),
-    )
+    let (models, _) = tobj::load_obj_buf(&mut std::io::BufReader::new(file), &options, |_| {
+        Ok(Default::default())
+    })
     .map_err(|e| MeshError {
         message: format!("is not a valid Wavefront OBJ file: {e}"),
         fix: "give an OBJ file with `v x y z` vertices and `f i j k` faces".into(),

@@ -26,7 +26,10 @@ pub fn validate<R: Real>(file: &ProblemFile) -> Result<Problem<R>, Invalid> {
 
 /// Validates a parsed problem in precision `R`, reading a mesh's OBJ file relative to `base`
 /// (the problem file's folder).
-pub fn validate_in<R: Real>(file: &ProblemFile, base: Option<&Path>) -> Result<Problem<R>, Invalid> {
+pub fn validate_in<R: Real>(
+    file: &ProblemFile,
+    base: Option<&Path>,
+) -> Result<Problem<R>, Invalid> {
     let (lights, light_info, ambient_info) = lights::<R>(&file.lights)?;
     let viewer = file.viewer.map(|v| vector::<R>(v, "viewer")).transpose()?;
     let first_light = light_info
@@ -614,7 +617,11 @@ fn surface<R: Real>(
                 None => PathBuf::from(name),
             };
             let triangles = mesh::load_obj::<R>(&path).map_err(|e| {
-                Invalid::new(f("file"), format!("{}: {}", path.display(), e.message), e.fix)
+                Invalid::new(
+                    f("file"),
+                    format!("{}: {}", path.display(), e.message),
+                    e.fix,
+                )
             })?;
             out.extend(triangles.into_iter().enumerate().map(|(k, t)| Surface {
                 shape: Shape::Triangle(t),

@@ -39,7 +39,11 @@ pub fn render_text<R: Real>(file: &str, problem: &Problem<R>, e: &PixelExplanati
     let mut out = String::new();
     let s = &problem.render;
     let [r, g, b] = e.rgb8;
-    let _ = writeln!(out, "Pixel ({}, {}) of {file}: 8-bit colour ({r}, {g}, {b})", e.x, e.y);
+    let _ = writeln!(
+        out,
+        "Pixel ({}, {}) of {file}: 8-bit colour ({r}, {g}, {b})",
+        e.x, e.y
+    );
     let _ = writeln!(
         out,
         "Settings: maximum level {}, minimum weight {}, shadows {}, {} sample{} per pixel, {}",
@@ -82,7 +86,11 @@ pub fn render_text<R: Real>(file: &str, problem: &Problem<R>, e: &PixelExplanati
 
 fn ray_text<R: Real>(out: &mut String, file: &str, problem: &Problem<R>, ray: &RayExplanation<R>) {
     let r = &ray.record;
-    let kind = if r.level == 1 { "primary" } else { "reflection" };
+    let kind = if r.level == 1 {
+        "primary"
+    } else {
+        "reflection"
+    };
     let _ = writeln!(
         out,
         "\n  Ray {} ({kind}): level {}, weight w = {}, factor in the pixel {}",
@@ -113,7 +121,9 @@ fn ray_text<R: Real>(out: &mut String, file: &str, problem: &Problem<R>, ray: &R
     }
     let _ = writeln!(out, "    direction D = {}", v::<R>(r.ray.direction));
     if let Some(solution) = &ray.solution {
-        out.push_str("\n    The solver on this ray (`phong solve` of the equivalent ray problem):\n");
+        out.push_str(
+            "\n    The solver on this ray (`phong solve` of the equivalent ray problem):\n",
+        );
         for line in text::render(file, problem, solution).lines() {
             if line.is_empty() {
                 out.push('\n');
@@ -122,7 +132,11 @@ fn ray_text<R: Real>(out: &mut String, file: &str, problem: &Problem<R>, ray: &R
             }
         }
     } else {
-        let _ = writeln!(out, "    hits nothing: C = background = {}", v::<R>(r.local));
+        let _ = writeln!(
+            out,
+            "    hits nothing: C = background = {}",
+            v::<R>(r.local)
+        );
     }
     if let Some(o_r) = r.o_r {
         let _ = write!(out, "    O_r = {}", v::<R>(o_r));

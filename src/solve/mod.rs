@@ -399,6 +399,11 @@ pub fn solve_ray_with<R: Real, F: Formulas>(
         // No hit in front: where does the line meet a surface behind the origin?
         let mut behind: Option<(usize, R)> = None;
         for (i, s) in surfaces.iter().enumerate() {
+            // A hit in front that the aggregate dropped: its point has no normal here.
+            let t_front = s.shape.hit_t(ray, R::from_f64(f64::INFINITY));
+            if t_front.is_some_and(|t| s.shape.hit_at(ray, t).is_none()) {
+                return Err(unresolved(i));
+            }
             let hits = s.shape.line_hits(ray);
             starts_on_surface |= hits.at_origin();
             if let Some(t) = hits.nearest_behind() {

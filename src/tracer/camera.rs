@@ -49,10 +49,14 @@ impl<R: Real> CameraRays<R> {
     pub fn ray(&self, x: u32, y: u32, sx: f64, sy: f64) -> Ray<R> {
         let ndc_x = R::from_f64((f64::from(x) + sx) / f64::from(self.width) * 2.0 - 1.0);
         let ndc_y = R::from_f64(1.0 - (f64::from(y) + sy) / f64::from(self.height) * 2.0);
-        let d = self.forward + self.right * (ndc_x * self.half_width) + self.up * (ndc_y * self.half_height);
+        let d = self.forward
+            + self.right * (ndc_x * self.half_width)
+            + self.up * (ndc_y * self.half_height);
         Ray {
             origin: self.eye,
-            direction: normalize::<R>(d).expect("a camera ray has a direction").unit,
+            direction: normalize::<R>(d)
+                .expect("a camera ray has a direction")
+                .unit,
         }
     }
 }
@@ -87,6 +91,10 @@ mod tests {
         // fov 90°: tan 45° = 1 up; aspect 2: 2 to the right. Corner (4, 0) → (2, 1, −1)/√6.
         let r = c.ray(3, 0, 1.0, 0.0);
         let expected = DVec3::new(2.0, 1.0, -1.0) / 6f64.sqrt();
-        assert!((r.direction - expected).length() < 1e-15, "{:?}", r.direction);
+        assert!(
+            (r.direction - expected).length() < 1e-15,
+            "{:?}",
+            r.direction
+        );
     }
 }

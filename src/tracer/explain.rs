@@ -80,7 +80,13 @@ pub fn explain_pixel<R: Real>(
                         length: R::ONE,
                         unit: d,
                     };
-                    Some(solve_ray(problem, None, &record.ray, &direction, &scene.aggregate)?)
+                    Some(solve_ray(
+                        problem,
+                        None,
+                        &record.ray,
+                        &direction,
+                        &scene.aggregate,
+                    )?)
                 }
             };
             explained.push(RayExplanation { record, solution });

@@ -24,7 +24,11 @@ impl<R: Real> Scene<R> {
     pub fn new(problem: &Problem<R>) -> Self {
         Scene {
             aggregate: crate::solve::aggregate(problem),
-            materials: problem.surfaces().iter().map(|s| s.material.material).collect(),
+            materials: problem
+                .surfaces()
+                .iter()
+                .map(|s| s.material.material)
+                .collect(),
         }
     }
 }
@@ -124,7 +128,12 @@ pub struct Tracer<'a, R: Real> {
 impl<R: Real> Tracer<'_, R> {
     /// The colour seen along a primary ray, unclamped.
     #[inline]
-    pub fn trace(&self, primary: Ray<R>, counts: &mut Counts, rec: &mut impl PathRecorder<R>) -> V3<R> {
+    pub fn trace(
+        &self,
+        primary: Ray<R>,
+        counts: &mut Counts,
+        rec: &mut impl PathRecorder<R>,
+    ) -> V3<R> {
         let infinity = R::from_f64(f64::INFINITY);
         let lights = &self.problem.lights;
         let mut color = V3::<R>::ZERO;
@@ -157,7 +166,11 @@ impl<R: Real> Tracer<'_, R> {
             let m = &self.scene.materials[h.index];
             // N turned to face the incoming ray; V is the ray's direction (Eq. 4.10).
             let own = h.hit.normal;
-            let n = if own.dot(ray.direction) > R::ZERO { -own } else { own };
+            let n = if own.dot(ray.direction) > R::ZERO {
+                -own
+            } else {
+                own
+            };
             let at = ShadingPoint {
                 p: h.hit.p,
                 n,
