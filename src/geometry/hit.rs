@@ -3,6 +3,7 @@
 //! error bound, so a secondary or shadow ray never re-hits the surface it leaves, at any scale,
 //! without a global epsilon.
 
+pub use super::bounds::gamma;
 use crate::core::{Real, Vector, V3};
 
 /// Where a ray meets a surface (t > 0).
@@ -18,13 +19,6 @@ pub struct SurfaceHit<R: Real> {
     /// The surface's own unit normal at `p` (a plane's as given, a sphere's outward, a
     /// triangle's (v1 − v0) × (v2 − v0)); turning it to face the ray is the caller's choice.
     pub normal: V3<R>,
-}
-
-/// γ_n = nε/(1 − nε), ε the unit roundoff: the bound of n successive roundings (pbrt, §6.8).
-#[inline]
-pub fn gamma<R: Real>(n: u32) -> R {
-    let e = R::EPSILON / R::TWO * R::from_f64(f64::from(n));
-    e / (R::ONE - e)
 }
 
 /// The origin of a ray leaving `p` in direction `w`: `p` moved off the surface along `n`, to the

@@ -535,6 +535,17 @@ pub fn reading_explanation_in(code: ReadingCode, lang: Lang) -> &'static str {
     }
 }
 
+/// "surfaces[2]", or "surfaces[2] (mesh), triangle 17".
+pub fn surface_label(source: Option<crate::problem::SurfaceSource>) -> String {
+    match source {
+        None => "no surface".into(),
+        Some(s) => match s.triangle {
+            None => format!("surfaces[{}]", s.index),
+            Some(t) => format!("surfaces[{}] (mesh), triangle {t}", s.index),
+        },
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -610,16 +621,5 @@ mod tests {
                 reading_explanation_in(r, Lang::Pt)
             );
         }
-    }
-}
-
-/// "surfaces[2]", or "surfaces[2] (mesh), triangle 17".
-pub fn surface_label(source: Option<crate::problem::SurfaceSource>) -> String {
-    match source {
-        None => "no surface".into(),
-        Some(s) => match s.triangle {
-            None => format!("surfaces[{}]", s.index),
-            Some(t) => format!("surfaces[{}] (mesh), triangle {t}", s.index),
-        },
     }
 }
