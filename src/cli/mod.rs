@@ -54,18 +54,26 @@ pub struct ExportPovArgs {
     /// Write the SDL to this file (atomically) instead of standard output.
     #[arg(short, long, value_name = "PATH")]
     pub output: Option<PathBuf>,
+    /// The tracer's settings over the scene's (POV-Ray can only match 1 sample per pixel).
+    #[command(flatten)]
+    pub settings: TraceSettings,
+}
+
+/// The tracer's settings, each over the scene's `render` (or its default).
+#[derive(Debug, Args)]
+pub struct TraceSettings {
     /// The maximum recursion level (primary rays are level 1) [scene's, or 5].
     #[arg(long, value_name = "N")]
     pub max_level: Option<u32>,
     /// The minimum weight of a reflection ray [scene's, or 1/255].
     #[arg(long, value_name = "W")]
     pub min_weight: Option<f64>,
+    /// Samples per pixel, 1 to 4096, stratified and deterministic [scene's, or 1].
+    #[arg(long, value_name = "N")]
+    pub samples: Option<u32>,
     /// Shadow rays on or off [scene's, or on].
     #[arg(long, value_enum, value_name = "ON|OFF")]
     pub shadows: Option<Switch>,
-    /// Samples per pixel [scene's, or 1]; POV-Ray can only match 1.
-    #[arg(long, value_name = "N")]
-    pub samples: Option<u32>,
 }
 
 #[derive(Debug, Args)]
@@ -84,18 +92,8 @@ pub struct RenderArgs {
     /// The image format, when the output's extension does not say.
     #[arg(long, value_enum, value_name = "FORMAT")]
     pub image_format: Option<ImageFormat>,
-    /// The maximum recursion level (primary rays are level 1) [scene's, or 5].
-    #[arg(long, value_name = "N")]
-    pub max_level: Option<u32>,
-    /// The minimum weight of a reflection ray [scene's, or 1/255].
-    #[arg(long, value_name = "W")]
-    pub min_weight: Option<f64>,
-    /// Samples per pixel, 1 to 4096, stratified and deterministic [scene's, or 1].
-    #[arg(long, value_name = "N")]
-    pub samples: Option<u32>,
-    /// Shadow rays on or off [scene's, or on].
-    #[arg(long, value_enum, value_name = "ON|OFF")]
-    pub shadows: Option<Switch>,
+    #[command(flatten)]
+    pub settings: TraceSettings,
     /// Floating-point precision of the whole calculation.
     #[arg(long, value_enum, default_value_t = Precision::F64)]
     pub precision: Precision,
@@ -313,40 +311,21 @@ pub fn run(cli: &Cli) -> u8 {
 /// `phong export-pov`: the scene in f64 (POV-Ray computes in double), with the command line's
 /// settings, as POV-Ray SDL; exit 2 when the file is bad or POV-Ray cannot express the scene.
 fn export_pov_command(args: &ExportPovArgs) -> u8 {
-    use crate::problem::validate::{check_max_level, check_min_weight, check_samples};
-    let run = || -> Result<String, String> {
+    let run = || -> Result<String, ProblemError> {
         let path = &args.scene;
-        let (_, mut problem) = problem::load::<f64>(path).map_err(|e| e.to_string())?;
-        let flag = |name: &str, (message, fix): (String, String)| {
-            ProblemError::Usage {
-                flag: name.to_owned(),
-                message,
-                fix,
-            }
-            .to_string()
-        };
-        let s = &mut problem.render;
-        if let Some(level) = args.max_level {
-            check_max_level(level).map_err(|e| flag("--max-level", e))?;
-            s.max_level = level;
-        }
-        if let Some(w) = args.min_weight {
-            check_min_weight(w).map_err(|e| flag("--min-weight", e))?;
-            s.min_weight = w;
-        }
-        if let Some(n) = args.samples {
-            check_samples(n).map_err(|e| flag("--samples", e))?;
-            s.samples = n;
-        }
-        if let Some(sw) = args.shadows {
-            s.shadows = sw == Switch::On;
-        }
-        crate::export::pov::export(&problem).map_err(|e| format!("{}: {e}", path.display()))
+        let (_, mut problem) = problem::load::<f64>(path)?;
+        apply_settings(&args.settings, &mut problem)?;
+        crate::export::pov::export(&problem).map_err(|e| ProblemError::Invalid {
+            path: path.clone(),
+            field: e.what,
+            message: format!("cannot be expressed in POV-Ray 3.7: {}", e.why),
+            fix: e.fix,
+        })
     };
     match run() {
         Ok(sdl) => emit(args.output.as_deref(), &sdl),
-        Err(message) => {
-            eprintln!("error: {message}");
+        Err(e) => {
+            eprintln!("error: {e}");
             EXIT_BAD_INPUT
         }
     }
@@ -589,7 +568,7 @@ fn render_command(args: &RenderArgs) -> u8 {
 
 /// Applies the command line's settings over the scene's; an invalid one names its flag.
 fn apply_settings<R: Real>(
-    args: &RenderArgs,
+    args: &TraceSettings,
     problem: &mut problem::Problem<R>,
 ) -> Result<(), ProblemError> {
     use crate::problem::validate::{check_max_level, check_min_weight, check_samples};
@@ -622,7 +601,7 @@ fn render_scene<R: Real>(args: &RenderArgs) -> Result<u8, ProblemError> {
     let started = std::time::Instant::now();
     let (_, mut problem) = problem::load::<R>(path)?;
     let loaded = started.elapsed();
-    apply_settings(args, &mut problem)?;
+    apply_settings(&args.settings, &mut problem)?;
     let Some(camera) = problem.camera else {
         return Err(crate::problem::Invalid::new(
             "camera",
