@@ -147,6 +147,17 @@ pub trait Visibility<R: Real> {
     fn visible(&mut self, p: V3<R>, light: &Light<R>, arrival: &Arrival<R>) -> bool;
 }
 
+/// `None` sees every light (shadows off); `Some(v)` asks `v`.
+impl<R: Real, V: Visibility<R>> Visibility<R> for Option<V> {
+    #[inline(always)]
+    fn visible(&mut self, p: V3<R>, light: &Light<R>, arrival: &Arrival<R>) -> bool {
+        match self {
+            Some(v) => v.visible(p, light, arrival),
+            None => true,
+        }
+    }
+}
+
 /// Every light reaches the point: the solver's single-point problems have no occluders.
 pub struct AllVisible;
 

@@ -345,39 +345,25 @@ pub fn solve_ray_with<R: Real, F: Formulas>(
             reversed,
         };
         let view = Some((incoming, source));
-        if problem.render.shadows {
-            let mut rays = ShadowRays {
-                aggregate,
-                p_error: hit.p_error,
-                normal: own,
-                traced: 0,
-            };
-            let m = &s.material;
-            evaluate(
-                problem,
-                formulas,
-                viewer,
-                Some(hit.p),
-                Some(normal),
-                view,
-                m,
-                None,
-                &mut rays,
-            )
-        } else {
-            let (m, vis) = (&s.material, &mut AllVisible);
-            evaluate(
-                problem,
-                formulas,
-                viewer,
-                Some(hit.p),
-                Some(normal),
-                view,
-                m,
-                None,
-                vis,
-            )
-        }
+        // Shadow rays as the tracer casts them, when the problem has them on.
+        let mut shadows = problem.render.shadows.then_some(ShadowRays {
+            aggregate,
+            p_error: hit.p_error,
+            normal: own,
+            traced: 0,
+        });
+        let m = &s.material;
+        evaluate(
+            problem,
+            formulas,
+            viewer,
+            Some(hit.p),
+            Some(normal),
+            view,
+            m,
+            None,
+            &mut shadows,
+        )
     };
     // The nearest hit in front of the origin, Section 4.4 (t > 0).
     let unresolved = |i: usize| {

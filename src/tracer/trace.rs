@@ -8,7 +8,7 @@
 //! rays through [`ShadowRays`].
 
 use crate::core::vector::normalize;
-use crate::core::{shade, AllVisible, Material, NoRecord, Real, ShadingPoint, Vector, V3};
+use crate::core::{shade, Material, NoRecord, Real, ShadingPoint, Vector, V3};
 use crate::geometry::{offset_origin, Aggregate, AggregateHit, Ray, ShadowRays};
 use crate::problem::{Problem, RenderSettings};
 
@@ -177,19 +177,14 @@ impl<R: Real> Tracer<'_, R> {
                 v: Some(ray.direction),
             };
             // The local colour, Eq. 4.16, by the core.
-            let local = if self.settings.shadows {
-                let mut shadows = ShadowRays {
-                    aggregate: &self.scene.aggregate,
-                    p_error: h.hit.p_error,
-                    normal: own,
-                    traced: 0,
-                };
-                let c = shade(&at, m, lights, &mut shadows, &mut NoRecord).color;
-                counts.shadow += shadows.traced;
-                c
-            } else {
-                shade(&at, m, lights, &mut AllVisible, &mut NoRecord).color
-            };
+            let mut shadows = self.settings.shadows.then_some(ShadowRays {
+                aggregate: &self.scene.aggregate,
+                p_error: h.hit.p_error,
+                normal: own,
+                traced: 0,
+            });
+            let local = shade(&at, m, lights, &mut shadows, &mut NoRecord).color;
+            counts.shadow += shadows.map_or(0, |s| s.traced);
             color += factor * local;
             record.local = local;
             record.o_r = m.o_r;
