@@ -19,35 +19,48 @@ impl<R: Real> Sphere<R> {
     /// With f = O − C and unit D: b' = D·f, and the discriminant is formed as
     /// (r − ‖f − b'D‖)(r + ‖f − b'D‖), from the distance of the line to C, which does not cancel
     /// the way b'² − (f·f − r²) does for a small sphere far away. Then q = −(b' + sign(b')·√disc),
-    /// t0 = q, t1 = c/q with c = (‖f‖ − r)(‖f‖ + r): no cancellation in either root. Lengths are
-    /// the robust ones, so nothing is squared that could overflow.
+    /// t0 = q, t1 = c/q with c = (‖f‖ − r)(‖f‖ + r): no cancellation in either root. Where the
+    /// squares are representable they are used directly (r² − ‖f − b'D‖², f·f − r²); otherwise
+    /// the lengths are the robust ones, so nothing is squared that could overflow.
     #[inline]
     pub fn intersect_line(&self, ray: &Ray<R>) -> LineHits<R> {
         let f = ray.origin - self.center;
         let b = ray.direction.dot(f);
         let q = f - ray.direction * b;
-        // Most lines miss: where the squares are safe and the line passes clearly outside
-        // (by more than their rounding), say so without a square root.
-        let (perp2, r2) = (q.dot(q), self.radius * self.radius);
-        let safe = |x: R| x > R::SAFE_SQUARED_MIN && x < R::SAFE_SQUARED_MAX;
-        if safe(perp2) && safe(r2) && perp2 > r2 * (R::ONE + R::from_f64(16.0) * R::EPSILON) {
-            return LineHits::NONE;
-        }
-        let perp = length::<R>(q);
-        let disc = (self.radius - perp) * (self.radius + perp);
-        // A negative (or NaN) discriminant: the line misses.
-        if disc.partial_cmp(&R::ZERO).is_none_or(|o| o.is_lt()) {
-            return LineHits::NONE;
-        }
-        let root = disc.sqrt();
-        let q = if b < R::ZERO { -b + root } else { -b - root };
-        let dist = length::<R>(f);
-        // t1 = c/q, with c = (‖f‖ − r)(‖f‖ + r) divided before it is multiplied out, so that c
-        // itself (the square of a large distance) is never formed.
-        let (mut t0, mut t1) = if q == R::ZERO {
-            (R::ZERO, R::ZERO)
+        let (perp2, r2, ff) = (q.dot(q), self.radius * self.radius, f.dot(f));
+        let safe = |x: R| x == R::ZERO || (x > R::SAFE_SQUARED_MIN && x < R::SAFE_SQUARED_MAX);
+        let (mut t0, mut t1) = if safe(perp2) && safe(r2) && safe(ff) {
+            // The squares are representable: disc = r² − ‖f − b'D‖² and c = f·f − r², each as
+            // accurate as the products of lengths below, with one square root.
+            let disc = r2 - perp2;
+            if disc < R::ZERO {
+                return LineHits::NONE;
+            }
+            let root = disc.sqrt();
+            let q = if b < R::ZERO { -b + root } else { -b - root };
+            if q == R::ZERO {
+                (R::ZERO, R::ZERO)
+            } else {
+                (q, (ff - r2) / q)
+            }
         } else {
-            (q, (dist - self.radius) * ((dist + self.radius) / q))
+            // Huge or tiny: the same with robust lengths, nothing squared that could overflow.
+            let perp = length::<R>(q);
+            let disc = (self.radius - perp) * (self.radius + perp);
+            // A negative (or NaN) discriminant: the line misses.
+            if disc.partial_cmp(&R::ZERO).is_none_or(|o| o.is_lt()) {
+                return LineHits::NONE;
+            }
+            let root = disc.sqrt();
+            let q = if b < R::ZERO { -b + root } else { -b - root };
+            let dist = length::<R>(f);
+            // t1 = c/q, with c = (‖f‖ − r)(‖f‖ + r) divided before it is multiplied out, so that
+            // c itself (the square of a large distance) is never formed.
+            if q == R::ZERO {
+                (R::ZERO, R::ZERO)
+            } else {
+                (q, (dist - self.radius) * ((dist + self.radius) / q))
+            }
         };
         if t0 > t1 {
             std::mem::swap(&mut t0, &mut t1);
