@@ -83,7 +83,14 @@ impl<R: Real> Shape<R> {
         let inside = |t: &R| *t > R::ZERO && *t < t_max;
         match self {
             Shape::Plane(pl) => pl.intersect_line(ray).filter(inside),
-            Shape::Sphere(s) => s.intersect_line(ray).t.into_iter().flatten().find(inside),
+            Shape::Sphere(s) => {
+                // Outside the sphere and moving away: both roots are behind the origin.
+                let f = ray.origin - s.center;
+                if ray.direction.dot(f) > R::ZERO && f.dot(f) > s.radius * s.radius {
+                    return None;
+                }
+                s.intersect_line(ray).t.into_iter().flatten().find(inside)
+            }
             Shape::Triangle(tri) => tri.intersect(ray, t_max).map(|h| h.t),
         }
     }
