@@ -25,6 +25,14 @@ phong_cmd=("$phong" render "$scene" -o "$work/phong.ppm" --max-level 5 --samples
 pov_cmd=(povray -D -A +Q9 File_Gamma=1.0 -GA -V +WT1 "+W$width" "+H$height" +FP "+O$work/povray.ppm" "$work/classic.pov")
 
 median() { sort -g | awk '{a[NR]=$1} END {print (NR % 2) ? a[(NR+1)/2] : (a[NR/2] + a[NR/2+1]) / 2}'; }
+# Sets cmd to the command line of one contender: povray, phong-f64 or phong-f32.
+command_for() {
+  case $1 in
+    povray) cmd=("${pov_cmd[@]}") ;;
+    phong-f64) cmd=("${phong_cmd[@]}" --precision f64) ;;
+    phong-f32) cmd=("${phong_cmd[@]}" --precision f32) ;;
+  esac
+}
 
 echo "machine: $(nproc) cores, load average $(cut -d' ' -f1-3 /proc/loadavg); $(povray --version 2>&1 | grep -m1 '^POV-Ray')"
 echo "phong:   ${phong_cmd[*]} --precision f64|f32 --stats"
@@ -78,11 +86,7 @@ else
   done
   for ((i = 0; i < runs; i++)); do
     for name in povray phong-f64 phong-f32; do
-      case $name in
-        povray) cmd=("${pov_cmd[@]}") ;;
-        phong-f64) cmd=("${phong_cmd[@]}" --precision f64) ;;
-        phong-f32) cmd=("${phong_cmd[@]}" --precision f32) ;;
-      esac
+      command_for "$name"
       start=$(date +%s.%N)
       "${cmd[@]}" >/dev/null 2>&1
       echo "$(date +%s.%N) - $start" | bc -l >>"$work/wall-$name.txt"
@@ -104,11 +108,7 @@ if [ -x /usr/bin/time ]; then
   for name in povray phong-f64 phong-f32; do : >"$work/cpu-$name.txt"; done
   for ((i = 0; i < runs; i++)); do
     for name in povray phong-f64 phong-f32; do
-      case $name in
-        povray) cmd=("${pov_cmd[@]}") ;;
-        phong-f64) cmd=("${phong_cmd[@]}" --precision f64) ;;
-        phong-f32) cmd=("${phong_cmd[@]}" --precision f32) ;;
-      esac
+      command_for "$name"
       /usr/bin/time -f '%U %S' -o "$work/t" "${cmd[@]}" >/dev/null 2>&1
       awk '{print $1 + $2}' "$work/t" >>"$work/cpu-$name.txt"
     done

@@ -179,6 +179,20 @@ impl ReadingCode {
     }
 }
 
+impl<R: Real> Solution<R> {
+    /// The problem's title and question, nothing found or shaded yet.
+    fn empty(problem: &Problem<R>) -> Self {
+        Solution {
+            title: problem.title.clone(),
+            question: problem.question.clone(),
+            findings: Vec::new(),
+            intersection: None,
+            evaluation: None,
+            readings: Vec::new(),
+        }
+    }
+}
+
 impl<R: Real> Evaluation<R> {
     /// The lights this evaluation shaded with.
     pub fn lights_used<'a>(&'a self, problem: &'a Problem<R>) -> &'a LightSet<R> {
@@ -197,14 +211,7 @@ pub fn solve_with<R: Real, F: Formulas>(
     problem: &Problem<R>,
     formulas: F,
 ) -> Result<Solution<R>, Invalid> {
-    let mut solution = Solution {
-        title: problem.title.clone(),
-        question: problem.question.clone(),
-        findings: Vec::new(),
-        intersection: None,
-        evaluation: None,
-        readings: Vec::new(),
-    };
+    let mut solution = Solution::empty(problem);
     match &problem.target {
         Target::Point {
             position,
@@ -308,14 +315,7 @@ pub fn solve_ray_with<R: Real, F: Formulas>(
     direction: &GivenVector<R>,
     aggregate: &Aggregate<R>,
 ) -> Result<Solution<R>, Invalid> {
-    let mut solution = Solution {
-        title: problem.title.clone(),
-        question: problem.question.clone(),
-        findings: Vec::new(),
-        intersection: None,
-        evaluation: None,
-        readings: Vec::new(),
-    };
+    let mut solution = Solution::empty(problem);
     let surfaces = problem.surfaces();
     let record = |hit: Option<(usize, R, V3<R>)>| Intersection {
         origin: ray.origin,

@@ -48,11 +48,7 @@ pub fn explain_pixel<R: Real>(
     y: u32,
 ) -> Result<PixelExplanation<R>, Invalid> {
     let rays = CameraRays::new(camera);
-    let tracer = Tracer {
-        scene,
-        problem,
-        settings: problem.render,
-    };
+    let tracer = Tracer { scene, problem };
     let n = problem.render.samples;
     let mut counts = Counts::default();
     let mut samples = Vec::with_capacity(n as usize);

@@ -41,7 +41,7 @@ pub fn pixel<R: Real>(
     y: u32,
     counts: &mut Counts,
 ) -> [u8; 3] {
-    let n = tracer.settings.samples;
+    let n = tracer.problem.render.samples;
     let mut sum = [0.0f64; 3];
     for i in 0..n {
         let (sx, sy) = sample(i, n);
@@ -61,11 +61,7 @@ pub fn render<R: Real>(
     progress: &(dyn Fn() + Sync),
 ) -> (Image, Counts) {
     let rays = CameraRays::new(camera);
-    let tracer = Tracer {
-        scene,
-        problem,
-        settings: problem.render,
-    };
+    let tracer = Tracer { scene, problem };
     let width = camera.width;
     let rows: Vec<(Vec<u8>, Counts)> = (0..camera.height)
         .into_par_iter()

@@ -10,7 +10,7 @@
 use crate::core::vector::normalize;
 use crate::core::{shade, Material, NoRecord, Real, ShadingPoint, Vector, V3};
 use crate::geometry::{offset_origin, Aggregate, AggregateHit, Ray, ShadowRays};
-use crate::problem::{Problem, RenderSettings};
+use crate::problem::Problem;
 
 /// The geometry and materials of a scene, built once for a render.
 pub struct Scene<R: Real> {
@@ -118,11 +118,10 @@ impl<R: Real> PathRecorder<R> for Vec<RayRecord<R>> {
     }
 }
 
-/// Traces paths through a scene with a problem's lights and settings.
+/// Traces paths through a scene with a problem's lights and render settings.
 pub struct Tracer<'a, R: Real> {
     pub scene: &'a Scene<R>,
     pub problem: &'a Problem<R>,
-    pub settings: RenderSettings<R>,
 }
 
 impl<R: Real> Tracer<'_, R> {
@@ -177,7 +176,7 @@ impl<R: Real> Tracer<'_, R> {
                 v: Some(ray.direction),
             };
             // The local colour, Eq. 4.16, by the core.
-            let mut shadows = self.settings.shadows.then_some(ShadowRays {
+            let mut shadows = self.problem.render.shadows.then_some(ShadowRays {
                 aggregate: &self.scene.aggregate,
                 p_error: h.hit.p_error,
                 normal: own,
@@ -196,9 +195,9 @@ impl<R: Real> Tracer<'_, R> {
                 Some(o_r) => {
                     let w_s = weight * o_r.max_element();
                     record.next_weight = Some(w_s);
-                    if level >= self.settings.max_level {
+                    if level >= self.problem.render.max_level {
                         Some(Stop::MaxLevel)
-                    } else if w_s <= self.settings.min_weight {
+                    } else if w_s <= self.problem.render.min_weight {
                         Some(Stop::MinWeight)
                     } else {
                         None
