@@ -75,7 +75,9 @@ if command -v hyperfine >/dev/null; then
 import json, sys
 r = {x["command"]: x for x in json.load(open(sys.argv[1]))["results"]}
 pov = r["povray"]["median"]
-print(f"  POV-Ray        {pov:8.3f} s (median; mean {r['povray']['mean']:.3f} ± {r['povray']['stddev']:.3f})")
+sd = r["povray"]["stddev"]  # null with a single run
+spread = f" ± {sd:.3f}" if sd is not None else ""
+print(f"  POV-Ray        {pov:8.3f} s (median; mean {r['povray']['mean']:.3f}{spread})")
 for p in ("phong-f64", "phong-f32"):
     t = r[p]["median"]
     print(f"  {p:<14} {t:8.3f} s   POV-Ray / phong = {pov / t:5.2f}×   (target ≥ 8×)")
