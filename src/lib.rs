@@ -10,6 +10,7 @@
 //! - [`report`]: explains a solution (text, Markdown, LaTeX, HTML; English or Portuguese) or
 //!   writes it as stable JSON.
 //! - [`tracer`]: the Whitted ray tracer, shading with the same core.
+//! - [`tradeoff`]: what each tracer setting costs in time and buys in accuracy (`phong tradeoff`).
 //! - [`export`]: the scene for other renderers (POV-Ray), to cross-check the tracer.
 //! - [`cli`]: the `phong` command line.
 
@@ -23,3 +24,4 @@ pub mod problem;
 pub mod report;
 pub mod solve;
 pub mod tracer;
+pub mod tradeoff;

@@ -204,7 +204,7 @@ fn split(s: &str) -> Option<Vec<String>> {
 }
 
 /// A finite decimal number, or a fraction a/b.
-fn number(tok: &str) -> Option<f64> {
+pub fn number(tok: &str) -> Option<f64> {
     let x = match tok.split_once('/') {
         Some((a, b)) => decimal(a)? / decimal(b)?,
         None => decimal(tok)?,

@@ -44,6 +44,100 @@ pub enum Command {
     Grade(GradeArgs),
     /// Write fresh problems with numbers friendly to hand calculation, each with its answer key.
     New(NewArgs),
+    /// Measure what each tracer setting (precision, level, minimum weight, samples) costs in
+    /// time and buys in accuracy against a reference render; name the fastest within a budget.
+    Tradeoff(TradeoffArgs),
+}
+
+#[derive(Debug, Args)]
+pub struct TradeoffArgs {
+    /// The scene: a problem file with a "camera" and "surfaces".
+    #[arg(value_name = "SCENE")]
+    pub scene: PathBuf,
+    /// Precisions to sweep.
+    #[arg(long, value_enum, value_delimiter = ',', default_value = "f32,f64")]
+    pub precisions: Vec<Precision>,
+    /// Maximum levels to sweep.
+    #[arg(
+        long,
+        value_delimiter = ',',
+        value_name = "N,...",
+        default_value = "1,2,3,5,10"
+    )]
+    pub levels: Vec<u32>,
+    /// Minimum weights to sweep (decimals or fractions such as 1/255).
+    #[arg(long, value_delimiter = ',', value_name = "W,...", value_parser = parse_fraction,
+          default_value = "0,1/255,0.1")]
+    pub min_weights: Vec<f64>,
+    /// Samples per pixel to sweep.
+    #[arg(
+        long,
+        value_delimiter = ',',
+        value_name = "N,...",
+        default_value = "1,4,16"
+    )]
+    pub samples: Vec<u32>,
+    /// Renders per setting; its time is their median.
+    #[arg(long, value_name = "N", default_value_t = 3)]
+    pub runs: u32,
+    /// The reference's maximum level (it is f64 with minimum weight 0).
+    #[arg(long, value_name = "N", default_value_t = 64)]
+    pub reference_level: u32,
+    /// The reference's samples per pixel.
+    #[arg(long, value_name = "N", default_value_t = 64)]
+    pub reference_samples: u32,
+    /// The error budget: which setting is the fastest with its error at most this?
+    #[arg(long, value_name = "E", value_parser = parse_fraction, default_value = "1/255")]
+    pub budget: f64,
+    /// The error the budget and the Pareto front are judged by.
+    #[arg(long, value_enum, default_value_t = crate::tradeoff::Metric::Rmse)]
+    pub metric: crate::tradeoff::Metric,
+    /// Render at this size instead of the camera's (quicker sweeps).
+    #[arg(long, value_name = "WxH", value_parser = parse_size)]
+    pub size: Option<(u32, u32)>,
+    /// Worker threads (default: one per core).
+    #[arg(long, value_name = "N")]
+    pub threads: Option<usize>,
+    /// Format of the table.
+    #[arg(long, value_enum, default_value_t = TradeoffFormat::Text)]
+    pub format: TradeoffFormat,
+    /// Write the table to this file (atomically) instead of standard output.
+    #[arg(short, long, value_name = "PATH")]
+    pub output: Option<PathBuf>,
+    /// Write the plot of error against time (SVG) to this file.
+    #[arg(long, value_name = "PATH.svg")]
+    pub plot: Option<PathBuf>,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum TradeoffFormat {
+    Text,
+    Json,
+    Csv,
+}
+
+/// A number ≥ 0 written as a decimal or a fraction (1/255).
+fn parse_fraction(s: &str) -> Result<f64, String> {
+    match crate::check::answer::number(s) {
+        Some(x) if x >= 0.0 => Ok(x),
+        _ => Err(format!(
+            "{s:?} is not a number ≥ 0; write a decimal (0.05) or a fraction (1/255)"
+        )),
+    }
+}
+
+/// WxH, each 1 to the largest image side.
+fn parse_size(s: &str) -> Result<(u32, u32), String> {
+    let max = crate::problem::model::MAX_IMAGE_SIDE;
+    let parsed = s
+        .split_once(['x', '×'])
+        .and_then(|(w, h)| Some((w.trim().parse::<u32>().ok()?, h.trim().parse::<u32>().ok()?)));
+    match parsed {
+        Some((w, h)) if (1..=max).contains(&w) && (1..=max).contains(&h) => Ok((w, h)),
+        _ => Err(format!(
+            "{s:?} is not a size; write WIDTHxHEIGHT, each 1 to {max} (e.g. 320x240)"
+        )),
+    }
 }
 
 #[derive(Debug, Args)]
@@ -272,10 +366,17 @@ pub enum ColorChoice {
     Never,
 }
 
-#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
-pub enum Precision {
-    F32,
-    F64,
+pub use crate::core::Precision;
+
+/// `--precision f32|f64`.
+impl ValueEnum for Precision {
+    fn value_variants<'a>() -> &'a [Self] {
+        &[Precision::F32, Precision::F64]
+    }
+
+    fn to_possible_value(&self) -> Option<clap::builder::PossibleValue> {
+        Some(clap::builder::PossibleValue::new(self.name()))
+    }
 }
 
 /// Exit code: everything solved (or every checked answer accepted).
@@ -296,6 +397,7 @@ pub fn run(cli: &Cli) -> u8 {
     match &cli.command {
         Command::Solve(args) => solve_command(args),
         Command::Render(args) => render_command(args),
+        Command::Tradeoff(args) => tradeoff_command(args),
         Command::Schema(args) => {
             let mut text = problem::schema_json();
             text.push('\n');
@@ -599,26 +701,9 @@ fn apply_settings<R: Real>(
 fn render_scene<R: Real>(args: &RenderArgs) -> Result<u8, ProblemError> {
     let path = &args.scene;
     let started = std::time::Instant::now();
-    let (_, mut problem) = problem::load::<R>(path)?;
+    let (mut problem, camera) = problem::load_scene::<R>(path)?;
     let loaded = started.elapsed();
     apply_settings(&args.settings, &mut problem)?;
-    let Some(camera) = problem.camera else {
-        return Err(crate::problem::Invalid::new(
-            "camera",
-            "missing: rendering needs a camera",
-            "add \"camera\": {\"eye\": [x, y, z], \"look_at\": [x, y, z], \"fov\": 45, \
-             \"width\": 640, \"height\": 480}",
-        )
-        .at(path));
-    };
-    if problem.surfaces().is_empty() {
-        return Err(crate::problem::Invalid::new(
-            "surfaces",
-            "missing: a scene needs surfaces for its rays to hit (this is a point problem)",
-            "add \"surfaces\" and a \"camera\", or solve it with `phong solve`",
-        )
-        .at(path));
-    }
     let image_format = match (&args.output, args.image_format) {
         (_, Some(f)) => Some(f),
         (Some(out), None) => {
@@ -632,24 +717,7 @@ fn render_scene<R: Real>(args: &RenderArgs) -> Result<u8, ProblemError> {
         }
         (None, None) => None,
     };
-    let pool = {
-        let mut b = rayon::ThreadPoolBuilder::new();
-        if let Some(n) = args.threads {
-            if n == 0 {
-                return Err(ProblemError::Usage {
-                    flag: "--threads".into(),
-                    message: "0 threads cannot render".into(),
-                    fix: "give --threads 1 or more (or leave it out: one per core)".into(),
-                });
-            }
-            b = b.num_threads(n);
-        }
-        b.build().map_err(|e| ProblemError::Usage {
-            flag: "--threads".into(),
-            message: format!("cannot start the worker threads: {e}"),
-            fix: "give fewer --threads".into(),
-        })?
-    };
+    let pool = thread_pool(args.threads)?;
     let building = std::time::Instant::now();
     let scene = pool.install(|| crate::tracer::Scene::new(&problem));
     let built = building.elapsed();
@@ -729,6 +797,165 @@ fn render_scene<R: Real>(args: &RenderArgs) -> Result<u8, ProblemError> {
         );
     }
     Ok(EXIT_OK)
+}
+
+/// The worker threads: `threads`, or one per core.
+fn thread_pool(threads: Option<usize>) -> Result<rayon::ThreadPool, ProblemError> {
+    let mut b = rayon::ThreadPoolBuilder::new();
+    if let Some(n) = threads {
+        if n == 0 {
+            return Err(ProblemError::Usage {
+                flag: "--threads".into(),
+                message: "0 threads cannot render".into(),
+                fix: "give --threads 1 or more (or leave it out: one per core)".into(),
+            });
+        }
+        b = b.num_threads(n);
+    }
+    b.build().map_err(|e| ProblemError::Usage {
+        flag: "--threads".into(),
+        message: format!("cannot start the worker threads: {e}"),
+        fix: "give fewer --threads".into(),
+    })
+}
+
+fn tradeoff_command(args: &TradeoffArgs) -> u8 {
+    match tradeoff_run(args) {
+        Ok(code) => code,
+        Err(e) => {
+            eprintln!("error: {e}");
+            EXIT_BAD_INPUT
+        }
+    }
+}
+
+fn tradeoff_run(args: &TradeoffArgs) -> Result<u8, ProblemError> {
+    use crate::problem::validate::{check_max_level, check_min_weight, check_samples};
+    use crate::tradeoff::{self, report, ReferenceSettings, Scenes, Sweep};
+    let flag = |name: &str, (message, fix): (String, String)| ProblemError::Usage {
+        flag: name.to_owned(),
+        message,
+        fix,
+    };
+    for (name, empty) in [
+        ("--precisions", args.precisions.is_empty()),
+        ("--levels", args.levels.is_empty()),
+        ("--min-weights", args.min_weights.is_empty()),
+        ("--samples", args.samples.is_empty()),
+    ] {
+        if empty {
+            return Err(flag(
+                name,
+                (
+                    "is empty: there is nothing to sweep".into(),
+                    "give at least one value".into(),
+                ),
+            ));
+        }
+    }
+    for &l in args.levels.iter().chain([&args.reference_level]) {
+        check_max_level(l).map_err(|e| flag("--levels", e))?;
+    }
+    for &w in &args.min_weights {
+        check_min_weight(w).map_err(|e| flag("--min-weights", e))?;
+    }
+    for &n in &args.samples {
+        check_samples(n).map_err(|e| flag("--samples", e))?;
+    }
+    check_samples(args.reference_samples).map_err(|e| flag("--reference-samples", e))?;
+    if args.runs == 0 {
+        return Err(flag(
+            "--runs",
+            (
+                "0 runs measure nothing".into(),
+                "give --runs 1 or more (3 or 5 for a steadier median)".into(),
+            ),
+        ));
+    }
+    if let Some(plot) = &args.plot {
+        if !plot
+            .extension()
+            .is_some_and(|e| e.eq_ignore_ascii_case("svg"))
+        {
+            return Err(flag(
+                "--plot",
+                (
+                    format!("{} does not end in .svg", plot.display()),
+                    "name the plot *.svg (it is written as SVG)".into(),
+                ),
+            ));
+        }
+    }
+    fn load<R: Real>(
+        path: &Path,
+        size: Option<(u32, u32)>,
+    ) -> Result<(problem::Problem<R>, problem::Camera<R>), ProblemError> {
+        let (p, mut camera) = problem::load_scene::<R>(path)?;
+        if let Some((w, h)) = size {
+            camera.width = w;
+            camera.height = h;
+        }
+        Ok((p, camera))
+    }
+    let f64_scene = load::<f64>(&args.scene, args.size)?;
+    let f32_scene = if args.precisions.contains(&Precision::F32) {
+        Some(load::<f32>(&args.scene, args.size)?)
+    } else {
+        None
+    };
+    let pool = thread_pool(args.threads)?;
+    let sweep = Sweep {
+        precisions: dedup(&args.precisions),
+        levels: dedup(&args.levels),
+        min_weights: args.min_weights.clone(),
+        samples: dedup(&args.samples),
+        runs: args.runs,
+    };
+    let reference = ReferenceSettings {
+        max_level: args.reference_level,
+        samples: args.reference_samples,
+    };
+    let total = 1 + sweep.settings().len() as u64 * u64::from(sweep.runs);
+    let bar = progress_bar(total);
+    let outcome = pool.install(|| {
+        tradeoff::measure(
+            Scenes::new(f64_scene, f32_scene),
+            &sweep,
+            reference,
+            &|_| bar.inc(1),
+        )
+    });
+    bar.finish_and_clear();
+    let file = args.scene.display().to_string();
+    let summary = report::Summary::new(&file, &outcome, args.metric, args.budget);
+    if let Some(plot) = &args.plot {
+        let svg = tradeoff::plot::svg(&summary).map_err(|e| ProblemError::Usage {
+            flag: "--plot".into(),
+            message: format!("the plot could not be drawn: {e}"),
+            fix: "report this as a bug; the table is still written without --plot".into(),
+        })?;
+        if let Err(e) = write_atomically(plot, svg.as_bytes()) {
+            eprintln!("error: cannot write {}: {e}", plot.display());
+            return Ok(EXIT_BAD_INPUT);
+        }
+    }
+    let text = match args.format {
+        TradeoffFormat::Text => report::text(&summary),
+        TradeoffFormat::Json => json_text(vec![report::json(&summary)]),
+        TradeoffFormat::Csv => report::csv(&summary),
+    };
+    Ok(emit(args.output.as_deref(), &text))
+}
+
+/// The values in their first order, each once.
+fn dedup<T: PartialEq + Copy>(values: &[T]) -> Vec<T> {
+    let mut out: Vec<T> = Vec::with_capacity(values.len());
+    for &v in values {
+        if !out.contains(&v) {
+            out.push(v);
+        }
+    }
+    out
 }
 
 /// A progress bar on stderr when it is a terminal; hidden otherwise (and under CI).

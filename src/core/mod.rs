@@ -26,7 +26,7 @@ pub mod vector;
 
 pub use light::{Arrival, Cone, ConeTest, Falloff, Light, LightKind, LightSet, Reach};
 pub use material::Material;
-pub use real::{Real, Vector, V3};
+pub use real::{Precision, Real, Vector, V3};
 pub use shade::{
     shade, shade_with, AllVisible, Chapter, Formulas, LightStatus, LightTerm, NoRecord, Recorder,
     Shade, ShadingPoint, Slipped, SpecularStatus, SpecularTerm, Visibility,

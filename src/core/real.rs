@@ -272,6 +272,25 @@ impl_real!(f64, glam::DVec3, "f64");
 /// Shorthand for the vector type of a precision.
 pub type V3<R> = <R as Real>::Vec3;
 
+/// The precision a whole calculation runs in, chosen at run time (the code is generic over
+/// [`Real`]; this names the instance).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord, serde::Serialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Precision {
+    F32,
+    F64,
+}
+
+impl Precision {
+    /// "f32" or "f64", as `--precision` and [`Real::NAME`] write it.
+    pub fn name(self) -> &'static str {
+        match self {
+            Precision::F32 => f32::NAME,
+            Precision::F64 => f64::NAME,
+        }
+    }
+}
+
 /// Builds a vector of precision `R` from f64 components.
 #[inline]
 pub fn v3<R: Real>(a: [f64; 3]) -> V3<R> {

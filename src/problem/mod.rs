@@ -122,3 +122,26 @@ pub fn load<R: Real>(path: &Path) -> Result<(ProblemFile, Problem<R>), ProblemEr
     let problem = validate::validate_in::<R>(&file, path.parent()).map_err(|e| e.at(path))?;
     Ok((file, problem))
 }
+
+/// Reads a scene: a problem file with a camera and surfaces (what the tracer needs).
+pub fn load_scene<R: Real>(path: &Path) -> Result<(Problem<R>, Camera<R>), ProblemError> {
+    let (_, problem) = load::<R>(path)?;
+    let Some(camera) = problem.camera else {
+        return Err(Invalid::new(
+            "camera",
+            "missing: rendering needs a camera",
+            "add \"camera\": {\"eye\": [x, y, z], \"look_at\": [x, y, z], \"fov\": 45, \
+             \"width\": 640, \"height\": 480}",
+        )
+        .at(path));
+    };
+    if problem.surfaces().is_empty() {
+        return Err(Invalid::new(
+            "surfaces",
+            "missing: a scene needs surfaces for its rays to hit (this is a point problem)",
+            "add \"surfaces\" and a \"camera\", or solve it with `phong solve`",
+        )
+        .at(path));
+    }
+    Ok((problem, camera))
+}

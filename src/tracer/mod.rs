@@ -19,5 +19,5 @@ pub mod trace;
 
 pub use camera::CameraRays;
 pub use explain::{explain_pixel, PixelExplanation};
-pub use render::{render, Image};
+pub use render::{render, render_linear, Image, LinearImage};
 pub use trace::{Counts, Scene, Stop, Tracer};

@@ -23,7 +23,7 @@ pub struct Image {
 /// display for that ray), then round(255·c), as the solver's 8-bit colour.
 #[inline]
 pub fn to_rgb8(sum: [f64; 3], samples: u32) -> [u8; 3] {
-    sum.map(|c| (c / f64::from(samples) * 255.0).round() as u8)
+    mean_to_rgb8(sum.map(|c| c / f64::from(samples)))
 }
 
 /// A colour clamped to [0, 1] and widened, to be summed over samples.
@@ -32,15 +32,15 @@ pub fn clamped<R: Real>(c: V3<R>) -> [f64; 3] {
     c.to_array().map(|x| x.max(R::ZERO).min(R::ONE).to_f64())
 }
 
-/// The colour of pixel (x, y): its samples traced and averaged.
+/// The mean of pixel (x, y)'s samples, each clamped to [0, 1] (before rounding to 8 bits).
 #[inline]
-pub fn pixel<R: Real>(
+pub fn pixel_mean<R: Real>(
     tracer: &Tracer<R>,
     camera: &CameraRays<R>,
     x: u32,
     y: u32,
     counts: &mut Counts,
-) -> [u8; 3] {
+) -> [f64; 3] {
     let n = tracer.problem.render.samples;
     let mut sum = [0.0f64; 3];
     for i in 0..n {
@@ -50,7 +50,82 @@ pub fn pixel<R: Real>(
             sum[k] += c[k];
         }
     }
-    to_rgb8(sum, n)
+    sum.map(|c| c / f64::from(n))
+}
+
+/// The colour of pixel (x, y): its samples traced and averaged, in 8 bits.
+#[inline]
+pub fn pixel<R: Real>(
+    tracer: &Tracer<R>,
+    camera: &CameraRays<R>,
+    x: u32,
+    y: u32,
+    counts: &mut Counts,
+) -> [u8; 3] {
+    mean_to_rgb8(pixel_mean(tracer, camera, x, y, counts))
+}
+
+/// A pixel's mean in 8 bits: round(255·c), as the solver's 8-bit colour.
+#[inline]
+pub fn mean_to_rgb8(mean: [f64; 3]) -> [u8; 3] {
+    mean.map(|c| (c * 255.0).round() as u8)
+}
+
+/// An image of pixel means in [0, 1] (before rounding to 8 bits), rows top to bottom: what
+/// `phong tradeoff` compares.
+#[derive(Clone, Debug, PartialEq)]
+pub struct LinearImage {
+    pub width: u32,
+    pub height: u32,
+    /// width × height × 3 values.
+    pub rgb: Vec<f64>,
+}
+
+impl LinearImage {
+    /// The image as written to a file.
+    pub fn to_rgb8(&self) -> Image {
+        Image {
+            width: self.width,
+            height: self.height,
+            rgb: self
+                .rgb
+                .chunks_exact(3)
+                .flat_map(|c| mean_to_rgb8([c[0], c[1], c[2]]))
+                .collect(),
+        }
+    }
+}
+
+/// Every pixel mapped by `each` from its mean, rows in parallel and gathered by index.
+fn render_rows<R: Real, T: Copy + Send>(
+    problem: &Problem<R>,
+    camera: &Camera<R>,
+    scene: &Scene<R>,
+    progress: &(dyn Fn() + Sync),
+    each: impl Fn([f64; 3]) -> [T; 3] + Sync,
+) -> (Vec<T>, Counts) {
+    let rays = CameraRays::new(camera);
+    let tracer = Tracer { scene, problem };
+    let width = camera.width;
+    let rows: Vec<(Vec<T>, Counts)> = (0..camera.height)
+        .into_par_iter()
+        .map(|y| {
+            let mut counts = Counts::default();
+            let mut row = Vec::with_capacity(width as usize * 3);
+            for x in 0..width {
+                row.extend_from_slice(&each(pixel_mean(&tracer, &rays, x, y, &mut counts)));
+            }
+            progress();
+            (row, counts)
+        })
+        .collect();
+    let mut counts = Counts::default();
+    let mut all = Vec::with_capacity(width as usize * camera.height as usize * 3);
+    for (row, c) in rows {
+        all.extend_from_slice(&row);
+        counts += c;
+    }
+    (all, counts)
 }
 
 /// Renders the image with the problem's render settings. `progress` is called once per finished row (from any thread).
@@ -60,33 +135,27 @@ pub fn render<R: Real>(
     scene: &Scene<R>,
     progress: &(dyn Fn() + Sync),
 ) -> (Image, Counts) {
-    let rays = CameraRays::new(camera);
-    let tracer = Tracer { scene, problem };
-    let width = camera.width;
-    let rows: Vec<(Vec<u8>, Counts)> = (0..camera.height)
-        .into_par_iter()
-        .map(|y| {
-            let mut counts = Counts::default();
-            let mut row = Vec::with_capacity(width as usize * 3);
-            for x in 0..width {
-                row.extend_from_slice(&pixel(&tracer, &rays, x, y, &mut counts));
-            }
-            progress();
-            (row, counts)
-        })
-        .collect();
-    let mut counts = Counts::default();
-    let mut rgb = Vec::with_capacity(width as usize * camera.height as usize * 3);
-    for (row, c) in rows {
-        rgb.extend_from_slice(&row);
-        counts += c;
-    }
-    (
-        Image {
-            width,
-            height: camera.height,
-            rgb,
-        },
-        counts,
-    )
+    let (rgb, counts) = render_rows(problem, camera, scene, progress, mean_to_rgb8);
+    let image = Image {
+        width: camera.width,
+        height: camera.height,
+        rgb,
+    };
+    (image, counts)
+}
+
+/// Renders the pixel means, before rounding to 8 bits (`render` is this, rounded).
+pub fn render_linear<R: Real>(
+    problem: &Problem<R>,
+    camera: &Camera<R>,
+    scene: &Scene<R>,
+    progress: &(dyn Fn() + Sync),
+) -> (LinearImage, Counts) {
+    let (rgb, counts) = render_rows(problem, camera, scene, progress, |m| m);
+    let image = LinearImage {
+        width: camera.width,
+        height: camera.height,
+        rgb,
+    };
+    (image, counts)
 }
