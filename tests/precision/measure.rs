@@ -421,11 +421,11 @@ pub fn compare(
         }
     }
     let w = weight(inputs, r, prec, input_rounding);
-    for c in 0..3 {
+    for (c, wc) in w.iter().enumerate() {
         m.color_ulps = m.color_ulps.max(ulps(out.color[c], &r.color[c], prec));
         m.color_scaled = m
             .color_scaled
-            .max(scaled(out.color[c], &r.color[c], &w[c], prec));
+            .max(scaled(out.color[c], &r.color[c], wc, prec));
         m.color_abs = m
             .color_abs
             .max(to_f64(&abs_diff(out.color[c], &r.color[c])));

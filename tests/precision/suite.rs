@@ -586,7 +586,7 @@ fn extremes(g: &mut Draw, cases: &mut Vec<Case>) {
     // Grazing light: travel D = T − c·N̂, so cos θ = −N̂·D̂ = c (to the rounding of the inputs;
     // the reference takes the inputs exactly as they are). O_s = 0: the diffuse term alone.
     for (sign, c) in [("+", 1e-12), ("−", -1e-12)] {
-        for kind in 0..3 {
+        for (kind, kind_name) in KIND.iter().enumerate() {
             for f in 0..4 {
                 let (n, t, b) = g.frame();
                 let p = g.point(5.0);
@@ -598,7 +598,7 @@ fn extremes(g: &mut Draw, cases: &mut Vec<Case>) {
                 let normal = mul(n, g.range(0.5, 2.0));
                 let name = format!(
                     "grazing cos θ = {sign}1e-12, {} light, frame {f}",
-                    KIND[kind]
+                    kind_name
                 );
                 cases.push(Case::single("grazing", name, p, normal, viewer, light, m));
             }
@@ -622,7 +622,7 @@ fn extremes(g: &mut Draw, cases: &mut Vec<Case>) {
             }
         };
         let p = int(g);
-        for kind in 0..3 {
+        for (kind, kind_name) in KIND.iter().enumerate() {
             let position = add(p, mul(t, -2.0));
             let color = [0.9, 0.7, 0.5];
             let light = match kind {
@@ -645,7 +645,7 @@ fn extremes(g: &mut Draw, cases: &mut Vec<Case>) {
                 },
             };
             let viewer = Some(add(p, add(mul(n, 3.0), t)));
-            let name = format!("tangent plane, {} light, frame {f}", KIND[kind]);
+            let name = format!("tangent plane, {} light, frame {f}", kind_name);
             let m = g.material(10.0);
             cases.push(Case::single("tangent", name, p, n, viewer, light, m));
         }
@@ -676,13 +676,13 @@ fn extremes(g: &mut Draw, cases: &mut Vec<Case>) {
         ("ns1e300", 1e300, &[0.0, 1e-8, 1e-3][..]),
     ] {
         for &alpha in alphas {
-            for kind in 0..3 {
+            for (kind, kind_name) in KIND.iter().enumerate() {
                 for f in 0..2 {
                     let (n, p, d, e) = mirror(g, alpha);
                     let light = light_towards(kind, p, d, g.range(1.0, 10.0), 2);
                     let name = format!(
                         "n_s = {ns:e}, α = {alpha:e}, {} light, frame {f}",
-                        KIND[kind]
+                        kind_name
                     );
                     let m = g.material(ns);
                     cases.push(Case::single(group, name, p, n, Some(e), light, m));
@@ -705,13 +705,13 @@ fn extremes(g: &mut Draw, cases: &mut Vec<Case>) {
     // cos φ just below 1.
     for alpha in [1e-5, 1e-7, 1e-8] {
         for ns in [1.0, 100.0, 1e4] {
-            for kind in 0..3 {
+            for (kind, kind_name) in KIND.iter().enumerate() {
                 let (n, p, d, e) = mirror(g, alpha);
                 let light = light_towards(kind, p, d, g.range(1.0, 10.0), 1);
                 let name = format!(
                     "cos φ = 1 − {:.0e}, n_s = {ns}, {} light",
                     alpha * alpha / 2.0,
-                    KIND[kind]
+                    kind_name
                 );
                 let m = g.material(ns);
                 cases.push(Case::single("cosphi1", name, p, n, Some(e), light, m));
