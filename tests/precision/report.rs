@@ -157,6 +157,13 @@ fn errors(s: &Stats) -> String {
     format!("{} / {}", short(s.max_ulps()), short(s.median_ulps()))
 }
 
+fn scaled(s: &Stats) -> String {
+    if s.compared() == 0 {
+        return "–".into();
+    }
+    short(s.color_scaled_max)
+}
+
 fn gates(s: &Stats) -> String {
     let n = s.gate_cases.len();
     let mut out = if n == 0 {
@@ -189,13 +196,13 @@ pub fn accuracy_table(groups: &[Group]) -> String {
             g.title,
             g.f64.cases,
             errors(&g.f64),
-            short(g.f64.color_scaled_max),
+            scaled(&g.f64),
             gates(&g.f64),
             errors(&g.f32),
-            short(g.f32.color_scaled_max),
+            scaled(&g.f32),
             gates(&g.f32),
             errors(&g.f32_own),
-            short(g.f32_own.color_scaled_max),
+            scaled(&g.f32_own),
             gates(&g.f32_own),
         );
     }
