@@ -1,9 +1,12 @@
 //! The cost of one shaded point in the core: f32 against f64, with and without the record, for
-//! 1, 4 and 8 lights. Run with `cargo bench --bench shade`.
+//! 1, 2, 4 and 8 lights. Run with `cargo bench --bench shade` (about 50 s: 16 benchmarks of 1 s
+//! warm-up and 2 s measurement each).
 
 use std::hint::black_box;
+use std::time::Duration;
 
-use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion};
+use criterion::measurement::WallTime;
+use criterion::{criterion_group, criterion_main, BenchmarkGroup, BenchmarkId, Criterion};
 use phong::core::real::v3;
 use phong::core::{
     shade, AllVisible, Cone, Falloff, Light, LightKind, LightSet, Material, NoRecord, Real,
@@ -64,31 +67,36 @@ fn point<R: Real>() -> ShadingPoint<R> {
     }
 }
 
-fn bench_precision<R: Real>(c: &mut Criterion) {
-    let mut group = c.benchmark_group(format!("shade/{}", R::NAME));
+/// One precision's two benchmarks (without and with the record) for `n` lights, in `group`.
+fn bench_precision<R: Real>(group: &mut BenchmarkGroup<'_, WallTime>, n: usize) {
     let m = material::<R>();
     let at = point::<R>();
-    for n in [1usize, 4, 8] {
-        let set = lights::<R>(n);
-        group.bench_with_input(BenchmarkId::new("no_record", n), &set, |b, set| {
-            b.iter(|| -> V3<R> {
-                shade(black_box(&at), &m, set, &mut AllVisible, &mut NoRecord).color
-            })
-        });
-        group.bench_with_input(BenchmarkId::new("record", n), &set, |b, set| {
-            let mut rec = Vec::with_capacity(n);
-            b.iter(|| -> V3<R> {
-                rec.clear();
-                shade(black_box(&at), &m, set, &mut AllVisible, &mut rec).color
-            })
-        });
-    }
-    group.finish();
+    let set = lights::<R>(n);
+    group.bench_function(BenchmarkId::new(R::NAME, "no_record"), |b| {
+        b.iter(|| -> V3<R> {
+            shade(black_box(&at), &m, &set, &mut AllVisible, &mut NoRecord).color
+        })
+    });
+    group.bench_function(BenchmarkId::new(R::NAME, "record"), |b| {
+        let mut rec = Vec::with_capacity(n);
+        b.iter(|| -> V3<R> {
+            rec.clear();
+            shade(black_box(&at), &m, &set, &mut AllVisible, &mut rec).color
+        })
+    });
 }
 
+/// For each number of lights, f32 and f64 one after the other, so that both see the same
+/// machine (the load of a shared machine drifts over a minute).
 fn benches(c: &mut Criterion) {
-    bench_precision::<f32>(c);
-    bench_precision::<f64>(c);
+    for n in [1usize, 2, 4, 8] {
+        let mut group = c.benchmark_group(format!("shade/{n} lights"));
+        group.warm_up_time(Duration::from_secs(1));
+        group.measurement_time(Duration::from_secs(2));
+        bench_precision::<f32>(&mut group, n);
+        bench_precision::<f64>(&mut group, n);
+        group.finish();
+    }
 }
 
 criterion_group!(shade_benches, benches);
