@@ -239,9 +239,9 @@ impl Grazing {
 
 /// What must hold at the gate: the light's status is the one the exact sign gives (lit for
 /// cos θ > 0, behind_surface for < 0, in_tangent_plane for 0), or the solver reports
-/// gate_undecidable for that light. Where it reports, the bound it gives must contain the
-/// exact value; where it does not, nothing must be reported when the exact value is clear of
-/// twice the documented bound.
+/// gate_undecidable for that light. Where it reports, the bound it gives must be the documented
+/// one (within a factor 2) and contain the exact value; a computed value well inside the
+/// documented bound must be reported, and an exact value clear of twice the bound must not.
 fn check_gate(doc: &Value, p: Precision, exact_sign: i32, exact_cos: f64) -> Result<(), String> {
     let light = &doc["solution"]["lights"][0];
     let status = light["status"].as_str().unwrap_or_default();
@@ -273,9 +273,14 @@ fn check_gate(doc: &Value, p: Precision, exact_sign: i32, exact_cos: f64) -> Res
                     "reported undecidable with |ĉ| = {c:e} > bound {bound:e}"
                 ));
             }
-            if bound > 2.0 * documented + 1e-300 {
+            if bound > 2.0 * documented + 1e-300 || bound < documented / 2.0 {
                 return Err(format!(
                     "bound {bound:e} is not the documented {documented:e}"
+                ));
+            }
+            if (c - exact_cos).abs() > bound {
+                return Err(format!(
+                    "the bound {bound:e} does not contain the exact {exact_cos:e}"
                 ));
             }
         }
@@ -286,6 +291,11 @@ fn check_gate(doc: &Value, p: Precision, exact_sign: i32, exact_cos: f64) -> Res
             ))
         }
         None => {}
+    }
+    if c.abs() <= documented / 2.0 && c != 0.0 && reported.is_none() {
+        return Err(format!(
+            "{p:?}: |ĉ| = {c:e} is well within the bound {documented:e}, yet not reported"
+        ));
     }
     if exact_cos.abs() > 2.0 * documented && reported.is_some() {
         return Err(format!(
