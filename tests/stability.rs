@@ -469,6 +469,54 @@ fn a_grazing_light_at_1e_minus_12_is_decided_along_an_axis_and_reported_otherwis
     }
 }
 
+#[test]
+fn a_hit_point_s_own_error_widens_both_gates_in_a_ray_problem() {
+    // The plane z = 0 through Q = (1e6, 1e6, 0), hit by a ray straight down from (1e6 + 0.5,
+    // 1e6, 10): the point is O + tD, bounded by γ₇·(|O| + |Q| + |tD|) per component (the
+    // geometry's p_error), ≥ γ₇·2e6: 0.83 in f32, 3.1e-9 in f64. A point light 100 away at
+    // cos θ = 0.005 (a grazing 0.29°) moves by 2e/d ≥ 2·0.83·√2/100 ≈ 0.023 in f32 — more than
+    // 0.005, so f32 must report the gate, with a bound of at least that; f64 (2e/d ≈ 1e-10)
+    // decides it: lit (exactly: the light is above the plane).
+    let (c, d) = (0.005f64, 100.0);
+    let x0 = 1e6 + 0.5;
+    let light = [x0 - d * (1.0 - c * c).sqrt(), 1e6, d * c];
+    let problem = |light: [f64; 3], spot: Option<(f64, [f64; 3])>| {
+        let mut l = json!({ "type": "point", "position": light, "color": [1, 1, 1], "falloff": 0 });
+        if let Some((angle, axis)) = spot {
+            l = json!({ "type": "spot", "position": light, "axis": axis, "angle": angle,
+                        "exponent": 1, "color": [1, 1, 1], "falloff": 0 });
+        }
+        json!({
+            "materials": { "M": { "diffuse": [1, 1, 1], "specular": [0, 0, 0], "shininess": 1 } },
+            "lights": [l],
+            "ray": { "origin": [x0, 1e6, 10], "direction": [0, 0, -1] },
+            "surfaces": [{ "type": "plane", "point": [1e6, 1e6, 0], "normal": [0, 0, 1],
+                           "material": "M" }]
+        })
+    };
+    let f32_doc = solve(&problem(light, None), Precision::F32).unwrap();
+    let g = finding(&f32_doc, "gate_undecidable", 0).expect("f32 reports the gate");
+    assert!(g["values"]["error_bound"].as_f64().unwrap() >= 0.023, "{g}");
+    let f64_doc = solve(&problem(light, None), Precision::F64).unwrap();
+    assert_eq!(f64_doc["solution"]["lights"][0]["status"], "lit");
+    assert!(codes_for(&f64_doc, Some(0)).is_empty());
+
+    // A spot straight above the hit point, 100 up, axis turned 30° + 1e-3 rad from the
+    // vertical, γ = 30°: the point is 1e-3 rad outside the cone. The core's own tolerance
+    // (20ε(1 + γ): 3.6e-6 rad in f32) cannot tell it from the edge only with the point's
+    // error: 2e/d ≈ 0.023 rad in f32, so f32 reports cone_edge_undecidable; f64 decides:
+    // outside.
+    let t = 30f64.to_radians() + 1e-3;
+    let axis = [-t.sin(), 0.0, -t.cos()];
+    let above = [x0, 1e6, d];
+    let doc = solve(&problem(above, Some((30.0, axis))), Precision::F32).unwrap();
+    let f = finding(&doc, "cone_edge_undecidable", 0).expect("f32 reports the cone");
+    assert!(f["values"]["error_bound_deg"].as_f64().unwrap() >= 0.023f64.to_degrees());
+    let doc = solve(&problem(above, Some((30.0, axis))), Precision::F64).unwrap();
+    assert_eq!(doc["solution"]["lights"][0]["status"], "outside_cone");
+    assert!(finding(&doc, "cone_edge_undecidable", 0).is_none());
+}
+
 // ---------------------------------------------------------------------------------------------
 // 2. (cos φ)^n_s: n_s = 0.5, 1e6, 1e300; cos φ just below 1
 // ---------------------------------------------------------------------------------------------
