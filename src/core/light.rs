@@ -85,6 +85,13 @@ impl<R: Real> Cone<R> {
             exponent,
         }
     }
+
+    /// The bound (radians) on the rounding error of the computed ψ − γ for an exact P: a point
+    /// with |ψ − γ| within it is on the edge to within rounding (see `CONE_EDGE_ULPS`).
+    #[inline]
+    pub fn edge_tolerance(&self) -> R {
+        R::from_f64(CONE_EDGE_ULPS) * R::EPSILON * (R::ONE + self.gamma)
+    }
 }
 
 /// Where the light is and how its colour decays.
@@ -157,12 +164,31 @@ pub struct Arrival<R: Real> {
     pub reach: Reach,
 }
 
-/// Tolerance of the cone-edge test in units of machine epsilon (radians, relative to 1 + γ):
-/// a point whose ψ lies within this of γ is on the edge, and the edge is lit (DESIGN.md).
-const CONE_EDGE_ULPS: f64 = 4.0;
+/// Tolerance of the cone-edge test in units of machine epsilon ε (radians, times 1 + γ): a
+/// point whose computed ψ lies within this of the computed γ is on the edge to within rounding,
+/// and the edge is lit (DESIGN.md). It bounds the error of ψ − γ for exact (binary) P, P_l, D_l
+/// and angle, with u = ε/2 and γ_k = ku/(1 − ku):
+/// - D_l as used is the given axis normalised (γ₆ per component: its direction is off by at
+///   most γ₆ rad) or, when its length is 1 to within 8ε, the given vector itself (the same
+///   direction; the angle from atan2 does not depend on the length);
+/// - L = (P − P_l)/d: the difference is correctly rounded (u, relative, whatever the size of the
+///   coordinates), then normalised (γ₇): off by at most γ₈ rad;
+/// - atan2(‖D_l × L‖, D_l·L) of the rounded vectors: each cross component a_j b_k − a_k b_j is
+///   off by γ₂(|a_j b_k| + |a_k b_j|), √2·γ₂ in all, its length by γ₃, the dot by γ₃; moving
+///   (sin ψ, cos ψ) by that moves the angle by at most γ₈; atan2 itself is within 2 ulp (4u·ψ);
+/// - γ in radians is γ°·(π/180) with π/180 rounded: 3u·γ.
+///
+/// In all about γ₂₂ + 4u·ψ + 3u·γ ≈ 11ε + 3.5ε·γ near the edge, plus second-order terms and
+/// the underflow of a cross product below √(MIN_POSITIVE), far below ε; 20ε·(1 + γ) covers it
+/// with room to spare (tests/stability.rs checks it against exactly constructed edges).
+/// The size of the coordinates does not enter: the difference of two binary numbers is rounded
+/// relative to itself. (A *computed* P, a ray's hit, carries its own error; the solver adds it
+/// when it reports how reliable the test is, `solve::findings`.)
+const CONE_EDGE_ULPS: f64 = 20.0;
 /// Away from the edge by more than this many ε in cos ψ − cos γ, the cheap cosine comparison
-/// and the angle comparison agree (each side is rounded by a few ε).
-const CONE_COS_MARGIN_ULPS: f64 = 64.0;
+/// and the angle comparison agree: within the edge tolerance, |cos ψ − cos γ| ≤ sin γ·20ε(1 + γ)
+/// ≤ 52ε, and cos ψ = D_l·L and cos γ are each rounded by a few ε more.
+const CONE_COS_MARGIN_ULPS: f64 = 128.0;
 
 impl<R: Real> Light<R> {
     /// What this light delivers at P (Eq. 4.1–4.4), with every intermediate.
@@ -235,7 +261,7 @@ impl<R: Real> Light<R> {
                 (R::ZERO, cos_psi > c.cos_gamma, false)
             } else {
                 let psi = c.axis.cross(l).naive_length().atan2(cos_psi);
-                let tol = R::from_f64(CONE_EDGE_ULPS) * R::EPSILON * (R::ONE + c.gamma);
+                let tol = c.edge_tolerance();
                 (psi, psi <= c.gamma + tol, (psi - c.gamma).abs() <= tol)
             };
             // cos ψ may round a hair outside [0, 1] on the edge of a 90° cone or on the axis.

@@ -68,6 +68,10 @@ pub trait Real:
     fn next_down(self) -> Self;
     /// Raises to an integer power by repeated multiplication.
     fn powi(self, n: i32) -> Self;
+    /// e^x.
+    fn exp(self) -> Self;
+    /// ln(1 + x), accurate for x near 0.
+    fn ln_1p(self) -> Self;
     /// x^e as the chapter's exponents need it: by repeated squaring ([`Real::powi`]) when e is a
     /// whole number up to 1024 in magnitude (n_s = 20, a spot's e = 2: faster than `powf`, and
     /// as accurate), by `powf` otherwise.
@@ -209,6 +213,14 @@ macro_rules! impl_real {
             #[inline]
             fn powi(self, n: i32) -> Self {
                 <$t>::powi(self, n)
+            }
+            #[inline]
+            fn exp(self) -> Self {
+                <$t>::exp(self)
+            }
+            #[inline]
+            fn ln_1p(self) -> Self {
+                <$t>::ln_1p(self)
             }
         }
 

@@ -168,17 +168,45 @@ impl<R: Real> Visibility<R> for AllVisible {
     }
 }
 
+/// (cos φ)^n_s for 0 < cos φ, cos φ = −R·V with unit R and V (Eq. 4.9, 4.10), clamped to at
+/// most 1 (cos φ may round a hair above 1, which a huge n_s must not turn into infinity).
+///
+/// Near cos φ = 1 the rounding of cos φ itself (a few ε, absolute) is what limits the power:
+/// (cos φ)^n = exp(n·ln cos φ) moves by a factor exp(±n·few ε). Where n ≫ 1/ε that turns a true
+/// exp(−n(1 − cos φ)) ≈ 0 into a spurious 1 (1 − 10⁻¹⁰ is 1 in f32; 1 − 10⁻¹⁷ is 1 in f64). So
+/// where `pow` would use `powf` anyway (n_s not a whole number up to 1024, see [`Real::pow`])
+/// and cos φ > 1/2, the power is formed from 1 − cos φ = ‖R + V‖²/2, which for unit R and V has
+/// no cancellation (R + V is small and exact where R ≈ −V, and the lengths' own rounding
+/// enters relatively), as exp(n·ln_1p(−(1 − cos φ))). A whole n_s up to 1024 keeps the
+/// repeated squaring: its result moves by at most a factor 1 ± 1024·few ε, never to a spurious
+/// 1, and the tracer's usual shininess stays on its fast path.
+#[inline]
+fn cos_phi_pow<R: Real>(cos_phi: R, r: V3<R>, v: V3<R>, n_s: R) -> R {
+    let c = cos_phi.min(R::ONE);
+    let by_squaring = n_s.trunc() == n_s && n_s <= R::from_f64(1024.0);
+    if by_squaring || c <= R::ONE / R::TWO {
+        return c.pow(n_s);
+    }
+    let s = r + v;
+    let one_minus_cos = s.dot(s) / R::TWO;
+    (n_s * (-one_minus_cos).ln_1p()).exp()
+}
+
 /// x^n_s where it is defined: a negative base has a real power only for an integer exponent.
 /// x is a cosine: it is clamped to [−1, 1] first, so that a value rounded a hair beyond ±1
-/// cannot grow without bound under a huge n_s.
+/// cannot grow without bound under a huge n_s. `unit` carries R and V where x is −R·V of unit
+/// vectors (the chapter's formulas), so that a positive cos φ is raised exactly as the gated
+/// term is ([`cos_phi_pow`]) and the literal total equals the colour where nothing is gated.
 #[inline]
-fn literal_pow<R: Real>(x: R, n_s: R, clamp: bool) -> Option<R> {
+fn literal_pow<R: Real>(x: R, n_s: R, clamp: bool, unit: Option<(V3<R>, V3<R>)>) -> Option<R> {
     if x < R::ZERO && n_s.trunc() != n_s {
         None
-    } else if clamp {
-        Some(x.max(-R::ONE).min(R::ONE).pow(n_s))
-    } else {
+    } else if !clamp {
         Some(x.pow(n_s))
+    } else if let (Some((r, v)), true) = (unit, x > R::ZERO) {
+        Some(cos_phi_pow(x, r, v, n_s))
+    } else {
+        Some(x.max(-R::ONE).min(R::ONE).pow(n_s))
     }
 }
 
@@ -343,11 +371,14 @@ pub fn shade_with<R: Real, Rec: Recorder<R>, Vis: Visibility<R>, F: Formulas>(
                 let (st, pow, term) = if !lit {
                     (SpecularStatus::LightNotLit, None, V3::<R>::ZERO)
                 } else if cos_phi > R::ZERO {
-                    // cos φ can round a hair above 1; a huge n_s must not turn that into inf.
+                    // cos φ can round a hair above 1; a huge n_s must not turn that into inf,
+                    // nor a cos φ that rounds to 1 into a spurious 1 (see `cos_phi_pow`).
                     let pow = if formulas.raw_normal() {
                         cos_phi.pow(m.n_s)
-                    } else {
+                    } else if formulas.half_vector() {
                         cos_phi.min(R::ONE).pow(m.n_s)
+                    } else {
+                        cos_phi_pow(cos_phi, r, v, m.n_s)
                     };
                     (SpecularStatus::Lit, Some(pow), o_s * arrival.i_l * pow)
                 } else {
@@ -358,8 +389,9 @@ pub fn shade_with<R: Real, Rec: Recorder<R>, Vis: Visibility<R>, F: Formulas>(
                 } else if !arrives {
                     Some(V3::<R>::ZERO)
                 } else {
-                    literal_pow(cos_phi, m.n_s, !formulas.raw_normal())
-                        .map(|p| o_s * arrival.i_l * p)
+                    let clamp = !formulas.raw_normal();
+                    let unit = (clamp && !formulas.half_vector()).then_some((r, v));
+                    literal_pow(cos_phi, m.n_s, clamp, unit).map(|p| o_s * arrival.i_l * p)
                 };
                 SpecularTerm {
                     status: st,
@@ -555,6 +587,49 @@ mod tests {
         assert!(s.specular.max_element() <= R::from_f64(0.4));
     }
 
+    fn huge_shininess_near_the_highlight_gives_no_spurious_one<R: Real>() {
+        // Light straight above (L = (0,0,−1), so R = (0,0,1)); the eye at E = (x, 0, 1) sees P
+        // at an angle φ from the mirror direction with cos φ = 1/√(1 + x²): 1 − cos φ ≈ x²/2,
+        // 1e-10 in f32 (x ≈ 1.41e-5) and 1e-18 in f64 (x ≈ 1.41e-9), both of which round cos φ
+        // to exactly 1. With n_s = 1/(1 − cos φ) the power is (cos φ)^n = exp(−(n/2)·ln(1 + x²))
+        // ≈ e⁻¹, computed here in f64 from the input as rounded to R; a naive powf gives 1.
+        let (x, n_s) = if R::NAME == "f32" {
+            (1.414_213_5e-5, 1e10)
+        } else {
+            (1.414_213_562_373_095e-9, 1e18)
+        };
+        let x = R::from_f64(x);
+        let xf = x.to_f64();
+        let expected = (-(n_s / 2.0) * (xf * xf).ln_1p()).exp();
+        assert!((expected - (-1f64).exp()).abs() < 1e-3, "{expected}");
+        let m = Material {
+            o_a: None,
+            o_d: None,
+            o_s: Some(v3::<R>([1.0; 3])),
+            n_s: R::from_f64(n_s),
+            o_r: None,
+        };
+        let lights = LightSet {
+            ambient: None,
+            lights: vec![point_light::<R>([0.0, 0.0, 1.0], Falloff::None)],
+        };
+        let e = V3::<R>::new(x, R::ZERO, R::ONE);
+        let v = crate::core::vector::normalize::<R>(-e).unwrap().unit;
+        let at = ShadingPoint {
+            p: V3::<R>::ZERO,
+            n: v3::<R>([0.0, 0.0, 1.0]),
+            v: Some(v),
+        };
+        let mut rec = Vec::new();
+        let s = shade(&at, &m, &lights, &mut AllVisible, &mut rec);
+        assert_eq!(rec[0].specular.cos_phi, Some(R::ONE), "cos φ rounds to 1");
+        // 1 − cos φ from ‖R + V‖²/2 is exact to a few ε relative here (R + V = (−x', 0, 0) up to
+        // the rounding of V), so the power is within a relative 1e-4 of the expected value.
+        let got = s.specular.x().to_f64();
+        assert!((got / expected - 1.0).abs() < 1e-4, "{got} vs {expected}");
+        assert_eq!(s.literal.map(|l| l.x()), Some(s.specular.x()));
+    }
+
     macro_rules! for_both_precisions {
         ($($name:ident),* $(,)?) => {
             mod f32_tests { $( #[test] fn $name() { super::$name::<f32>() } )* }
@@ -569,6 +644,7 @@ mod tests {
         recording_does_not_change_the_colour,
         spot_cone_edge_is_lit_and_outside_is_dark,
         huge_shininess_with_cos_phi_rounded_above_one_stays_finite,
+        huge_shininess_near_the_highlight_gives_no_spurious_one,
     );
 
     #[test]

@@ -250,6 +250,7 @@ mod tests {
     use super::*;
     use crate::core::real::{to_f64_array, v3};
     use crate::geometry::bounds::test_rng::Rng;
+    use crate::geometry::hit::offset_origin;
 
     fn tri<R: Real>(a: [f64; 3], b: [f64; 3], c: [f64; 3]) -> Triangle<R> {
         Triangle::new(v3::<R>(a), v3::<R>(b), v3::<R>(c))
@@ -520,28 +521,6 @@ mod tests {
     fn a_ray_through_a_shared_edge_never_misses_both_triangles() {
         watertight::<f32>(20_000);
         watertight::<f64>(20_000);
-    }
-
-    /// pbrt-v4's `OffsetRayOrigin`: `p` moved along `n`, to the side `w` leaves by, by the
-    /// distance the error box of `p` reaches along `n`, then each component rounded away.
-    fn offset_origin<R: Real>(p: V3<R>, err: V3<R>, n: V3<R>, w: V3<R>) -> V3<R> {
-        let d = n.abs().dot(err);
-        let offset = if w.dot(n) < R::ZERO { -(n * d) } else { n * d };
-        let (po, off) = ((p + offset).to_array(), offset.to_array());
-        let away = |x: R, o: R| {
-            if o > R::ZERO {
-                x.next_up()
-            } else if o < R::ZERO {
-                x.next_down()
-            } else {
-                x
-            }
-        };
-        V3::<R>::new(
-            away(po[0], off[0]),
-            away(po[1], off[1]),
-            away(po[2], off[2]),
-        )
     }
 
     /// (spawned rays that found no self-hit, hits found) over random triangles and rays.

@@ -177,6 +177,7 @@ pub fn finding<R: Real>(problem: &Problem<R>, f: &Finding) -> String {
 /// The sentence for a finding.
 pub fn finding_in<R: Real>(problem: &Problem<R>, f: &Finding, lang: Lang) -> String {
     let v = |k: &str| f.values.get(k).copied().map_or_else(String::new, num);
+    let p = R::NAME;
     let light = f
         .light
         .map(|i| light_name_in(problem, i, lang))
@@ -249,14 +250,88 @@ pub fn finding_in<R: Real>(problem: &Problem<R>, f: &Finding, lang: Lang) -> Str
         FindingCode::LightOnConeEdge => pick(
             lang,
             format!(
-                "the point is exactly on the edge of the cone of {light} (ψ = γ): it counts as \
-                 lit"
+                "the point is on the edge of the cone of {light} (ψ = γ to within the rounding \
+                 of their computation in {p}, ±{}°): it counts as lit; exactly on the edge and \
+                 a hair inside or outside cannot be told apart in this precision",
+                v("error_bound_deg")
             ),
             format!(
-                "o ponto está exatamente sobre uma geratriz do cone da fonte de luz {light} \
-                 (ψ = γ): conta como iluminado"
+                "o ponto está sobre uma geratriz do cone da fonte de luz {light} (ψ = γ a menos \
+                 do arredondamento do seu cálculo em {p}, ±{}°): conta como iluminado; nesta \
+                 precisão não se distingue se está exatamente sobre a geratriz ou ligeiramente \
+                 dentro ou fora do cone",
+                v("error_bound_deg")
             ),
         ),
+        FindingCode::GateUndecidable => {
+            let c = f.values.get("cos_theta").copied().unwrap_or(0.0);
+            let (en, pt) = if c > 0.0 {
+                ("lit", "iluminando a superfície")
+            } else {
+                ("not lit", "não iluminando a superfície")
+            };
+            let (fix_en, fix_pt) = if p == "f32" {
+                (
+                    "solve in f64 (--precision f64) or ",
+                    "resolva em f64 (--precision f64) ou ",
+                )
+            } else {
+                ("", "")
+            };
+            pick(
+                lang,
+                format!(
+                    "cos θ = {} for {light} is within the rounding error of its own computation \
+                     in {p} (±{}): whether the light is in front of the surface or behind it \
+                     cannot be decided in this precision, and it is taken as {en}. The diffuse \
+                     term changes by at most O_d·I_l·{} either way, but the specular term is all \
+                     or nothing: {fix_en}move the light further from the tangent plane",
+                    v("cos_theta"),
+                    v("error_bound"),
+                    v("error_bound")
+                ),
+                format!(
+                    "cos θ = {} para a fonte de luz {light} está dentro do erro de \
+                     arredondamento do seu próprio cálculo em {p} (±{}): nesta precisão não se \
+                     pode decidir se a fonte de luz está na frente ou atrás da superfície, e ela \
+                     conta como {pt}. A reflexão difusa muda no máximo O_d·I_l·{} de um modo ou \
+                     de outro, mas a reflexão especular é tudo ou nada: {fix_pt}afaste a fonte \
+                     de luz do plano tangente",
+                    v("cos_theta"),
+                    v("error_bound"),
+                    v("error_bound")
+                ),
+            )
+        }
+        FindingCode::ConeEdgeUndecidable => {
+            let inside = f.values.get("psi_deg") <= f.values.get("gamma_deg");
+            let (en, pt) = if inside {
+                ("inside", "dentro")
+            } else {
+                ("outside", "fora")
+            };
+            pick(
+                lang,
+                format!(
+                    "ψ = {}° and γ = {}° of {light} differ by less than the rounding error of the \
+                     hit point and of their computation in {p} (±{}°): whether the point is \
+                     inside or outside the cone cannot be decided in this precision, and it is \
+                     taken as {en}",
+                    v("psi_deg"),
+                    v("gamma_deg"),
+                    v("error_bound_deg")
+                ),
+                format!(
+                    "ψ = {}° e γ = {}° da fonte de luz {light} diferem menos que o erro de \
+                     arredondamento do ponto de interseção e do seu cálculo em {p} (±{}°): \
+                     nesta precisão não se pode decidir se o ponto está dentro ou fora do cone, \
+                     e ele é tomado como {pt}",
+                    v("psi_deg"),
+                    v("gamma_deg"),
+                    v("error_bound_deg")
+                ),
+            )
+        }
         FindingCode::ViewerBehindSurface => pick(
             lang,
             format!(

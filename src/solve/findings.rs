@@ -4,9 +4,11 @@
 
 use std::collections::BTreeMap;
 
-use super::{Side, Solution};
+use super::rounding::{cone_bound, cos_theta_bound, exactly_zero, HitError};
+use super::{Evaluation, Side, Solution};
 use crate::core::vector::is_unit_length;
-use crate::core::{LightStatus, Real, Vector, V3};
+use crate::core::{LightKind, LightStatus, LightTerm, Real, Vector, V3};
+use crate::geometry::Shape;
 use crate::problem::{GivenVector, Problem, Target};
 
 /// What kind of finding.
@@ -25,8 +27,16 @@ pub enum FindingCode {
     LightInTangentPlane,
     /// The point is outside a spot light's cone.
     LightOutsideCone,
-    /// The point is exactly on a spot light's cone edge (lit).
+    /// The point is on a spot light's cone edge to within the rounding of ψ and γ (lit).
     LightOnConeEdge,
+    /// |cos θ| is within the rounding error of its own computation (0 included, unless it is
+    /// exactly 0 for the given numbers): the gate's decision, lit or not, is not reliable in
+    /// this precision. Values: `cos_theta`, `error_bound`.
+    GateUndecidable,
+    /// A ray's hit point and ψ − γ are rounded by more than ψ is from γ: inside or outside the
+    /// cone cannot be decided in this precision. Values: `psi_deg`, `gamma_deg`,
+    /// `error_bound_deg`.
+    ConeEdgeUndecidable,
     /// The viewer sees the back side of the surface.
     ViewerBehindSurface,
     /// The viewer lies in the surface's tangent plane.
@@ -117,9 +127,10 @@ pub(super) fn find<R: Real>(
                 }
                 _ => {}
             }
-            if t.arrival.cone.is_some_and(|c| c.on_edge) {
-                out.push(f(FindingCode::LightOnConeEdge));
-            }
+            out.extend(gates(problem, s, e, t).into_iter().map(|g| Finding {
+                light: Some(info.file_index),
+                ..g
+            }));
         }
         if let Some(v) = &e.viewer {
             match (v.side, v.n_dot_v) {
@@ -177,6 +188,84 @@ pub(super) fn find<R: Real>(
         }
         if e.shade.color.max_element() > R::ONE {
             out.push(Finding::new(FindingCode::Clamped));
+        }
+    }
+    out
+}
+
+/// How far the gates of light `t` can be trusted (`solve::rounding`): a cos θ within its
+/// rounding error (0 included, unless exactly 0 for the given numbers) and a ψ within rounding
+/// of γ. Only where the light arrives: outside the cone or at the light, cos θ decides nothing.
+fn gates<R: Real>(
+    problem: &Problem<R>,
+    s: &Solution<R>,
+    e: &Evaluation<R>,
+    t: &LightTerm<R>,
+) -> Vec<Finding> {
+    let mut out = Vec::new();
+    let (Some(normal), Some(p)) = (e.normal, e.point) else {
+        return out;
+    };
+    let light = &e.lights_used(problem).lights[t.index];
+    let a = &t.arrival;
+    // A computed hit point's own error, and the sphere whose normal was computed from it.
+    let hit = e.p_error.map(|p_error| {
+        let radius = s.intersection.and_then(|x| x.surface).and_then(|i| {
+            match problem.surfaces()[i].shape {
+                Shape::Sphere(sp) => Some(sp.radius),
+                _ => None,
+            }
+        });
+        HitError::new(p_error, radius)
+    });
+    // The cone, Eq. 4.4: within the core's tolerance the point is on the edge (lit); a hit
+    // point's error widens the band in which the test cannot be trusted.
+    let cone = match light.kind {
+        LightKind::Spot { cone, .. } => Some(cone),
+        _ => None,
+    };
+    if let (Some(c), Some(cone), Some(d)) = (a.cone, cone, a.distance) {
+        let tol = cone.edge_tolerance();
+        let bound = cone_bound(tol, d, hit);
+        let psi = c.psi_deg.to_f64().to_radians();
+        let near = (psi - cone.gamma.to_f64()).abs() <= bound;
+        let code = if c.on_edge {
+            Some(FindingCode::LightOnConeEdge)
+        } else {
+            near.then_some(FindingCode::ConeEdgeUndecidable)
+        };
+        if let Some(code) = code {
+            out.push(
+                Finding::new(code)
+                    .value("psi_deg", c.psi_deg)
+                    .value("gamma_deg", cone.angle_deg)
+                    .value("error_bound_deg", bound.to_degrees()),
+            );
+        }
+    }
+    // The diffuse gate, cos θ > 0 (Eq. 4.7).
+    if a.reach == crate::core::Reach::Arrives {
+        let bound = cos_theta_bound(normal.used, a.l, a.distance, hit);
+        let c = t.cos_theta;
+        let undecidable = if c == R::ZERO {
+            // Exactly in the tangent plane for the numbers as given (N·(P − P_l) = 0, or
+            // N·D_l = 0 with D_l as used), or only as computed? A hit point is computed: its
+            // exact position is not at hand, so its zero is never certain.
+            let (x, from) = match light.position() {
+                Some(p_l) => (p, Some(p_l)),
+                None => (a.l, None),
+            };
+            let exact = hit.is_none() && exactly_zero::<R>(normal.given, x, from) == Some(true);
+            !exact
+        } else {
+            c.abs().to_f64() <= bound
+        };
+        if undecidable {
+            out.push(
+                Finding::new(FindingCode::GateUndecidable)
+                    .value("cos_theta", c)
+                    .value("error_bound", bound),
+            );
         }
     }
     out

@@ -4,6 +4,7 @@
 //! has a surprising property, the result of its likely intended reading, labelled as such.
 
 mod findings;
+mod rounding;
 
 use crate::core::vector::between;
 use crate::core::{
@@ -143,6 +144,9 @@ pub struct Evaluation<R: Real> {
     pub clamped: V3<R>,
     /// The clamped colour in 8 bits, round(255·c).
     pub rgb8: [u8; 3],
+    /// A bound on the error of each component of P where P was computed (a ray's hit);
+    /// `None` where P was given.
+    pub p_error: Option<V3<R>>,
 }
 
 /// A reading of the problem other than the literal one.
@@ -353,7 +357,7 @@ pub fn solve_ray_with<R: Real, F: Formulas>(
             traced: 0,
         });
         let m = &s.material;
-        evaluate(
+        let e = evaluate(
             problem,
             formulas,
             viewer,
@@ -363,7 +367,11 @@ pub fn solve_ray_with<R: Real, F: Formulas>(
             m,
             None,
             &mut shadows,
-        )
+        )?;
+        Ok(Evaluation {
+            p_error: Some(hit.p_error),
+            ..e
+        })
     };
     // The nearest hit in front of the origin, Section 4.4 (t > 0).
     let unresolved = |i: usize| {
@@ -593,6 +601,7 @@ fn evaluate<R: Real, F: Formulas, Vis: Visibility<R>>(
         omitted,
         clamped,
         rgb8,
+        p_error: None,
     })
 }
 
