@@ -24,11 +24,12 @@ pub struct ShadingPoint<R: Real> {
 #[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize)]
 #[serde(rename_all = "snake_case")]
 pub enum LightStatus {
-    /// cos θ > 0 and the light arrives: it adds diffuse (and specular where cos φ > 0).
+    /// cos θ > 0 (beyond its rounding error, [`tangent_tolerance`]) and the light arrives: it
+    /// adds diffuse (and specular where cos φ > 0).
     Lit,
-    /// cos θ < 0: the light is on the back side of the surface.
+    /// cos θ < 0 (beyond its rounding error): the light is on the back side of the surface.
     BehindSurface,
-    /// cos θ = 0: the light lies in the tangent plane.
+    /// cos θ = 0 to within its rounding error: the light lies in the tangent plane.
     InTangentPlane,
     /// A spot light and P is outside its cone.
     OutsideCone,
@@ -267,6 +268,22 @@ impl Formulas for Slipped {
     }
 }
 
+/// The bound on the rounding error of the computed cos θ = −N·L for a given point: γ₄₀·Σ|N_i L_i|
+/// (u = ε/2, γ_k = ku/(1 − ku); the derivation is in `solve/rounding.rs`, which adds what a
+/// computed hit point's own error adds). A |cos θ| within it cannot be told from 0 in this
+/// precision, so it is counted as 0 (the light in the tangent plane): an exact 0 is then decided
+/// as exactly 0 (a light in the tangent plane does not switch the specular term on by a
+/// rounding error), and a tiny non-zero value, which may lie on either side, is reported by the
+/// solver (`gate_undecidable`). Σ|N_i L_i|, not 1: with N along an axis the error of cos θ
+/// shrinks with cos θ itself, and such a grazing light is decided as the exact value says in
+/// any precision.
+#[inline]
+pub fn tangent_tolerance<R: Real>(n: V3<R>, l: V3<R>) -> R {
+    let gamma_40 = R::from_f64(20.0) * R::EPSILON / (R::ONE - R::from_f64(20.0) * R::EPSILON);
+    let sum = (n.x() * l.x()).abs() + (n.y() * l.y()).abs() + (n.z() * l.z()).abs();
+    gamma_40 * sum
+}
+
 /// Shades P with Phong's model, Eq. 4.16, gated as DESIGN.md reads the chapter: a light adds
 /// diffuse and specular only where cos θ > 0, and specular only where also cos φ > 0.
 #[inline]
@@ -317,9 +334,18 @@ pub fn shade_with<R: Real, Rec: Recorder<R>, Vis: Visibility<R>, F: Formulas>(
         let mut status = match arrival.reach {
             Reach::AtLight => LightStatus::AtLight,
             Reach::OutsideCone => LightStatus::OutsideCone,
-            Reach::Arrives if cos_theta > R::ZERO => LightStatus::Lit,
-            Reach::Arrives if cos_theta < R::ZERO => LightStatus::BehindSurface,
-            Reach::Arrives => LightStatus::InTangentPlane,
+            Reach::Arrives => {
+                // Within its own rounding error of 0, cos θ counts as 0: the light is in the
+                // tangent plane, as a point within rounding of a spot's edge is on the edge.
+                let tolerance = tangent_tolerance(at.n, arrival.l);
+                if cos_theta > tolerance {
+                    LightStatus::Lit
+                } else if cos_theta < -tolerance {
+                    LightStatus::BehindSurface
+                } else {
+                    LightStatus::InTangentPlane
+                }
+            }
         };
         // Ask for a shadow ray only where the light could add something.
         if status == LightStatus::Lit

@@ -264,11 +264,16 @@ pub fn finding_in<R: Real>(problem: &Problem<R>, f: &Finding, lang: Lang) -> Str
             ),
         ),
         FindingCode::GateUndecidable => {
-            let c = f.values.get("cos_theta").copied().unwrap_or(0.0);
-            let (en, pt) = if c > 0.0 {
+            let decision = f.values.get("decision").copied().unwrap_or(0.0);
+            let (en, pt) = if decision > 0.0 {
                 ("lit", "iluminando a superfície")
+            } else if decision < 0.0 {
+                ("behind the surface", "atrás da superfície")
             } else {
-                ("not lit", "não iluminando a superfície")
+                (
+                    "0, in the tangent plane (no diffuse or specular term)",
+                    "0, no plano tangente (sem reflexão difusa nem especular)",
+                )
             };
             let (fix_en, fix_pt) = if p == "f32" {
                 (
@@ -283,7 +288,7 @@ pub fn finding_in<R: Real>(problem: &Problem<R>, f: &Finding, lang: Lang) -> Str
                 format!(
                     "cos θ = {} for {light} is within the rounding error of its own computation \
                      in {p} (±{}): whether the light is in front of the surface or behind it \
-                     cannot be decided in this precision, and it is taken as {en}. The diffuse \
+                     cannot be decided in this precision, and it is counted as {en}. The diffuse \
                      term changes by at most O_d·I_l·{} either way, but the specular term is all \
                      or nothing: {fix_en}move the light further from the tangent plane",
                     v("cos_theta"),

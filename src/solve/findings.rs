@@ -247,10 +247,12 @@ fn gates<R: Real>(
     if a.reach == crate::core::Reach::Arrives {
         let bound = cos_theta_bound(normal.used, a.l, a.distance, hit);
         let c = t.cos_theta;
-        let undecidable = if c == R::ZERO {
+        // The core counts a cos θ within its rounding tolerance as 0 (the tangent plane).
+        let counted_as_zero = t.status == LightStatus::InTangentPlane;
+        let undecidable = if counted_as_zero {
             // Exactly in the tangent plane for the numbers as given (N·(P − P_l) = 0, or
-            // N·D_l = 0 with D_l as used), or only as computed? A hit point is computed: its
-            // exact position is not at hand, so its zero is never certain.
+            // N·D_l = 0 with D_l as used), or only to within rounding? A hit point is computed:
+            // its exact position is not at hand, so its zero is never certain.
             let (x, from) = match light.position() {
                 Some(p_l) => (p, Some(p_l)),
                 None => (a.l, None),
@@ -264,7 +266,16 @@ fn gates<R: Real>(
             out.push(
                 Finding::new(FindingCode::GateUndecidable)
                     .value("cos_theta", c)
-                    .value("error_bound", bound),
+                    .value("error_bound", bound)
+                    // How the core decided: 1 lit, 0 counted as in the tangent plane, −1 behind.
+                    .value(
+                        "decision",
+                        match t.status {
+                            LightStatus::InTangentPlane => 0.0,
+                            LightStatus::BehindSurface => -1.0,
+                            _ => 1.0,
+                        },
+                    ),
             );
         }
     }
