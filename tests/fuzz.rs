@@ -2404,3 +2404,38 @@ fn a_reflection_from_a_point_seen_from_1e308_away_leaves_from_a_finite_origin() 
         "a reflection ray: {rays}"
     );
 }
+
+#[test]
+fn nesting_100000_deep_is_a_syntax_error_not_a_stack_overflow() {
+    // A stack overflow would abort this test's process. The parser stops at the first level the
+    // format does not allow (here the second), long before serde_json's limit of 128 levels.
+    for (open, message) in [
+        ("[", "lights[0]: invalid type: sequence, expected a light"),
+        ("{\"a\": ", "lights: invalid type: map, expected a sequence"),
+        ("[{\"type\": ", "lights[0].type: invalid type: sequence"),
+    ] {
+        let text = format!("{{\"lights\": {}", open.repeat(100_000));
+        let (line, _, shown, _) = syntax_error(text.as_bytes());
+        assert_eq!(line, 1);
+        assert!(shown.starts_with(message), "{shown}");
+    }
+    let ws = Workspace::new();
+    ws.write(format!("{{\"lights\": {}", "[".repeat(100_000)).as_bytes())
+        .expect("written");
+    binary_rejects(&ws).expect("rejected cleanly by the binary");
+}
+
+#[test]
+fn an_unknown_field_named_like_a_path_is_named_whole() {
+    // `{"a.?": 0}` was reported at field "a": the parser trimmed a trailing ".?", the path's
+    // mark for an unknown position, from the field's own name.
+    let ws = Workspace::new();
+    ws.write(br#"{"a.?": 0}"#).expect("written");
+    match problem::load::<f64>(&ws.case) {
+        Err(ProblemError::Syntax { field, message, .. }) => {
+            assert_eq!(field.as_deref(), Some("a.?"));
+            assert!(message.starts_with("a.?: unknown field `a.?`"), "{message}");
+        }
+        other => panic!("expected a syntax error, got {other:?}"),
+    }
+}

@@ -52,7 +52,7 @@ pub fn parse_str(path: &Path, source: &str) -> Result<ProblemFile, ProblemError>
     not_an_object(path, source)?;
     let mut de = serde_json::Deserializer::from_str(source);
     let result = serde_path_to_error::deserialize(&mut de)
-        .map_err(|e| (e.path().to_string(), e.into_inner()))
+        .map_err(|e| (field_path(e.path()), e.into_inner()))
         .and_then(|f| de.end().map(|()| f).map_err(|e| (String::new(), e)));
     result.map_err(|(field, inner)| {
         let text = inner.to_string();
@@ -61,9 +61,7 @@ pub fn parse_str(path: &Path, source: &str) -> Result<ProblemFile, ProblemError>
             .map_or(text.as_str(), |(m, _)| m)
             .to_owned();
         let fix = syntax_fix(&inner, &message);
-        // serde_path_to_error writes "." for the top level and "?" for an unknown position.
-        let field = field.trim_end_matches(".?").to_owned();
-        let field = (!field.is_empty() && field != "." && field != "?").then_some(field);
+        let field = (!field.is_empty()).then_some(field);
         let (message, fix) = if message == "trailing characters" && field.is_some() {
             // serde_json's words for an array longer than the [x, y, z] it was read into.
             (
@@ -121,6 +119,27 @@ fn not_an_object(path: &Path, text: &str) -> Result<(), ProblemError> {
               several problems go in several files (`phong schema` lists every field)"
             .into(),
     })
+}
+
+/// The field where the parser stopped, as `lights[1].falloff`; empty at the top level. (The
+/// path's own Display writes "." for the top level and "?" for a position it does not know,
+/// and a field may itself be named "a.?".)
+fn field_path(path: &serde_path_to_error::Path) -> String {
+    use serde_path_to_error::Segment;
+    let mut out = String::new();
+    for segment in path {
+        match segment {
+            Segment::Seq { index } => out.push_str(&format!("[{index}]")),
+            Segment::Map { key } | Segment::Enum { variant: key } => {
+                if !out.is_empty() {
+                    out.push('.');
+                }
+                out.push_str(key);
+            }
+            Segment::Unknown => {}
+        }
+    }
+    out
 }
 
 /// `NaN`, `Infinity` or `inf` at (or just before) the error's position, as written.
