@@ -32,8 +32,8 @@
 //! Bounded time. Each fuzz test runs one round of `PHONG_FUZZ_CASES` cases (default: its own
 //! count, [`CASES_MUTATED`] and the others, about 15 s for the file in the debug profile) from a
 //! fixed seed, so a plain `cargo test` is deterministic. With `PHONG_FUZZ_SECONDS=N`, each test
-//! keeps starting new rounds (the seed plus 1, 2, …) until N seconds have passed (`.ci/run` does
-//! this in the `fuzz` profile). `PHONG_FUZZ_SEED` sets the first round's seed (`random`: from
+//! keeps starting new rounds (the seed plus 1, 2, …) until N seconds have passed (`.ci/run` gives
+//! 120 s). `PHONG_FUZZ_SEED` sets the first round's seed (`random`: from
 //! the clock). A failure names its round's seed, prints the minimised input and saves it under
 //! `target/fuzz-failures/`; proptest also records the case's seed in
 //! `proptest-regressions/fuzz.txt` (committed), which every later round replays first. A bug
@@ -1556,15 +1556,16 @@ fn finite_tree(doc: &impl serde::Serialize, label: &str) -> Result<(), String> {
 }
 
 /// The words NaN and inf as a number would be printed (`NaN`, `inf`, `-inf`), not inside a word
-/// ("infinite").
+/// ("infinite"). Words are runs of ASCII letters and digits, as numbers are printed: in
+/// `NaN\ensuremath{\gamma}` (LaTeX) and `NaNγ` (the same text in the input) the word is `NaN`.
 fn nan_tokens(text: &str) -> Vec<String> {
     let mut out = Vec::new();
     let chars: Vec<char> = text.chars().collect();
     let mut i = 0;
     while i < chars.len() {
-        if chars[i].is_alphanumeric() {
+        if chars[i].is_ascii_alphanumeric() {
             let start = i;
-            while i < chars.len() && chars[i].is_alphanumeric() {
+            while i < chars.len() && chars[i].is_ascii_alphanumeric() {
                 i += 1;
             }
             let w: String = chars[start..i].iter().collect();
