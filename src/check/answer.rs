@@ -4,6 +4,7 @@
 //! `#RRGGBB`. The tolerance an answer is compared under has a default per scale.
 
 use crate::problem::format::{AnswerColor, AnswerSpec};
+use crate::problem::validate::show;
 
 /// The scale an answer is written on.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize, clap::ValueEnum)]
@@ -113,7 +114,8 @@ pub fn from_key(key: &AnswerSpec) -> Result<(Answer, Option<f64>), BadAnswer> {
         Some(255.0) => Some(Scale::Bits8),
         Some(s) => {
             return Err(bad(format!(
-                "answer.scale: {s} is not a scale: use 1 (components on [0, 1]) or 255 (8-bit)"
+                "answer.scale: {} is not a scale: use 1 (components on [0, 1]) or 255 (8-bit)",
+                show(s)
             )))
         }
     };
@@ -153,8 +155,9 @@ pub fn check_tolerance(t: f64) -> Result<(), BadAnswer> {
         Ok(())
     } else {
         Err(bad(format!(
-            "{t} is not a tolerance: give the largest difference accepted per channel, a number ≥ 0 \
-             (e.g. 0.005 on the 0–1 scale, 1 on the 255 scale)"
+            "{} is not a tolerance: give the largest difference accepted per channel, a number ≥ 0 \
+             (e.g. 0.005 on the 0–1 scale, 1 on the 255 scale)",
+            show(t)
         )))
     }
 }

@@ -436,7 +436,8 @@ fn export_pov_command(args: &ExportPovArgs) -> u8 {
 fn check_command(args: &CheckArgs) -> u8 {
     if args.answer.is_some() && args.files.len() > 1 {
         eprintln!(
-            "error: --answer checks one file, and {} were given. Fix: check one file at a time,              or put each file's answer in its \"answer\" field and leave out --answer",
+            "error: --answer checks one file, and {} were given. Fix: check one file at a time, \
+             or put each file's answer in its \"answer\" field and leave out --answer",
             args.files.len()
         );
         return EXIT_BAD_INPUT;
@@ -479,6 +480,10 @@ fn check_command(args: &CheckArgs) -> u8 {
         CheckFormat::Text => text,
         CheckFormat::Json => json_text(docs),
     };
+    // Nothing could be checked: no empty output file.
+    if out.is_empty() {
+        return code;
+    }
     code.max(emit(args.output.as_deref(), &out))
 }
 
@@ -500,6 +505,9 @@ fn slips_command(args: &CheckArgs) -> u8 {
                 code = EXIT_BAD_INPUT;
             }
         }
+    }
+    if text.is_empty() {
+        return code;
     }
     code.max(emit(args.output.as_deref(), &text))
 }
@@ -611,6 +619,11 @@ fn solve_command(args: &SolveArgs) -> u8 {
                 docs.push(error_json(path, &e));
             }
         }
+    }
+    // Every file rejected and no JSON error documents: nothing to write (an empty or
+    // bodiless output file would look like a result).
+    if failed && explanations.is_empty() && docs.is_empty() {
+        return EXIT_BAD_INPUT;
     }
     let out = match args.format {
         Format::Text => {

@@ -523,13 +523,15 @@ fn texture(
         .map(|r| format!(" reflection {{ rgb {} }}", vec3(r)))
         .unwrap_or_default();
     let phong = |s: f64| format!(" phong {} phong_size {}", num(s), num(m.n_s));
+    // The largest colour component written: POV-Ray's colours are f32, with room to add up.
+    let limit = f64::from(f32::MAX) / 1e6;
     for (name, v) in [
         ("ambient", amb),
         ("diffuse", diffuse),
         ("specular", specular),
     ] {
         if let Some(v) = v {
-            if v.max_element() > f64::from(f32::MAX) / 1e6 {
+            if v.max_element() > limit {
                 return Err(refuse(
                     what,
                     format!(
@@ -543,9 +545,11 @@ fn texture(
     }
 
     let grey_specular = specular.is_none_or(|s| s.x == s.y && s.y == s.z);
+    // One layer needs the emission O_a·I_a / O_d within POV-Ray's colours (a tiny O_d would
+    // make it overflow).
     let ambient_fits = match (amb, diffuse) {
         (None, _) | (_, None) => true,
-        (Some(a), Some(d)) => (0..3).all(|c| a[c] == 0.0 || d[c] > 0.0),
+        (Some(a), Some(d)) => (0..3).all(|c| a[c] == 0.0 || (d[c] > 0.0 && a[c] / d[c] <= limit)),
     };
     if grey_specular && ambient_fits {
         // One layer: pigment O_d (white without one), emission O_a·I_a / O_d.
@@ -600,7 +604,8 @@ fn texture(
     if let Some(s) = specular {
         // A filter layer colours every layer below it by O_s/(above·p); the highlight of the
         // last layer, phong p, is then O_s.
-        let p = s.max_element() / 100.0;
+        // (At least the smallest normal number: a tiny O_s must not make p zero.)
+        let p = (s.max_element() / 100.0).max(f64::MIN_POSITIVE);
         layers.push(format!(
             "pigment {{ rgbf <{}, 1> }} finish {{ ambient 0 emission 0 diffuse 0 }}",
             vec3_inner(s / (above * p))

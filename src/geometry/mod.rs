@@ -119,13 +119,16 @@ impl<R: Real> Shape<R> {
     pub fn hit_at(&self, ray: &Ray<R>, t: R) -> Option<SurfaceHit<R>> {
         match self {
             Shape::Plane(pl) => {
-                // t carries the rounding of N·(Q − O)/(N·D); O + tD adds two more.
+                // t carries the rounding of N·(Q − O)/(N·D); O + tD adds two more. (Each
+                // term is scaled by γ before the sum, which could overflow near the range's end.)
                 let p = ray.at(t);
-                let scale = ray.origin.abs() + pl.point.abs() + (ray.direction * t).abs();
+                let g = gamma::<R>(7);
+                let p_error =
+                    ray.origin.abs() * g + pl.point.abs() * g + (ray.direction * t).abs() * g;
                 Some(SurfaceHit {
                     t,
                     p,
-                    p_error: scale * gamma::<R>(7),
+                    p_error,
                     normal: pl.normal,
                 })
             }
@@ -136,7 +139,7 @@ impl<R: Real> Shape<R> {
                 Some(SurfaceHit {
                     t,
                     p,
-                    p_error: (s.center.abs() + p.abs()) * gamma::<R>(6),
+                    p_error: s.center.abs() * gamma::<R>(6) + p.abs() * gamma::<R>(6),
                     normal: s.normal_at(p)?,
                 })
             }

@@ -231,7 +231,9 @@ impl<R: Real> Triangle<R> {
         let [p0, p1, p2] = self.p;
         let (w0, w1, w2) = (p0 * b[0], p1 * b[1], p2 * b[2]);
         let p = w0 + w1 + w2;
-        let p_error = (w0.abs() + w1.abs() + w2.abs()) * gamma::<R>(7);
+        // (Scaled before the sum, which could overflow near the range's end.)
+        let g = gamma::<R>(7);
+        let p_error = w0.abs() * g + w1.abs() * g + w2.abs() * g;
         Some(TriangleHit { t, b, p, p_error })
     }
 

@@ -5,6 +5,7 @@
 
 use std::collections::BTreeMap;
 use std::fmt;
+use std::marker::PhantomData;
 
 use schemars::JsonSchema;
 use serde::de::{self, MapAccess, SeqAccess, Visitor};
@@ -30,32 +31,32 @@ pub struct ProblemFile {
     #[serde(default)]
     pub question: Option<String>,
     /// Named materials, referred to by name from `point.material` or `surfaces[i].material`.
-    #[serde(default)]
+    #[serde(default, deserialize_with = "named_objects")]
     pub materials: BTreeMap<String, MaterialSpec>,
     /// The lights: ambient, point, directional and spot, in any order.
-    #[serde(default)]
+    #[serde(default, deserialize_with = "objects")]
     pub lights: Vec<LightSpec>,
     /// E: the position of the viewer (observer). Needed for the specular term.
     #[serde(default)]
     pub viewer: Option<Triple>,
     /// A point problem: the point being shaded. Give either `point` or `ray` + `surfaces`.
-    #[serde(default)]
+    #[serde(default, deserialize_with = "optional_object")]
     pub point: Option<PointSpec>,
     /// A ray problem: the ray whose nearest hit (t > 0) with `surfaces` is shaded.
-    #[serde(default)]
+    #[serde(default, deserialize_with = "optional_object")]
     pub ray: Option<RaySpec>,
     /// The surfaces of a ray problem or a scene.
-    #[serde(default)]
+    #[serde(default, deserialize_with = "objects")]
     pub surfaces: Vec<SurfaceSpec>,
     /// A scene: the camera that `phong render` looks through. With a camera, `point` and `ray`
     /// are optional.
-    #[serde(default)]
+    #[serde(default, deserialize_with = "optional_object")]
     pub camera: Option<CameraSpec>,
     /// The colour of a ray that hits nothing (default black).
     #[serde(default)]
     pub background: Option<Triple>,
     /// How rays are traced: recursion level, minimum weight, shadows, samples per pixel.
-    #[serde(default)]
+    #[serde(default, deserialize_with = "optional_object")]
     pub render: Option<RenderSpec>,
     /// The expected answer (an answer key): `phong check FILE` with no `--answer` checks it
     /// against the solution; `phong solve` does not use it.
@@ -197,7 +198,7 @@ pub struct SurfaceSpec {
 }
 
 /// The kinds of surface.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, JsonSchema)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, JsonSchema)]
 #[serde(rename_all = "snake_case")]
 pub enum SurfaceType {
     Plane,
@@ -309,7 +310,7 @@ pub struct LightSpec {
 }
 
 /// The kinds of light.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, JsonSchema)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, JsonSchema)]
 #[serde(rename_all = "snake_case")]
 pub enum LightType {
     Ambient,
@@ -477,6 +478,139 @@ pub enum SameAsSpecular {
 pub enum MaterialRef {
     Name(String),
     Inline(MaterialSpec),
+}
+
+// Objects only. serde's derived structs also read an array of the fields in order, so
+// `"ray": [[0, 0, 5], [0, 0, -1]]` was a ray, `"render": [5]` a maximum level, and `"point":
+// [3, 1, 3]` failed with `point[0]: expected an array of length 3`, pointing the wrong way. The
+// structs of the format are read through `Object`, which takes a JSON object and nothing else,
+// and says which object was expected.
+
+/// What an object of the format is, for the error when something else is found.
+trait Described {
+    const WHAT: &'static str;
+}
+
+impl Described for PointSpec {
+    const WHAT: &'static str = "the point: an object {\"position\": [x, y, z], \"normal\": \
+                                [x, y, z], \"material\": …}";
+}
+impl Described for RaySpec {
+    const WHAT: &'static str =
+        "the ray: an object {\"origin\": [x, y, z], \"direction\": [x, y, z]}";
+}
+impl Described for CameraSpec {
+    const WHAT: &'static str = "the camera: an object {\"eye\": [x, y, z], \"look_at\": \
+                                [x, y, z], \"fov\": 45, \"width\": 640, \"height\": 480}";
+}
+impl Described for RenderSpec {
+    const WHAT: &'static str =
+        "the render settings: an object {\"max_level\": 5, \"shadows\": true, …}";
+}
+impl Described for LightSpec {
+    const WHAT: &'static str = "a light: an object {\"type\": \"point\", …}";
+}
+impl Described for SurfaceSpec {
+    const WHAT: &'static str = "a surface: an object {\"type\": \"sphere\", …}";
+}
+impl Described for MaterialSpec {
+    const WHAT: &'static str =
+        "a material: an object {\"ambient\": [r, g, b], \"diffuse\": [r, g, b], …}";
+}
+
+/// A struct of the format, read only from a JSON object.
+struct Object<T>(T);
+
+impl<'de, T: Deserialize<'de> + Described> Deserialize<'de> for Object<T> {
+    fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        struct V<T>(PhantomData<T>);
+        impl<'de, T: Deserialize<'de> + Described> Visitor<'de> for V<T> {
+            type Value = Object<T>;
+            fn expecting(&self, f: &mut fmt::Formatter) -> fmt::Result {
+                f.write_str(T::WHAT)
+            }
+            fn visit_map<A: MapAccess<'de>>(self, map: A) -> Result<Object<T>, A::Error> {
+                T::deserialize(de::value::MapAccessDeserializer::new(map)).map(Object)
+            }
+        }
+        d.deserialize_map(V(PhantomData))
+    }
+}
+
+fn optional_object<'de, D, T>(d: D) -> Result<Option<T>, D::Error>
+where
+    D: Deserializer<'de>,
+    T: Deserialize<'de> + Described,
+{
+    Ok(Option::<Object<T>>::deserialize(d)?.map(|o| o.0))
+}
+
+fn objects<'de, D, T>(d: D) -> Result<Vec<T>, D::Error>
+where
+    D: Deserializer<'de>,
+    T: Deserialize<'de> + Described,
+{
+    let v = Vec::<Object<T>>::deserialize(d)?;
+    Ok(v.into_iter().map(|o| o.0).collect())
+}
+
+fn named_objects<'de, D, T>(d: D) -> Result<BTreeMap<String, T>, D::Error>
+where
+    D: Deserializer<'de>,
+    T: Deserialize<'de> + Described,
+{
+    let m = BTreeMap::<String, Object<T>>::deserialize(d)?;
+    Ok(m.into_iter().map(|(k, o)| (k, o.0)).collect())
+}
+
+/// A `type` word, read only from a string. serde_json reads an enum from a string or an object
+/// and answers any other value (`"type": 5`) with a syntax error, "expected value", although
+/// the JSON is well formed.
+fn type_word<'de, D: Deserializer<'de>, T: Copy + 'static>(
+    d: D,
+    all: &'static [T],
+    names: &'static [&'static str],
+) -> Result<T, D::Error> {
+    struct V<T: 'static> {
+        all: &'static [T],
+        names: &'static [&'static str],
+    }
+    impl<'de, T: Copy> Visitor<'de> for V<T> {
+        type Value = T;
+        fn expecting(&self, f: &mut fmt::Formatter) -> fmt::Result {
+            let quoted: Vec<String> = self.names.iter().map(|n| format!("\"{n}\"")).collect();
+            write!(f, "one of the words {}", quoted.join(", "))
+        }
+        fn visit_str<E: de::Error>(self, s: &str) -> Result<T, E> {
+            match self.names.iter().position(|n| *n == s) {
+                Some(i) => Ok(self.all[i]),
+                None => Err(E::unknown_variant(s, self.names)),
+            }
+        }
+    }
+    d.deserialize_str(V { all, names })
+}
+
+impl<'de> Deserialize<'de> for LightType {
+    fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        use LightType::*;
+        type_word(
+            d,
+            &[Ambient, Point, Directional, Spot],
+            &["ambient", "point", "directional", "spot"],
+        )
+    }
+}
+
+impl<'de> Deserialize<'de> for SurfaceType {
+    fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        use SurfaceType::*;
+        type_word(
+            d,
+            &[Plane, Sphere, Triangle, Mesh],
+            &["plane", "sphere", "triangle", "mesh"],
+        )
+    }
 }
 
 // Hand-written deserializers for the "either" types: serde's untagged enums would replace the

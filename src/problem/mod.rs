@@ -19,20 +19,40 @@ pub use model::{
 
 use crate::core::Real;
 
-/// Reads and parses a problem file (no validation).
+/// Reads and parses a problem file (no validation). A leading byte order mark is skipped, as
+/// editors on Windows write one.
 pub fn parse_file(path: &Path) -> Result<ProblemFile, ProblemError> {
-    let text = std::fs::read_to_string(path).map_err(|source| ProblemError::Read {
+    let bytes = std::fs::read(path).map_err(|source| ProblemError::Read {
         path: path.to_owned(),
         source,
     })?;
-    parse_str(path, &text)
+    let text =
+        String::from_utf8(bytes).map_err(|e| not_utf8(path, e.as_bytes(), e.utf8_error()))?;
+    parse_str(path, text.strip_prefix('\u{feff}').unwrap_or(&text))
+}
+
+/// A file that is not UTF-8 text: the line and column (in bytes) of its first bad byte.
+fn not_utf8(path: &Path, bytes: &[u8], e: std::str::Utf8Error) -> ProblemError {
+    let good = &bytes[..e.valid_up_to()];
+    let line_start = good.iter().rposition(|&b| b == b'\n').map_or(0, |i| i + 1);
+    ProblemError::Syntax {
+        path: path.to_owned(),
+        line: 1 + good.iter().filter(|&&b| b == b'\n').count(),
+        column: 1 + good.len() - line_start,
+        field: None,
+        message: format!("byte 0x{:02X} is not UTF-8 text", bytes[e.valid_up_to()]),
+        fix: "save the file as UTF-8 (JSON is UTF-8 text); the byte may come from another \
+              encoding, such as Latin-1, or from a file that is not a problem file"
+            .into(),
+    }
 }
 
 /// Parses the text of a problem file; `path` is only used in error messages.
-pub fn parse_str(path: &Path, text: &str) -> Result<ProblemFile, ProblemError> {
-    let mut de = serde_json::Deserializer::from_str(text);
+pub fn parse_str(path: &Path, source: &str) -> Result<ProblemFile, ProblemError> {
+    not_an_object(path, source)?;
+    let mut de = serde_json::Deserializer::from_str(source);
     let result = serde_path_to_error::deserialize(&mut de)
-        .map_err(|e| (e.path().to_string(), e.into_inner()))
+        .map_err(|e| (field_path(e.path()), e.into_inner()))
         .and_then(|f| de.end().map(|()| f).map_err(|e| (String::new(), e)));
     result.map_err(|(field, inner)| {
         let text = inner.to_string();
@@ -41,9 +61,21 @@ pub fn parse_str(path: &Path, text: &str) -> Result<ProblemFile, ProblemError> {
             .map_or(text.as_str(), |(m, _)| m)
             .to_owned();
         let fix = syntax_fix(&inner, &message);
-        // serde_path_to_error writes "." for the top level and "?" for an unknown position.
-        let field = field.trim_end_matches(".?").to_owned();
-        let field = (!field.is_empty() && field != "." && field != "?").then_some(field);
+        let field = (!field.is_empty()).then_some(field);
+        let (message, fix) = if message == "trailing characters" && field.is_some() {
+            // serde_json's words for an array longer than the [x, y, z] it was read into.
+            (
+                "too many elements: expected an array of length 3".to_owned(),
+                "give exactly three numbers [x, y, z] (a triangle: three vertices)".to_owned(),
+            )
+        } else if let Some(word) = non_number_at(source, inner.line(), inner.column()) {
+            (
+                message,
+                format!("JSON has no {word}: every number must be finite, such as 0 or 1e300"),
+            )
+        } else {
+            (message, fix)
+        };
         let message = match &field {
             Some(f) => format!("{f}: {message}"),
             None => message,
@@ -57,6 +89,76 @@ pub fn parse_str(path: &Path, text: &str) -> Result<ProblemFile, ProblemError> {
             fix,
         }
     })
+}
+
+/// A document that is not an object: serde would read a top-level array as the fields in order
+/// and complain about its first element (`[0]: invalid type: map, expected a string`).
+fn not_an_object(path: &Path, text: &str) -> Result<(), ProblemError> {
+    let Some(at) = text.find(|c| !matches!(c, ' ' | '\t' | '\n' | '\r')) else {
+        return Ok(());
+    };
+    let rest = &text[at..];
+    let kind = match rest.as_bytes()[0] {
+        b'[' => "an array [ … ]",
+        b'"' => "a string",
+        b'-' | b'0'..=b'9' => "a number",
+        _ if rest.starts_with("true") || rest.starts_with("false") => "a boolean",
+        _ if rest.starts_with("null") => "null",
+        // `{`, or not JSON at all: the parser says what it finds.
+        _ => return Ok(()),
+    };
+    let before = &text[..at];
+    let line_start = before.rfind('\n').map_or(0, |i| i + 1);
+    Err(ProblemError::Syntax {
+        path: path.to_owned(),
+        line: 1 + before.matches('\n').count(),
+        column: 1 + at - line_start,
+        field: None,
+        message: format!("the file is {kind}, and a problem file is one JSON object {{ … }}"),
+        fix: "write the problem's fields in one object, {\"lights\": [ … ], \"point\": { … }, …}; \
+              several problems go in several files (`phong schema` lists every field)"
+            .into(),
+    })
+}
+
+/// The field where the parser stopped, as `lights[1].falloff`; empty at the top level. (The
+/// path's own Display writes "." for the top level and "?" for a position it does not know,
+/// and a field may itself be named "a.?".)
+fn field_path(path: &serde_path_to_error::Path) -> String {
+    use serde_path_to_error::Segment;
+    let mut out = String::new();
+    for segment in path {
+        match segment {
+            Segment::Seq { index } => out.push_str(&format!("[{index}]")),
+            Segment::Map { key } | Segment::Enum { variant: key } => {
+                if !out.is_empty() {
+                    out.push('.');
+                }
+                out.push_str(key);
+            }
+            Segment::Unknown => {}
+        }
+    }
+    out
+}
+
+/// `NaN`, `Infinity` or `inf` at (or just before) the error's position, as written.
+fn non_number_at(source: &str, line: usize, column: usize) -> Option<&str> {
+    let text = source.lines().nth(line.checked_sub(1)?)?.as_bytes();
+    let at = column.checked_sub(1)?.min(text.len());
+    let word = |b: &u8| b.is_ascii_alphanumeric();
+    let start = text[..at]
+        .iter()
+        .rposition(|b| !word(b))
+        .map_or(0, |i| i + 1);
+    let end = text[at..]
+        .iter()
+        .position(|b| !word(b))
+        .map_or(text.len(), |i| at + i);
+    let token = std::str::from_utf8(&text[start..end]).ok()?;
+    ["nan", "inf", "infinity"]
+        .contains(&token.to_ascii_lowercase().as_str())
+        .then_some(token)
 }
 
 fn syntax_fix(e: &serde_json::Error, message: &str) -> String {
@@ -74,6 +176,8 @@ fn syntax_fix(e: &serde_json::Error, message: &str) -> String {
         Category::Data => {
             if message.starts_with("unknown field") {
                 "remove the field or correct its spelling (`phong schema` lists every field)".into()
+            } else if message.starts_with("duplicate field") {
+                "give the field once: remove one of the two (the parser does not pick one)".into()
             } else if let Some(name) = message
                 .strip_prefix("missing field `")
                 .and_then(|s| s.split('`').next())

@@ -206,6 +206,22 @@ fn camera<R: Real>(c: &CameraSpec) -> Result<Camera<R>, Invalid> {
             "give the vertical field of view in degrees, 0 < fov < 180 (e.g. 45)",
         ));
     }
+    // The image plane's half-height tan(fov/2), as the tracer computes it: in f32,
+    // 179.999999999 rounds to 180 and the tangent of the rounded half-angle is negative (the
+    // image would be upside down).
+    let fov = number::<R>(c.fov, "camera.fov")?;
+    let half_height = (fov.to_radians() / R::TWO).tan();
+    if !(half_height > R::ZERO && half_height.is_finite()) {
+        return Err(Invalid::new(
+            "camera.fov",
+            format!(
+                "{} degrees is too close to 180 for {}",
+                show(c.fov),
+                R::NAME
+            ),
+            "give a field of view of at most 179 degrees, or use --precision f64",
+        ));
+    }
     for (name, side) in [("width", c.width), ("height", c.height)] {
         if side == 0 || side > MAX_IMAGE_SIDE {
             return Err(Invalid::new(
@@ -219,7 +235,7 @@ fn camera<R: Real>(c: &CameraSpec) -> Result<Camera<R>, Invalid> {
         eye,
         look_at,
         up,
-        fov: number::<R>(c.fov, "camera.fov")?,
+        fov,
         width: c.width,
         height: c.height,
     })
@@ -802,6 +818,17 @@ fn vector<R: Real>(a: Triple, field: &str) -> Result<V3<R>, Invalid> {
 fn direction<R: Real>(a: Triple, field: &str, what: &str) -> Result<GivenVector<R>, Invalid> {
     let v = vector::<R>(a, field)?;
     match normalize::<R>(v) {
+        // Its length is reported (and a length beyond the precision's range would be infinity).
+        Some(n) if !n.length.is_finite() => Err(Invalid::new(
+            field,
+            format!("{what} is too long for {}: its length overflows", R::NAME),
+            if R::NAME == "f32" {
+                "give a shorter vector in the same direction (only the direction is used), or use \
+                 --precision f64"
+            } else {
+                "give a shorter vector in the same direction (only the direction is used)"
+            },
+        )),
         // A vector of length 1 within rounding is used as given, so that a direction written
         // out by phong itself (an explained ray) is read back bit for bit.
         Some(n) => Ok(GivenVector {

@@ -243,12 +243,16 @@ pub fn solve_with<R: Real, F: Formulas>(
                 .any(|t| t.status == LightStatus::BehindSurface);
             let lit = eval.lights.iter().any(|t| t.status == LightStatus::Lit);
             if let (true, false, Some(p)) = (behind, lit, *position) {
+                // A light mirrored through a far point can leave the precision's range
+                // (2P − P_l overflows): that reading is then left out, not reported as inf.
                 let mirrored = mirror_lights(&problem.lights, p);
-                solution.readings.push(Reading {
-                    code: ReadingCode::LightReversed,
-                    intersection: None,
-                    evaluation: at(normal, Some(mirrored))?,
-                });
+                if positions_finite(&mirrored) {
+                    solution.readings.push(Reading {
+                        code: ReadingCode::LightReversed,
+                        intersection: None,
+                        evaluation: at(normal, Some(mirrored))?,
+                    });
+                }
                 let reversed = normal.map(|n| NormalUsed {
                     used: -n.used,
                     reversed: true,
@@ -434,6 +438,14 @@ pub fn solve_ray_with<R: Real, F: Formulas>(
     };
     solution.findings = findings::find(problem, &query, &solution, starts_on_surface);
     Ok(solution)
+}
+
+/// Whether every point and spot light of `lights` is at a finite position.
+pub(crate) fn positions_finite<R: Real>(lights: &LightSet<R>) -> bool {
+    lights
+        .lights
+        .iter()
+        .all(|l| l.position().is_none_or(|p| p.is_finite()))
 }
 
 /// Each light mirrored through P: a point or spot light moves to 2P − P_l (a spot's axis

@@ -2,7 +2,7 @@
 //! front of the eye, spanning tan(fov/2) up and down; x grows to the right and y downwards, as
 //! in the image file. Right-handed: looking along −z with up +y, +x is to the right.
 
-use crate::core::vector::normalize;
+use crate::core::vector::{between, normalize};
 use crate::core::{Real, Vector, V3};
 use crate::geometry::Ray;
 use crate::problem::Camera;
@@ -26,7 +26,10 @@ impl<R: Real> CameraRays<R> {
     /// The frame of a validated camera (eye ≠ look-at, up not along the line of sight).
     pub fn new(c: &Camera<R>) -> Self {
         let unit = |v: V3<R>| normalize::<R>(v).expect("validated camera").unit;
-        let forward = unit(c.look_at - c.eye);
+        // As validation computes it: look_at − eye may overflow although both are finite.
+        let forward = between::<R>(c.eye, c.look_at)
+            .expect("validated camera")
+            .unit;
         let right = unit(forward.cross(c.up));
         let up = right.cross(forward);
         let half_height = (c.fov.to_radians() / R::TWO).tan();
