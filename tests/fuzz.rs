@@ -2222,6 +2222,15 @@ fn a_duplicated_field_says_to_give_it_once() {
 }
 
 #[test]
+fn a_material_defined_twice_is_an_error_not_the_last_one() {
+    // `"materials": {"M": {…}, "M": {…}}` used the second M silently.
+    let (_, _, message, fix) =
+        syntax_error(br#"{"materials": {"M": {}, "M": {"ambient": [1, 1, 1]}}}"#);
+    assert_eq!(message, "materials: duplicate material `M`");
+    assert!(fix.starts_with("give each material its own name"), "{fix}");
+}
+
+#[test]
 fn an_answer_scale_of_1e300_is_written_1e300_not_301_digits() {
     let ws = Workspace::new();
     let mut json = bases()
