@@ -30,11 +30,11 @@
 //! standard error, and no output file left behind.
 //!
 //! Bounded time. Each fuzz test runs one round of `PHONG_FUZZ_CASES` cases (default: its own
-//! count, [`CASES_MUTATED`] and the others, about 15 s for the file in the debug profile) from a
+//! count, [`CASES_MUTATED`] and the others; 10 to 13 s for the file in the debug profile) from a
 //! fixed seed, so a plain `cargo test` is deterministic. With `PHONG_FUZZ_SECONDS=N`, each test
 //! keeps starting new rounds (the seed plus 1, 2, …) until N seconds have passed (`.ci/run` gives
-//! 120 s). `PHONG_FUZZ_SEED` sets the first round's seed (`random`: from
-//! the clock). A failure names its round's seed, prints the minimised input and saves it under
+//! 120 s). `PHONG_FUZZ_SEED` sets the first round's seed (`random`: from the clock). A failure
+//! names its round's seed, prints the minimised input and saves it under
 //! `target/fuzz-failures/`; proptest also records the case's seed in
 //! `proptest-regressions/fuzz.txt` (committed), which every later round replays first. A bug
 //! found here gets a plain `#[test]` with the minimised input at the end of this file.
@@ -1787,9 +1787,9 @@ fn resolves(v: &Shape, path: &str) -> bool {
 // ---------------------------------------------------------------------------------------------
 
 // Cases per round of each fuzz test when `PHONG_FUZZ_CASES` is not set. In the debug profile
-// (`cargo test`) on 2 cores the file takes about 15 s: arbitrary JSON runs at about 1,400 cases/s,
-// almost-JSON bytes at 500, mutated files (which solve, check and render) at 60–100, and the
-// binary (six runs of `phong` per rejected file) at 15 (README "Tests").
+// (`cargo test`) on 2 cores the file takes 10 to 13 s: arbitrary JSON runs at about 1,000 cases/s,
+// almost-JSON bytes at 500, mutated files (which solve, check and render) at 75, and the binary
+// (six runs of `phong` per rejected file, most cases rejected) at 45 (README "Tests").
 const CASES_ARBITRARY: u32 = 2000;
 const CASES_ALMOST: u32 = 2000;
 const CASES_MUTATED: u32 = 1000;
@@ -2222,6 +2222,15 @@ fn a_duplicated_field_says_to_give_it_once() {
 }
 
 #[test]
+fn a_material_defined_twice_is_an_error_not_the_last_one() {
+    // `"materials": {"M": {…}, "M": {…}}` used the second M silently.
+    let (_, _, message, fix) =
+        syntax_error(br#"{"materials": {"M": {}, "M": {"ambient": [1, 1, 1]}}}"#);
+    assert_eq!(message, "materials: duplicate material `M`");
+    assert!(fix.starts_with("give each material its own name"), "{fix}");
+}
+
+#[test]
 fn an_answer_scale_of_1e300_is_written_1e300_not_301_digits() {
     let ws = Workspace::new();
     let mut json = bases()
@@ -2335,7 +2344,8 @@ fn a_field_of_view_that_rounds_to_180_in_f32_is_refused_there() {
         .find(|b| b.name == "scenes/classic.json")
         .expect("the classic scene is bundled")
         .text;
-    for (fov, f32_ok) in [("179.999999999", false), ("179", true)] {
+    // (1e-46 rounds to 0 in f32.)
+    for (fov, f32_ok) in [("179.999999999", false), ("179", true), ("1e-46", false)] {
         fs::write(
             &ws.case,
             classic.replace("\"fov\": 40", &format!("\"fov\": {fov}")),
@@ -2349,11 +2359,13 @@ fn a_field_of_view_that_rounds_to_180_in_f32_is_refused_there() {
             Ok(_) => assert!(f32_ok, "{fov} accepted in f32"),
             Err(e) => {
                 assert!(!f32_ok, "{fov}: {e}");
-                assert!(
-                    e.to_string()
-                        .contains("camera.fov: 179.999999999 degrees is too close to 180 for f32"),
-                    "{e}"
-                );
+                let why = if fov == "1e-46" {
+                    "too small"
+                } else {
+                    "too close to 180"
+                };
+                let expected = format!("camera.fov: {fov} degrees is {why} for f32");
+                assert!(e.to_string().contains(&expected), "{e}");
             }
         }
     }

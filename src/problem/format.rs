@@ -31,7 +31,7 @@ pub struct ProblemFile {
     #[serde(default)]
     pub question: Option<String>,
     /// Named materials, referred to by name from `point.material` or `surfaces[i].material`.
-    #[serde(default, deserialize_with = "named_objects")]
+    #[serde(default, deserialize_with = "materials")]
     pub materials: BTreeMap<String, MaterialSpec>,
     /// The lights: ambient, point, directional and spot, in any order.
     #[serde(default, deserialize_with = "objects")]
@@ -554,13 +554,30 @@ where
     Ok(v.into_iter().map(|o| o.0).collect())
 }
 
-fn named_objects<'de, D, T>(d: D) -> Result<BTreeMap<String, T>, D::Error>
-where
-    D: Deserializer<'de>,
-    T: Deserialize<'de> + Described,
-{
-    let m = BTreeMap::<String, Object<T>>::deserialize(d)?;
-    Ok(m.into_iter().map(|(k, o)| (k, o.0)).collect())
+/// Named materials. A name given twice is an error, as a field given twice is (a map would keep
+/// the last one silently).
+fn materials<'de, D: Deserializer<'de>>(d: D) -> Result<BTreeMap<String, MaterialSpec>, D::Error> {
+    struct V;
+    impl<'de> Visitor<'de> for V {
+        type Value = BTreeMap<String, MaterialSpec>;
+        fn expecting(&self, f: &mut fmt::Formatter) -> fmt::Result {
+            f.write_str("the named materials: an object {\"name\": {\"ambient\": …}, …}")
+        }
+        fn visit_map<A: MapAccess<'de>>(self, mut map: A) -> Result<Self::Value, A::Error> {
+            let mut out = BTreeMap::new();
+            while let Some(name) = map.next_key::<String>()? {
+                if out.contains_key(&name) {
+                    return Err(de::Error::custom(format_args!(
+                        "duplicate material `{name}`"
+                    )));
+                }
+                let Object(m) = map.next_value::<Object<MaterialSpec>>()?;
+                out.insert(name, m);
+            }
+            Ok(out)
+        }
+    }
+    d.deserialize_map(V)
 }
 
 /// A `type` word, read only from a string. serde_json reads an enum from a string or an object

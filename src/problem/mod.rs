@@ -178,6 +178,8 @@ fn syntax_fix(e: &serde_json::Error, message: &str) -> String {
                 "remove the field or correct its spelling (`phong schema` lists every field)".into()
             } else if message.starts_with("duplicate field") {
                 "give the field once: remove one of the two (the parser does not pick one)".into()
+            } else if message.starts_with("duplicate material") {
+                "give each material its own name, or remove one of the two".into()
             } else if let Some(name) = message
                 .strip_prefix("missing field `")
                 .and_then(|s| s.split('`').next())

@@ -208,18 +208,25 @@ fn camera<R: Real>(c: &CameraSpec) -> Result<Camera<R>, Invalid> {
     }
     // The image plane's half-height tan(fov/2), as the tracer computes it: in f32,
     // 179.999999999 rounds to 180 and the tangent of the rounded half-angle is negative (the
-    // image would be upside down).
+    // image would be upside down); 1e-46 rounds to 0.
     let fov = number::<R>(c.fov, "camera.fov")?;
     let half_height = (fov.to_radians() / R::TWO).tan();
     if !(half_height > R::ZERO && half_height.is_finite()) {
+        let (what, fix) = if c.fov < 90.0 {
+            (
+                "too small",
+                "give a larger field of view, or use --precision f64",
+            )
+        } else {
+            (
+                "too close to 180",
+                "give a field of view of at most 179 degrees, or use --precision f64",
+            )
+        };
         return Err(Invalid::new(
             "camera.fov",
-            format!(
-                "{} degrees is too close to 180 for {}",
-                show(c.fov),
-                R::NAME
-            ),
-            "give a field of view of at most 179 degrees, or use --precision f64",
+            format!("{} degrees is {what} for {}", show(c.fov), R::NAME),
+            fix,
         ));
     }
     for (name, side) in [("width", c.width), ("height", c.height)] {
