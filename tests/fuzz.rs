@@ -226,7 +226,7 @@ impl J {
 // ---------------------------------------------------------------------------------------------
 
 /// Every field name of the problem format (src/problem/format.rs), so that generated objects
-/// are mostly made of names the parser knows.
+/// are mostly made of names the parser knows; the top-level fields first (see [`TOP_LEVEL`]).
 const FIELD_NAMES: &[&str] = &[
     "$schema",
     "title",
@@ -277,22 +277,9 @@ const FIELD_NAMES: &[&str] = &[
     "tolerance",
 ];
 
-/// The top-level fields, which every field path of an error starts with.
-const TOP_LEVEL: &[&str] = &[
-    "$schema",
-    "title",
-    "question",
-    "materials",
-    "lights",
-    "viewer",
-    "point",
-    "ray",
-    "surfaces",
-    "camera",
-    "background",
-    "render",
-    "answer",
-];
+/// The top-level fields, which every field path of an error starts with: the first 13 of
+/// [`FIELD_NAMES`], which lists them first.
+const TOP_LEVEL: &[&str] = FIELD_NAMES.split_at(13).0;
 
 /// Mesh paths relative to the case's folder: the fixtures of [`Workspace::new`], missing files,
 /// folders and `..`.

@@ -33,13 +33,8 @@
 
 use std::cmp::Ordering;
 
+use crate::core::shade::tangent_tolerance;
 use crate::core::{Real, Vector, V3};
-
-/// γ_k of precision `R`, in f64 (the bounds are computed in f64 whatever the precision).
-fn gamma<R: Real>(k: u32) -> f64 {
-    let ku = f64::from(k) * R::EPSILON.to_f64() / 2.0;
-    ku / (1.0 - ku)
-}
 
 /// The smallest positive normal number of precision `R`.
 fn min_positive<R: Real>() -> f64 {
@@ -86,9 +81,8 @@ pub(super) fn cos_theta_bound<R: Real>(
     distance: Option<R>,
     hit: Option<HitError>,
 ) -> f64 {
-    let (n, l) = (n.to_array(), l.to_array());
-    let sum: f64 = (0..3).map(|i| (n[i].to_f64() * l[i].to_f64()).abs()).sum();
-    let mut bound = gamma::<R>(40) * sum + 8.0 * min_positive::<R>();
+    // γ₄₀·Σ|N_i L_i|: the very tolerance within which the core counts cos θ as 0.
+    let mut bound = tangent_tolerance::<R>(n, l).to_f64() + 8.0 * min_positive::<R>();
     if let Some(h) = hit {
         if let Some(d) = distance {
             bound += moved(h.e, d.to_f64());
