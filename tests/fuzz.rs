@@ -29,11 +29,14 @@
 //! Some rejected cases also go through the `phong` binary: exit code 2, `error: FILE…` on
 //! standard error, and no output file left behind.
 //!
-//! Bounded time. Each fuzz test runs one round of `PHONG_FUZZ_CASES` cases (default: its own
-//! count, [`CASES_MUTATED`] and the others; 10 to 13 s for the file in the debug profile) from a
-//! fixed seed, so a plain `cargo test` is deterministic. With `PHONG_FUZZ_SECONDS=N`, each test
-//! keeps starting new rounds (the seed plus 1, 2, …) until N seconds have passed (`.ci/run` gives
-//! 120 s). `PHONG_FUZZ_SEED` sets the first round's seed (`random`: from the clock). A failure
+//! The same cases on every machine. Each fuzz test runs one round of `PHONG_FUZZ_CASES` cases
+//! (default: its own count, [`CASES_MUTATED`] and the others; 10 to 13 s for the file in the
+//! debug profile) from a fixed seed, so a plain `cargo test` is deterministic.
+//! `PHONG_FUZZ_ROUNDS=N` runs N rounds (the seed plus 0, 1, …, N − 1): `.ci/run` sets it, so CI
+//! tests the same cases however fast or loaded the machine is. Exploration is apart:
+//! `.ci/fuzz-explore` sets `PHONG_FUZZ_SEED=random` and `PHONG_FUZZ_SECONDS=N` (rounds until N
+//! seconds have passed), which is refused under `CI=true`. `PHONG_FUZZ_SEED` sets the first
+//! round's seed (`random`: from the clock). A failure
 //! names its round's seed, prints the minimised input and saves it under
 //! `target/fuzz-failures/`; proptest also records the case's seed in
 //! `proptest-regressions/fuzz.txt` (committed), which every later round replays first. A bug
@@ -1805,8 +1808,34 @@ fn first_seed() -> u64 {
     }
 }
 
-/// Runs rounds of `cases` cases of `strategy` through `test` until the budget is spent (one round
-/// without `PHONG_FUZZ_SECONDS`), and panics with the seed and the minimised input on a failure.
+/// How many rounds a fuzz test runs, and whether a clock may decide it.
+enum Rounds {
+    /// Exactly this many rounds, seeds `first`, `first + 1`, …: the same cases on every machine
+    /// (plain `cargo test`: 1; `.ci/run`: `PHONG_FUZZ_ROUNDS`).
+    Fixed(u64),
+    /// Rounds until this much time has passed (`PHONG_FUZZ_SECONDS`): exploration only, by
+    /// `.ci/fuzz-explore`. Which cases run then depends on the machine's speed, so it is refused
+    /// under `CI=true`.
+    Timed(Duration),
+}
+
+fn rounds() -> Rounds {
+    let fixed = env_number("PHONG_FUZZ_ROUNDS");
+    match env_number("PHONG_FUZZ_SECONDS") {
+        Some(_) if fixed.is_some() => {
+            panic!("PHONG_FUZZ_ROUNDS and PHONG_FUZZ_SECONDS are alternatives: set one of them")
+        }
+        Some(_) if std::env::var("CI").is_ok_and(|v| v == "true") => panic!(
+            "PHONG_FUZZ_SECONDS is for exploration (.ci/fuzz-explore), never for CI: with a time \
+             budget the cases tested depend on the machine's speed. Use PHONG_FUZZ_ROUNDS"
+        ),
+        Some(secs) => Rounds::Timed(Duration::from_secs(secs)),
+        None => Rounds::Fixed(fixed.unwrap_or(1).max(1)),
+    }
+}
+
+/// Runs rounds of `cases` cases of `strategy` through `test` ([`rounds`]: one round by default),
+/// and panics with the seed and the minimised input on a failure.
 fn fuzz<S>(
     name: &str,
     strategy: S,
@@ -1817,7 +1846,7 @@ fn fuzz<S>(
     S::Value: Clone + fmt::Debug + AsRef<[u8]>,
 {
     let cases = env_number("PHONG_FUZZ_CASES").map_or(cases_default, |n| n as u32);
-    let budget = env_number("PHONG_FUZZ_SECONDS").map(Duration::from_secs);
+    let rounds = rounds();
     let first = first_seed();
     // Each test draws from its own stream.
     let salt = name.bytes().fold(0xcbf2_9ce4_8422_2325u64, |h, b| {
@@ -1861,9 +1890,12 @@ fn fuzz<S>(
             );
         }
         round += 1;
-        match budget {
-            Some(b) if started.elapsed() < b => continue,
-            _ => break,
+        let more = match rounds {
+            Rounds::Fixed(n) => round < n,
+            Rounds::Timed(budget) => started.elapsed() < budget,
+        };
+        if !more {
+            break;
         }
     }
     let secs = started.elapsed().as_secs_f64();
@@ -2437,5 +2469,38 @@ fn an_unknown_field_named_like_a_path_is_named_whole() {
             assert!(message.starts_with("a.?: unknown field `a.?`"), "{message}");
         }
         other => panic!("expected a syntax error, got {other:?}"),
+    }
+}
+
+#[test]
+fn a_floor_met_beyond_the_range_of_f64_is_not_met() {
+    // Round 18 of CI's extended fuzz (seed 1592651828): the classic scene seen from (1e308,
+    // 1e308, 1e308) with a field of view of 179.9999999°. A corner ray runs almost parallel to
+    // the floor and meets it at a finite t where O + tD is beyond f64 (x = −inf); the explained
+    // pixel's JSON printed that hit point (`"point": [null, 0.0, 6.3e307]`). A meeting point
+    // that cannot be represented is no meeting point (docs/conventions.md): the ray misses.
+    let ws = Workspace::new();
+    let classic = &bases()
+        .iter()
+        .find(|b| b.name == "scenes/classic.json")
+        .expect("bundled")
+        .text;
+    let text = classic
+        .replace("\"fov\": 40", "\"fov\": 179.9999999")
+        .replace("\"eye\": [0, 2.5, 8]", "\"eye\": [1e308, 1e308, 1e308]");
+    assert_eq!(text.matches("1e308").count(), 3, "the eye was replaced");
+    assert!(text.contains("179.9999999"), "the fov was replaced");
+    fs::write(&ws.case, text).expect("written");
+    let (_, mut problem) = problem::load::<f64>(&ws.case).expect("a valid scene");
+    let mut camera = problem.camera.expect("a camera");
+    (camera.width, camera.height) = (8, 6);
+    problem.camera = Some(camera);
+    problem.render.samples = 4;
+    problem.render.max_level = 3;
+    let scene = tracer::Scene::new(&problem);
+    for (x, y) in [(4, 3), (0, 0), (7, 5), (0, 5), (7, 0)] {
+        let e = tracer::explain_pixel(&problem, &camera, &scene, x, y).expect("explained");
+        let doc = reports::pixel::document("classic", &problem, &e);
+        finite_tree(&doc, &format!("pixel {x},{y}'s JSON")).expect("every number finite");
     }
 }

@@ -14,7 +14,10 @@ pub struct Plane<R: Real> {
 
 impl<R: Real> Plane<R> {
     /// t where the ray's line meets the plane, of either sign: t = N·(Q − O) / (N·D).
-    /// `None` when the line is parallel to the plane (or lies in it).
+    /// `None` when the line is parallel to the plane (or lies in it), and when the meeting point
+    /// O + tD lies beyond the range of `R`: a point that cannot be represented is no meeting
+    /// point (docs/conventions.md, "Hits beyond the floating-point range"), so neither the tracer
+    /// nor the solver shades, prints or spawns a ray from an infinite point.
     #[inline]
     pub fn intersect_line(&self, ray: &Ray<R>) -> Option<R> {
         let denom = self.normal.dot(ray.direction);
@@ -30,7 +33,7 @@ impl<R: Real> Plane<R> {
             self.normal.dot(self.point * half - ray.origin * half) * R::TWO
         };
         let t = along / denom;
-        t.is_finite().then_some(t)
+        (t.is_finite() && ray.at(t).is_finite()).then_some(t)
     }
 }
 
@@ -53,6 +56,34 @@ mod tests {
         };
         let t = plane.intersect_line(&ray).unwrap();
         assert!((t + 90.0).abs() < 1e-12, "t = {t}");
+    }
+
+    #[test]
+    fn a_meeting_point_beyond_the_range_is_no_meeting_point() {
+        // From (1e308, 1e308, 0) along (−0.8, −0.6, 0), the floor y = 0 is met at t = 1e308/0.6
+        // and x = 1e308 − 0.8·t = −1e308/3: representable. From (0, 1e308, 0) with the ray
+        // nearly level (D_y ≈ −1e-10) it is met at x ≈ −1e318: beyond f64, so not met.
+        let plane = Plane::<f64> {
+            point: DVec3::ZERO,
+            normal: DVec3::Y,
+        };
+        let steep = Ray::<f64> {
+            origin: DVec3::new(1e308, 1e308, 0.0),
+            direction: DVec3::new(-0.8, -0.6, 0.0),
+        };
+        let t = plane
+            .intersect_line(&steep)
+            .expect("met at x = −(1/3)·1e308");
+        assert!(
+            (steep.at(t).x + 1e308 / 3.0).abs() < 1e293,
+            "{:?}",
+            steep.at(t)
+        );
+        let level = Ray::<f64> {
+            origin: DVec3::new(0.0, 1e308, 0.0),
+            direction: DVec3::new(-1.0, -1e-10, 0.0).normalize(),
+        };
+        assert_eq!(plane.intersect_line(&level), None);
     }
 
     #[test]
