@@ -358,7 +358,8 @@ pub fn check_file(path: &Path, options: &CheckOptions) -> report::Checked {
     checked(text, judge_loaded(path, &file, loaded, options))
 }
 
-/// A problem file, parsed, with its parsed form for the answer key.
+/// A problem file loaded as `solve` and `grade` load it ([`crate::problem::load`], which finds
+/// a mesh beside the file), with its parsed form for the answer key.
 struct Loaded {
     file: ProblemFile,
     /// The validated problem, or why it is invalid: reported only after the answer is read, as
@@ -368,9 +369,19 @@ struct Loaded {
 
 impl Loaded {
     fn read(path: &Path) -> Result<Loaded, ProblemError> {
-        let file = crate::problem::parse_file(path)?;
-        let problem = crate::problem::validate::validate::<f64>(&file).map_err(|e| e.at(path));
-        Ok(Loaded { file, problem })
+        match crate::problem::load::<f64>(path) {
+            Ok((file, problem)) => Ok(Loaded {
+                file,
+                problem: Ok(problem),
+            }),
+            // The file parsed, but its problem is invalid. `load` keeps no parsed file then:
+            // parse it again (only on this path) for its key, which is reported first.
+            Err(invalid @ ProblemError::Invalid { .. }) => Ok(Loaded {
+                file: crate::problem::parse_file(path)?,
+                problem: Err(invalid),
+            }),
+            Err(e) => Err(e),
+        }
     }
 }
 
