@@ -327,6 +327,91 @@ fn solve_ignores_the_answer_key() {
 }
 
 #[test]
+fn a_mesh_is_found_beside_the_problem_file_as_solve_finds_it() {
+    // A ray along −z meets a triangle of `sub/tri.obj`, named by `sub/problem.json` as
+    // "tri.obj"; run from the folder above `sub`, check must read the same mesh as solve.
+    // Ambient light only: O_a·I_a = (0.5, 0.4, 0.3).
+    let dir = tempfile::TempDir::new().unwrap();
+    let sub = dir.path().join("sub");
+    std::fs::create_dir(&sub).unwrap();
+    std::fs::write(
+        sub.join("tri.obj"),
+        "v -1 -1 0\nv 1 -1 0\nv 0 1 0\nf 1 2 3\n",
+    )
+    .unwrap();
+    std::fs::write(
+        sub.join("problem.json"),
+        r#"{"lights": [{"type": "ambient", "color": [1, 1, 1]}],
+            "ray": {"origin": [0, 0, 5], "direction": [0, 0, -1]},
+            "surfaces": [{"type": "mesh", "file": "tri.obj",
+                          "material": {"ambient": [0.5, 0.4, 0.3]}}],
+            "answer": [0.5, 0.4, 0.3]}"#,
+    )
+    .unwrap();
+    let run = |args: &[&str]| {
+        Command::cargo_bin("phong")
+            .unwrap()
+            .current_dir(dir.path())
+            .args(args)
+            .output()
+            .unwrap()
+    };
+    let solved = run(&["solve", "--format", "json", "sub/problem.json"]);
+    assert_eq!(solved.status.code(), Some(0), "{solved:?}");
+    let doc: Value = serde_json::from_slice(&solved.stdout).unwrap();
+    let colour = &doc["solution"]["color"]["clamped"];
+    assert_eq!(colour, &serde_json::json!([0.5, 0.4, 0.3]), "{doc}");
+    let answer = format!("{} {} {}", colour[0], colour[1], colour[2]);
+    for args in [
+        vec![
+            "check",
+            "--format",
+            "json",
+            "sub/problem.json",
+            "--answer",
+            &answer,
+        ],
+        vec!["check", "--format", "json", "sub/problem.json"],
+    ] {
+        let checked = run(&args);
+        let verdict: Value = serde_json::from_slice(&checked.stdout).unwrap();
+        assert_eq!(checked.status.code(), Some(0), "{args:?}: {verdict}");
+        assert_eq!(verdict["verdict"], "right", "{args:?}: {verdict}");
+    }
+}
+
+#[test]
+fn a_bad_answer_is_reported_before_an_invalid_problem() {
+    // The point light has no falloff: the problem is invalid, and its key is reported first.
+    let invalid = |key: &str| {
+        temp_problem(&format!(
+            r#"{{"lights": [{{"type": "point", "position": [1, 0, 0], "color": [1, 1, 1]}}],
+                "point": {{"position": [0, 0, 0], "normal": [0, 0, 1],
+                           "material": {{"diffuse": [1, 1, 1]}}}}{key}}}"#
+        ))
+    };
+    let kind = |f: &tempfile::NamedTempFile, args: &[&str]| {
+        let out = phong()
+            .args(["check", "--format", "json"])
+            .arg(f.path())
+            .args(args)
+            .output()
+            .unwrap();
+        assert_eq!(out.status.code(), Some(2));
+        let json: Value = serde_json::from_slice(&out.stdout).unwrap();
+        json["error"]["kind"].as_str().unwrap().to_owned()
+    };
+    assert_eq!(kind(&invalid(""), &[]), "no_answer");
+    assert_eq!(kind(&invalid(""), &["--answer", "0.1 0.2"]), "answer");
+    let bad_key = invalid(r#", "answer": {"color": [1, 2, 3], "scale": 7}"#);
+    assert_eq!(kind(&bad_key, &[]), "answer");
+    assert_eq!(
+        kind(&invalid(r#", "answer": [0.1, 0.2, 0.3]"#), &[]),
+        "invalid"
+    );
+}
+
+#[test]
 fn portuguese_verdicts_use_the_chapters_terms() {
     let (code, out, _) = check("4.2.json", &["--answer", "0.245 0.28 0.21", "--lang", "pt"]);
     assert_eq!(code, 1);

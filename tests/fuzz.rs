@@ -1485,7 +1485,7 @@ fn check_path(c: &Context, tally: &Tally) -> Result<(), String> {
         Err(f) => {
             let file = c.path.display().to_string();
             let known = ["read", "syntax", "invalid", "answer", "no_answer"];
-            if !known.contains(&f.kind) {
+            if !known.contains(&f.kind.code()) {
                 return Err(format!("check: unknown failure kind {:?}", f.kind));
             }
             if !f.message.starts_with(&file) {
@@ -1493,7 +1493,7 @@ fn check_path(c: &Context, tally: &Tally) -> Result<(), String> {
                     "check: the message does not start with the file: {f:?}"
                 ));
             }
-            if f.kind == "answer" && !f.message.contains("answer") {
+            if f.kind.code() == "answer" && !f.message.contains("answer") {
                 return Err(format!(
                     "check: the message does not name the answer: {f:?}"
                 ));

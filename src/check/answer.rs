@@ -105,8 +105,17 @@ fn check_scale(values: [f64; 3], scale: Scale, shown: &str) -> Result<(), BadAns
     Ok(())
 }
 
+/// An answer with the tolerance it asks to be judged under (a problem file's key; an answer
+/// given with `--answer` asks for none).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Key {
+    pub answer: Answer,
+    /// The key's own tolerance; `None` for the default (`--tolerance`, or the scale's).
+    pub tolerance: Option<f64>,
+}
+
 /// An answer key from a problem file.
-pub fn from_key(key: &AnswerSpec) -> Result<(Answer, Option<f64>), BadAnswer> {
+pub fn from_key(key: &AnswerSpec) -> Result<Key, BadAnswer> {
     let (color, scale, tolerance) = key.parts();
     let scale = match scale {
         None => None,
@@ -146,7 +155,7 @@ pub fn from_key(key: &AnswerSpec) -> Result<(Answer, Option<f64>), BadAnswer> {
     if let Some(t) = tolerance {
         check_tolerance(t).map_err(|e| bad(format!("answer.tolerance: {e}")))?;
     }
-    Ok((answer, tolerance))
+    Ok(Key { answer, tolerance })
 }
 
 /// A tolerance must be a finite number ≥ 0.
@@ -305,15 +314,18 @@ mod tests {
         let key: AnswerSpec =
             serde_json::from_str(r#"{"color": [134, 7, 0], "scale": 255, "tolerance": 2}"#)
                 .unwrap();
-        let (a, t) = from_key(&key).unwrap();
+        let Key {
+            answer: a,
+            tolerance: t,
+        } = from_key(&key).unwrap();
         assert_eq!(
             (a.values, a.scale, t),
             ([134.0, 7.0, 0.0], Scale::Bits8, Some(2.0))
         );
         let key: AnswerSpec = serde_json::from_str(r##""#FF8000""##).unwrap();
-        assert_eq!(from_key(&key).unwrap().0.values, [255.0, 128.0, 0.0]);
+        assert_eq!(from_key(&key).unwrap().answer.values, [255.0, 128.0, 0.0]);
         let key: AnswerSpec = serde_json::from_str("[0.5, 0.7, 0.3]").unwrap();
-        assert_eq!(from_key(&key).unwrap().0.scale, Scale::Unit);
+        assert_eq!(from_key(&key).unwrap().answer.scale, Scale::Unit);
         let key: AnswerSpec =
             serde_json::from_str(r#"{"color": [1, 2, 3], "scale": 100}"#).unwrap();
         assert!(from_key(&key).unwrap_err().message.contains("answer.scale"));

@@ -278,31 +278,35 @@ fn grade_row(row: &mut RowOut, fields: &[&[u8]], options: &Options, cache: &mut 
     }
 }
 
+/// One exercise's rows as they are counted: the summary, and how often each diagnosis occurs.
+struct Tally<'a> {
+    summary: SummaryOut,
+    slips: BTreeMap<&'a [Slip], usize>,
+}
+
 fn summarise(rows: &[RowOut]) -> Vec<SummaryOut> {
-    let mut by: BTreeMap<&str, (SummaryOut, BTreeMap<&[Slip], usize>)> = BTreeMap::new();
+    let mut by: BTreeMap<&str, Tally> = BTreeMap::new();
     for r in rows {
-        let (s, slips) = by.entry(&r.exercise).or_insert_with(|| {
-            (
-                SummaryOut {
-                    exercise: r.exercise.clone(),
-                    ..SummaryOut::default()
-                },
-                BTreeMap::new(),
-            )
+        let Tally { summary, slips } = by.entry(&r.exercise).or_insert_with(|| Tally {
+            summary: SummaryOut {
+                exercise: r.exercise.clone(),
+                ..SummaryOut::default()
+            },
+            slips: BTreeMap::new(),
         });
-        s.rows += 1;
+        summary.rows += 1;
         match r.verdict {
-            "right" => s.right += 1,
-            "reading" => s.reading += 1,
-            "wrong" => s.wrong += 1,
-            _ => s.invalid += 1,
+            "right" => summary.right += 1,
+            "reading" => summary.reading += 1,
+            "wrong" => summary.wrong += 1,
+            _ => summary.invalid += 1,
         }
         for d in &r.diagnosis {
             *slips.entry(d.as_slice()).or_default() += 1;
         }
     }
     by.into_values()
-        .map(|(mut s, slips)| {
+        .map(|Tally { mut summary, slips }| {
             let mut counts: Vec<SlipCount> = slips
                 .into_iter()
                 .map(|(k, count)| SlipCount {
@@ -314,8 +318,8 @@ fn summarise(rows: &[RowOut]) -> Vec<SummaryOut> {
             counts.sort_by(|a, b| {
                 (b.count, a.slips.len(), &a.slips).cmp(&(a.count, b.slips.len(), &b.slips))
             });
-            s.slips = counts;
-            s
+            summary.slips = counts;
+            summary
         })
         .collect()
 }

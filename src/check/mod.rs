@@ -21,10 +21,13 @@ pub mod messages;
 pub mod report;
 pub mod slips;
 
-use crate::problem::Problem;
-use crate::solve::{Evaluation, ReadingCode};
+use std::path::Path;
 
-pub use answer::{Answer, BadAnswer, Scale};
+use crate::problem::{Problem, ProblemError, ProblemFile};
+use crate::solve::{Evaluation, ReadingCode};
+use report::{AnswerSource, Checked, Failure, FailureKind, Judged};
+
+pub use answer::{Answer, BadAnswer, Key, Scale};
 pub use slips::{Outcome, Slip};
 
 /// A colour an answer can be compared with, on the 0–1 scale.
@@ -139,16 +142,30 @@ impl Expected {
 
     /// The colour an answer is measured against: the problem as written, or, when it has none,
     /// its likely intended reading.
-    pub fn reference(&self) -> Option<(Target, Option<ReadingCode>)> {
+    pub fn reference(&self) -> Option<Reference> {
         match self.solution {
-            Some(t) => Some((t, None)),
+            Some(target) => Some(Reference {
+                target,
+                reading: None,
+            }),
             None => self
                 .readings
                 .iter()
                 .find(|r| r.likely_intended)
-                .map(|r| (r.target, Some(r.code))),
+                .map(|r| Reference {
+                    target: r.target,
+                    reading: Some(r.code),
+                }),
         }
     }
+}
+
+/// The colour an answer is measured against ([`Expected::reference`]).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Reference {
+    pub target: Target,
+    /// `None` for the problem as written, or the reading whose colour it is.
+    pub reading: Option<ReadingCode>,
 }
 
 /// The verdict on an answer.
@@ -244,9 +261,9 @@ pub fn judge(expected: &Expected, answer: &Answer, tolerance: f64, strict: bool)
         }
     }
     if v.comparison.is_none() {
-        if let Some((t, code)) = expected.reference() {
-            v.comparison = compare(answer, &t, tolerance);
-            v.compared_reading = code;
+        if let Some(r) = expected.reference() {
+            v.comparison = compare(answer, &r.target, tolerance);
+            v.compared_reading = r.reading;
         }
     }
     // A slip that is the likely intended reading of the problem (L reversed in 4.2, the hit
@@ -316,90 +333,103 @@ pub struct CheckOptions {
 
 /// Checks one problem file's answer (given, or its key). Never fails: a bad file or answer is
 /// reported in the result, which names the file, the field and the fix.
-pub fn check_file(path: &std::path::Path, options: &CheckOptions) -> report::Checked {
-    use report::{AnswerSource, Checked, Failure};
+pub fn check_file(path: &Path, options: &CheckOptions) -> report::Checked {
     let file = path.display().to_string();
     let source = if options.answer.is_some() {
         AnswerSource::Argument
     } else {
         AnswerSource::Key
     };
-    let mut checked = Checked {
+    let checked = |text, outcome| Checked {
         file: file.clone(),
-        text: options.answer.clone(),
+        text,
         source,
-        outcome: Err(Failure {
-            kind: "no_answer",
-            field: None,
-            message: String::new(),
-        }),
+        outcome,
     };
-    let problem_error = |e: crate::problem::ProblemError| Failure {
-        kind: e.kind(),
-        field: e.field().map(str::to_owned),
-        message: e.to_string(),
+    let loaded = match Loaded::read(path) {
+        Ok(l) => l,
+        Err(e) => return checked(options.answer.clone(), Err(Failure::problem(&e))),
     };
-    let parsed = match crate::problem::parse_file(path) {
-        Ok(f) => f,
-        Err(e) => {
-            checked.outcome = Err(problem_error(e));
-            return checked;
-        }
-    };
-    // The answer: --answer, or the file's key.
-    let answer = match (&options.answer, &parsed.answer) {
-        (Some(text), _) => answer::parse(text, options.scale)
-            .map(|a| (a, None))
-            .map_err(|e| Failure {
-                kind: "answer",
-                field: Some("--answer".into()),
-                message: format!("{file}: --answer: {e}"),
+    let key = loaded.file.answer.as_ref();
+    let text = options
+        .answer
+        .clone()
+        .or_else(|| key.map(|k| serde_json::to_string(&key_json(k)).unwrap_or_default()));
+    checked(text, judge_loaded(path, &file, loaded, options))
+}
+
+/// A problem file loaded as `solve` and `grade` load it ([`crate::problem::load`], which finds
+/// a mesh beside the file), with its parsed form for the answer key.
+struct Loaded {
+    file: ProblemFile,
+    /// The validated problem, or why it is invalid: reported only after the answer is read, as
+    /// a file that cannot be read or parsed is reported before it.
+    problem: Result<Problem<f64>, ProblemError>,
+}
+
+impl Loaded {
+    fn read(path: &Path) -> Result<Loaded, ProblemError> {
+        match crate::problem::load::<f64>(path) {
+            Ok((file, problem)) => Ok(Loaded {
+                file,
+                problem: Ok(problem),
             }),
+            // The file parsed, but its problem is invalid. `load` keeps no parsed file then:
+            // parse it again (only on this path) for its key, which is reported first.
+            Err(invalid @ ProblemError::Invalid { .. }) => Ok(Loaded {
+                file: crate::problem::parse_file(path)?,
+                problem: Err(invalid),
+            }),
+            Err(e) => Err(e),
+        }
+    }
+}
+
+/// The answer (`--answer`, or the file's key) judged against the loaded problem.
+fn judge_loaded(
+    path: &Path,
+    file: &str,
+    loaded: Loaded,
+    options: &CheckOptions,
+) -> Result<Judged, Failure> {
+    let answer_failure = |field: &str, message| Failure {
+        kind: FailureKind::Answer,
+        field: Some(field.into()),
+        message,
+    };
+    let key = match (&options.answer, &loaded.file.answer) {
+        (Some(text), _) => answer::parse(text, options.scale)
+            .map(|answer| Key {
+                answer,
+                tolerance: None,
+            })
+            .map_err(|e| answer_failure("--answer", format!("{file}: --answer: {e}")))?,
         (None, Some(key)) => {
-            checked.text = Some(serde_json::to_string(&key_json(key)).unwrap_or_default());
-            answer::from_key(key).map_err(|e| Failure {
-                kind: "answer",
+            answer::from_key(key).map_err(|e| answer_failure("answer", format!("{file}: {e}")))?
+        }
+        (None, None) => {
+            return Err(Failure {
+                kind: FailureKind::NoAnswer,
                 field: Some("answer".into()),
-                message: format!("{file}: {e}"),
+                message: format!(
+                    "{file}: answer: missing: the file has no answer key to check. Fix: pass \
+                     --answer \"r g b\", or add \"answer\": [r, g, b] to the file"
+                ),
             })
         }
-        (None, None) => Err(Failure {
-            kind: "no_answer",
-            field: Some("answer".into()),
-            message: format!(
-                "{file}: answer: missing: the file has no answer key to check. Fix: pass \
-                 --answer \"r g b\", or add \"answer\": [r, g, b] to the file"
-            ),
-        }),
     };
-    let (answer, key_tolerance) = match answer {
-        Ok(a) => a,
-        Err(f) => {
-            checked.outcome = Err(f);
-            return checked;
-        }
-    };
-    let problem = match crate::problem::validate::validate::<f64>(&parsed) {
-        Ok(p) => p,
-        Err(e) => {
-            checked.outcome = Err(problem_error(e.at(path)));
-            return checked;
-        }
-    };
-    let expected = match Expected::of(&problem) {
-        Ok(x) => x,
-        Err(e) => {
-            checked.outcome = Err(problem_error(e.at(path)));
-            return checked;
-        }
-    };
+    let problem = loaded.problem.map_err(|e| Failure::problem(&e))?;
+    let expected = Expected::of(&problem).map_err(|e| Failure::problem(&e.at(path)))?;
     let tolerance = options
         .tolerance
-        .or(key_tolerance)
-        .unwrap_or_else(|| answer.scale.default_tolerance());
-    let verdict = judge(&expected, &answer, tolerance, options.strict);
-    checked.outcome = Ok((answer, tolerance, verdict));
-    checked
+        .or(key.tolerance)
+        .unwrap_or_else(|| key.answer.scale.default_tolerance());
+    let verdict = judge(&expected, &key.answer, tolerance, options.strict);
+    Ok(Judged {
+        answer: key.answer,
+        tolerance,
+        verdict,
+    })
 }
 
 /// The key as the file wrote it, for the report.

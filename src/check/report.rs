@@ -8,6 +8,7 @@ use serde::Serialize;
 
 use super::messages::{self, Line};
 use super::{Answer, Comparison, Scale, Verdict, VerdictKind};
+use crate::problem::ProblemError;
 use crate::report::lang::Lang;
 use crate::report::number::num;
 use crate::solve::ReadingCode;
@@ -32,23 +33,90 @@ pub struct Checked {
     /// The answer as written, when there is one.
     pub text: Option<String>,
     pub source: AnswerSource,
-    pub outcome: Result<(Answer, f64, Verdict), Failure>,
+    pub outcome: Result<Judged, Failure>,
+}
+
+/// An answer that could be checked: the answer read, the tolerance it was judged under, and
+/// the verdict.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Judged {
+    pub answer: Answer,
+    /// The largest difference accepted per channel, on the answer's scale.
+    pub tolerance: f64,
+    pub verdict: Verdict,
 }
 
 /// Why an answer could not be checked.
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct Failure {
-    /// "read", "syntax" or "invalid" (the problem file), "answer" (the answer), "no_answer".
-    pub kind: &'static str,
+    pub kind: FailureKind,
     pub field: Option<String>,
     pub message: String,
+}
+
+impl Failure {
+    /// A problem file that cannot be read, parsed, validated or solved.
+    pub fn problem(e: &ProblemError) -> Self {
+        Failure {
+            kind: FailureKind::of(e),
+            field: e.field().map(str::to_owned),
+            message: e.to_string(),
+        }
+    }
+}
+
+/// What could not be checked, as the JSON's `error.kind` names it.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum FailureKind {
+    /// The problem file cannot be read.
+    Read,
+    /// The problem file is not a problem file's JSON.
+    Syntax,
+    /// The problem the file states is invalid (or cannot be solved).
+    Invalid,
+    /// A setting is out of range.
+    Usage,
+    /// The answer (given, or the file's key) cannot be read.
+    Answer,
+    /// No answer was given and the file has no key.
+    NoAnswer,
+}
+
+impl FailureKind {
+    /// The kind of a problem file's error.
+    pub fn of(e: &ProblemError) -> Self {
+        match e {
+            ProblemError::Read { .. } => FailureKind::Read,
+            ProblemError::Syntax { .. } => FailureKind::Syntax,
+            ProblemError::Invalid { .. } => FailureKind::Invalid,
+            ProblemError::Usage { .. } => FailureKind::Usage,
+        }
+    }
+
+    /// The stable code (as in the JSON output).
+    pub fn code(self) -> &'static str {
+        match self {
+            FailureKind::Read => "read",
+            FailureKind::Syntax => "syntax",
+            FailureKind::Invalid => "invalid",
+            FailureKind::Usage => "usage",
+            FailureKind::Answer => "answer",
+            FailureKind::NoAnswer => "no_answer",
+        }
+    }
+}
+
+impl Serialize for FailureKind {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        s.serialize_str(self.code())
+    }
 }
 
 impl Checked {
     /// 0 accepted, 1 wrong (or a reading under --strict), 2 cannot be checked.
     pub fn exit_code(&self) -> u8 {
         match &self.outcome {
-            Ok((_, _, v)) if v.accepted => 0,
+            Ok(j) if j.verdict.accepted => 0,
             Ok(_) => 1,
             Err(_) => 2,
         }
@@ -71,7 +139,11 @@ fn triple(v: [f64; 3], f: fn(f64) -> String) -> String {
 /// The text report of one check.
 pub fn text(c: &Checked, lang: Lang) -> String {
     let mut out = String::new();
-    let (answer, tolerance, v) = match &c.outcome {
+    let Judged {
+        answer,
+        tolerance,
+        verdict: v,
+    } = match &c.outcome {
         Err(f) => {
             let _ = writeln!(
                 out,
@@ -274,7 +346,11 @@ pub fn json(c: &Checked) -> CheckOut {
             out.message = f.message.clone();
             out.error = Some(f.clone());
         }
-        Ok((answer, tolerance, v)) => {
+        Ok(Judged {
+            answer,
+            tolerance,
+            verdict: v,
+        }) => {
             out.answer.scale = Some(scale_number(answer.scale));
             out.answer.values = Some(answer.values);
             out.tolerance = Some(*tolerance);

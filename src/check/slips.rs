@@ -314,30 +314,13 @@ pub fn outcomes(problem: &Problem<f64>, base: Option<&Target>) -> Vec<Outcome> {
     let root = Variant::of(problem);
     let root_solution = root.solve();
     let differs = |t: &Target, from: Option<&Target>| from.is_none_or(|f| !t.same_as(f));
-    // Singles: every slip that applies to the problem as written.
-    type Single = (Variant, Option<Solution<f64>>, Option<Target>);
-    let singles: Vec<(Slip, Option<Single>)> = Slip::ALL
+    // Singles: every slip that applies to the problem as written, in `Slip::ALL` order.
+    let singles = Slip::ALL.map(|slip| root.with(slip, root_solution.as_ref()).map(Single::solve));
+    let mut out: Vec<Outcome> = Slip::ALL
         .iter()
-        .map(|&slip| {
-            let single = root.with(slip, root_solution.as_ref()).map(|v| {
-                let s = v.solve();
-                let t = s.as_ref().and_then(|s| v.target(s));
-                (v, s, t)
-            });
-            (slip, single)
-        })
-        .collect();
-    let target_of = |slip: Slip| -> Option<&Target> {
-        singles
-            .iter()
-            .find(|(s, _)| *s == slip)
-            .and_then(|(_, x)| x.as_ref())
-            .and_then(|(_, _, t)| t.as_ref())
-    };
-    let mut out: Vec<Outcome> = singles
-        .iter()
-        .filter_map(|(slip, x)| {
-            let t = x.as_ref()?.2.as_ref()?;
+        .zip(&singles)
+        .filter_map(|(slip, single)| {
+            let t = single.as_ref()?.target.as_ref()?;
             differs(t, base).then(|| Outcome {
                 slips: vec![*slip],
                 target: *t,
@@ -346,21 +329,22 @@ pub fn outcomes(problem: &Problem<f64>, base: Option<&Target>) -> Vec<Outcome> {
         .collect();
     // Pairs: the first slip's variant, then the second on top of it (which may apply only
     // then: L reversed needs the P that the reversed ray finds).
-    for (i, (a, x)) in singles.iter().enumerate() {
-        let Some((va, sa, ta)) = x else {
+    for (i, (a, single)) in Slip::ALL.iter().zip(&singles).enumerate() {
+        let Some(sa) = single else {
             continue;
         };
-        for (b, _) in &singles[i + 1..] {
+        for (b, single_b) in Slip::ALL.iter().zip(&singles).skip(i + 1) {
             if a.group().is_some() && a.group() == b.group() {
                 continue;
             }
-            let Some(v) = va.with(*b, sa.as_ref()) else {
+            let Some(v) = sa.variant.with(*b, sa.solution.as_ref()) else {
                 continue;
             };
             let Some(t) = v.solve().and_then(|s| v.target(&s)) else {
                 continue;
             };
-            if differs(&t, base) && differs(&t, ta.as_ref()) && differs(&t, target_of(*b)) {
+            let target_b = single_b.as_ref().and_then(|s| s.target.as_ref());
+            if differs(&t, base) && differs(&t, sa.target.as_ref()) && differs(&t, target_b) {
                 out.push(Outcome {
                     slips: vec![*a, *b],
                     target: t,
@@ -369,6 +353,25 @@ pub fn outcomes(problem: &Problem<f64>, base: Option<&Target>) -> Vec<Outcome> {
         }
     }
     out
+}
+
+/// One slip made on the problem as written: the variant, its solution and the colour it gives.
+struct Single {
+    variant: Variant,
+    solution: Option<Solution<f64>>,
+    target: Option<Target>,
+}
+
+impl Single {
+    fn solve(variant: Variant) -> Self {
+        let solution = variant.solve();
+        let target = solution.as_ref().and_then(|s| variant.target(s));
+        Single {
+            variant,
+            solution,
+            target,
+        }
+    }
 }
 
 impl Target {

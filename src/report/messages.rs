@@ -15,7 +15,9 @@ use super::lang::Lang;
 use super::number::num;
 use crate::core::{LightStatus, Real, SpecularStatus};
 use crate::problem::Problem;
-use crate::solve::{Finding, FindingCode, Omission, OmissionReason, ReadingCode, Side, Term};
+use crate::solve::{
+    ConeEdge, Finding, FindingData, GateDecision, Omission, OmissionReason, ReadingCode, Side, Term,
+};
 
 /// Chooses the text of a language; both texts must be given.
 pub fn pick<T>(lang: Lang, en: T, pt: T) -> T {
@@ -176,55 +178,54 @@ pub fn finding<R: Real>(problem: &Problem<R>, f: &Finding) -> String {
 
 /// The sentence for a finding.
 pub fn finding_in<R: Real>(problem: &Problem<R>, f: &Finding, lang: Lang) -> String {
-    let v = |k: &str| f.values.get(k).copied().map_or_else(String::new, num);
     let p = R::NAME;
     let light = f
         .light
         .map(|i| light_name_in(problem, i, lang))
         .unwrap_or_default();
-    match f.code {
-        FindingCode::HitBehindOrigin => pick(
+    match f.data {
+        FindingData::HitBehindOrigin { t } => pick(
             lang,
             format!(
                 "the ray meets the surface only behind its origin, at t = {} (a hit needs t > 0): \
                  as written, the ray hits nothing. The point where its line meets the surface is \
                  shown below as a separate reading",
-                v("t")
+                num(t)
             ),
             format!(
                 "o raio encontra a superfície apenas atrás de sua origem, em t = {} (uma \
                  interseção exige t > 0): como escrito, o raio não atinge nada. O ponto onde a \
                  reta do raio encontra a superfície é mostrado abaixo como outra leitura",
-                v("t")
+                num(t)
             ),
         ),
-        FindingCode::NoIntersection => pick(
+        FindingData::NoIntersection => pick(
             lang,
             "the ray's line meets no surface: nothing to shade",
             "a reta do raio não encontra nenhuma superfície: nada a iluminar",
         )
         .into(),
-        FindingCode::RayStartsOnSurface => pick(
+        FindingData::RayStartsOnSurface => pick(
             lang,
             "the ray starts on a surface (t = 0), which is not a hit (a hit needs t > 0)",
             "o raio parte de uma superfície (t = 0), o que não é uma interseção (uma interseção \
              exige t > 0)",
         )
         .into(),
-        FindingCode::LightBehindSurface => pick(
+        FindingData::LightBehindSurface { cos_theta } => pick(
             lang,
             format!(
                 "{light} is on the back side of the surface: cos θ = −N·L = {} < 0, so it adds \
                  no diffuse and no specular light",
-                v("cos_theta")
+                num(cos_theta)
             ),
             format!(
                 "a fonte de luz {light} está do lado de trás da superfície: cos θ = −N·L = {} < \
                  0, logo não contribui com reflexão difusa nem com reflexão especular",
-                v("cos_theta")
+                num(cos_theta)
             ),
         ),
-        FindingCode::LightInTangentPlane => pick(
+        FindingData::LightInTangentPlane => pick(
             lang,
             format!("{light} lies in the surface's tangent plane (cos θ = 0): it adds nothing"),
             format!(
@@ -232,48 +233,51 @@ pub fn finding_in<R: Real>(problem: &Problem<R>, f: &Finding, lang: Lang) -> Str
                  contribui com nada"
             ),
         ),
-        FindingCode::LightOutsideCone => pick(
+        FindingData::LightOutsideCone { cos_gamma, cos_psi } => pick(
             lang,
             format!(
                 "the point is outside the cone of {light}: cos ψ = {} < cos γ = {} (ψ > γ), so \
                  I_l = 0 (Eq. 4.4)",
-                v("cos_psi"),
-                v("cos_gamma")
+                num(cos_psi),
+                num(cos_gamma)
             ),
             format!(
                 "o ponto está fora do cone da fonte de luz {light}: cos ψ = {} < cos γ = {} \
                  (ψ > γ), logo I_l = 0 (Eq. 4.4)",
-                v("cos_psi"),
-                v("cos_gamma")
+                num(cos_psi),
+                num(cos_gamma)
             ),
         ),
-        FindingCode::LightOnConeEdge => pick(
+        FindingData::LightOnConeEdge(ConeEdge {
+            error_bound_deg, ..
+        }) => pick(
             lang,
             format!(
                 "the point is on the edge of the cone of {light} (ψ = γ to within the rounding \
                  of their computation in {p}, ±{}°): it counts as lit; exactly on the edge and \
                  a hair inside or outside cannot be told apart in this precision",
-                v("error_bound_deg")
+                num(error_bound_deg)
             ),
             format!(
                 "o ponto está sobre uma geratriz do cone da fonte de luz {light} (ψ = γ a menos \
                  do arredondamento do seu cálculo em {p}, ±{}°): conta como iluminado; nesta \
                  precisão não se distingue se está exatamente sobre a geratriz ou ligeiramente \
                  dentro ou fora do cone",
-                v("error_bound_deg")
+                num(error_bound_deg)
             ),
         ),
-        FindingCode::GateUndecidable => {
-            let decision = f.values.get("decision").copied().unwrap_or(0.0);
-            let (en, pt) = if decision > 0.0 {
-                ("lit", "iluminando a superfície")
-            } else if decision < 0.0 {
-                ("behind the surface", "atrás da superfície")
-            } else {
-                (
+        FindingData::GateUndecidable {
+            cos_theta,
+            decision,
+            error_bound,
+        } => {
+            let (en, pt) = match decision {
+                GateDecision::Lit => ("lit", "iluminando a superfície"),
+                GateDecision::Behind => ("behind the surface", "atrás da superfície"),
+                GateDecision::InTangentPlane => (
                     "0, in the tangent plane (no diffuse or specular term)",
                     "0, no plano tangente (sem reflexão difusa nem especular)",
-                )
+                ),
             };
             let (fix_en, fix_pt) = if p == "f32" {
                 (
@@ -291,9 +295,9 @@ pub fn finding_in<R: Real>(problem: &Problem<R>, f: &Finding, lang: Lang) -> Str
                      cannot be decided in this precision, and it is counted as {en}. The diffuse \
                      term changes by at most O_d·I_l·{} either way, but the specular term is all \
                      or nothing: {fix_en}move the light further from the tangent plane",
-                    v("cos_theta"),
-                    v("error_bound"),
-                    v("error_bound")
+                    num(cos_theta),
+                    num(error_bound),
+                    num(error_bound)
                 ),
                 format!(
                     "cos θ = {} para a fonte de luz {light} está dentro do erro de \
@@ -302,14 +306,18 @@ pub fn finding_in<R: Real>(problem: &Problem<R>, f: &Finding, lang: Lang) -> Str
                      conta como {pt}. A reflexão difusa muda no máximo O_d·I_l·{} de um modo ou \
                      de outro, mas a reflexão especular é tudo ou nada: {fix_pt}afaste a fonte \
                      de luz do plano tangente",
-                    v("cos_theta"),
-                    v("error_bound"),
-                    v("error_bound")
+                    num(cos_theta),
+                    num(error_bound),
+                    num(error_bound)
                 ),
             )
         }
-        FindingCode::ConeEdgeUndecidable => {
-            let inside = f.values.get("psi_deg") <= f.values.get("gamma_deg");
+        FindingData::ConeEdgeUndecidable(ConeEdge {
+            error_bound_deg,
+            gamma_deg,
+            psi_deg,
+        }) => {
+            let inside = psi_deg <= gamma_deg;
             let (en, pt) = if inside {
                 ("inside", "dentro")
             } else {
@@ -322,41 +330,41 @@ pub fn finding_in<R: Real>(problem: &Problem<R>, f: &Finding, lang: Lang) -> Str
                      hit point and of their computation in {p} (±{}°): whether the point is \
                      inside or outside the cone cannot be decided in this precision, and it is \
                      taken as {en}",
-                    v("psi_deg"),
-                    v("gamma_deg"),
-                    v("error_bound_deg")
+                    num(psi_deg),
+                    num(gamma_deg),
+                    num(error_bound_deg)
                 ),
                 format!(
                     "ψ = {}° e γ = {}° da fonte de luz {light} diferem menos que o erro de \
                      arredondamento do ponto de interseção e do seu cálculo em {p} (±{}°): \
                      nesta precisão não se pode decidir se o ponto está dentro ou fora do cone, \
                      e ele é tomado como {pt}",
-                    v("psi_deg"),
-                    v("gamma_deg"),
-                    v("error_bound_deg")
+                    num(psi_deg),
+                    num(gamma_deg),
+                    num(error_bound_deg)
                 ),
             )
         }
-        FindingCode::ViewerBehindSurface => pick(
+        FindingData::ViewerBehindSurface { n_dot_v } => pick(
             lang,
             format!(
                 "the viewer is on the back side of the surface (N·V = {} > 0): it sees the side \
                  the normal points away from",
-                v("n_dot_v")
+                num(n_dot_v)
             ),
             format!(
                 "o observador está do lado de trás da superfície (N·V = {} > 0): vê o lado \
                  oposto ao da normal",
-                v("n_dot_v")
+                num(n_dot_v)
             ),
         ),
-        FindingCode::ViewerInTangentPlane => pick(
+        FindingData::ViewerInTangentPlane => pick(
             lang,
             "the viewer lies in the surface's tangent plane (N·V = 0)",
             "o observador está no plano tangente à superfície (N·V = 0)",
         )
         .into(),
-        FindingCode::ViewerNotAtRayOrigin => pick(
+        FindingData::ViewerNotAtRayOrigin => pick(
             lang,
             "the viewer is not at the ray's origin: V is taken from the viewer's position, as \
              the problem states",
@@ -364,7 +372,7 @@ pub fn finding_in<R: Real>(problem: &Problem<R>, f: &Finding, lang: Lang) -> Str
              observador, como diz o problema",
         )
         .into(),
-        FindingCode::NormalTurnedToFaceRay => pick(
+        FindingData::NormalTurnedToFaceRay => pick(
             lang,
             "the surface's normal was reversed to face the incoming ray (the ray hits the \
              surface's back side)",
@@ -372,18 +380,18 @@ pub fn finding_in<R: Real>(problem: &Problem<R>, f: &Finding, lang: Lang) -> Str
              raio atinge o lado de trás da superfície)",
         )
         .into(),
-        FindingCode::NormalNormalized => pick(
+        FindingData::NormalNormalized { length } => pick(
             lang,
             format!(
                 "the normal given has length {}, not 1: it is used normalised",
-                v("length")
+                num(length)
             ),
             format!(
                 "a normal dada tem comprimento {}, não 1: é usada normalizada",
-                v("length")
+                num(length)
             ),
         ),
-        FindingCode::DirectionNormalized => {
+        FindingData::DirectionNormalized { length } => {
             let what = match (light.is_empty(), lang) {
                 (true, Lang::En) => "the ray's direction".to_owned(),
                 (true, Lang::Pt) => "a direção do raio".to_owned(),
@@ -394,15 +402,15 @@ pub fn finding_in<R: Real>(problem: &Problem<R>, f: &Finding, lang: Lang) -> Str
                 lang,
                 format!(
                     "{what} has length {}, not 1: it is used normalised",
-                    v("length")
+                    num(length)
                 ),
                 format!(
                     "{what} tem comprimento {}, não 1: é usada normalizada",
-                    v("length")
+                    num(length)
                 ),
             )
         }
-        FindingCode::LiteralDiffers => pick(
+        FindingData::LiteralDiffers => pick(
             lang,
             "Eq. 4.16 applied literally (negative cosines included, no gating) gives a \
              different colour; both are shown",
@@ -410,7 +418,7 @@ pub fn finding_in<R: Real>(problem: &Problem<R>, f: &Finding, lang: Lang) -> Str
              dá outra cor; as duas são mostradas",
         )
         .into(),
-        FindingCode::Clamped => pick(
+        FindingData::Clamped => pick(
             lang,
             "the colour exceeds 1 in some channel: it is clamped to [0, 1] for display",
             "a cor excede 1 em algum canal: é limitada a [0, 1] para exibição",

@@ -1,8 +1,6 @@
 //! Findings: what a student should be told about a problem beyond its numbers. Each finding is
-//! structured (a code, the light it concerns, named values) so that scripts can rely on it and
-//! the report layer words it, in whatever language.
-
-use std::collections::BTreeMap;
+//! structured (what it is, with the numbers that back it, and the light it concerns) so that
+//! scripts can rely on it and the report layer words it, in whatever language.
 
 use super::rounding::{cone_bound, cos_theta_bound, exactly_zero, HitError};
 use super::{Evaluation, Side, Solution};
@@ -11,34 +9,62 @@ use crate::core::{LightKind, LightStatus, LightTerm, Real, Vector, V3};
 use crate::geometry::Shape;
 use crate::problem::{GivenVector, Problem, Target};
 
-/// What kind of finding.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, serde::Serialize)]
-#[serde(rename_all = "snake_case")]
-pub enum FindingCode {
+/// One finding. In the JSON: its `code`, the `light` it concerns (when it concerns one), and
+/// its numbers as `values`, by name (absent when it has none).
+#[derive(Clone, Debug, PartialEq, serde::Serialize)]
+pub struct Finding {
+    /// What was found, with its numbers.
+    #[serde(flatten)]
+    pub data: FindingData,
+    /// The index in the file's `lights` array of the light it concerns.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub light: Option<usize>,
+}
+
+impl Finding {
+    fn new(data: FindingData) -> Self {
+        Finding { data, light: None }
+    }
+    fn light(mut self, i: usize) -> Self {
+        self.light = Some(i);
+        self
+    }
+}
+
+/// What kind of finding, each with the numbers that back it (the JSON's `values`, named as the
+/// fields are).
+#[derive(Clone, Copy, Debug, PartialEq, serde::Serialize)]
+#[serde(rename_all = "snake_case", tag = "code", content = "values")]
+pub enum FindingData {
     /// The ray meets a surface only behind its origin (t ≤ 0): no hit.
-    HitBehindOrigin,
+    HitBehindOrigin { t: f64 },
     /// The ray's line meets no surface at all.
     NoIntersection,
     /// The ray starts on a surface (t = 0), which is not a hit (t > 0).
     RayStartsOnSurface,
     /// A light is on the back side of the surface (cos θ < 0).
-    LightBehindSurface,
+    LightBehindSurface { cos_theta: f64 },
     /// A light lies in the tangent plane (cos θ = 0).
     LightInTangentPlane,
-    /// The point is outside a spot light's cone.
-    LightOutsideCone,
+    /// The point is outside a spot light's cone: cos ψ < cos γ.
+    LightOutsideCone { cos_gamma: f64, cos_psi: f64 },
     /// The point is on a spot light's cone edge to within the rounding of ψ and γ (lit).
-    LightOnConeEdge,
+    LightOnConeEdge(ConeEdge),
     /// |cos θ| is within the rounding error of its own computation (0 included, unless it is
     /// exactly 0 for the given numbers): the gate's decision, lit or not, is not reliable in
-    /// this precision. Values: `cos_theta`, `error_bound`.
-    GateUndecidable,
+    /// this precision.
+    GateUndecidable {
+        cos_theta: f64,
+        /// How the core decided.
+        decision: GateDecision,
+        /// The bound on the rounding error of cos θ.
+        error_bound: f64,
+    },
     /// A ray's hit point and ψ − γ are rounded by more than ψ is from γ: inside or outside the
-    /// cone cannot be decided in this precision. Values: `psi_deg`, `gamma_deg`,
-    /// `error_bound_deg`.
-    ConeEdgeUndecidable,
-    /// The viewer sees the back side of the surface.
-    ViewerBehindSurface,
+    /// cone cannot be decided in this precision.
+    ConeEdgeUndecidable(ConeEdge),
+    /// The viewer sees the back side of the surface (N·V > 0).
+    ViewerBehindSurface { n_dot_v: f64 },
     /// The viewer lies in the surface's tangent plane.
     ViewerInTangentPlane,
     /// The viewer is not the ray's origin: V comes from the viewer, as the problem states.
@@ -46,42 +72,49 @@ pub enum FindingCode {
     /// The normal in the hit was reversed to face the incoming ray.
     NormalTurnedToFaceRay,
     /// A given normal was not of unit length and was normalised.
-    NormalNormalized,
+    NormalNormalized { length: f64 },
     /// A given direction (ray, light, spot axis) was not of unit length and was normalised.
-    DirectionNormalized,
+    DirectionNormalized { length: f64 },
     /// Eq. 4.16 taken literally, without gating, gives another colour.
     LiteralDiffers,
     /// The colour exceeds 1 in some channel and is clamped for display.
     Clamped,
 }
 
-/// One finding.
-#[derive(Clone, Debug, PartialEq, serde::Serialize)]
-pub struct Finding {
-    pub code: FindingCode,
-    /// The index in the file's `lights` array of the light it concerns.
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub light: Option<usize>,
-    /// Named values that back the finding (cos θ, t, a length, …).
-    #[serde(skip_serializing_if = "BTreeMap::is_empty")]
-    pub values: BTreeMap<&'static str, f64>,
+/// ψ and γ of a spot light that lie within rounding of each other (Eq. 4.4), in degrees.
+#[derive(Clone, Copy, Debug, PartialEq, serde::Serialize)]
+pub struct ConeEdge {
+    /// The bound on the rounding of ψ − γ (a ray's hit point's error included).
+    pub error_bound_deg: f64,
+    pub gamma_deg: f64,
+    pub psi_deg: f64,
 }
 
-impl Finding {
-    fn new(code: FindingCode) -> Self {
-        Finding {
-            code,
-            light: None,
-            values: BTreeMap::new(),
+/// How the core decided a diffuse gate (cos θ > 0, Eq. 4.7) that rounding leaves undecided.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum GateDecision {
+    /// cos θ > 0: the light lights the surface.
+    Lit,
+    /// cos θ counted as 0: the light is in the tangent plane.
+    InTangentPlane,
+    /// cos θ < 0: the light is behind the surface.
+    Behind,
+}
+
+impl GateDecision {
+    /// As the JSON writes it: 1 lit, 0 in the tangent plane, −1 behind.
+    pub fn value(self) -> f64 {
+        match self {
+            GateDecision::Lit => 1.0,
+            GateDecision::InTangentPlane => 0.0,
+            GateDecision::Behind => -1.0,
         }
     }
-    fn light(mut self, i: usize) -> Self {
-        self.light = Some(i);
-        self
-    }
-    fn value<R: Real>(mut self, name: &'static str, x: R) -> Self {
-        self.values.insert(name, x.to_f64());
-        self
+}
+
+impl serde::Serialize for GateDecision {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        s.serialize_f64(self.value())
     }
 }
 
@@ -100,12 +133,14 @@ pub(super) fn find<R: Real>(
 ) -> Vec<Finding> {
     let mut out = Vec::new();
     if starts_on_surface && s.evaluation.is_none() {
-        out.push(Finding::new(FindingCode::RayStartsOnSurface));
+        out.push(Finding::new(FindingData::RayStartsOnSurface));
     }
     if let Some(x) = &s.intersection {
         match (x.t, x.in_front) {
-            (Some(t), false) => out.push(Finding::new(FindingCode::HitBehindOrigin).value("t", t)),
-            (None, _) => out.push(Finding::new(FindingCode::NoIntersection)),
+            (Some(t), false) => {
+                out.push(Finding::new(FindingData::HitBehindOrigin { t: t.to_f64() }))
+            }
+            (None, _) => out.push(Finding::new(FindingData::NoIntersection)),
             _ => {}
         }
     }
@@ -113,32 +148,34 @@ pub(super) fn find<R: Real>(
         for (t, info) in e.lights.iter().zip(&problem.light_info) {
             let f = |code| Finding::new(code).light(info.file_index);
             match t.status {
-                LightStatus::BehindSurface => {
-                    out.push(f(FindingCode::LightBehindSurface).value("cos_theta", t.cos_theta))
-                }
-                LightStatus::InTangentPlane => out.push(f(FindingCode::LightInTangentPlane)),
+                LightStatus::BehindSurface => out.push(f(FindingData::LightBehindSurface {
+                    cos_theta: t.cos_theta.to_f64(),
+                })),
+                LightStatus::InTangentPlane => out.push(f(FindingData::LightInTangentPlane)),
                 LightStatus::OutsideCone => {
                     let c = t.arrival.cone.expect("an outside-cone light is a spot");
-                    out.push(
-                        f(FindingCode::LightOutsideCone)
-                            .value("cos_psi", c.cos_psi)
-                            .value("cos_gamma", c.cos_gamma),
-                    )
+                    out.push(f(FindingData::LightOutsideCone {
+                        cos_gamma: c.cos_gamma.to_f64(),
+                        cos_psi: c.cos_psi.to_f64(),
+                    }))
                 }
                 _ => {}
             }
-            out.extend(gates(problem, s, e, t).into_iter().map(|g| Finding {
-                light: Some(info.file_index),
-                ..g
-            }));
+            out.extend(
+                gates(problem, s, e, t)
+                    .into_iter()
+                    .map(|g| g.light(info.file_index)),
+            );
         }
         if let Some(v) = &e.viewer {
             match (v.side, v.n_dot_v) {
                 (Some(Side::Back), Some(d)) => {
-                    out.push(Finding::new(FindingCode::ViewerBehindSurface).value("n_dot_v", d))
+                    out.push(Finding::new(FindingData::ViewerBehindSurface {
+                        n_dot_v: d.to_f64(),
+                    }))
                 }
                 (Some(Side::InPlane), _) => {
-                    out.push(Finding::new(FindingCode::ViewerInTangentPlane))
+                    out.push(Finding::new(FindingData::ViewerInTangentPlane))
                 }
                 _ => {}
             }
@@ -146,12 +183,12 @@ pub(super) fn find<R: Real>(
     }
     if let (Some(x), Some(e)) = (&s.intersection, query.viewer) {
         if e != x.origin {
-            out.push(Finding::new(FindingCode::ViewerNotAtRayOrigin));
+            out.push(Finding::new(FindingData::ViewerNotAtRayOrigin));
         }
     }
     if let Some(n) = s.evaluation.as_ref().and_then(|e| e.normal) {
         if n.reversed {
-            out.push(Finding::new(FindingCode::NormalTurnedToFaceRay));
+            out.push(Finding::new(FindingData::NormalTurnedToFaceRay));
         }
     }
     // Normals and directions that were normalised.
@@ -164,30 +201,31 @@ pub(super) fn find<R: Real>(
             .map(|n| n.length),
     };
     if let Some(l) = normal_length.filter(|&l| !is_unit_length(l)) {
-        out.push(Finding::new(FindingCode::NormalNormalized).value("length", l));
+        out.push(Finding::new(FindingData::NormalNormalized {
+            length: l.to_f64(),
+        }));
     }
     if let Some(direction) = query.ray {
         if !is_unit_length(direction.length) {
-            out.push(
-                Finding::new(FindingCode::DirectionNormalized).value("length", direction.length),
-            );
+            out.push(Finding::new(FindingData::DirectionNormalized {
+                length: direction.length.to_f64(),
+            }));
         }
     }
     for info in &problem.light_info {
         if let Some(l) = info.direction_length {
             out.push(
-                Finding::new(FindingCode::DirectionNormalized)
-                    .light(info.file_index)
-                    .value("length", l),
+                Finding::new(FindingData::DirectionNormalized { length: l.to_f64() })
+                    .light(info.file_index),
             );
         }
     }
     if let Some(e) = &s.evaluation {
         if e.shade.literal.is_some_and(|l| l != e.shade.color) {
-            out.push(Finding::new(FindingCode::LiteralDiffers));
+            out.push(Finding::new(FindingData::LiteralDiffers));
         }
         if e.shade.color.max_element() > R::ONE {
-            out.push(Finding::new(FindingCode::Clamped));
+            out.push(Finding::new(FindingData::Clamped));
         }
     }
     out
@@ -229,18 +267,15 @@ fn gates<R: Real>(
         let bound = cone_bound(tol, d, hit);
         let psi = c.psi_deg.to_f64().to_radians();
         let near = (psi - cone.gamma.to_f64()).abs() <= bound;
-        let code = if c.on_edge {
-            Some(FindingCode::LightOnConeEdge)
-        } else {
-            near.then_some(FindingCode::ConeEdgeUndecidable)
+        let edge = ConeEdge {
+            error_bound_deg: bound.to_degrees(),
+            gamma_deg: cone.angle_deg.to_f64(),
+            psi_deg: c.psi_deg.to_f64(),
         };
-        if let Some(code) = code {
-            out.push(
-                Finding::new(code)
-                    .value("psi_deg", c.psi_deg)
-                    .value("gamma_deg", cone.angle_deg)
-                    .value("error_bound_deg", bound.to_degrees()),
-            );
+        if c.on_edge {
+            out.push(Finding::new(FindingData::LightOnConeEdge(edge)));
+        } else if near {
+            out.push(Finding::new(FindingData::ConeEdgeUndecidable(edge)));
         }
     }
     // The diffuse gate, cos θ > 0 (Eq. 4.7).
@@ -253,30 +288,25 @@ fn gates<R: Real>(
             // Exactly in the tangent plane for the numbers as given (N·(P − P_l) = 0, or
             // N·D_l = 0 with D_l as used), or only to within rounding? A hit point is computed:
             // its exact position is not at hand, so its zero is never certain.
-            let (x, from) = match light.position() {
-                Some(p_l) => (p, Some(p_l)),
-                None => (a.l, None),
+            let zero = match light.position() {
+                Some(p_l) => exactly_zero::<R>(normal.given, p, Some(p_l)),
+                None => exactly_zero::<R>(normal.given, a.l, None),
             };
-            let exact = hit.is_none() && exactly_zero::<R>(normal.given, x, from) == Some(true);
+            let exact = hit.is_none() && zero == Some(true);
             !exact
         } else {
             c.abs().to_f64() <= bound
         };
         if undecidable {
-            out.push(
-                Finding::new(FindingCode::GateUndecidable)
-                    .value("cos_theta", c)
-                    .value("error_bound", bound)
-                    // How the core decided: 1 lit, 0 counted as in the tangent plane, −1 behind.
-                    .value(
-                        "decision",
-                        match t.status {
-                            LightStatus::InTangentPlane => 0.0,
-                            LightStatus::BehindSurface => -1.0,
-                            _ => 1.0,
-                        },
-                    ),
-            );
+            out.push(Finding::new(FindingData::GateUndecidable {
+                cos_theta: c.to_f64(),
+                decision: match t.status {
+                    LightStatus::InTangentPlane => GateDecision::InTangentPlane,
+                    LightStatus::BehindSurface => GateDecision::Behind,
+                    _ => GateDecision::Lit,
+                },
+                error_bound: bound,
+            }));
         }
     }
     out

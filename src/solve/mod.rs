@@ -15,7 +15,7 @@ use crate::geometry::{gamma, Aggregate, Ray, ShadowRays, SurfaceHit};
 use crate::problem::validate::{light_label, show};
 use crate::problem::{GivenVector, Invalid, NamedMaterial, Problem, SurfaceSource, Target};
 
-pub use findings::{Finding, FindingCode};
+pub use findings::{ConeEdge, Finding, FindingData, GateDecision};
 
 /// Everything the solver found out about one problem.
 #[derive(Clone, Debug)]
