@@ -1,7 +1,8 @@
 //! The problem format: reading a JSON problem file, validating it, and the validated model.
 //!
-//! A problem names only what its question needs (DESIGN.md): the parser rejects unknown fields,
-//! and validation checks that every term the question can compute has its inputs.
+//! A problem names only what its question needs (README, "The problem format"): the parser
+//! rejects unknown fields, and validation checks that every term the question can compute has
+//! its inputs.
 
 pub mod error;
 pub mod format;
