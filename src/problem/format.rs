@@ -2,6 +2,9 @@
 //! unknown fields rejected everywhere. [`super::validate`] turns them into the core's types.
 //!
 //! The same types derive the JSON Schema that `phong schema` prints, so the two cannot drift.
+//! Lights and surfaces are declared kind by kind, each family in one `kinds!` table: the
+//! fields (parsed type, schema type and description, what each gives), then each kind's `type`
+//! word and the fields it requires; the parse struct, the schema and the checks follow from it.
 
 use std::collections::BTreeMap;
 use std::fmt;
@@ -10,6 +13,8 @@ use std::marker::PhantomData;
 use schemars::JsonSchema;
 use serde::de::{self, MapAccess, SeqAccess, Visitor};
 use serde::{Deserialize, Deserializer};
+
+use super::kinds::kinds;
 
 /// An RGB colour or a 3-vector, `[x, y, z]`.
 pub type Triple = [f64; 3];
@@ -173,236 +178,79 @@ pub struct RaySpec {
     pub direction: Triple,
 }
 
-/// A surface of a ray problem, as read: `type` and the fields of that type. Parsed flat (not as
-/// a tagged enum) so that an error inside it names its exact field; [`SurfaceType::fields`]
-/// says which fields each type takes, and validation enforces it.
-#[derive(Debug, Clone, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct SurfaceSpec {
-    #[serde(rename = "type")]
-    pub kind: SurfaceType,
-    #[serde(default)]
-    pub point: Option<Triple>,
-    #[serde(default)]
-    pub normal: Option<Triple>,
-    #[serde(default)]
-    pub center: Option<Triple>,
-    #[serde(default)]
-    pub radius: Option<f64>,
-    #[serde(default)]
-    pub vertices: Option<[Triple; 3]>,
-    #[serde(default)]
-    pub file: Option<String>,
-    #[serde(default)]
-    pub material: Option<MaterialRef>,
-}
-
-/// The kinds of surface.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, JsonSchema)]
-#[serde(rename_all = "snake_case")]
-pub enum SurfaceType {
-    Plane,
-    Sphere,
-    Triangle,
-    Mesh,
-}
-
-impl SurfaceType {
-    pub fn name(self) -> &'static str {
-        match self {
-            SurfaceType::Plane => "plane",
-            SurfaceType::Sphere => "sphere",
-            SurfaceType::Triangle => "triangle",
-            SurfaceType::Mesh => "mesh",
-        }
+// `field: parsed type [as schema type] => what it gives,` (the schema's description, units and
+// bounds above it), then `Kind "word" [the fields it requires],`: see `problem/kinds.rs`.
+kinds! {
+    /// A surface of a ray problem, as read: `type` and the fields of that type, parsed flat (see
+    /// [`super::kinds`]); [`SurfaceType::fields`] says which fields each type takes, and
+    /// validation enforces it.
+    pub struct SurfaceSpec;
+    /// The kinds of surface.
+    pub enum SurfaceType;
+    /// A surface of a ray problem: `type` selects the kind.
+    schema Surface in surface_schema;
+    optional {}
+    fields {
+        point: Triple => "a point of the plane",
+        normal: Triple => "the plane's normal",
+        center: Triple => "the sphere",
+        radius: f64 => "the sphere",
+        vertices: [Triple; 3] => "the triangle's three corners",
+        file: String => "the mesh's Wavefront OBJ file",
+        material: MaterialRef => "the material at the point",
     }
-
-    /// The fields this type takes (besides `type`); all are required.
-    pub fn fields(self) -> &'static [&'static str] {
-        match self {
-            SurfaceType::Plane => &["point", "normal", "material"],
-            SurfaceType::Sphere => &["center", "radius", "material"],
-            SurfaceType::Triangle => &["vertices", "material"],
-            SurfaceType::Mesh => &["file", "material"],
-        }
+    kinds {
+        /// The plane through `point` with normal `normal` (used as given, normalised).
+        Plane "plane" [point, normal, material],
+        /// The sphere with centre `center` and radius `radius` > 0; its normal points outward.
+        Sphere "sphere" [center, radius, material],
+        /// The triangle with corners `vertices` (not all on one line); its normal is
+        /// (v1 − v0) × (v2 − v0), turned to face the incoming ray.
+        Triangle "triangle" [vertices, material],
+        /// The triangles of a Wavefront OBJ file (`file`, relative to this file's folder), all of
+        /// one material; polygons are split into triangles.
+        Mesh "mesh" [file, material],
     }
 }
 
-impl SurfaceSpec {
-    /// The names of the fields present in the file (besides `type`).
-    pub fn present(&self) -> Vec<&'static str> {
-        let fields = [
-            ("point", self.point.is_some()),
-            ("normal", self.normal.is_some()),
-            ("center", self.center.is_some()),
-            ("radius", self.radius.is_some()),
-            ("vertices", self.vertices.is_some()),
-            ("file", self.file.is_some()),
-            ("material", self.material.is_some()),
-        ];
-        fields.iter().filter(|f| f.1).map(|f| f.0).collect()
+kinds! {
+    /// A light, as read: `type` and the fields of that type (see [`LightType::fields`]), parsed
+    /// flat so that an error names its exact field. Colours are RGB, each component ≥ 0 (values
+    /// above 1 are allowed for lights).
+    pub struct LightSpec;
+    /// The kinds of light.
+    pub enum LightType;
+    /// A light: `type` selects the kind. Colours are RGB, each component ≥ 0 (above 1 is allowed).
+    schema Light in light_schema;
+    optional {
+        name: String,
     }
-}
-
-// The schema of a surface, one shape per type, for `phong schema`. The parser reads
-// `SurfaceSpec`; a test checks that both agree on the fields of each type.
-/// A surface of a ray problem: `type` selects the kind.
-#[derive(JsonSchema)]
-#[serde(tag = "type", rename_all = "snake_case", deny_unknown_fields)]
-#[allow(dead_code)]
-enum SurfaceSchema {
-    /// The plane through `point` with normal `normal` (used as given, normalised).
-    Plane {
-        point: Triple,
-        normal: Triple,
-        material: MaterialRef,
-    },
-    /// The sphere with centre `center` and radius `radius` > 0; its normal points outward.
-    Sphere {
-        center: Triple,
-        radius: f64,
-        material: MaterialRef,
-    },
-    /// The triangle with corners `vertices` (not all on one line); its normal is
-    /// (v1 − v0) × (v2 − v0), turned to face the incoming ray.
-    Triangle {
-        vertices: [Triple; 3],
-        material: MaterialRef,
-    },
-    /// The triangles of a Wavefront OBJ file (`file`, relative to this file's folder), all of
-    /// one material; polygons are split into triangles.
-    Mesh { file: String, material: MaterialRef },
-}
-
-impl JsonSchema for SurfaceSpec {
-    fn schema_name() -> std::borrow::Cow<'static, str> {
-        "Surface".into()
-    }
-    fn json_schema(g: &mut schemars::SchemaGenerator) -> schemars::Schema {
-        SurfaceSchema::json_schema(g)
-    }
-}
-
-/// A light, as read: `type` and the fields of that type (see [`LightType::fields`]), parsed
-/// flat so that an error names its exact field. Colours are RGB, each component ≥ 0 (values
-/// above 1 are allowed for lights).
-#[derive(Debug, Clone, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct LightSpec {
-    #[serde(rename = "type")]
-    pub kind: LightType,
-    #[serde(default)]
-    pub name: Option<String>,
-    #[serde(default)]
-    pub color: Option<Triple>,
-    #[serde(default)]
-    pub position: Option<Triple>,
-    #[serde(default)]
-    pub direction: Option<Triple>,
-    #[serde(default)]
-    pub axis: Option<Triple>,
-    #[serde(default)]
-    pub angle: Option<f64>,
-    #[serde(default)]
-    pub exponent: Option<f64>,
-    #[serde(default)]
-    pub falloff: Option<f64>,
-}
-
-/// The kinds of light.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, JsonSchema)]
-#[serde(rename_all = "snake_case")]
-pub enum LightType {
-    Ambient,
-    Point,
-    Directional,
-    Spot,
-}
-
-impl LightType {
-    pub fn name(self) -> &'static str {
-        match self {
-            LightType::Ambient => "ambient",
-            LightType::Point => "point",
-            LightType::Directional => "directional",
-            LightType::Spot => "spot",
-        }
-    }
-
-    /// The fields this type takes besides `type` and the optional `name`; all are required.
-    pub fn fields(self) -> &'static [&'static str] {
-        match self {
-            LightType::Ambient => &["color"],
-            LightType::Point => &["position", "color", "falloff"],
-            LightType::Directional => &["direction", "color"],
-            LightType::Spot => &["position", "axis", "angle", "exponent", "color", "falloff"],
-        }
-    }
-}
-
-impl LightSpec {
-    /// The names of the fields present in the file (besides `type` and `name`).
-    pub fn present(&self) -> Vec<&'static str> {
-        let fields = [
-            ("color", self.color.is_some()),
-            ("position", self.position.is_some()),
-            ("direction", self.direction.is_some()),
-            ("axis", self.axis.is_some()),
-            ("angle", self.angle.is_some()),
-            ("exponent", self.exponent.is_some()),
-            ("falloff", self.falloff.is_some()),
-        ];
-        fields.iter().filter(|f| f.1).map(|f| f.0).collect()
-    }
-}
-
-// The schema of a light, one shape per type, for `phong schema`. The parser reads `LightSpec`;
-// a test checks that both agree on the fields of each type.
-/// A light: `type` selects the kind. Colours are RGB, each component ≥ 0 (above 1 is allowed).
-#[derive(JsonSchema)]
-#[serde(tag = "type", rename_all = "snake_case", deny_unknown_fields)]
-#[allow(dead_code)]
-enum LightSchema {
-    /// Ambient light I_a (Eq. 4.5–4.6). Several ambient lights add up.
-    Ambient { color: Triple, name: Option<String> },
-    /// A point light at `position` with colour C_l and falloff f ∈ {0, 1, 2} (Eq. 4.1–4.3).
-    Point {
-        position: Triple,
-        color: Triple,
-        /// f: 0 none, 1 linear, 2 quadratic (Eq. 4.3).
-        #[schemars(range(min = 0, max = 2))]
-        falloff: u8,
-        name: Option<String>,
-    },
-    /// A directional light travelling along `direction` (D_l), no falloff.
-    Directional {
-        direction: Triple,
-        color: Triple,
-        name: Option<String>,
-    },
-    /// A spot light (Eq. 4.4): apex `position`, cone axis `axis` (D_l), half-angle `angle`
-    /// γ in degrees (0–90), exponent e ≥ 0 and falloff f ∈ {0, 1, 2}.
-    Spot {
-        position: Triple,
-        axis: Triple,
+    fields {
+        // Also the purpose of `color` in a scaled colour and an answer key.
+        color: Triple => "the light's colour C_l (or a coefficient's colour O)",
+        position: Triple => "P_l, for L and d (Eq. 4.1)",
+        // Also the purpose of `ray.direction`.
+        direction: Triple => "the direction of travel (L for a directional light, D for a ray)",
+        axis: Triple => "the cone's axis D_l (Eq. 4.4)",
         /// γ_l in degrees, between the axis and the cone's side, 0 ≤ γ ≤ 90.
-        angle: f64,
+        angle: f64 => "the cone's half-angle γ in degrees (Eq. 4.4)",
         /// e_l ≥ 0.
-        exponent: f64,
-        color: Triple,
+        exponent: f64 => "the spot exponent e of cos(ψ)^e (Eq. 4.4)",
+        // Read as any number, so that 1.5 is refused by validation with its reason.
         /// f: 0 none, 1 linear, 2 quadratic (Eq. 4.3).
         #[schemars(range(min = 0, max = 2))]
-        falloff: u8,
-        name: Option<String>,
-    },
-}
-
-impl JsonSchema for LightSpec {
-    fn schema_name() -> std::borrow::Cow<'static, str> {
-        "Light".into()
+        falloff: f64 as u8 => "f in I_l = C_l/d^f (Eq. 4.2, 4.3): 0 none, 1 linear, 2 quadratic",
     }
-    fn json_schema(g: &mut schemars::SchemaGenerator) -> schemars::Schema {
-        LightSchema::json_schema(g)
+    kinds {
+        /// Ambient light I_a (Eq. 4.5–4.6). Several ambient lights add up.
+        Ambient "ambient" [color],
+        /// A point light at `position` with colour C_l and falloff f ∈ {0, 1, 2} (Eq. 4.1–4.3).
+        Point "point" [position, color, falloff],
+        /// A directional light travelling along `direction` (D_l), no falloff.
+        Directional "directional" [direction, color],
+        /// A spot light (Eq. 4.4): apex `position`, cone axis `axis` (D_l), half-angle `angle`
+        /// γ in degrees (0–90), exponent e ≥ 0 and falloff f ∈ {0, 1, 2}.
+        Spot "spot" [position, axis, angle, exponent, color, falloff],
     }
 }
 
@@ -578,56 +426,6 @@ fn materials<'de, D: Deserializer<'de>>(d: D) -> Result<BTreeMap<String, Materia
         }
     }
     d.deserialize_map(V)
-}
-
-/// A `type` word, read only from a string. serde_json reads an enum from a string or an object
-/// and answers any other value (`"type": 5`) with a syntax error, "expected value", although
-/// the JSON is well formed.
-fn type_word<'de, D: Deserializer<'de>, T: Copy + 'static>(
-    d: D,
-    all: &'static [T],
-    names: &'static [&'static str],
-) -> Result<T, D::Error> {
-    struct V<T: 'static> {
-        all: &'static [T],
-        names: &'static [&'static str],
-    }
-    impl<'de, T: Copy> Visitor<'de> for V<T> {
-        type Value = T;
-        fn expecting(&self, f: &mut fmt::Formatter) -> fmt::Result {
-            let quoted: Vec<String> = self.names.iter().map(|n| format!("\"{n}\"")).collect();
-            write!(f, "one of the words {}", quoted.join(", "))
-        }
-        fn visit_str<E: de::Error>(self, s: &str) -> Result<T, E> {
-            match self.names.iter().position(|n| *n == s) {
-                Some(i) => Ok(self.all[i]),
-                None => Err(E::unknown_variant(s, self.names)),
-            }
-        }
-    }
-    d.deserialize_str(V { all, names })
-}
-
-impl<'de> Deserialize<'de> for LightType {
-    fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
-        use LightType::*;
-        type_word(
-            d,
-            &[Ambient, Point, Directional, Spot],
-            &["ambient", "point", "directional", "spot"],
-        )
-    }
-}
-
-impl<'de> Deserialize<'de> for SurfaceType {
-    fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
-        use SurfaceType::*;
-        type_word(
-            d,
-            &[Plane, Sphere, Triangle, Mesh],
-            &["plane", "sphere", "triangle", "mesh"],
-        )
-    }
 }
 
 // Hand-written deserializers for the "either" types: serde's untagged enums would replace the

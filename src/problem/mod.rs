@@ -1,10 +1,12 @@
 //! The problem format: reading a JSON problem file, validating it, and the validated model.
 //!
-//! A problem names only what its question needs (DESIGN.md): the parser rejects unknown fields,
-//! and validation checks that every term the question can compute has its inputs.
+//! A problem names only what its question needs (README, "The problem format"): the parser
+//! rejects unknown fields, and validation checks that every term the question can compute has
+//! its inputs.
 
 pub mod error;
 pub mod format;
+pub mod kinds;
 pub mod mesh;
 pub mod model;
 pub mod validate;
@@ -18,6 +20,7 @@ pub use model::{
 };
 
 use crate::core::Real;
+use format::{LightSpec, LightType, SurfaceSpec, SurfaceType};
 
 /// Reads and parses a problem file (no validation). A leading byte order mark is skipped, as
 /// editors on Windows write one.
@@ -195,31 +198,38 @@ fn syntax_fix(e: &serde_json::Error, message: &str) -> String {
     }
 }
 
-/// What a required field of the format is used for, to say why it is needed.
-pub(crate) fn field_purpose(name: &str) -> Option<&'static str> {
-    Some(match name {
-        "falloff" => "f in I_l = C_l/d^f (Eq. 4.2, 4.3): 0 none, 1 linear, 2 quadratic",
-        "position" => "P_l, for L and d (Eq. 4.1)",
-        "color" => "the light's colour C_l (or a coefficient's colour O)",
-        "direction" => "the direction of travel (L for a directional light, D for a ray)",
-        "axis" => "the cone's axis D_l (Eq. 4.4)",
-        "angle" => "the cone's half-angle γ in degrees (Eq. 4.4)",
-        "exponent" => "the spot exponent e of cos(ψ)^e (Eq. 4.4)",
-        "material" => "the material at the point",
-        "origin" => "the ray's origin",
-        "center" | "radius" => "the sphere",
-        "normal" => "the plane's normal",
-        "point" => "a point of the plane",
-        "k" => "the coefficient k of k·O",
-        "type" => {
-            "the kind: ambient, point, directional or spot (lights); plane, sphere, triangle or \
-             mesh (surfaces)"
+/// What a required field of the format is used for, to say why it is needed. A light's and a
+/// surface's fields say it in their tables ([`format::LightSpec`], [`format::SurfaceSpec`]); a
+/// name means the same wherever it appears (`direction` of a ray, `color` of a coefficient).
+pub(crate) fn field_purpose(name: &str) -> Option<String> {
+    if let Some(p) = LightSpec::purpose(name).or_else(|| SurfaceSpec::purpose(name)) {
+        return Some(p.to_owned());
+    }
+    Some(
+        match name {
+            "origin" => "the ray's origin",
+            "k" => "the coefficient k of k·O",
+            "type" => {
+                return Some(format!(
+                    "the kind: {} (lights); {} (surfaces)",
+                    or_list(LightType::WORDS),
+                    or_list(SurfaceType::WORDS)
+                ))
+            }
+            "eye" | "look_at" | "fov" | "width" | "height" => "the camera",
+            _ => return None,
         }
-        "vertices" => "the triangle's three corners",
-        "file" => "the mesh's Wavefront OBJ file",
-        "eye" | "look_at" | "fov" | "width" | "height" => "the camera",
-        _ => return None,
-    })
+        .to_owned(),
+    )
+}
+
+/// "a, b or c".
+fn or_list(words: &[&str]) -> String {
+    match words.split_last() {
+        Some((last, [])) => (*last).to_owned(),
+        Some((last, rest)) => format!("{} or {last}", rest.join(", ")),
+        None => String::new(),
+    }
 }
 
 /// Reads, parses and validates a problem file in precision `R`.
@@ -250,4 +260,33 @@ pub fn load_scene<R: Real>(path: &Path) -> Result<(Problem<R>, Camera<R>), Probl
         .at(path));
     }
     Ok((problem, camera))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_purpose_of_type_names_every_kind_of_each_table() {
+        assert_eq!(
+            field_purpose("type").as_deref(),
+            Some(
+                "the kind: ambient, point, directional or spot (lights); plane, sphere, triangle \
+                 or mesh (surfaces)"
+            )
+        );
+        assert_eq!(or_list(&["a"]), "a");
+        assert_eq!(or_list(&["a", "b", "c"]), "a, b or c");
+    }
+
+    #[test]
+    fn a_field_of_a_table_gives_its_purpose_and_others_keep_theirs() {
+        assert_eq!(
+            field_purpose("falloff").as_deref(),
+            Some("f in I_l = C_l/d^f (Eq. 4.2, 4.3): 0 none, 1 linear, 2 quadratic")
+        );
+        assert_eq!(field_purpose("radius").as_deref(), Some("the sphere"));
+        assert_eq!(field_purpose("fov").as_deref(), Some("the camera"));
+        assert_eq!(field_purpose("name"), None);
+    }
 }

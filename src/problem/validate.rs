@@ -30,7 +30,11 @@ pub fn validate_in<R: Real>(
     file: &ProblemFile,
     base: Option<&Path>,
 ) -> Result<Problem<R>, Invalid> {
-    let (lights, light_info, ambient_info) = lights::<R>(&file.lights)?;
+    let Lights {
+        lights,
+        light_info,
+        ambient_info,
+    } = lights::<R>(&file.lights)?;
     let viewer = file.viewer.map(|v| vector::<R>(v, "viewer")).transpose()?;
     let first_light = light_info
         .first()
@@ -353,7 +357,7 @@ impl<R: Real> MaterialCache<R> {
     }
 }
 
-/// "lights[1] (point)".
+/// `lights[1] (point)`.
 pub fn light_label(file_index: usize, kind: &str) -> String {
     format!("lights[{file_index}] ({kind})")
 }
@@ -410,7 +414,13 @@ impl Needs {
     }
 }
 
-type Lights<R> = (LightSet<R>, Vec<LightInfo<R>>, Vec<AmbientInfo<R>>);
+/// The lights of a file, validated: the core's set, and where each light and each ambient
+/// light came from (the fields of [`Problem`] of the same names).
+struct Lights<R: Real> {
+    lights: LightSet<R>,
+    light_info: Vec<LightInfo<R>>,
+    ambient_info: Vec<AmbientInfo<R>>,
+}
 
 fn lights<R: Real>(specs: &[LightSpec]) -> Result<Lights<R>, Invalid> {
     let mut set = LightSet {
@@ -489,7 +499,11 @@ fn lights<R: Real>(specs: &[LightSpec]) -> Result<Lights<R>, Invalid> {
             direction_length,
         });
     }
-    Ok((set, info, ambient_info))
+    Ok(Lights {
+        lights: set,
+        light_info: info,
+        ambient_info,
+    })
 }
 
 /// P_l and f of a point or spot light.

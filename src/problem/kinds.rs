@@ -1,0 +1,247 @@
+//! The kinds of light and of surface, each declared once: `kinds!` reads one table per family
+//! (the fields it has, then the kinds and which of those fields each takes) and writes every
+//! piece of the problem format that lists them, so that they cannot drift apart:
+//!
+//! - the flat parse struct (`LightSpec`): `type`, the optional fields and every field of the
+//!   table, each `Option`, parsed flat (not as a tagged enum) so that an error names its exact
+//!   field; unknown fields are rejected, and serde lists the known ones in the table's order;
+//! - the `type` enum (`LightType`): its words (`name`, `WORDS`), the fields each kind requires
+//!   (`fields`), and its reader (a string only: `type_word`);
+//! - `present` (the fields given in a file) and `purpose` (what a field gives, for the message
+//!   when it is missing);
+//! - the schema twin for `phong schema`: one object per kind, with `type` as its constant, its
+//!   fields required and the optional ones not, each field with the schema type, description and
+//!   bounds of the table.
+//!
+//! The twin is derived by schemars from generated types: one transparent newtype per field
+//! (carrying the field's schema type and attributes, so that a kind can name a field and get its
+//! schema), one struct per kind and an internally tagged enum of them. schemars writes a
+//! newtype variant of a struct that denies unknown fields exactly as it writes a struct variant.
+//!
+//! [`format`](super::format) holds the two tables; validation ([`super::validate`]) turns each
+//! kind's fields into the core's types.
+
+use std::fmt;
+
+use serde::de::{self, Visitor};
+use serde::Deserializer;
+
+/// Declares a family of kinds (lights, surfaces). The table, in this order:
+///
+/// ```text
+/// /// doc of the flat parse struct
+/// pub struct LightSpec;
+/// /// doc of the `type` enum
+/// pub enum LightType;
+/// /// doc of the schema (its description in `phong schema`)
+/// schema Light in light_schema;          // the schema's name, and a module for its types
+/// optional { name: String, }             // taken by every kind, never required
+/// fields {
+///     /// description in the schema (optional), schemars attributes (optional)
+///     #[schemars(range(min = 0, max = 2))]
+///     falloff: f64 as u8 => "what it gives, for the message when it is missing",
+///     …                                  // `as T`: the schema's type, when not the parsed one
+/// }
+/// kinds {
+///     /// doc of the kind (its description in the schema)
+///     Point "point" [position, color, falloff],   // variant, `type` word, required fields
+///     …
+/// }
+/// ```
+///
+/// A kind that names a field the table does not have does not compile.
+macro_rules! kinds {
+    (
+        $(#[$spec_doc:meta])*
+        pub struct $Spec:ident;
+        $(#[$kind_doc:meta])*
+        pub enum $Kind:ident;
+        $(#[$schema_doc:meta])*
+        schema $Schema:ident in $module:ident;
+        optional $optional:tt
+        fields {
+            $(
+                $(#[$field_meta:meta])*
+                $field:ident: $ty:ty $(as $schema_ty:ty)? => $purpose:literal,
+            )*
+        }
+        kinds {
+            $(
+                $(#[$kind_meta:meta])*
+                $Variant:ident $word:literal [$($takes:ident),* $(,)?],
+            )*
+        }
+    ) => {
+        $crate::problem::kinds::kinds!(
+            @spec [$(#[$spec_doc])*] $Spec $Kind $optional [$($field: $ty => $purpose,)*]
+        );
+
+        $(#[$kind_doc])*
+        #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+        pub enum $Kind {
+            $($(#[$kind_meta])* $Variant,)*
+        }
+
+        impl $Kind {
+            /// Every kind, in the table's order.
+            pub const ALL: &'static [$Kind] = &[$($Kind::$Variant),*];
+            /// The `type` word of each kind of [`Self::ALL`].
+            pub const WORDS: &'static [&'static str] = &[$($word),*];
+
+            /// The `type` word.
+            pub fn name(self) -> &'static str {
+                match self {
+                    $($Kind::$Variant => $word,)*
+                }
+            }
+
+            /// The fields this kind takes besides `type` and the optional ones; all are required.
+            pub fn fields(self) -> &'static [&'static str] {
+                match self {
+                    $($Kind::$Variant => &[$(stringify!($takes)),*],)*
+                }
+            }
+        }
+
+        impl<'de> ::serde::Deserialize<'de> for $Kind {
+            fn deserialize<D: ::serde::Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+                $crate::problem::kinds::type_word(d, Self::ALL, Self::WORDS)
+            }
+        }
+
+        // The schema twin (see the module's documentation); never built, only described.
+        #[allow(dead_code, non_camel_case_types)]
+        mod $module {
+            use super::*;
+
+            /// One newtype per field: its schema type, description and bounds.
+            pub mod field {
+                use super::*;
+                $(
+                    $crate::problem::kinds::kinds!(
+                        @field [$(#[$field_meta])*] $field $ty $(as $schema_ty)?
+                    );
+                )*
+            }
+
+            $($crate::problem::kinds::kinds!(@kind $Variant [$($takes),*] $optional);)*
+
+            $(#[$schema_doc])*
+            #[derive(::schemars::JsonSchema)]
+            #[serde(tag = "type", deny_unknown_fields)]
+            pub enum $Schema {
+                $(
+                    $(#[$kind_meta])*
+                    #[serde(rename = $word)]
+                    $Variant($Variant),
+                )*
+            }
+        }
+
+        impl ::schemars::JsonSchema for $Spec {
+            fn schema_name() -> ::std::borrow::Cow<'static, str> {
+                stringify!($Schema).into()
+            }
+            fn json_schema(g: &mut ::schemars::SchemaGenerator) -> ::schemars::Schema {
+                <$module::$Schema as ::schemars::JsonSchema>::json_schema(g)
+            }
+        }
+    };
+
+    // The flat parse struct, `present` and `purpose`.
+    (
+        @spec [$(#[$spec_doc:meta])*] $Spec:ident $Kind:ident
+        { $($opt:ident: $opt_ty:ty),* $(,)? }
+        [$($field:ident: $ty:ty => $purpose:literal,)*]
+    ) => {
+        $(#[$spec_doc])*
+        #[derive(Debug, Clone, ::serde::Deserialize)]
+        #[serde(deny_unknown_fields)]
+        pub struct $Spec {
+            #[serde(rename = "type")]
+            pub kind: $Kind,
+            $(
+                #[serde(default)]
+                pub $opt: Option<$opt_ty>,
+            )*
+            $(
+                #[doc = $purpose]
+                #[serde(default)]
+                pub $field: Option<$ty>,
+            )*
+        }
+
+        impl $Spec {
+            /// The names of the fields present in the file (besides `type` and the optional
+            /// ones).
+            pub fn present(&self) -> Vec<&'static str> {
+                let mut present = Vec::new();
+                $(
+                    if self.$field.is_some() {
+                        present.push(stringify!($field));
+                    }
+                )*
+                present
+            }
+
+            /// What a field of the table gives, to say why it is needed.
+            pub fn purpose(name: &str) -> Option<&'static str> {
+                match name {
+                    $(stringify!($field) => Some($purpose),)*
+                    _ => None,
+                }
+            }
+        }
+    };
+
+    // A field's newtype: the parsed type, or the schema type given after `as`.
+    (@field [$(#[$meta:meta])*] $field:ident $ty:ty) => {
+        #[derive(::schemars::JsonSchema)]
+        #[serde(transparent)]
+        #[schemars(inline)]
+        pub struct $field($(#[$meta])* pub $ty);
+    };
+    (@field [$(#[$meta:meta])*] $field:ident $ty:ty as $schema_ty:ty) => {
+        $crate::problem::kinds::kinds!(@field [$(#[$meta])*] $field $schema_ty);
+    };
+
+    // A kind's object: its required fields, then the optional ones.
+    (@kind $Variant:ident [$($takes:ident),*] { $($opt:ident: $opt_ty:ty),* $(,)? }) => {
+        #[derive(::schemars::JsonSchema)]
+        #[serde(deny_unknown_fields)]
+        pub struct $Variant {
+            $(pub $takes: field::$takes,)*
+            $(pub $opt: Option<$opt_ty>,)*
+        }
+    };
+}
+
+pub(crate) use kinds;
+
+/// A `type` word, read only from a string. serde_json reads an enum from a string or an object
+/// and answers any other value (`"type": 5`) with a syntax error, "expected value", although
+/// the JSON is well formed.
+pub(crate) fn type_word<'de, D: Deserializer<'de>, T: Copy + 'static>(
+    d: D,
+    all: &'static [T],
+    names: &'static [&'static str],
+) -> Result<T, D::Error> {
+    struct V<T: 'static> {
+        all: &'static [T],
+        names: &'static [&'static str],
+    }
+    impl<'de, T: Copy> Visitor<'de> for V<T> {
+        type Value = T;
+        fn expecting(&self, f: &mut fmt::Formatter) -> fmt::Result {
+            let quoted: Vec<String> = self.names.iter().map(|n| format!("\"{n}\"")).collect();
+            write!(f, "one of the words {}", quoted.join(", "))
+        }
+        fn visit_str<E: de::Error>(self, s: &str) -> Result<T, E> {
+            match self.names.iter().position(|n| *n == s) {
+                Some(i) => Ok(self.all[i]),
+                None => Err(E::unknown_variant(s, self.names)),
+            }
+        }
+    }
+    d.deserialize_str(V { all, names })
+}
