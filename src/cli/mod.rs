@@ -13,9 +13,8 @@ use crate::core::Real;
 use crate::generate;
 use crate::problem::{self, ProblemError};
 use crate::report;
-use crate::report::explain::Explanation;
+use crate::report::file::{error_json, explain_file, solve_json};
 use crate::report::lang::Lang;
-use crate::solve;
 use crate::tracer::output::ImageFormat;
 
 /// Solve and explain the illumination exercises of Chapter 4 (Phong's model).
@@ -1000,78 +999,6 @@ fn use_color(choice: ColorChoice, to_file: bool) -> bool {
             !to_file && !no_color && !dumb && std::io::stdout().is_terminal()
         }
     }
-}
-
-/// Solves one file and returns its explanation in `lang`, for the text, Markdown, LaTeX and
-/// HTML formats.
-pub fn explain_file(
-    path: &Path,
-    precision: Precision,
-    lang: Lang,
-) -> Result<Explanation, ProblemError> {
-    fn go<R: Real>(path: &Path, lang: Lang) -> Result<Explanation, ProblemError> {
-        let (problem, solution) = solve_file::<R>(path)?;
-        Ok(report::explain::explain(
-            &path.display().to_string(),
-            &problem,
-            &solution,
-            lang,
-        ))
-    }
-    match precision {
-        Precision::F32 => go::<f32>(path, lang),
-        Precision::F64 => go::<f64>(path, lang),
-    }
-}
-
-/// Solves one file and returns its stable JSON document.
-pub fn solve_json(path: &Path, precision: Precision) -> Result<serde_json::Value, ProblemError> {
-    fn go<R: Real>(path: &Path) -> Result<serde_json::Value, ProblemError> {
-        let (problem, solution) = solve_file::<R>(path)?;
-        let doc = report::json::document(&path.display().to_string(), &problem, &solution);
-        Ok(serde_json::to_value(doc).expect("the solution serialises"))
-    }
-    match precision {
-        Precision::F32 => go::<f32>(path),
-        Precision::F64 => go::<f64>(path),
-    }
-}
-
-/// Solves one file and returns its text report.
-pub fn solve_text(path: &Path, precision: Precision) -> Result<String, ProblemError> {
-    fn go<R: Real>(path: &Path) -> Result<String, ProblemError> {
-        let (problem, solution) = solve_file::<R>(path)?;
-        Ok(report::text::render(
-            &path.display().to_string(),
-            &problem,
-            &solution,
-        ))
-    }
-    match precision {
-        Precision::F32 => go::<f32>(path),
-        Precision::F64 => go::<f64>(path),
-    }
-}
-
-/// Loads, validates and solves one file in precision `R`.
-pub fn solve_file<R: Real>(
-    path: &Path,
-) -> Result<(problem::Problem<R>, solve::Solution<R>), ProblemError> {
-    let (_, problem) = problem::load::<R>(path)?;
-    let solution = solve::solve(&problem).map_err(|e| e.at(path))?;
-    Ok((problem, solution))
-}
-
-fn error_json(path: &Path, e: &ProblemError) -> serde_json::Value {
-    serde_json::json!({
-        "format_version": report::json::FORMAT_VERSION,
-        "file": path.display().to_string(),
-        "error": {
-            "kind": e.kind(),
-            "field": e.field(),
-            "message": e.to_string(),
-        }
-    })
 }
 
 /// Writes the output to stdout, or atomically to a file (a temporary file in the same folder,
