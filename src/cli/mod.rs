@@ -685,29 +685,23 @@ fn apply_settings<R: Real>(
     args: &TraceSettings,
     problem: &mut problem::Problem<R>,
 ) -> Result<(), ProblemError> {
-    use crate::problem::validate::{check_max_level, check_min_weight, check_samples};
-    let flag = |name: &str, (message, fix): (String, String)| ProblemError::Usage {
-        flag: name.to_owned(),
-        message,
-        fix,
+    let overrides = problem::RenderOverrides {
+        max_level: args.max_level,
+        min_weight: args.min_weight,
+        samples: args.samples,
+        shadows: args.shadows.map(|sw| sw == Switch::On),
     };
-    let s = &mut problem.render;
-    if let Some(level) = args.max_level {
-        check_max_level(level).map_err(|e| flag("--max-level", e))?;
-        s.max_level = level;
-    }
-    if let Some(w) = args.min_weight {
-        check_min_weight(w).map_err(|e| flag("--min-weight", e))?;
-        s.min_weight = R::from_f64(w);
-    }
-    if let Some(n) = args.samples {
-        check_samples(n).map_err(|e| flag("--samples", e))?;
-        s.samples = n;
-    }
-    if let Some(sw) = args.shadows {
-        s.shadows = sw == Switch::On;
-    }
+    problem.render = problem.render.with(&overrides).map_err(flag)?;
     Ok(())
+}
+
+/// A setting refused by the library, named by its field: its flag is that name in kebab case.
+fn flag(e: problem::Invalid) -> ProblemError {
+    ProblemError::Usage {
+        flag: format!("--{}", e.field.replace('_', "-")),
+        message: e.message,
+        fix: e.fix,
+    }
 }
 
 fn render_scene<R: Real>(args: &RenderArgs) -> Result<u8, ProblemError> {
@@ -842,60 +836,29 @@ fn tradeoff_command(args: &TradeoffArgs) -> u8 {
 }
 
 fn tradeoff_run(args: &TradeoffArgs) -> Result<u8, ProblemError> {
-    use crate::problem::validate::{check_max_level, check_min_weight, check_samples};
     use crate::tradeoff::{self, report, ReferenceSettings, Scenes, Sweep};
-    let flag = |name: &str, (message, fix): (String, String)| ProblemError::Usage {
-        flag: name.to_owned(),
-        message,
-        fix,
-    };
-    for (name, empty) in [
-        ("--precisions", args.precisions.is_empty()),
-        ("--levels", args.levels.is_empty()),
-        ("--min-weights", args.min_weights.is_empty()),
-        ("--samples", args.samples.is_empty()),
-    ] {
-        if empty {
-            return Err(flag(
-                name,
-                (
-                    "is empty: there is nothing to sweep".into(),
-                    "give at least one value".into(),
-                ),
-            ));
-        }
-    }
-    for &l in args.levels.iter().chain([&args.reference_level]) {
-        check_max_level(l).map_err(|e| flag("--levels", e))?;
-    }
-    for &w in &args.min_weights {
-        check_min_weight(w).map_err(|e| flag("--min-weights", e))?;
-    }
-    for &n in &args.samples {
-        check_samples(n).map_err(|e| flag("--samples", e))?;
-    }
-    check_samples(args.reference_samples).map_err(|e| flag("--reference-samples", e))?;
-    if args.runs == 0 {
-        return Err(flag(
-            "--runs",
-            (
-                "0 runs measure nothing".into(),
-                "give --runs 1 or more (3 or 5 for a steadier median)".into(),
-            ),
-        ));
-    }
+    let sweep = Sweep::new(
+        &args.precisions,
+        &args.levels,
+        &args.min_weights,
+        &args.samples,
+        args.runs,
+        ReferenceSettings {
+            max_level: args.reference_level,
+            samples: args.reference_samples,
+        },
+    )
+    .map_err(flag)?;
     if let Some(plot) = &args.plot {
         if !plot
             .extension()
             .is_some_and(|e| e.eq_ignore_ascii_case("svg"))
         {
-            return Err(flag(
-                "--plot",
-                (
-                    format!("{} does not end in .svg", plot.display()),
-                    "name the plot *.svg (it is written as SVG)".into(),
-                ),
-            ));
+            return Err(ProblemError::Usage {
+                flag: "--plot".into(),
+                message: format!("{} does not end in .svg", plot.display()),
+                fix: "name the plot *.svg (it is written as SVG)".into(),
+            });
         }
     }
     fn load<R: Real>(
@@ -916,27 +879,10 @@ fn tradeoff_run(args: &TradeoffArgs) -> Result<u8, ProblemError> {
         None
     };
     let pool = thread_pool(args.threads)?;
-    let sweep = Sweep {
-        precisions: dedup(&args.precisions),
-        levels: dedup(&args.levels),
-        min_weights: args.min_weights.clone(),
-        samples: dedup(&args.samples),
-        runs: args.runs,
-    };
-    let reference = ReferenceSettings {
-        max_level: args.reference_level,
-        samples: args.reference_samples,
-    };
     let total = 1 + sweep.settings().len() as u64 * u64::from(sweep.runs);
     let bar = progress_bar(total);
-    let outcome = pool.install(|| {
-        tradeoff::measure(
-            Scenes::new(f64_scene, f32_scene),
-            &sweep,
-            reference,
-            &|_| bar.inc(1),
-        )
-    });
+    let outcome = pool
+        .install(|| tradeoff::measure(Scenes::new(f64_scene, f32_scene), &sweep, &|_| bar.inc(1)));
     bar.finish_and_clear();
     let file = args.scene.display().to_string();
     let summary = report::Summary::new(&file, &outcome, args.metric, args.budget);
@@ -957,17 +903,6 @@ fn tradeoff_run(args: &TradeoffArgs) -> Result<u8, ProblemError> {
         TradeoffFormat::Csv => report::csv(&summary),
     };
     Ok(emit(args.output.as_deref(), &text))
-}
-
-/// The values in their first order, each once.
-fn dedup<T: PartialEq + Copy>(values: &[T]) -> Vec<T> {
-    let mut out: Vec<T> = Vec::with_capacity(values.len());
-    for &v in values {
-        if !out.contains(&v) {
-            out.push(v);
-        }
-    }
-    out
 }
 
 /// A progress bar on stderr when it is a terminal; hidden otherwise (and under CI).
