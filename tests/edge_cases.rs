@@ -3,7 +3,8 @@
 
 use std::io::Write;
 
-use phong::cli::{solve_json, Precision};
+use phong::core::Precision;
+use phong::report::file::solve_json;
 use serde_json::{json, Value};
 
 /// Solves a problem given as JSON, in one precision.

@@ -10,8 +10,9 @@
 use std::path::Path;
 
 use assert_cmd::Command;
-use phong::cli::{explain_file, Precision};
+use phong::core::Precision;
 use phong::report::explain::{plain, Explanation};
+use phong::report::file::explain_file;
 use phong::report::html::{write_all as html, HtmlOptions};
 use phong::report::lang::Lang;
 use phong::report::latex::{write_all as latex, LatexOptions};

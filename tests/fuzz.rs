@@ -1334,7 +1334,7 @@ struct Context<'a> {
 fn precision<R: Real>(c: &Context, tally: &Tally) -> Result<bool, String> {
     let p = R::NAME;
     let solved = guarded(&format!("solve ({p})"), || {
-        phong::cli::solve_file::<R>(c.path)
+        phong::solve::solve_file::<R>(c.path)
     })?;
     match solved {
         Ok((problem, solution)) => {
@@ -2309,7 +2309,7 @@ fn a_point_so_far_that_the_mirrored_light_overflows_has_no_light_reversed_readin
     let text = json.text().replace("[3, 1, 3]", "[3, 1e308, 3]");
     assert!(text.contains("\"position\": [3, 1e308, 3]"), "{text}");
     fs::write(&ws.case, &text).expect("written");
-    let (problem, solution) = phong::cli::solve_file::<f64>(&ws.case).expect("solved");
+    let (problem, solution) = phong::solve::solve_file::<f64>(&ws.case).expect("solved");
     let doc = reports::json::document("4.2", &problem, &solution);
     finite_tree(&doc, "the JSON document").expect("finite");
     assert!(

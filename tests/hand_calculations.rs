@@ -10,7 +10,8 @@
 use std::path::{Path, PathBuf};
 
 use approx::relative_eq;
-use phong::cli::{solve_json, Precision};
+use phong::core::Precision;
+use phong::report::file::solve_json;
 use serde_json::Value;
 
 /// Tolerance of the f64 comparisons: absolute for values up to 1, relative above.

@@ -9,7 +9,8 @@ mod support;
 use std::path::Path;
 use std::process::Command;
 
-use phong::cli::{explain_file, Precision};
+use phong::core::Precision;
+use phong::report::file::explain_file;
 use phong::report::lang::Lang;
 use phong::report::latex::{write_all, LatexOptions};
 

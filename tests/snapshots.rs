@@ -7,7 +7,8 @@
 
 use std::path::Path;
 
-use phong::cli::{solve_json, solve_text, Precision};
+use phong::core::Precision;
+use phong::report::file::{solve_json, solve_text};
 use serde_json::Value;
 
 fn settings() -> insta::Settings {

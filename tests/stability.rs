@@ -2,8 +2,9 @@
 //! hand-picked cases, each stating what must hold and why its bound is what it is.
 //!
 //! Notation: u_R = ε_R/2 is the unit roundoff of the precision R (2^-24 in f32, 2^-53 in f64),
-//! γ_k = k·u/(1 − k·u). Problems go through the public path (JSON → `phong::cli::solve_json`)
-//! in both precisions; the tracer's re-hit property through `phong::geometry`.
+//! γ_k = k·u/(1 − k·u). Problems go through the public path (JSON →
+//! `phong::report::file::solve_json`) in both precisions; the tracer's re-hit property through
+//! `phong::geometry`.
 //!
 //! Expected values come from independent calculations: exact integer (i128) arithmetic on
 //! inputs chosen as dyadic rationals, constructions whose exact value is known (integer
@@ -16,10 +17,11 @@
 
 use std::io::Write;
 
-use phong::cli::{solve_json, solve_text, Precision};
 use phong::core::real::v3;
+use phong::core::Precision;
 use phong::core::{Real, Vector};
 use phong::geometry::{offset_origin, Plane, Ray, Shape, Sphere, Triangle};
+use phong::report::file::{solve_json, solve_text};
 use proptest::prelude::*;
 use proptest::test_runner::{Config, RngSeed};
 use serde_json::{json, Value};

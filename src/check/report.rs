@@ -8,6 +8,7 @@ use serde::Serialize;
 
 use super::messages::{self, Line};
 use super::{Answer, Comparison, Scale, Verdict, VerdictKind};
+use crate::cli::Exit;
 use crate::problem::ProblemError;
 use crate::report::lang::Lang;
 use crate::report::number::num;
@@ -114,11 +115,11 @@ impl Serialize for FailureKind {
 
 impl Checked {
     /// 0 accepted, 1 wrong (or a reading under --strict), 2 cannot be checked.
-    pub fn exit_code(&self) -> u8 {
+    pub fn exit_code(&self) -> Exit {
         match &self.outcome {
-            Ok(j) if j.verdict.accepted => 0,
-            Ok(_) => 1,
-            Err(_) => 2,
+            Ok(j) if j.verdict.accepted => Exit::Success,
+            Ok(_) => Exit::Wrong,
+            Err(_) => Exit::BadInput,
         }
     }
 }

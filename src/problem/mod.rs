@@ -16,7 +16,8 @@ use std::path::Path;
 pub use error::{Invalid, ProblemError};
 pub use format::{schema_json, ProblemFile};
 pub use model::{
-    Camera, GivenVector, NamedMaterial, Problem, RenderSettings, Surface, SurfaceSource, Target,
+    Camera, GivenVector, NamedMaterial, Problem, RenderOverrides, RenderSettings, Surface,
+    SurfaceSource, Target,
 };
 
 use crate::core::Real;

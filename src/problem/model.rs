@@ -1,7 +1,9 @@
 //! A validated problem, in the precision it will be solved in: the core's types plus what the
 //! explanation needs to say about how each quantity was given.
 
+use super::error::Invalid;
 use super::format::MaterialSpec;
+use super::validate::{check_max_level, check_min_weight, check_samples};
 use crate::core::{LightSet, Material, Real, V3};
 use crate::geometry::{Ray, Shape};
 
@@ -71,6 +73,40 @@ impl<R: Real> Default for RenderSettings<R> {
             shadows: true,
             samples: 1,
         }
+    }
+}
+
+/// Settings given over a problem's own `render` (the command line's `--max-level`,
+/// `--min-weight`, `--samples`, `--shadows`); `None` keeps the problem's.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct RenderOverrides {
+    pub max_level: Option<u32>,
+    pub min_weight: Option<f64>,
+    pub samples: Option<u32>,
+    pub shadows: Option<bool>,
+}
+
+impl<R: Real> RenderSettings<R> {
+    /// These settings with `overrides` over them, each checked by the rules of the file's
+    /// `render`; a refused one is named by its field in [`RenderOverrides`] (`max_level`).
+    pub fn with(self, overrides: &RenderOverrides) -> Result<Self, Invalid> {
+        let mut s = self;
+        if let Some(level) = overrides.max_level {
+            check_max_level(level).map_err(|e| e.at("max_level"))?;
+            s.max_level = level;
+        }
+        if let Some(w) = overrides.min_weight {
+            check_min_weight(w).map_err(|e| e.at("min_weight"))?;
+            s.min_weight = R::from_f64(w);
+        }
+        if let Some(n) = overrides.samples {
+            check_samples(n).map_err(|e| e.at("samples"))?;
+            s.samples = n;
+        }
+        if let Some(on) = overrides.shadows {
+            s.shadows = on;
+        }
+        Ok(s)
     }
 }
 

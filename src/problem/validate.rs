@@ -257,15 +257,15 @@ fn render_settings<R: Real>(r: Option<&RenderSpec>) -> Result<RenderSettings<R>,
     let mut s = RenderSettings::<R>::default();
     let Some(r) = r else { return Ok(s) };
     if let Some(level) = r.max_level {
-        check_max_level(level).map_err(|(m, f)| Invalid::new("render.max_level", m, f))?;
+        check_max_level(level).map_err(|e| e.at("render.max_level"))?;
         s.max_level = level;
     }
     if let Some(w) = r.min_weight {
-        check_min_weight(w).map_err(|(m, f)| Invalid::new("render.min_weight", m, f))?;
+        check_min_weight(w).map_err(|e| e.at("render.min_weight"))?;
         s.min_weight = number::<R>(w, "render.min_weight")?;
     }
     if let Some(n) = r.samples {
-        check_samples(n).map_err(|(m, f)| Invalid::new("render.samples", m, f))?;
+        check_samples(n).map_err(|e| e.at("render.samples"))?;
         s.samples = n;
     }
     if let Some(on) = r.shadows {
@@ -274,15 +274,34 @@ fn render_settings<R: Real>(r: Option<&RenderSpec>) -> Result<RenderSettings<R>,
     Ok(s)
 }
 
-/// A message and a fix, for a setting given in a file or on the command line.
-pub type SettingError = (String, String);
+/// Why a setting (given in a file or on the command line) is refused, and what would fix it.
+#[derive(Clone, Debug, PartialEq)]
+pub struct SettingError {
+    pub message: String,
+    pub fix: String,
+}
+
+impl SettingError {
+    fn new(message: impl Into<String>, fix: impl Into<String>) -> Self {
+        SettingError {
+            message: message.into(),
+            fix: fix.into(),
+        }
+    }
+
+    /// The error of the setting named `field` (`render.samples` in a file, `samples` among a
+    /// command line's overrides).
+    pub fn at(self, field: impl Into<String>) -> Invalid {
+        Invalid::new(field, self.message, self.fix)
+    }
+}
 
 /// The maximum level must let at least the primary rays through.
 pub fn check_max_level(level: u32) -> Result<(), SettingError> {
     if level == 0 {
-        return Err((
-            "0 traces nothing: the primary ray already has level 1".into(),
-            "give a maximum level ≥ 1 (1 = primary rays only)".into(),
+        return Err(SettingError::new(
+            "0 traces nothing: the primary ray already has level 1",
+            "give a maximum level ≥ 1 (1 = primary rays only)",
         ));
     }
     Ok(())
@@ -291,9 +310,9 @@ pub fn check_max_level(level: u32) -> Result<(), SettingError> {
 /// The minimum weight is a finite number ≥ 0.
 pub fn check_min_weight(w: f64) -> Result<(), SettingError> {
     if !(w.is_finite() && w >= 0.0) {
-        return Err((
+        return Err(SettingError::new(
             format!("{} is not a weight", show(w)),
-            "give a minimum weight ≥ 0 (0 traces every reflection up to the maximum level)".into(),
+            "give a minimum weight ≥ 0 (0 traces every reflection up to the maximum level)",
         ));
     }
     Ok(())
@@ -302,7 +321,7 @@ pub fn check_min_weight(w: f64) -> Result<(), SettingError> {
 /// Samples per pixel: 1 to [`MAX_SAMPLES`].
 pub fn check_samples(n: u32) -> Result<(), SettingError> {
     if n == 0 || n > MAX_SAMPLES {
-        return Err((
+        return Err(SettingError::new(
             format!("{n} samples per pixel is outside 1 to {MAX_SAMPLES}"),
             format!("give 1 to {MAX_SAMPLES} samples per pixel"),
         ));

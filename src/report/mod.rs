@@ -7,6 +7,7 @@
 
 pub mod diagram;
 pub mod explain;
+pub mod file;
 pub mod formula;
 pub mod html;
 pub mod json;

@@ -3,6 +3,7 @@
 //! (a light behind the surface, a hit behind the ray's origin, …) and, where a problem as written
 //! has a surprising property, the result of its likely intended reading, labelled as such.
 
+mod file;
 mod findings;
 mod rounding;
 
@@ -15,6 +16,7 @@ use crate::geometry::{gamma, Aggregate, Ray, ShadowRays, SurfaceHit};
 use crate::problem::validate::{light_label, show};
 use crate::problem::{GivenVector, Invalid, NamedMaterial, Problem, SurfaceSource, Target};
 
+pub use file::solve_file;
 pub use findings::{ConeEdge, Finding, FindingData, GateDecision};
 
 /// Everything the solver found out about one problem.

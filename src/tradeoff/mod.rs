@@ -7,6 +7,7 @@
 //! against the reference. The images are deterministic, so the errors and ray counts are the same
 //! on every run; only the times vary.
 //!
+//! - [`Sweep`]: the settings to measure, checked ([`Sweep::new`]), and the reference's.
 //! - [`errors`]: max absolute error, RMSE, PSNR and the share of 8-bit pixels that differ,
 //!   computed on the pixel means before rounding to 8 bits ([`crate::tracer::LinearImage`]).
 //! - [`pareto_front`]: the settings no other setting beats in both time and error.
@@ -15,6 +16,7 @@
 
 pub mod plot;
 pub mod report;
+mod sweep;
 
 use std::time::Instant;
 
@@ -24,66 +26,7 @@ use crate::core::{Precision, Real};
 use crate::problem::{Camera, Problem};
 use crate::tracer::{render_linear, Counts, LinearImage, Scene};
 
-/// One setting of the tracer, as swept.
-#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
-pub struct Setting {
-    pub precision: Precision,
-    pub max_level: u32,
-    pub min_weight: f64,
-    pub samples: u32,
-}
-
-/// What to sweep: every combination of these, in this order (precision, then level, then
-/// minimum weight, then samples), each rendered `runs` times.
-#[derive(Clone, Debug, PartialEq)]
-pub struct Sweep {
-    pub precisions: Vec<Precision>,
-    pub levels: Vec<u32>,
-    pub min_weights: Vec<f64>,
-    pub samples: Vec<u32>,
-    pub runs: u32,
-}
-
-impl Sweep {
-    /// Every combination, in the sweep's order.
-    pub fn settings(&self) -> Vec<Setting> {
-        let mut all = Vec::new();
-        for &precision in &self.precisions {
-            for &max_level in &self.levels {
-                for &min_weight in &self.min_weights {
-                    for &samples in &self.samples {
-                        all.push(Setting {
-                            precision,
-                            max_level,
-                            min_weight,
-                            samples,
-                        });
-                    }
-                }
-            }
-        }
-        all
-    }
-}
-
-/// The reference's level and samples; it is always f64 with minimum weight 0.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
-pub struct ReferenceSettings {
-    pub max_level: u32,
-    pub samples: u32,
-}
-
-impl ReferenceSettings {
-    /// The reference as a [`Setting`].
-    pub fn setting(self) -> Setting {
-        Setting {
-            precision: Precision::F64,
-            max_level: self.max_level,
-            min_weight: 0.0,
-            samples: self.samples,
-        }
-    }
-}
+pub use sweep::{ReferenceSettings, Setting, Sweep};
 
 /// An image's error against the reference, over every channel of every pixel.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize)]
@@ -259,12 +202,7 @@ impl Scenes {
 
 /// Renders the reference, then every setting `sweep.runs` times round-robin, on the current
 /// rayon pool (its thread count is reported). `progress` is told each render as it starts.
-pub fn measure(
-    scenes: Scenes,
-    sweep: &Sweep,
-    reference: ReferenceSettings,
-    progress: &dyn Fn(&Setting),
-) -> Outcome {
+pub fn measure(scenes: Scenes, sweep: &Sweep, progress: &dyn Fn(&Setting)) -> Outcome {
     let (problem, camera) = scenes.f64;
     let (width, height) = (camera.width, camera.height);
     let (mut p64, built64) = Prepared::new(problem, camera);
@@ -276,7 +214,7 @@ pub fn measure(
     });
     build_s.push((Precision::F64, built64));
 
-    let ref_setting = reference.setting();
+    let ref_setting = sweep.reference.setting();
     progress(&ref_setting);
     let (ref_image, ref_rays, ref_time) = p64.render(&ref_setting);
 
@@ -466,27 +404,5 @@ mod tests {
     fn the_median_of_even_and_odd_counts() {
         assert_eq!(median(&[3.0, 1.0, 2.0]), 2.0);
         assert_eq!(median(&[4.0, 1.0, 3.0, 2.0]), 2.5);
-    }
-
-    #[test]
-    fn the_sweep_is_every_combination_in_order() {
-        let s = Sweep {
-            precisions: vec![Precision::F32, Precision::F64],
-            levels: vec![1, 5],
-            min_weights: vec![0.0],
-            samples: vec![1, 4],
-            runs: 1,
-        };
-        let all = s.settings();
-        assert_eq!(all.len(), 8);
-        assert_eq!(
-            (all[0].precision, all[0].max_level, all[0].samples),
-            (Precision::F32, 1, 1)
-        );
-        assert_eq!(
-            (all[3].precision, all[3].max_level, all[3].samples),
-            (Precision::F32, 5, 4)
-        );
-        assert_eq!(all[4].precision, Precision::F64);
     }
 }

@@ -1,0 +1,337 @@
+//! The command line's definition: every subcommand, flag, default and help text, as clap's
+//! derive types. What a value is read as (`1/255`, `320x240`, `X,Y`, `f32`) is in
+//! [`super::parse`]; what a command does with its arguments, in [`super::commands`].
+
+use std::path::PathBuf;
+
+use clap::{Args, Parser, Subcommand, ValueEnum};
+
+use super::parse::{parse_fraction, parse_pixel, parse_size};
+use crate::check;
+use crate::core::Precision;
+use crate::generate;
+use crate::report::lang::Lang;
+use crate::tracer::output::ImageFormat;
+
+/// Solve and explain the illumination exercises of Chapter 4 (Phong's model).
+#[derive(Debug, Parser)]
+#[command(name = "phong", version, about, long_about = None)]
+pub struct Cli {
+    #[command(subcommand)]
+    pub command: Command,
+}
+
+#[derive(Debug, Subcommand)]
+pub enum Command {
+    /// Solve problem files, printing every intermediate quantity with its equation.
+    Solve(SolveArgs),
+    /// Render a scene (a problem file with a camera) with the Whitted ray tracer, or explain
+    /// one pixel of it step by step.
+    Render(RenderArgs),
+    /// Print the JSON Schema of the problem format.
+    Schema(SchemaArgs),
+    /// Write a scene as POV-Ray 3.7 SDL that computes the same model (for cross-checking),
+    /// or say why POV-Ray cannot express it (exit 2).
+    ExportPov(ExportPovArgs),
+    /// Check an answer (or each file's answer key) and name the slips behind a wrong one.
+    Check(CheckArgs),
+    /// Grade a CSV of answers (student, exercise, answer): one verdict per row, a summary per exercise.
+    Grade(GradeArgs),
+    /// Write fresh problems with numbers friendly to hand calculation, each with its answer key.
+    New(NewArgs),
+    /// Measure what each tracer setting (precision, level, minimum weight, samples) costs in
+    /// time and buys in accuracy against a reference render; name the fastest within a budget.
+    Tradeoff(TradeoffArgs),
+}
+
+#[derive(Debug, Args)]
+pub struct TradeoffArgs {
+    /// The scene: a problem file with a "camera" and "surfaces".
+    #[arg(value_name = "SCENE")]
+    pub scene: PathBuf,
+    /// Precisions to sweep.
+    #[arg(long, value_enum, value_delimiter = ',', default_value = "f32,f64")]
+    pub precisions: Vec<Precision>,
+    /// Maximum levels to sweep.
+    #[arg(
+        long,
+        value_delimiter = ',',
+        value_name = "N,...",
+        default_value = "1,2,3,5,10"
+    )]
+    pub levels: Vec<u32>,
+    /// Minimum weights to sweep (decimals or fractions such as 1/255).
+    #[arg(long, value_delimiter = ',', value_name = "W,...", value_parser = parse_fraction,
+          default_value = "0,1/255,0.1")]
+    pub min_weights: Vec<f64>,
+    /// Samples per pixel to sweep.
+    #[arg(
+        long,
+        value_delimiter = ',',
+        value_name = "N,...",
+        default_value = "1,4,16"
+    )]
+    pub samples: Vec<u32>,
+    /// Renders per setting; its time is their median.
+    #[arg(long, value_name = "N", default_value_t = 3)]
+    pub runs: u32,
+    /// The reference's maximum level (it is f64 with minimum weight 0).
+    #[arg(long, value_name = "N", default_value_t = 64)]
+    pub reference_level: u32,
+    /// The reference's samples per pixel.
+    #[arg(long, value_name = "N", default_value_t = 64)]
+    pub reference_samples: u32,
+    /// The error budget: which setting is the fastest with its error at most this?
+    #[arg(long, value_name = "E", value_parser = parse_fraction, default_value = "1/255")]
+    pub budget: f64,
+    /// The error the budget and the Pareto front are judged by.
+    #[arg(long, value_enum, default_value_t = crate::tradeoff::Metric::Rmse)]
+    pub metric: crate::tradeoff::Metric,
+    /// Render at this size instead of the camera's (quicker sweeps).
+    #[arg(long, value_name = "WxH", value_parser = parse_size)]
+    pub size: Option<(u32, u32)>,
+    /// Worker threads (default: one per core).
+    #[arg(long, value_name = "N")]
+    pub threads: Option<usize>,
+    /// Format of the table.
+    #[arg(long, value_enum, default_value_t = TradeoffFormat::Text)]
+    pub format: TradeoffFormat,
+    /// Write the table to this file (atomically) instead of standard output.
+    #[arg(short, long, value_name = "PATH")]
+    pub output: Option<PathBuf>,
+    /// Write the plot of error against time (SVG) to this file.
+    #[arg(long, value_name = "PATH.svg")]
+    pub plot: Option<PathBuf>,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum TradeoffFormat {
+    Text,
+    Json,
+    Csv,
+}
+
+#[derive(Debug, Args)]
+pub struct ExportPovArgs {
+    /// The scene: a problem file with a "camera" and "surfaces".
+    #[arg(value_name = "SCENE")]
+    pub scene: PathBuf,
+    /// Write the SDL to this file (atomically) instead of standard output.
+    #[arg(short, long, value_name = "PATH")]
+    pub output: Option<PathBuf>,
+    /// The tracer's settings over the scene's (POV-Ray can only match 1 sample per pixel).
+    #[command(flatten)]
+    pub settings: TraceSettings,
+}
+
+/// The tracer's settings, each over the scene's `render` (or its default).
+#[derive(Debug, Args)]
+pub struct TraceSettings {
+    /// The maximum recursion level (primary rays are level 1) [scene's, or 5].
+    #[arg(long, value_name = "N")]
+    pub max_level: Option<u32>,
+    /// The minimum weight of a reflection ray [scene's, or 1/255].
+    #[arg(long, value_name = "W")]
+    pub min_weight: Option<f64>,
+    /// Samples per pixel, 1 to 4096, stratified and deterministic [scene's, or 1].
+    #[arg(long, value_name = "N")]
+    pub samples: Option<u32>,
+    /// Shadow rays on or off [scene's, or on].
+    #[arg(long, value_enum, value_name = "ON|OFF")]
+    pub shadows: Option<Switch>,
+}
+
+#[derive(Debug, Args)]
+pub struct RenderArgs {
+    /// The scene: a problem file with a "camera" and "surfaces".
+    #[arg(value_name = "SCENE")]
+    pub scene: PathBuf,
+    /// The image to write (atomically): .png or .ppm. Required unless --explain-pixel.
+    #[arg(
+        short,
+        long,
+        value_name = "PATH",
+        required_unless_present = "explain_pixel"
+    )]
+    pub output: Option<PathBuf>,
+    /// The image format, when the output's extension does not say.
+    #[arg(long, value_enum, value_name = "FORMAT")]
+    pub image_format: Option<ImageFormat>,
+    #[command(flatten)]
+    pub settings: TraceSettings,
+    /// Floating-point precision of the whole calculation.
+    #[arg(long, value_enum, default_value_t = Precision::F64)]
+    pub precision: Precision,
+    /// Worker threads (default: one per core). The image is the same for any number.
+    #[arg(long, value_name = "N")]
+    pub threads: Option<usize>,
+    /// Explain pixel X,Y (from the top-left corner, 0-based) step by step instead of writing
+    /// the image: its rays, each hit solved as `phong solve` solves a ray problem.
+    #[arg(long, value_name = "X,Y", value_parser = parse_pixel)]
+    pub explain_pixel: Option<(u32, u32)>,
+    /// Format of the explanation.
+    #[arg(long, value_enum, default_value_t = Format::Text)]
+    pub format: Format,
+    /// Print the number of rays traced and the time taken to stderr.
+    #[arg(long)]
+    pub stats: bool,
+}
+
+/// On or off.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum Switch {
+    On,
+    Off,
+}
+
+#[derive(Debug, Args)]
+pub struct CheckArgs {
+    /// Problem files (JSON). Without --answer, each file's answer key is checked.
+    #[arg(required = true, value_name = "FILE")]
+    pub files: Vec<PathBuf>,
+    /// The answer to check: "0.52 0.03 0", "(0.52, 0.03, 0)", "[0.52; 0.03; 0]", "#RRGGBB", or
+    /// three integers 0–255 with --scale 255. Only with one FILE.
+    #[arg(long, value_name = "ANSWER", allow_hyphen_values = true)]
+    pub answer: Option<String>,
+    /// The answer's scale: 1 (components on [0, 1]) or 255 (8-bit integers). "#RRGGBB" is 255.
+    #[arg(long, value_enum, default_value = "1")]
+    pub scale: check::Scale,
+    /// The largest difference accepted per channel, on the answer's scale [default: the key's
+    /// own, else 0.005 on the 0–1 scale, 1 on the 255 scale].
+    #[arg(long, value_name = "T", allow_hyphen_values = true)]
+    pub tolerance: Option<f64>,
+    /// Accept only the problem as written, not its likely intended reading.
+    #[arg(long)]
+    pub strict: bool,
+    /// Instead of checking an answer, list what each applicable slip (and pair) gives.
+    #[arg(long, conflicts_with_all = ["answer", "format"])]
+    pub slips: bool,
+    /// Output format: text for people, json for scripts (stable field names, format_version).
+    #[arg(long, value_enum, default_value_t = CheckFormat::Text)]
+    pub format: CheckFormat,
+    /// Language of the text output.
+    #[arg(long, value_enum, default_value_t = Lang::En)]
+    pub lang: Lang,
+    /// Write the output to this file (atomically) instead of standard output.
+    #[arg(short, long, value_name = "PATH")]
+    pub output: Option<PathBuf>,
+}
+
+#[derive(Debug, Args)]
+pub struct GradeArgs {
+    /// The submissions: a CSV file with the columns student, exercise, answer (a first row
+    /// starting with "student" is a header).
+    #[arg(value_name = "SUBMISSIONS")]
+    pub submissions: PathBuf,
+    /// The folder of exercise files: exercise "4.2" is DIR/4.2.json.
+    #[arg(long, value_name = "DIR")]
+    pub exercises: PathBuf,
+    /// Report format: one CSV line per input row, or JSON with the rows and the summary.
+    #[arg(long, value_enum, default_value_t = GradeFormat::Csv)]
+    pub format: GradeFormat,
+    /// The scale of answers that are not "#RRGGBB".
+    #[arg(long, value_enum, default_value = "1")]
+    pub scale: check::Scale,
+    /// The largest difference accepted per channel [default: 0.005 on the 0–1 scale, 1 on 255].
+    #[arg(long, value_name = "T", allow_hyphen_values = true)]
+    pub tolerance: Option<f64>,
+    /// Accept only the problem as written, not its likely intended reading.
+    #[arg(long)]
+    pub strict: bool,
+    /// Write the report to this file (atomically) instead of standard output.
+    #[arg(short, long, value_name = "PATH")]
+    pub output: Option<PathBuf>,
+    /// Also write the summary per exercise as CSV to this file (atomically).
+    #[arg(long, value_name = "PATH")]
+    pub summary: Option<PathBuf>,
+}
+
+#[derive(Debug, Args)]
+pub struct NewArgs {
+    /// The kind of problem.
+    #[arg(long, value_enum)]
+    pub kind: generate::Kind,
+    /// How many problems.
+    #[arg(long, default_value_t = 1, value_parser = clap::value_parser!(u32).range(1..=10000))]
+    pub count: u32,
+    /// The seed: the same seed, kind and count give the same files, byte for byte.
+    #[arg(long, default_value_t = 1)]
+    pub seed: u64,
+    /// Write each problem to DIR/KIND-SEED-I.json (atomically); without it, print them (one JSON
+    /// document, or an array for several).
+    #[arg(short, long, value_name = "DIR")]
+    pub output: Option<PathBuf>,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum CheckFormat {
+    Text,
+    Json,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum GradeFormat {
+    Csv,
+    Json,
+}
+
+#[derive(Debug, Args)]
+pub struct SolveArgs {
+    /// Problem files (JSON). Each is solved even when another one is bad.
+    #[arg(required = true, value_name = "FILE")]
+    pub files: Vec<PathBuf>,
+    /// Output format: text for people (a terminal), markdown, latex or html explanations for
+    /// notes and course pages, json for scripts (stable field names, format_version).
+    #[arg(long, value_enum, default_value_t = Format::Text)]
+    pub format: Format,
+    /// Language of the explanation (text, markdown, latex, html); json is language-neutral.
+    #[arg(long, value_enum, default_value_t = Lang::En)]
+    pub lang: Lang,
+    /// Colour in the text format: auto (on a terminal, unless NO_COLOR is set), always, never.
+    #[arg(long, value_enum, default_value_t = ColorChoice::Auto)]
+    pub color: ColorChoice,
+    /// latex and html only: write the body without the preamble or page around it.
+    #[arg(long)]
+    pub fragment: bool,
+    /// Floating-point precision of the whole calculation.
+    #[arg(long, value_enum, default_value_t = Precision::F64)]
+    pub precision: Precision,
+    /// Write the output to this file (atomically) instead of standard output.
+    #[arg(short, long, value_name = "PATH")]
+    pub output: Option<PathBuf>,
+}
+
+#[derive(Debug, Args)]
+pub struct SchemaArgs {
+    /// Write the schema to this file (atomically) instead of standard output.
+    #[arg(short, long, value_name = "PATH")]
+    pub output: Option<PathBuf>,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum Format {
+    Text,
+    Markdown,
+    Latex,
+    Html,
+    Json,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum ColorChoice {
+    /// Colour when writing to a terminal and NO_COLOR is not set.
+    Auto,
+    Always,
+    Never,
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use clap::CommandFactory;
+
+    #[test]
+    fn the_command_line_definition_is_consistent() {
+        Cli::command().debug_assert();
+    }
+}

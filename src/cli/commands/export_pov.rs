@@ -1,0 +1,25 @@
+//! `phong export-pov`: the scene in f64 (POV-Ray computes in double), with the command line's
+//! settings, as POV-Ray SDL; bad input when the file is bad or POV-Ray cannot express the scene.
+
+use crate::cli::args::ExportPovArgs;
+use crate::cli::error::CliError;
+use crate::cli::exit::Exit;
+use crate::cli::output;
+use crate::problem::{self, ProblemError};
+
+pub fn run(args: &ExportPovArgs) -> Result<Exit, CliError> {
+    let path = &args.scene;
+    let (_, mut problem) = problem::load::<f64>(path)?;
+    problem.render = problem
+        .render
+        .with(&super::overrides(&args.settings))
+        .map_err(CliError::setting)?;
+    let sdl = crate::export::pov::export(&problem).map_err(|e| ProblemError::Invalid {
+        path: path.clone(),
+        field: e.what,
+        message: format!("cannot be expressed in POV-Ray 3.7: {}", e.why),
+        fix: e.fix,
+    })?;
+    output::emit(args.output.as_deref(), &sdl)?;
+    Ok(Exit::Success)
+}

@@ -1,0 +1,43 @@
+//! The commands, one file each, as cargo's `commands/<name>.rs`: each `run` takes its parsed
+//! arguments and returns how it ended, or the error that stopped it (printed by
+//! [`crate::cli::run`]). Also what the tracer's commands share: the settings given over a
+//! scene's, and the worker threads.
+
+pub mod check;
+pub mod export_pov;
+pub mod grade;
+pub mod new;
+pub mod render;
+pub mod schema;
+pub mod solve;
+pub mod tradeoff;
+
+use super::args::{Switch, TraceSettings};
+use super::error::CliError;
+use crate::problem::RenderOverrides;
+
+/// The command line's tracer settings, to put over a scene's.
+fn overrides(s: &TraceSettings) -> RenderOverrides {
+    RenderOverrides {
+        max_level: s.max_level,
+        min_weight: s.min_weight,
+        samples: s.samples,
+        shadows: s.shadows.map(|sw| sw == Switch::On),
+    }
+}
+
+/// The worker threads: `threads`, or one per core.
+fn thread_pool(threads: Option<usize>) -> Result<rayon::ThreadPool, CliError> {
+    let mut b = rayon::ThreadPoolBuilder::new();
+    if let Some(n) = threads {
+        if n == 0 {
+            return Err(CliError::Usage {
+                flag: "--threads".into(),
+                message: "0 threads cannot render".into(),
+                fix: "give --threads 1 or more (or leave it out: one per core)".into(),
+            });
+        }
+        b = b.num_threads(n);
+    }
+    b.build().map_err(CliError::Threads)
+}

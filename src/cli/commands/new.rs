@@ -1,0 +1,27 @@
+//! `phong new`: fresh problems, printed (one JSON document, or an array for several) or written
+//! one file each into a folder.
+
+use crate::cli::args::NewArgs;
+use crate::cli::error::{self, CliError};
+use crate::cli::exit::Exit;
+use crate::cli::output;
+use crate::generate;
+
+pub fn run(args: &NewArgs) -> Result<Exit, CliError> {
+    let problems = generate::generate(args.kind, args.count, args.seed);
+    let Some(dir) = &args.output else {
+        output::emit(None, &generate::text_of_all(&problems))?;
+        return Ok(Exit::Success);
+    };
+    std::fs::create_dir_all(dir).map_err(|source| CliError::CreateFolder {
+        path: dir.clone(),
+        source,
+    })?;
+    // A file that cannot be written does not stop the others.
+    let mut exit = Exit::Success;
+    for p in problems {
+        let written = output::emit(Some(&dir.join(&p.file_name)), &p.text());
+        exit = exit.max(error::carry_on(written));
+    }
+    Ok(exit)
+}

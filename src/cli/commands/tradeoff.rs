@@ -1,0 +1,81 @@
+//! `phong tradeoff`: the sweep checked, the scene loaded in the precisions it needs, every
+//! setting measured, and the table (text, JSON, CSV) and the plot written.
+
+use std::path::Path;
+
+use crate::cli::args::{TradeoffArgs, TradeoffFormat};
+use crate::cli::error::CliError;
+use crate::cli::exit::Exit;
+use crate::cli::output;
+use crate::core::{Precision, Real};
+use crate::problem::{self, Camera, Problem, ProblemError};
+use crate::tradeoff::{self, report, ReferenceSettings, Scenes, Sweep};
+
+pub fn run(args: &TradeoffArgs) -> Result<Exit, CliError> {
+    let sweep = Sweep::new(
+        &args.precisions,
+        &args.levels,
+        &args.min_weights,
+        &args.samples,
+        args.runs,
+        ReferenceSettings {
+            max_level: args.reference_level,
+            samples: args.reference_samples,
+        },
+    )
+    .map_err(CliError::setting)?;
+    if let Some(plot) = &args.plot {
+        if !plot
+            .extension()
+            .is_some_and(|e| e.eq_ignore_ascii_case("svg"))
+        {
+            return Err(CliError::Usage {
+                flag: "--plot".into(),
+                message: format!("{} does not end in .svg", plot.display()),
+                fix: "name the plot *.svg (it is written as SVG)".into(),
+            });
+        }
+    }
+    let f64_scene = load::<f64>(&args.scene, args.size)?;
+    let f32_scene = if args.precisions.contains(&Precision::F32) {
+        Some(load::<f32>(&args.scene, args.size)?)
+    } else {
+        None
+    };
+    let pool = super::thread_pool(args.threads)?;
+    let total = 1 + sweep.settings().len() as u64 * u64::from(sweep.runs);
+    let bar = output::progress_bar(total);
+    let outcome = pool
+        .install(|| tradeoff::measure(Scenes::new(f64_scene, f32_scene), &sweep, &|_| bar.inc(1)));
+    bar.finish_and_clear();
+    let file = args.scene.display().to_string();
+    let summary = report::Summary::new(&file, &outcome, args.metric, args.budget);
+    if let Some(plot) = &args.plot {
+        let svg = tradeoff::plot::svg(&summary).map_err(|e| CliError::Bug {
+            flag: "--plot",
+            message: format!("the plot could not be drawn: {e}"),
+            works: "the table is still written without --plot",
+        })?;
+        output::write_file(plot, svg.as_bytes())?;
+    }
+    let text = match args.format {
+        TradeoffFormat::Text => report::text(&summary),
+        TradeoffFormat::Json => output::json_pretty(&report::json(&summary)),
+        TradeoffFormat::Csv => report::csv(&summary),
+    };
+    output::emit(args.output.as_deref(), &text)?;
+    Ok(Exit::Success)
+}
+
+/// The scene in precision `R`, at `size` instead of the camera's when given.
+fn load<R: Real>(
+    path: &Path,
+    size: Option<(u32, u32)>,
+) -> Result<(Problem<R>, Camera<R>), ProblemError> {
+    let (p, mut camera) = problem::load_scene::<R>(path)?;
+    if let Some((w, h)) = size {
+        camera.width = w;
+        camera.height = h;
+    }
+    Ok((p, camera))
+}

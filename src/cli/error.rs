@@ -1,0 +1,119 @@
+//! What can go wrong at the command line's edge, as one type, and the one place an error is
+//! printed. Every error exits 2 ([`Exit::BadInput`]): exit 1 means a wrong answer.
+
+use std::fmt::Display;
+use std::path::{Path, PathBuf};
+
+use super::exit::Exit;
+use crate::check::answer::BadAnswer;
+use crate::check::grade::Unreadable;
+use crate::problem::{Invalid, ProblemError};
+
+/// Why a command failed (or, in a batch, why one of its steps did).
+#[derive(Debug, thiserror::Error)]
+pub enum CliError {
+    /// A problem file that cannot be read, parsed or validated (or, for `export-pov`, expressed
+    /// in POV-Ray).
+    #[error(transparent)]
+    Problem(#[from] ProblemError),
+    /// The submissions of `phong grade` cannot be read.
+    #[error(transparent)]
+    Submissions(#[from] Unreadable),
+    /// A flag's value refused after parsing: out of range, or not what the command can do.
+    #[error("{flag}: {message}. Fix: {fix}")]
+    Usage {
+        flag: String,
+        message: String,
+        fix: String,
+    },
+    /// A flag's value that is not a value of its kind (`--tolerance -1`); the message says what
+    /// is expected.
+    #[error("{flag}: {source}")]
+    Value {
+        flag: &'static str,
+        #[source]
+        source: BadAnswer,
+    },
+    /// Flags or arguments that do not go together, said as one sentence.
+    #[error("{message}. Fix: {fix}")]
+    Conflict { message: String, fix: String },
+    /// A flag naming a folder gives something else.
+    #[error("{}: {flag}: not a folder. Fix: {fix}", path.display())]
+    NotAFolder {
+        path: PathBuf,
+        flag: &'static str,
+        fix: &'static str,
+    },
+    /// Output that cannot be written: to a file, or (`None`) to standard output.
+    #[error("cannot write {}: {source}", destination(path.as_deref()))]
+    Write {
+        path: Option<PathBuf>,
+        #[source]
+        source: std::io::Error,
+    },
+    /// A folder for the output files that cannot be created.
+    #[error("{}: cannot create the folder: {source}", path.display())]
+    CreateFolder {
+        path: PathBuf,
+        #[source]
+        source: std::io::Error,
+    },
+    /// The system refused the worker threads.
+    #[error("--threads: cannot start the worker threads: {0}. Fix: give fewer --threads")]
+    Threads(#[source] rayon::ThreadPoolBuildError),
+    /// A bug of phong's own, found where `flag` is handled; `works` says what still works.
+    #[error("{flag}: {message}. Fix: report this as a bug; {works}")]
+    Bug {
+        flag: &'static str,
+        message: String,
+        works: &'static str,
+    },
+}
+
+/// Where output was going: a file, or standard output.
+fn destination(path: Option<&Path>) -> String {
+    path.map_or("standard output".into(), |p| p.display().to_string())
+}
+
+impl CliError {
+    /// A setting refused by the library, named by its field (`max_level`, `min_weights`): the
+    /// flag that gave it is that name in kebab case (`--max-level`, `--min-weights`).
+    pub fn setting(e: Invalid) -> CliError {
+        CliError::Usage {
+            flag: format!("--{}", e.field.replace('_', "-")),
+            message: e.message,
+            fix: e.fix,
+        }
+    }
+}
+
+/// Prints an error on standard error as `error: …`; every error of `phong` is printed here.
+pub fn print(error: &dyn Display) {
+    eprintln!("error: {error}");
+}
+
+/// The exit of a step a command goes on after (one file of several): success, or bad input
+/// once its error is printed.
+pub fn carry_on(step: Result<(), CliError>) -> Exit {
+    match step {
+        Ok(()) => Exit::Success,
+        Err(e) => fail(&e),
+    }
+}
+
+/// Prints an error and gives its exit.
+pub fn fail(e: &CliError) -> Exit {
+    print(e);
+    Exit::BadInput
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_setting_is_named_by_its_flag() {
+        let e = CliError::setting(Invalid::new("min_weights", "is empty", "give one"));
+        assert_eq!(e.to_string(), "--min-weights: is empty. Fix: give one");
+    }
+}

@@ -1,0 +1,55 @@
+//! What clap reads a flag's value as: a number or fraction ≥ 0 (`1/255`), an image size
+//! (`320x240`), a pixel (`X,Y`), and the hand-written [`ValueEnum`] of [`Precision`] (which lives
+//! in the core, outside clap).
+
+use clap::ValueEnum;
+
+use crate::core::Precision;
+
+/// A number ≥ 0 written as a decimal or a fraction (1/255).
+pub(super) fn parse_fraction(s: &str) -> Result<f64, String> {
+    match crate::check::answer::number(s) {
+        Some(x) if x >= 0.0 => Ok(x),
+        _ => Err(format!(
+            "{s:?} is not a number ≥ 0; write a decimal (0.05) or a fraction (1/255)"
+        )),
+    }
+}
+
+/// WxH, each 1 to the largest image side.
+pub(super) fn parse_size(s: &str) -> Result<(u32, u32), String> {
+    let max = crate::problem::model::MAX_IMAGE_SIDE;
+    let parsed = s
+        .split_once(['x', '×'])
+        .and_then(|(w, h)| Some((w.trim().parse::<u32>().ok()?, h.trim().parse::<u32>().ok()?)));
+    match parsed {
+        Some((w, h)) if (1..=max).contains(&w) && (1..=max).contains(&h) => Ok((w, h)),
+        _ => Err(format!(
+            "{s:?} is not a size; write WIDTHxHEIGHT, each 1 to {max} (e.g. 320x240)"
+        )),
+    }
+}
+
+/// X,Y: a pixel, from the top-left corner, 0-based.
+pub(super) fn parse_pixel(s: &str) -> Result<(u32, u32), String> {
+    let (x, y) = s.split_once(',').ok_or_else(|| {
+        format!("\"{s}\" is not X,Y (two whole numbers and a comma, e.g. 320,240)")
+    })?;
+    let int = |t: &str| {
+        t.trim()
+            .parse::<u32>()
+            .map_err(|_| format!("\"{t}\" is not a pixel coordinate (a whole number ≥ 0)"))
+    };
+    Ok((int(x)?, int(y)?))
+}
+
+/// `--precision f32|f64`.
+impl ValueEnum for Precision {
+    fn value_variants<'a>() -> &'a [Self] {
+        &[Precision::F32, Precision::F64]
+    }
+
+    fn to_possible_value(&self) -> Option<clap::builder::PossibleValue> {
+        Some(clap::builder::PossibleValue::new(self.name()))
+    }
+}

@@ -1,0 +1,77 @@
+//! A problem file solved and reported in one call, in a precision chosen at run time: its
+//! explanation (text, Markdown, LaTeX, HTML), its text report, its JSON document, or the JSON
+//! document of why it could not be solved.
+
+use std::path::Path;
+
+use crate::core::{Precision, Real};
+use crate::problem::ProblemError;
+use crate::solve::solve_file;
+
+use super::explain::Explanation;
+use super::lang::Lang;
+
+/// Solves one file and returns its explanation in `lang`, for the text, Markdown, LaTeX and
+/// HTML formats.
+pub fn explain_file(
+    path: &Path,
+    precision: Precision,
+    lang: Lang,
+) -> Result<Explanation, ProblemError> {
+    fn go<R: Real>(path: &Path, lang: Lang) -> Result<Explanation, ProblemError> {
+        let (problem, solution) = solve_file::<R>(path)?;
+        Ok(super::explain::explain(
+            &path.display().to_string(),
+            &problem,
+            &solution,
+            lang,
+        ))
+    }
+    match precision {
+        Precision::F32 => go::<f32>(path, lang),
+        Precision::F64 => go::<f64>(path, lang),
+    }
+}
+
+/// Solves one file and returns its stable JSON document.
+pub fn solve_json(path: &Path, precision: Precision) -> Result<serde_json::Value, ProblemError> {
+    fn go<R: Real>(path: &Path) -> Result<serde_json::Value, ProblemError> {
+        let (problem, solution) = solve_file::<R>(path)?;
+        let doc = super::json::document(&path.display().to_string(), &problem, &solution);
+        Ok(serde_json::to_value(doc).expect("the solution serialises"))
+    }
+    match precision {
+        Precision::F32 => go::<f32>(path),
+        Precision::F64 => go::<f64>(path),
+    }
+}
+
+/// Solves one file and returns its text report.
+pub fn solve_text(path: &Path, precision: Precision) -> Result<String, ProblemError> {
+    fn go<R: Real>(path: &Path) -> Result<String, ProblemError> {
+        let (problem, solution) = solve_file::<R>(path)?;
+        Ok(super::text::render(
+            &path.display().to_string(),
+            &problem,
+            &solution,
+        ))
+    }
+    match precision {
+        Precision::F32 => go::<f32>(path),
+        Precision::F64 => go::<f64>(path),
+    }
+}
+
+/// The JSON document of a file that could not be solved: its kind, field and message, in
+/// place of the solution (`phong solve --format json` writes one per bad file).
+pub fn error_json(path: &Path, e: &ProblemError) -> serde_json::Value {
+    serde_json::json!({
+        "format_version": super::json::FORMAT_VERSION,
+        "file": path.display().to_string(),
+        "error": {
+            "kind": e.kind(),
+            "field": e.field(),
+            "message": e.to_string(),
+        }
+    })
+}
