@@ -21,6 +21,7 @@
 pub mod light;
 pub mod material;
 pub mod real;
+pub mod rounding;
 pub mod shade;
 pub mod vector;
 

@@ -8,8 +8,9 @@
 
 use super::bounds::Aabb;
 use super::bvh::Bvh;
-use super::hit::{gamma, offset_origin, SurfaceHit};
+use super::hit::{offset_origin, SurfaceHit};
 use super::{Ray, Shape};
+use crate::core::rounding::gamma;
 use crate::core::vector::between;
 use crate::core::{Arrival, Light, Real, Visibility, V3};
 

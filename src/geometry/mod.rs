@@ -16,12 +16,13 @@ pub mod triangle;
 pub use aggregate::{Aggregate, AggregateHit, ShadowRays};
 pub use bounds::Aabb;
 pub use bvh::{Bvh, BvhHit};
-pub use hit::{gamma, offset_origin, SurfaceHit};
+pub use hit::{offset_origin, SurfaceHit};
 pub use plane::Plane;
 pub use ray::Ray;
 pub use sphere::Sphere;
 pub use triangle::{Triangle, TriangleHit};
 
+use crate::core::rounding::gamma;
 use crate::core::{Real, Vector, V3};
 
 /// A surface of a ray problem or scene.

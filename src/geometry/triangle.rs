@@ -9,8 +9,9 @@
 //! rejected (§6.8.4), and the interpolated hit point carries the bound of its rounding error
 //! (§6.8.5), from which a spawned ray's origin is offset.
 
-use super::bounds::{gamma, Aabb};
+use super::bounds::Aabb;
 use super::ray::Ray;
+use crate::core::rounding::gamma;
 use crate::core::vector::normalize;
 use crate::core::{Real, Vector, V3};
 

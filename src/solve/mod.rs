@@ -6,12 +6,13 @@
 mod findings;
 mod rounding;
 
+use crate::core::rounding::gamma;
 use crate::core::vector::between;
 use crate::core::{
     shade_with, AllVisible, Chapter, Formulas, Light, LightKind, LightSet, LightStatus, LightTerm,
     Real, Shade, Vector, Visibility, V3,
 };
-use crate::geometry::{gamma, Aggregate, Ray, ShadowRays, SurfaceHit};
+use crate::geometry::{Aggregate, Ray, ShadowRays, SurfaceHit};
 use crate::problem::validate::{light_label, show};
 use crate::problem::{GivenVector, Invalid, NamedMaterial, Problem, SurfaceSource, Target};
 
