@@ -6,6 +6,8 @@
 mod findings;
 mod rounding;
 
+use crate::core::color::{self, clamp01};
+use crate::core::real::to_f64_array;
 use crate::core::rounding::gamma;
 use crate::core::vector::between;
 use crate::core::{
@@ -601,8 +603,7 @@ fn evaluate<R: Real, F: Formulas, Vis: Visibility<R>>(
     }
 
     let clamped = clamp01::<R>(shade.color);
-    let c = clamped.to_array();
-    let rgb8 = [0, 1, 2].map(|i| (c[i].to_f64() * 255.0).round() as u8);
+    let rgb8 = color::rgb8(to_f64_array::<R>(clamped));
     Ok(Evaluation {
         point: p,
         normal,
@@ -616,11 +617,6 @@ fn evaluate<R: Real, F: Formulas, Vis: Visibility<R>>(
         rgb8,
         p_error: None,
     })
-}
-
-fn clamp01<R: Real>(c: V3<R>) -> V3<R> {
-    let a = c.to_array().map(|x| x.max(R::ZERO).min(R::ONE));
-    V3::<R>::new(a[0], a[1], a[2])
 }
 
 /// Refuses a result that is not finite in this precision: never print NaN or infinity.
