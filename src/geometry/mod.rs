@@ -1,4 +1,5 @@
-//! Geometry: rays and the surfaces a ray problem or the tracer can hit.
+//! Geometry: rays, the surfaces a ray problem or the tracer can hit, and what a hit hands on to
+//! shading (the normal facing the ray, the rays spawned from it).
 //!
 //! Intersections return the parameter t along the *line* of the ray, of either sign: whether a
 //! hit behind the origin (t ≤ 0) counts is the caller's decision (docs/conventions.md, "Ray
@@ -12,15 +13,17 @@ pub mod bvh;
 pub mod hit;
 pub mod plane;
 pub mod ray;
+pub mod shadow;
 pub mod sphere;
 pub mod triangle;
 
-pub use aggregate::{Aggregate, AggregateHit, ShadowRays};
+pub use aggregate::{Aggregate, AggregateHit};
 pub use bounds::Aabb;
 pub use bvh::{Bvh, BvhHit};
-pub use hit::{offset_origin, SurfaceHit};
+pub use hit::{offset_origin, Facing, SurfaceHit};
 pub use plane::Plane;
 pub use ray::Ray;
+pub use shadow::{ShadowRay, ShadowRays};
 pub use sphere::Sphere;
 pub use triangle::{Triangle, TriangleHit};
 
@@ -98,8 +101,8 @@ impl<R: Real> Shape<R> {
     }
 
     /// The nearest hit with 0 < t < `t_max`, its point computed the accurate way for the shape
-    /// and bounded in error (for [`offset_origin`]). This is the one intersection routine of the
-    /// tracer and of the solver's ray problems.
+    /// and bounded in error (for [`SurfaceHit::spawn_ray`]). This is the one intersection
+    /// routine of the tracer and of the solver's ray problems.
     #[inline]
     pub fn hit(&self, ray: &Ray<R>, t_max: R) -> Option<SurfaceHit<R>> {
         match self {
