@@ -18,9 +18,11 @@
 //!
 //! Everything is generic over [`Real`] (f32 or f64) from one source.
 
+pub mod color;
 pub mod light;
 pub mod material;
 pub mod real;
+pub mod rounding;
 pub mod shade;
 pub mod vector;
 
