@@ -197,7 +197,10 @@ pub fn nearest(c: &super::Candidate, distance: f64, tolerance: f64, lang: Lang) 
             format!("the likely intended reading \"{}\"", reading(*r, lang))
         }
         (Lang::Pt, super::Candidate::Reading(r, true)) => {
-            format!("a leitura provavelmente pretendida \"{}\"", reading(*r, lang))
+            format!(
+                "a leitura provavelmente pretendida \"{}\"",
+                reading(*r, lang)
+            )
         }
         (Lang::En, super::Candidate::Reading(r, false)) => {
             format!("the reading \"{}\"", reading(*r, lang))
@@ -205,7 +208,13 @@ pub fn nearest(c: &super::Candidate, distance: f64, tolerance: f64, lang: Lang) 
         (Lang::Pt, super::Candidate::Reading(r, false)) => {
             format!("a leitura \"{}\"", reading(*r, lang))
         }
-        (_, super::Candidate::Slips { slips: list, intended }) => {
+        (
+            _,
+            super::Candidate::Slips {
+                slips: list,
+                intended,
+            },
+        ) => {
             let mistakes: Vec<Slip> = list
                 .iter()
                 .copied()
@@ -394,7 +403,9 @@ pub fn step_verdict(v: super::steps::StepVerdict, lang: Lang) -> &'static str {
         (Lang::En, V::Reading) => "wrong as written, right in the likely intended reading",
         (Lang::En, V::Wrong) => "wrong",
         (Lang::Pt, V::Right) => "certo",
-        (Lang::Pt, V::Reading) => "errado como enunciado, certo na leitura provavelmente pretendida",
+        (Lang::Pt, V::Reading) => {
+            "errado como enunciado, certo na leitura provavelmente pretendida"
+        }
         (Lang::Pt, V::Wrong) => "errado",
     }
 }

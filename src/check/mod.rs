@@ -422,10 +422,7 @@ fn nearest(
     tolerance: f64,
     intended: &[Slip],
 ) -> Option<Nearest> {
-    let written = expected
-        .solution
-        .iter()
-        .map(|t| (Candidate::Written, *t));
+    let written = expected.solution.iter().map(|t| (Candidate::Written, *t));
     let readings = expected
         .readings
         .iter()
@@ -493,22 +490,33 @@ pub fn check_file(path: &Path, options: &CheckOptions) -> report::Checked {
     } else {
         AnswerSource::Key
     };
-    let checked = |text, outcome| Checked {
+    let checked = |text, outcome, warnings| Checked {
         file: file.clone(),
         text,
         source,
         outcome,
+        warnings,
     };
     let loaded = match Loaded::read(path) {
         Ok(l) => l,
-        Err(e) => return checked(options.answer.clone(), Err(Failure::problem(&e))),
+        Err(e) => {
+            return checked(
+                options.answer.clone(),
+                Err(Failure::problem(&e)),
+                Vec::new(),
+            )
+        }
     };
+    let warnings = loaded
+        .problem
+        .as_ref()
+        .map_or_else(|_| Vec::new(), |p| p.warnings.clone());
     let key = loaded.file.answer.as_ref();
     let text = options
         .answer
         .clone()
         .or_else(|| key.map(|k| serde_json::to_string(&key_json(k)).unwrap_or_default()));
-    checked(text, judge_loaded(path, &file, loaded, options))
+    checked(text, judge_loaded(path, &file, loaded, options), warnings)
 }
 
 /// A problem file loaded as `solve` and `grade` load it ([`crate::problem::load`], which finds

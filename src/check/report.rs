@@ -35,6 +35,8 @@ pub struct Checked {
     pub text: Option<String>,
     pub source: AnswerSource,
     pub outcome: Result<Judged, Failure>,
+    /// Likely unit mistakes in the problem file (never errors).
+    pub warnings: Vec<crate::problem::warnings::Warning>,
 }
 
 /// An answer that could be checked: the answer read, the tolerance it was judged under, and
@@ -341,6 +343,9 @@ pub struct CheckOut {
     #[serde(skip_serializing_if = "Option::is_none")]
     pub nearest: Option<NearestOut>,
     pub error: Option<Failure>,
+    /// Likely unit mistakes in the problem file; absent when there are none.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub warnings: Vec<crate::report::json::WarningOut>,
 }
 
 /// The candidate closest to a wrong answer.
@@ -395,6 +400,7 @@ pub fn json(c: &Checked) -> CheckOut {
         diagnosis: Vec::new(),
         nearest: None,
         error: None,
+        warnings: crate::report::json::warnings_out(&c.warnings),
     };
     match &c.outcome {
         Err(f) => {

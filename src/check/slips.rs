@@ -234,9 +234,7 @@ impl Variant {
                     false
                 }
             }
-            Slip::IntermediatesRounded => {
-                v.formulas.round_to.replace(2).is_none()
-            }
+            Slip::IntermediatesRounded => v.formulas.round_to.replace(2).is_none(),
             Slip::TruncatedDecimals | Slip::TruncatedRgb8 => false,
             Slip::CosPhiNotRaised => {
                 let mut any = false;
@@ -420,7 +418,8 @@ pub fn outcomes(problem: &Problem<f64>, base: Option<&Target>) -> Vec<Outcome> {
         }
     }
     // Singles before pairs.
-    let (singles_cut, pairs_cut): (Vec<_>, Vec<_>) = cut.into_iter().partition(|o| o.slips.len() == 1);
+    let (singles_cut, pairs_cut): (Vec<_>, Vec<_>) =
+        cut.into_iter().partition(|o| o.slips.len() == 1);
     let at = out.iter().take_while(|o| o.slips.len() == 1).count();
     out.splice(at..at, singles_cut);
     out.extend(pairs_cut);

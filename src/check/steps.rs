@@ -142,8 +142,20 @@ pub const NAMES: [Name; 22] = [
     name("cos_phi_pow", true, false, Some("4.10"), "(cos φ)^n_s"),
     name("specular", true, true, Some("4.10"), "O_s I_l (cos φ)^n_s"),
     name("total_diffuse", false, true, Some("4.8"), "Σ O_d I_l cos θ"),
-    name("total_specular", false, true, Some("4.10"), "Σ O_s I_l (cos φ)^n_s"),
-    name("I", false, true, Some("4.16"), "I = O_a I_a + Σ (diffuse + specular)"),
+    name(
+        "total_specular",
+        false,
+        true,
+        Some("4.10"),
+        "Σ O_s I_l (cos φ)^n_s",
+    ),
+    name(
+        "I",
+        false,
+        true,
+        Some("4.16"),
+        "I = O_a I_a + Σ (diffuse + specular)",
+    ),
 ];
 
 /// Other ways of writing a name (compared without case, spaces or underscores).
@@ -255,11 +267,7 @@ pub fn parse_named(name_text: &str, value_text: &str) -> Result<GivenStep, BadSt
         return Err(bad(format!(
             "{} is {}, and \"{}\" is {}. Fix: give {}",
             name.name,
-            if name.vector {
-                "a vector"
-            } else {
-                "a number"
-            },
+            if name.vector { "a vector" } else { "a number" },
             value_text.trim(),
             if value.is_vector() {
                 "three numbers"
@@ -542,7 +550,8 @@ impl StepsExpected {
             .into_iter()
             .map(|(slip, s)| (slip, Source::of(problem, &s)))
             .collect();
-        let ambient_lights: Vec<usize> = problem.ambient_info.iter().map(|a| a.file_index).collect();
+        let ambient_lights: Vec<usize> =
+            problem.ambient_info.iter().map(|a| a.file_index).collect();
         Ok(StepsExpected {
             written,
             readings,
@@ -700,7 +709,10 @@ pub fn judge_steps(
                 .readings
                 .iter()
                 .filter(|(c, likely, _)| !likely && Some(*c) != j.reading)
-                .find(|(_, _, s)| s.find(g.name, light).is_some_and(|q| within(g.value, q.value)))
+                .find(|(_, _, s)| {
+                    s.find(g.name, light)
+                        .is_some_and(|q| within(g.value, q.value))
+                })
                 .map(|(c, _, _)| *c);
             if j.verdict == StepVerdict::Wrong {
                 j.slips = x
@@ -735,6 +747,8 @@ pub fn judge_steps(
 pub struct StepsChecked {
     pub file: String,
     pub outcome: Result<StepsJudged, Failure>,
+    /// Likely unit mistakes in the problem file (never errors).
+    pub warnings: Vec<crate::problem::warnings::Warning>,
 }
 
 impl StepsChecked {
@@ -752,9 +766,11 @@ impl StepsChecked {
 /// Checks the steps of one problem file.
 pub fn check_steps(path: &Path, given: &[GivenStep], strict: bool) -> StepsChecked {
     let file = path.display().to_string();
+    let mut warnings = Vec::new();
     let outcome = crate::problem::load::<f64>(path)
         .map_err(|e| Failure::problem(&e))
         .and_then(|(_, p)| {
+            warnings.clone_from(&p.warnings);
             StepsExpected::of(&p).map_err(|e| Failure::problem(&e.at(path)))
         })
         .and_then(|x| {
@@ -764,7 +780,11 @@ pub fn check_steps(path: &Path, given: &[GivenStep], strict: bool) -> StepsCheck
                 message: format!("{file}: --step: {m}"),
             })
         });
-    StepsChecked { file, outcome }
+    StepsChecked {
+        file,
+        outcome,
+        warnings,
+    }
 }
 
 /// "Eq. 4.7: cos θ = −N·L", or the formula alone.
@@ -991,6 +1011,9 @@ pub struct StepsDocument {
     pub accepted: bool,
     pub steps: Option<StepsOut>,
     pub error: Option<Failure>,
+    /// Likely unit mistakes in the problem file; absent when there are none.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub warnings: Vec<crate::report::json::WarningOut>,
 }
 
 /// The verdict of a file's steps as a whole: the worst step's.
@@ -1014,6 +1037,7 @@ pub fn document(c: &StepsChecked) -> StepsDocument {
             accepted: j.accepted,
             steps: Some(steps_json(j)),
             error: None,
+            warnings: crate::report::json::warnings_out(&c.warnings),
         },
         Err(f) => StepsDocument {
             format_version: CHECK_FORMAT_VERSION,
@@ -1022,6 +1046,7 @@ pub fn document(c: &StepsChecked) -> StepsDocument {
             accepted: false,
             steps: None,
             error: Some(f.clone()),
+            warnings: Vec::new(),
         },
     }
 }

@@ -468,8 +468,8 @@ pub fn shade_with<R: Real, Rec: Recorder<R>, Vis: Visibility<R>, F: Formulas>(
                     Some(V3::<R>::ZERO)
                 } else {
                     let clamp = !formulas.raw_normal();
-                    let unit = (clamp && !formulas.half_vector() && !formulas.rounds())
-                        .then_some((r, v));
+                    let unit =
+                        (clamp && !formulas.half_vector() && !formulas.rounds()).then_some((r, v));
                     literal_pow(cos_phi, m.n_s, clamp, unit).map(|p| o_s * arrival.i_l * p)
                 };
                 SpecularTerm {

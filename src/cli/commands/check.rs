@@ -45,6 +45,9 @@ pub fn run(args: &CheckArgs) -> Result<Exit, CliError> {
     for path in &args.files {
         let c = check::check_file(path, &options);
         exit = exit.max(c.exit_code());
+        for w in &c.warnings {
+            error::warn(&crate::report::messages::warning(w, args.lang));
+        }
         if let Err(f) = &c.outcome {
             error::print(&f.message);
         }
@@ -131,6 +134,9 @@ fn with_steps(args: &CheckArgs, steps: &[check::steps::GivenStep]) -> Result<Exi
     let path = &args.files[0];
     let checked = check::steps::check_steps(path, steps, args.strict);
     let mut exit = checked.exit_code();
+    for w in &checked.warnings {
+        error::warn(&crate::report::messages::warning(w, args.lang));
+    }
     let answer = args.answer.as_ref().map(|_| {
         check::check_file(
             path,
@@ -172,8 +178,9 @@ fn with_steps(args: &CheckArgs, steps: &[check::steps::GivenStep]) -> Result<Exi
                     }
                     v
                 }
-                None => serde_json::to_value(check::steps::document(&checked))
-                    .expect("steps serialise"),
+                None => {
+                    serde_json::to_value(check::steps::document(&checked)).expect("steps serialise")
+                }
             };
             output::json_text(vec![doc])
         }
