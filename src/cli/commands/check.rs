@@ -87,19 +87,12 @@ fn given_steps(args: &CheckArgs) -> Result<Vec<check::steps::GivenStep>, CliErro
     let mut out = Vec::new();
     for text in &args.step {
         out.push(check::steps::parse_step(text).map_err(|e| {
-            let (message, fix) = match e.message.split_once(". Fix: ") {
-                Some((m, f)) => (m.to_owned(), f.to_owned()),
-                None => (
-                    e.message,
-                    "write NAME=VALUE, such as --step cos_theta=0.98995 or --step R=0.6,0,0.8"
-                        .to_owned(),
-                ),
-            };
-            CliError::Usage {
-                flag: "--step".into(),
-                message,
-                fix,
-            }
+            step_usage(
+                "--step",
+                "",
+                e,
+                "write NAME=VALUE, such as --step cos_theta=0.98995 or --step R=0.6,0,0.8",
+            )
         })?);
     }
     if let Some(path) = &args.steps {
@@ -110,23 +103,29 @@ fn given_steps(args: &CheckArgs) -> Result<Vec<check::steps::GivenStep>, CliErro
             fix: "check the path, and that the file exists and is UTF-8 text".into(),
         })?;
         let read = check::steps::parse_steps_json(&text).map_err(|e| {
-            let (message, fix) = match e.message.split_once(". Fix: ") {
-                Some((m, f)) => (m.to_owned(), f.to_owned()),
-                None => (
-                    e.message,
-                    "one JSON object of names and values, such as {\"cos_theta\": 0.98995}"
-                        .to_owned(),
-                ),
-            };
-            CliError::Usage {
-                flag: "--steps".into(),
-                message: format!("{shown}: {message}"),
-                fix,
-            }
+            step_usage(
+                "--steps",
+                &format!("{shown}: "),
+                e,
+                "one JSON object of names and values, such as {\"cos_theta\": 0.98995}",
+            )
         })?;
         out.extend(read);
     }
     Ok(out)
+}
+
+/// A step that cannot be read, as a usage error: its own fix where it gives one, else `fix`.
+fn step_usage(flag: &str, prefix: &str, e: check::steps::BadStep, fix: &str) -> CliError {
+    let (message, fix) = match e.message.split_once(". Fix: ") {
+        Some((m, f)) => (m.to_owned(), f.to_owned()),
+        None => (e.message, fix.to_owned()),
+    };
+    CliError::Usage {
+        flag: flag.into(),
+        message: format!("{prefix}{message}"),
+        fix,
+    }
 }
 
 /// `phong check FILE --step …`: the steps judged (and the answer, when one is given too).
