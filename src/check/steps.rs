@@ -200,9 +200,11 @@ pub fn lookup(text: &str) -> Option<Name> {
 pub struct GivenStep {
     /// As written (`cos_theta[1]`), for the report.
     pub text: String,
+    /// The quantity named.
     pub name: Name,
     /// The `[i]` given: an index in the file's `lights`.
     pub light: Option<usize>,
+    /// The value given.
     pub value: Value,
 }
 
@@ -210,6 +212,7 @@ pub struct GivenStep {
 #[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
 #[error("{message}")]
 pub struct BadStep {
+    /// What was expected instead.
     pub message: String,
 }
 
@@ -357,11 +360,13 @@ pub fn parse_steps_json(text: &str) -> Result<Vec<GivenStep>, BadStep> {
 /// One quantity of a solution.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Quantity {
+    /// The quantity.
     pub name: Name,
     /// The light's index in the file's `lights` (per-light quantities).
     pub light: Option<usize>,
     /// Its place in the order of the solution.
     pub order: usize,
+    /// Its value.
     pub value: Value,
     /// The ungated value, where gating changed it (a diffuse or specular term).
     pub literal: Option<Value>,
@@ -606,9 +611,11 @@ pub enum StepVerdict {
 /// One step judged.
 #[derive(Clone, Debug, PartialEq)]
 pub struct JudgedStep {
+    /// The step as given.
     pub given: GivenStep,
     /// The light it was judged for (file index).
     pub light: Option<usize>,
+    /// Right, the likely intended reading's, or wrong.
     pub verdict: StepVerdict,
     /// The quantity as written (or, when the problem as written has none, as the likely
     /// intended reading has it), for the order and the expected value.
@@ -745,7 +752,9 @@ pub fn judge_steps(
 /// The steps of one file checked, or why they could not be.
 #[derive(Clone, Debug)]
 pub struct StepsChecked {
+    /// The problem file, as given.
     pub file: String,
+    /// The steps judged, or why they could not be.
     pub outcome: Result<StepsJudged, Failure>,
     /// Likely unit mistakes in the problem file (never errors).
     pub warnings: Vec<crate::problem::warnings::Warning>,
@@ -906,7 +915,9 @@ pub struct StepOut {
     pub text: String,
     /// The chapter's equation, when it numbers one.
     pub equation: Option<&'static str>,
+    /// The formula, in the chapter's symbols.
     pub formula: &'static str,
+    /// The value given.
     pub given: Value,
     /// The quantity as written (or in the likely intended reading, when the problem as written
     /// has none: see `expected_source`).
@@ -932,23 +943,31 @@ pub struct StepOut {
 /// The first wrong step, for scripts.
 #[derive(Serialize)]
 pub struct FirstWrongOut {
+    /// The step's name.
     pub name: &'static str,
+    /// The light's index in the file's `lights`, for a light's quantity.
     pub light: Option<usize>,
+    /// The chapter's equation, when it numbers one.
     pub equation: Option<&'static str>,
+    /// The formula, in the chapter's symbols.
     pub formula: &'static str,
 }
 
 /// The tolerance of every step.
 #[derive(Serialize)]
 pub struct StepToleranceOut {
+    /// The fraction of the quantity's size accepted (0.01).
     pub relative: f64,
+    /// The difference accepted near 0 (0.005).
     pub absolute: f64,
 }
 
 /// A file's steps, for scripts.
 #[derive(Serialize)]
 pub struct StepsOut {
+    /// Every step right, or the likely intended reading's without `--strict` (exit 0).
     pub accepted: bool,
+    /// The tolerance of every step.
     pub tolerance: StepToleranceOut,
     /// In the order of the solution.
     pub steps: Vec<StepOut>,
@@ -1004,12 +1023,17 @@ pub fn steps_json(j: &StepsJudged) -> StepsOut {
 /// The JSON document of a steps-only check (no `--answer`).
 #[derive(Serialize)]
 pub struct StepsDocument {
+    /// The version of the JSON of `phong check` and `phong grade`.
     pub format_version: u32,
+    /// The problem file, as given.
     pub file: String,
     /// "right" (every step), "reading", "wrong" or "invalid".
     pub verdict: &'static str,
+    /// Exit 0: every step right, or the likely intended reading's without `--strict`.
     pub accepted: bool,
+    /// The steps; `null` when they could not be checked.
     pub steps: Option<StepsOut>,
+    /// Why the steps could not be checked.
     pub error: Option<Failure>,
     /// Likely unit mistakes in the problem file; absent when there are none.
     #[serde(skip_serializing_if = "Vec::is_empty")]

@@ -41,8 +41,10 @@ pub struct Document<'a, R: Real> {
 /// A likely unit mistake: its code and the value given, the field, and the sentence (English).
 #[derive(Serialize)]
 pub struct WarningOut {
+    /// Its code, the value given and the field.
     #[serde(flatten)]
     pub warning: crate::problem::warnings::Warning,
+    /// The warning with its fix, in English.
     pub message: String,
 }
 
