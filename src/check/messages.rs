@@ -242,7 +242,8 @@ pub fn nearest(c: &super::Candidate, distance: f64, tolerance: f64, lang: Lang) 
             num(tolerance)
         ),
         (Lang::Pt, true) => format!(
-            "perto de {what}: no máximo {} de diferença por canal (tolerância ±{})",
+            "perto {}: no máximo {} de diferença por canal (tolerância ±{})",
+            de(&what),
             num(distance),
             num(tolerance)
         ),
@@ -252,6 +253,22 @@ pub fn nearest(c: &super::Candidate, distance: f64, tolerance: f64, lang: Lang) 
             num(tolerance)
         ),
     }
+}
+
+/// "de" before a Portuguese noun phrase, contracted with its article as Portuguese requires
+/// ("perto da leitura", "perto do problema"): "de a" is not written.
+fn de(phrase: &str) -> String {
+    for (article, contracted) in [
+        ("os ", "dos "),
+        ("as ", "das "),
+        ("o ", "do "),
+        ("a ", "da "),
+    ] {
+        if let Some(rest) = phrase.strip_prefix(article) {
+            return format!("{contracted}{rest}");
+        }
+    }
+    format!("de {phrase}")
 }
 
 /// What the expected colour is: the problem as written or a reading, clamped or not.
@@ -537,5 +554,25 @@ pub fn step_tolerance(relative: f64, absolute: f64, lang: Lang) -> String {
             "tolerância: {pct} % do tamanho do valor ou ±{}, o que for maior (cálculo à mão)",
             num(absolute)
         ),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::de;
+
+    #[test]
+    fn de_is_contracted_with_the_article_as_portuguese_writes_it() {
+        assert_eq!(
+            de("a leitura provavelmente pretendida"),
+            "da leitura provavelmente pretendida"
+        );
+        assert_eq!(
+            de("o problema como enunciado"),
+            "do problema como enunciado"
+        );
+        assert_eq!(de("os erros"), "dos erros");
+        assert_eq!(de("as cores"), "das cores");
+        assert_eq!(de("erro de sinal"), "de erro de sinal");
     }
 }
