@@ -8,7 +8,6 @@ use serde::Serialize;
 
 use super::messages::{self, Line};
 use super::{Answer, Comparison, Scale, Verdict, VerdictKind};
-use crate::cli::Exit;
 use crate::problem::ProblemError;
 use crate::report::lang::Lang;
 use crate::report::number::num;
@@ -113,13 +112,25 @@ impl Serialize for FailureKind {
     }
 }
 
+/// What a check decided, in the three ways a caller acts on it (the command line maps them to
+/// the exit codes 0, 1 and 2).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Status {
+    /// Right, or the likely intended reading without `--strict`.
+    Accepted,
+    /// Wrong, or the likely intended reading under `--strict`.
+    Refused,
+    /// The answer or the problem could not be read, validated or solved.
+    Unchecked,
+}
+
 impl Checked {
-    /// 0 accepted, 1 wrong (or a reading under --strict), 2 cannot be checked.
-    pub fn exit_code(&self) -> Exit {
+    /// Whether the answer was accepted, refused, or could not be checked.
+    pub fn status(&self) -> Status {
         match &self.outcome {
-            Ok(j) if j.verdict.accepted => Exit::Success,
-            Ok(_) => Exit::Wrong,
-            Err(_) => Exit::BadInput,
+            Ok(j) if j.verdict.accepted => Status::Accepted,
+            Ok(_) => Status::Refused,
+            Err(_) => Status::Unchecked,
         }
     }
 }

@@ -40,7 +40,7 @@ pub fn run(args: &CheckArgs) -> Result<Exit, CliError> {
     let mut docs = Vec::new();
     for path in &args.files {
         let c = check::check_file(path, &options);
-        exit = exit.max(c.exit_code());
+        exit = exit.max(exit_of(&c));
         if let Err(f) = &c.outcome {
             error::print(&f.message);
         }
@@ -63,6 +63,15 @@ pub fn run(args: &CheckArgs) -> Result<Exit, CliError> {
         output::emit(args.output.as_deref(), &out)?;
     }
     Ok(exit)
+}
+
+/// A check's exit: 0 accepted, 1 refused, 2 not checked.
+fn exit_of(checked: &check::report::Checked) -> Exit {
+    match checked.status() {
+        check::report::Status::Accepted => Exit::Success,
+        check::report::Status::Refused => Exit::Wrong,
+        check::report::Status::Unchecked => Exit::BadInput,
+    }
 }
 
 /// `phong check --slips`: what each applicable slip gives, for an instructor.
