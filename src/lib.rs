@@ -15,13 +15,14 @@
 //! - [`cli`]: the `phong` command line.
 
 pub mod check;
+#[doc(hidden)]
 pub mod cli;
 pub mod core;
 pub mod export;
-pub mod generate;
+pub(crate) mod generate;
 pub mod geometry;
 pub mod problem;
 pub mod report;
 pub mod solve;
 pub mod tracer;
-pub mod tradeoff;
+pub(crate) mod tradeoff;

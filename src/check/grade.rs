@@ -88,7 +88,7 @@ pub struct Report {
 /// The CSV cannot be read at all (a row that cannot be read is reported in its place instead).
 #[derive(Debug, thiserror::Error)]
 #[error("{path}: cannot read the file: {source}. Fix: check the path, and that the file exists and is readable")]
-pub struct Unreadable {
+pub(crate) struct Unreadable {
     pub path: PathBuf,
     #[source]
     pub source: std::io::Error,
@@ -136,7 +136,7 @@ impl Cache<'_> {
 }
 
 /// Grades the CSV file at `path`.
-pub fn grade_file(path: &Path, options: &Options) -> Result<Report, Unreadable> {
+pub(crate) fn grade_file(path: &Path, options: &Options) -> Result<Report, Unreadable> {
     let bytes = std::fs::read(path).map_err(|source| Unreadable {
         path: path.to_owned(),
         source,
@@ -403,7 +403,7 @@ pub fn rows_csv(report: &Report) -> Vec<u8> {
 }
 
 /// The summary per exercise as CSV.
-pub fn summary_csv(report: &Report) -> Vec<u8> {
+pub(crate) fn summary_csv(report: &Report) -> Vec<u8> {
     let mut w = csv::Writer::from_writer(Vec::new());
     w.write_record([
         "exercise", "rows", "right", "reading", "wrong", "invalid", "slips",

@@ -15,11 +15,11 @@
 //! - `wrong` (exit 1): anything else, with the slips whose colour it matches, and the other
 //!   reading it matches, if any (4.2's "normal reversed" is |cos θ|, a slip, not an intent).
 
-pub mod answer;
+pub(crate) mod answer;
 pub mod grade;
-pub mod messages;
+pub(crate) mod messages;
 pub mod report;
-pub mod slips;
+pub(crate) mod slips;
 
 use std::path::Path;
 
@@ -27,8 +27,10 @@ use crate::problem::{Problem, ProblemError, ProblemFile};
 use crate::solve::{Evaluation, ReadingCode};
 use report::{AnswerSource, Checked, Failure, FailureKind, Judged};
 
-pub use answer::{Answer, BadAnswer, Key, Scale};
-pub use slips::{Outcome, Slip};
+pub(crate) use answer::Key;
+pub use answer::{Answer, Scale};
+pub(crate) use slips::Outcome;
+pub use slips::Slip;
 
 /// A colour an answer can be compared with, on the 0–1 scale.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -74,7 +76,7 @@ pub struct Comparison {
 /// Compares an answer with a target: the clamped colour first, then (0–1 scale only) the
 /// unclamped one; the first within the tolerance, or else the clamped one. `None` when the
 /// target has no value on the answer's scale (a literal value against an 8-bit answer).
-pub fn compare(answer: &Answer, target: &Target, tolerance: f64) -> Option<Comparison> {
+pub(crate) fn compare(answer: &Answer, target: &Target, tolerance: f64) -> Option<Comparison> {
     let with = |against, expected: [f64; 3]| {
         let difference = [0, 1, 2].map(|i| answer.values[i] - expected[i]);
         // A decimal answer is not exact in binary: 0.25 − 0.245 is 0.0050000000000000044.
@@ -111,7 +113,7 @@ pub struct ReadingTarget {
 
 /// Everything an answer to one problem is judged against, computed once.
 #[derive(Clone, Debug)]
-pub struct Expected {
+pub(crate) struct Expected {
     /// The problem as written; `None` when there is nothing to shade (the ray hits nothing).
     pub solution: Option<Target>,
     pub readings: Vec<ReadingTarget>,
@@ -121,7 +123,7 @@ pub struct Expected {
 
 impl Expected {
     /// Solves the problem, its readings and its slips (f64, the reference precision).
-    pub fn of(problem: &Problem<f64>) -> Result<Expected, crate::problem::Invalid> {
+    pub(crate) fn of(problem: &Problem<f64>) -> Result<Expected, crate::problem::Invalid> {
         let solution = crate::solve::solve(problem)?;
         let base = solution.evaluation.as_ref().map(Target::of);
         let readings = solution
@@ -142,7 +144,7 @@ impl Expected {
 
     /// The colour an answer is measured against: the problem as written, or, when it has none,
     /// its likely intended reading.
-    pub fn reference(&self) -> Option<Reference> {
+    pub(crate) fn reference(&self) -> Option<Reference> {
         match self.solution {
             Some(target) => Some(Reference {
                 target,
@@ -162,7 +164,7 @@ impl Expected {
 
 /// The colour an answer is measured against ([`Expected::reference`]).
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Reference {
+pub(crate) struct Reference {
     pub target: Target,
     /// `None` for the problem as written, or the reading whose colour it is.
     pub reading: Option<ReadingCode>,
@@ -188,7 +190,7 @@ pub struct Diagnosis {
 
 impl Diagnosis {
     /// The slips that are mistakes (all but the likely intended reading's).
-    pub fn mistakes(&self) -> Vec<Slip> {
+    pub(crate) fn mistakes(&self) -> Vec<Slip> {
         let m: Vec<Slip> = self
             .slips
             .iter()
@@ -227,7 +229,7 @@ pub struct Verdict {
 }
 
 /// Judges an answer.
-pub fn judge(expected: &Expected, answer: &Answer, tolerance: f64, strict: bool) -> Verdict {
+pub(crate) fn judge(expected: &Expected, answer: &Answer, tolerance: f64, strict: bool) -> Verdict {
     let mut v = Verdict {
         kind: VerdictKind::Wrong,
         accepted: false,

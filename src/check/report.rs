@@ -14,7 +14,7 @@ use crate::report::number::num;
 use crate::solve::ReadingCode;
 
 /// The version of the JSON output of `phong check` and `phong grade`.
-pub const CHECK_FORMAT_VERSION: u32 = 1;
+pub(crate) const CHECK_FORMAT_VERSION: u32 = 1;
 
 /// Where the answer came from.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
@@ -56,7 +56,7 @@ pub struct Failure {
 
 impl Failure {
     /// A problem file that cannot be read, parsed, validated or solved.
-    pub fn problem(e: &ProblemError) -> Self {
+    pub(crate) fn problem(e: &ProblemError) -> Self {
         Failure {
             kind: FailureKind::of(e),
             field: e.field().map(str::to_owned),
@@ -84,7 +84,7 @@ pub enum FailureKind {
 
 impl FailureKind {
     /// The kind of a problem file's error.
-    pub fn of(e: &ProblemError) -> Self {
+    pub(crate) fn of(e: &ProblemError) -> Self {
         match e {
             ProblemError::Read { .. } => FailureKind::Read,
             ProblemError::Syntax { .. } => FailureKind::Syntax,
@@ -115,7 +115,7 @@ impl Serialize for FailureKind {
 /// What a check decided, in the three ways a caller acts on it (the command line maps them to
 /// the exit codes 0, 1 and 2).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Status {
+pub(crate) enum Status {
     /// Right, or the likely intended reading without `--strict`.
     Accepted,
     /// Wrong, or the likely intended reading under `--strict`.
@@ -126,7 +126,7 @@ pub enum Status {
 
 impl Checked {
     /// Whether the answer was accepted, refused, or could not be checked.
-    pub fn status(&self) -> Status {
+    pub(crate) fn status(&self) -> Status {
         match &self.outcome {
             Ok(j) if j.verdict.accepted => Status::Accepted,
             Ok(_) => Status::Refused,
@@ -396,7 +396,7 @@ pub fn json(c: &Checked) -> CheckOut {
 }
 
 /// 1 or 255.
-pub fn scale_number(s: Scale) -> u32 {
+pub(crate) fn scale_number(s: Scale) -> u32 {
     match s {
         Scale::Unit => 1,
         Scale::Bits8 => 255,
@@ -404,7 +404,7 @@ pub fn scale_number(s: Scale) -> u32 {
 }
 
 /// The stable code of a verdict.
-pub fn verdict_code(k: VerdictKind) -> &'static str {
+pub(crate) fn verdict_code(k: VerdictKind) -> &'static str {
     match k {
         VerdictKind::Right => "right",
         VerdictKind::Reading => "reading",
@@ -413,7 +413,7 @@ pub fn verdict_code(k: VerdictKind) -> &'static str {
 }
 
 /// What the problem, its readings and each applicable slip give (`phong check --slips`).
-pub fn slips_text(file: &str, x: &super::Expected, lang: Lang) -> String {
+pub(crate) fn slips_text(file: &str, x: &super::Expected, lang: Lang) -> String {
     let mut out = String::new();
     let _ = writeln!(out, "{file}");
     let show = |t: &super::Target| match t.clamped {

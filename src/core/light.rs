@@ -19,7 +19,7 @@ pub enum Falloff {
 
 impl Falloff {
     /// The falloff from its exponent f ∈ {0, 1, 2}.
-    pub fn from_exponent(f: u8) -> Option<Falloff> {
+    pub(crate) fn from_exponent(f: u8) -> Option<Falloff> {
         match f {
             0 => Some(Falloff::None),
             1 => Some(Falloff::Linear),
@@ -29,7 +29,7 @@ impl Falloff {
     }
 
     /// The exponent f.
-    pub fn exponent(self) -> u8 {
+    pub(crate) fn exponent(self) -> u8 {
         match self {
             Falloff::None => 0,
             Falloff::Linear => 1,
@@ -40,7 +40,7 @@ impl Falloff {
     /// The factor 1/d^f, for the record, computed as repeated division so that d² is never
     /// formed: d = 1e160 gives 1e-320 in f64 rather than overflowing d² to infinity.
     #[inline]
-    pub fn factor<R: Real>(self, d: R) -> R {
+    pub(crate) fn factor<R: Real>(self, d: R) -> R {
         match self {
             Falloff::None => R::ONE,
             Falloff::Linear => R::ONE / d,
@@ -51,7 +51,7 @@ impl Falloff {
     /// C_l / d^f, Eq. 4.2, dividing the colour itself so that neither d^f nor 1/d^f is formed:
     /// a tiny colour close to the light, or a huge one far from it, stays representable.
     #[inline]
-    pub fn attenuate<R: Real, V: Vector<R>>(self, color: V, d: R) -> V {
+    pub(crate) fn attenuate<R: Real, V: Vector<R>>(self, color: V, d: R) -> V {
         match self {
             Falloff::None => color,
             Falloff::Linear => color / d,
@@ -89,7 +89,7 @@ impl<R: Real> Cone<R> {
     /// The bound (radians) on the rounding error of the computed ψ − γ for an exact P: a point
     /// with |ψ − γ| within it is on the edge to within rounding (see `CONE_EDGE_ULPS`).
     #[inline]
-    pub fn edge_tolerance(&self) -> R {
+    pub(crate) fn edge_tolerance(&self) -> R {
         R::from_f64(CONE_EDGE_ULPS) * R::EPSILON * (R::ONE + self.gamma)
     }
 }
@@ -193,14 +193,14 @@ const CONE_COS_MARGIN_ULPS: f64 = 128.0;
 impl<R: Real> Light<R> {
     /// What this light delivers at P (Eq. 4.1–4.4), with every intermediate.
     #[inline]
-    pub fn arrive(&self, p: V3<R>) -> Arrival<R> {
+    pub(crate) fn arrive(&self, p: V3<R>) -> Arrival<R> {
         self.arrive_with(p, true)
     }
 
     /// [`Light::arrive`]; without `detail`, a spot's ψ (degrees) is left at 0 where cos ψ alone
     /// decides the cone test, to spare an atan2 on the tracer's hot path.
     #[inline]
-    pub fn arrive_with(&self, p: V3<R>, detail: bool) -> Arrival<R> {
+    pub(crate) fn arrive_with(&self, p: V3<R>, detail: bool) -> Arrival<R> {
         match self.kind {
             LightKind::Directional { direction } => Arrival {
                 l: direction,
@@ -297,7 +297,7 @@ impl<R: Real> Light<R> {
     }
 
     /// The light's position, for point and spot lights.
-    pub fn position(&self) -> Option<V3<R>> {
+    pub(crate) fn position(&self) -> Option<V3<R>> {
         match self.kind {
             LightKind::Point { position, .. } | LightKind::Spot { position, .. } => Some(position),
             LightKind::Directional { .. } => None,

@@ -18,17 +18,18 @@
 //!
 //! Everything is generic over [`Real`] (f32 or f64) from one source.
 
-pub mod light;
-pub mod material;
+pub(crate) mod light;
+pub(crate) mod material;
 pub mod real;
-pub mod shade;
-pub mod vector;
+pub(crate) mod shade;
+pub(crate) mod vector;
 
 pub use light::{Arrival, Cone, ConeTest, Falloff, Light, LightKind, LightSet, Reach};
 pub use material::Material;
 pub use real::{Precision, Real, Vector, V3};
 pub use shade::{
-    shade, shade_with, AllVisible, Chapter, Formulas, LightStatus, LightTerm, NoRecord, Recorder,
-    Shade, ShadingPoint, Slipped, SpecularStatus, SpecularTerm, Visibility,
+    shade, AllVisible, LightStatus, LightTerm, NoRecord, Recorder, Shade, ShadingPoint,
+    SpecularStatus, SpecularTerm, Visibility,
 };
-pub use vector::{between, normalize, Normalized};
+pub(crate) use shade::{shade_with, Chapter, Formulas, Slipped};
+pub use vector::{between, Normalized};

@@ -295,7 +295,7 @@ pub enum Precision {
 
 impl Precision {
     /// "f32" or "f64", as `--precision` and [`Real::NAME`] write it.
-    pub fn name(self) -> &'static str {
+    pub(crate) fn name(self) -> &'static str {
         match self {
             Precision::F32 => f32::NAME,
             Precision::F64 => f64::NAME,
@@ -311,7 +311,7 @@ pub fn v3<R: Real>(a: [f64; 3]) -> V3<R> {
 
 /// Widens a vector to f64 components.
 #[inline]
-pub fn to_f64_array<R: Real>(v: V3<R>) -> [f64; 3] {
+pub(crate) fn to_f64_array<R: Real>(v: V3<R>) -> [f64; 3] {
     let a = v.to_array();
     [a[0].to_f64(), a[1].to_f64(), a[2].to_f64()]
 }

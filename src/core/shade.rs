@@ -215,7 +215,7 @@ fn literal_pow<R: Real>(x: R, n_s: R, clamp: bool, unit: Option<(V3<R>, V3<R>)>)
 /// check` can reproduce it with the same code (every other slip is a change of the input).
 /// [`Chapter`] answers `false` to both as a constant, so the chapter's path compiles to exactly
 /// the code it would be without these switches; [`Slipped`] answers at run time.
-pub trait Formulas: Copy {
+pub(crate) trait Formulas: Copy {
     /// cos θ taken as |N·L| instead of −N·L (Eq. 4.7): a light behind the surface lights it.
     fn abs_cos_theta(self) -> bool;
     /// cos φ taken as N·H with Blinn's half-vector H = (−L − V)/‖−L − V‖ instead of −R·V
@@ -228,7 +228,7 @@ pub trait Formulas: Copy {
 
 /// The chapter's formulas, unchanged: the tracer's and the solver's.
 #[derive(Clone, Copy, Debug, Default)]
-pub struct Chapter;
+pub(crate) struct Chapter;
 
 impl Formulas for Chapter {
     #[inline(always)]
@@ -247,7 +247,7 @@ impl Formulas for Chapter {
 
 /// Formula switches chosen at run time (the mistake diagnosis of `phong check`).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub struct Slipped {
+pub(crate) struct Slipped {
     pub abs_cos_theta: bool,
     pub half_vector: bool,
     pub raw_normal: bool,
@@ -278,7 +278,7 @@ impl Formulas for Slipped {
 /// shrinks with cos θ itself, and such a grazing light is decided as the exact value says in
 /// any precision.
 #[inline]
-pub fn tangent_tolerance<R: Real>(n: V3<R>, l: V3<R>) -> R {
+pub(crate) fn tangent_tolerance<R: Real>(n: V3<R>, l: V3<R>) -> R {
     let gamma_40 = R::from_f64(20.0) * R::EPSILON / (R::ONE - R::from_f64(20.0) * R::EPSILON);
     let sum = (n.x() * l.x()).abs() + (n.y() * l.y()).abs() + (n.z() * l.z()).abs();
     gamma_40 * sum
@@ -300,7 +300,7 @@ pub fn shade<R: Real, Rec: Recorder<R>, Vis: Visibility<R>>(
 /// [`shade`] with a formula switched as `formulas` says (see [`Formulas`]); with [`Chapter`]
 /// it is [`shade`] itself.
 #[inline]
-pub fn shade_with<R: Real, Rec: Recorder<R>, Vis: Visibility<R>, F: Formulas>(
+pub(crate) fn shade_with<R: Real, Rec: Recorder<R>, Vis: Visibility<R>, F: Formulas>(
     formulas: F,
     at: &ShadingPoint<R>,
     m: &Material<R>,

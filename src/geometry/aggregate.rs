@@ -37,7 +37,7 @@ pub struct AggregateHit<R: Real> {
 
 impl<R: Real> Aggregate<R> {
     /// Builds the BVH over the bounded shapes.
-    pub fn new(shapes: Vec<Shape<R>>) -> Self {
+    pub(crate) fn new(shapes: Vec<Shape<R>>) -> Self {
         let mut unbounded = Vec::new();
         let mut bounded = Vec::new();
         let mut boxes = Vec::new();
@@ -64,12 +64,12 @@ impl<R: Real> Aggregate<R> {
     }
 
     /// The shapes, in the order given.
-    pub fn shapes(&self) -> &[Shape<R>] {
+    pub(crate) fn shapes(&self) -> &[Shape<R>] {
         &self.shapes
     }
 
     /// The nearest hit with 0 < t < `t_max`.
-    pub fn nearest(&self, ray: &Ray<R>, t_max: R) -> Option<AggregateHit<R>> {
+    pub(crate) fn nearest(&self, ray: &Ray<R>, t_max: R) -> Option<AggregateHit<R>> {
         let mut best: Option<(usize, R)> = None;
         let mut t_max = t_max;
         for &i in &self.unbounded {
@@ -101,7 +101,7 @@ impl<R: Real> Aggregate<R> {
     }
 
     /// Whether any surface meets the ray with 0 < t < `t_max`.
-    pub fn occluded(&self, ray: &Ray<R>, t_max: R) -> bool {
+    pub(crate) fn occluded(&self, ray: &Ray<R>, t_max: R) -> bool {
         let blocks = |i: &u32| self.shapes[*i as usize].hit_t(ray, t_max).is_some();
         if self.unbounded.iter().any(blocks) {
             return true;
@@ -120,7 +120,7 @@ impl<R: Real> Aggregate<R> {
 /// Shadow rays from a hit point, as the core's [`Visibility`]: each one leaves from the hit's
 /// offset origin towards the light; to a point or spot light it stops a relative hair short of
 /// the light (pbrt's `1 − ShadowEpsilon`), to a directional light it goes on for ever.
-pub struct ShadowRays<'a, R: Real> {
+pub(crate) struct ShadowRays<'a, R: Real> {
     pub aggregate: &'a Aggregate<R>,
     /// The hit point's error bound and the surface's own normal, for the offset.
     pub p_error: V3<R>,
@@ -132,7 +132,7 @@ pub struct ShadowRays<'a, R: Real> {
 impl<R: Real> ShadowRays<'_, R> {
     /// The shadow ray from `p` towards a light whose L (light to point) is `l`, and how far
     /// it may go; `None` when the light is too close to the point to be told apart.
-    pub fn ray(&self, p: V3<R>, light: &Light<R>, l: V3<R>) -> Option<(Ray<R>, R)> {
+    pub(crate) fn ray(&self, p: V3<R>, light: &Light<R>, l: V3<R>) -> Option<(Ray<R>, R)> {
         let towards = -l;
         let origin = offset_origin::<R>(p, self.p_error, self.normal, towards);
         match light.position() {

@@ -11,7 +11,7 @@ use crate::core::{Real, Vector, V3};
 /// γ_n = nε/(1 − nε), with ε the unit roundoff (`EPSILON`/2): a bound on the relative error of
 /// n successive roundings, |(1 ± ε)ⁿ − 1| ≤ γ_n (Higham; pbrt-v4 §6.8.1, `gamma(n)`).
 #[inline]
-pub fn gamma<R: Real>(n: u32) -> R {
+pub(crate) fn gamma<R: Real>(n: u32) -> R {
     let ne = R::from_f64(f64::from(n)) * (R::EPSILON / R::TWO);
     ne / (R::ONE - ne)
 }
@@ -61,7 +61,7 @@ fn greater<R: Real>(a: R, b: R) -> R {
 impl<R: Real> Aabb<R> {
     /// The empty box: the identity of [`Aabb::union`].
     #[inline]
-    pub fn empty() -> Self {
+    pub(crate) fn empty() -> Self {
         let inf = infinity::<R>();
         Aabb {
             min: V3::<R>::splat(inf),
@@ -71,7 +71,7 @@ impl<R: Real> Aabb<R> {
 
     /// The box of a single point.
     #[inline]
-    pub fn of_point(p: V3<R>) -> Self {
+    pub(crate) fn of_point(p: V3<R>) -> Self {
         Aabb { min: p, max: p }
     }
 
@@ -90,14 +90,14 @@ impl<R: Real> Aabb<R> {
 
     /// Whether the box holds no point.
     #[inline]
-    pub fn is_empty(&self) -> bool {
+    pub(crate) fn is_empty(&self) -> bool {
         let (lo, hi) = (self.min.to_array(), self.max.to_array());
         !(0..3).all(|a| lo[a] <= hi[a])
     }
 
     /// The smallest box holding both.
     #[inline]
-    pub fn union(self, o: Self) -> Self {
+    pub(crate) fn union(self, o: Self) -> Self {
         Aabb {
             min: zip::<R>(self.min, o.min, lesser),
             max: zip::<R>(self.max, o.max, greater),
@@ -106,7 +106,7 @@ impl<R: Real> Aabb<R> {
 
     /// The smallest box holding this box and the point `p`.
     #[inline]
-    pub fn union_point(self, p: V3<R>) -> Self {
+    pub(crate) fn union_point(self, p: V3<R>) -> Self {
         Aabb {
             min: zip::<R>(self.min, p, lesser),
             max: zip::<R>(self.max, p, greater),
@@ -115,7 +115,7 @@ impl<R: Real> Aabb<R> {
 
     /// Whether `o` lies inside this box (boundary included).
     #[inline]
-    pub fn contains(&self, o: &Self) -> bool {
+    pub(crate) fn contains(&self, o: &Self) -> bool {
         let (a0, a1, b0, b1) = (
             self.min.to_array(),
             self.max.to_array(),
@@ -127,20 +127,20 @@ impl<R: Real> Aabb<R> {
 
     /// The centre, as ½min + ½max so that it cannot overflow.
     #[inline]
-    pub fn centroid(&self) -> V3<R> {
+    pub(crate) fn centroid(&self) -> V3<R> {
         let half = R::ONE / R::TWO;
         self.min * half + self.max * half
     }
 
     /// The extent max − min (negative on some axis for an empty box).
     #[inline]
-    pub fn diagonal(&self) -> V3<R> {
+    pub(crate) fn diagonal(&self) -> V3<R> {
         self.max - self.min
     }
 
     /// 2(dx·dy + dy·dz + dz·dx); 0 for an empty box.
     #[inline]
-    pub fn surface_area(&self) -> R {
+    pub(crate) fn surface_area(&self) -> R {
         if self.is_empty() {
             return R::ZERO;
         }
@@ -150,7 +150,7 @@ impl<R: Real> Aabb<R> {
 
     /// The axis (0 = x, 1 = y, 2 = z) along which the box is longest; the first on a tie.
     #[inline]
-    pub fn longest_axis(&self) -> usize {
+    pub(crate) fn longest_axis(&self) -> usize {
         let d = self.diagonal().to_array();
         if d[0] >= d[1] && d[0] >= d[2] {
             0
@@ -165,7 +165,7 @@ impl<R: Real> Aabb<R> {
     /// component-wise (`inv_dir`, ±∞ where D has a ±0 component). Conservative: a box the ray
     /// really meets is never rejected (pbrt-v4 `Bounds3::IntersectP`, §6.1.2 and §6.8.2).
     #[inline]
-    pub fn hit(&self, origin: V3<R>, inv_dir: V3<R>, t_max: R) -> bool {
+    pub(crate) fn hit(&self, origin: V3<R>, inv_dir: V3<R>, t_max: R) -> bool {
         let (lo, hi) = (self.min.to_array(), self.max.to_array());
         let (o, inv) = (origin.to_array(), inv_dir.to_array());
         // Widen the far distances by the rounding of (b − o)·inv, pbrt's 1 + 2γ₃.
@@ -196,14 +196,14 @@ impl<R: Real> Aabb<R> {
     /// [`Aabb::hit`] for a ray, computing 1/D here; prefer [`Aabb::hit`] with a 1/D computed
     /// once per ray when testing many boxes.
     #[inline]
-    pub fn hit_ray(&self, ray: &Ray<R>, t_max: R) -> bool {
+    pub(crate) fn hit_ray(&self, ray: &Ray<R>, t_max: R) -> bool {
         self.hit(ray.origin, inverse::<R>(ray.direction), t_max)
     }
 }
 
 /// 1/D component-wise (±∞ for a ±0 component), for [`Aabb::hit`].
 #[inline]
-pub fn inverse<R: Real>(d: V3<R>) -> V3<R> {
+pub(crate) fn inverse<R: Real>(d: V3<R>) -> V3<R> {
     let d = d.to_array();
     V3::<R>::new(R::ONE / d[0], R::ONE / d[1], R::ONE / d[2])
 }
@@ -212,13 +212,13 @@ pub fn inverse<R: Real>(d: V3<R>) -> V3<R> {
 /// seeded, so every run tests the same cases, and no dependency.
 #[cfg(test)]
 pub(crate) mod test_rng {
-    pub struct Rng(u64);
+    pub(crate) struct Rng(u64);
 
     impl Rng {
-        pub fn new(seed: u64) -> Self {
+        pub(crate) fn new(seed: u64) -> Self {
             Rng(seed)
         }
-        pub fn next_u64(&mut self) -> u64 {
+        pub(crate) fn next_u64(&mut self) -> u64 {
             self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
             let mut z = self.0;
             z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
@@ -226,15 +226,15 @@ pub(crate) mod test_rng {
             z ^ (z >> 31)
         }
         /// Uniform in [0, 1).
-        pub fn unit(&mut self) -> f64 {
+        pub(crate) fn unit(&mut self) -> f64 {
             (self.next_u64() >> 11) as f64 / (1u64 << 53) as f64
         }
         /// Uniform in [lo, hi).
-        pub fn range(&mut self, lo: f64, hi: f64) -> f64 {
+        pub(crate) fn range(&mut self, lo: f64, hi: f64) -> f64 {
             lo + (hi - lo) * self.unit()
         }
         /// A uniformly distributed unit vector (normalised Gaussian-free: rejection in the cube).
-        pub fn direction(&mut self) -> [f64; 3] {
+        pub(crate) fn direction(&mut self) -> [f64; 3] {
             loop {
                 let v = [
                     self.range(-1.0, 1.0),

@@ -3,7 +3,7 @@
 //! error bound, so a secondary or shadow ray never re-hits the surface it leaves, at any scale,
 //! without a global epsilon.
 
-pub use super::bounds::gamma;
+pub(crate) use super::bounds::gamma;
 use crate::core::{Real, Vector, V3};
 
 /// Where a ray meets a surface (t > 0).

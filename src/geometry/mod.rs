@@ -4,23 +4,25 @@
 //! hit behind the origin (t ≤ 0) counts is the caller's decision (DESIGN.md: a hit needs t > 0,
 //! and the solver reports what the line would give when it meets a surface only behind).
 
-pub mod aggregate;
-pub mod bounds;
-pub mod bvh;
-pub mod hit;
-pub mod plane;
-pub mod ray;
-pub mod sphere;
-pub mod triangle;
+pub(crate) mod aggregate;
+pub(crate) mod bounds;
+pub(crate) mod bvh;
+pub(crate) mod hit;
+pub(crate) mod plane;
+pub(crate) mod ray;
+pub(crate) mod sphere;
+pub(crate) mod triangle;
 
-pub use aggregate::{Aggregate, AggregateHit, ShadowRays};
+pub(crate) use aggregate::ShadowRays;
+pub use aggregate::{Aggregate, AggregateHit};
 pub use bounds::Aabb;
 pub use bvh::{Bvh, BvhHit};
-pub use hit::{gamma, offset_origin, SurfaceHit};
+pub(crate) use hit::gamma;
+pub use hit::{offset_origin, SurfaceHit};
 pub use plane::Plane;
 pub use ray::Ray;
 pub use sphere::Sphere;
-pub use triangle::{Triangle, TriangleHit};
+pub use triangle::Triangle;
 
 use crate::core::{Real, Vector, V3};
 
@@ -39,7 +41,7 @@ pub struct LineHits<R: Real> {
 }
 
 impl<R: Real> LineHits<R> {
-    pub const NONE: Self = LineHits { t: [None, None] };
+    pub(crate) const NONE: Self = LineHits { t: [None, None] };
 
     /// The nearest hit in front of the origin (t > 0).
     pub fn nearest_in_front(&self) -> Option<R> {
@@ -47,7 +49,7 @@ impl<R: Real> LineHits<R> {
     }
 
     /// The hit behind the origin (t < 0) nearest to it.
-    pub fn nearest_behind(&self) -> Option<R> {
+    pub(crate) fn nearest_behind(&self) -> Option<R> {
         self.t
             .iter()
             .rev()
@@ -57,14 +59,14 @@ impl<R: Real> LineHits<R> {
     }
 
     /// Whether the line meets the surface exactly at the origin (t = 0).
-    pub fn at_origin(&self) -> bool {
+    pub(crate) fn at_origin(&self) -> bool {
         self.t.iter().flatten().any(|&t| t == R::ZERO)
     }
 }
 
 impl<R: Real> Shape<R> {
     /// The parameters where the ray's line meets the surface.
-    pub fn line_hits(&self, ray: &Ray<R>) -> LineHits<R> {
+    pub(crate) fn line_hits(&self, ray: &Ray<R>) -> LineHits<R> {
         match self {
             Shape::Plane(p) => LineHits {
                 t: [p.intersect_line(ray), None],
@@ -116,7 +118,7 @@ impl<R: Real> Shape<R> {
 
     /// The hit at a t found by [`Shape::hit_t`].
     #[inline]
-    pub fn hit_at(&self, ray: &Ray<R>, t: R) -> Option<SurfaceHit<R>> {
+    pub(crate) fn hit_at(&self, ray: &Ray<R>, t: R) -> Option<SurfaceHit<R>> {
         match self {
             Shape::Plane(pl) => {
                 // t carries the rounding of N·(Q − O)/(N·D); O + tD adds two more. (Each
@@ -149,7 +151,7 @@ impl<R: Real> Shape<R> {
     }
 
     /// The point at t, re-projected onto the surface where that reduces rounding error.
-    pub fn point_at(&self, ray: &Ray<R>, t: R) -> V3<R> {
+    pub(crate) fn point_at(&self, ray: &Ray<R>, t: R) -> V3<R> {
         match self {
             Shape::Plane(_) | Shape::Triangle(_) => ray.at(t),
             Shape::Sphere(s) => s.project(ray.at(t)),
@@ -159,7 +161,7 @@ impl<R: Real> Shape<R> {
     /// The surface's own unit normal at a point on it (the plane's as given, the sphere's
     /// outward); turning it to face a ray is the caller's choice. `None` when the precision
     /// cannot resolve it (see [`Sphere::normal_at`]).
-    pub fn normal_at(&self, p: V3<R>) -> Option<V3<R>> {
+    pub(crate) fn normal_at(&self, p: V3<R>) -> Option<V3<R>> {
         match self {
             Shape::Plane(pl) => Some(pl.normal),
             Shape::Sphere(s) => s.normal_at(p),
@@ -168,7 +170,7 @@ impl<R: Real> Shape<R> {
     }
 
     /// "plane", "sphere" or "triangle".
-    pub fn kind(&self) -> &'static str {
+    pub(crate) fn kind(&self) -> &'static str {
         match self {
             Shape::Plane(_) => "plane",
             Shape::Sphere(_) => "sphere",

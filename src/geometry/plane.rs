@@ -19,7 +19,7 @@ impl<R: Real> Plane<R> {
     /// point (docs/conventions.md, "Hits beyond the floating-point range"), so neither the tracer
     /// nor the solver shades, prints or spawns a ray from an infinite point.
     #[inline]
-    pub fn intersect_line(&self, ray: &Ray<R>) -> Option<R> {
+    pub(crate) fn intersect_line(&self, ray: &Ray<R>) -> Option<R> {
         let denom = self.normal.dot(ray.direction);
         if denom == R::ZERO {
             return None;

@@ -13,7 +13,7 @@ pub struct Ray<R: Real> {
 impl<R: Real> Ray<R> {
     /// The point O + tD.
     #[inline]
-    pub fn at(&self, t: R) -> V3<R> {
+    pub(crate) fn at(&self, t: R) -> V3<R> {
         self.origin + self.direction * t
     }
 }

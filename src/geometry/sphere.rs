@@ -77,13 +77,13 @@ impl<R: Real> Sphere<R> {
     /// The outward unit normal at a point on the sphere; `None` when the point cannot be told
     /// from the centre in this precision (a radius below the rounding of the coordinates).
     #[inline]
-    pub fn normal_at(&self, p: V3<R>) -> Option<V3<R>> {
+    pub(crate) fn normal_at(&self, p: V3<R>) -> Option<V3<R>> {
         normalize::<R>(p - self.center).map(|n| n.unit)
     }
 
     /// Moves a point computed as O + tD back onto the sphere's surface.
     #[inline]
-    pub fn project(&self, p: V3<R>) -> V3<R> {
+    pub(crate) fn project(&self, p: V3<R>) -> V3<R> {
         match normalize::<R>(p - self.center) {
             Some(n) => self.center + n.unit * self.radius,
             None => p,

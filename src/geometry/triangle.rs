@@ -22,7 +22,7 @@ pub struct Triangle<R: Real> {
 
 /// A ray's hit on a triangle, 0 < t < t_max.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct TriangleHit<R: Real> {
+pub(crate) struct TriangleHit<R: Real> {
     /// The ray parameter.
     pub t: R,
     /// Barycentric coordinates b₀, b₁, b₂ (non-negative, summing to 1 up to rounding).
@@ -62,7 +62,7 @@ impl<R: Real> Triangle<R> {
 
     /// The box of the three corners (exact: no arithmetic).
     #[inline]
-    pub fn bounds(&self) -> Aabb<R> {
+    pub(crate) fn bounds(&self) -> Aabb<R> {
         Aabb::of_point(self.p[0])
             .union_point(self.p[1])
             .union_point(self.p[2])
@@ -180,7 +180,7 @@ impl<R: Real> Triangle<R> {
     /// the rounding of the computation are rejected (pbrt's "t ≤ δt" test), which is what keeps
     /// a ray spawned from this triangle from hitting it again.
     #[inline]
-    pub fn intersect(&self, ray: &Ray<R>, t_max: R) -> Option<TriangleHit<R>> {
+    pub(crate) fn intersect(&self, ray: &Ray<R>, t_max: R) -> Option<TriangleHit<R>> {
         let RaySpace {
             e,
             det,
@@ -240,7 +240,7 @@ impl<R: Real> Triangle<R> {
     /// t (of either sign, 0 included) where the ray's *line* meets the triangle, by the same
     /// watertight test; the solver uses it to report a hit behind the origin.
     #[inline]
-    pub fn line_t(&self, ray: &Ray<R>) -> Option<R> {
+    pub(crate) fn line_t(&self, ray: &Ray<R>) -> Option<R> {
         let rs = self.ray_space(ray)?;
         let t = rs.t_scaled / rs.det;
         t.is_finite().then_some(t)

@@ -47,7 +47,7 @@ fn fix_suffix(fix: &str) -> String {
 
 impl ProblemError {
     /// A stable machine-readable kind for the JSON output: "read", "syntax", "invalid" or "usage".
-    pub fn kind(&self) -> &'static str {
+    pub(crate) fn kind(&self) -> &'static str {
         match self {
             ProblemError::Read { .. } => "read",
             ProblemError::Syntax { .. } => "syntax",
@@ -57,7 +57,7 @@ impl ProblemError {
     }
 
     /// The field the error is about, when there is one.
-    pub fn field(&self) -> Option<&str> {
+    pub(crate) fn field(&self) -> Option<&str> {
         match self {
             ProblemError::Invalid { field, .. } => Some(field),
             ProblemError::Usage { flag, .. } => Some(flag),
@@ -76,7 +76,7 @@ pub struct Invalid {
 }
 
 impl Invalid {
-    pub fn new(
+    pub(crate) fn new(
         field: impl Into<String>,
         message: impl Into<String>,
         fix: impl Into<String>,

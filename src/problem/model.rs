@@ -79,7 +79,7 @@ impl<R: Real> Default for RenderSettings<R> {
 /// Settings given over a problem's own `render` (the command line's `--max-level`,
 /// `--min-weight`, `--samples`, `--shadows`); `None` keeps the problem's.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
-pub struct RenderOverrides {
+pub(crate) struct RenderOverrides {
     pub max_level: Option<u32>,
     pub min_weight: Option<f64>,
     pub samples: Option<u32>,
@@ -89,7 +89,7 @@ pub struct RenderOverrides {
 impl<R: Real> RenderSettings<R> {
     /// These settings with `overrides` over them, each checked by the rules of the file's
     /// `render`; a refused one is named by its field in [`RenderOverrides`] (`max_level`).
-    pub fn with(self, overrides: &RenderOverrides) -> Result<Self, Invalid> {
+    pub(crate) fn with(self, overrides: &RenderOverrides) -> Result<Self, Invalid> {
         let mut s = self;
         if let Some(level) = overrides.max_level {
             check_max_level(level).map_err(|e| e.at("max_level"))?;
@@ -111,13 +111,13 @@ impl<R: Real> RenderSettings<R> {
 }
 
 /// The default maximum recursion level.
-pub const DEFAULT_MAX_LEVEL: u32 = 5;
+pub(crate) const DEFAULT_MAX_LEVEL: u32 = 5;
 /// The default minimum weight, 1/255: a ray of lower weight cannot change an 8-bit pixel of a
 /// colour in [0, 1] by a whole step. POV-Ray's `adc_bailout` default is the same.
-pub const DEFAULT_MIN_WEIGHT: f64 = 1.0 / 255.0;
+pub(crate) const DEFAULT_MIN_WEIGHT: f64 = 1.0 / 255.0;
 /// The largest image side and the most samples per pixel accepted.
-pub const MAX_IMAGE_SIDE: u32 = 16384;
-pub const MAX_SAMPLES: u32 = 4096;
+pub(crate) const MAX_IMAGE_SIDE: u32 = 16384;
+pub(crate) const MAX_SAMPLES: u32 = 4096;
 
 /// Where a light came from in the file.
 #[derive(Clone, Debug)]

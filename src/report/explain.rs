@@ -749,13 +749,13 @@ pub fn plain(line: &[Inline]) -> String {
 
 /// Steps as a tree: each step with the steps below it (deeper ones), for renderers that nest
 /// lists.
-pub struct Node<'a> {
+pub(crate) struct Node<'a> {
     pub step: &'a Step,
     pub children: Vec<Node<'a>>,
 }
 
 /// Nests a flat list of steps by depth.
-pub fn nest(steps: &[Step]) -> Vec<Node<'_>> {
+pub(crate) fn nest(steps: &[Step]) -> Vec<Node<'_>> {
     fn take<'a>(steps: &'a [Step], i: &mut usize, depth: usize) -> Vec<Node<'a>> {
         let mut out = Vec::new();
         while *i < steps.len() && steps[*i].depth >= depth {
@@ -772,14 +772,14 @@ pub fn nest(steps: &[Step]) -> Vec<Node<'_>> {
 }
 
 /// The language tag of a page or document.
-pub fn language_tag(lang: Lang) -> &'static str {
+pub(crate) fn language_tag(lang: Lang) -> &'static str {
     pick(lang, "en", "pt-BR")
 }
 
 /// A stretch of a line in one notation: words, or a run of math (formulas and the numbers
 /// they equal, with the spaces between them), or a swatch.
 #[derive(Debug, PartialEq)]
-pub enum Run<'a> {
+pub(crate) enum Run<'a> {
     Text(String),
     Math(Vec<&'a Inline>),
     Swatch([u8; 3]),
@@ -788,7 +788,7 @@ pub enum Run<'a> {
 /// Splits a line into runs of words and runs of math, so that LaTeX and Markdown put a whole
 /// formula with its value in one `$…$`. A piece of blank text between two math pieces stays
 /// inside the math.
-pub fn runs(line: &[Inline]) -> Vec<Run<'_>> {
+pub(crate) fn runs(line: &[Inline]) -> Vec<Run<'_>> {
     let is_math = |x: &Inline| {
         matches!(
             x,
@@ -828,12 +828,12 @@ pub fn runs(line: &[Inline]) -> Vec<Run<'_>> {
 }
 
 /// A colour clamped to [0, 1] in 8 bits, for a swatch.
-pub fn to_rgb8(c: [f64; 3]) -> [u8; 3] {
+pub(crate) fn to_rgb8(c: [f64; 3]) -> [u8; 3] {
     c.map(|x| (x.clamp(0.0, 1.0) * 255.0).round() as u8)
 }
 
 /// A number in LaTeX math: "1.5e9" becomes "1.5 \times 10^{9}".
-pub fn latex_number(x: f64) -> String {
+pub(crate) fn latex_number(x: f64) -> String {
     let s = super::number::num(x);
     match s.split_once('e') {
         Some((m, e)) => format!("{m} \\times 10^{{{e}}}"),
@@ -842,7 +842,7 @@ pub fn latex_number(x: f64) -> String {
 }
 
 /// A math run in LaTeX.
-pub fn latex_math(run: &[&Inline]) -> String {
+pub(crate) fn latex_math(run: &[&Inline]) -> String {
     let mut s = String::new();
     let vector = |x: &[f64; 3]| {
         format!(

@@ -64,7 +64,7 @@ pub fn solve_text(path: &Path, precision: Precision) -> Result<String, ProblemEr
 
 /// The JSON document of a file that could not be solved: its kind, field and message, in
 /// place of the solution (`phong solve --format json` writes one per bad file).
-pub fn error_json(path: &Path, e: &ProblemError) -> serde_json::Value {
+pub(crate) fn error_json(path: &Path, e: &ProblemError) -> serde_json::Value {
     serde_json::json!({
         "format_version": super::json::FORMAT_VERSION,
         "file": path.display().to_string(),

@@ -195,7 +195,7 @@ impl Formula {
 
 /// Unicode math as HTML: `X_ab` becomes X<sub>ab</sub> and `x^e` (or `x^n_s`) a superscript;
 /// everything else is escaped.
-pub fn unicode_to_html(s: &str) -> String {
+pub(crate) fn unicode_to_html(s: &str) -> String {
     let mut out = String::new();
     let chars: Vec<char> = s.chars().collect();
     let mut i = 0;
@@ -232,7 +232,7 @@ pub fn unicode_to_html(s: &str) -> String {
 }
 
 /// Appends one character escaped for HTML text and attribute values.
-pub fn push_html_escaped(out: &mut String, c: char) {
+pub(crate) fn push_html_escaped(out: &mut String, c: char) {
     match c {
         '&' => out.push_str("&amp;"),
         '<' => out.push_str("&lt;"),

@@ -14,7 +14,7 @@ use super::messages::Phrase;
 use super::number::{num, vec3};
 
 /// The page's stylesheet.
-pub const STYLE: &str = "\
+pub(crate) const STYLE: &str = "\
 body{font-family:system-ui,-apple-system,'Segoe UI',Roboto,'DejaVu Sans',sans-serif;max-width:60rem;margin:1.5rem auto;padding:0 1rem;line-height:1.45;color:#1a1a1a;background:#fff}
 h1{font-size:1.5rem;margin-bottom:.2rem}h2{font-size:1.2rem;margin-top:1.6rem;border-bottom:1px solid #ddd}h3{font-size:1rem;margin:.9rem 0 .3rem}
 .source{color:#666;margin-top:0}
@@ -141,7 +141,7 @@ fn shading(out: &mut String, sh: &Shading, lang: Lang, id: &str) {
 }
 
 /// The `<article>` of one explanation; `index` makes its ids unique in the page.
-pub fn write_article(x: &Explanation, index: usize) -> String {
+pub(crate) fn write_article(x: &Explanation, index: usize) -> String {
     let lang = x.lang;
     let mut out = String::new();
     let _ = writeln!(out, "<article class=\"problem\" id=\"problem-{index}\">");

@@ -16,7 +16,7 @@ use crate::solve::{
 };
 
 /// The version of this output format.
-pub const FORMAT_VERSION: u32 = 1;
+pub(crate) const FORMAT_VERSION: u32 = 1;
 
 /// One solved problem.
 #[derive(Serialize)]

@@ -5,7 +5,7 @@
 //! and [`html`] only lay them out. All wording lives in [`messages`], every formula in
 //! [`formula`].
 
-pub mod diagram;
+pub(crate) mod diagram;
 pub mod explain;
 pub mod file;
 pub mod formula;
@@ -14,7 +14,7 @@ pub mod json;
 pub mod lang;
 pub mod latex;
 pub mod markdown;
-pub mod messages;
-pub mod number;
+pub(crate) mod messages;
+pub(crate) mod number;
 pub mod pixel;
 pub mod text;

@@ -23,7 +23,7 @@ fn n<R: Real>(x: R) -> String {
 }
 
 /// Why a path stopped, in words.
-pub fn stop_reason(stop: Stop) -> &'static str {
+pub(crate) fn stop_reason(stop: Stop) -> &'static str {
     match stop {
         Stop::Miss => "the ray hits nothing: its colour is the background",
         Stop::NotReflective => "the surface has no reflectivity O_r: no reflection ray",

@@ -18,7 +18,7 @@ const EQ_COLUMN: usize = 64;
 
 /// How to write the text report.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub struct TextOptions {
+pub(crate) struct TextOptions {
     pub lang: Lang,
     /// ANSI colours and the swatch (for a terminal).
     pub color: bool,
@@ -62,7 +62,7 @@ pub fn render<R: Real>(file: &str, problem: &Problem<R>, s: &Solution<R>) -> Str
 }
 
 /// The text report of one solved problem.
-pub fn render_with<R: Real>(
+pub(crate) fn render_with<R: Real>(
     file: &str,
     problem: &Problem<R>,
     s: &Solution<R>,
@@ -158,7 +158,7 @@ fn steps(out: &mut String, style: &Style, indent: usize, list: &[Step], lang: La
 }
 
 /// Word-wraps a paragraph to lines of at most `width` characters.
-pub fn wrap(text: &str, width: usize) -> Vec<String> {
+pub(crate) fn wrap(text: &str, width: usize) -> Vec<String> {
     let mut lines = Vec::new();
     let mut line = String::new();
     for word in text.split_whitespace() {

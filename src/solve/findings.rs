@@ -103,7 +103,7 @@ pub enum GateDecision {
 
 impl GateDecision {
     /// As the JSON writes it: 1 lit, 0 in the tangent plane, −1 behind.
-    pub fn value(self) -> f64 {
+    pub(crate) fn value(self) -> f64 {
         match self {
             GateDecision::Lit => 1.0,
             GateDecision::InTangentPlane => 0.0,

@@ -177,7 +177,7 @@ pub enum ReadingCode {
 impl ReadingCode {
     /// Whether the reading is what the problem's author most likely meant (the report labels it
     /// "likely intended reading"), rather than another way to read it.
-    pub fn likely_intended(self) -> bool {
+    pub(crate) fn likely_intended(self) -> bool {
         match self {
             ReadingCode::LightReversed | ReadingCode::LineBehindOrigin => true,
             ReadingCode::NormalReversed => false,
@@ -201,7 +201,7 @@ impl<R: Real> Solution<R> {
 
 impl<R: Real> Evaluation<R> {
     /// The lights this evaluation shaded with.
-    pub fn lights_used<'a>(&'a self, problem: &'a Problem<R>) -> &'a LightSet<R> {
+    pub(crate) fn lights_used<'a>(&'a self, problem: &'a Problem<R>) -> &'a LightSet<R> {
         self.light_set.as_ref().unwrap_or(&problem.lights)
     }
 }
@@ -213,7 +213,7 @@ pub fn solve<R: Real>(problem: &Problem<R>) -> Result<Solution<R>, Invalid> {
 
 /// Solves a validated problem with the core's formulas switched as `formulas` says: the mistake
 /// diagnosis of `phong check` reproduces a slip inside a formula this way.
-pub fn solve_with<R: Real, F: Formulas>(
+pub(crate) fn solve_with<R: Real, F: Formulas>(
     problem: &Problem<R>,
     formulas: F,
 ) -> Result<Solution<R>, Invalid> {
@@ -297,7 +297,7 @@ pub fn solve_with<R: Real, F: Formulas>(
 }
 
 /// The surfaces of a problem as one [`Aggregate`], to find hits and cast shadow rays.
-pub fn aggregate<R: Real>(problem: &Problem<R>) -> Aggregate<R> {
+pub(crate) fn aggregate<R: Real>(problem: &Problem<R>) -> Aggregate<R> {
     Aggregate::new(problem.surfaces().iter().map(|s| s.shape).collect())
 }
 
@@ -306,7 +306,7 @@ pub fn aggregate<R: Real>(problem: &Problem<R>) -> Aggregate<R> {
 /// with the tracer's shadow rays (when `problem.render.shadows`). `viewer` is E, or `None` for
 /// V = D, the ray coming from the eye (as every ray of the tracer does); `direction` is D as
 /// given. This is what `phong render --explain-pixel` calls for every ray of a pixel.
-pub fn solve_ray<R: Real>(
+pub(crate) fn solve_ray<R: Real>(
     problem: &Problem<R>,
     viewer: Option<V3<R>>,
     ray: &Ray<R>,
@@ -317,7 +317,7 @@ pub fn solve_ray<R: Real>(
 }
 
 /// [`solve_ray`] with the core's formulas switched as `formulas` says (mistake diagnosis).
-pub fn solve_ray_with<R: Real, F: Formulas>(
+pub(crate) fn solve_ray_with<R: Real, F: Formulas>(
     problem: &Problem<R>,
     formulas: F,
     viewer: Option<V3<R>>,

@@ -10,14 +10,15 @@
 //! - [`explain`]: one pixel's derivation, every ray solved by the solver.
 //! - [`output`]: PNG and PPM files.
 
-pub mod camera;
-pub mod explain;
+pub(crate) mod camera;
+pub(crate) mod explain;
 pub mod output;
 pub mod render;
-pub mod sampler;
-pub mod trace;
+pub(crate) mod sampler;
+pub(crate) mod trace;
 
 pub use camera::CameraRays;
-pub use explain::{explain_pixel, PixelExplanation};
-pub use render::{render, render_linear, Image, LinearImage};
-pub use trace::{Counts, Scene, Stop, Tracer};
+pub use explain::{explain_pixel, PixelExplanation, RayExplanation, SampleExplanation};
+pub use render::{render, Image};
+pub(crate) use render::{render_linear, LinearImage};
+pub use trace::{Counts, PathRecorder, RayRecord, Scene, Spawn, Stop, Tracer};

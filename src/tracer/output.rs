@@ -11,7 +11,7 @@ pub enum ImageFormat {
 
 impl ImageFormat {
     /// The format an output path's extension names, if any.
-    pub fn from_path(path: &std::path::Path) -> Option<Self> {
+    pub(crate) fn from_path(path: &std::path::Path) -> Option<Self> {
         let ext = path.extension()?.to_str()?.to_ascii_lowercase();
         match ext.as_str() {
             "png" => Some(ImageFormat::Png),

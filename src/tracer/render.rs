@@ -22,19 +22,19 @@ pub struct Image {
 /// A pixel's value: the mean of its samples, each clamped to [0, 1] (what the chapter would
 /// display for that ray), then round(255·c), as the solver's 8-bit colour.
 #[inline]
-pub fn to_rgb8(sum: [f64; 3], samples: u32) -> [u8; 3] {
+pub(crate) fn to_rgb8(sum: [f64; 3], samples: u32) -> [u8; 3] {
     mean_to_rgb8(sum.map(|c| c / f64::from(samples)))
 }
 
 /// A colour clamped to [0, 1] and widened, to be summed over samples.
 #[inline]
-pub fn clamped<R: Real>(c: V3<R>) -> [f64; 3] {
+pub(crate) fn clamped<R: Real>(c: V3<R>) -> [f64; 3] {
     c.to_array().map(|x| x.max(R::ZERO).min(R::ONE).to_f64())
 }
 
 /// The mean of pixel (x, y)'s samples, each clamped to [0, 1] (before rounding to 8 bits).
 #[inline]
-pub fn pixel_mean<R: Real>(
+pub(crate) fn pixel_mean<R: Real>(
     tracer: &Tracer<R>,
     camera: &CameraRays<R>,
     x: u32,
@@ -55,7 +55,7 @@ pub fn pixel_mean<R: Real>(
 
 /// The colour of pixel (x, y): its samples traced and averaged, in 8 bits.
 #[inline]
-pub fn pixel<R: Real>(
+pub(crate) fn pixel<R: Real>(
     tracer: &Tracer<R>,
     camera: &CameraRays<R>,
     x: u32,
@@ -67,14 +67,14 @@ pub fn pixel<R: Real>(
 
 /// A pixel's mean in 8 bits: round(255·c), as the solver's 8-bit colour.
 #[inline]
-pub fn mean_to_rgb8(mean: [f64; 3]) -> [u8; 3] {
+pub(crate) fn mean_to_rgb8(mean: [f64; 3]) -> [u8; 3] {
     mean.map(|c| (c * 255.0).round() as u8)
 }
 
 /// An image of pixel means in [0, 1] (before rounding to 8 bits), rows top to bottom: what
 /// `phong tradeoff` compares.
 #[derive(Clone, Debug, PartialEq)]
-pub struct LinearImage {
+pub(crate) struct LinearImage {
     pub width: u32,
     pub height: u32,
     /// width × height × 3 values.
@@ -83,7 +83,7 @@ pub struct LinearImage {
 
 impl LinearImage {
     /// The image as written to a file.
-    pub fn to_rgb8(&self) -> Image {
+    pub(crate) fn to_rgb8(&self) -> Image {
         Image {
             width: self.width,
             height: self.height,
@@ -145,7 +145,7 @@ pub fn render<R: Real>(
 }
 
 /// Renders the pixel means, before rounding to 8 bits (`render` is this, rounded).
-pub fn render_linear<R: Real>(
+pub(crate) fn render_linear<R: Real>(
     problem: &Problem<R>,
     camera: &Camera<R>,
     scene: &Scene<R>,

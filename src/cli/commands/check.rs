@@ -8,7 +8,7 @@ use crate::cli::exit::Exit;
 use crate::cli::output;
 use crate::problem;
 
-pub fn run(args: &CheckArgs) -> Result<Exit, CliError> {
+pub(crate) fn run(args: &CheckArgs) -> Result<Exit, CliError> {
     if args.answer.is_some() && args.files.len() > 1 {
         return Err(CliError::Conflict {
             message: format!(
