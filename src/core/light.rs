@@ -193,6 +193,7 @@ const CONE_COS_MARGIN_ULPS: f64 = 128.0;
 impl<R: Real> Light<R> {
     /// What this light delivers at P (Eq. 4.1–4.4), with every intermediate.
     #[inline]
+    #[cfg(test)]
     pub(crate) fn arrive(&self, p: V3<R>) -> Arrival<R> {
         self.arrive_with(p, true)
     }

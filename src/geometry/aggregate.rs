@@ -63,11 +63,6 @@ impl<R: Real> Aggregate<R> {
         }
     }
 
-    /// The shapes, in the order given.
-    pub(crate) fn shapes(&self) -> &[Shape<R>] {
-        &self.shapes
-    }
-
     /// The nearest hit with 0 < t < `t_max`.
     pub(crate) fn nearest(&self, ray: &Ray<R>, t_max: R) -> Option<AggregateHit<R>> {
         let mut best: Option<(usize, R)> = None;

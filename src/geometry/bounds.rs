@@ -5,7 +5,6 @@
 //! distances are scaled by 1 + 2γ₃ (pbrt §6.8.2), and a ray lying exactly in a slab's plane
 //! (0·∞ = NaN) is taken to be inside that slab rather than outside it.
 
-use super::ray::Ray;
 use crate::core::{Real, Vector, V3};
 
 /// γ_n = nε/(1 − nε), with ε the unit roundoff (`EPSILON`/2): a bound on the relative error of
@@ -90,6 +89,7 @@ impl<R: Real> Aabb<R> {
 
     /// Whether the box holds no point.
     #[inline]
+    #[cfg(test)]
     pub(crate) fn is_empty(&self) -> bool {
         let (lo, hi) = (self.min.to_array(), self.max.to_array());
         !(0..3).all(|a| lo[a] <= hi[a])
@@ -115,6 +115,7 @@ impl<R: Real> Aabb<R> {
 
     /// Whether `o` lies inside this box (boundary included).
     #[inline]
+    #[cfg(test)]
     pub(crate) fn contains(&self, o: &Self) -> bool {
         let (a0, a1, b0, b1) = (
             self.min.to_array(),
@@ -140,6 +141,7 @@ impl<R: Real> Aabb<R> {
 
     /// 2(dx·dy + dy·dz + dz·dx); 0 for an empty box.
     #[inline]
+    #[cfg(test)]
     pub(crate) fn surface_area(&self) -> R {
         if self.is_empty() {
             return R::ZERO;
@@ -191,13 +193,6 @@ impl<R: Real> Aabb<R> {
             }
         }
         t0 <= t1
-    }
-
-    /// [`Aabb::hit`] for a ray, computing 1/D here; prefer [`Aabb::hit`] with a 1/D computed
-    /// once per ray when testing many boxes.
-    #[inline]
-    pub(crate) fn hit_ray(&self, ray: &Ray<R>, t_max: R) -> bool {
-        self.hit(ray.origin, inverse::<R>(ray.direction), t_max)
     }
 }
 

@@ -331,21 +331,25 @@ impl<R: Real> Bvh<R> {
     }
 
     /// The nodes in depth-first order (the root first); empty for no primitives.
+    #[cfg(test)]
     pub(crate) fn nodes(&self) -> &[BvhNode<R>] {
         &self.nodes
     }
 
     /// The primitive indices in leaf order.
+    #[cfg(test)]
     pub(crate) fn prims(&self) -> &[u32] {
         &self.prims
     }
 
     /// The box of every primitive (empty for none).
+    #[cfg(test)]
     pub(crate) fn bounds(&self) -> Aabb<R> {
         self.nodes.first().map_or(Aabb::empty(), |n| n.bounds)
     }
 
     /// The number of nodes on the longest path from the root to a leaf (0 when empty).
+    #[cfg(test)]
     pub(crate) fn depth(&self) -> usize {
         fn walk<R: Real>(nodes: &[BvhNode<R>], i: usize) -> usize {
             let n = &nodes[i];

@@ -53,18 +53,6 @@ pub(crate) fn pixel_mean<R: Real>(
     sum.map(|c| c / f64::from(n))
 }
 
-/// The colour of pixel (x, y): its samples traced and averaged, in 8 bits.
-#[inline]
-pub(crate) fn pixel<R: Real>(
-    tracer: &Tracer<R>,
-    camera: &CameraRays<R>,
-    x: u32,
-    y: u32,
-    counts: &mut Counts,
-) -> [u8; 3] {
-    mean_to_rgb8(pixel_mean(tracer, camera, x, y, counts))
-}
-
 /// A pixel's mean in 8 bits: round(255·c), as the solver's 8-bit colour.
 #[inline]
 pub(crate) fn mean_to_rgb8(mean: [f64; 3]) -> [u8; 3] {
@@ -79,21 +67,6 @@ pub(crate) struct LinearImage {
     pub height: u32,
     /// width × height × 3 values.
     pub rgb: Vec<f64>,
-}
-
-impl LinearImage {
-    /// The image as written to a file.
-    pub(crate) fn to_rgb8(&self) -> Image {
-        Image {
-            width: self.width,
-            height: self.height,
-            rgb: self
-                .rgb
-                .chunks_exact(3)
-                .flat_map(|c| mean_to_rgb8([c[0], c[1], c[2]]))
-                .collect(),
-        }
-    }
 }
 
 /// Every pixel mapped by `each` from its mean, rows in parallel and gathered by index.
