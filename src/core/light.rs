@@ -166,8 +166,8 @@ pub struct Arrival<R: Real> {
 
 /// Tolerance of the cone-edge test in units of machine epsilon ε (radians, times 1 + γ): a
 /// point whose computed ψ lies within this of the computed γ is on the edge to within rounding,
-/// and the edge is lit (DESIGN.md). It bounds the error of ψ − γ for exact (binary) P, P_l, D_l
-/// and angle, with u = ε/2 and γ_k = ku/(1 − ku):
+/// and the edge is lit (docs/conventions.md, "Spot cone"). It bounds the error of ψ − γ for
+/// exact (binary) P, P_l, D_l and angle, with u = ε/2 and γ_k = ku/(1 − ku):
 /// - D_l as used is the given axis normalised (γ₆ per component: its direction is off by at
 ///   most γ₆ rad) or, when its length is 1 to within 8ε, the given vector itself (the same
 ///   direction; the angle from atan2 does not depend on the length);

@@ -1,6 +1,6 @@
 //! The shading core: Phong's illumination model of Chapter 4, pure and free of I/O.
 //!
-//! Symbols, as the chapter names them (DESIGN.md fixes the signs):
+//! Symbols, as the chapter names them (docs/conventions.md fixes the signs):
 //!
 //! | symbol | meaning | eq. |
 //! |---|---|---|

@@ -1,5 +1,6 @@
-//! Phong's model at one point, Eq. 4.16, with the gating of DESIGN.md, recording every
-//! intermediate per light for callers that want it and nothing for callers that do not.
+//! Phong's model at one point, Eq. 4.16, gated as docs/conventions.md ("Gating") reads the
+//! chapter, recording every intermediate per light for callers that want it and nothing for
+//! callers that do not.
 //!
 //! The caller passes a [`Recorder`]: [`NoRecord`] (the tracer's hot path: no allocation, no
 //! literal values) or a `Vec<LightTerm>` (the solver's explanation). Shadowing is the caller's
@@ -284,8 +285,9 @@ pub(crate) fn tangent_tolerance<R: Real>(n: V3<R>, l: V3<R>) -> R {
     gamma_40 * sum
 }
 
-/// Shades P with Phong's model, Eq. 4.16, gated as DESIGN.md reads the chapter: a light adds
-/// diffuse and specular only where cos θ > 0, and specular only where also cos φ > 0.
+/// Shades P with Phong's model, Eq. 4.16, gated as docs/conventions.md ("Gating") reads the
+/// chapter: a light adds diffuse and specular only where cos θ > 0, and specular only where also
+/// cos φ > 0.
 #[inline]
 pub fn shade<R: Real, Rec: Recorder<R>, Vis: Visibility<R>>(
     at: &ShadingPoint<R>,

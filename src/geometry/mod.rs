@@ -1,8 +1,9 @@
 //! Geometry: rays and the surfaces a ray problem (and later the tracer) can hit.
 //!
 //! Intersections return the parameter t along the *line* of the ray, of either sign: whether a
-//! hit behind the origin (t ≤ 0) counts is the caller's decision (DESIGN.md: a hit needs t > 0,
-//! and the solver reports what the line would give when it meets a surface only behind).
+//! hit behind the origin (t ≤ 0) counts is the caller's decision (docs/conventions.md, "Ray
+//! hits": a hit needs t > 0, and the solver reports what the line would give when it meets a
+//! surface only behind).
 
 pub(crate) mod aggregate;
 pub(crate) mod bounds;

@@ -52,7 +52,7 @@ pub struct Camera<R: Real> {
     pub height: u32,
 }
 
-/// The tracer's settings (Section 4.4 and DESIGN.md).
+/// The tracer's settings (Section 4.4; docs/conventions.md, "Recursion level" and "Weight").
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct RenderSettings<R: Real> {
     /// Rays are traced while their level ≤ this; the primary ray has level 1.

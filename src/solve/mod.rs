@@ -339,7 +339,8 @@ pub(crate) fn solve_ray_with<R: Real, F: Formulas>(
         in_front: hit.is_some_and(|(_, t, _)| t > R::ZERO),
     };
     // The shading at a hit, V from the incoming direction (the ray's, or the reversed ray's
-    // for a hit behind) and N turned to face it (DESIGN.md, as in the tracer).
+    // for a hit behind) and N turned to face it (docs/conventions.md, "Orientation", as in the
+    // tracer).
     let at_hit = |i: usize, hit: &SurfaceHit<R>, source: ViewSource| {
         let s = &surfaces[i];
         let incoming = match source {

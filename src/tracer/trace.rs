@@ -188,7 +188,7 @@ impl<R: Real> Tracer<'_, R> {
             record.local = local;
             record.o_r = m.o_r;
             // A reflection ray only where O_r ≠ 0, its level ≤ the maximum and its weight
-            // w_s = w_p·max(O_r) above the minimum (DESIGN.md).
+            // w_s = w_p·max(O_r) above the minimum (docs/conventions.md, "Weight").
             record.stop = match m.o_r {
                 None => Some(Stop::NotReflective),
                 Some(o_r) if o_r == V3::<R>::ZERO => Some(Stop::NotReflective),
