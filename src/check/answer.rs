@@ -46,7 +46,9 @@ impl Scale {
 /// An answer: three numbers on a scale.
 #[derive(Clone, Copy, Debug, PartialEq, serde::Serialize)]
 pub struct Answer {
+    /// The three numbers, on `scale`.
     pub values: [f64; 3],
+    /// The scale the numbers are on (0–1, or 0–255).
     pub scale: Scale,
 }
 

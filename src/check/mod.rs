@@ -1,8 +1,8 @@
 //! Checking answers: `phong check` and `phong grade`.
 //!
-//! A problem is solved once into an [`Expected`]: the colour of the problem as written, the
+//! A problem is solved once into an `Expected`: the colour of the problem as written, the
 //! colours of its readings, and the colour each classic slip (and pair of slips) gives, all
-//! computed by the same solver and core ([`slips`]). Judging an answer against it is then a few
+//! computed by the same solver and core (`slips`). Judging an answer against it is then a few
 //! comparisons, cheap enough to grade a class's CSV in one pass ([`grade`]).
 //!
 //! Verdicts (see README "Checking answers"):
@@ -64,6 +64,7 @@ pub enum Against {
 /// An answer against one target.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Comparison {
+    /// Which value of the target the answer was compared with.
     pub against: Against,
     /// The target's value on the answer's scale.
     pub expected: [f64; 3],
@@ -105,9 +106,11 @@ pub(crate) fn compare(answer: &Answer, target: &Target, tolerance: f64) -> Optio
 /// A reading of the problem and its colour.
 #[derive(Clone, Debug, PartialEq)]
 pub struct ReadingTarget {
+    /// Which reading.
     pub code: ReadingCode,
     /// The solver labels it the likely intended reading.
     pub likely_intended: bool,
+    /// The reading's colour.
     pub target: Target,
 }
 
@@ -174,17 +177,22 @@ pub(crate) struct Reference {
 #[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize)]
 #[serde(rename_all = "snake_case")]
 pub enum VerdictKind {
+    /// Within the tolerance of the problem as written.
     Right,
+    /// Within the tolerance of a likely intended reading, not of the problem as written.
     Reading,
+    /// Neither.
     Wrong,
 }
 
 /// A slip (or pair) the answer matches.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Diagnosis {
+    /// The slips' codes (one, or two made together).
     pub slips: Vec<Slip>,
     /// Those of `slips` that are the likely intended reading (not counted as mistakes).
     pub intended: Vec<Slip>,
+    /// The answer against the colour these slips give.
     pub comparison: Comparison,
 }
 
@@ -208,6 +216,7 @@ impl Diagnosis {
 /// The verdict on one answer, with everything the report says about it.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Verdict {
+    /// Right, reading or wrong.
     pub kind: VerdictKind,
     /// Right, or a likely intended reading without `--strict`: exit 0.
     pub accepted: bool,

@@ -14,7 +14,7 @@ use crate::report::number::num;
 use crate::solve::ReadingCode;
 
 /// The version of the JSON output of `phong check` and `phong grade`.
-pub(crate) const CHECK_FORMAT_VERSION: u32 = 1;
+pub const CHECK_FORMAT_VERSION: u32 = 1;
 
 /// Where the answer came from.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
@@ -29,10 +29,13 @@ pub enum AnswerSource {
 /// One checked answer, or why it could not be checked.
 #[derive(Clone, Debug)]
 pub struct Checked {
+    /// The problem file's path, as given.
     pub file: String,
     /// The answer as written, when there is one.
     pub text: Option<String>,
+    /// Where the answer came from.
     pub source: AnswerSource,
+    /// The judged answer, or why it could not be checked.
     pub outcome: Result<Judged, Failure>,
 }
 
@@ -40,17 +43,22 @@ pub struct Checked {
 /// the verdict.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Judged {
+    /// The answer, read.
     pub answer: Answer,
     /// The largest difference accepted per channel, on the answer's scale.
     pub tolerance: f64,
+    /// The verdict, with the comparisons and the diagnosis behind it.
     pub verdict: Verdict,
 }
 
 /// Why an answer could not be checked.
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct Failure {
+    /// What could not be checked (`error.kind` in the JSON).
     pub kind: FailureKind,
+    /// The field of the problem file at fault, where there is one (`lights[1].falloff`).
     pub field: Option<String>,
+    /// The error as an English sentence, with its fix.
     pub message: String,
 }
 
@@ -271,22 +279,31 @@ pub struct ExpectedOut {
     pub against: super::Against,
 }
 
+/// `answer`: the answer checked.
 #[derive(Serialize)]
 pub struct AnswerOut {
+    /// The answer as written; `null` when there is none.
     pub text: Option<String>,
+    /// Where it came from: "argument" (`--answer` or a CSV row) or "key" (the file's `answer`).
     pub source: AnswerSource,
     /// 1 or 255.
     pub scale: Option<u32>,
+    /// The three numbers read, on `scale`; `null` when the answer could not be checked.
     pub values: Option<[f64; 3]>,
 }
 
+/// `reading`: a reading of the problem the answer matches.
 #[derive(Serialize)]
 pub struct ReadingOut {
+    /// Which reading: "light_reversed", "normal_reversed" or "line_behind_origin".
     pub code: ReadingCode,
+    /// Whether the solver labels it the likely intended reading.
     pub likely_intended: bool,
+    /// The reading in English.
     pub label: &'static str,
 }
 
+/// An entry of `diagnosis`: slips whose colour the answer matches.
 #[derive(Serialize)]
 pub struct DiagnosisOut {
     /// The slips' codes (one, or two made together).
@@ -297,25 +314,37 @@ pub struct DiagnosisOut {
     pub description: String,
     /// The colour those slips give, on the answer's scale.
     pub color: [f64; 3],
+    /// answer − color, per channel, on the answer's scale.
     pub difference: [f64; 3],
 }
 
 /// One check, for scripts.
 #[derive(Serialize)]
 pub struct CheckOut {
+    /// The version of this format, [`CHECK_FORMAT_VERSION`] (1).
     pub format_version: u32,
+    /// The problem file's path, as given.
     pub file: String,
+    /// The answer checked.
     pub answer: AnswerOut,
+    /// The largest difference accepted per channel, on the answer's scale; `null` when the answer
+    /// cannot be checked.
     pub tolerance: Option<f64>,
     /// "right", "reading", "wrong" or "invalid".
     pub verdict: &'static str,
     /// Exit code 0: right, or a likely intended reading without --strict.
     pub accepted: bool,
+    /// The verdict (or the error) as an English sentence.
     pub message: String,
+    /// The colour the answer was compared with; `null` when there is none.
     pub expected: Option<ExpectedOut>,
+    /// answer − expected, per channel, on the answer's scale; `null` without `expected`.
     pub difference: Option<[f64; 3]>,
+    /// A reading of the problem the answer matches; `null` when it matches none.
     pub reading: Option<ReadingOut>,
+    /// The slips (or pairs of slips) whose colour the answer matches.
     pub diagnosis: Vec<DiagnosisOut>,
+    /// Why the answer could not be checked (`kind`, `field`, `message`); `null` when it was.
     pub error: Option<Failure>,
 }
 

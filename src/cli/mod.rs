@@ -1,8 +1,8 @@
 //! The `phong` command line, as ripgrep's `main` and cargo's `commands/` are laid out: parse the
-//! arguments ([`args`], [`parse`]), run the command ([`commands`], one file each), and map how
-//! it ended to an exit code ([`exit`]: 0 solved or right, 1 a checked answer is wrong, 2 bad
-//! input or usage) once. An error that stops a command ([`error`]) is printed here, once; output
-//! goes to standard output or a file written atomically ([`output`]).
+//! arguments (`args`, `parse`), run the command (`commands`, one file each), and map how
+//! it ended to an exit code (`exit`: 0 solved or right, 1 a checked answer is wrong, 2 bad
+//! input or usage) once. An error that stops a command (`error`) is printed here, once; output
+//! goes to standard output or a file written atomically (`output`).
 
 pub(crate) mod args;
 mod commands;

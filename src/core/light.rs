@@ -76,6 +76,8 @@ pub struct Cone<R: Real> {
 }
 
 impl<R: Real> Cone<R> {
+    /// The cone with unit axis D_l, angle γ_l in degrees and exponent e_l, its γ_l in radians
+    /// and cos γ_l computed once.
     pub fn new(axis: V3<R>, angle_deg: R, exponent: R) -> Self {
         Cone {
             axis,
@@ -98,13 +100,24 @@ impl<R: Real> Cone<R> {
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum LightKind<R: Real> {
     /// A point light at P_l.
-    Point { position: V3<R>, falloff: Falloff },
+    Point {
+        /// P_l, the light's position.
+        position: V3<R>,
+        /// f, how its colour falls off with the distance d (Eq. 4.2–4.3).
+        falloff: Falloff,
+    },
     /// A directional light travelling along the unit vector D_l.
-    Directional { direction: V3<R> },
+    Directional {
+        /// D_l, unit: the direction the light travels in (L = D_l at every point).
+        direction: V3<R>,
+    },
     /// A spot light: a point light whose flux is restricted to a cone.
     Spot {
+        /// P_l, the light's position (the cone's apex).
         position: V3<R>,
+        /// f, how its colour falls off with the distance d (Eq. 4.2–4.3).
         falloff: Falloff,
+        /// The cone: D_l, γ_l and e_l (Eq. 4.4).
         cone: Cone<R>,
     },
 }
@@ -112,7 +125,9 @@ pub enum LightKind<R: Real> {
 /// A light other than ambient: its colour C_l and its kind.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Light<R: Real> {
+    /// C_l, the light's colour (I_l = C_l / d^f, Eq. 4.2).
     pub color: V3<R>,
+    /// Where it is and how its colour decays: point, directional or spot.
     pub kind: LightKind<R>,
 }
 
@@ -134,9 +149,10 @@ pub struct ConeTest<R: Real> {
     /// cos ψ = D_l · L.
     pub cos_psi: R,
     /// ψ in degrees, from atan2(‖D_l × L‖, D_l · L): accurate at every angle, where acos(cos ψ)
-    /// loses half the digits near 0°. Left at 0 by [`Light::arrive_with`] without detail where
+    /// loses half the digits near 0°. Left at 0 by `Light::arrive_with` without detail where
     /// cos ψ alone decided the test.
     pub psi_deg: R,
+    /// cos γ_l, the cosine of the cone's angle.
     pub cos_gamma: R,
     /// ψ ≤ γ (a point on the edge counts as inside).
     pub inside: bool,
@@ -161,6 +177,7 @@ pub struct Arrival<R: Real> {
     pub cone: Option<ConeTest<R>>,
     /// I_l: the light's colour at P.
     pub i_l: V3<R>,
+    /// Whether the light's flux arrives at P at all (inside the cone, P not at the light).
     pub reach: Reach,
 }
 

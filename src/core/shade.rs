@@ -25,7 +25,7 @@ pub struct ShadingPoint<R: Real> {
 #[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize)]
 #[serde(rename_all = "snake_case")]
 pub enum LightStatus {
-    /// cos θ > 0 (beyond its rounding error, [`tangent_tolerance`]) and the light arrives: it
+    /// cos θ > 0 (beyond its rounding error, `tangent_tolerance`) and the light arrives: it
     /// adds diffuse (and specular where cos φ > 0).
     Lit,
     /// cos θ < 0 (beyond its rounding error): the light is on the back side of the surface.
@@ -59,6 +59,7 @@ pub enum SpecularStatus {
 /// The specular part of one light's contribution, Eq. 4.9–4.15.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct SpecularTerm<R: Real> {
+    /// Why the term is what it is (lit, R away from the viewer, no viewer, …).
     pub status: SpecularStatus,
     /// R = L − 2(N·L)N, Eq. 4.15 (computed only where needed).
     pub r: Option<V3<R>>,
@@ -98,11 +99,13 @@ pub struct LightTerm<R: Real> {
     pub n_dot_l: R,
     /// cos θ = −N·L, Eq. 4.7.
     pub cos_theta: R,
+    /// Whether the light adds diffuse and specular light at P, and if not why.
     pub status: LightStatus,
     /// The gated diffuse term O_d I_l cos θ, Eq. 4.8; `None` when the material has no O_d.
     pub diffuse: Option<V3<R>>,
     /// O_d I_l cos θ without gating (recorded only when the recorder asks for detail).
     pub diffuse_literal: Option<V3<R>>,
+    /// The specular term, Eq. 4.9–4.15.
     pub specular: SpecularTerm<R>,
 }
 
@@ -124,7 +127,10 @@ pub struct Shade<R: Real> {
 /// Receives each light's record. `DETAIL` also asks the core for the literal (ungated) values
 /// and for R and cos φ of lights that do not light the point.
 pub trait Recorder<R: Real> {
+    /// Whether the core computes the literal values and the R and cos φ of unlit lights for
+    /// this recorder (`false` costs nothing on the hot path).
     const DETAIL: bool;
+    /// Receives one light's record, in the order of the light set.
     fn light(&mut self, term: &LightTerm<R>);
 }
 
@@ -146,6 +152,8 @@ impl<R: Real> Recorder<R> for Vec<LightTerm<R>> {
 
 /// Decides whether a light that faces the point actually reaches it (shadow rays).
 pub trait Visibility<R: Real> {
+    /// Whether `light`, which lights P from the front and arrives as `arrival` says, reaches P
+    /// unblocked.
     fn visible(&mut self, p: V3<R>, light: &Light<R>, arrival: &Arrival<R>) -> bool;
 }
 

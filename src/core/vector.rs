@@ -9,6 +9,7 @@ use super::real::{Real, Vector, V3};
 /// A unit vector together with the length of the vector it came from.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Normalized<R: Real> {
+    /// v/‖v‖, of length 1 within rounding.
     pub unit: V3<R>,
     /// ‖v‖; may be +inf when the true length exceeds the precision's range (|v| near MAX).
     pub length: R,

@@ -32,6 +32,7 @@ pub struct Aggregate<R: Real> {
 pub struct AggregateHit<R: Real> {
     /// The shape's index in the order given.
     pub index: usize,
+    /// Where the ray meets it: t, the point with its error bound, and the normal.
     pub hit: SurfaceHit<R>,
 }
 

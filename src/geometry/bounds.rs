@@ -21,10 +21,12 @@ pub(crate) fn infinity<R: Real>() -> R {
     R::from_f64(f64::INFINITY)
 }
 
-/// The box [min, max]; empty when min > max on some axis ([`Aabb::empty`] is +∞/−∞).
+/// The box [min, max]; empty when min > max on some axis (`Aabb::empty` is +∞/−∞).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Aabb<R: Real> {
+    /// The corner of smallest coordinates.
     pub min: V3<R>,
+    /// The corner of largest coordinates.
     pub max: V3<R>,
 }
 

@@ -52,7 +52,9 @@ pub struct Bvh<R: Real> {
 /// The nearest primitive a ray hits, and its t.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct BvhHit<R: Real> {
+    /// The primitive's index in the slice given to [`Bvh::build`].
     pub prim: u32,
+    /// The ray parameter of its hit.
     pub t: R,
 }
 

@@ -30,14 +30,19 @@ use crate::core::{Real, Vector, V3};
 /// A surface of a ray problem or scene.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum Shape<R: Real> {
+    /// An infinite plane.
     Plane(Plane<R>),
+    /// A sphere.
     Sphere(Sphere<R>),
+    /// A triangle (a mesh is stored as its triangles).
     Triangle(Triangle<R>),
 }
 
 /// Where the line of a ray meets a surface: up to two parameters, nearest first.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct LineHits<R: Real> {
+    /// The parameters t of the meetings along the line (of either sign), nearest first;
+    /// `None` where there are fewer than two.
     pub t: [Option<R>; 2],
 }
 
@@ -80,7 +85,7 @@ impl<R: Real> Shape<R> {
     }
 
     /// The nearest t with 0 < t < `t_max` where the ray meets the surface: the cheap test the
-    /// BVH asks of every candidate; [`Shape::hit_at`] then completes the winner.
+    /// BVH asks of every candidate; `Shape::hit_at` then completes the winner.
     #[inline]
     pub fn hit_t(&self, ray: &Ray<R>, t_max: R) -> Option<R> {
         let inside = |t: &R| *t > R::ZERO && *t < t_max;

@@ -5,6 +5,7 @@ use crate::core::{Real, V3};
 /// A ray O + tD with a unit direction D.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Ray<R: Real> {
+    /// O, where the ray starts.
     pub origin: V3<R>,
     /// Unit length.
     pub direction: V3<R>,

@@ -8,6 +8,7 @@ use crate::core::{Real, Vector, V3};
 /// The sphere ‖X − C‖ = r.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Sphere<R: Real> {
+    /// C, the centre.
     pub center: V3<R>,
     /// r > 0.
     pub radius: R,

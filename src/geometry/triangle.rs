@@ -17,6 +17,7 @@ use crate::core::{Real, Vector, V3};
 /// The triangle with corners p₀, p₁, p₂.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Triangle<R: Real> {
+    /// The corners p₀, p₁, p₂; the normal is (p₁ − p₀) × (p₂ − p₀), normalised.
     pub p: [V3<R>; 3],
 }
 
@@ -55,6 +56,7 @@ fn max_abs<R: Real>(v: [R; 3]) -> R {
 }
 
 impl<R: Real> Triangle<R> {
+    /// The triangle with corners `p0`, `p1`, `p2`.
     #[inline]
     pub fn new(p0: V3<R>, p1: V3<R>, p2: V3<R>) -> Self {
         Triangle { p: [p0, p1, p2] }

@@ -1,8 +1,8 @@
 //! The HTML explanation (`phong solve --format html`): one self-contained page (inline CSS and
 //! SVG, no scripts, no fonts or anything else fetched), with colour swatches beside every
 //! colour, the final colour as a large swatch, and a diagram of the plane of incidence for each
-//! light ([`super::diagram`]). It lays out an [`Explanation`]; `--fragment` gives the
-//! `<article>`s only, for embedding in a page that brings the same stylesheet ([`STYLE`]).
+//! light (`report::diagram`). It lays out an [`Explanation`]; `--fragment` gives the
+//! `<article>`s only, for embedding in a page that brings the same stylesheet (`STYLE`).
 
 use std::fmt::Write;
 

@@ -5,7 +5,7 @@
 //! `amsmath` and `xcolor`. It lays out an [`Explanation`].
 //!
 //! Every string that reaches the output, including a user's title, question and light names,
-//! goes through [`escape`]: TeX's special characters are escaped, the Greek letters and math
+//! goes through `escape`: TeX's special characters are escaped, the Greek letters and math
 //! signs of the sentences become math, and a character the T1 fonts lack is written as its
 //! code point rather than breaking the build.
 

@@ -2,7 +2,7 @@
 //! Portuguese) or for scripts (stable, language-neutral JSON).
 //!
 //! [`explain`] walks a solution once and decides the steps; [`text`], [`markdown`], [`latex`]
-//! and [`html`] only lay them out. All wording lives in [`messages`], every formula in
+//! and [`html`] only lay them out. All wording lives in `messages`, every formula in
 //! [`formula`].
 
 pub(crate) mod diagram;

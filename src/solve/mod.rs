@@ -22,7 +22,9 @@ pub use findings::{ConeEdge, Finding, FindingData, GateDecision};
 /// Everything the solver found out about one problem.
 #[derive(Clone, Debug)]
 pub struct Solution<R: Real> {
+    /// The problem's title, as written.
     pub title: Option<String>,
+    /// The problem's question, as written.
     pub question: Option<String>,
     /// Surprising properties and notes, most important first.
     pub findings: Vec<Finding>,
@@ -37,6 +39,7 @@ pub struct Solution<R: Real> {
 /// Where a ray problem's ray meets its surfaces.
 #[derive(Clone, Copy, Debug)]
 pub struct Intersection<R: Real> {
+    /// O, the ray's origin.
     pub origin: V3<R>,
     /// D as given.
     pub direction_given: V3<R>,
@@ -47,9 +50,11 @@ pub struct Intersection<R: Real> {
     pub surface: Option<usize>,
     /// Where that surface is in the file (its index in `surfaces`, and a mesh's triangle).
     pub source: Option<SurfaceSource>,
+    /// The kind of surface met ("plane", "sphere" or "triangle"); `None` when none is.
     pub kind: Option<&'static str>,
     /// The parameter t of the hit along the line (negative: behind the origin).
     pub t: Option<R>,
+    /// The meeting point O + tD; `None` when the line meets no surface.
     pub point: Option<V3<R>>,
     /// t > 0: a hit of the ray itself.
     pub in_front: bool,
@@ -72,8 +77,11 @@ pub struct NormalUsed<R: Real> {
 #[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize)]
 #[serde(rename_all = "snake_case")]
 pub enum Side {
+    /// N·V < 0: the viewer is in front of the surface.
     Front,
+    /// N·V > 0: the viewer is behind the surface.
     Back,
+    /// N·V = 0: the viewer is in the surface's tangent plane.
     InPlane,
 }
 
@@ -94,11 +102,13 @@ pub enum ViewSource {
 pub struct ViewerUsed<R: Real> {
     /// E, when V comes from the viewer.
     pub position: Option<V3<R>>,
+    /// Where V comes from: the viewer, the ray, or the reversed ray.
     pub source: ViewSource,
     /// V, unit, from the eye to the point.
     pub v: V3<R>,
     /// N·V (negative when the viewer is in front of the surface); `None` without a normal.
     pub n_dot_v: Option<R>,
+    /// Which side of the surface the viewer is on; `None` without a normal.
     pub side: Option<Side>,
 }
 
@@ -106,8 +116,11 @@ pub struct ViewerUsed<R: Real> {
 #[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize)]
 #[serde(rename_all = "snake_case")]
 pub enum Term {
+    /// O_a I_a, Eq. 4.6.
     Ambient,
+    /// O_d I_l cos θ, Eq. 4.8.
     Diffuse,
+    /// O_s I_l (cos φ)^n_s, Eq. 4.10.
     Specular,
 }
 
@@ -115,32 +128,47 @@ pub enum Term {
 #[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize)]
 #[serde(rename_all = "snake_case")]
 pub enum OmissionReason {
+    /// The problem gives no ambient light.
     NoAmbientLight,
+    /// The material gives no ambient colour O_a.
     NoAmbientColor,
+    /// The problem gives no point, directional or spot light.
     NoDirectLight,
+    /// The material gives no diffuse colour O_d.
     NoDiffuseColor,
+    /// The problem gives no viewer, so V and cos φ are unknown.
     NoViewer,
+    /// The material gives no specular colour O_s.
     NoSpecularColor,
 }
 
+/// A term of Eq. 4.16 left out, and why.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Omission {
+    /// The term left out.
     pub term: Term,
+    /// Why it is left out.
     pub reason: OmissionReason,
 }
 
 /// The shading of one point, with every intermediate.
 #[derive(Clone, Debug)]
 pub struct Evaluation<R: Real> {
+    /// P; `None` when the problem does not need it.
     pub point: Option<V3<R>>,
+    /// N as given and as used; `None` when the problem does not need it.
     pub normal: Option<NormalUsed<R>>,
+    /// V and where it came from; `None` without a viewer.
     pub viewer: Option<ViewerUsed<R>>,
+    /// The material at P.
     pub material: NamedMaterial<R>,
     /// The lights as shaded, when a reading changed them (the problem's otherwise).
     pub light_set: Option<LightSet<R>>,
     /// The per-light record of the core.
     pub lights: Vec<LightTerm<R>>,
+    /// The core's result: each term summed over the lights, and the total (Eq. 4.16).
     pub shade: Shade<R>,
+    /// The terms the problem does not let the solver compute, and why.
     pub omitted: Vec<Omission>,
     /// The colour clamped to [0, 1] for display.
     pub clamped: V3<R>,
@@ -154,11 +182,16 @@ pub struct Evaluation<R: Real> {
 /// A reading of the problem other than the literal one.
 #[derive(Clone, Debug)]
 pub struct Reading<R: Real> {
+    /// Which reading.
     pub code: ReadingCode,
+    /// The reading's own intersection (the reversed ray of `line_behind_origin`); `None`
+    /// otherwise.
     pub intersection: Option<Intersection<R>>,
+    /// The shading of the point under this reading.
     pub evaluation: Evaluation<R>,
 }
 
+/// The ways of reading a problem other than the literal one.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize)]
 #[serde(rename_all = "snake_case")]
 pub enum ReadingCode {

@@ -4,11 +4,11 @@
 //! w_s = w_p·max(O_r) exceeds the minimum weight (docs/conventions.md, "Recursion level" and
 //! "Weight").
 //!
-//! - [`camera`]: pixel → primary ray.
-//! - [`sampler`]: where in the pixel each sample goes (stratified, deterministic).
-//! - [`trace`]: one ray's path (the hot path, and the same path recorded for an explanation).
-//! - [`render`]: the image, rows in parallel, bytes independent of the thread count.
-//! - [`explain`]: one pixel's derivation, every ray solved by the solver.
+//! - `camera`: pixel → primary ray.
+//! - `sampler`: where in the pixel each sample goes (stratified, deterministic).
+//! - `trace`: one ray's path (the hot path, and the same path recorded for an explanation).
+//! - [`render`](mod@render): the image, rows in parallel, bytes independent of the thread count.
+//! - `explain`: one pixel's derivation, every ray solved by the solver.
 //! - [`output`]: PNG and PPM files.
 
 pub(crate) mod camera;

@@ -13,7 +13,9 @@ use crate::problem::{Camera, Problem};
 /// An 8-bit RGB image, rows top to bottom.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct Image {
+    /// Its width in pixels.
     pub width: u32,
+    /// Its height in pixels.
     pub height: u32,
     /// width × height × 3 bytes.
     pub rgb: Vec<u8>,
