@@ -2504,3 +2504,56 @@ fn a_floor_met_beyond_the_range_of_f64_is_not_met() {
         finite_tree(&doc, &format!("pixel {x},{y}'s JSON")).expect("every number finite");
     }
 }
+
+#[test]
+fn a_pixel_whose_reflections_overflow_is_refused_not_shown_as_infinite() {
+    // Found by .ci/fuzz-explore (round 272 of seed 1796145228465987254): the classic scene with
+    // the mirror's reflectivity scaled to 9.5e299 and the floor's ambient O_a = 3.4028235e38.
+    // Each ray's own colour is finite (the floor's ambient term is 0.2·3.4e38 = 6.8e37), but the
+    // mirror's reflection adds O_r·C_r ≈ 9.5e299 · 6.8e37 ≈ 6.5e337, beyond f64: the explained
+    // pixel's JSON held `"color": [inf, …]`. The solver refuses a colour that overflows; so
+    // does the pixel's explanation now, naming a surface whose reflection overflowed.
+    let ws = Workspace::new();
+    let classic = &bases()
+        .iter()
+        .find(|b| b.name == "scenes/classic.json")
+        .expect("bundled")
+        .text;
+    let text = classic
+        .replace(
+            "\"reflectivity\": [0.95, 0.95, 0.95]",
+            "\"reflectivity\": [9.5e299, 9.5e299, 9.5e299]",
+        )
+        // The first material is the floor's.
+        .replacen(
+            "\"ambient\": [0.1, 0.1, 0.1]",
+            "\"ambient\": [3.4028235e38, 0.1, 0.1]",
+            1,
+        );
+    assert!(
+        text.contains("9.5e299") && text.contains("3.4028235e38"),
+        "{text}"
+    );
+    fs::write(&ws.case, text).expect("written");
+    let (_, mut problem) = problem::load::<f64>(&ws.case).expect("a valid scene");
+    let mut camera = problem.camera.expect("a camera");
+    (camera.width, camera.height) = (8, 6);
+    problem.camera = Some(camera);
+    problem.render.samples = 4;
+    problem.render.max_level = 3;
+    let scene = tracer::Scene::new(&problem);
+    match tracer::explain_pixel(&problem, &camera, &scene, 4, 3) {
+        Ok(e) => panic!(
+            "explained with colour {:?}",
+            e.samples.iter().map(|s| s.color).collect::<Vec<_>>()
+        ),
+        Err(e) => {
+            assert!(
+                e.field == "surfaces[0]" || e.field == "surfaces[1]",
+                "the floor or the mirror: {e:?}"
+            );
+            assert!(e.message.contains("overflows f64"), "{e:?}");
+            assert!(e.fix.contains("reflectivity"), "{e:?}");
+        }
+    }
+}

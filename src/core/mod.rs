@@ -18,9 +18,11 @@
 //!
 //! Everything is generic over [`Real`] (f32 or f64) from one source.
 
+pub(crate) mod color;
 pub(crate) mod light;
 pub(crate) mod material;
 pub mod real;
+pub(crate) mod rounding;
 pub(crate) mod shade;
 pub(crate) mod vector;
 

@@ -9,6 +9,7 @@
 use super::light::{Arrival, Light, LightSet, Reach};
 use super::material::Material;
 use super::real::{Real, Vector, V3};
+use super::rounding::gamma;
 
 /// The point being shaded.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -278,8 +279,8 @@ impl Formulas for Slipped {
 }
 
 /// The bound on the rounding error of the computed cos θ = −N·L for a given point: γ₄₀·Σ|N_i L_i|
-/// (u = ε/2, γ_k = ku/(1 − ku); the derivation is in `solve/rounding.rs`, which adds what a
-/// computed hit point's own error adds). A |cos θ| within it cannot be told from 0 in this
+/// ([`gamma`]: u = ε/2, γ_k = ku/(1 − ku); the derivation is in `solve/rounding.rs`, which adds
+/// what a computed hit point's own error adds). A |cos θ| within it cannot be told from 0 in this
 /// precision, so it is counted as 0 (the light in the tangent plane): an exact 0 is then decided
 /// as exactly 0 (a light in the tangent plane does not switch the specular term on by a
 /// rounding error), and a tiny non-zero value, which may lie on either side, is reported by the
@@ -288,9 +289,8 @@ impl Formulas for Slipped {
 /// any precision.
 #[inline]
 pub(crate) fn tangent_tolerance<R: Real>(n: V3<R>, l: V3<R>) -> R {
-    let gamma_40 = R::from_f64(20.0) * R::EPSILON / (R::ONE - R::from_f64(20.0) * R::EPSILON);
     let sum = (n.x() * l.x()).abs() + (n.y() * l.y()).abs() + (n.z() * l.z()).abs();
-    gamma_40 * sum
+    gamma::<R>(40) * sum
 }
 
 /// Shades P with Phong's model, Eq. 4.16, gated as docs/conventions.md ("Gating") reads the

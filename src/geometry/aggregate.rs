@@ -8,10 +8,9 @@
 
 use super::bounds::Aabb;
 use super::bvh::Bvh;
-use super::hit::{gamma, offset_origin, SurfaceHit};
+use super::hit::SurfaceHit;
 use super::{Ray, Shape};
-use crate::core::vector::between;
-use crate::core::{Arrival, Light, Real, Visibility, V3};
+use crate::core::Real;
 
 /// Up to this many bounded shapes are tested in a plain loop rather than through the BVH.
 const FLAT: usize = 8;
@@ -110,57 +109,5 @@ impl<R: Real> Aggregate<R> {
                 .hit_t(ray, t_max)
                 .is_some()
         })
-    }
-}
-
-/// Shadow rays from a hit point, as the core's [`Visibility`]: each one leaves from the hit's
-/// offset origin towards the light; to a point or spot light it stops a relative hair short of
-/// the light (pbrt's `1 − ShadowEpsilon`), to a directional light it goes on for ever.
-pub(crate) struct ShadowRays<'a, R: Real> {
-    pub aggregate: &'a Aggregate<R>,
-    /// The hit point's error bound and the surface's own normal, for the offset.
-    pub p_error: V3<R>,
-    pub normal: V3<R>,
-    /// How many shadow rays were traced.
-    pub traced: u64,
-}
-
-impl<R: Real> ShadowRays<'_, R> {
-    /// The shadow ray from `p` towards a light whose L (light to point) is `l`, and how far
-    /// it may go; `None` when the light is too close to the point to be told apart.
-    pub(crate) fn ray(&self, p: V3<R>, light: &Light<R>, l: V3<R>) -> Option<(Ray<R>, R)> {
-        let towards = -l;
-        let origin = offset_origin::<R>(p, self.p_error, self.normal, towards);
-        match light.position() {
-            None => Some((
-                Ray {
-                    origin,
-                    direction: towards,
-                },
-                R::from_f64(f64::INFINITY),
-            )),
-            Some(pos) => {
-                let to_light = between::<R>(origin, pos)?;
-                let t_max: R = to_light.length * (R::ONE - gamma::<R>(64));
-                Some((
-                    Ray {
-                        origin,
-                        direction: to_light.unit,
-                    },
-                    t_max,
-                ))
-            }
-        }
-    }
-}
-
-impl<R: Real> Visibility<R> for ShadowRays<'_, R> {
-    #[inline]
-    fn visible(&mut self, p: V3<R>, light: &Light<R>, arrival: &Arrival<R>) -> bool {
-        self.traced += 1;
-        match self.ray(p, light, arrival.l) {
-            Some((ray, t_max)) => !self.aggregate.occluded(&ray, t_max),
-            None => true,
-        }
     }
 }

@@ -1,19 +1,12 @@
-//! Axis-aligned bounding boxes (pbrt-v4 `Bounds3`, §3.7) and the rounding-error bound γ_n
-//! (§6.8.1) used to make box and triangle tests conservative.
+//! Axis-aligned bounding boxes (pbrt-v4 `Bounds3`, §3.7), made conservative with the
+//! rounding-error bound γ_n of [`crate::core::rounding::gamma`] (§6.8.1).
 //!
 //! The slab test [`Aabb::hit`] never rejects a box the ray really meets before `t_max`: the far
 //! distances are scaled by 1 + 2γ₃ (pbrt §6.8.2), and a ray lying exactly in a slab's plane
 //! (0·∞ = NaN) is taken to be inside that slab rather than outside it.
 
+use crate::core::rounding::gamma;
 use crate::core::{Real, Vector, V3};
-
-/// γ_n = nε/(1 − nε), with ε the unit roundoff (`EPSILON`/2): a bound on the relative error of
-/// n successive roundings, |(1 ± ε)ⁿ − 1| ≤ γ_n (Higham; pbrt-v4 §6.8.1, `gamma(n)`).
-#[inline]
-pub(crate) fn gamma<R: Real>(n: u32) -> R {
-    let ne = R::from_f64(f64::from(n)) * (R::EPSILON / R::TWO);
-    ne / (R::ONE - ne)
-}
 
 /// Positive infinity of precision `R`.
 #[inline]
@@ -263,25 +256,6 @@ mod tests {
     /// [`Aabb::hit`] with the ray given in f64 arrays, for brevity.
     fn ray_hits<R: Real>(b: &Aabb<R>, o: [f64; 3], d: [f64; 3], t_max: f64) -> bool {
         b.hit(v3::<R>(o), inverse::<R>(v3::<R>(d)), R::from_f64(t_max))
-    }
-
-    fn gamma_is_the_bound_of_n_roundings<R: Real>() {
-        // γ₁ = ε/(1 − ε) with ε = EPSILON/2: just above half an ulp of 1.
-        let e = R::EPSILON.to_f64() / 2.0;
-        let g1 = gamma::<R>(1).to_f64();
-        assert!((g1 - e / (1.0 - e)).abs() <= e * e * 4.0, "{g1}");
-        let g3 = gamma::<R>(3).to_f64();
-        assert!(
-            (g3 - 3.0 * e / (1.0 - 3.0 * e)).abs() <= e * e * 16.0,
-            "{g3}"
-        );
-        assert_eq!(gamma::<R>(0), R::ZERO);
-    }
-
-    #[test]
-    fn gamma_is_n_epsilon_over_one_minus_n_epsilon() {
-        gamma_is_the_bound_of_n_roundings::<f32>();
-        gamma_is_the_bound_of_n_roundings::<f64>();
     }
 
     fn box_basics<R: Real>() {

@@ -1,9 +1,15 @@
-//! A ray's hit on a surface, with the error bound of the computed point, and the origin of a
-//! ray spawned from it (pbrt-v4's `OffsetRayOrigin`): offset along the geometric normal by the
-//! error bound, so a secondary or shadow ray never re-hits the surface it leaves, at any scale,
-//! without a global epsilon.
+//! A ray's hit on a surface, with the error bound of the computed point, and what a shading step
+//! does with it, as pbrt-v4's `Interaction` does: the normal turned to face the incoming ray
+//! (`FaceForward`), and the rays spawned from it (`SpawnRay`, `OffsetRayOrigin`): offset along
+//! the geometric normal by the error bound, so a secondary or shadow ray never re-hits the
+//! surface it leaves, at any scale, without a global epsilon. The tracer and the solver's ray
+//! problems both take these from the hit, so a pixel's ray and the same ray as a ray problem
+//! are shaded with the same normal and the same shadow rays by construction.
 
-pub(crate) use super::bounds::gamma;
+use super::aggregate::Aggregate;
+use super::shadow::ShadowRays;
+use super::{Ray, Shape};
+use crate::core::rounding::gamma;
 use crate::core::{Real, Vector, V3};
 
 /// Where a ray meets a surface (t > 0).
@@ -17,8 +23,72 @@ pub struct SurfaceHit<R: Real> {
     /// A bound on the absolute error of each component of `p`.
     pub p_error: V3<R>,
     /// The surface's own unit normal at `p` (a plane's as given, a sphere's outward, a
-    /// triangle's (v1 − v0) × (v2 − v0)); turning it to face the ray is the caller's choice.
+    /// triangle's (v1 − v0) × (v2 − v0)); `SurfaceHit::facing` turns it to face a ray.
     pub normal: V3<R>,
+}
+
+/// The normal used at a hit: the surface's own, turned to face the incoming ray.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Facing<R: Real> {
+    /// N with N·D ≤ 0 for the incoming direction D.
+    pub normal: V3<R>,
+    /// Whether the surface's own normal was reversed to get it.
+    pub reversed: bool,
+}
+
+impl<R: Real> SurfaceHit<R> {
+    /// The point where the ray's *line* meets `shape` at a t behind the origin (t < 0): what
+    /// the solver shades as the line's reading of a ray that meets its surface only behind
+    /// (docs/conventions.md, "Ray hits"). `None` when the precision cannot resolve the normal
+    /// there (see [`super::Sphere::normal_at`]).
+    pub(crate) fn behind_origin(shape: &Shape<R>, ray: &Ray<R>, t: R) -> Option<Self> {
+        // The point's error bound, for any shape: O, P and tD each a few roundings off.
+        let p = shape.point_at(ray, t);
+        Some(SurfaceHit {
+            t,
+            p,
+            p_error: (ray.origin.abs() + p.abs() + (ray.direction * t).abs()) * gamma::<R>(8),
+            normal: shape.normal_at(p)?,
+        })
+    }
+
+    /// The surface's normal turned to face a ray arriving along `incoming` (pbrt-v4's
+    /// `FaceForward`; docs/conventions.md, "Orientation"): reversed when N·D > 0, so that a
+    /// primary ray sees the side it comes from.
+    #[inline]
+    pub(crate) fn facing(&self, incoming: V3<R>) -> Facing<R> {
+        let reversed = self.normal.dot(incoming) > R::ZERO;
+        Facing {
+            normal: if reversed { -self.normal } else { self.normal },
+            reversed,
+        }
+    }
+
+    /// The origin of a ray leaving the hit in direction `w` ([`offset_origin`] of the point,
+    /// its error bound and the surface's own normal).
+    #[inline]
+    pub(crate) fn spawn_origin(&self, w: V3<R>) -> V3<R> {
+        offset_origin::<R>(self.p, self.p_error, self.normal, w)
+    }
+
+    /// The ray leaving the hit in the unit direction `w`, from [`SurfaceHit::spawn_origin`].
+    #[inline]
+    pub(crate) fn spawn_ray(&self, w: V3<R>) -> Ray<R> {
+        Ray {
+            origin: self.spawn_origin(w),
+            direction: w,
+        }
+    }
+
+    /// The shadow rays from the hit through `aggregate`, as the core's `Visibility`.
+    #[inline]
+    pub(crate) fn shadow_rays<'a>(&self, aggregate: &'a Aggregate<R>) -> ShadowRays<'a, R> {
+        ShadowRays {
+            aggregate,
+            from: *self,
+            traced: 0,
+        }
+    }
 }
 
 /// The origin of a ray leaving `p` in direction `w`: `p` moved off the surface along `n`, to the
@@ -44,4 +114,66 @@ pub fn offset_origin<R: Real>(p: V3<R>, p_error: V3<R>, n: V3<R>, w: V3<R>) -> V
     };
     let (o, q) = (offset.to_array(), po.to_array());
     V3::<R>::new(away(q[0], o[0]), away(q[1], o[1]), away(q[2], o[2]))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::core::real::v3;
+    use crate::geometry::Plane;
+
+    fn floor_hit<R: Real>() -> (Shape<R>, Ray<R>, SurfaceHit<R>) {
+        let floor = Shape::Plane(Plane {
+            point: v3::<R>([0.0, 0.0, 0.0]),
+            normal: v3::<R>([0.0, 1.0, 0.0]),
+        });
+        let ray = Ray {
+            origin: v3::<R>([0.0, 2.0, 0.0]),
+            direction: v3::<R>([0.6, -0.8, 0.0]),
+        };
+        let hit = floor.hit(&ray, R::from_f64(f64::INFINITY)).expect("a hit");
+        (floor, ray, hit)
+    }
+
+    fn the_hit_faces_the_ray_and_spawns_off_its_surface<R: Real>() {
+        let (floor, ray, hit) = floor_hit::<R>();
+        let from_above = hit.facing(ray.direction);
+        assert_eq!(
+            (from_above.normal, from_above.reversed),
+            (hit.normal, false)
+        );
+        let from_below = hit.facing(-ray.direction);
+        assert_eq!(
+            (from_below.normal, from_below.reversed),
+            (-hit.normal, true)
+        );
+        let up = v3::<R>([0.6, 0.8, 0.0]);
+        let spawned = hit.spawn_ray(up);
+        assert_eq!(spawned.direction, up);
+        assert_eq!(
+            spawned.origin,
+            offset_origin::<R>(hit.p, hit.p_error, hit.normal, up)
+        );
+        assert!(spawned.origin.y() > R::ZERO, "{:?}", spawned.origin);
+        assert_eq!(floor.hit_t(&spawned, R::from_f64(f64::INFINITY)), None);
+    }
+
+    fn a_line_behind_the_origin_gives_a_hit_with_a_bound<R: Real>() {
+        let (floor, ray, _) = floor_hit::<R>();
+        let back = Ray {
+            direction: -ray.direction,
+            ..ray
+        };
+        let hit = SurfaceHit::behind_origin(&floor, &back, R::from_f64(-2.5)).expect("a normal");
+        assert_eq!(hit.normal, v3::<R>([0.0, 1.0, 0.0]));
+        assert!(hit.p.y().abs() <= hit.p_error.y(), "{hit:?}");
+    }
+
+    #[test]
+    fn a_hit_faces_spawns_and_reads_the_line_behind_in_both_precisions() {
+        the_hit_faces_the_ray_and_spawns_off_its_surface::<f32>();
+        the_hit_faces_the_ray_and_spawns_off_its_surface::<f64>();
+        a_line_behind_the_origin_gives_a_hit_with_a_bound::<f32>();
+        a_line_behind_the_origin_gives_a_hit_with_a_bound::<f64>();
+    }
 }

@@ -1,9 +1,11 @@
-//! Geometry: rays and the surfaces a ray problem (and later the tracer) can hit.
+//! Geometry: rays, the surfaces a ray problem or the tracer can hit, and what a hit hands on to
+//! shading (the normal facing the ray, the rays spawned from it).
 //!
 //! Intersections return the parameter t along the *line* of the ray, of either sign: whether a
 //! hit behind the origin (t ≤ 0) counts is the caller's decision (docs/conventions.md, "Ray
 //! hits": a hit needs t > 0, and the solver reports what the line would give when it meets a
-//! surface only behind).
+//! surface only behind). Each shape bounds the error of its own hit point (`Shape::hit_at`
+//! only dispatches).
 
 pub(crate) mod aggregate;
 pub(crate) mod bounds;
@@ -11,14 +13,13 @@ pub(crate) mod bvh;
 pub(crate) mod hit;
 pub(crate) mod plane;
 pub(crate) mod ray;
+pub(crate) mod shadow;
 pub(crate) mod sphere;
 pub(crate) mod triangle;
 
-pub(crate) use aggregate::ShadowRays;
 pub use aggregate::{Aggregate, AggregateHit};
 pub use bounds::Aabb;
 pub use bvh::{Bvh, BvhHit};
-pub(crate) use hit::gamma;
 pub use hit::{offset_origin, SurfaceHit};
 pub use plane::Plane;
 pub use ray::Ray;
@@ -104,55 +105,24 @@ impl<R: Real> Shape<R> {
     }
 
     /// The nearest hit with 0 < t < `t_max`, its point computed the accurate way for the shape
-    /// and bounded in error (for [`offset_origin`]). This is the one intersection routine of the
-    /// tracer and of the solver's ray problems.
+    /// and bounded in error (for `SurfaceHit::spawn_ray`). This is the one intersection
+    /// routine of the tracer and of the solver's ray problems.
     #[inline]
     pub fn hit(&self, ray: &Ray<R>, t_max: R) -> Option<SurfaceHit<R>> {
         match self {
-            Shape::Triangle(tri) => {
-                let h = tri.intersect(ray, t_max)?;
-                Some(SurfaceHit {
-                    t: h.t,
-                    p: h.p,
-                    p_error: h.p_error,
-                    normal: tri.normal()?,
-                })
-            }
+            Shape::Triangle(tri) => tri.hit(ray, t_max),
             _ => self.hit_at(ray, self.hit_t(ray, t_max)?),
         }
     }
 
-    /// The hit at a t found by [`Shape::hit_t`].
+    /// The hit at a t found by [`Shape::hit_t`], each shape's point and error bound its own.
     #[inline]
     pub(crate) fn hit_at(&self, ray: &Ray<R>, t: R) -> Option<SurfaceHit<R>> {
         match self {
-            Shape::Plane(pl) => {
-                // t carries the rounding of N·(Q − O)/(N·D); O + tD adds two more. (Each
-                // term is scaled by γ before the sum, which could overflow near the range's end.)
-                let p = ray.at(t);
-                let g = gamma::<R>(7);
-                let p_error =
-                    ray.origin.abs() * g + pl.point.abs() * g + (ray.direction * t).abs() * g;
-                Some(SurfaceHit {
-                    t,
-                    p,
-                    p_error,
-                    normal: pl.normal,
-                })
-            }
-            Shape::Sphere(s) => {
-                // Re-projected onto the sphere: C + r·(P − C)/‖P − C‖, a few roundings of |C|
-                // and |P| (pbrt re-projects in object space; here C is not at the origin).
-                let p = s.project(ray.at(t));
-                Some(SurfaceHit {
-                    t,
-                    p,
-                    p_error: s.center.abs() * gamma::<R>(6) + p.abs() * gamma::<R>(6),
-                    normal: s.normal_at(p)?,
-                })
-            }
+            Shape::Plane(pl) => Some(pl.hit_at(ray, t)),
+            Shape::Sphere(s) => s.hit_at(ray, t),
             // The same t again, with the barycentric point and its error bound.
-            Shape::Triangle(_) => self.hit(ray, t.next_up()),
+            Shape::Triangle(tri) => tri.hit(ray, t.next_up()),
         }
     }
 

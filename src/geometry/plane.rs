@@ -1,6 +1,8 @@
 //! An infinite plane through a point with a unit normal.
 
+use super::hit::SurfaceHit;
 use super::ray::Ray;
+use crate::core::rounding::gamma;
 use crate::core::{Real, Vector, V3};
 
 /// The plane N·(X − Q) = 0.
@@ -34,6 +36,24 @@ impl<R: Real> Plane<R> {
         };
         let t = along / denom;
         (t.is_finite() && ray.at(t).is_finite()).then_some(t)
+    }
+
+    /// The hit at a t found by [`Plane::intersect_line`]: O + tD, bounded in error, with the
+    /// plane's normal as given.
+    #[inline]
+    pub(crate) fn hit_at(&self, ray: &Ray<R>, t: R) -> SurfaceHit<R> {
+        // The point's error bound: t carries the rounding of N·(Q − O)/(N·D); O + tD adds two
+        // more. (Each term is scaled by γ before the sum, which could overflow near the range's
+        // end.)
+        let p = ray.at(t);
+        let g = gamma::<R>(7);
+        let p_error = ray.origin.abs() * g + self.point.abs() * g + (ray.direction * t).abs() * g;
+        SurfaceHit {
+            t,
+            p,
+            p_error,
+            normal: self.normal,
+        }
     }
 }
 

@@ -1,7 +1,9 @@
 //! A sphere, intersected with the numerically stable quadratic (pbrt-v4).
 
+use super::hit::SurfaceHit;
 use super::ray::Ray;
 use super::LineHits;
+use crate::core::rounding::gamma;
 use crate::core::vector::{length, normalize};
 use crate::core::{Real, Vector, V3};
 
@@ -73,6 +75,22 @@ impl<R: Real> Sphere<R> {
         } else {
             LineHits::NONE
         }
+    }
+
+    /// The hit at a t found by [`Sphere::intersect_line`]: O + tD re-projected onto the sphere,
+    /// bounded in error, with the outward normal; `None` when the precision cannot resolve the
+    /// normal (see [`Sphere::normal_at`]).
+    #[inline]
+    pub(crate) fn hit_at(&self, ray: &Ray<R>, t: R) -> Option<SurfaceHit<R>> {
+        // The point's error bound: C + r·(P − C)/‖P − C‖ is a few roundings of |C| and |P|
+        // (pbrt re-projects in object space; here C is not at the origin).
+        let p = self.project(ray.at(t));
+        Some(SurfaceHit {
+            t,
+            p,
+            p_error: self.center.abs() * gamma::<R>(6) + p.abs() * gamma::<R>(6),
+            normal: self.normal_at(p)?,
+        })
     }
 
     /// The outward unit normal at a point on the sphere; `None` when the point cannot be told

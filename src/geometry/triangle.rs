@@ -9,8 +9,10 @@
 //! rejected (§6.8.4), and the interpolated hit point carries the bound of its rounding error
 //! (§6.8.5), from which a spawned ray's origin is offset.
 
-use super::bounds::{gamma, Aabb};
+use super::bounds::Aabb;
+use super::hit::SurfaceHit;
 use super::ray::Ray;
+use crate::core::rounding::gamma;
 use crate::core::vector::normalize;
 use crate::core::{Real, Vector, V3};
 
@@ -237,6 +239,20 @@ impl<R: Real> Triangle<R> {
         let g = gamma::<R>(7);
         let p_error = w0.abs() * g + w1.abs() * g + w2.abs() * g;
         Some(TriangleHit { t, b, p, p_error })
+    }
+
+    /// The ray's hit with 0 < t < `t_max` as [`Triangle::intersect`] finds it, with the
+    /// barycentric point, its error bound and the triangle's normal; `None` also for a
+    /// triangle degenerate in this precision (see [`Triangle::normal`]).
+    #[inline]
+    pub(crate) fn hit(&self, ray: &Ray<R>, t_max: R) -> Option<SurfaceHit<R>> {
+        let h = self.intersect(ray, t_max)?;
+        Some(SurfaceHit {
+            t: h.t,
+            p: h.p,
+            p_error: h.p_error,
+            normal: self.normal()?,
+        })
     }
 
     /// t (of either sign, 0 included) where the ray's *line* meets the triangle, by the same

@@ -844,10 +844,8 @@ pub(crate) fn runs(line: &[Inline]) -> Vec<Run<'_>> {
     out
 }
 
-/// A colour clamped to [0, 1] in 8 bits, for a swatch.
-pub(crate) fn to_rgb8(c: [f64; 3]) -> [u8; 3] {
-    c.map(|x| (x.clamp(0.0, 1.0) * 255.0).round() as u8)
-}
+/// A colour clamped to [0, 1] in 8 bits, for a swatch (the solver's and the tracer's rounding).
+pub(crate) use crate::core::color::rgb8 as to_rgb8;
 
 /// A number in LaTeX math: "1.5e9" becomes "1.5 \times 10^{9}".
 pub(crate) fn latex_number(x: f64) -> String {

@@ -7,12 +7,14 @@ mod file;
 mod findings;
 mod rounding;
 
+use crate::core::color::{self, clamp01};
+use crate::core::real::to_f64_array;
 use crate::core::vector::between;
 use crate::core::{
     shade_with, AllVisible, Chapter, Formulas, Light, LightKind, LightSet, LightStatus, LightTerm,
     Real, Shade, Vector, Visibility, V3,
 };
-use crate::geometry::{gamma, Aggregate, Ray, ShadowRays, SurfaceHit};
+use crate::geometry::{Aggregate, Ray, SurfaceHit};
 use crate::problem::validate::{light_label, show};
 use crate::problem::{GivenVector, Invalid, NamedMaterial, Problem, SurfaceSource, Target};
 
@@ -372,30 +374,24 @@ pub(crate) fn solve_ray_with<R: Real, F: Formulas>(
         in_front: hit.is_some_and(|(_, t, _)| t > R::ZERO),
     };
     // The shading at a hit, V from the incoming direction (the ray's, or the reversed ray's
-    // for a hit behind) and N turned to face it (docs/conventions.md, "Orientation", as in the
-    // tracer).
+    // for a hit behind) and N turned to face it by the hit, as in the tracer
+    // (docs/conventions.md, "Orientation").
     let at_hit = |i: usize, hit: &SurfaceHit<R>, source: ViewSource| {
         let s = &surfaces[i];
         let incoming = match source {
             ViewSource::ReversedRay => -ray.direction,
             _ => ray.direction,
         };
-        let own = hit.normal;
-        let reversed = own.dot(incoming) > R::ZERO;
+        let facing = hit.facing(incoming);
         let normal = NormalUsed {
-            given: s.normal.map_or(own, |n| n.given),
+            given: s.normal.map_or(hit.normal, |n| n.given),
             length: s.normal.map_or(R::ONE, |n| n.length),
-            used: if reversed { -own } else { own },
-            reversed,
+            used: facing.normal,
+            reversed: facing.reversed,
         };
         let view = Some((incoming, source));
-        // Shadow rays as the tracer casts them, when the problem has them on.
-        let mut shadows = problem.render.shadows.then_some(ShadowRays {
-            aggregate,
-            p_error: hit.p_error,
-            normal: own,
-            traced: 0,
-        });
+        // The hit's shadow rays, as the tracer casts them, when the problem has them on.
+        let mut shadows = problem.render.shadows.then(|| hit.shadow_rays(aggregate));
         let m = &s.material;
         let e = evaluate(
             problem,
@@ -448,16 +444,9 @@ pub(crate) fn solve_ray_with<R: Real, F: Formulas>(
         }
         match behind {
             Some((i, t)) => {
-                let shape = &surfaces[i].shape;
-                let p = shape.point_at(ray, t);
-                let hit = SurfaceHit {
-                    t,
-                    p,
-                    p_error: (ray.origin.abs() + p.abs() + (ray.direction * t).abs())
-                        * gamma::<R>(8),
-                    normal: shape.normal_at(p).ok_or_else(|| unresolved(i))?,
-                };
-                let rec = record(Some((i, t, p)));
+                let hit = SurfaceHit::behind_origin(&surfaces[i].shape, ray, t)
+                    .ok_or_else(|| unresolved(i))?;
+                let rec = record(Some((i, t, hit.p)));
                 solution.intersection = Some(rec);
                 solution.readings.push(Reading {
                     code: ReadingCode::LineBehindOrigin,
@@ -636,8 +625,7 @@ fn evaluate<R: Real, F: Formulas, Vis: Visibility<R>>(
     }
 
     let clamped = clamp01::<R>(shade.color);
-    let c = clamped.to_array();
-    let rgb8 = [0, 1, 2].map(|i| (c[i].to_f64() * 255.0).round() as u8);
+    let rgb8 = color::rgb8(to_f64_array::<R>(clamped));
     Ok(Evaluation {
         point: p,
         normal,
@@ -651,11 +639,6 @@ fn evaluate<R: Real, F: Formulas, Vis: Visibility<R>>(
         rgb8,
         p_error: None,
     })
-}
-
-fn clamp01<R: Real>(c: V3<R>) -> V3<R> {
-    let a = c.to_array().map(|x| x.max(R::ZERO).min(R::ONE));
-    V3::<R>::new(a[0], a[1], a[2])
 }
 
 /// Refuses a result that is not finite in this precision: never print NaN or infinity.

@@ -6,7 +6,7 @@ use super::camera::CameraRays;
 use super::render::{clamped, to_rgb8};
 use super::sampler::sample;
 use super::trace::{Counts, RayRecord, Scene, Tracer};
-use crate::core::{Real, V3};
+use crate::core::{Real, Vector, V3};
 use crate::problem::{Camera, GivenVector, Invalid, Problem};
 use crate::solve::{solve_ray, Solution};
 
@@ -67,10 +67,6 @@ pub fn explain_pixel<R: Real>(
             &mut counts,
             &mut records,
         );
-        let c = clamped::<R>(color);
-        for k in 0..3 {
-            sum[k] += c[k];
-        }
         let mut explained = Vec::with_capacity(records.len());
         for record in records {
             let solution = match record.hit {
@@ -93,6 +89,15 @@ pub fn explain_pixel<R: Real>(
             };
             explained.push(RayExplanation { record, solution });
         }
+        // Each ray's own colour is finite here (the solver refuses one that overflows); their
+        // sum along the path may still overflow.
+        if !color.is_finite() {
+            return Err(overflowed(problem, &explained));
+        }
+        let c = clamped::<R>(color);
+        for k in 0..3 {
+            sum[k] += c[k];
+        }
         samples.push(SampleExplanation {
             position,
             rays: explained,
@@ -106,4 +111,42 @@ pub fn explain_pixel<R: Real>(
         rgb8: to_rgb8(sum, n),
         counts,
     })
+}
+
+/// Why a path's colour Σ factor·local is not finite although each ray's own colour is: the
+/// factor, the product of the O_r of the hits before a ray (Eq. 4.17), or its product with that
+/// ray's local colour, overflows. Names the surface whose reflection was the last one added,
+/// as the solver names the light whose term overflows.
+fn overflowed<R: Real>(problem: &Problem<R>, rays: &[RayExplanation<R>]) -> Invalid {
+    let surfaces = problem.surfaces();
+    // The first ray whose contribution factor·local is not finite, and the hit it left from.
+    let k = rays
+        .iter()
+        .position(|r| !(r.record.factor * r.record.local).is_finite())
+        .unwrap_or(rays.len().saturating_sub(1));
+    let from = k
+        .checked_sub(1)
+        .and_then(|j| rays[j].record.hit)
+        .map(|h| &surfaces[h.index]);
+    let (field, material) = match from {
+        Some(s) => (
+            format!("surfaces[{}]", s.source.index),
+            s.material
+                .name
+                .as_deref()
+                .map_or(String::new(), |m| format!(" (material \"{m}\")")),
+        ),
+        None => ("surfaces".to_owned(), String::new()),
+    };
+    let level = rays.get(k).map_or(1, |r| r.record.level);
+    Invalid::new(
+        field,
+        format!(
+            "the colour this pixel's ray of level {level} adds, O_r·C_r (Eq. 4.17), overflows \
+             {}{material}",
+            R::NAME
+        ),
+        "bring the reflectivity O_r and the colours into a smaller range (a reflectivity lies \
+         in [0, 1])",
+    )
 }

@@ -7,7 +7,9 @@ use rayon::prelude::*;
 use super::camera::CameraRays;
 use super::sampler::sample;
 use super::trace::{Counts, Scene, Tracer};
-use crate::core::{Real, Vector, V3};
+use crate::core::color::{clamp01, rgb8};
+use crate::core::real::to_f64_array;
+use crate::core::{Real, V3};
 use crate::problem::{Camera, Problem};
 
 /// An 8-bit RGB image, rows top to bottom.
@@ -25,13 +27,19 @@ pub struct Image {
 /// display for that ray), then round(255·c), as the solver's 8-bit colour.
 #[inline]
 pub(crate) fn to_rgb8(sum: [f64; 3], samples: u32) -> [u8; 3] {
-    mean_to_rgb8(sum.map(|c| c / f64::from(samples)))
+    rgb8(mean(sum, samples))
+}
+
+/// The mean of `samples` summed values.
+#[inline]
+fn mean(sum: [f64; 3], samples: u32) -> [f64; 3] {
+    sum.map(|c| c / f64::from(samples))
 }
 
 /// A colour clamped to [0, 1] and widened, to be summed over samples.
 #[inline]
 pub(crate) fn clamped<R: Real>(c: V3<R>) -> [f64; 3] {
-    c.to_array().map(|x| x.max(R::ZERO).min(R::ONE).to_f64())
+    to_f64_array::<R>(clamp01::<R>(c))
 }
 
 /// The mean of pixel (x, y)'s samples, each clamped to [0, 1] (before rounding to 8 bits).
@@ -52,13 +60,7 @@ pub(crate) fn pixel_mean<R: Real>(
             sum[k] += c[k];
         }
     }
-    sum.map(|c| c / f64::from(n))
-}
-
-/// A pixel's mean in 8 bits: round(255·c), as the solver's 8-bit colour.
-#[inline]
-pub(crate) fn mean_to_rgb8(mean: [f64; 3]) -> [u8; 3] {
-    mean.map(|c| (c * 255.0).round() as u8)
+    mean(sum, n)
 }
 
 /// An image of pixel means in [0, 1] (before rounding to 8 bits), rows top to bottom: what
@@ -110,7 +112,7 @@ pub fn render<R: Real>(
     scene: &Scene<R>,
     progress: &(dyn Fn() + Sync),
 ) -> (Image, Counts) {
-    let (rgb, counts) = render_rows(problem, camera, scene, progress, mean_to_rgb8);
+    let (rgb, counts) = render_rows(problem, camera, scene, progress, rgb8);
     let image = Image {
         width: camera.width,
         height: camera.height,

@@ -4,12 +4,13 @@
 //! Σ_k (O_r,1 ⋯ O_r,k−1) C_local,k, so no recursion and no allocation; the explanation shows
 //! each ray's factor and share.
 //!
-//! The local colour of every hit is the core's [`shade`], with the core's gating, given shadow
-//! rays through [`ShadowRays`].
+//! The local colour of every hit is the core's [`shade`], with the core's gating, given the
+//! hit's shadow rays ([`crate::geometry::SurfaceHit::shadow_rays`]); the normal facing the ray
+//! and the reflection ray's origin are the hit's too, as in the solver's ray problems.
 
 use crate::core::vector::normalize;
 use crate::core::{shade, Material, NoRecord, Real, ShadingPoint, Vector, V3};
-use crate::geometry::{offset_origin, Aggregate, AggregateHit, Ray, ShadowRays};
+use crate::geometry::{Aggregate, AggregateHit, Ray};
 use crate::problem::Problem;
 
 /// The geometry and materials of a scene, built once for a render.
@@ -178,31 +179,26 @@ impl<R: Real> Tracer<'_, R> {
             record.hit = Some(h);
             let m = &self.scene.materials[h.index];
             // N turned to face the incoming ray; V is the ray's direction (Eq. 4.10).
-            let own = h.hit.normal;
-            let n = if own.dot(ray.direction) > R::ZERO {
-                -own
-            } else {
-                own
-            };
+            let n = h.hit.facing(ray.direction).normal;
             let at = ShadingPoint {
                 p: h.hit.p,
                 n,
                 v: Some(ray.direction),
             };
             // The local colour, Eq. 4.16, by the core.
-            let mut shadows = self.problem.render.shadows.then_some(ShadowRays {
-                aggregate: &self.scene.aggregate,
-                p_error: h.hit.p_error,
-                normal: own,
-                traced: 0,
-            });
+            let mut shadows = self
+                .problem
+                .render
+                .shadows
+                .then(|| h.hit.shadow_rays(&self.scene.aggregate));
             let local = shade(&at, m, lights, &mut shadows, &mut NoRecord).color;
             counts.shadow += shadows.map_or(0, |s| s.traced);
             color += factor * local;
             record.local = local;
             record.o_r = m.o_r;
             // A reflection ray only where O_r ≠ 0, its level ≤ the maximum and its weight
-            // w_s = w_p·max(O_r) above the minimum (docs/conventions.md, "Weight").
+            // w_s = w_p·max(O_r) above the minimum (docs/conventions.md, "Recursion level",
+            // "Weight").
             record.stop = match m.o_r {
                 None => Some(Stop::NotReflective),
                 Some(o_r) if o_r == V3::<R>::ZERO => Some(Stop::NotReflective),
@@ -228,17 +224,13 @@ impl<R: Real> Tracer<'_, R> {
             let Some(r_v) = normalize::<R>(r_v) else {
                 return color;
             };
-            let origin = offset_origin::<R>(h.hit.p, h.hit.p_error, own, r_v.unit);
+            ray = h.hit.spawn_ray(r_v.unit);
             spawn = Some(Spawn {
                 from: h.hit.p,
                 p_error: h.hit.p_error,
-                normal: own,
-                origin,
+                normal: h.hit.normal,
+                origin: ray.origin,
             });
-            ray = Ray {
-                origin,
-                direction: r_v.unit,
-            };
             factor = factor * o_r;
             weight = weight * o_r.max_element();
             level += 1;
