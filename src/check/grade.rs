@@ -24,7 +24,8 @@ pub struct Options {
     pub exercises: PathBuf,
     /// The scale of answers that are not `#RRGGBB`.
     pub scale: Scale,
-    /// The tolerance; `None` for the scale's default (0.005, or 1 on the 255 scale).
+    /// The tolerance; `None` for each exercise key's own, else the scale's default (0.005, or 1
+    /// on the 255 scale).
     pub tolerance: Option<f64>,
     /// Only the problem as written is right (a likely intended reading is not accepted).
     pub strict: bool,
@@ -112,14 +113,21 @@ pub(crate) struct Unreadable {
     pub source: std::io::Error,
 }
 
+/// An exercise solved once: what answers are judged against, and its answer key's own
+/// tolerance (which, like `phong check`'s, judges every answer to it unless `--tolerance`).
+struct Exercise {
+    expected: Expected,
+    key: Option<answer::Key>,
+}
+
 /// Each exercise solved once, or why it cannot be.
 struct Cache<'a> {
     options: &'a Options,
-    solved: BTreeMap<String, Result<Expected, String>>,
+    solved: BTreeMap<String, Result<Exercise, String>>,
 }
 
 impl Cache<'_> {
-    fn get(&mut self, exercise: &str) -> &Result<Expected, String> {
+    fn get(&mut self, exercise: &str) -> &Result<Exercise, String> {
         if !self.solved.contains_key(exercise) {
             let result = self.solve(exercise);
             self.solved.insert(exercise.to_owned(), result);
@@ -127,7 +135,7 @@ impl Cache<'_> {
         &self.solved[exercise]
     }
 
-    fn solve(&self, exercise: &str) -> Result<Expected, String> {
+    fn solve(&self, exercise: &str) -> Result<Exercise, String> {
         let dir = &self.options.exercises;
         let safe = !exercise.starts_with('.')
             && exercise
@@ -148,8 +156,11 @@ impl Cache<'_> {
                 dir.display()
             ));
         }
-        let (_, problem) = crate::problem::load::<f64>(&path).map_err(|e| e.to_string())?;
-        Expected::of(&problem).map_err(|e| e.at(&path).to_string())
+        let (file, problem) = crate::problem::load::<f64>(&path).map_err(|e| e.to_string())?;
+        let expected = Expected::of(&problem).map_err(|e| e.at(&path).to_string())?;
+        // A key that cannot be read judges nothing here (`phong check` reports it).
+        let key = file.answer.as_ref().and_then(|k| answer::from_key(k).ok());
+        Ok(Exercise { expected, key })
     }
 }
 
@@ -266,7 +277,7 @@ fn grade_row(row: &mut RowOut, fields: &[&[u8]], options: &Options, cache: &mut 
     if let Some(i) = empty {
         return invalid(row, format!("the {} field is empty", COLUMNS[i]));
     }
-    let expected = match cache.get(&row.exercise) {
+    let Exercise { expected, key } = match cache.get(&row.exercise) {
         Ok(e) => e,
         Err(e) => return invalid(row, e.clone()),
     };
@@ -276,13 +287,17 @@ fn grade_row(row: &mut RowOut, fields: &[&[u8]], options: &Options, cache: &mut 
     };
     let tolerance = options
         .tolerance
+        .or_else(|| key.and_then(|k| k.tolerance_on(a.scale)))
         .unwrap_or_else(|| a.scale.default_tolerance());
     let v: Verdict = judge(expected, &a, tolerance, options.strict);
     row.verdict = verdict_code(v.kind);
     row.accepted = v.accepted;
     row.scale = Some(scale_number(a.scale));
     row.tolerance = Some(tolerance);
-    row.expected = v.comparison.map(|c| c.expected);
+    row.expected = v
+        .comparison
+        .map(|c| c.expected)
+        .or(v.has_colour.map(|(c, _)| c));
     row.difference = v.comparison.map(|c| c.difference);
     row.reading = v.reading.as_ref().map(|r| r.code);
     row.diagnosis = v.diagnosis.iter().map(|d| d.slips.clone()).collect();

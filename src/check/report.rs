@@ -7,7 +7,7 @@ use std::fmt::Write;
 use serde::Serialize;
 
 use super::messages::{self, Line};
-use super::{Answer, Comparison, Scale, Verdict, VerdictKind};
+use super::{Answer, Candidate, Comparison, Nearest, Scale, Verdict, VerdictKind};
 use crate::problem::ProblemError;
 use crate::report::lang::Lang;
 use crate::report::number::num;
@@ -37,6 +37,8 @@ pub struct Checked {
     pub source: AnswerSource,
     /// The judged answer, or why it could not be checked.
     pub outcome: Result<Judged, Failure>,
+    /// Likely unit mistakes in the problem file (never errors).
+    pub warnings: Vec<crate::problem::warnings::Warning>,
 }
 
 /// An answer that could be checked: the answer read, the tolerance it was judged under, and
@@ -183,12 +185,11 @@ pub fn text(c: &Checked, lang: Lang) -> String {
         messages::verdict(v.kind, v.accepted, lang)
     );
     let label = |l| format!("{:<11}", messages::line(l, lang));
-    let _ = writeln!(
-        out,
-        "  {}{}",
-        label(Line::Answer),
-        triple(answer.values, num)
-    );
+    let shown = match answer.values {
+        Some(values) => triple(values, num),
+        None => messages::no_hit_answer(lang).to_owned(),
+    };
+    let _ = writeln!(out, "  {}{shown}", label(Line::Answer));
     match &v.comparison {
         Some(cmp) => {
             let _ = writeln!(
@@ -205,9 +206,20 @@ pub fn text(c: &Checked, lang: Lang) -> String {
                 triple(cmp.difference, signed)
             );
         }
-        None => {
-            let _ = writeln!(out, "  {}", messages::nothing_to_shade(lang));
-        }
+        None => match v.has_colour {
+            Some((colour, ray)) => {
+                let _ = writeln!(
+                    out,
+                    "  {}{}  {}",
+                    label(Line::Expected),
+                    triple(colour, num),
+                    messages::has_colour(ray, lang)
+                );
+            }
+            None => {
+                let _ = writeln!(out, "  {}", messages::nothing_to_shade(lang));
+            }
+        },
     }
     let _ = writeln!(
         out,
@@ -240,6 +252,9 @@ pub fn text(c: &Checked, lang: Lang) -> String {
             }
         }
     }
+    if v.kind == VerdictKind::Wrong && v.written.is_none() && answer.values.is_some() {
+        let _ = writeln!(out, "  {}", messages::nothing_to_shade(lang));
+    }
     if v.kind == VerdictKind::Wrong {
         if v.diagnosis.is_empty() {
             let _ = writeln!(out, "  {}", messages::no_diagnosis(lang));
@@ -262,8 +277,27 @@ pub fn text(c: &Checked, lang: Lang) -> String {
         if v.looks_8bit {
             let _ = writeln!(out, "  {}", messages::looks_8bit(lang));
         }
+        if let Some(n) = v.nearest.as_ref().filter(|n| worth_showing(n, v)) {
+            let _ = writeln!(
+                out,
+                "  {}{}  {}",
+                label(Line::Closest),
+                triple(n.comparison.expected, num),
+                messages::nearest(&n.candidate, n.comparison.distance(), *tolerance, lang)
+            );
+        }
     }
     out
+}
+
+/// A nearest candidate is news unless it is the colour the "expected" line already shows.
+fn worth_showing(n: &Nearest, v: &Verdict) -> bool {
+    let shown = match (&n.candidate, v.compared_reading) {
+        (Candidate::Written, None) => true,
+        (Candidate::Reading(code, _), Some(r)) => *code == r,
+        _ => false,
+    };
+    !shown
 }
 
 /// The JSON form of a comparison's target.
@@ -344,8 +378,33 @@ pub struct CheckOut {
     pub reading: Option<ReadingOut>,
     /// The slips (or pairs of slips) whose colour the answer matches.
     pub diagnosis: Vec<DiagnosisOut>,
+    /// For a wrong answer: the closest candidate it does not match, and how far it is.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub nearest: Option<NearestOut>,
     /// Why the answer could not be checked (`kind`, `field`, `message`); `null` when it was.
     pub error: Option<Failure>,
+    /// Likely unit mistakes in the problem file; absent when there are none.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub warnings: Vec<crate::report::json::WarningOut>,
+}
+
+/// The candidate closest to a wrong answer.
+#[derive(Serialize)]
+pub struct NearestOut {
+    /// "solution" (the problem as written), "reading" or "slips".
+    pub source: &'static str,
+    /// The reading's code when `source` is "reading".
+    pub reading: Option<ReadingCode>,
+    /// The slips' codes when `source` is "slips".
+    pub slips: Vec<super::Slip>,
+    /// Its colour, on the answer's scale.
+    pub color: [f64; 3],
+    /// answer − color, per channel, on the answer's scale.
+    pub difference: [f64; 3],
+    /// The largest |difference| of a channel.
+    pub distance: f64,
+    /// In words (English).
+    pub description: String,
 }
 
 fn expected_out(cmp: &Comparison, reading: Option<ReadingCode>) -> ExpectedOut {
@@ -380,7 +439,9 @@ pub fn json(c: &Checked) -> CheckOut {
         difference: None,
         reading: None,
         diagnosis: Vec::new(),
+        nearest: None,
         error: None,
+        warnings: crate::report::json::warnings_out(&c.warnings),
     };
     match &c.outcome {
         Err(f) => {
@@ -393,7 +454,7 @@ pub fn json(c: &Checked) -> CheckOut {
             verdict: v,
         }) => {
             out.answer.scale = Some(scale_number(answer.scale));
-            out.answer.values = Some(answer.values);
+            out.answer.values = answer.values;
             out.tolerance = Some(*tolerance);
             out.verdict = verdict_code(v.kind);
             out.accepted = v.accepted;
@@ -419,6 +480,35 @@ pub fn json(c: &Checked) -> CheckOut {
                     difference: d.comparison.difference,
                 })
                 .collect();
+            out.nearest = v.nearest.as_ref().map(|n| {
+                let (source, reading, slips) = match &n.candidate {
+                    Candidate::Written => ("solution", None, Vec::new()),
+                    Candidate::Reading(code, _) => ("reading", Some(*code), Vec::new()),
+                    Candidate::Slips { slips, .. } => ("slips", None, slips.clone()),
+                };
+                NearestOut {
+                    source,
+                    reading,
+                    slips,
+                    color: n.comparison.expected,
+                    difference: n.comparison.difference,
+                    distance: n.comparison.distance(),
+                    description: messages::nearest(
+                        &n.candidate,
+                        n.comparison.distance(),
+                        *tolerance,
+                        Lang::En,
+                    ),
+                }
+            });
+            if let Some((colour, _)) = v.has_colour {
+                out.expected = Some(ExpectedOut {
+                    color: colour,
+                    source: "solution",
+                    reading: None,
+                    against: super::Against::Clamped,
+                });
+            }
         }
     }
     out

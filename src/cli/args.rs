@@ -203,8 +203,18 @@ pub(crate) struct CheckArgs {
     /// Accept only the problem as written, not its likely intended reading.
     #[arg(long)]
     pub(crate) strict: bool,
+    /// Check an intermediate step, NAME=VALUE (repeatable): cos_theta=0.98995, R=0.6,0,0.8,
+    /// cos_theta[1]=0.5 for lights[1]. Names: t, P, N, V, I_a, ambient, L, d, falloff_factor,
+    /// cos_psi, spot_factor, I_l, n_dot_l, cos_theta, diffuse, R, cos_phi, cos_phi_pow,
+    /// specular, total_diffuse, total_specular, I. Only with one FILE.
+    #[arg(long, value_name = "NAME=VALUE", allow_hyphen_values = true)]
+    pub(crate) step: Vec<String>,
+    /// Check the steps in a JSON file: {"cos_theta": 0.98995, "R": [0.6, 0, 0.8]}. Only with
+    /// one FILE.
+    #[arg(long, value_name = "STEPS.json")]
+    pub(crate) steps: Option<PathBuf>,
     /// Instead of checking an answer, list what each applicable slip (and pair) gives.
-    #[arg(long, conflicts_with_all = ["answer", "format"])]
+    #[arg(long, conflicts_with_all = ["answer", "format", "step", "steps"])]
     pub(crate) slips: bool,
     /// Output format: text for people, json for scripts (stable field names, format_version).
     #[arg(long, value_enum, default_value_t = CheckFormat::Text)]
@@ -232,7 +242,8 @@ pub(crate) struct GradeArgs {
     /// The scale of answers that are not "#RRGGBB".
     #[arg(long, value_enum, default_value = "1")]
     pub(crate) scale: check::Scale,
-    /// The largest difference accepted per channel [default: 0.005 on the 0–1 scale, 1 on 255].
+    /// The largest difference accepted per channel [default: each exercise key's own, else
+    /// 0.005 on the 0–1 scale, 1 on the 255 scale].
     #[arg(long, value_name = "T", allow_hyphen_values = true)]
     pub(crate) tolerance: Option<f64>,
     /// Accept only the problem as written, not its likely intended reading.

@@ -92,6 +92,11 @@ pub(crate) fn print(error: &dyn Display) {
     eprintln!("error: {error}");
 }
 
+/// Prints a warning (a likely mistake that is not an error) on standard error.
+pub(crate) fn warn(warning: &dyn Display) {
+    eprintln!("warning: {warning}");
+}
+
 /// The exit of a step a command goes on after (one file of several): success, or bad input
 /// once its error is printed.
 pub(crate) fn carry_on(step: Result<(), CliError>) -> Exit {

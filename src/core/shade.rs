@@ -234,6 +234,19 @@ pub(crate) trait Formulas: Copy {
     /// N is used as given, not of unit length: cos φ is then not a cosine and is not clamped to
     /// [−1, 1] (the clamp guards unit vectors against rounding only).
     fn raw_normal(self) -> bool;
+    /// An intermediate as a hand calculation writes it down: [`Chapter`] keeps every digit;
+    /// [`Slipped`] with `round_to: Some(k)` rounds N, V, L, d, 1/d^f, I_l, N·L, R, cos φ,
+    /// (cos φ)^n_s and each term to k decimals before the next step uses it.
+    fn round<R: Real>(self, x: R) -> R;
+    /// Whether [`Formulas::round`] rounds (then (cos φ)^n_s is the plain power of the rounded
+    /// cos φ, as by hand, not the accurate form near the highlight).
+    fn rounds(self) -> bool;
+}
+
+/// Every component of `v` as [`Formulas::round`] writes it down.
+#[inline(always)]
+fn round_v<R: Real, F: Formulas>(f: F, v: V3<R>) -> V3<R> {
+    V3::<R>::new(f.round(v.x()), f.round(v.y()), f.round(v.z()))
 }
 
 /// The chapter's formulas, unchanged: the tracer's and the solver's.
@@ -253,6 +266,14 @@ impl Formulas for Chapter {
     fn raw_normal(self) -> bool {
         false
     }
+    #[inline(always)]
+    fn round<R: Real>(self, x: R) -> R {
+        x
+    }
+    #[inline(always)]
+    fn rounds(self) -> bool {
+        false
+    }
 }
 
 /// Formula switches chosen at run time (the mistake diagnosis of `phong check`).
@@ -261,6 +282,8 @@ pub(crate) struct Slipped {
     pub abs_cos_theta: bool,
     pub half_vector: bool,
     pub raw_normal: bool,
+    /// Round every intermediate to this many decimals (a hand calculation's slip).
+    pub round_to: Option<u8>,
 }
 
 impl Formulas for Slipped {
@@ -275,6 +298,20 @@ impl Formulas for Slipped {
     #[inline]
     fn raw_normal(self) -> bool {
         self.raw_normal
+    }
+    #[inline]
+    fn round<R: Real>(self, x: R) -> R {
+        match self.round_to {
+            Some(k) => {
+                let scale = 10f64.powi(i32::from(k));
+                R::from_f64((x.to_f64() * scale).round() / scale)
+            }
+            None => x,
+        }
+    }
+    #[inline]
+    fn rounds(self) -> bool {
+        self.round_to.is_some()
     }
 }
 
@@ -318,9 +355,15 @@ pub(crate) fn shade_with<R: Real, Rec: Recorder<R>, Vis: Visibility<R>, F: Formu
     visibility: &mut Vis,
     rec: &mut Rec,
 ) -> Shade<R> {
+    // N and V as the formulas write them down (the chapter: exactly as given).
+    let at: &ShadingPoint<R> = &ShadingPoint {
+        p: at.p,
+        n: round_v::<R, F>(formulas, at.n),
+        v: at.v.map(|v| round_v::<R, F>(formulas, v)),
+    };
     // Ambient light, Eq. 4.6.
     let ambient = match (m.o_a, lights.ambient) {
-        (Some(o_a), Some(i_a)) => Some(o_a * i_a),
+        (Some(o_a), Some(i_a)) => Some(round_v::<R, F>(formulas, o_a * i_a)),
         _ => None,
     };
     let mut diffuse = V3::<R>::ZERO;
@@ -333,9 +376,13 @@ pub(crate) fn shade_with<R: Real, Rec: Recorder<R>, Vis: Visibility<R>, F: Formu
     let contributes = m.o_d.is_some() || (m.o_s.is_some() && at.v.is_some());
 
     for (index, light) in lights.lights.iter().enumerate() {
-        let arrival = light.arrive_with(at.p, Rec::DETAIL);
+        let mut arrival = light.arrive_with(at.p, Rec::DETAIL);
+        arrival.l = round_v::<R, F>(formulas, arrival.l);
+        arrival.distance = arrival.distance.map(|d| formulas.round(d));
+        arrival.falloff_factor = formulas.round(arrival.falloff_factor);
+        arrival.i_l = round_v::<R, F>(formulas, arrival.i_l);
         // Diffuse reflection, cos θ = −N·L, Eq. 4.7–4.8.
-        let n_dot_l = at.n.dot(arrival.l);
+        let n_dot_l = formulas.round(at.n.dot(arrival.l));
         let cos_theta = if formulas.abs_cos_theta() {
             n_dot_l.abs()
         } else {
@@ -373,7 +420,7 @@ pub(crate) fn shade_with<R: Real, Rec: Recorder<R>, Vis: Visibility<R>, F: Formu
             None => (None, None),
             Some(o_d) => {
                 let value = if arrives && (lit || Rec::DETAIL) {
-                    o_d * arrival.i_l * cos_theta
+                    round_v::<R, F>(formulas, o_d * arrival.i_l * cos_theta)
                 } else {
                     V3::<R>::ZERO
                 };
@@ -396,13 +443,13 @@ pub(crate) fn shade_with<R: Real, Rec: Recorder<R>, Vis: Visibility<R>, F: Formu
                 SpecularTerm::skipped(SpecularStatus::LightNotLit)
             }
             (Some(o_s), Some(v)) => {
-                let r = arrival.l - at.n * (R::TWO * n_dot_l);
+                let r: V3<R> = round_v::<R, F>(formulas, arrival.l - at.n * (R::TWO * n_dot_l));
                 let cos_phi = if formulas.half_vector() {
                     // Blinn: H halfway between the directions to the light and to the eye.
                     crate::core::vector::normalize::<R>(-arrival.l - v)
                         .map_or(R::ZERO, |h| at.n.dot(h.unit))
                 } else {
-                    -r.dot(v)
+                    formulas.round(-r.dot(v))
                 };
                 let (st, pow, term) = if !lit {
                     (SpecularStatus::LightNotLit, None, V3::<R>::ZERO)
@@ -411,12 +458,17 @@ pub(crate) fn shade_with<R: Real, Rec: Recorder<R>, Vis: Visibility<R>, F: Formu
                     // nor a cos φ that rounds to 1 into a spurious 1 (see `cos_phi_pow`).
                     let pow = if formulas.raw_normal() {
                         cos_phi.pow(m.n_s)
-                    } else if formulas.half_vector() {
+                    } else if formulas.half_vector() || formulas.rounds() {
                         cos_phi.min(R::ONE).pow(m.n_s)
                     } else {
                         cos_phi_pow(cos_phi, r, v, m.n_s)
                     };
-                    (SpecularStatus::Lit, Some(pow), o_s * arrival.i_l * pow)
+                    let pow = formulas.round(pow);
+                    (
+                        SpecularStatus::Lit,
+                        Some(pow),
+                        round_v::<R, F>(formulas, o_s * arrival.i_l * pow),
+                    )
                 } else {
                     (SpecularStatus::AwayFromViewer, None, V3::<R>::ZERO)
                 };
@@ -426,7 +478,8 @@ pub(crate) fn shade_with<R: Real, Rec: Recorder<R>, Vis: Visibility<R>, F: Formu
                     Some(V3::<R>::ZERO)
                 } else {
                     let clamp = !formulas.raw_normal();
-                    let unit = (clamp && !formulas.half_vector()).then_some((r, v));
+                    let unit =
+                        (clamp && !formulas.half_vector() && !formulas.rounds()).then_some((r, v));
                     literal_pow(cos_phi, m.n_s, clamp, unit).map(|p| o_s * arrival.i_l * p)
                 };
                 SpecularTerm {

@@ -109,8 +109,8 @@ pub struct RenderSpec {
     pub samples: Option<u32>,
 }
 
-/// An answer key: `[r, g, b]` on the 0–1 scale, `"#RRGGBB"` (8 bits), or an object with the
-/// colour and its own scale and tolerance.
+/// An answer key: `[r, g, b]` on the 0–1 scale, `"#RRGGBB"` (8 bits), `"none"` (the ray hits
+/// nothing), or an object with the colour and its own scale and tolerance.
 #[derive(Debug, Clone, PartialEq, JsonSchema)]
 #[serde(untagged)]
 pub enum AnswerSpec {
@@ -126,7 +126,8 @@ pub enum AnswerSpec {
 pub enum AnswerColor {
     /// `[r, g, b]`, on the key's scale (0–1 unless `scale` is 255).
     Rgb(Triple),
-    /// `"#RRGGBB"`: 8 bits per channel.
+    /// `"#RRGGBB"`: 8 bits per channel; or `"none"` (also "nenhuma", "sem interseção", "no
+    /// hit", "—"): the ray hits nothing.
     Hex(String),
 }
 

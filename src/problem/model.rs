@@ -30,6 +30,9 @@ pub struct Problem<R: Real> {
     pub background: V3<R>,
     /// How rays are traced (Section 4.4).
     pub render: RenderSettings<R>,
+    /// Likely unit mistakes in the file (never errors): a 0–255 colour, a spot angle in
+    /// radians.
+    pub warnings: Vec<super::warnings::Warning>,
 }
 
 impl<R: Real> Problem<R> {

@@ -180,6 +180,7 @@ pub fn validate_in<R: Real>(
             None => V3::<R>::ZERO,
         },
         render: render_settings::<R>(file.render.as_ref())?,
+        warnings: super::warnings::warnings(file),
     })
 }
 

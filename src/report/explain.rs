@@ -97,6 +97,9 @@ pub struct Explanation {
     pub ray: Option<Vec<Step>>,
     /// The problem as written, then any other readings.
     pub parts: Vec<Part>,
+    /// Likely unit mistakes in the file, as sentences (`phong solve` prints them on standard
+    /// error; the layouts leave them out).
+    pub warnings: Vec<String>,
 }
 
 /// The problem as written, or another reading of it.
@@ -216,6 +219,11 @@ pub fn explain<R: Real>(
             .collect(),
         ray: s.intersection.as_ref().map(|x| intersection(x, lang)),
         parts,
+        warnings: problem
+            .warnings
+            .iter()
+            .map(|w| messages::warning(w, lang))
+            .collect(),
     }
 }
 

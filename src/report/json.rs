@@ -40,6 +40,29 @@ pub struct Document<'a, R: Real> {
     pub solution: Option<EvaluationOut<R>>,
     /// Other readings of a problem whose literal reading is surprising.
     pub readings: Vec<ReadingOut<R>>,
+    /// Likely unit mistakes in the file (never errors); absent when there are none.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub warnings: Vec<WarningOut>,
+}
+
+/// A likely unit mistake: its code and the value given, the field, and the sentence (English).
+#[derive(Serialize)]
+pub struct WarningOut {
+    /// Its code, the value given and the field.
+    #[serde(flatten)]
+    pub warning: crate::problem::warnings::Warning,
+    /// The warning with its fix, in English.
+    pub message: String,
+}
+
+/// The JSON form of a file's warnings.
+pub(crate) fn warnings_out(list: &[crate::problem::warnings::Warning]) -> Vec<WarningOut> {
+    list.iter()
+        .map(|w| WarningOut {
+            warning: w.clone(),
+            message: messages::warning(w, crate::report::lang::Lang::En),
+        })
+        .collect()
 }
 
 /// An entry of `findings`.
@@ -339,6 +362,7 @@ pub fn document<'a, R: Real>(
                 solution: evaluation(problem, &r.evaluation),
             })
             .collect(),
+        warnings: warnings_out(&problem.warnings),
     }
 }
 
