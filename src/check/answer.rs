@@ -50,12 +50,13 @@ impl Scale {
 pub struct Answer {
     /// The colour; `None` when the answer is that the ray hits nothing ("none", "nenhuma", …).
     pub values: Option<[f64; 3]>,
+    /// The scale the numbers are on (0–1, or 0–255).
     pub scale: Scale,
 }
 
 impl Answer {
     /// The answer "the ray hits nothing".
-    pub fn no_hit(scale: Scale) -> Self {
+    pub(crate) fn no_hit(scale: Scale) -> Self {
         Answer {
             values: None,
             scale,
@@ -93,7 +94,7 @@ const NO_HIT_WORDS: [&str; 22] = [
 /// Whether `text` says that the ray hits nothing: one of [`NO_HIT_WORDS`] in any case, with or
 /// without accents ("sem interseção", "Sem intersecao", "NENHUMA", "no-hit"), or a dash alone
 /// ("—", "–", "-").
-pub fn is_no_hit(text: &str) -> bool {
+pub(crate) fn is_no_hit(text: &str) -> bool {
     let t = text
         .trim()
         .trim_matches(|c: char| matches!(c, '"' | '\'' | '(' | ')' | '[' | ']' | '.' | '!'))
@@ -193,7 +194,7 @@ pub struct Key {
 impl Key {
     /// The key's own tolerance on `scale` (the key's scale converted: 2 on the 255 scale is
     /// 2/255 on the 0–1 scale); `None` when the key gives none.
-    pub fn tolerance_on(&self, scale: Scale) -> Option<f64> {
+    pub(crate) fn tolerance_on(&self, scale: Scale) -> Option<f64> {
         self.tolerance
             .map(|t| t * scale.factor() / self.answer.scale.factor())
     }

@@ -38,14 +38,20 @@ pub struct RowOut {
     pub row: usize,
     /// The line of the CSV file where the row starts.
     pub line: u64,
+    /// The `student` column, as written.
     pub student: String,
+    /// The `exercise` column, as written (exercise `4.2` is the file `4.2.json`).
     pub exercise: String,
+    /// The `answer` column, as written.
     pub answer: String,
     /// "right", "reading", "wrong" or "invalid".
     pub verdict: &'static str,
+    /// Right, or a likely intended reading without `--strict`.
     pub accepted: bool,
     /// 1 or 255 (`null` for an invalid row).
     pub scale: Option<u32>,
+    /// The largest difference accepted per channel, on the answer's scale (`null` for an
+    /// invalid row).
     pub tolerance: Option<f64>,
     /// The colour compared with, on the answer's scale.
     pub expected: Option<[f64; 3]>,
@@ -62,34 +68,46 @@ pub struct RowOut {
 /// The rows of one exercise, counted.
 #[derive(Clone, Debug, Default, Serialize)]
 pub struct SummaryOut {
+    /// The exercise, as the rows name it.
     pub exercise: String,
+    /// The number of its rows.
     pub rows: usize,
+    /// Rows whose verdict is "right".
     pub right: usize,
+    /// Rows whose verdict is "reading" (the likely intended reading).
     pub reading: usize,
+    /// Rows whose verdict is "wrong".
     pub wrong: usize,
+    /// Rows that could not be checked (verdict "invalid").
     pub invalid: usize,
     /// The diagnoses of wrong rows, most common first.
     pub slips: Vec<SlipCount>,
 }
 
+/// An entry of `slips`: a diagnosis and how many wrong rows it explains.
 #[derive(Clone, Debug, Serialize)]
 pub struct SlipCount {
+    /// The slips' codes (one, or two made together).
     pub slips: Vec<Slip>,
+    /// The number of wrong rows whose answer they explain.
     pub count: usize,
 }
 
 /// A graded CSV.
 #[derive(Clone, Debug, Serialize)]
 pub struct Report {
+    /// The version of this format, [`CHECK_FORMAT_VERSION`] (1).
     pub format_version: u32,
+    /// Each data row of the CSV, graded, in file order.
     pub rows: Vec<RowOut>,
+    /// Each exercise's rows, counted, in order of first appearance.
     pub summary: Vec<SummaryOut>,
 }
 
 /// The CSV cannot be read at all (a row that cannot be read is reported in its place instead).
 #[derive(Debug, thiserror::Error)]
 #[error("{path}: cannot read the file: {source}. Fix: check the path, and that the file exists and is readable")]
-pub struct Unreadable {
+pub(crate) struct Unreadable {
     pub path: PathBuf,
     #[source]
     pub source: std::io::Error,
@@ -147,7 +165,7 @@ impl Cache<'_> {
 }
 
 /// Grades the CSV file at `path`.
-pub fn grade_file(path: &Path, options: &Options) -> Result<Report, Unreadable> {
+pub(crate) fn grade_file(path: &Path, options: &Options) -> Result<Report, Unreadable> {
     let bytes = std::fs::read(path).map_err(|source| Unreadable {
         path: path.to_owned(),
         source,
@@ -418,7 +436,7 @@ pub fn rows_csv(report: &Report) -> Vec<u8> {
 }
 
 /// The summary per exercise as CSV.
-pub fn summary_csv(report: &Report) -> Vec<u8> {
+pub(crate) fn summary_csv(report: &Report) -> Vec<u8> {
     let mut w = csv::Writer::from_writer(Vec::new());
     w.write_record([
         "exercise", "rows", "right", "reading", "wrong", "invalid", "slips",

@@ -1,8 +1,8 @@
 //! Checking answers: `phong check` and `phong grade`.
 //!
-//! A problem is solved once into an [`Expected`]: the colour of the problem as written, the
+//! A problem is solved once into an `Expected`: the colour of the problem as written, the
 //! colours of its readings, and the colour each classic slip (and pair of slips) gives, all
-//! computed by the same solver and core ([`slips`]). Judging an answer against it is then a few
+//! computed by the same solver and core (`slips`). Judging an answer against it is then a few
 //! comparisons, cheap enough to grade a class's CSV in one pass ([`grade`]).
 //!
 //! Verdicts (see README "Checking answers"):
@@ -15,12 +15,12 @@
 //! - `wrong` (exit 1): anything else, with the slips whose colour it matches, and the other
 //!   reading it matches, if any (4.2's "normal reversed" is |cos θ|, a slip, not an intent).
 
-pub mod answer;
+pub(crate) mod answer;
 pub mod grade;
-pub mod messages;
+pub(crate) mod messages;
 pub mod report;
-pub mod slips;
-pub mod steps;
+pub(crate) mod slips;
+pub(crate) mod steps;
 
 use std::path::Path;
 
@@ -28,8 +28,10 @@ use crate::problem::{Problem, ProblemError, ProblemFile};
 use crate::solve::{Evaluation, ReadingCode};
 use report::{AnswerSource, Checked, Failure, FailureKind, Judged};
 
-pub use answer::{is_no_hit, Answer, BadAnswer, Key, Scale};
-pub use slips::{Outcome, Slip};
+pub(crate) use answer::Key;
+pub use answer::{Answer, Scale};
+pub(crate) use slips::Outcome;
+pub use slips::Slip;
 
 /// A colour an answer can be compared with, on the 0–1 scale.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -63,6 +65,7 @@ pub enum Against {
 /// An answer against one target.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Comparison {
+    /// Which value of the target the answer was compared with.
     pub against: Against,
     /// The target's value on the answer's scale.
     pub expected: [f64; 3],
@@ -75,7 +78,7 @@ pub struct Comparison {
 /// Compares an answer with a target: the clamped colour first, then (0–1 scale only) the
 /// unclamped one; the first within the tolerance, or else the clamped one. `None` when the
 /// target has no value on the answer's scale (a literal value against an 8-bit answer).
-pub fn compare(answer: &Answer, target: &Target, tolerance: f64) -> Option<Comparison> {
+pub(crate) fn compare(answer: &Answer, target: &Target, tolerance: f64) -> Option<Comparison> {
     let values = answer.values?;
     let with = |against, expected: [f64; 3]| {
         let difference = [0, 1, 2].map(|i| values[i] - expected[i]);
@@ -104,7 +107,7 @@ pub fn compare(answer: &Answer, target: &Target, tolerance: f64) -> Option<Compa
 
 impl Comparison {
     /// The largest |difference| of a channel: how far the answer is, on its scale.
-    pub fn distance(&self) -> f64 {
+    pub(crate) fn distance(&self) -> f64 {
         self.difference.iter().fold(0.0, |m, d| m.max(d.abs()))
     }
 }
@@ -137,15 +140,17 @@ pub struct Nearest {
 /// A reading of the problem and its colour.
 #[derive(Clone, Debug, PartialEq)]
 pub struct ReadingTarget {
+    /// Which reading.
     pub code: ReadingCode,
     /// The solver labels it the likely intended reading.
     pub likely_intended: bool,
+    /// The reading's colour.
     pub target: Target,
 }
 
 /// Everything an answer to one problem is judged against, computed once.
 #[derive(Clone, Debug)]
-pub struct Expected {
+pub(crate) struct Expected {
     /// The problem as written; `None` when there is nothing to shade (the ray hits nothing).
     pub solution: Option<Target>,
     pub readings: Vec<ReadingTarget>,
@@ -157,7 +162,7 @@ pub struct Expected {
 
 impl Expected {
     /// Solves the problem, its readings and its slips (f64, the reference precision).
-    pub fn of(problem: &Problem<f64>) -> Result<Expected, crate::problem::Invalid> {
+    pub(crate) fn of(problem: &Problem<f64>) -> Result<Expected, crate::problem::Invalid> {
         let solution = crate::solve::solve(problem)?;
         let base = solution.evaluation.as_ref().map(Target::of);
         let readings = solution
@@ -179,7 +184,7 @@ impl Expected {
 
     /// The colour an answer is measured against: the problem as written, or, when it has none,
     /// its likely intended reading.
-    pub fn reference(&self) -> Option<Reference> {
+    pub(crate) fn reference(&self) -> Option<Reference> {
         match self.solution {
             Some(target) => Some(Reference {
                 target,
@@ -199,7 +204,7 @@ impl Expected {
 
 /// The colour an answer is measured against ([`Expected::reference`]).
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Reference {
+pub(crate) struct Reference {
     pub target: Target,
     /// `None` for the problem as written, or the reading whose colour it is.
     pub reading: Option<ReadingCode>,
@@ -209,23 +214,28 @@ pub struct Reference {
 #[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize)]
 #[serde(rename_all = "snake_case")]
 pub enum VerdictKind {
+    /// Within the tolerance of the problem as written.
     Right,
+    /// Within the tolerance of a likely intended reading, not of the problem as written.
     Reading,
+    /// Neither.
     Wrong,
 }
 
 /// A slip (or pair) the answer matches.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Diagnosis {
+    /// The slips' codes (one, or two made together).
     pub slips: Vec<Slip>,
     /// Those of `slips` that are the likely intended reading (not counted as mistakes).
     pub intended: Vec<Slip>,
+    /// The answer against the colour these slips give.
     pub comparison: Comparison,
 }
 
 impl Diagnosis {
     /// The slips that are mistakes (all but the likely intended reading's).
-    pub fn mistakes(&self) -> Vec<Slip> {
+    pub(crate) fn mistakes(&self) -> Vec<Slip> {
         let m: Vec<Slip> = self
             .slips
             .iter()
@@ -243,6 +253,7 @@ impl Diagnosis {
 /// The verdict on one answer, with everything the report says about it.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Verdict {
+    /// Right, reading or wrong.
     pub kind: VerdictKind,
     /// Right, or a likely intended reading without `--strict`: exit 0.
     pub accepted: bool,
@@ -270,7 +281,7 @@ pub struct Verdict {
 }
 
 /// Judges an answer.
-pub fn judge(expected: &Expected, answer: &Answer, tolerance: f64, strict: bool) -> Verdict {
+pub(crate) fn judge(expected: &Expected, answer: &Answer, tolerance: f64, strict: bool) -> Verdict {
     let mut v = Verdict {
         kind: VerdictKind::Wrong,
         accepted: false,

@@ -8,7 +8,6 @@ use serde::Serialize;
 
 use super::messages::{self, Line};
 use super::{Answer, Candidate, Comparison, Nearest, Scale, Verdict, VerdictKind};
-use crate::cli::Exit;
 use crate::problem::ProblemError;
 use crate::report::lang::Lang;
 use crate::report::number::num;
@@ -30,10 +29,13 @@ pub enum AnswerSource {
 /// One checked answer, or why it could not be checked.
 #[derive(Clone, Debug)]
 pub struct Checked {
+    /// The problem file's path, as given.
     pub file: String,
     /// The answer as written, when there is one.
     pub text: Option<String>,
+    /// Where the answer came from.
     pub source: AnswerSource,
+    /// The judged answer, or why it could not be checked.
     pub outcome: Result<Judged, Failure>,
     /// Likely unit mistakes in the problem file (never errors).
     pub warnings: Vec<crate::problem::warnings::Warning>,
@@ -43,23 +45,28 @@ pub struct Checked {
 /// the verdict.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Judged {
+    /// The answer, read.
     pub answer: Answer,
     /// The largest difference accepted per channel, on the answer's scale.
     pub tolerance: f64,
+    /// The verdict, with the comparisons and the diagnosis behind it.
     pub verdict: Verdict,
 }
 
 /// Why an answer could not be checked.
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct Failure {
+    /// What could not be checked (`error.kind` in the JSON).
     pub kind: FailureKind,
+    /// The field of the problem file at fault, where there is one (`lights[1].falloff`).
     pub field: Option<String>,
+    /// The error as an English sentence, with its fix.
     pub message: String,
 }
 
 impl Failure {
     /// A problem file that cannot be read, parsed, validated or solved.
-    pub fn problem(e: &ProblemError) -> Self {
+    pub(crate) fn problem(e: &ProblemError) -> Self {
         Failure {
             kind: FailureKind::of(e),
             field: e.field().map(str::to_owned),
@@ -87,7 +94,7 @@ pub enum FailureKind {
 
 impl FailureKind {
     /// The kind of a problem file's error.
-    pub fn of(e: &ProblemError) -> Self {
+    pub(crate) fn of(e: &ProblemError) -> Self {
         match e {
             ProblemError::Read { .. } => FailureKind::Read,
             ProblemError::Syntax { .. } => FailureKind::Syntax,
@@ -115,13 +122,25 @@ impl Serialize for FailureKind {
     }
 }
 
+/// What a check decided, in the three ways a caller acts on it (the command line maps them to
+/// the exit codes 0, 1 and 2).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum Status {
+    /// Right, or the likely intended reading without `--strict`.
+    Accepted,
+    /// Wrong, or the likely intended reading under `--strict`.
+    Refused,
+    /// The answer or the problem could not be read, validated or solved.
+    Unchecked,
+}
+
 impl Checked {
-    /// 0 accepted, 1 wrong (or a reading under --strict), 2 cannot be checked.
-    pub fn exit_code(&self) -> Exit {
+    /// Whether the answer was accepted, refused, or could not be checked.
+    pub(crate) fn status(&self) -> Status {
         match &self.outcome {
-            Ok(j) if j.verdict.accepted => Exit::Success,
-            Ok(_) => Exit::Wrong,
-            Err(_) => Exit::BadInput,
+            Ok(j) if j.verdict.accepted => Status::Accepted,
+            Ok(_) => Status::Refused,
+            Err(_) => Status::Unchecked,
         }
     }
 }
@@ -294,22 +313,31 @@ pub struct ExpectedOut {
     pub against: super::Against,
 }
 
+/// `answer`: the answer checked.
 #[derive(Serialize)]
 pub struct AnswerOut {
+    /// The answer as written; `null` when there is none.
     pub text: Option<String>,
+    /// Where it came from: "argument" (`--answer` or a CSV row) or "key" (the file's `answer`).
     pub source: AnswerSource,
     /// 1 or 255.
     pub scale: Option<u32>,
+    /// The three numbers read, on `scale`; `null` when the answer could not be checked.
     pub values: Option<[f64; 3]>,
 }
 
+/// `reading`: a reading of the problem the answer matches.
 #[derive(Serialize)]
 pub struct ReadingOut {
+    /// Which reading: "light_reversed", "normal_reversed" or "line_behind_origin".
     pub code: ReadingCode,
+    /// Whether the solver labels it the likely intended reading.
     pub likely_intended: bool,
+    /// The reading in English.
     pub label: &'static str,
 }
 
+/// An entry of `diagnosis`: slips whose colour the answer matches.
 #[derive(Serialize)]
 pub struct DiagnosisOut {
     /// The slips' codes (one, or two made together).
@@ -320,28 +348,40 @@ pub struct DiagnosisOut {
     pub description: String,
     /// The colour those slips give, on the answer's scale.
     pub color: [f64; 3],
+    /// answer − color, per channel, on the answer's scale.
     pub difference: [f64; 3],
 }
 
 /// One check, for scripts.
 #[derive(Serialize)]
 pub struct CheckOut {
+    /// The version of this format, [`CHECK_FORMAT_VERSION`] (1).
     pub format_version: u32,
+    /// The problem file's path, as given.
     pub file: String,
+    /// The answer checked.
     pub answer: AnswerOut,
+    /// The largest difference accepted per channel, on the answer's scale; `null` when the answer
+    /// cannot be checked.
     pub tolerance: Option<f64>,
     /// "right", "reading", "wrong" or "invalid".
     pub verdict: &'static str,
     /// Exit code 0: right, or a likely intended reading without --strict.
     pub accepted: bool,
+    /// The verdict (or the error) as an English sentence.
     pub message: String,
+    /// The colour the answer was compared with; `null` when there is none.
     pub expected: Option<ExpectedOut>,
+    /// answer − expected, per channel, on the answer's scale; `null` without `expected`.
     pub difference: Option<[f64; 3]>,
+    /// A reading of the problem the answer matches; `null` when it matches none.
     pub reading: Option<ReadingOut>,
+    /// The slips (or pairs of slips) whose colour the answer matches.
     pub diagnosis: Vec<DiagnosisOut>,
     /// For a wrong answer: the closest candidate it does not match, and how far it is.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub nearest: Option<NearestOut>,
+    /// Why the answer could not be checked (`kind`, `field`, `message`); `null` when it was.
     pub error: Option<Failure>,
     /// Likely unit mistakes in the problem file; absent when there are none.
     #[serde(skip_serializing_if = "Vec::is_empty")]
@@ -359,6 +399,7 @@ pub struct NearestOut {
     pub slips: Vec<super::Slip>,
     /// Its colour, on the answer's scale.
     pub color: [f64; 3],
+    /// answer − color, per channel, on the answer's scale.
     pub difference: [f64; 3],
     /// The largest |difference| of a channel.
     pub distance: f64,
@@ -474,7 +515,7 @@ pub fn json(c: &Checked) -> CheckOut {
 }
 
 /// 1 or 255.
-pub fn scale_number(s: Scale) -> u32 {
+pub(crate) fn scale_number(s: Scale) -> u32 {
     match s {
         Scale::Unit => 1,
         Scale::Bits8 => 255,
@@ -482,7 +523,7 @@ pub fn scale_number(s: Scale) -> u32 {
 }
 
 /// The stable code of a verdict.
-pub fn verdict_code(k: VerdictKind) -> &'static str {
+pub(crate) fn verdict_code(k: VerdictKind) -> &'static str {
     match k {
         VerdictKind::Right => "right",
         VerdictKind::Reading => "reading",
@@ -491,7 +532,7 @@ pub fn verdict_code(k: VerdictKind) -> &'static str {
 }
 
 /// What the problem, its readings and each applicable slip give (`phong check --slips`).
-pub fn slips_text(file: &str, x: &super::Expected, lang: Lang) -> String {
+pub(crate) fn slips_text(file: &str, x: &super::Expected, lang: Lang) -> String {
     let mut out = String::new();
     let _ = writeln!(out, "{file}");
     let show = |t: &super::Target| match t.clamped {

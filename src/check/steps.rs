@@ -761,13 +761,14 @@ pub struct StepsChecked {
 }
 
 impl StepsChecked {
-    /// 0 accepted, 1 a wrong step (or a reading's under `--strict`), 2 cannot be checked.
-    pub fn exit_code(&self) -> crate::cli::Exit {
-        use crate::cli::Exit;
+    /// Accepted (every step right, or right in the likely intended reading without `--strict`),
+    /// refused (a wrong step, or a reading's under `--strict`), or not checked.
+    pub fn status(&self) -> super::report::Status {
+        use super::report::Status;
         match &self.outcome {
-            Ok(j) if j.accepted => Exit::Success,
-            Ok(_) => Exit::Wrong,
-            Err(_) => Exit::BadInput,
+            Ok(j) if j.accepted => Status::Accepted,
+            Ok(_) => Status::Refused,
+            Err(_) => Status::Unchecked,
         }
     }
 }

@@ -1,5 +1,6 @@
-//! Phong's model at one point, Eq. 4.16, with the gating of DESIGN.md, recording every
-//! intermediate per light for callers that want it and nothing for callers that do not.
+//! Phong's model at one point, Eq. 4.16, gated as docs/conventions.md ("Gating") reads the
+//! chapter, recording every intermediate per light for callers that want it and nothing for
+//! callers that do not.
 //!
 //! The caller passes a [`Recorder`]: [`NoRecord`] (the tracer's hot path: no allocation, no
 //! literal values) or a `Vec<LightTerm>` (the solver's explanation). Shadowing is the caller's
@@ -25,7 +26,7 @@ pub struct ShadingPoint<R: Real> {
 #[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize)]
 #[serde(rename_all = "snake_case")]
 pub enum LightStatus {
-    /// cos θ > 0 (beyond its rounding error, [`tangent_tolerance`]) and the light arrives: it
+    /// cos θ > 0 (beyond its rounding error, `tangent_tolerance`) and the light arrives: it
     /// adds diffuse (and specular where cos φ > 0).
     Lit,
     /// cos θ < 0 (beyond its rounding error): the light is on the back side of the surface.
@@ -59,6 +60,7 @@ pub enum SpecularStatus {
 /// The specular part of one light's contribution, Eq. 4.9–4.15.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct SpecularTerm<R: Real> {
+    /// Why the term is what it is (lit, R away from the viewer, no viewer, …).
     pub status: SpecularStatus,
     /// R = L − 2(N·L)N, Eq. 4.15 (computed only where needed).
     pub r: Option<V3<R>>,
@@ -98,11 +100,13 @@ pub struct LightTerm<R: Real> {
     pub n_dot_l: R,
     /// cos θ = −N·L, Eq. 4.7.
     pub cos_theta: R,
+    /// Whether the light adds diffuse and specular light at P, and if not why.
     pub status: LightStatus,
     /// The gated diffuse term O_d I_l cos θ, Eq. 4.8; `None` when the material has no O_d.
     pub diffuse: Option<V3<R>>,
     /// O_d I_l cos θ without gating (recorded only when the recorder asks for detail).
     pub diffuse_literal: Option<V3<R>>,
+    /// The specular term, Eq. 4.9–4.15.
     pub specular: SpecularTerm<R>,
 }
 
@@ -124,7 +128,10 @@ pub struct Shade<R: Real> {
 /// Receives each light's record. `DETAIL` also asks the core for the literal (ungated) values
 /// and for R and cos φ of lights that do not light the point.
 pub trait Recorder<R: Real> {
+    /// Whether the core computes the literal values and the R and cos φ of unlit lights for
+    /// this recorder (`false` costs nothing on the hot path).
     const DETAIL: bool;
+    /// Receives one light's record, in the order of the light set.
     fn light(&mut self, term: &LightTerm<R>);
 }
 
@@ -146,6 +153,8 @@ impl<R: Real> Recorder<R> for Vec<LightTerm<R>> {
 
 /// Decides whether a light that faces the point actually reaches it (shadow rays).
 pub trait Visibility<R: Real> {
+    /// Whether `light`, which lights P from the front and arrives as `arrival` says, reaches P
+    /// unblocked.
     fn visible(&mut self, p: V3<R>, light: &Light<R>, arrival: &Arrival<R>) -> bool;
 }
 
@@ -216,7 +225,7 @@ fn literal_pow<R: Real>(x: R, n_s: R, clamp: bool, unit: Option<(V3<R>, V3<R>)>)
 /// check` can reproduce it with the same code (every other slip is a change of the input).
 /// [`Chapter`] answers `false` to both as a constant, so the chapter's path compiles to exactly
 /// the code it would be without these switches; [`Slipped`] answers at run time.
-pub trait Formulas: Copy {
+pub(crate) trait Formulas: Copy {
     /// cos θ taken as |N·L| instead of −N·L (Eq. 4.7): a light behind the surface lights it.
     fn abs_cos_theta(self) -> bool;
     /// cos φ taken as N·H with Blinn's half-vector H = (−L − V)/‖−L − V‖ instead of −R·V
@@ -242,7 +251,7 @@ fn round_v<R: Real, F: Formulas>(f: F, v: V3<R>) -> V3<R> {
 
 /// The chapter's formulas, unchanged: the tracer's and the solver's.
 #[derive(Clone, Copy, Debug, Default)]
-pub struct Chapter;
+pub(crate) struct Chapter;
 
 impl Formulas for Chapter {
     #[inline(always)]
@@ -269,7 +278,7 @@ impl Formulas for Chapter {
 
 /// Formula switches chosen at run time (the mistake diagnosis of `phong check`).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub struct Slipped {
+pub(crate) struct Slipped {
     pub abs_cos_theta: bool,
     pub half_vector: bool,
     pub raw_normal: bool,
@@ -316,13 +325,14 @@ impl Formulas for Slipped {
 /// shrinks with cos θ itself, and such a grazing light is decided as the exact value says in
 /// any precision.
 #[inline]
-pub fn tangent_tolerance<R: Real>(n: V3<R>, l: V3<R>) -> R {
+pub(crate) fn tangent_tolerance<R: Real>(n: V3<R>, l: V3<R>) -> R {
     let sum = (n.x() * l.x()).abs() + (n.y() * l.y()).abs() + (n.z() * l.z()).abs();
     gamma::<R>(40) * sum
 }
 
-/// Shades P with Phong's model, Eq. 4.16, gated as DESIGN.md reads the chapter: a light adds
-/// diffuse and specular only where cos θ > 0, and specular only where also cos φ > 0.
+/// Shades P with Phong's model, Eq. 4.16, gated as docs/conventions.md ("Gating") reads the
+/// chapter: a light adds diffuse and specular only where cos θ > 0, and specular only where also
+/// cos φ > 0.
 #[inline]
 pub fn shade<R: Real, Rec: Recorder<R>, Vis: Visibility<R>>(
     at: &ShadingPoint<R>,
@@ -337,7 +347,7 @@ pub fn shade<R: Real, Rec: Recorder<R>, Vis: Visibility<R>>(
 /// [`shade`] with a formula switched as `formulas` says (see [`Formulas`]); with [`Chapter`]
 /// it is [`shade`] itself.
 #[inline]
-pub fn shade_with<R: Real, Rec: Recorder<R>, Vis: Visibility<R>, F: Formulas>(
+pub(crate) fn shade_with<R: Real, Rec: Recorder<R>, Vis: Visibility<R>, F: Formulas>(
     formulas: F,
     at: &ShadingPoint<R>,
     m: &Material<R>,

@@ -174,8 +174,13 @@ pub struct PointSpec {
 /// A ray: origin and direction (normalised if its length is not 1).
 #[derive(Debug, Clone, Deserialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
+// Doc comments here would become descriptions in `phong schema`'s output: the fields are
+// described in plain comments instead.
+#[allow(missing_docs)]
 pub struct RaySpec {
+    // O, the ray's origin.
     pub origin: Triple,
+    // D, the ray's direction (any non-zero length).
     pub direction: Triple,
 }
 
@@ -183,7 +188,7 @@ pub struct RaySpec {
 // bounds above it), then `Kind "word" [the fields it requires],`: see `problem/kinds.rs`.
 kinds! {
     /// A surface of a ray problem, as read: `type` and the fields of that type, parsed flat (see
-    /// [`super::kinds`]); [`SurfaceType::fields`] says which fields each type takes, and
+    /// `problem::kinds`); [`SurfaceType::fields`] says which fields each type takes, and
     /// validation enforces it.
     pub struct SurfaceSpec;
     /// The kinds of surface.
@@ -224,6 +229,8 @@ kinds! {
     /// A light: `type` selects the kind. Colours are RGB, each component ≥ 0 (above 1 is allowed).
     schema Light in light_schema;
     optional {
+        /// A name for the light, shown beside it in explanations and the JSON
+        /// (`lights[1] (point) "key"`).
         name: String,
     }
     fields {
@@ -290,8 +297,13 @@ pub enum ColorSpec {
 /// A coefficient k and a colour O; the material colour is k·O.
 #[derive(Debug, Clone, Copy, PartialEq, Deserialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
+// Doc comments here would become descriptions in `phong schema`'s output: the fields are
+// described in plain comments instead.
+#[allow(missing_docs)]
 pub struct ScaledColor {
+    // The coefficient k.
     pub k: f64,
+    // The colour O, RGB.
     pub color: Triple,
 }
 
@@ -308,7 +320,11 @@ impl ColorSpec {
 /// The reflectivity O_r: an RGB colour, or the word "specular" for O_r = O_s.
 #[derive(Debug, Clone, Copy, PartialEq, JsonSchema)]
 #[serde(untagged)]
+// Doc comments here would become descriptions in `phong schema`'s output: the fields are
+// described in plain comments instead.
+#[allow(missing_docs)]
 pub enum ReflectivitySpec {
+    // O_r as an RGB colour.
     Rgb(Triple),
     /// Always "specular".
     Same(SameAsSpecular),
@@ -316,7 +332,11 @@ pub enum ReflectivitySpec {
 
 /// The word "specular".
 #[derive(Debug, Clone, Copy, PartialEq, JsonSchema)]
+// Doc comments here would become descriptions in `phong schema`'s output: the fields are
+// described in plain comments instead.
+#[allow(missing_docs)]
 pub enum SameAsSpecular {
+    // The word itself.
     #[serde(rename = "specular")]
     Specular,
 }
@@ -324,8 +344,13 @@ pub enum SameAsSpecular {
 /// A material: the name of one in `materials`, or one written in place.
 #[derive(Debug, Clone, JsonSchema)]
 #[serde(untagged)]
+// Doc comments here would become descriptions in `phong schema`'s output: the fields are
+// described in plain comments instead.
+#[allow(missing_docs)]
 pub enum MaterialRef {
+    // The name of a material in the file's `materials`.
     Name(String),
+    // A material written in place.
     Inline(MaterialSpec),
 }
 

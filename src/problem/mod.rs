@@ -4,29 +4,31 @@
 //! rejects unknown fields, and validation checks that every term the question can compute has
 //! its inputs.
 
-pub mod error;
+pub(crate) mod error;
 pub mod format;
-pub mod kinds;
-pub mod mesh;
-pub mod model;
+pub(crate) mod kinds;
+pub(crate) mod mesh;
+pub(crate) mod model;
 pub mod validate;
-pub mod warnings;
+pub(crate) mod warnings;
 
 use std::path::Path;
 
 pub use error::{Invalid, ProblemError};
 pub use format::{schema_json, ProblemFile};
+pub(crate) use model::RenderOverrides;
 pub use model::{
-    Camera, GivenVector, NamedMaterial, Problem, RenderOverrides, RenderSettings, Surface,
-    SurfaceSource, Target,
+    AmbientInfo, Camera, GivenVector, LightInfo, NamedMaterial, Problem, ReflectivitySource,
+    RenderSettings, Surface, SurfaceSource, Target,
 };
+pub use warnings::{Warning, WarningKind};
 
 use crate::core::Real;
 use format::{LightSpec, LightType, SurfaceSpec, SurfaceType};
 
 /// Reads and parses a problem file (no validation). A leading byte order mark is skipped, as
 /// editors on Windows write one.
-pub fn parse_file(path: &Path) -> Result<ProblemFile, ProblemError> {
+pub(crate) fn parse_file(path: &Path) -> Result<ProblemFile, ProblemError> {
     let bytes = std::fs::read(path).map_err(|source| ProblemError::Read {
         path: path.to_owned(),
         source,
@@ -325,7 +327,7 @@ pub fn load<R: Real>(path: &Path) -> Result<(ProblemFile, Problem<R>), ProblemEr
 }
 
 /// Reads a scene: a problem file with a camera and surfaces (what the tracer needs).
-pub fn load_scene<R: Real>(path: &Path) -> Result<(Problem<R>, Camera<R>), ProblemError> {
+pub(crate) fn load_scene<R: Real>(path: &Path) -> Result<(Problem<R>, Camera<R>), ProblemError> {
     let (_, problem) = load::<R>(path)?;
     let Some(camera) = problem.camera else {
         return Err(Invalid::new(

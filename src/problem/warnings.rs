@@ -89,7 +89,7 @@ fn material(out: &mut Vec<Warning>, base: &str, m: &MaterialSpec) {
 }
 
 /// The likely unit mistakes of a parsed file, in the order of its fields.
-pub fn warnings(file: &ProblemFile) -> Vec<Warning> {
+pub(crate) fn warnings(file: &ProblemFile) -> Vec<Warning> {
     let mut out = Vec::new();
     for (name, m) in &file.materials {
         material(&mut out, &format!("materials.{name}"), m);

@@ -40,7 +40,7 @@ pub fn solve_json(path: &Path, precision: Precision) -> Result<serde_json::Value
 
 /// [`solve_json`], with the file's likely unit mistakes as sentences in `lang` (for standard
 /// error; the document has them in English).
-pub fn solve_json_warned(
+pub(crate) fn solve_json_warned(
     path: &Path,
     precision: Precision,
     lang: Lang,
@@ -85,7 +85,7 @@ pub fn solve_text(path: &Path, precision: Precision) -> Result<String, ProblemEr
 
 /// The JSON document of a file that could not be solved: its kind, field and message, in
 /// place of the solution (`phong solve --format json` writes one per bad file).
-pub fn error_json(path: &Path, e: &ProblemError) -> serde_json::Value {
+pub(crate) fn error_json(path: &Path, e: &ProblemError) -> serde_json::Value {
     serde_json::json!({
         "format_version": super::json::FORMAT_VERSION,
         "file": path.display().to_string(),

@@ -41,6 +41,7 @@ macro_rules! phrases {
 
         impl Phrase {
             /// Every phrase, for tests.
+            #[cfg(test)]
             pub const ALL: &'static [Phrase] = &[$(Phrase::$name,)*];
 
             /// The phrase in `lang`.
@@ -152,11 +153,6 @@ pub fn surface_kind(kind: &str, lang: Lang) -> &str {
         "sphere" => Phrase::Sphere.get(lang),
         other => other,
     }
-}
-
-/// "lights[1] (point)" for the light at a file index (English, as the JSON has it).
-pub fn light_name<R: Real>(problem: &Problem<R>, file_index: usize) -> String {
-    light_name_in(problem, file_index, Lang::En)
 }
 
 /// "lights[1] (point) \"key\"", or "lights[1] (pontual) \"key\"" in Portuguese.

@@ -8,7 +8,7 @@ use crate::cli::exit::Exit;
 use crate::cli::output;
 use crate::problem;
 
-pub fn run(args: &CheckArgs) -> Result<Exit, CliError> {
+pub(crate) fn run(args: &CheckArgs) -> Result<Exit, CliError> {
     if args.answer.is_some() && args.files.len() > 1 {
         return Err(CliError::Conflict {
             message: format!(
@@ -44,7 +44,7 @@ pub fn run(args: &CheckArgs) -> Result<Exit, CliError> {
     let mut docs = Vec::new();
     for path in &args.files {
         let c = check::check_file(path, &options);
-        exit = exit.max(c.exit_code());
+        exit = exit.max(exit_of(c.status()));
         for w in &c.warnings {
             error::warn(&crate::report::messages::warning(w, args.lang));
         }
@@ -70,6 +70,15 @@ pub fn run(args: &CheckArgs) -> Result<Exit, CliError> {
         output::emit(args.output.as_deref(), &out)?;
     }
     Ok(exit)
+}
+
+/// A check's exit: 0 accepted, 1 refused, 2 not checked.
+fn exit_of(status: check::report::Status) -> Exit {
+    match status {
+        check::report::Status::Accepted => Exit::Success,
+        check::report::Status::Refused => Exit::Wrong,
+        check::report::Status::Unchecked => Exit::BadInput,
+    }
 }
 
 /// The steps of `--step` and `--steps`, read (an unreadable one is a usage error, exit 2).
@@ -132,7 +141,7 @@ fn step_usage(flag: &str, prefix: &str, e: check::steps::BadStep, fix: &str) -> 
 fn with_steps(args: &CheckArgs, steps: &[check::steps::GivenStep]) -> Result<Exit, CliError> {
     let path = &args.files[0];
     let checked = check::steps::check_steps(path, steps, args.strict);
-    let mut exit = checked.exit_code();
+    let mut exit = exit_of(checked.status());
     for w in &checked.warnings {
         error::warn(&crate::report::messages::warning(w, args.lang));
     }
@@ -151,7 +160,7 @@ fn with_steps(args: &CheckArgs, steps: &[check::steps::GivenStep]) -> Result<Exi
         error::print(&f.message);
     }
     if let Some(c) = &answer {
-        exit = exit.max(c.exit_code());
+        exit = exit.max(exit_of(c.status()));
         if let Err(f) = &c.outcome {
             error::print(&f.message);
         }

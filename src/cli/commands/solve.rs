@@ -8,7 +8,7 @@ use crate::cli::output;
 use crate::report;
 use crate::report::file::{error_json, explain_file, solve_json_warned};
 
-pub fn run(args: &SolveArgs) -> Result<Exit, CliError> {
+pub(crate) fn run(args: &SolveArgs) -> Result<Exit, CliError> {
     if args.fragment && !matches!(args.format, Format::Latex | Format::Html) {
         return Err(CliError::Conflict {
             message: "--fragment applies to --format latex and html only".into(),
