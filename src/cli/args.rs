@@ -6,7 +6,7 @@ use std::path::PathBuf;
 
 use clap::{Args, Parser, Subcommand, ValueEnum};
 
-use super::parse::{parse_fraction, parse_pixel, parse_size};
+use super::parse::{parse_delimiter, parse_fraction, parse_pixel, parse_size, parse_tolerance};
 use crate::check;
 use crate::core::Precision;
 use crate::generate;
@@ -52,34 +52,27 @@ pub struct TradeoffArgs {
     /// Precisions to sweep.
     #[arg(long, value_enum, value_delimiter = ',', default_value = "f32,f64")]
     pub precisions: Vec<Precision>,
-    /// Maximum levels to sweep.
-    #[arg(
-        long,
-        value_delimiter = ',',
-        value_name = "N,...",
-        default_value = "1,2,3,5,10"
-    )]
+    /// Maximum levels to sweep, each 1 to 1000.
+    #[arg(long, value_delimiter = ',', value_name = "N,...", default_value = "1,2,3,5,10",
+          value_parser = level())]
     pub levels: Vec<u32>,
     /// Minimum weights to sweep (decimals or fractions such as 1/255).
     #[arg(long, value_delimiter = ',', value_name = "W,...", value_parser = parse_fraction,
           default_value = "0,1/255,0.1")]
     pub min_weights: Vec<f64>,
-    /// Samples per pixel to sweep.
-    #[arg(
-        long,
-        value_delimiter = ',',
-        value_name = "N,...",
-        default_value = "1,4,16"
-    )]
+    /// Samples per pixel to sweep, each 1 to 4096.
+    #[arg(long, value_delimiter = ',', value_name = "N,...", default_value = "1,4,16",
+          value_parser = samples())]
     pub samples: Vec<u32>,
-    /// Renders per setting; its time is their median.
-    #[arg(long, value_name = "N", default_value_t = 3)]
+    /// Renders per setting, 1 to 1000; its time is their median.
+    #[arg(long, value_name = "N", default_value_t = 3,
+          value_parser = clap::value_parser!(u32).range(1..=i64::from(crate::tradeoff::MAX_RUNS)))]
     pub runs: u32,
-    /// The reference's maximum level (it is f64 with minimum weight 0).
-    #[arg(long, value_name = "N", default_value_t = 64)]
+    /// The reference's maximum level, 1 to 1000 (it is f64 with minimum weight 0).
+    #[arg(long, value_name = "N", default_value_t = 64, value_parser = level())]
     pub reference_level: u32,
-    /// The reference's samples per pixel.
-    #[arg(long, value_name = "N", default_value_t = 64)]
+    /// The reference's samples per pixel, 1 to 4096.
+    #[arg(long, value_name = "N", default_value_t = 64, value_parser = samples())]
     pub reference_samples: u32,
     /// The error budget: which setting is the fastest with its error at most this?
     #[arg(long, value_name = "E", value_parser = parse_fraction, default_value = "1/255")]
@@ -90,8 +83,8 @@ pub struct TradeoffArgs {
     /// Render at this size instead of the camera's (quicker sweeps).
     #[arg(long, value_name = "WxH", value_parser = parse_size)]
     pub size: Option<(u32, u32)>,
-    /// Worker threads (default: one per core).
-    #[arg(long, value_name = "N")]
+    /// Worker threads, 1 to 1024 (default: one per core).
+    #[arg(long, value_name = "N", value_parser = threads())]
     pub threads: Option<usize>,
     /// Format of the table.
     #[arg(long, value_enum, default_value_t = TradeoffFormat::Text)]
@@ -102,6 +95,25 @@ pub struct TradeoffArgs {
     /// Write the plot of error against time (SVG) to this file.
     #[arg(long, value_name = "PATH.svg")]
     pub plot: Option<PathBuf>,
+}
+
+/// A maximum level: 1 to [`crate::problem::model::MAX_LEVEL`].
+fn level() -> clap::builder::RangedI64ValueParser<u32> {
+    clap::value_parser!(u32).range(1..=i64::from(crate::problem::model::MAX_LEVEL))
+}
+
+/// Samples per pixel: 1 to [`crate::problem::model::MAX_SAMPLES`].
+fn samples() -> clap::builder::RangedI64ValueParser<u32> {
+    clap::value_parser!(u32).range(1..=i64::from(crate::problem::model::MAX_SAMPLES))
+}
+
+/// The most worker threads: 1024, more than any machine the course runs on has cores (each
+/// thread reserves its stack).
+pub(crate) const MAX_THREADS: u64 = 1024;
+
+/// Worker threads: 1 to [`MAX_THREADS`].
+fn threads() -> clap::builder::RangedU64ValueParser<usize> {
+    clap::builder::RangedU64ValueParser::<usize>::new().range(1..=MAX_THREADS)
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
@@ -127,14 +139,14 @@ pub struct ExportPovArgs {
 /// The tracer's settings, each over the scene's `render` (or its default).
 #[derive(Debug, Args)]
 pub struct TraceSettings {
-    /// The maximum recursion level (primary rays are level 1) [scene's, or 5].
-    #[arg(long, value_name = "N")]
+    /// The maximum recursion level, 1 to 1000 (primary rays are level 1) [scene's, or 5].
+    #[arg(long, value_name = "N", value_parser = level())]
     pub max_level: Option<u32>,
-    /// The minimum weight of a reflection ray [scene's, or 1/255].
-    #[arg(long, value_name = "W")]
+    /// The minimum weight of a reflection ray, a number ≥ 0 or a fraction [scene's, or 1/255].
+    #[arg(long, value_name = "W", value_parser = parse_fraction)]
     pub min_weight: Option<f64>,
     /// Samples per pixel, 1 to 4096, stratified and deterministic [scene's, or 1].
-    #[arg(long, value_name = "N")]
+    #[arg(long, value_name = "N", value_parser = samples())]
     pub samples: Option<u32>,
     /// Shadow rays on or off [scene's, or on].
     #[arg(long, value_enum, value_name = "ON|OFF")]
@@ -162,8 +174,8 @@ pub struct RenderArgs {
     /// Floating-point precision of the whole calculation.
     #[arg(long, value_enum, default_value_t = Precision::F64)]
     pub precision: Precision,
-    /// Worker threads (default: one per core). The image is the same for any number.
-    #[arg(long, value_name = "N")]
+    /// Worker threads, 1 to 1024 (default: one per core). The image is the same for any number.
+    #[arg(long, value_name = "N", value_parser = threads())]
     pub threads: Option<usize>,
     /// Explain pixel X,Y (from the top-left corner, 0-based) step by step instead of writing
     /// the image: its rays, each hit solved as `phong solve` solves a ray problem.
@@ -198,7 +210,7 @@ pub struct CheckArgs {
     pub scale: check::Scale,
     /// The largest difference accepted per channel, on the answer's scale [default: the key's
     /// own, else 0.005 on the 0–1 scale, 1 on the 255 scale].
-    #[arg(long, value_name = "T", allow_hyphen_values = true)]
+    #[arg(long, value_name = "T", allow_hyphen_values = true, value_parser = parse_tolerance)]
     pub tolerance: Option<f64>,
     /// Accept only the problem as written, not its likely intended reading.
     #[arg(long)]
@@ -219,10 +231,16 @@ pub struct CheckArgs {
 
 #[derive(Debug, Args)]
 pub struct GradeArgs {
-    /// The submissions: a CSV file with the columns student, exercise, answer (a first row
-    /// starting with "student" is a header).
+    /// The submissions: a CSV file (or - for standard input) with the columns student,
+    /// exercise, answer, separated by commas, semicolons or tabs; a first row that names the
+    /// three columns (student|aluno|estudante, exercise|exercicio|questao, answer|resposta) is a
+    /// header.
     #[arg(value_name = "SUBMISSIONS")]
     pub submissions: PathBuf,
+    /// The separator of the submissions' fields: `,`, `;` or `tab` [default: detected from the
+    /// first rows].
+    #[arg(long, value_name = "SEP", value_parser = parse_delimiter)]
+    pub delimiter: Option<u8>,
     /// The folder of exercise files: exercise "4.2" is DIR/4.2.json.
     #[arg(long, value_name = "DIR")]
     pub exercises: PathBuf,
@@ -233,7 +251,7 @@ pub struct GradeArgs {
     #[arg(long, value_enum, default_value = "1")]
     pub scale: check::Scale,
     /// The largest difference accepted per channel [default: 0.005 on the 0–1 scale, 1 on 255].
-    #[arg(long, value_name = "T", allow_hyphen_values = true)]
+    #[arg(long, value_name = "T", allow_hyphen_values = true, value_parser = parse_tolerance)]
     pub tolerance: Option<f64>,
     /// Accept only the problem as written, not its likely intended reading.
     #[arg(long)]

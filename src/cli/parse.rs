@@ -8,11 +8,46 @@ use crate::core::Precision;
 
 /// A number ≥ 0 written as a decimal or a fraction (1/255).
 pub(super) fn parse_fraction(s: &str) -> Result<f64, String> {
+    if let Some(hint) = crate::check::answer::not_a_number_hint(s.trim()) {
+        return Err(format!(
+            "\"{}\" {hint}",
+            crate::check::answer::shorten(s, 40)
+        ));
+    }
     match crate::check::answer::number(s) {
         Some(x) if x >= 0.0 => Ok(x),
         _ => Err(format!(
             "{s:?} is not a number ≥ 0; write a decimal (0.05) or a fraction (1/255)"
         )),
+    }
+}
+
+/// A tolerance: a number ≥ 0 (a decimal, or a fraction 1/255), finite; a number beyond the
+/// range of f64 (`1e400`) is said to be out of range, not infinite.
+pub(super) fn parse_tolerance(s: &str) -> Result<f64, String> {
+    if let Some(hint) = crate::check::answer::not_a_number_hint(s.trim()) {
+        return Err(format!(
+            "\"{}\" {hint}",
+            crate::check::answer::shorten(s, 40)
+        ));
+    }
+    match crate::check::answer::number(s) {
+        Some(x) if x >= 0.0 => Ok(x),
+        _ => Err(format!(
+            "\"{}\" is not a tolerance: give the largest difference accepted per channel, a \
+             number ≥ 0 (e.g. 0.005 on the 0–1 scale, 1 on the 255 scale)",
+            crate::check::answer::shorten(s, 40)
+        )),
+    }
+}
+
+/// `--delimiter`: `,`, `;`, or a tab (`tab`, `\t` or the character itself).
+pub(super) fn parse_delimiter(s: &str) -> Result<u8, String> {
+    match s {
+        "," => Ok(b','),
+        ";" => Ok(b';'),
+        "tab" | "\\t" | "\t" => Ok(b'\t'),
+        _ => Err(format!("\"{s}\" is not a separator: give , or ; or tab")),
     }
 }
 

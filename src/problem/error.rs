@@ -5,7 +5,7 @@ use std::path::PathBuf;
 /// Something wrong with a problem file. Every variant maps to exit code 2.
 #[derive(Debug, thiserror::Error)]
 pub enum ProblemError {
-    #[error("{path}: cannot read the file: {source}. Fix: check the path, and that the file exists and is readable")]
+    #[error("{path}: cannot read the file: {source}. Fix: {}", super::read_fix(.source))]
     Read {
         path: PathBuf,
         #[source]
