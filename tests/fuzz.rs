@@ -2504,3 +2504,168 @@ fn a_floor_met_beyond_the_range_of_f64_is_not_met() {
         finite_tree(&doc, &format!("pixel {x},{y}'s JSON")).expect("every number finite");
     }
 }
+
+// ---------------------------------------------------------------------------------------------
+// Answers, grading CSVs and numeric flags (issue 12)
+// ---------------------------------------------------------------------------------------------
+
+/// A fixed-seed runner of `cases` cases, for the small fuzz tests below.
+fn small_runner(cases: u32, seed: u64) -> TestRunner {
+    TestRunner::new(Config {
+        cases,
+        rng_seed: RngSeed::Fixed(seed),
+        failure_persistence: None,
+        ..Config::default()
+    })
+}
+
+/// Text that is almost an answer: numbers (huge, tiny, signed, with decimal commas, Unicode
+/// minus, full-width digits), separators, brackets and stray characters, up to 400 pieces.
+fn almost_answer() -> impl Strategy<Value = String> {
+    let piece = prop_oneof![
+        Just("0.5".to_owned()),
+        Just("1e400".to_owned()),
+        Just("-1e-400".to_owned()),
+        Just("0,245".to_owned()),
+        Just("\u{2212}0.5".to_owned()),
+        Just("\u{FF10}.5".to_owned()),
+        Just("3/0".to_owned()),
+        Just("255".to_owned()),
+        Just("#80B34D".to_owned()),
+        "[ ,;()\\[\\]{}#/+\\-eE.]".prop_map(|s: String| s),
+        "\\PC{0,3}",
+        "[0-9]{1,400}",
+    ];
+    proptest::collection::vec(piece, 0..400).prop_map(|v| v.join(" "))
+}
+
+#[test]
+fn fuzz_answers_never_panic_and_their_errors_stay_short() {
+    small_runner(300, 41)
+        .run(&(almost_answer(), any::<bool>()), |(text, bits)| {
+            let scale = if bits { Scale::Bits8 } else { Scale::Unit };
+            match check::answer::parse(&text, scale) {
+                Ok(a) => prop_assert!(a.values.iter().all(|v| v.is_finite()), "{:?}", a),
+                // The answer is echoed shortened: a message of at most a few hundred characters
+                // whatever was typed.
+                Err(e) => prop_assert!(e.message.chars().count() < 600, "{}", e.message.len()),
+            }
+            Ok(())
+        })
+        .unwrap_or_else(|e| panic!("{e}"));
+}
+
+#[test]
+fn fuzz_grading_arbitrary_bytes_never_panics_and_keeps_every_line() {
+    let options = check::grade::Options {
+        exercises: std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("exercises"),
+        scale: Scale::Unit,
+        tolerance: None,
+        strict: false,
+        delimiter: None,
+    };
+    let byte = prop_oneof![
+        Just(b','),
+        Just(b';'),
+        Just(b'\t'),
+        Just(b'"'),
+        Just(b'\n'),
+        Just(b'\r'),
+        Just(0u8),
+        Just(0xFF),
+        Just(b's'),
+        Just(b'4'),
+        Just(b'.'),
+        Just(b'1'),
+        Just(b' '),
+        any::<u8>(),
+    ];
+    small_runner(300, 42)
+        .run(&proptest::collection::vec(byte, 0..400), |bytes| {
+            let report = check::grade::grade_bytes(&bytes, &options);
+            // No more rows than lines, numbered 1, 2, … and at increasing lines.
+            let lines = check::grade::lines(&check::grade::decode(&bytes)).count() as u64;
+            prop_assert!(report.rows.len() as u64 <= lines);
+            for (i, w) in report.rows.windows(2).enumerate() {
+                prop_assert!(w[0].line < w[1].line, "rows {} and {}", i + 1, i + 2);
+            }
+            let csv = check::grade::rows_csv(&report);
+            prop_assert!(!csv.contains(&0), "a NUL copied through");
+            Ok(())
+        })
+        .unwrap_or_else(|e| panic!("{e}"));
+}
+
+#[test]
+fn fuzz_numeric_flags_are_parsed_or_refused_never_a_panic() {
+    use clap::Parser;
+    let value = prop_oneof![
+        Just("0".to_owned()),
+        Just("1".to_owned()),
+        Just("4096".to_owned()),
+        Just("4097".to_owned()),
+        Just("1000".to_owned()),
+        Just("1001".to_owned()),
+        Just("4294967295".to_owned()),
+        Just("4294967296".to_owned()),
+        Just("18446744073709551616".to_owned()),
+        Just("-1".to_owned()),
+        Just("1e400".to_owned()),
+        Just("1/255".to_owned()),
+        Just("nan".to_owned()),
+        Just("\u{2212}1".to_owned()),
+        Just("64x48".to_owned()),
+        Just("16384x16384".to_owned()),
+        "[0-9x,./e\\-]{0,12}",
+    ];
+    let flag = select(vec![
+        ("render", "--max-level"),
+        ("render", "--samples"),
+        ("render", "--threads"),
+        ("render", "--min-weight"),
+        ("render", "--explain-pixel"),
+        ("tradeoff", "--runs"),
+        ("tradeoff", "--levels"),
+        ("tradeoff", "--samples"),
+        ("tradeoff", "--reference-level"),
+        ("tradeoff", "--reference-samples"),
+        ("tradeoff", "--threads"),
+        ("tradeoff", "--size"),
+        ("tradeoff", "--budget"),
+        ("tradeoff", "--min-weights"),
+        ("check", "--tolerance"),
+        ("grade", "--tolerance"),
+        ("new", "--count"),
+    ]);
+    small_runner(400, 43)
+        .run(&(flag, value), |((command, flag), value)| {
+            let mut args = vec!["phong", command, "x.json"];
+            match command {
+                "render" => args.extend(["-o", "x.png"]),
+                "grade" => args.extend(["--exercises", "."]),
+                "new" => args = vec!["phong", "new", "--kind", "point"],
+                _ => {}
+            }
+            args.push(flag);
+            args.push(&value);
+            if let Ok(phong::cli::Cli { command, .. }) = phong::cli::Cli::try_parse_from(&args) {
+                // What clap accepts is within the documented ranges.
+                if let phong::cli::args::Command::Render(r) = &command {
+                    prop_assert!(r.settings.max_level.is_none_or(|l| (1..=1000).contains(&l)));
+                    prop_assert!(r.settings.samples.is_none_or(|n| (1..=4096).contains(&n)));
+                    prop_assert!(r.threads.is_none_or(|n| (1..=1024).contains(&n)));
+                    prop_assert!(r.settings.min_weight.is_none_or(f64::is_finite));
+                }
+                if let phong::cli::args::Command::Tradeoff(t) = &command {
+                    prop_assert!((1..=1000).contains(&t.runs));
+                    prop_assert!(t.levels.iter().all(|l| (1..=1000).contains(l)));
+                    prop_assert!(t.budget.is_finite());
+                }
+                if let phong::cli::args::Command::Check(c) = &command {
+                    prop_assert!(c.tolerance.is_none_or(f64::is_finite));
+                }
+            }
+            Ok(())
+        })
+        .unwrap_or_else(|e| panic!("{e}"));
+}

@@ -183,7 +183,8 @@ pub fn check_tolerance(t: f64) -> Result<(), BadAnswer> {
 fn parse_hex(hex: &str) -> Result<[f64; 3], BadAnswer> {
     if hex.len() != 6 || !hex.chars().all(|c| c.is_ascii_hexdigit()) {
         return Err(bad(format!(
-            "\"#{hex}\" is not a colour \"#RRGGBB\": six hexadecimal digits after #"
+            "\"#{}\" is not a colour \"#RRGGBB\": six hexadecimal digits after #",
+            shorten(hex, 40)
         )));
     }
     let byte = |i: usize| f64::from(u8::from_str_radix(&hex[i..i + 2], 16).expect("hex digits"));

@@ -205,8 +205,28 @@ pub fn grade_file(path: &Path, options: &Options) -> Result<Report, Unreadable> 
             path: path.to_owned(),
             source,
         })?;
+    // Each row costs a few hundred bytes in the report: a file of tiny rows is bounded by rows.
+    let rows = lines(&decode(&bytes))
+        .filter(|(_, l)| !l.iter().all(u8::is_ascii_whitespace))
+        .count();
+    if rows as u64 > MAX_ROWS {
+        return Err(Unreadable {
+            path: path.to_owned(),
+            source: std::io::Error::new(
+                std::io::ErrorKind::InvalidData,
+                crate::problem::TooMany {
+                    limit: MAX_ROWS,
+                    what: "rows",
+                },
+            ),
+        });
+    }
     Ok(grade_bytes(&bytes, options))
 }
+
+/// The most rows a submissions file may have: 1,000,000 (a class of 1,000 students answering 50
+/// exercises is 50,000).
+pub const MAX_ROWS: u64 = 1_000_000;
 
 /// The submissions as UTF-8 bytes: a UTF-8 byte order mark removed, UTF-16 with its byte order
 /// mark (what spreadsheets save as "Unicode text") decoded. Anything else is taken as UTF-8; a

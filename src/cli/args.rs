@@ -6,7 +6,10 @@ use std::path::PathBuf;
 
 use clap::{Args, Parser, Subcommand, ValueEnum};
 
-use super::parse::{parse_delimiter, parse_fraction, parse_pixel, parse_size, parse_tolerance};
+use super::parse::{
+    parse_delimiter, parse_fraction, parse_level, parse_pixel, parse_runs, parse_samples,
+    parse_size, parse_threads, parse_tolerance,
+};
 use crate::check;
 use crate::core::Precision;
 use crate::generate;
@@ -54,7 +57,7 @@ pub struct TradeoffArgs {
     pub precisions: Vec<Precision>,
     /// Maximum levels to sweep, each 1 to 1000.
     #[arg(long, value_delimiter = ',', value_name = "N,...", default_value = "1,2,3,5,10",
-          value_parser = level())]
+          value_parser = parse_level)]
     pub levels: Vec<u32>,
     /// Minimum weights to sweep (decimals or fractions such as 1/255).
     #[arg(long, value_delimiter = ',', value_name = "W,...", value_parser = parse_fraction,
@@ -62,17 +65,17 @@ pub struct TradeoffArgs {
     pub min_weights: Vec<f64>,
     /// Samples per pixel to sweep, each 1 to 4096.
     #[arg(long, value_delimiter = ',', value_name = "N,...", default_value = "1,4,16",
-          value_parser = samples())]
+          value_parser = parse_samples)]
     pub samples: Vec<u32>,
     /// Renders per setting, 1 to 1000; its time is their median.
     #[arg(long, value_name = "N", default_value_t = 3,
-          value_parser = clap::value_parser!(u32).range(1..=i64::from(crate::tradeoff::MAX_RUNS)))]
+          value_parser = parse_runs)]
     pub runs: u32,
     /// The reference's maximum level, 1 to 1000 (it is f64 with minimum weight 0).
-    #[arg(long, value_name = "N", default_value_t = 64, value_parser = level())]
+    #[arg(long, value_name = "N", default_value_t = 64, value_parser = parse_level)]
     pub reference_level: u32,
     /// The reference's samples per pixel, 1 to 4096.
-    #[arg(long, value_name = "N", default_value_t = 64, value_parser = samples())]
+    #[arg(long, value_name = "N", default_value_t = 64, value_parser = parse_samples)]
     pub reference_samples: u32,
     /// The error budget: which setting is the fastest with its error at most this?
     #[arg(long, value_name = "E", value_parser = parse_fraction, default_value = "1/255")]
@@ -84,7 +87,7 @@ pub struct TradeoffArgs {
     #[arg(long, value_name = "WxH", value_parser = parse_size)]
     pub size: Option<(u32, u32)>,
     /// Worker threads, 1 to 1024 (default: one per core).
-    #[arg(long, value_name = "N", value_parser = threads())]
+    #[arg(long, value_name = "N", value_parser = parse_threads)]
     pub threads: Option<usize>,
     /// Format of the table.
     #[arg(long, value_enum, default_value_t = TradeoffFormat::Text)]
@@ -95,25 +98,6 @@ pub struct TradeoffArgs {
     /// Write the plot of error against time (SVG) to this file.
     #[arg(long, value_name = "PATH.svg")]
     pub plot: Option<PathBuf>,
-}
-
-/// A maximum level: 1 to [`crate::problem::model::MAX_LEVEL`].
-fn level() -> clap::builder::RangedI64ValueParser<u32> {
-    clap::value_parser!(u32).range(1..=i64::from(crate::problem::model::MAX_LEVEL))
-}
-
-/// Samples per pixel: 1 to [`crate::problem::model::MAX_SAMPLES`].
-fn samples() -> clap::builder::RangedI64ValueParser<u32> {
-    clap::value_parser!(u32).range(1..=i64::from(crate::problem::model::MAX_SAMPLES))
-}
-
-/// The most worker threads: 1024, more than any machine the course runs on has cores (each
-/// thread reserves its stack).
-pub(crate) const MAX_THREADS: u64 = 1024;
-
-/// Worker threads: 1 to [`MAX_THREADS`].
-fn threads() -> clap::builder::RangedU64ValueParser<usize> {
-    clap::builder::RangedU64ValueParser::<usize>::new().range(1..=MAX_THREADS)
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
@@ -140,13 +124,13 @@ pub struct ExportPovArgs {
 #[derive(Debug, Args)]
 pub struct TraceSettings {
     /// The maximum recursion level, 1 to 1000 (primary rays are level 1) [scene's, or 5].
-    #[arg(long, value_name = "N", value_parser = level())]
+    #[arg(long, value_name = "N", value_parser = parse_level)]
     pub max_level: Option<u32>,
     /// The minimum weight of a reflection ray, a number ≥ 0 or a fraction [scene's, or 1/255].
     #[arg(long, value_name = "W", value_parser = parse_fraction)]
     pub min_weight: Option<f64>,
     /// Samples per pixel, 1 to 4096, stratified and deterministic [scene's, or 1].
-    #[arg(long, value_name = "N", value_parser = samples())]
+    #[arg(long, value_name = "N", value_parser = parse_samples)]
     pub samples: Option<u32>,
     /// Shadow rays on or off [scene's, or on].
     #[arg(long, value_enum, value_name = "ON|OFF")]
@@ -175,7 +159,7 @@ pub struct RenderArgs {
     #[arg(long, value_enum, default_value_t = Precision::F64)]
     pub precision: Precision,
     /// Worker threads, 1 to 1024 (default: one per core). The image is the same for any number.
-    #[arg(long, value_name = "N", value_parser = threads())]
+    #[arg(long, value_name = "N", value_parser = parse_threads)]
     pub threads: Option<usize>,
     /// Explain pixel X,Y (from the top-left corner, 0-based) step by step instead of writing
     /// the image: its rays, each hit solved as `phong solve` solves a ray problem.

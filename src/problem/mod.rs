@@ -37,10 +37,23 @@ pub struct TooLarge {
     pub what: &'static str,
 }
 
+/// An input of more items than phong takes (`rows` of a submissions file), the error inside an
+/// [`std::io::Error`].
+#[derive(Debug, thiserror::Error)]
+#[error("it has more than {limit} {what}, the most phong takes")]
+pub struct TooMany {
+    /// The limit.
+    pub limit: u64,
+    /// What is counted ("rows").
+    pub what: &'static str,
+}
+
 /// The fix for an input that cannot be read: a smaller file when it is too large, else the
 /// path.
 pub fn read_fix(e: &std::io::Error) -> &'static str {
-    if e.get_ref().is_some_and(|inner| inner.is::<TooLarge>()) {
+    if e.get_ref()
+        .is_some_and(|inner| inner.is::<TooLarge>() || inner.is::<TooMany>())
+    {
         "give a smaller file (the limits are in README, \"Limits and safety\")"
     } else {
         "check the path, and that the file exists and is readable"
