@@ -43,6 +43,24 @@ fn scene_file(dir: &TempDir, scene: &serde_json::Value) -> PathBuf {
     write(dir, "scene.json", &scene.to_string())
 }
 
+/// The small scene with a mesh read from `file` as its one surface.
+fn mesh_scene(dir: &TempDir, file: &str) -> PathBuf {
+    let mut s = small_scene();
+    s["surfaces"] = json!([{ "type": "mesh", "file": file,
+                             "material": { "ambient": [0.5, 0.5, 0.5] } }]);
+    scene_file(dir, &s)
+}
+
+/// `phong render SCENE -o DIR/x.png`.
+fn render(dir: &TempDir, scene: &Path) -> Command {
+    let mut cmd = phong();
+    cmd.arg("render")
+        .arg(scene)
+        .arg("-o")
+        .arg(dir.path().join("x.png"));
+    cmd
+}
+
 /// Exit 2 with every one of `says` in the error, and no panic.
 fn refused(cmd: &mut Command, says: &[&str]) -> String {
     let out = cmd.output().unwrap();
@@ -211,16 +229,9 @@ fn a_problem_or_mesh_file_that_never_ends_is_refused_by_its_size() {
         &["/dev/zero", "larger than 64 MiB", "smaller file"],
     );
     let dir = TempDir::new().unwrap();
-    let mut s = small_scene();
-    s["surfaces"] = json!([{ "type": "mesh", "file": "/dev/zero",
-                             "material": { "ambient": [0.5, 0.5, 0.5] } }]);
-    let scene = scene_file(&dir, &s);
+    let scene = mesh_scene(&dir, "/dev/zero");
     refused(
-        phong()
-            .arg("render")
-            .arg(&scene)
-            .arg("-o")
-            .arg(dir.path().join("x.png")),
+        &mut render(&dir, &scene),
         &["surfaces[0].file", "larger than 256 MiB"],
     );
 }
@@ -251,16 +262,9 @@ fn too_many_lights_or_triangles_are_refused() {
         obj.push_str("f 1 2 3\n");
     }
     write(&dir, "big.obj", &obj);
-    let mut s = small_scene();
-    s["surfaces"] = json!([{ "type": "mesh", "file": "big.obj",
-                             "material": { "ambient": [0.5, 0.5, 0.5] } }]);
-    let scene = scene_file(&dir, &s);
+    let scene = mesh_scene(&dir, "big.obj");
     refused(
-        phong()
-            .arg("render")
-            .arg(&scene)
-            .arg("-o")
-            .arg(dir.path().join("x.png")),
+        &mut render(&dir, &scene),
         &["line 1000004", "more than 1000000 triangles"],
     );
 }
@@ -284,20 +288,10 @@ fn a_submissions_file_of_too_many_rows_is_refused_not_graded_out_of_memory() {
 #[test]
 fn an_obj_mistake_is_named_by_its_line() {
     let dir = TempDir::new().unwrap();
-    let mut s = small_scene();
-    s["surfaces"] = json!([{ "type": "mesh", "file": "m.obj",
-                             "material": { "ambient": [0.5, 0.5, 0.5] } }]);
-    let scene = scene_file(&dir, &s);
+    let scene = mesh_scene(&dir, "m.obj");
     let render = |obj: &str, says: &[&str]| {
         write(&dir, "m.obj", obj);
-        refused(
-            phong()
-                .arg("render")
-                .arg(&scene)
-                .arg("-o")
-                .arg(dir.path().join("x.png")),
-            says,
-        )
+        refused(&mut render(&dir, &scene), says)
     };
     let e = render(
         "# two vertices\nv 0 0 0\nv 1 0 0\nf 1 2\n",
