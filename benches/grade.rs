@@ -40,6 +40,7 @@ fn bench(c: &mut Criterion) {
         scale: Scale::Unit,
         tolerance: None,
         strict: false,
+        delimiter: None,
     };
     let mut group = c.benchmark_group("grade");
     group.sample_size(10);

@@ -2563,3 +2563,94 @@ fn a_pixel_whose_reflections_overflow_is_refused_not_shown_as_infinite() {
         }
     }
 }
+
+// ---------------------------------------------------------------------------------------------
+// Answers, grading CSVs and numeric flags (issue 12)
+// ---------------------------------------------------------------------------------------------
+
+/// A fixed-seed runner of `cases` cases, for the small fuzz tests below.
+fn small_runner(cases: u32, seed: u64) -> TestRunner {
+    TestRunner::new(Config {
+        cases,
+        rng_seed: RngSeed::Fixed(seed),
+        failure_persistence: None,
+        ..Config::default()
+    })
+}
+
+/// Text that is almost an answer: numbers (huge, tiny, signed, with decimal commas, Unicode
+/// minus, full-width digits), separators, brackets and stray characters, up to 400 pieces.
+fn almost_answer() -> impl Strategy<Value = String> {
+    let piece = prop_oneof![
+        Just("0.5".to_owned()),
+        Just("1e400".to_owned()),
+        Just("-1e-400".to_owned()),
+        Just("0,245".to_owned()),
+        Just("\u{2212}0.5".to_owned()),
+        Just("\u{FF10}.5".to_owned()),
+        Just("3/0".to_owned()),
+        Just("255".to_owned()),
+        Just("#80B34D".to_owned()),
+        "[ ,;()\\[\\]{}#/+\\-eE.]".prop_map(|s: String| s),
+        "\\PC{0,3}",
+        "[0-9]{1,400}",
+    ];
+    proptest::collection::vec(piece, 0..400).prop_map(|v| v.join(" "))
+}
+
+#[test]
+fn fuzz_answers_never_panic_and_their_errors_stay_short() {
+    small_runner(300, 41)
+        .run(&(almost_answer(), any::<bool>()), |(text, bits)| {
+            let scale = if bits { Scale::Bits8 } else { Scale::Unit };
+            match check::answer::parse(&text, scale) {
+                Ok(a) => prop_assert!(a.values.iter().flatten().all(|v| v.is_finite()), "{:?}", a),
+                // The answer is echoed shortened: a message of at most a few hundred characters
+                // whatever was typed.
+                Err(e) => prop_assert!(e.message.chars().count() < 600, "{}", e.message.len()),
+            }
+            Ok(())
+        })
+        .unwrap_or_else(|e| panic!("{e}"));
+}
+
+#[test]
+fn fuzz_grading_arbitrary_bytes_never_panics_and_keeps_every_line() {
+    let options = check::grade::Options {
+        exercises: std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("exercises"),
+        scale: Scale::Unit,
+        tolerance: None,
+        strict: false,
+        delimiter: None,
+    };
+    let byte = prop_oneof![
+        Just(b','),
+        Just(b';'),
+        Just(b'\t'),
+        Just(b'"'),
+        Just(b'\n'),
+        Just(b'\r'),
+        Just(0u8),
+        Just(0xFF),
+        Just(b's'),
+        Just(b'4'),
+        Just(b'.'),
+        Just(b'1'),
+        Just(b' '),
+        any::<u8>(),
+    ];
+    small_runner(300, 42)
+        .run(&proptest::collection::vec(byte, 0..400), |bytes| {
+            let report = check::grade::grade_bytes(&bytes, &options);
+            // No more rows than lines, numbered 1, 2, … and at increasing lines.
+            let lines = check::grade::lines(&check::grade::decode(&bytes)).count() as u64;
+            prop_assert!(report.rows.len() as u64 <= lines);
+            for (i, w) in report.rows.windows(2).enumerate() {
+                prop_assert!(w[0].line < w[1].line, "rows {} and {}", i + 1, i + 2);
+            }
+            let csv = check::grade::rows_csv(&report);
+            prop_assert!(!csv.contains(&0), "a NUL copied through");
+            Ok(())
+        })
+        .unwrap_or_else(|e| panic!("{e}"));
+}

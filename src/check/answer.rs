@@ -124,6 +124,7 @@ pub(crate) fn is_no_hit(text: &str) -> bool {
 #[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
 #[error("{message}")]
 pub struct BadAnswer {
+    /// What is wrong with the answer as written, and the forms an answer may take.
     pub message: String,
 }
 
@@ -153,14 +154,23 @@ pub fn parse(text: &str, scale: Scale) -> Result<Answer, BadAnswer> {
         });
     }
     let inner = strip_brackets(t);
-    let tokens =
-        split(inner).ok_or_else(|| bad(format!("\"{t}\" is not three numbers: {FORMS}")))?;
+    // A long answer is echoed shortened (a 100 kB cell would otherwise fill the screen).
+    let shown = shorten(t, 80);
+    let tokens = split(inner).ok_or_else(|| {
+        let hint = not_a_number_hint(inner).map_or(String::new(), |h| format!(" (it {h})"));
+        bad(format!("\"{shown}\" is not three numbers{hint}: {FORMS}"))
+    })?;
     let mut values = [0.0; 3];
     for (v, tok) in values.iter_mut().zip(&tokens) {
-        *v = number(tok)
-            .ok_or_else(|| bad(format!("\"{tok}\" in \"{t}\" is not a number: {FORMS}")))?;
+        *v = number(tok).ok_or_else(|| {
+            let why = not_a_number_hint(tok).unwrap_or("is not a number");
+            bad(format!(
+                "\"{}\" in \"{shown}\" {why}: {FORMS}",
+                shorten(tok, 40)
+            ))
+        })?;
     }
-    check_scale(values, scale, t)?;
+    check_scale(values, scale, &shown)?;
     Ok(Answer {
         values: Some(values),
         scale,
@@ -186,6 +196,7 @@ fn check_scale(values: [f64; 3], scale: Scale, shown: &str) -> Result<(), BadAns
 /// given with `--answer` asks for none).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Key {
+    /// The colour (or "none") the key gives, on its scale.
     pub answer: Answer,
     /// The key's own tolerance; `None` for the default (`--tolerance`, or the scale's).
     pub tolerance: Option<f64>,
@@ -265,7 +276,8 @@ pub fn check_tolerance(t: f64) -> Result<(), BadAnswer> {
 fn parse_hex(hex: &str) -> Result<[f64; 3], BadAnswer> {
     if hex.len() != 6 || !hex.chars().all(|c| c.is_ascii_hexdigit()) {
         return Err(bad(format!(
-            "\"#{hex}\" is not a colour \"#RRGGBB\": six hexadecimal digits after #"
+            "\"#{}\" is not a colour \"#RRGGBB\": six hexadecimal digits after #",
+            shorten(hex, 40)
         )));
     }
     let byte = |i: usize| f64::from(u8::from_str_radix(&hex[i..i + 2], 16).expect("hex digits"));
@@ -315,6 +327,48 @@ fn split(s: &str) -> Option<Vec<String>> {
             .map(|x| x.trim_end_matches(',').replace(',', "."))
             .collect(),
     )
+}
+
+/// `text` as it is echoed in a message: whole up to `max` characters, else its first ones and
+/// how long it was (`0.5 0.5 0.5 0.5… (100000 characters)`).
+pub fn shorten(text: &str, max: usize) -> String {
+    let n = text.chars().count();
+    if n <= max {
+        return text.to_owned();
+    }
+    let head: String = text.chars().take(max.saturating_sub(1)).collect();
+    format!("{head}… ({n} characters)")
+}
+
+/// Why a text that looks like a number is not one, when it has a common cause: beyond the range
+/// of f64 (`1e400`), a Unicode minus (U+2212, as word processors write it), or full-width digits
+/// (as Asian input methods write them). `None` when there is no such cause.
+pub fn not_a_number_hint(text: &str) -> Option<&'static str> {
+    if text.contains(['\u{2212}', '\u{2013}', '\u{FE63}', '\u{FF0D}']) {
+        return Some(
+            "has a Unicode minus or dash (−, –): write the minus as the ASCII hyphen-minus -",
+        );
+    }
+    if text
+        .chars()
+        .any(|c| ('\u{FF10}'..='\u{FF19}').contains(&c) || c == '\u{FF0E}')
+    {
+        return Some(
+            "has full-width digits (０-９): write the digits 0-9 and the point . in ASCII",
+        );
+    }
+    let overflows = |t: &str| {
+        let t = t.trim();
+        !t.is_empty()
+            && t.chars()
+                .all(|c| c.is_ascii_digit() || matches!(c, '.' | '-' | '+' | 'e' | 'E'))
+            && t.parse::<f64>().is_ok_and(f64::is_infinite)
+    };
+    let parts: Vec<&str> = text.split('/').collect();
+    if parts.len() <= 2 && parts.iter().any(|p| overflows(p)) {
+        return Some("is out of range: beyond ±1.8e308, the largest number f64 holds");
+    }
+    None
 }
 
 /// A finite decimal number, or a fraction a/b.

@@ -1,11 +1,16 @@
 //! `phong grade`: a class's answers in a CSV file (student, exercise, answer), one verdict per
 //! row with its diagnosis, and a summary per exercise.
 //!
-//! Every input row appears in the output exactly once, in input order: a malformed row (wrong
-//! number of fields, bad UTF-8, an empty field), an unknown exercise, a bad exercise file or an
-//! unreadable answer gets the verdict `invalid` with the reason, and the batch goes on. Each
+//! The file is read as people's spreadsheets write it: UTF-8 with or without a byte order mark,
+//! or UTF-16 with one; fields separated by `,`, `;` or tabs (detected, or `Options::delimiter`);
+//! lines ending in `\n`, `\r\n` or `\r`. A row is one line. Every line that holds data is one
+//! row of the report, exactly once, in input order: a malformed row (a quote not closed on its
+//! line, text after a closing quote, a wrong number of fields, bad UTF-8, a NUL byte, an empty
+//! field), an unknown exercise, a bad exercise file or an unreadable answer gets the verdict
+//! `invalid` with the reason, and the batch goes on. A first line naming the three columns in
+//! English or Portuguese (`aluno;exercício;resposta`, in any order) is a header, not a row. Each
 //! exercise is solved once (with its slips) on first use; grading a row is then a few
-//! comparisons. A first row whose first field is `student` is a header, not a row.
+//! comparisons.
 
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
@@ -29,6 +34,8 @@ pub struct Options {
     pub tolerance: Option<f64>,
     /// Only the problem as written is right (a likely intended reading is not accepted).
     pub strict: bool,
+    /// The fields' separator (`b','`, `b';'` or `b'\t'`); `None` to detect it ([`delimiter`]).
+    pub delimiter: Option<u8>,
 }
 
 /// One graded row.
@@ -36,9 +43,10 @@ pub struct Options {
 pub struct RowOut {
     /// The row's number among the data rows, from 1.
     pub row: usize,
-    /// The line of the CSV file where the row starts.
+    /// The line of the CSV file where the row is (1 for the first; blank lines and a header
+    /// count, whatever the line ends).
     pub line: u64,
-    /// The `student` column, as written.
+    /// The `student` column, as written (control characters and NUL shown as U+FFFD).
     pub student: String,
     /// The `exercise` column, as written (exercise `4.2` is the file `4.2.json`).
     pub exercise: String,
@@ -68,7 +76,7 @@ pub struct RowOut {
 /// The rows of one exercise, counted.
 #[derive(Clone, Debug, Default, Serialize)]
 pub struct SummaryOut {
-    /// The exercise, as the rows name it.
+    /// The exercise, without `.json` (`4.2` and `4.2.json` are one exercise).
     pub exercise: String,
     /// The number of its rows.
     pub rows: usize,
@@ -100,15 +108,17 @@ pub struct Report {
     pub format_version: u32,
     /// Each data row of the CSV, graded, in file order.
     pub rows: Vec<RowOut>,
-    /// Each exercise's rows, counted, in order of first appearance.
+    /// One entry per exercise, in name order.
     pub summary: Vec<SummaryOut>,
 }
 
 /// The CSV cannot be read at all (a row that cannot be read is reported in its place instead).
 #[derive(Debug, thiserror::Error)]
-#[error("{path}: cannot read the file: {source}. Fix: check the path, and that the file exists and is readable")]
-pub(crate) struct Unreadable {
+#[error("{path}: cannot read the file: {source}. Fix: {}", crate::problem::read_fix(.source))]
+pub struct Unreadable {
+    /// The submissions' path.
     pub path: PathBuf,
+    /// Why.
     #[source]
     pub source: std::io::Error,
 }
@@ -120,40 +130,76 @@ struct Exercise {
     key: Option<answer::Key>,
 }
 
+/// The largest submissions file read: 256 MiB (100,000 rows are about 3 MB).
+pub const MAX_SUBMISSIONS_BYTES: u64 = 256 << 20;
+
 /// Each exercise solved once, or why it cannot be.
 struct Cache<'a> {
     options: &'a Options,
+    /// The exercises folder with its links resolved (`None` if it cannot be).
+    folder: Option<PathBuf>,
     solved: BTreeMap<String, Result<Exercise, String>>,
+}
+
+/// An exercise's name without `.json`: `4.2` and `4.2.json` are one exercise.
+fn exercise_key(exercise: &str) -> &str {
+    exercise.strip_suffix(".json").unwrap_or(exercise)
 }
 
 impl Cache<'_> {
     fn get(&mut self, exercise: &str) -> &Result<Exercise, String> {
-        if !self.solved.contains_key(exercise) {
-            let result = self.solve(exercise);
-            self.solved.insert(exercise.to_owned(), result);
+        let key = exercise_key(exercise);
+        if !self.solved.contains_key(key) {
+            let result = self.solve(key);
+            self.solved.insert(key.to_owned(), result);
         }
-        &self.solved[exercise]
+        &self.solved[key]
     }
 
-    fn solve(&self, exercise: &str) -> Result<Exercise, String> {
+    /// Exercise `name` is the regular file `DIR/name.json`, inside the folder once links are
+    /// followed (a link out of the folder is refused: the folder is what the instructor vouches
+    /// for).
+    fn solve(&self, name: &str) -> Result<Exercise, String> {
         let dir = &self.options.exercises;
-        let safe = !exercise.starts_with('.')
-            && exercise
+        let safe = !name.is_empty()
+            && !name.starts_with('.')
+            && name
                 .chars()
                 .all(|c| c.is_alphanumeric() || matches!(c, '.' | '-' | '_'));
-        let file = if exercise.ends_with(".json") {
-            exercise.to_owned()
-        } else {
-            format!("{exercise}.json")
-        };
+        let file = format!("{name}.json");
         let path = dir.join(&file);
-        if !safe || !path.is_file() {
-            return Err(format!(
+        let unknown = || {
+            format!(
                 "unknown exercise: there is no {} in {}. Fix: name an exercise by its file name \
                  without .json (e.g. 4.2 for {}/4.2.json)",
                 file,
                 dir.display(),
                 dir.display()
+            )
+        };
+        if !safe || std::fs::symlink_metadata(&path).is_err() {
+            return Err(unknown());
+        }
+        let real = std::fs::canonicalize(&path).map_err(|e| {
+            format!(
+                "{}: the exercise file cannot be followed: {e}. Fix: replace the link by the file",
+                path.display()
+            )
+        })?;
+        if !self.folder.as_ref().is_some_and(|d| real.starts_with(d)) {
+            return Err(format!(
+                "{}: the exercise file is a link out of the exercises folder (to {}), which is \
+                 refused. Fix: copy the file into {}",
+                path.display(),
+                real.display(),
+                dir.display()
+            ));
+        }
+        if !std::fs::metadata(&real).is_ok_and(|m| m.is_file()) {
+            return Err(format!(
+                "{}: the exercise is not a regular file (a folder, a FIFO or a device). Fix: put \
+                 the exercise's problem file there",
+                path.display()
             ));
         }
         let (file, problem) = crate::problem::load::<f64>(&path).map_err(|e| e.to_string())?;
@@ -164,32 +210,287 @@ impl Cache<'_> {
     }
 }
 
-/// Grades the CSV file at `path`.
-pub(crate) fn grade_file(path: &Path, options: &Options) -> Result<Report, Unreadable> {
-    let bytes = std::fs::read(path).map_err(|source| Unreadable {
-        path: path.to_owned(),
-        source,
-    })?;
+/// Grades the CSV file at `path` (`-`: standard input).
+pub fn grade_file(path: &Path, options: &Options) -> Result<Report, Unreadable> {
+    let bytes = crate::problem::read_limited(path, MAX_SUBMISSIONS_BYTES, "a submissions file")
+        .map_err(|source| Unreadable {
+            path: path.to_owned(),
+            source,
+        })?;
+    // Each row costs a few hundred bytes in the report: a file of tiny rows is bounded by rows.
+    let rows = lines(&decode(&bytes))
+        .filter(|(_, l)| !l.iter().all(u8::is_ascii_whitespace))
+        .count();
+    if rows as u64 > MAX_ROWS {
+        return Err(Unreadable {
+            path: path.to_owned(),
+            source: std::io::Error::new(
+                std::io::ErrorKind::InvalidData,
+                crate::problem::TooMany {
+                    limit: MAX_ROWS,
+                    what: "rows",
+                },
+            ),
+        });
+    }
     Ok(grade_bytes(&bytes, options))
 }
 
-/// Grades CSV text (bytes, so that a row of bad UTF-8 is reported rather than fatal).
+/// The most rows a submissions file may have: 1,000,000 (a class of 1,000 students answering 50
+/// exercises is 50,000).
+pub const MAX_ROWS: u64 = 1_000_000;
+
+/// The submissions as UTF-8 bytes: a UTF-8 byte order mark removed, UTF-16 with its byte order
+/// mark (what spreadsheets save as "Unicode text") decoded. Anything else is taken as UTF-8; a
+/// line that is not is reported as such.
+pub fn decode(bytes: &[u8]) -> std::borrow::Cow<'_, [u8]> {
+    use std::borrow::Cow;
+    if let Some(rest) = bytes.strip_prefix(b"\xEF\xBB\xBF") {
+        return Cow::Borrowed(rest);
+    }
+    for (bom, encoding) in [
+        (b"\xFF\xFE", encoding_rs::UTF_16LE),
+        (b"\xFE\xFF", encoding_rs::UTF_16BE),
+    ] {
+        if let Some(rest) = bytes.strip_prefix(bom) {
+            let (text, _) = encoding.decode_without_bom_handling(rest);
+            return Cow::Owned(text.into_owned().into_bytes());
+        }
+    }
+    Cow::Borrowed(bytes)
+}
+
+/// The lines of `text`, each with its number (from 1): a line ends at `\n`, `\r\n` or a lone
+/// `\r`, and the line end is not part of it.
+pub fn lines(text: &[u8]) -> impl Iterator<Item = (u64, &[u8])> {
+    let mut rest = text;
+    let mut number = 0u64;
+    std::iter::from_fn(move || {
+        if rest.is_empty() {
+            return None;
+        }
+        number += 1;
+        let end = rest
+            .iter()
+            .position(|&b| b == b'\n' || b == b'\r')
+            .unwrap_or(rest.len());
+        let line = &rest[..end];
+        let skip = match rest.get(end..end + 2) {
+            Some(b"\r\n") => 2,
+            _ if end < rest.len() => 1,
+            _ => 0,
+        };
+        rest = &rest[end + skip..];
+        Some((number, line))
+    })
+}
+
+/// Why a line's fields cannot be read.
+type FieldError = String;
+
+/// The fields of one line separated by `delimiter`. A field may be quoted (`"0.5, 0.5, 0.5"`,
+/// `""` for a quote inside); a quote must close on its line (a row is one line: no answer
+/// spans lines), and nothing but spaces may follow a closing quote (`"s2"x` is refused, not read
+/// as `s2x`). A quote inside an unquoted field is kept as written. Empty fields after the third
+/// are dropped (a spreadsheet writes its empty columns as trailing separators).
+pub fn fields(line: &[u8], delimiter: u8) -> Result<Vec<Vec<u8>>, FieldError> {
+    let mut out: Vec<Vec<u8>> = Vec::new();
+    let mut i = 0;
+    loop {
+        let blank = |b: u8| b == b' ' || (b == b'\t' && delimiter != b'\t');
+        let mut j = i;
+        while j < line.len() && blank(line[j]) {
+            j += 1;
+        }
+        let mut field = Vec::new();
+        if line.get(j) == Some(&b'"') {
+            let n = out.len() + 1;
+            let mut k = j + 1;
+            loop {
+                match line.get(k) {
+                    None => {
+                        return Err(format!(
+                            "field {n} opens a quote \" that is not closed on its line (a row \
+                             is one line)"
+                        ))
+                    }
+                    Some(b'"') if line.get(k + 1) == Some(&b'"') => {
+                        field.push(b'"');
+                        k += 2;
+                    }
+                    Some(b'"') => {
+                        k += 1;
+                        break;
+                    }
+                    Some(&b) => {
+                        field.push(b);
+                        k += 1;
+                    }
+                }
+            }
+            while k < line.len() && blank(line[k]) {
+                k += 1;
+            }
+            match line.get(k) {
+                None => {
+                    out.push(field);
+                    break;
+                }
+                Some(&b) if b == delimiter => {
+                    out.push(field);
+                    i = k + 1;
+                }
+                Some(_) => {
+                    return Err(format!(
+                        "field {n} has text after its closing quote (\"{}\"): quote the whole \
+                         field, with \"\" for a quote inside",
+                        visible(&String::from_utf8_lossy(&line[k..]))
+                            .chars()
+                            .take(20)
+                            .collect::<String>()
+                    ))
+                }
+            }
+        } else {
+            let end = line[i..]
+                .iter()
+                .position(|&b| b == delimiter)
+                .map_or(line.len(), |p| i + p);
+            out.push(line[i..end].to_vec());
+            if end == line.len() {
+                break;
+            }
+            i = end + 1;
+        }
+    }
+    while out.len() > 3
+        && out
+            .last()
+            .is_some_and(|f| f.iter().all(u8::is_ascii_whitespace))
+    {
+        out.pop();
+    }
+    Ok(out)
+}
+
+/// A line with nothing in it: only spaces, or only separators and spaces (a spreadsheet's
+/// empty row). It is not a row.
+fn is_blank(line: &[u8], delimiter: u8) -> bool {
+    line.iter()
+        .all(|&b| b.is_ascii_whitespace() || b == delimiter)
+}
+
+/// The names a header gives each column, in English and Portuguese (compared lowercased).
+const HEADER_NAMES: [&[&str]; 3] = [
+    &["student", "aluno", "estudante"],
+    &["exercise", "exercicio", "exercício", "questao", "questão"],
+    &["answer", "resposta"],
+];
+
+/// The columns a header row names, in its order (`[0, 1, 2]` for student, exercise, answer):
+/// a header is a row of exactly three fields, each naming a different column. A row whose
+/// student is `Student` but whose other fields are data is a row.
+fn header(fields: &[Vec<u8>]) -> Option<[usize; 3]> {
+    if fields.len() != 3 {
+        return None;
+    }
+    let mut order = [usize::MAX; 3];
+    for (at, f) in fields.iter().enumerate() {
+        let name = std::str::from_utf8(f).ok()?.trim().to_lowercase();
+        let column = HEADER_NAMES
+            .iter()
+            .position(|names| names.contains(&name.as_str()))?;
+        if order.contains(&column) {
+            return None;
+        }
+        order[at] = column;
+    }
+    // order[at] is the column at position `at`; the position of each column:
+    let mut position = [0; 3];
+    for (at, &column) in order.iter().enumerate() {
+        position[column] = at;
+    }
+    Some(position)
+}
+
+/// The separator of the submissions: the one under which the first line that holds data is a
+/// header; else the one that splits the most of the first 100 such lines into exactly three
+/// fields (`,` before `;` before a tab on a tie; `,` when none does).
+pub fn delimiter(text: &[u8]) -> u8 {
+    const CANDIDATES: [u8; 3] = [b',', b';', b'\t'];
+    let sample: Vec<&[u8]> = lines(text)
+        .map(|(_, l)| l)
+        .filter(|l| !l.iter().all(u8::is_ascii_whitespace))
+        .take(100)
+        .collect();
+    let Some(first) = sample.first() else {
+        return b',';
+    };
+    for d in CANDIDATES {
+        if fields(first, d).is_ok_and(|f| header(&f).is_some()) {
+            return d;
+        }
+    }
+    let score = |d: u8| {
+        sample
+            .iter()
+            .filter(|l| fields(l, d).is_ok_and(|f| f.len() == 3))
+            .count()
+    };
+    let mut best = (0, b',');
+    for d in CANDIDATES {
+        let s = score(d);
+        if s > best.0 {
+            best = (s, d);
+        }
+    }
+    best.1
+}
+
+/// A cell echoed in the report: lossy UTF-8, trimmed, with NUL and other control characters
+/// (but tabs) shown as U+FFFD.
+fn echo(f: &[u8]) -> String {
+    visible(String::from_utf8_lossy(f).trim())
+}
+
+/// `text` with NUL and other control characters (but tabs) shown as U+FFFD.
+fn visible(text: &str) -> String {
+    text.chars()
+        .map(|c| {
+            if c.is_control() && c != '\t' {
+                '\u{FFFD}'
+            } else {
+                c
+            }
+        })
+        .collect()
+}
+
+/// Grades CSV text (bytes, so that a row of bad UTF-8 is reported rather than fatal). Every
+/// line that holds data is one row of the report, in order, whatever is wrong with it; blank
+/// lines and a header are not rows.
 pub fn grade_bytes(bytes: &[u8], options: &Options) -> Report {
-    let mut reader = csv::ReaderBuilder::new()
-        .has_headers(false)
-        .flexible(true)
-        .from_reader(bytes);
+    let text = decode(bytes);
+    let d = options.delimiter.unwrap_or_else(|| delimiter(&text));
     let mut cache = Cache {
         options,
+        folder: std::fs::canonicalize(&options.exercises).ok(),
         solved: BTreeMap::new(),
     };
     let mut rows = Vec::new();
+    let mut order = [0, 1, 2];
     let mut first = true;
-    let mut record = csv::ByteRecord::new();
-    loop {
-        let line = reader.position().line();
-        let byte = reader.position().byte();
-        let result = reader.read_byte_record(&mut record);
+    for (line, content) in lines(&text) {
+        if is_blank(content, d) {
+            continue;
+        }
+        let parsed = fields(content, d);
+        if std::mem::take(&mut first) {
+            if let Some(o) = parsed.as_ref().ok().and_then(|f| header(f)) {
+                order = o;
+                continue;
+            }
+        }
         let mut row = RowOut {
             row: rows.len() + 1,
             line,
@@ -206,32 +507,18 @@ pub fn grade_bytes(bytes: &[u8], options: &Options) -> Report {
             diagnosis: Vec::new(),
             reason: None,
         };
-        match result {
-            Ok(false) => break,
-            Ok(true) => {
-                row.line = record.position().map_or(line, |p| p.line());
-                let fields: Vec<&[u8]> = record.iter().collect();
-                let is_header = first
-                    && fields.first().is_some_and(|f| {
-                        String::from_utf8_lossy(f)
-                            .trim()
-                            .eq_ignore_ascii_case("student")
-                    });
-                first = false;
-                if is_header {
-                    continue;
-                }
-                grade_row(&mut row, &fields, options, &mut cache);
+        match parsed {
+            Ok(f) => {
+                let by_column: Vec<&[u8]> = if f.len() == 3 {
+                    order.iter().map(|&at| f[at].as_slice()).collect()
+                } else {
+                    f.iter().map(Vec::as_slice).collect()
+                };
+                grade_row(&mut row, &by_column, d, options, &mut cache);
             }
             Err(e) => {
-                // The reader goes on after a bad record; one that made no progress would loop.
+                row.student = echo(content.split(|&b| b == d).next().unwrap_or_default());
                 row.reason = Some(format!("the row cannot be read as CSV: {e}"));
-                let stuck = reader.position().byte() == byte;
-                rows.push(row);
-                if stuck {
-                    break;
-                }
-                continue;
             }
         }
         rows.push(row);
@@ -244,18 +531,43 @@ pub fn grade_bytes(bytes: &[u8], options: &Options) -> Report {
     }
 }
 
-fn grade_row(row: &mut RowOut, fields: &[&[u8]], options: &Options, cache: &mut Cache) {
-    let text = |f: &[u8]| String::from_utf8_lossy(f).trim().to_owned();
-    row.student = fields.first().map_or_else(String::new, |f| text(f));
-    row.exercise = fields.get(1).map_or_else(String::new, |f| text(f));
-    row.answer = fields.get(2).map_or_else(String::new, |f| text(f));
+fn grade_row(
+    row: &mut RowOut,
+    fields: &[&[u8]],
+    delimiter: u8,
+    options: &Options,
+    cache: &mut Cache,
+) {
+    row.student = fields.first().map_or_else(String::new, |f| echo(f));
+    row.exercise = fields.get(1).map_or_else(String::new, |f| echo(f));
+    row.answer = fields.get(2).map_or_else(String::new, |f| echo(f));
     const COLUMNS: [&str; 3] = ["student", "exercise", "answer"];
     let invalid = |row: &mut RowOut, reason: String| row.reason = Some(reason);
     if fields.len() != 3 {
-        let hint = if fields.len() > 3 {
-            "; an answer written with commas must be quoted: \"0.52, 0.03, 0\""
-        } else {
-            ""
+        let name = |d: u8| match d {
+            b'\t' => "a tab".to_owned(),
+            d => format!("'{}'", d as char),
+        };
+        let other = [b',', b';', b'\t']
+            .into_iter()
+            .find(|&o| o != delimiter && fields.iter().any(|f| f.contains(&o)));
+        let hint = match other {
+            Some(o) if fields.len() < 3 => format!(
+                "; the fields are read as separated by {}, and this row has {}: give \
+                 --delimiter {}",
+                name(delimiter),
+                name(o),
+                if o == b'\t' {
+                    "tab".to_owned()
+                } else {
+                    (o as char).to_string()
+                }
+            ),
+            _ if fields.len() > 3 => format!(
+                "; an answer written with {} must be quoted: \"0.52, 0.03, 0\"",
+                name(delimiter)
+            ),
+            _ => String::new(),
         };
         return invalid(
             row,
@@ -269,6 +581,15 @@ fn grade_row(row: &mut RowOut, fields: &[&[u8]], options: &Options, cache: &mut 
     for (name, f) in COLUMNS.iter().zip(fields) {
         if std::str::from_utf8(f).is_err() {
             return invalid(row, format!("the {name} field is not valid UTF-8"));
+        }
+        if f.contains(&0) {
+            return invalid(
+                row,
+                format!(
+                    "the {name} field holds a NUL byte (shown as U+FFFD): is the file UTF-16 \
+                     without a byte order mark? Save it as UTF-8 (CSV UTF-8 in a spreadsheet)"
+                ),
+            );
         }
     }
     let empty = [&row.student, &row.exercise, &row.answer]
@@ -320,9 +641,10 @@ struct Tally<'a> {
 fn summarise(rows: &[RowOut]) -> Vec<SummaryOut> {
     let mut by: BTreeMap<&str, Tally> = BTreeMap::new();
     for r in rows {
-        let Tally { summary, slips } = by.entry(&r.exercise).or_insert_with(|| Tally {
+        let key = exercise_key(&r.exercise);
+        let Tally { summary, slips } = by.entry(key).or_insert_with(|| Tally {
             summary: SummaryOut {
-                exercise: r.exercise.clone(),
+                exercise: key.to_owned(),
                 ..SummaryOut::default()
             },
             slips: BTreeMap::new(),
@@ -364,6 +686,18 @@ fn codes(slips: &[Slip]) -> String {
 fn number(x: f64) -> String {
     // The shortest text that reads back as the same f64: exact and deterministic.
     format!("{x}")
+}
+
+/// A cell of text from the submissions as written into a CSV report: one that a spreadsheet
+/// would take as a formula (starting with `=`, `+`, `-`, `@`, a tab or a carriage return) gets a
+/// leading `'`, which spreadsheets show as text (OWASP's advice against CSV injection). So an
+/// answer `-0.3 0 0` is written `'-0.3 0 0`; the JSON report keeps every cell as written.
+pub fn safe_cell(text: &str) -> String {
+    if text.starts_with(['=', '+', '-', '@', '\t', '\r']) {
+        format!("'{text}")
+    } else {
+        text.to_owned()
+    }
 }
 
 /// The per-row report as CSV (a header, then one line per input row, in input order).
@@ -413,9 +747,9 @@ pub fn rows_csv(report: &Report) -> Vec<u8> {
         w.write_record([
             r.row.to_string(),
             r.line.to_string(),
-            r.student.clone(),
-            r.exercise.clone(),
-            r.answer.clone(),
+            safe_cell(&r.student),
+            safe_cell(&r.exercise),
+            safe_cell(&r.answer),
             r.verdict.to_owned(),
             r.accepted.to_string(),
             r.scale.map_or(String::new(), |s| s.to_string()),
@@ -450,7 +784,7 @@ pub(crate) fn summary_csv(report: &Report) -> Vec<u8> {
             .collect::<Vec<_>>()
             .join(";");
         w.write_record([
-            s.exercise.clone(),
+            safe_cell(&s.exercise),
             s.rows.to_string(),
             s.right.to_string(),
             s.reading.to_string(),

@@ -15,7 +15,7 @@
 //! - `wrong` (exit 1): anything else, with the slips whose colour it matches, and the other
 //!   reading it matches, if any (4.2's "normal reversed" is |cos θ|, a slip, not an intent).
 
-pub(crate) mod answer;
+pub mod answer;
 pub mod grade;
 pub(crate) mod messages;
 pub mod report;

@@ -6,7 +6,10 @@ use std::path::PathBuf;
 
 use clap::{Args, Parser, Subcommand, ValueEnum};
 
-use super::parse::{parse_fraction, parse_pixel, parse_size};
+use super::parse::{
+    parse_delimiter, parse_fraction, parse_level, parse_pixel, parse_runs, parse_samples,
+    parse_size, parse_threads, parse_tolerance,
+};
 use crate::check;
 use crate::core::Precision;
 use crate::generate;
@@ -52,34 +55,27 @@ pub(crate) struct TradeoffArgs {
     /// Precisions to sweep.
     #[arg(long, value_enum, value_delimiter = ',', default_value = "f32,f64")]
     pub(crate) precisions: Vec<Precision>,
-    /// Maximum levels to sweep.
-    #[arg(
-        long,
-        value_delimiter = ',',
-        value_name = "N,...",
-        default_value = "1,2,3,5,10"
-    )]
+    /// Maximum levels to sweep, each 1 to 1000.
+    #[arg(long, value_delimiter = ',', value_name = "N,...", default_value = "1,2,3,5,10",
+          value_parser = parse_level)]
     pub(crate) levels: Vec<u32>,
     /// Minimum weights to sweep (decimals or fractions such as 1/255).
     #[arg(long, value_delimiter = ',', value_name = "W,...", value_parser = parse_fraction,
           default_value = "0,1/255,0.1")]
     pub(crate) min_weights: Vec<f64>,
-    /// Samples per pixel to sweep.
-    #[arg(
-        long,
-        value_delimiter = ',',
-        value_name = "N,...",
-        default_value = "1,4,16"
-    )]
+    /// Samples per pixel to sweep, each 1 to 4096.
+    #[arg(long, value_delimiter = ',', value_name = "N,...", default_value = "1,4,16",
+          value_parser = parse_samples)]
     pub(crate) samples: Vec<u32>,
-    /// Renders per setting; its time is their median.
-    #[arg(long, value_name = "N", default_value_t = 3)]
+    /// Renders per setting, 1 to 1000; its time is their median.
+    #[arg(long, value_name = "N", default_value_t = 3,
+          value_parser = parse_runs)]
     pub(crate) runs: u32,
-    /// The reference's maximum level (it is f64 with minimum weight 0).
-    #[arg(long, value_name = "N", default_value_t = 64)]
+    /// The reference's maximum level, 1 to 1000 (it is f64 with minimum weight 0).
+    #[arg(long, value_name = "N", default_value_t = 64, value_parser = parse_level)]
     pub(crate) reference_level: u32,
-    /// The reference's samples per pixel.
-    #[arg(long, value_name = "N", default_value_t = 64)]
+    /// The reference's samples per pixel, 1 to 4096.
+    #[arg(long, value_name = "N", default_value_t = 64, value_parser = parse_samples)]
     pub(crate) reference_samples: u32,
     /// The error budget: which setting is the fastest with its error at most this?
     #[arg(long, value_name = "E", value_parser = parse_fraction, default_value = "1/255")]
@@ -90,8 +86,8 @@ pub(crate) struct TradeoffArgs {
     /// Render at this size instead of the camera's (quicker sweeps).
     #[arg(long, value_name = "WxH", value_parser = parse_size)]
     pub(crate) size: Option<(u32, u32)>,
-    /// Worker threads (default: one per core).
-    #[arg(long, value_name = "N")]
+    /// Worker threads, 1 to 1024 (default: one per core).
+    #[arg(long, value_name = "N", value_parser = parse_threads)]
     pub(crate) threads: Option<usize>,
     /// Format of the table.
     #[arg(long, value_enum, default_value_t = TradeoffFormat::Text)]
@@ -127,14 +123,14 @@ pub(crate) struct ExportPovArgs {
 /// The tracer's settings, each over the scene's `render` (or its default).
 #[derive(Debug, Args)]
 pub(crate) struct TraceSettings {
-    /// The maximum recursion level (primary rays are level 1) [scene's, or 5].
-    #[arg(long, value_name = "N")]
+    /// The maximum recursion level, 1 to 1000 (primary rays are level 1) [scene's, or 5].
+    #[arg(long, value_name = "N", value_parser = parse_level)]
     pub(crate) max_level: Option<u32>,
-    /// The minimum weight of a reflection ray [scene's, or 1/255].
-    #[arg(long, value_name = "W")]
+    /// The minimum weight of a reflection ray, a number ≥ 0 or a fraction [scene's, or 1/255].
+    #[arg(long, value_name = "W", value_parser = parse_fraction)]
     pub(crate) min_weight: Option<f64>,
     /// Samples per pixel, 1 to 4096, stratified and deterministic [scene's, or 1].
-    #[arg(long, value_name = "N")]
+    #[arg(long, value_name = "N", value_parser = parse_samples)]
     pub(crate) samples: Option<u32>,
     /// Shadow rays on or off [scene's, or on].
     #[arg(long, value_enum, value_name = "ON|OFF")]
@@ -162,8 +158,8 @@ pub(crate) struct RenderArgs {
     /// Floating-point precision of the whole calculation.
     #[arg(long, value_enum, default_value_t = Precision::F64)]
     pub(crate) precision: Precision,
-    /// Worker threads (default: one per core). The image is the same for any number.
-    #[arg(long, value_name = "N")]
+    /// Worker threads, 1 to 1024 (default: one per core). The image is the same for any number.
+    #[arg(long, value_name = "N", value_parser = parse_threads)]
     pub(crate) threads: Option<usize>,
     /// Explain pixel X,Y (from the top-left corner, 0-based) step by step instead of writing
     /// the image: its rays, each hit solved as `phong solve` solves a ray problem.
@@ -198,7 +194,7 @@ pub(crate) struct CheckArgs {
     pub(crate) scale: check::Scale,
     /// The largest difference accepted per channel, on the answer's scale [default: the key's
     /// own, else 0.005 on the 0–1 scale, 1 on the 255 scale].
-    #[arg(long, value_name = "T", allow_hyphen_values = true)]
+    #[arg(long, value_name = "T", allow_hyphen_values = true, value_parser = parse_tolerance)]
     pub(crate) tolerance: Option<f64>,
     /// Accept only the problem as written, not its likely intended reading.
     #[arg(long)]
@@ -229,10 +225,16 @@ pub(crate) struct CheckArgs {
 
 #[derive(Debug, Args)]
 pub(crate) struct GradeArgs {
-    /// The submissions: a CSV file with the columns student, exercise, answer (a first row
-    /// starting with "student" is a header).
+    /// The submissions: a CSV file (or - for standard input) with the columns student,
+    /// exercise, answer, separated by commas, semicolons or tabs; a first row that names the
+    /// three columns (student|aluno|estudante, exercise|exercicio|questao, answer|resposta) is a
+    /// header.
     #[arg(value_name = "SUBMISSIONS")]
     pub(crate) submissions: PathBuf,
+    /// The separator of the submissions' fields: `,`, `;` or `tab` [default: detected from the
+    /// first rows].
+    #[arg(long, value_name = "SEP", value_parser = parse_delimiter)]
+    pub(crate) delimiter: Option<u8>,
     /// The folder of exercise files: exercise "4.2" is DIR/4.2.json.
     #[arg(long, value_name = "DIR")]
     pub(crate) exercises: PathBuf,
@@ -244,7 +246,7 @@ pub(crate) struct GradeArgs {
     pub(crate) scale: check::Scale,
     /// The largest difference accepted per channel [default: each exercise key's own, else
     /// 0.005 on the 0–1 scale, 1 on the 255 scale].
-    #[arg(long, value_name = "T", allow_hyphen_values = true)]
+    #[arg(long, value_name = "T", allow_hyphen_values = true, value_parser = parse_tolerance)]
     pub(crate) tolerance: Option<f64>,
     /// Accept only the problem as written, not its likely intended reading.
     #[arg(long)]
@@ -344,5 +346,88 @@ mod tests {
     #[test]
     fn the_command_line_definition_is_consistent() {
         Cli::command().debug_assert();
+    }
+
+    #[test]
+    fn numeric_flags_are_parsed_or_refused_never_a_panic() {
+        // Moved from tests/fuzz.rs: the argument types are the crate's own (the binary's edge).
+        use clap::Parser;
+        use proptest::prelude::*;
+        use proptest::sample::select;
+        use proptest::test_runner::{Config, RngSeed, TestRunner};
+        let value = prop_oneof![
+            Just("0".to_owned()),
+            Just("1".to_owned()),
+            Just("4096".to_owned()),
+            Just("4097".to_owned()),
+            Just("1000".to_owned()),
+            Just("1001".to_owned()),
+            Just("4294967295".to_owned()),
+            Just("4294967296".to_owned()),
+            Just("18446744073709551616".to_owned()),
+            Just("-1".to_owned()),
+            Just("1e400".to_owned()),
+            Just("1/255".to_owned()),
+            Just("nan".to_owned()),
+            Just("\u{2212}1".to_owned()),
+            Just("64x48".to_owned()),
+            Just("16384x16384".to_owned()),
+            "[0-9x,./e\\-]{0,12}",
+        ];
+        let flag = select(vec![
+            ("render", "--max-level"),
+            ("render", "--samples"),
+            ("render", "--threads"),
+            ("render", "--min-weight"),
+            ("render", "--explain-pixel"),
+            ("tradeoff", "--runs"),
+            ("tradeoff", "--levels"),
+            ("tradeoff", "--samples"),
+            ("tradeoff", "--reference-level"),
+            ("tradeoff", "--reference-samples"),
+            ("tradeoff", "--threads"),
+            ("tradeoff", "--size"),
+            ("tradeoff", "--budget"),
+            ("tradeoff", "--min-weights"),
+            ("check", "--tolerance"),
+            ("grade", "--tolerance"),
+            ("new", "--count"),
+        ]);
+        TestRunner::new(Config {
+            cases: 400,
+            rng_seed: RngSeed::Fixed(43),
+            failure_persistence: None,
+            ..Config::default()
+        })
+        .run(&(flag, value), |((command, flag), value)| {
+            let mut args = vec!["phong", command, "x.json"];
+            match command {
+                "render" => args.extend(["-o", "x.png"]),
+                "grade" => args.extend(["--exercises", "."]),
+                "new" => args = vec!["phong", "new", "--kind", "point"],
+                _ => {}
+            }
+            args.push(flag);
+            args.push(&value);
+            if let Ok(Cli { command, .. }) = Cli::try_parse_from(&args) {
+                // What clap accepts is within the documented ranges.
+                if let Command::Render(r) = &command {
+                    prop_assert!(r.settings.max_level.is_none_or(|l| (1..=1000).contains(&l)));
+                    prop_assert!(r.settings.samples.is_none_or(|n| (1..=4096).contains(&n)));
+                    prop_assert!(r.threads.is_none_or(|n| (1..=1024).contains(&n)));
+                    prop_assert!(r.settings.min_weight.is_none_or(f64::is_finite));
+                }
+                if let Command::Tradeoff(t) = &command {
+                    prop_assert!((1..=1000).contains(&t.runs));
+                    prop_assert!(t.levels.iter().all(|l| (1..=1000).contains(l)));
+                    prop_assert!(t.budget.is_finite());
+                }
+                if let Command::Check(c) = &command {
+                    prop_assert!(c.tolerance.is_none_or(f64::is_finite));
+                }
+            }
+            Ok(())
+        })
+        .unwrap_or_else(|e| panic!("{e}"));
     }
 }

@@ -87,9 +87,10 @@ impl CliError {
     }
 }
 
-/// Prints an error on standard error as `error: …`; every error of `phong` is printed here.
+/// Prints an error on standard error as `error: …`; every error of `phong` is printed here (a
+/// closed standard error is ignored: [`super::output::say`]).
 pub(crate) fn print(error: &dyn Display) {
-    eprintln!("error: {error}");
+    super::output::say(&format_args!("error: {error}"));
 }
 
 /// Prints a warning (a likely mistake that is not an error) on standard error.

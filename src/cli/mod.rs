@@ -22,6 +22,7 @@ use args::Command;
 
 /// The program: parse the arguments and run.
 pub fn main() -> ExitCode {
+    output::guard_signals();
     run(&Cli::parse()).into()
 }
 

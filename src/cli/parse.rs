@@ -8,12 +8,96 @@ use crate::core::Precision;
 
 /// A number ≥ 0 written as a decimal or a fraction (1/255).
 pub(super) fn parse_fraction(s: &str) -> Result<f64, String> {
+    if let Some(hint) = crate::check::answer::not_a_number_hint(s.trim()) {
+        return Err(format!(
+            "\"{}\" {hint}. Fix: write a decimal (0.05) or a fraction (1/255)",
+            crate::check::answer::shorten(s, 40)
+        ));
+    }
     match crate::check::answer::number(s) {
         Some(x) if x >= 0.0 => Ok(x),
         _ => Err(format!(
-            "{s:?} is not a number ≥ 0; write a decimal (0.05) or a fraction (1/255)"
+            "{:?} is not a number ≥ 0. Fix: write a decimal (0.05) or a fraction (1/255)",
+            crate::check::answer::shorten(s, 40)
         )),
     }
+}
+
+/// A tolerance: a number ≥ 0 (a decimal, or a fraction 1/255), finite; a number beyond the
+/// range of f64 (`1e400`) is said to be out of range, not infinite.
+pub(super) fn parse_tolerance(s: &str) -> Result<f64, String> {
+    if let Some(hint) = crate::check::answer::not_a_number_hint(s.trim()) {
+        return Err(format!(
+            "\"{}\" {hint}. Fix: give a number ≥ 0 (e.g. 0.005 on the 0–1 scale)",
+            crate::check::answer::shorten(s, 40)
+        ));
+    }
+    match crate::check::answer::number(s) {
+        Some(x) if x >= 0.0 => Ok(x),
+        _ => Err(format!(
+            "\"{}\" is not a tolerance. Fix: give the largest difference accepted per channel, \
+             a number ≥ 0 (e.g. 0.005 on the 0–1 scale, 1 on the 255 scale)",
+            crate::check::answer::shorten(s, 40)
+        )),
+    }
+}
+
+/// `--delimiter`: `,`, `;`, or a tab (`tab`, `\t` or the character itself).
+pub(super) fn parse_delimiter(s: &str) -> Result<u8, String> {
+    match s {
+        "," => Ok(b','),
+        ";" => Ok(b';'),
+        "tab" | "\\t" | "\t" => Ok(b'\t'),
+        _ => Err(format!("\"{s}\" is not a separator: give , or ; or tab")),
+    }
+}
+
+/// A whole number from `lo` to `hi`, or the error that says so with the range and the fix
+/// (`4294967296 is outside 1 to 4096`: the text as typed, not clap's type's range).
+fn whole(s: &str, lo: u64, hi: u64, what: &str) -> Result<u64, String> {
+    let t = s.trim();
+    let fix = format!("Fix: give {what} from {lo} to {hi}");
+    if t.is_empty() || !t.bytes().all(|b| b.is_ascii_digit()) {
+        let hint = crate::check::answer::not_a_number_hint(t).unwrap_or("is not a whole number");
+        return Err(format!(
+            "\"{}\" {hint}. {fix}",
+            crate::check::answer::shorten(s, 40)
+        ));
+    }
+    match t.parse::<u64>() {
+        Ok(n) if (lo..=hi).contains(&n) => Ok(n),
+        _ => Err(format!(
+            "{} is outside {lo} to {hi}. {fix}",
+            crate::check::answer::shorten(t, 40)
+        )),
+    }
+}
+
+/// A maximum level: 1 to [`crate::problem::model::MAX_LEVEL`].
+pub(super) fn parse_level(s: &str) -> Result<u32, String> {
+    let max = crate::problem::model::MAX_LEVEL;
+    whole(s, 1, max.into(), "a maximum level (1 = primary rays only)").map(|n| n as u32)
+}
+
+/// Samples per pixel: 1 to [`crate::problem::model::MAX_SAMPLES`].
+pub(super) fn parse_samples(s: &str) -> Result<u32, String> {
+    let max = crate::problem::model::MAX_SAMPLES;
+    whole(s, 1, max.into(), "samples per pixel").map(|n| n as u32)
+}
+
+/// Renders per setting: 1 to [`crate::tradeoff::MAX_RUNS`].
+pub(super) fn parse_runs(s: &str) -> Result<u32, String> {
+    let max = crate::tradeoff::MAX_RUNS;
+    whole(s, 1, max.into(), "the renders per setting").map(|n| n as u32)
+}
+
+/// The most worker threads: 1024, more than any machine the course runs on has cores (each
+/// thread reserves its stack).
+pub(crate) const MAX_THREADS: u64 = 1024;
+
+/// Worker threads: 1 to [`MAX_THREADS`].
+pub(super) fn parse_threads(s: &str) -> Result<usize, String> {
+    whole(s, 1, MAX_THREADS, "worker threads").map(|n| n as usize)
 }
 
 /// WxH, each 1 to the largest image side.

@@ -5,8 +5,8 @@ use std::path::PathBuf;
 /// Something wrong with a problem file. Every variant maps to exit code 2.
 #[derive(Debug, thiserror::Error)]
 pub enum ProblemError {
-    /// The file cannot be read (it does not exist, or is not readable).
-    #[error("{path}: cannot read the file: {source}. Fix: check the path, and that the file exists and is readable")]
+    /// The file cannot be read (it does not exist, is not readable, or is too large).
+    #[error("{path}: cannot read the file: {source}. Fix: {}", super::read_fix(.source))]
     Read {
         /// The file.
         path: PathBuf,

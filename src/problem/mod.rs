@@ -26,12 +26,89 @@ pub use warnings::{Warning, WarningKind};
 use crate::core::Real;
 use format::{LightSpec, LightType, SurfaceSpec, SurfaceType};
 
+/// The largest problem file read: 64 MiB (a scene of a million spheres is about 100 MB; a
+/// chapter's exercise is 1 kB).
+pub const MAX_PROBLEM_BYTES: u64 = 64 << 20;
+
+/// A file over the size phong reads for its kind, the error inside an [`std::io::Error`].
+#[derive(Debug, thiserror::Error)]
+#[error("it is larger than {} MiB, the most phong reads for {what}", .limit >> 20)]
+pub struct TooLarge {
+    /// The limit, in bytes.
+    pub limit: u64,
+    /// What the file is ("a problem file").
+    pub what: &'static str,
+}
+
+/// An input of more items than phong takes (`rows` of a submissions file), the error inside an
+/// [`std::io::Error`].
+#[derive(Debug, thiserror::Error)]
+#[error("it has more than {limit} {what}, the most phong takes")]
+pub struct TooMany {
+    /// The limit.
+    pub limit: u64,
+    /// What is counted ("rows").
+    pub what: &'static str,
+}
+
+/// The fix for an input that cannot be read: a smaller file when it is too large, else the
+/// path.
+pub fn read_fix(e: &std::io::Error) -> &'static str {
+    if e.get_ref()
+        .is_some_and(|inner| inner.is::<TooLarge>() || inner.is::<TooMany>())
+    {
+        "give a smaller file (the limits are in README, \"Limits and safety\")"
+    } else {
+        "check the path, and that the file exists and is readable"
+    }
+}
+
+/// The bytes of the file at `path` (standard input for `-`), refusing a file of more than
+/// `limit` bytes with [`TooLarge`] (`/dev/zero` given as a file ends there, not out of memory).
+pub fn read_limited(path: &Path, limit: u64, what: &'static str) -> std::io::Result<Vec<u8>> {
+    use std::io::Read;
+    let mut bytes = Vec::new();
+    if path.as_os_str() == "-" {
+        std::io::stdin()
+            .lock()
+            .take(limit + 1)
+            .read_to_end(&mut bytes)?;
+    } else {
+        std::fs::File::open(path)?
+            .take(limit + 1)
+            .read_to_end(&mut bytes)?;
+    }
+    if bytes.len() as u64 > limit {
+        return Err(std::io::Error::new(
+            std::io::ErrorKind::InvalidData,
+            TooLarge { limit, what },
+        ));
+    }
+    Ok(bytes)
+}
+
+/// "out of memory: this needs about 2.1 GB" (or MB), for an allocation of `bytes` refused.
+pub fn out_of_memory(bytes: usize) -> String {
+    let b = bytes as f64;
+    if b >= 1e9 {
+        format!("out of memory: this needs about {:.1} GB", b / 1e9)
+    } else {
+        format!(
+            "out of memory: this needs about {:.0} MB",
+            (b / 1e6).max(1.0)
+        )
+    }
+}
+
 /// Reads and parses a problem file (no validation). A leading byte order mark is skipped, as
 /// editors on Windows write one.
+/// A file `-` is standard input.
 pub(crate) fn parse_file(path: &Path) -> Result<ProblemFile, ProblemError> {
-    let bytes = std::fs::read(path).map_err(|source| ProblemError::Read {
-        path: path.to_owned(),
-        source,
+    let bytes = read_limited(path, MAX_PROBLEM_BYTES, "a problem file").map_err(|source| {
+        ProblemError::Read {
+            path: path.to_owned(),
+            source,
+        }
     })?;
     let text =
         String::from_utf8(bytes).map_err(|e| not_utf8(path, e.as_bytes(), e.utf8_error()))?;

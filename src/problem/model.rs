@@ -126,9 +126,19 @@ pub(crate) const DEFAULT_MAX_LEVEL: u32 = 5;
 /// The default minimum weight, 1/255: a ray of lower weight cannot change an 8-bit pixel of a
 /// colour in [0, 1] by a whole step. POV-Ray's `adc_bailout` default is the same.
 pub(crate) const DEFAULT_MIN_WEIGHT: f64 = 1.0 / 255.0;
-/// The largest image side and the most samples per pixel accepted.
+/// The largest image side accepted.
 pub(crate) const MAX_IMAGE_SIDE: u32 = 16384;
+/// The most samples per pixel accepted.
 pub(crate) const MAX_SAMPLES: u32 = 4096;
+/// The largest maximum recursion level: 1000. A path's k-th ray has weight ∏ O_r; past 1000
+/// reflections it cannot change an 8-bit pixel (0.99^1000 ≈ 4e-5 < 1/510) unless its surfaces
+/// reflect more than 99%, while a larger level only lets two facing mirrors trace without end.
+pub(crate) const MAX_LEVEL: u32 = 1000;
+/// The most primary rays (width × height × samples) one render may trace: 2^30, about
+/// 1.07e9 (1920×1080 at 512 samples, or 16384² at 4), an hour or so on a laptop.
+pub(crate) const MAX_PIXEL_SAMPLES: u64 = 1 << 30;
+/// The most lights a problem may have: 100,000 (the chapter's have one to three).
+pub(crate) const MAX_LIGHTS: usize = 100_000;
 
 /// Where a light came from in the file.
 #[derive(Clone, Debug)]

@@ -12,7 +12,8 @@ use super::format::{
 use super::mesh;
 use super::model::{
     AmbientInfo, Camera, GivenVector, LightInfo, NamedMaterial, Problem, ReflectivitySource,
-    RenderSettings, Surface, SurfaceSource, Target, MAX_IMAGE_SIDE, MAX_SAMPLES,
+    RenderSettings, Surface, SurfaceSource, Target, MAX_IMAGE_SIDE, MAX_LEVEL, MAX_LIGHTS,
+    MAX_PIXEL_SAMPLES, MAX_SAMPLES,
 };
 use crate::core::vector::{between, is_unit_length, normalize};
 use crate::core::{Cone, Falloff, Light, LightKind, LightSet, Material, Real, Vector, V3};
@@ -166,6 +167,11 @@ pub fn validate_in<R: Real>(
             }
         };
 
+    let camera = file.camera.as_ref().map(camera::<R>).transpose()?;
+    let render = render_settings::<R>(file.render.as_ref())?;
+    if let Some(c) = &camera {
+        check_work(c.width, c.height, render.samples).map_err(|e| e.at("render.samples"))?;
+    }
     Ok(Problem {
         title: file.title.clone(),
         question: file.question.clone(),
@@ -174,12 +180,12 @@ pub fn validate_in<R: Real>(
         ambient_info,
         viewer,
         target,
-        camera: file.camera.as_ref().map(camera::<R>).transpose()?,
+        camera,
         background: match file.background {
             Some(c) => color::<R>(c, "background", ColorRange::Light)?,
             None => V3::<R>::ZERO,
         },
-        render: render_settings::<R>(file.render.as_ref())?,
+        render,
         warnings: super::warnings::warnings(file),
     })
 }
@@ -297,12 +303,41 @@ impl SettingError {
     }
 }
 
-/// The maximum level must let at least the primary rays through.
+/// The maximum level must let at least the primary rays through, and is at most [`MAX_LEVEL`].
 pub(crate) fn check_max_level(level: u32) -> Result<(), SettingError> {
     if level == 0 {
         return Err(SettingError::new(
             "0 traces nothing: the primary ray already has level 1",
-            "give a maximum level ≥ 1 (1 = primary rays only)",
+            format!("give a maximum level from 1 to {MAX_LEVEL} (1 = primary rays only)"),
+        ));
+    }
+    if level > MAX_LEVEL {
+        return Err(SettingError::new(
+            format!("{level} is outside 1 to {MAX_LEVEL}"),
+            format!(
+                "give a maximum level from 1 to {MAX_LEVEL}: past {MAX_LEVEL} reflections a path \
+                 cannot change an 8-bit pixel unless its surfaces reflect more than 99%"
+            ),
+        ));
+    }
+    Ok(())
+}
+
+/// A render's primary rays, width × height × samples, are at most [`MAX_PIXEL_SAMPLES`].
+pub(crate) fn check_work(width: u32, height: u32, samples: u32) -> Result<(), SettingError> {
+    let work = u64::from(width) * u64::from(height) * u64::from(samples);
+    if work > MAX_PIXEL_SAMPLES {
+        let most = MAX_PIXEL_SAMPLES / (u64::from(width) * u64::from(height)).max(1);
+        return Err(SettingError::new(
+            format!(
+                "{width}×{height} pixels × {samples} samples is {work} primary rays, more than \
+                 the {MAX_PIXEL_SAMPLES} (2^30) a render may trace (hours of work)"
+            ),
+            if most >= 1 {
+                format!("give at most {most} samples per pixel at this size, or a smaller image")
+            } else {
+                "give a smaller image".to_owned()
+            },
         ));
     }
     Ok(())
@@ -340,6 +375,16 @@ fn surfaces<R: Real>(
     let mut materials = MaterialCache::default();
     for (i, s) in file.surfaces.iter().enumerate() {
         surface::<R>(file, base, s, i, needs, &mut materials, &mut out)?;
+        if out.len() > mesh::MAX_TRIANGLES {
+            return Err(Invalid::new(
+                format!("surfaces[{i}]"),
+                format!(
+                    "the scene has more than {} surfaces (a mesh's triangles each count)",
+                    mesh::MAX_TRIANGLES
+                ),
+                "give at most 1,000,000 surfaces and triangles in all",
+            ));
+        }
     }
     Ok(out)
 }
@@ -447,6 +492,16 @@ fn lights<R: Real>(specs: &[LightSpec]) -> Result<Lights<R>, Invalid> {
         ambient: None,
         lights: Vec::new(),
     };
+    if specs.len() > MAX_LIGHTS {
+        return Err(Invalid::new(
+            "lights",
+            format!(
+                "{} lights are more than the {MAX_LIGHTS} a problem may have",
+                specs.len()
+            ),
+            format!("give at most {MAX_LIGHTS} lights"),
+        ));
+    }
     let mut info = Vec::new();
     let mut ambient_info = Vec::new();
     for (i, spec) in specs.iter().enumerate() {
@@ -678,6 +733,29 @@ fn surface<R: Real>(
                     f("file"),
                     format!("{}: {}", path.display(), e.message),
                     e.fix,
+                )
+            })?;
+            if out.len() + triangles.len() > mesh::MAX_TRIANGLES {
+                return Err(Invalid::new(
+                    f("file"),
+                    format!(
+                        "{}: its {} triangles take the scene past {} surfaces",
+                        path.display(),
+                        triangles.len(),
+                        mesh::MAX_TRIANGLES
+                    ),
+                    "give at most 1,000,000 surfaces and triangles in all",
+                ));
+            }
+            out.try_reserve(triangles.len()).map_err(|_| {
+                Invalid::new(
+                    f("file"),
+                    super::out_of_memory(
+                        triangles
+                            .len()
+                            .saturating_mul(std::mem::size_of::<Surface<R>>()),
+                    ),
+                    "give a smaller mesh, or free memory",
                 )
             })?;
             out.extend(triangles.into_iter().enumerate().map(|(k, t)| Surface {

@@ -157,10 +157,13 @@ pub fn surface_kind(kind: &str, lang: Lang) -> &str {
 
 /// "lights[1] (point) \"key\"", or "lights[1] (pontual) \"key\"" in Portuguese.
 pub fn light_name_in<R: Real>(problem: &Problem<R>, file_index: usize, lang: Lang) -> String {
+    // The lights are in file order: a binary search, not a scan (a scan per light made the
+    // report of a problem with many lights quadratic).
     let info = problem
         .light_info
-        .iter()
-        .find(|i| i.file_index == file_index);
+        .binary_search_by_key(&file_index, |i| i.file_index)
+        .ok()
+        .map(|k| &problem.light_info[k]);
     let kind = light_kind(info.map_or("light", |i| i.kind), lang);
     let label = format!("lights[{file_index}] ({kind})");
     match info.and_then(|i| i.name.as_deref()) {

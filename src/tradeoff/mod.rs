@@ -26,7 +26,7 @@ use crate::core::{Precision, Real};
 use crate::problem::{Camera, Problem};
 use crate::tracer::{render_linear, Counts, LinearImage, Scene};
 
-pub use sweep::{ReferenceSettings, Setting, Sweep};
+pub use sweep::{ReferenceSettings, Setting, Sweep, MAX_RUNS, MAX_SWEEP_RAYS};
 
 /// An image's error against the reference, over every channel of every pixel.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize)]

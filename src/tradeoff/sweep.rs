@@ -8,6 +8,13 @@ use crate::core::Precision;
 use crate::problem::validate::{check_max_level, check_min_weight, check_samples};
 use crate::problem::Invalid;
 
+/// The most renders per setting (`--runs`): 1000, a median steady far beyond need.
+pub const MAX_RUNS: u32 = 1000;
+
+/// The most primary rays a whole sweep may trace (the reference, and every setting's samples ×
+/// runs, over the image): 2^34, about 1.7e10, several hours on a laptop.
+pub const MAX_SWEEP_RAYS: u64 = 1 << 34;
+
 /// One setting of the tracer, as swept.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize)]
 pub struct Setting {
@@ -66,11 +73,15 @@ impl Sweep {
             check_samples(n).map_err(|e| e.at("samples"))?;
         }
         check_samples(reference.samples).map_err(|e| e.at("reference_samples"))?;
-        if runs == 0 {
+        if runs == 0 || runs > MAX_RUNS {
             return Err(Invalid::new(
                 "runs",
-                "0 runs measure nothing",
-                "give --runs 1 or more (3 or 5 for a steadier median)",
+                if runs == 0 {
+                    "0 runs measure nothing".to_owned()
+                } else {
+                    format!("{runs} runs are more than {MAX_RUNS}")
+                },
+                format!("give --runs from 1 to {MAX_RUNS} (3 or 5 for a steadier median)"),
             ));
         }
         Ok(Sweep {
@@ -81,6 +92,18 @@ impl Sweep {
             runs,
             reference,
         })
+    }
+
+    /// The primary rays the sweep traces over an image of `pixels`: the reference once, every
+    /// setting `runs` times.
+    pub fn work(&self, pixels: u64) -> u64 {
+        let per_level: u64 = self.samples.iter().map(|&n| u64::from(n)).sum();
+        let settings = (self.precisions.len() * self.levels.len() * self.min_weights.len()) as u64;
+        let per_pixel = settings
+            .saturating_mul(per_level)
+            .saturating_mul(u64::from(self.runs))
+            .saturating_add(u64::from(self.reference.samples));
+        per_pixel.saturating_mul(pixels)
     }
 
     /// Every combination, in the sweep's order.

@@ -9,6 +9,8 @@ use crate::cli::output;
 use crate::problem;
 
 pub(crate) fn run(args: &CheckArgs) -> Result<Exit, CliError> {
+    let inputs: Vec<&std::path::Path> = args.files.iter().map(|p| p.as_path()).collect();
+    output::distinct(&inputs, &[("--output", args.output.as_deref())])?;
     if args.answer.is_some() && args.files.len() > 1 {
         return Err(CliError::Conflict {
             message: format!(

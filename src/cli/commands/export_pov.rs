@@ -9,6 +9,7 @@ use crate::problem::{self, ProblemError};
 
 pub(crate) fn run(args: &ExportPovArgs) -> Result<Exit, CliError> {
     let path = &args.scene;
+    output::distinct(&[path], &[("--output", args.output.as_deref())])?;
     let (_, mut problem) = problem::load::<f64>(path)?;
     problem.render = problem
         .render

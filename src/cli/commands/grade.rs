@@ -21,33 +21,46 @@ pub(crate) fn run(args: &GradeArgs) -> Result<Exit, CliError> {
             fix: "give the folder that holds the exercise files (exercise 4.2 is DIR/4.2.json)",
         });
     }
+    output::distinct(
+        &[&args.submissions],
+        &[
+            ("--output", args.output.as_deref()),
+            ("--summary", args.summary.as_deref()),
+        ],
+    )?;
     let options = check::grade::Options {
         exercises: args.exercises.clone(),
         scale: args.scale,
         tolerance: args.tolerance,
         strict: args.strict,
+        delimiter: args.delimiter,
     };
     let report = check::grade::grade_file(&args.submissions, &options)?;
     let body = match args.format {
         GradeFormat::Csv => check::grade::rows_csv(&report),
         GradeFormat::Json => output::json_pretty(&report).into_bytes(),
     };
+    // The report first, then the summary, then the line on standard error: a message that
+    // cannot be shown never costs the report.
+    let written = output::emit_bytes(args.output.as_deref(), &body);
+    let exit = match &args.summary {
+        None => written.map(|()| Exit::Success)?,
+        // The summary is written even when the report could not be.
+        Some(summary) => {
+            let exit = error::carry_on(written);
+            output::emit_bytes(Some(summary), &check::grade::summary_csv(&report))?;
+            exit
+        }
+    };
     let total =
         |f: fn(&check::grade::SummaryOut) -> usize| report.summary.iter().map(f).sum::<usize>();
-    eprintln!(
+    output::say(&format_args!(
         "graded {} rows: {} right, {} by the likely intended reading, {} wrong, {} invalid",
         report.rows.len(),
         total(|s| s.right),
         total(|s| s.reading),
         total(|s| s.wrong),
         total(|s| s.invalid)
-    );
-    let written = output::emit_bytes(args.output.as_deref(), &body);
-    let Some(summary) = &args.summary else {
-        return written.map(|()| Exit::Success);
-    };
-    // The summary is written even when the report could not be.
-    let exit = error::carry_on(written);
-    output::emit_bytes(Some(summary), &check::grade::summary_csv(&report))?;
+    ));
     Ok(exit)
 }

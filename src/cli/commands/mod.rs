@@ -26,6 +26,18 @@ fn overrides(s: &TraceSettings) -> RenderOverrides {
     }
 }
 
+/// Refuses, with an "out of memory: this needs about N GB" error named by `flag`, work whose
+/// largest allocation (`bytes`) the system cannot give: tried once with `try_reserve`, so that
+/// the allocation that follows would not abort the program.
+fn memory(bytes: usize, flag: &'static str) -> Result<(), CliError> {
+    let mut probe: Vec<u8> = Vec::new();
+    probe.try_reserve_exact(bytes).map_err(|_| CliError::Usage {
+        flag: flag.into(),
+        message: crate::problem::out_of_memory(bytes),
+        fix: "give a smaller image (--size, or the camera's width and height)".into(),
+    })
+}
+
 /// The worker threads: `threads`, or one per core.
 fn thread_pool(threads: Option<usize>) -> Result<rayon::ThreadPool, CliError> {
     let mut b = rayon::ThreadPoolBuilder::new();

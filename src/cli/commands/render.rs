@@ -23,6 +23,7 @@ pub(crate) fn run(args: &RenderArgs) -> Result<Exit, CliError> {
 
 fn render<R: Real>(args: &RenderArgs) -> Result<Exit, CliError> {
     let path = &args.scene;
+    output::distinct(&[path], &[("--output", args.output.as_deref())])?;
     let started = Instant::now();
     let (mut problem, camera) = problem::load_scene::<R>(path)?;
     let loaded = started.elapsed();
@@ -30,6 +31,7 @@ fn render<R: Real>(args: &RenderArgs) -> Result<Exit, CliError> {
         .render
         .with(&super::overrides(&args.settings))
         .map_err(CliError::setting)?;
+    check_work(&problem, &camera)?;
     let image_format = match (&args.output, args.image_format) {
         (_, Some(f)) => Some(f),
         (Some(out), None) => Some(ImageFormat::from_path(out).ok_or_else(|| CliError::Usage {
@@ -49,7 +51,11 @@ fn render<R: Real>(args: &RenderArgs) -> Result<Exit, CliError> {
     }
 
     let out = args.output.as_deref().expect("clap requires --output here");
-    let bar = output::progress_bar(u64::from(camera.height));
+    let primary =
+        u64::from(camera.width) * u64::from(camera.height) * u64::from(problem.render.samples);
+    // A long render says how much work it is (and the bar its time left).
+    let estimate = (primary >= 100_000_000).then(|| format!("{primary:.1e} primary rays"));
+    let bar = output::progress_bar(u64::from(camera.height), estimate.as_deref());
     let tracing = Instant::now();
     let (image, counts) =
         pool.install(|| tracer::render(&problem, &camera, &scene, &|| bar.inc(1)));
@@ -59,7 +65,7 @@ fn render<R: Real>(args: &RenderArgs) -> Result<Exit, CliError> {
     output::write_file(out, &bytes)?;
     if args.stats {
         let secs = traced.as_secs_f64();
-        eprintln!(
+        output::say(&format_args!(
             "{}×{}, {} sample(s)/pixel, {}, {} thread(s): read and validated in {:.3} s, BVH of \
              {} surfaces built in {:.3} s, traced {} rays ({} primary, {} reflection, {} shadow) \
              in {:.3} s: {:.2} Mrays/s",
@@ -77,9 +83,20 @@ fn render<R: Real>(args: &RenderArgs) -> Result<Exit, CliError> {
             counts.shadow,
             secs,
             counts.total() as f64 / secs / 1e6
-        );
+        ));
     }
     Ok(Exit::Success)
+}
+
+/// The render's primary rays within [`crate::problem::model::MAX_PIXEL_SAMPLES`], and its image
+/// (and the rows gathered before it) within memory: refused with exit 2 rather than aborting.
+fn check_work<R: Real>(problem: &Problem<R>, camera: &Camera<R>) -> Result<(), CliError> {
+    crate::problem::validate::check_work(camera.width, camera.height, problem.render.samples)
+        .map_err(|e| CliError::setting(e.at("samples")))?;
+    let bytes = (camera.width as usize)
+        .saturating_mul(camera.height as usize)
+        .saturating_mul(3 * 2);
+    super::memory(bytes, "--output")
 }
 
 /// `--explain-pixel X,Y`: the pixel's rays, each hit solved as `phong solve` solves a ray.

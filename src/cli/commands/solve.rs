@@ -9,6 +9,8 @@ use crate::report;
 use crate::report::file::{error_json, explain_file, solve_json_warned};
 
 pub(crate) fn run(args: &SolveArgs) -> Result<Exit, CliError> {
+    let inputs: Vec<&std::path::Path> = args.files.iter().map(|p| p.as_path()).collect();
+    output::distinct(&inputs, &[("--output", args.output.as_deref())])?;
     if args.fragment && !matches!(args.format, Format::Latex | Format::Html) {
         return Err(CliError::Conflict {
             message: "--fragment applies to --format latex and html only".into(),

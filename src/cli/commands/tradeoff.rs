@@ -12,6 +12,13 @@ use crate::problem::{self, Camera, Problem, ProblemError};
 use crate::tradeoff::{self, report, ReferenceSettings, Scenes, Sweep};
 
 pub(crate) fn run(args: &TradeoffArgs) -> Result<Exit, CliError> {
+    output::distinct(
+        &[&args.scene],
+        &[
+            ("--output", args.output.as_deref()),
+            ("--plot", args.plot.as_deref()),
+        ],
+    )?;
     let sweep = Sweep::new(
         &args.precisions,
         &args.levels,
@@ -42,9 +49,33 @@ pub(crate) fn run(args: &TradeoffArgs) -> Result<Exit, CliError> {
     } else {
         None
     };
+    let (w, h) = (f64_scene.1.width, f64_scene.1.height);
+    let work = sweep.work(u64::from(w) * u64::from(h));
+    if work > tradeoff::MAX_SWEEP_RAYS {
+        return Err(CliError::Usage {
+            flag: "--size".into(),
+            message: format!(
+                "the sweep at {w}×{h} is {work:.2e} primary rays (the reference, and every \
+                 setting's samples × --runs), more than the {:.2e} (2^34) a sweep may trace",
+                tradeoff::MAX_SWEEP_RAYS as f64
+            ),
+            fix: "give a smaller --size, fewer --runs, --samples or --reference-samples".into(),
+        });
+    }
+    for samples in sweep.samples.iter().chain([&sweep.reference.samples]) {
+        crate::problem::validate::check_work(w, h, *samples)
+            .map_err(|e| CliError::setting(e.at("size")))?;
+    }
+    super::memory(
+        (w as usize)
+            .saturating_mul(h as usize)
+            .saturating_mul(3 * 8 * 2),
+        "--size",
+    )?;
     let pool = super::thread_pool(args.threads)?;
     let total = 1 + sweep.settings().len() as u64 * u64::from(sweep.runs);
-    let bar = output::progress_bar(total);
+    let estimate = (work >= 100_000_000).then(|| format!("{work:.1e} primary rays"));
+    let bar = output::progress_bar(total, estimate.as_deref());
     let outcome = pool
         .install(|| tradeoff::measure(Scenes::new(f64_scene, f32_scene), &sweep, &|_| bar.inc(1)));
     bar.finish_and_clear();

@@ -1,0 +1,514 @@
+//! No crash, no clobbered file, every run bounded (issue 12): each test is one of the issue's
+//! reproductions, run through the binary, with the outcome the README's "Limits and safety"
+//! promises: a clear exit-2 error naming the flag or field and the valid range, or the correct
+//! result.
+
+use std::path::{Path, PathBuf};
+use std::process::{Command as Std, Stdio};
+
+use assert_cmd::Command;
+use predicates::prelude::*;
+use serde_json::json;
+use tempfile::TempDir;
+
+fn phong() -> Command {
+    Command::cargo_bin("phong").unwrap()
+}
+
+fn root() -> PathBuf {
+    PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+}
+
+fn exercise(name: &str) -> PathBuf {
+    root().join("exercises").join(name)
+}
+
+/// A small scene: a sphere in front of the camera, 8×6 pixels.
+fn small_scene() -> serde_json::Value {
+    json!({
+        "lights": [{ "type": "ambient", "color": [1, 1, 1] }],
+        "surfaces": [{ "type": "sphere", "center": [0, 0, 0], "radius": 1,
+                       "material": { "ambient": [0.5, 0.5, 0.5] } }],
+        "camera": { "eye": [0, 0, 5], "look_at": [0, 0, 0], "fov": 45, "width": 8, "height": 6 }
+    })
+}
+
+fn write(dir: &TempDir, name: &str, text: &str) -> PathBuf {
+    let p = dir.path().join(name);
+    std::fs::write(&p, text).unwrap();
+    p
+}
+
+fn scene_file(dir: &TempDir, scene: &serde_json::Value) -> PathBuf {
+    write(dir, "scene.json", &scene.to_string())
+}
+
+/// The small scene with a mesh read from `file` as its one surface.
+fn mesh_scene(dir: &TempDir, file: &str) -> PathBuf {
+    let mut s = small_scene();
+    s["surfaces"] = json!([{ "type": "mesh", "file": file,
+                             "material": { "ambient": [0.5, 0.5, 0.5] } }]);
+    scene_file(dir, &s)
+}
+
+/// `phong render SCENE -o DIR/x.png`.
+fn render(dir: &TempDir, scene: &Path) -> Command {
+    let mut cmd = phong();
+    cmd.arg("render")
+        .arg(scene)
+        .arg("-o")
+        .arg(dir.path().join("x.png"));
+    cmd
+}
+
+/// Exit 2 with every one of `says` in the error, and no panic.
+fn refused(cmd: &mut Command, says: &[&str]) -> String {
+    let out = cmd.output().unwrap();
+    let err = String::from_utf8_lossy(&out.stderr).into_owned();
+    assert_eq!(out.status.code(), Some(2), "{err}");
+    assert!(!err.contains("panicked"), "{err}");
+    for s in says {
+        assert!(err.contains(s), "expected {s:?} in: {err}");
+    }
+    err
+}
+
+// ---------------------------------------------------------------- crashes
+
+#[test]
+fn a_closed_standard_error_neither_panics_nor_costs_the_report() {
+    let dir = TempDir::new().unwrap();
+    let subs = write(&dir, "subs.csv", "ana,4.1,0.5 0.7 0.3\n");
+    let report = dir.path().join("r.csv");
+    // The reader of standard error is gone before phong writes to it (`2>&1 | true`).
+    let mut child = Std::new(env!("CARGO_BIN_EXE_phong"))
+        .arg("grade")
+        .arg(&subs)
+        .arg("--exercises")
+        .arg(root().join("exercises"))
+        .arg("-o")
+        .arg(&report)
+        .stdout(Stdio::null())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    drop(child.stderr.take());
+    let status = child.wait().unwrap();
+    assert_eq!(status.code(), Some(0));
+    let text = std::fs::read_to_string(&report).unwrap();
+    assert_eq!(text.lines().count(), 2, "{text}");
+    // An error message to a gone reader: still exit 2, not a panic's 101.
+    let mut child = Std::new(env!("CARGO_BIN_EXE_phong"))
+        .args(["solve", "no-such-file.json"])
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    drop(child.stderr.take());
+    assert_eq!(child.wait().unwrap().code(), Some(2));
+}
+
+#[test]
+fn huge_counts_on_the_command_line_are_refused_with_their_range() {
+    let dir = TempDir::new().unwrap();
+    let scene = scene_file(&dir, &small_scene());
+    refused(
+        phong()
+            .arg("tradeoff")
+            .arg(&scene)
+            .args(["--size", "64x48", "--runs", "4294967295"]),
+        &["--runs", "1 to 1000"],
+    );
+    refused(
+        phong()
+            .arg("tradeoff")
+            .arg(&scene)
+            .args(["--runs", "100000000"]),
+        &["--runs", "1 to 1000"],
+    );
+    refused(
+        phong()
+            .arg("tradeoff")
+            .arg(&scene)
+            .args(["--reference-level", "4294967295"]),
+        &["--reference-level", "1 to 1000"],
+    );
+    refused(
+        phong()
+            .arg("tradeoff")
+            .arg(&scene)
+            .args(["--levels", "1,4294967295"]),
+        &["--levels", "1 to 1000"],
+    );
+    let out = dir.path().join("x.png");
+    for (flag, value, range) in [
+        ("--threads", "100000", "1 to 1024"),
+        ("--max-level", "4294967295", "1 to 1000"),
+        ("--max-level", "1001", "1 to 1000"),
+        ("--samples", "4294967296", "1 to 4096"),
+    ] {
+        refused(
+            phong()
+                .arg("render")
+                .arg(&scene)
+                .arg("-o")
+                .arg(&out)
+                .args([flag, value]),
+            &[flag, range],
+        );
+    }
+    // Explain-pixel on two facing mirrors with no weight limit: bounded by the level's range.
+    refused(
+        phong().arg("render").arg(&scene).args([
+            "--explain-pixel",
+            "4,3",
+            "--max-level",
+            "4294967295",
+            "--min-weight",
+            "0",
+        ]),
+        &["--max-level", "1 to 1000"],
+    );
+    assert!(!out.exists());
+}
+
+#[test]
+fn a_huge_level_in_the_file_is_refused_naming_the_field() {
+    let dir = TempDir::new().unwrap();
+    let mut s = small_scene();
+    s["render"] = json!({ "max_level": 4294967295u32 });
+    let scene = scene_file(&dir, &s);
+    refused(
+        phong()
+            .arg("render")
+            .arg(&scene)
+            .arg("-o")
+            .arg(dir.path().join("x.png")),
+        &["render.max_level", "1 to 1000"],
+    );
+}
+
+#[test]
+fn renders_and_sweeps_beyond_the_work_budget_are_refused_before_any_work() {
+    let dir = TempDir::new().unwrap();
+    let mut s = small_scene();
+    s["camera"]["width"] = json!(16384);
+    s["camera"]["height"] = json!(16384);
+    let big = scene_file(&dir, &s);
+    let out = dir.path().join("x.png");
+    // 16384² at 4096 samples: 1.1e12 primary rays, days of work.
+    refused(
+        phong()
+            .arg("render")
+            .arg(&big)
+            .arg("-o")
+            .arg(&out)
+            .args(["--samples", "4096"]),
+        &["--samples", "primary rays", "at most 4 samples per pixel"],
+    );
+    s["render"] = json!({ "samples": 4096 });
+    let big = write(&dir, "big.json", &s.to_string());
+    refused(
+        phong().arg("render").arg(&big).arg("-o").arg(&out),
+        &["render.samples", "primary rays"],
+    );
+    let small = write(&dir, "small.json", &small_scene().to_string());
+    refused(
+        phong()
+            .arg("tradeoff")
+            .arg(&small)
+            .args(["--size", "16384x16384"]),
+        &["--size", "primary rays"],
+    );
+    assert!(!out.exists());
+}
+
+#[test]
+fn a_problem_or_mesh_file_that_never_ends_is_refused_by_its_size() {
+    refused(
+        phong().args(["solve", "/dev/zero"]),
+        &["/dev/zero", "larger than 64 MiB", "smaller file"],
+    );
+    let dir = TempDir::new().unwrap();
+    let scene = mesh_scene(&dir, "/dev/zero");
+    refused(
+        &mut render(&dir, &scene),
+        &["surfaces[0].file", "larger than 256 MiB"],
+    );
+}
+
+#[test]
+fn too_many_lights_or_triangles_are_refused() {
+    let dir = TempDir::new().unwrap();
+    let lights: Vec<_> = (0..100_001)
+        .map(|_| json!({ "type": "directional", "direction": [0, 0, -1], "color": [0, 0, 0] }))
+        .collect();
+    let p = json!({
+        "lights": lights,
+        "point": { "position": [0, 0, 0], "normal": [0, 0, 1],
+                   "material": { "diffuse": [0.5, 0.5, 0.5] } }
+    });
+    let file = write(&dir, "lights.json", &p.to_string());
+    refused(
+        phong().args(["solve", "--format", "json"]).arg(&file),
+        &["lights", "100000"],
+    );
+    refused(
+        phong().arg("check").arg(&file).args(["--answer", "0 0 0"]),
+        &["lights", "100000"],
+    );
+    // 1,000,001 triangles, from three vertices: refused at the line that passes the limit.
+    let mut obj = String::from("v 0 0 0\nv 1 0 0\nv 0 1 0\n");
+    for _ in 0..1_000_001 {
+        obj.push_str("f 1 2 3\n");
+    }
+    write(&dir, "big.obj", &obj);
+    let scene = mesh_scene(&dir, "big.obj");
+    refused(
+        &mut render(&dir, &scene),
+        &["line 1000004", "more than 1000000 triangles"],
+    );
+}
+
+#[test]
+fn a_submissions_file_of_too_many_rows_is_refused_not_graded_out_of_memory() {
+    let dir = TempDir::new().unwrap();
+    let subs = write(&dir, "subs.csv", &"s,1,1\n".repeat(1_000_001));
+    refused(
+        phong()
+            .arg("grade")
+            .arg(&subs)
+            .arg("--exercises")
+            .arg(root().join("exercises")),
+        &["subs.csv", "more than 1000000 rows", "smaller file"],
+    );
+}
+
+// ---------------------------------------------------------------- messages
+
+#[test]
+fn an_obj_mistake_is_named_by_its_line() {
+    let dir = TempDir::new().unwrap();
+    let scene = mesh_scene(&dir, "m.obj");
+    let render = |obj: &str, says: &[&str]| {
+        write(&dir, "m.obj", obj);
+        refused(&mut render(&dir, &scene), says)
+    };
+    let e = render(
+        "# two vertices\nv 0 0 0\nv 1 0 0\nf 1 2\n",
+        &["line 4", "f 1 2", "has 2 vertices"],
+    );
+    assert!(!e.contains("degenerate"), "{e}");
+    render("v 0 0 0\nv 1 x 0\n", &["line 2", "v 1 x 0"]);
+    render(
+        "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9\n",
+        &["line 4", "vertex 9"],
+    );
+    render(
+        "v 0 0 0\nv 1 0 0\nv 2 0 0\nf 1 2 3\n",
+        &["line 4", "degenerate"],
+    );
+    render("v 0 0 0\nv 1e400 0 0\n", &["line 2", "not finite"]);
+}
+
+#[test]
+fn a_number_beyond_f64_is_said_to_be_out_of_range() {
+    let one = exercise("4.1.json");
+    refused(
+        phong()
+            .arg("check")
+            .arg(&one)
+            .args(["--answer", "1e400 0 0"]),
+        &["1e400", "out of range"],
+    );
+    refused(
+        phong()
+            .arg("check")
+            .arg(&one)
+            .args(["--tolerance", "1e400"]),
+        &["--tolerance", "1e400", "out of range"],
+    );
+    refused(
+        phong()
+            .arg("check")
+            .arg(&one)
+            .args(["--answer", "\u{2212}0.5 0.7 0.3"]),
+        &["Unicode minus"],
+    );
+    refused(
+        phong()
+            .arg("check")
+            .arg(&one)
+            .args(["--answer", "\u{FF10}.5 0.7 0.3"]),
+        &["full-width"],
+    );
+}
+
+#[test]
+fn a_long_answer_is_echoed_shortened() {
+    // 100,001 characters: 25,000 times "0.5 ", then "0".
+    let answer = format!("{}0", "0.5 ".repeat(25_000));
+    let err = refused(
+        phong()
+            .arg("check")
+            .arg(exercise("4.1.json"))
+            .args(["--answer", &answer]),
+        &["100001 characters"],
+    );
+    assert!(err.len() < 2_000, "{} bytes of error", err.len());
+}
+
+// ---------------------------------------------------------------- files
+
+#[test]
+fn an_output_that_is_a_folder_is_said_to_be_one() {
+    let dir = TempDir::new().unwrap();
+    refused(
+        phong().current_dir(dir.path()).args(["schema", "-o", "."]),
+        &["cannot write .", "it is a folder"],
+    );
+}
+
+#[test]
+fn an_output_that_is_an_input_or_another_output_is_refused_and_nothing_is_written() {
+    let dir = TempDir::new().unwrap();
+    let subs = write(&dir, "subs.csv", "ana,4.1,0.5 0.7 0.3\n");
+    refused(
+        phong()
+            .arg("grade")
+            .arg(&subs)
+            .arg("--exercises")
+            .arg(root().join("exercises"))
+            .arg("-o")
+            .arg(&subs),
+        &["--output", "is the input"],
+    );
+    assert_eq!(
+        std::fs::read_to_string(&subs).unwrap(),
+        "ana,4.1,0.5 0.7 0.3\n"
+    );
+    let r = dir.path().join("r.csv");
+    refused(
+        phong()
+            .arg("grade")
+            .arg(&subs)
+            .arg("--exercises")
+            .arg(root().join("exercises"))
+            .arg("-o")
+            .arg(&r)
+            .arg("--summary")
+            .arg(dir.path().join(".").join("r.csv")),
+        &["--output and --summary are the same file"],
+    );
+    assert!(!r.exists());
+    let problem = write(
+        &dir,
+        "p.json",
+        &std::fs::read_to_string(exercise("4.1.json")).unwrap(),
+    );
+    refused(
+        phong().arg("solve").arg(&problem).arg("-o").arg(&problem),
+        &["--output", "is the input"],
+    );
+    assert!(std::fs::read_to_string(&problem)
+        .unwrap()
+        .contains("Exercise 4.1"));
+}
+
+#[cfg(unix)]
+#[test]
+fn a_fifo_is_written_into_not_replaced() {
+    use std::io::Read;
+    use std::os::unix::fs::{FileTypeExt, OpenOptionsExt};
+    let dir = TempDir::new().unwrap();
+    let fifo = dir.path().join("fifo");
+    assert!(Std::new("mkfifo").arg(&fifo).status().unwrap().success());
+    // Opened for reading without waiting for a writer (O_NONBLOCK), so phong's open succeeds.
+    let mut reader = std::fs::OpenOptions::new()
+        .read(true)
+        .custom_flags(0o4000)
+        .open(&fifo)
+        .unwrap();
+    phong()
+        .arg("solve")
+        .arg(exercise("4.1.json"))
+        .args(["--format", "json", "-o"])
+        .arg(&fifo)
+        .assert()
+        .code(0);
+    assert!(std::fs::symlink_metadata(&fifo)
+        .unwrap()
+        .file_type()
+        .is_fifo());
+    let mut got = String::new();
+    reader.read_to_string(&mut got).unwrap();
+    assert!(got.contains("\"format_version\""), "{got}");
+}
+
+#[cfg(unix)]
+#[test]
+fn a_link_stays_a_link_and_its_target_is_written() {
+    let dir = TempDir::new().unwrap();
+    let target = write(&dir, "target.json", "old");
+    let link = dir.path().join("link.json");
+    std::os::unix::fs::symlink("target.json", &link).unwrap();
+    phong().arg("schema").arg("-o").arg(&link).assert().code(0);
+    assert!(std::fs::symlink_metadata(&link)
+        .unwrap()
+        .file_type()
+        .is_symlink());
+    assert!(std::fs::read_to_string(&target)
+        .unwrap()
+        .contains("\"$schema\""));
+    // Nothing left beside it.
+    let left: Vec<_> = std::fs::read_dir(dir.path())
+        .unwrap()
+        .map(|e| e.unwrap().file_name().into_string().unwrap())
+        .filter(|n| n.ends_with(".tmp") || n.starts_with(".tmp"))
+        .collect();
+    assert!(left.is_empty(), "{left:?}");
+}
+
+#[cfg(unix)]
+#[test]
+fn a_new_file_follows_the_umask_and_an_existing_one_keeps_its_mode() {
+    use std::os::unix::fs::PermissionsExt;
+    let dir = TempDir::new().unwrap();
+    let new = dir.path().join("new.json");
+    let status = Std::new("sh")
+        .arg("-c")
+        .arg("umask 077; exec \"$0\" schema -o \"$1\"")
+        .arg(env!("CARGO_BIN_EXE_phong"))
+        .arg(&new)
+        .status()
+        .unwrap();
+    assert!(status.success());
+    let mode = |p: &Path| std::fs::metadata(p).unwrap().permissions().mode() & 0o777;
+    assert_eq!(mode(&new), 0o600);
+    let old = write(&dir, "old.json", "x");
+    std::fs::set_permissions(&old, std::fs::Permissions::from_mode(0o640)).unwrap();
+    phong().arg("schema").arg("-o").arg(&old).assert().code(0);
+    assert_eq!(mode(&old), 0o640);
+}
+
+#[test]
+fn a_dash_reads_standard_input() {
+    let text = std::fs::read_to_string(exercise("4.1.json")).unwrap();
+    phong()
+        .args(["solve", "--format", "json", "-"])
+        .write_stdin(text.clone())
+        .assert()
+        .code(0)
+        .stdout(predicate::str::contains("\"format_version\""));
+    phong()
+        .args(["check", "-", "--answer", "0.5 0.7 0.3"])
+        .write_stdin(text)
+        .assert()
+        .code(0);
+    phong()
+        .args(["grade", "-", "--exercises"])
+        .arg(root().join("exercises"))
+        .write_stdin("ana,4.1,0.5 0.7 0.3\n")
+        .assert()
+        .code(0)
+        .stdout(predicate::str::contains("ana,4.1,0.5 0.7 0.3,right"));
+}
