@@ -10,6 +10,7 @@ use super::parse::{parse_fraction, parse_pixel, parse_size};
 use crate::check;
 use crate::core::Precision;
 use crate::generate;
+use crate::report::document::Contents;
 use crate::report::lang::Lang;
 use crate::tracer::output::ImageFormat;
 
@@ -296,7 +297,24 @@ pub struct SolveArgs {
     /// Floating-point precision of the whole calculation.
     #[arg(long, value_enum, default_value_t = Precision::F64)]
     pub precision: Precision,
-    /// Write the output to this file (atomically) instead of standard output.
+    /// Which document: statement (the student's handout: numbered statements, the data as a
+    /// table), solution (the worked solutions), key (one answer-key table), or all three.
+    #[arg(long, value_enum, default_value_t = Contents::Solution)]
+    pub part: Contents,
+    /// The problem set's course, printed in its header.
+    #[arg(long, value_name = "TEXT")]
+    pub course: Option<String>,
+    /// The problem set's title, printed in its header (and the HTML page's title).
+    #[arg(long, value_name = "TEXT")]
+    pub title: Option<String>,
+    /// The problem set's date, printed in its header as given.
+    #[arg(long, value_name = "TEXT")]
+    pub date: Option<String>,
+    /// The problem set's author, printed in its header.
+    #[arg(long, value_name = "TEXT")]
+    pub author: Option<String>,
+    /// Write the output to this file (atomically) instead of standard output; a folder (an
+    /// existing one, or a path ending in /) gets one file per exercise, named after it.
     #[arg(short, long, value_name = "PATH")]
     pub output: Option<PathBuf>,
 }

@@ -32,6 +32,10 @@ pub struct ProblemFile {
     /// A short title, such as "Exercise 4.2".
     #[serde(default)]
     pub title: Option<String>,
+    /// The title in Portuguese, such as "Exercício 4.2" (used with `--lang pt`; `title` when
+    /// absent).
+    #[serde(default)]
+    pub title_pt: Option<String>,
     /// The question as the exercise words it.
     #[serde(default)]
     pub question: Option<String>,
@@ -224,6 +228,7 @@ kinds! {
     schema Light in light_schema;
     optional {
         name: String,
+        name_pt: String,
     }
     fields {
         // Also the purpose of `color` in a scaled colour and an answer key.
@@ -551,7 +556,7 @@ pub fn schema_json() -> String {
 mod tests {
     use super::*;
 
-    /// The property names of each `type` in a oneOf schema, without `type` and `name`.
+    /// The property names of each `type` in a oneOf schema, without `type`, `name` and `name_pt`.
     fn schema_fields(schema: &serde_json::Value) -> Vec<(String, Vec<String>)> {
         let mut out = Vec::new();
         for variant in schema["oneOf"].as_array().expect("one shape per type") {
@@ -562,7 +567,7 @@ mod tests {
                 .to_owned();
             let mut fields: Vec<String> = props
                 .keys()
-                .filter(|k| *k != "type" && *k != "name")
+                .filter(|k| *k != "type" && *k != "name" && *k != "name_pt")
                 .cloned()
                 .collect();
             fields.sort();

@@ -11,6 +11,8 @@ use crate::geometry::{Ray, Shape};
 #[derive(Clone, Debug)]
 pub struct Problem<R: Real> {
     pub title: Option<String>,
+    /// The title in Portuguese, when the file gives one.
+    pub title_pt: Option<String>,
     pub question: Option<String>,
     /// I_a and the point, directional and spot lights, as the core takes them.
     pub lights: LightSet<R>,
@@ -125,6 +127,8 @@ pub struct LightInfo<R: Real> {
     /// Its index in the file's `lights` array.
     pub file_index: usize,
     pub name: Option<String>,
+    /// The name in Portuguese, when the file gives one.
+    pub name_pt: Option<String>,
     /// "point", "directional" or "spot".
     pub kind: &'static str,
     /// The length of the given direction or axis, when it was not 1 (it was normalised).
@@ -136,6 +140,8 @@ pub struct LightInfo<R: Real> {
 pub struct AmbientInfo<R: Real> {
     pub file_index: usize,
     pub name: Option<String>,
+    /// The name in Portuguese, when the file gives one.
+    pub name_pt: Option<String>,
     pub color: V3<R>,
 }
 

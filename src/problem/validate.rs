@@ -168,6 +168,7 @@ pub fn validate_in<R: Real>(
 
     Ok(Problem {
         title: file.title.clone(),
+        title_pt: file.title_pt.clone(),
         question: file.question.clone(),
         lights,
         light_info,
@@ -466,6 +467,7 @@ fn lights<R: Real>(specs: &[LightSpec]) -> Result<Lights<R>, Invalid> {
                 ambient_info.push(AmbientInfo {
                     file_index: i,
                     name,
+                    name_pt: spec.name_pt.clone(),
                     color: c,
                 });
                 continue;
@@ -514,6 +516,7 @@ fn lights<R: Real>(specs: &[LightSpec]) -> Result<Lights<R>, Invalid> {
         info.push(LightInfo {
             file_index: i,
             name,
+            name_pt: spec.name_pt.clone(),
             kind: spec.kind.name(),
             direction_length,
         });

@@ -2,7 +2,8 @@
 //! its value in `$…$` math (GitHub, GitLab, Obsidian, Jupyter and pandoc render it) and the
 //! chapter's equation number, ready to paste into notes. It lays out an [`Explanation`].
 
-use super::explain::{latex_math, nest, runs, Explanation, Node, Run, Shading, Step};
+use super::document::{exercise_word, Document};
+use super::explain::{latex_math, nest, runs, Explanation, Inline, Node, Run, Shading, Step};
 use super::lang::Lang;
 use super::messages::Phrase;
 
@@ -21,10 +22,10 @@ pub fn escape(s: &str) -> String {
     out
 }
 
-/// A line of a step: words escaped, math in `$…$`.
-fn line(step: &Step, lang: Lang) -> String {
+/// A line's pieces: words escaped, math in `$…$`.
+fn pieces(line: &[Inline]) -> String {
     let mut s = String::new();
-    for run in runs(&step.line) {
+    for run in runs(line) {
         match run {
             Run::Text(t) => s.push_str(&escape(&t)),
             Run::Math(m) => {
@@ -35,7 +36,12 @@ fn line(step: &Step, lang: Lang) -> String {
             Run::Swatch(_) => {}
         }
     }
-    let mut s = s.split_whitespace().collect::<Vec<_>>().join(" ");
+    s.split_whitespace().collect::<Vec<_>>().join(" ")
+}
+
+/// A line of a step: words escaped, math in `$…$`.
+fn line(step: &Step, lang: Lang) -> String {
+    let mut s = pieces(&step.line);
     if let Some(eq) = step.eq {
         s.push_str(&format!(" — *{}*", eq.text(lang)));
     }
@@ -76,10 +82,14 @@ fn shading(out: &mut String, sh: &Shading, lang: Lang) {
 
 /// The Markdown of one explanation.
 pub fn write_explanation(x: &Explanation) -> String {
+    explanation(x, &x.title)
+}
+
+fn explanation(x: &Explanation, heading: &str) -> String {
     let lang = x.lang;
     let mut out = String::new();
-    out.push_str(&format!("## {}\n\n", escape(&x.title)));
-    out.push_str(&format!("*{}, {}*\n\n", escape(&x.file), x.precision));
+    out.push_str(&format!("## {}\n\n", escape(heading)));
+    out.push_str(&format!("*{}*\n\n", escape(&x.source())));
     if let Some(q) = &x.question {
         out.push_str(&format!("> {}\n\n", escape(q)));
     }
@@ -118,6 +128,85 @@ pub fn write_all(xs: &[Explanation]) -> String {
         .map(write_explanation)
         .collect::<Vec<_>>()
         .join("---\n\n")
+}
+
+/// A document: the header, then the statements (each with its data as a table), the solutions
+/// or the answer key (one table), or all three.
+pub fn write_document(doc: &Document) -> String {
+    let lang = doc.lang;
+    let mut out = String::new();
+    let h = doc.header;
+    if !h.is_empty() {
+        out.push_str(&format!("# {}\n\n", escape(&h.document_title(doc))));
+        if let (Some(c), Some(_)) = (&h.course, &h.title) {
+            out.push_str(&format!("**{}**\n\n", escape(c)));
+        }
+        if let Some(b) = h.byline() {
+            out.push_str(&format!("{}\n\n", escape(&b)));
+        }
+    }
+    if doc.contents.statements() {
+        for (i, x) in doc.exercises.iter().enumerate() {
+            out.push_str(&format!("## {}\n\n", escape(&doc.heading(i))));
+            if let Some(q) = &x.question {
+                out.push_str(&format!("{}\n\n", escape(q)));
+            }
+            if !x.data.is_empty() {
+                out.push_str(&format!(
+                    "| {} | {} |\n|---|---|\n",
+                    Phrase::Quantity.get(lang),
+                    Phrase::Value.get(lang)
+                ));
+                for row in &x.data {
+                    out.push_str(&format!(
+                        "| {} | {} |\n",
+                        pieces(&row.what),
+                        pieces(&row.value)
+                    ));
+                }
+                out.push('\n');
+            }
+        }
+    }
+    if doc.contents.solutions() {
+        if doc.contents.statements() {
+            out.push_str("---\n\n");
+        }
+        let bodies: Vec<String> = doc
+            .exercises
+            .iter()
+            .enumerate()
+            .map(|(i, x)| {
+                if doc.numbered() {
+                    explanation(x, &doc.heading(i))
+                } else {
+                    explanation(x, &x.title)
+                }
+            })
+            .collect();
+        out.push_str(&bodies.join("---\n\n"));
+    }
+    if doc.contents.key() {
+        if doc.contents.solutions() {
+            out.push_str("---\n\n");
+        }
+        out.push_str(&format!(
+            "## {}\n\n| {} | {} |\n|---|---|\n",
+            Phrase::AnswerKey.get(lang),
+            exercise_word(lang),
+            Phrase::Answer.get(lang)
+        ));
+        for (i, x) in doc.exercises.iter().enumerate() {
+            let (written, readings) = x.key();
+            let mut cell = pieces(&written);
+            for r in &readings {
+                cell.push_str(&format!("<br>{}", pieces(r)));
+            }
+            out.push_str(&format!("| {} | {} |\n", escape(&doc.heading(i)), cell));
+        }
+        out.push('\n');
+    }
+    out
 }
 
 #[cfg(test)]

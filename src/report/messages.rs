@@ -57,7 +57,6 @@ phrases! {
     Findings => "Findings", "Observações";
     Ray => "Ray", "Raio";
     AsWritten => "Solution (the problem as written)", "Solução (o problema como escrito)";
-    ReadingHeading => "Reading: ", "Leitura: ";
     NothingToShade => "no point to shade: the ray hits nothing",
         "nenhum ponto a iluminar: o raio não atinge nada";
     Given => "Given", "Dados";
@@ -129,6 +128,23 @@ phrases! {
     LAlongN => "L is along N: every plane through N is a plane of incidence; this one is chosen to hold V.",
         "L está na direção de N: todo plano que contém N é um plano de incidência; este foi escolhido para conter V.";
     Swatch => "the colour, clamped to [0, 1]", "a cor, limitada a [0, 1]";
+    // The statement's data and the answer key.
+    AmbientLight => "Ambient light", "Luz ambiente";
+    PointLight => "Point light", "Luz pontual";
+    SpotLight => "Spot light", "Luz spot";
+    DirectionalLight => "Directional light", "Luz direcional";
+    ThePoint => "Point", "Ponto";
+    NormalAt => "Normal at ", "Normal em ";
+    TheViewer => "Viewer", "Observador";
+    Surface => "Surface", "Superfície";
+    Statements => "Statements", "Enunciados";
+    Solutions => "Solutions", "Soluções";
+    AnswerKey => "Answer key", "Gabarito";
+    Quantity => "Given", "Dado";
+    Value => "Value", "Valor";
+    Answer => "Answer (as written)", "Resposta (como escrito)";
+    OtherReadings => "Other readings", "Outras leituras";
+    NoHitAnswer => "no hit: the ray hits nothing", "nenhuma interseção: o raio não atinge nada";
 }
 
 /// The word for a light's kind, as the file names it ("point", "directional", "spot").
@@ -154,34 +170,50 @@ pub fn surface_kind(kind: &str, lang: Lang) -> &str {
 
 /// "lights[1] (point)" for the light at a file index (English, as the JSON has it).
 pub fn light_name<R: Real>(problem: &Problem<R>, file_index: usize) -> String {
-    light_name_in(problem, file_index, Lang::En)
+    light_label(problem, file_index, Lang::En, true)
 }
 
-/// "lights[1] (point) \"key\"", or "lights[1] (pontual) \"key\"" in Portuguese.
+/// "lights[1] (point) “key”", or "lights[1] (pontual) “principal”" in Portuguese (the
+/// light's `name_pt`, when it has one).
 pub fn light_name_in<R: Real>(problem: &Problem<R>, file_index: usize, lang: Lang) -> String {
+    light_label(problem, file_index, lang, false)
+}
+
+/// A light's label; `json` keeps the English name in straight quotes, as the JSON's sentences
+/// have always had it.
+fn light_label<R: Real>(problem: &Problem<R>, file_index: usize, lang: Lang, json: bool) -> String {
     let info = problem
         .light_info
         .iter()
         .find(|i| i.file_index == file_index);
     let kind = light_kind(info.map_or("light", |i| i.kind), lang);
     let label = format!("lights[{file_index}] ({kind})");
-    match info.and_then(|i| i.name.as_deref()) {
-        Some(name) => format!("{label} \"{name}\""),
+    let name = info.and_then(|i| match lang {
+        Lang::Pt => i.name_pt.as_deref().or(i.name.as_deref()),
+        Lang::En => i.name.as_deref(),
+    });
+    match name {
+        Some(name) if json => format!("{label} \"{name}\""),
+        Some(name) => format!("{label} {}", super::explain::quoted(name)),
         None => label,
     }
 }
 
 /// The sentence for a finding, in English (as the JSON has it).
 pub fn finding<R: Real>(problem: &Problem<R>, f: &Finding) -> String {
-    finding_in(problem, f, Lang::En)
+    finding_with(problem, f, Lang::En, true)
 }
 
 /// The sentence for a finding.
 pub fn finding_in<R: Real>(problem: &Problem<R>, f: &Finding, lang: Lang) -> String {
+    finding_with(problem, f, lang, false)
+}
+
+fn finding_with<R: Real>(problem: &Problem<R>, f: &Finding, lang: Lang, json: bool) -> String {
     let p = R::NAME;
     let light = f
         .light
-        .map(|i| light_name_in(problem, i, lang))
+        .map(|i| light_label(problem, i, lang, json))
         .unwrap_or_default();
     match f.data {
         FindingData::HitBehindOrigin { t } => pick(
@@ -620,6 +652,23 @@ pub fn reading_explanation_in(code: ReadingCode, lang: Lang) -> &'static str {
              direção invertida, logo V = −D quando não é dado observador. Este não é o \
              problema como escrito",
         ),
+    }
+}
+
+/// Why a reading is shown, for a problem that gives a viewer or not: the line's hit keeps the
+/// problem's viewer where it gives one, so its V is not −D then.
+pub fn reading_explanation_given(code: ReadingCode, lang: Lang, viewer: bool) -> &'static str {
+    match code {
+        ReadingCode::LineBehindOrigin if viewer => pick(
+            lang,
+            "the hit at t < 0 is behind the ray's origin; it is the hit of the ray with its \
+             direction reversed, shaded for the viewer the problem gives (V from the viewer to \
+             the point). This is not the problem as written",
+            "a interseção em t < 0 está atrás da origem do raio; é a interseção do raio com a \
+             direção invertida, iluminada para o observador dado pelo problema (V do \
+             observador para o ponto). Este não é o problema como escrito",
+        ),
+        _ => reading_explanation_in(code, lang),
     }
 }
 

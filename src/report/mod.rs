@@ -6,6 +6,7 @@
 //! [`formula`].
 
 pub mod diagram;
+pub mod document;
 pub mod explain;
 pub mod file;
 pub mod formula;
