@@ -45,6 +45,19 @@ pub enum Command {
     Tradeoff(TradeoffArgs),
 }
 
+impl Command {
+    /// The language the command's messages (its errors included) are written in: `--lang`
+    /// where the command has it, else English.
+    pub fn lang(&self) -> Lang {
+        match self {
+            Command::Solve(a) => a.lang,
+            Command::Render(a) => a.lang,
+            Command::Check(a) => a.lang,
+            _ => Lang::En,
+        }
+    }
+}
+
 #[derive(Debug, Args)]
 pub struct TradeoffArgs {
     /// The scene: a problem file with a "camera" and "surfaces".
@@ -170,9 +183,12 @@ pub struct RenderArgs {
     /// the image: its rays, each hit solved as `phong solve` solves a ray problem.
     #[arg(long, value_name = "X,Y", value_parser = parse_pixel)]
     pub explain_pixel: Option<(u32, u32)>,
-    /// Format of the explanation.
+    /// Format of the explanation (text, markdown, latex, html or json).
     #[arg(long, value_enum, default_value_t = Format::Text)]
     pub format: Format,
+    /// Language of the explanation and of the errors (json is language-neutral).
+    #[arg(long, value_enum, default_value_t = Lang::En)]
+    pub lang: Lang,
     /// Print the number of rays traced and the time taken to stderr.
     #[arg(long)]
     pub stats: bool,

@@ -8,6 +8,8 @@ use super::exit::Exit;
 use crate::check::answer::BadAnswer;
 use crate::check::grade::Unreadable;
 use crate::problem::{Invalid, ProblemError};
+use crate::report::lang::Lang;
+use crate::report::messages;
 
 /// Why a command failed (or, in a batch, why one of its steps did).
 #[derive(Debug, thiserror::Error)]
@@ -89,7 +91,17 @@ impl CliError {
 
 /// Prints an error on standard error as `error: …`; every error of `phong` is printed here.
 pub fn print(error: &dyn Display) {
-    eprintln!("error: {error}");
+    print_in(error, Lang::En);
+}
+
+/// Prints an error on standard error in `lang` (`erro: …` in Portuguese, through the catalogue
+/// of [`crate::report::messages::error_in`]).
+pub fn print_in(error: &dyn Display, lang: Lang) {
+    eprintln!(
+        "{}: {}",
+        messages::error_word(lang),
+        messages::error_in(&error.to_string(), lang)
+    );
 }
 
 /// The exit of a step a command goes on after (one file of several): success, or bad input
@@ -103,7 +115,12 @@ pub fn carry_on(step: Result<(), CliError>) -> Exit {
 
 /// Prints an error and gives its exit.
 pub fn fail(e: &CliError) -> Exit {
-    print(e);
+    fail_in(e, Lang::En)
+}
+
+/// Prints an error in `lang` and gives its exit.
+pub fn fail_in(e: &CliError, lang: Lang) -> Exit {
+    print_in(e, lang);
     Exit::BadInput
 }
 

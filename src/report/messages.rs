@@ -672,6 +672,130 @@ pub fn reading_explanation_given(code: ReadingCode, lang: Lang, viewer: bool) ->
     }
 }
 
+/// The Portuguese of the error messages' common parts, longest first where one contains
+/// another: each English fragment is replaced by its Portuguese wherever it occurs. Field
+/// names, file names and values are left as they are (a file's fields are its own words).
+/// A fragment not listed stays English: extend the list as messages are added.
+const ERRORS_PT: &[(&str, &str)] = &[
+    // The frame of every message.
+    (". Fix: ", ". Correção: "),
+    // Files.
+    ("cannot read the file: ", "não é possível ler o arquivo: "),
+    ("No such file or directory (os error 2)", "arquivo ou pasta inexistente (erro 2 do sistema)"),
+    ("Permission denied (os error 13)", "permissão negada (erro 13 do sistema)"),
+    ("Is a directory (os error 21)", "é uma pasta (erro 21 do sistema)"),
+    (
+        "check the path, and that the file exists and is readable",
+        "confira o caminho, e que o arquivo existe e pode ser lido",
+    ),
+    ("cannot write ", "não é possível escrever "),
+    ("standard output", "a saída padrão"),
+    // Syntax (serde's words).
+    ("unknown field ", "campo desconhecido "),
+    (", expected one of ", ", esperado um de "),
+    (
+        "remove the field or correct its spelling (`phong schema` lists every field)",
+        "remova o campo ou corrija sua grafia (`phong schema` lista todos os campos)",
+    ),
+    ("invalid type: ", "tipo inválido: "),
+    ("integer ", "inteiro "),
+    ("floating point ", "número "),
+    ("string ", "texto "),
+    (", expected a string", ", esperado um texto"),
+    (", expected a sequence", ", esperada uma lista"),
+    ("see `phong schema` for the expected form", "veja em `phong schema` a forma esperada"),
+    ("EOF while parsing a value", "fim do arquivo no meio de um valor"),
+    ("EOF while parsing an object", "fim do arquivo no meio de um objeto"),
+    ("EOF while parsing a list", "fim do arquivo no meio de uma lista"),
+    ("EOF while parsing a string", "fim do arquivo no meio de um texto"),
+    ("expected value", "esperado um valor"),
+    ("expected `,` or `}`", "esperado `,` ou `}`"),
+    ("expected `,` or `]`", "esperado `,` ou `]`"),
+    ("trailing characters", "caracteres a mais no fim"),
+    ("one of the words ", "uma das palavras "),
+    // Missing and refused values.
+    ("missing field ", "campo ausente "),
+    ("missing: ", "ausente: "),
+    ("a point light needs ", "uma luz pontual precisa de "),
+    ("a spot light needs ", "uma luz spot precisa de "),
+    ("a directional light needs ", "uma luz direcional precisa de "),
+    ("an ambient light needs ", "uma luz ambiente precisa de "),
+    (": it gives ", ": dá "),
+    ("Correção: add ", "Correção: acrescente "),
+    ("the problem has nothing to shade", "o problema não tem nada a iluminar"),
+    (
+        "give \"point\" (with \"material\", and \"position\" and \"normal\" where lights need them), \"ray\" with \"surfaces\", or a \"camera\" with \"surfaces\"",
+        "dê \"point\" (com \"material\", e \"position\" e \"normal\" onde as fontes de luz precisarem), \"ray\" com \"surfaces\", ou uma \"camera\" com \"surfaces\"",
+    ),
+    // What each field gives (problem/format.rs's purposes).
+    ("P_l, for L and d (Eq. 4.1)", "P_l, para L e d (Eq. 4.1)"),
+    ("a point of the plane", "um ponto do plano"),
+    (
+        "f in I_l = C_l/d^f (Eq. 4.2, 4.3): 0 none, 1 linear, 2 quadratic",
+        "f em I_l = C_l/d^f (Eq. 4.2, 4.3): 0 sem decaimento, 1 linear, 2 quadrático",
+    ),
+    ("the cone's axis D_l (Eq. 4.4)", "o eixo D_l do cone (Eq. 4.4)"),
+    ("the cone's half-angle γ in degrees (Eq. 4.4)", "o ângulo γ do cone, em graus (Eq. 4.4)"),
+    (
+        "the direction of travel (L for a directional light, D for a ray)",
+        "a direção de propagação (L de uma luz direcional, D de um raio)",
+    ),
+    (
+        "the light's colour C_l (or a coefficient's colour O)",
+        "a cor C_l da fonte de luz (ou a cor O de um coeficiente)",
+    ),
+    ("the material at the point", "o material no ponto"),
+    ("the mesh's Wavefront OBJ file", "o arquivo Wavefront OBJ da malha"),
+    ("the plane's normal", "a normal do plano"),
+    ("the spot exponent e of cos(ψ)^e (Eq. 4.4)", "o expoente de decaimento e de cos(ψ)^e (Eq. 4.4)"),
+    ("the triangle's three corners", "os três vértices do triângulo"),
+    ("the sphere", "a esfera"),
+    ("rendering needs a camera", "a renderização precisa de uma câmera"),
+    ("a light's colour has a negative component", "a cor de uma fonte de luz tem um componente negativo"),
+    ("colour components must be ≥ 0", "os componentes de uma cor devem ser ≥ 0"),
+    ("is not three numbers: write three numbers such as ", "não são três números: escreva três números como "),
+    ("three integers 0–255 with --scale 255, or ", "três inteiros 0–255 com --scale 255, ou "),
+    // The command line.
+    ("--fragment applies to --format latex and html only", "--fragment vale só para --format latex e html"),
+    ("drop --fragment, or use --format latex or html", "tire --fragment, ou use --format latex ou html"),
+    (
+        "--part and the header flags apply to the documents, not to --format json",
+        "--part e as opções do cabeçalho valem para os documentos, não para --format json",
+    ),
+    (
+        "drop --part, --course, --title, --date and --author, or choose --format text, markdown, latex or html",
+        "tire --part, --course, --title, --date e --author, ou escolha --format text, markdown, latex ou html",
+    ),
+    ("is outside the ", "está fora da imagem "),
+    (" image", ""),
+    ("give X from 0 to ", "dê X de 0 a "),
+    (" and Y from 0 to ", " e Y de 0 a "),
+    // Last, the small words left between the fragments above.
+    (" or ", " ou "),
+    (" with ", " com "),
+    (" and ", " e "),
+];
+
+/// An error message in `lang`: as it is in English; in Portuguese, its common parts translated
+/// ([`ERRORS_PT`]). The word before it ("error", "erro") is [`error_word`].
+pub fn error_in(message: &str, lang: Lang) -> String {
+    match lang {
+        Lang::En => message.to_owned(),
+        Lang::Pt => {
+            let mut s = message.to_owned();
+            for (en, pt) in ERRORS_PT {
+                s = s.replace(en, pt);
+            }
+            s
+        }
+    }
+}
+
+/// "error" or "erro", before a message on standard error.
+pub fn error_word(lang: Lang) -> &'static str {
+    pick(lang, "error", "erro")
+}
+
 /// "surfaces[2]", or "surfaces[2] (mesh), triangle 17".
 pub fn surface_label(source: Option<crate::problem::SurfaceSource>) -> String {
     match source {

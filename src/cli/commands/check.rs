@@ -42,7 +42,7 @@ pub fn run(args: &CheckArgs) -> Result<Exit, CliError> {
         let c = check::check_file(path, &options);
         exit = exit.max(c.exit_code());
         if let Err(f) = &c.outcome {
-            error::print(&f.message);
+            error::print_in(&f.message, args.lang);
         }
         match args.format {
             CheckFormat::Text => {
@@ -79,7 +79,7 @@ fn slips(args: &CheckArgs) -> Result<Exit, CliError> {
                 args.lang,
             )),
             Err(e) => {
-                error::print(&e);
+                error::print_in(&e, args.lang);
                 exit = Exit::BadInput;
             }
         }

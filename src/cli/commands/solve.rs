@@ -51,7 +51,7 @@ pub fn run(args: &SolveArgs) -> Result<Exit, CliError> {
             Ok(()) => solved.push(path),
             Err(e) => {
                 failed = true;
-                error::print(&e);
+                error::print_in(&e, args.lang);
                 if args.format == Format::Json {
                     docs.push(error_json(path, &e));
                     solved.push(path);
