@@ -274,6 +274,11 @@ pub fn quoted(name: &str) -> String {
     format!("“{name}”")
 }
 
+/// What a problem gives, row by row (the statement's table, and a pixel's scene).
+pub(crate) fn data_rows<R: Real>(problem: &Problem<R>, lang: Lang) -> Vec<DataRow> {
+    data(problem, lang)
+}
+
 /// What a problem gives, row by row: the lights, the point or the ray and its surfaces, the
 /// viewer and the materials.
 fn data<R: Real>(problem: &Problem<R>, lang: Lang) -> Vec<DataRow> {

@@ -35,7 +35,8 @@ table.data,table.key{border-collapse:collapse;margin:.6rem 0}table.data td,table
 svg text{font-family:'DejaVu Sans',sans-serif;font-size:14px}svg text.sym{font-weight:bold;font-style:italic}svg text.note{font-size:11px;fill:#777}svg text.mark{font-size:12px}
 ";
 
-fn esc(s: &str) -> String {
+/// Escapes text for HTML.
+pub(crate) fn esc(s: &str) -> String {
     let mut out = String::with_capacity(s.len());
     for c in s.chars() {
         push_html_escaped(&mut out, c);
@@ -52,7 +53,7 @@ fn swatch(rgb: [u8; 3], class: &str, title: &str) -> String {
 }
 
 /// A line's pieces as HTML.
-fn line(pieces: &[Inline]) -> String {
+pub(crate) fn line(pieces: &[Inline]) -> String {
     let mut s = String::new();
     for piece in pieces {
         match piece {
@@ -149,7 +150,6 @@ pub fn write_article(x: &Explanation, index: usize) -> String {
 }
 
 fn article(x: &Explanation, index: usize, heading: &str) -> String {
-    let lang = x.lang;
     let mut out = String::new();
     let _ = writeln!(out, "<article class=\"problem\" id=\"problem-{index}\">");
     let _ = writeln!(
@@ -165,6 +165,15 @@ fn article(x: &Explanation, index: usize, heading: &str) -> String {
             esc(q)
         );
     }
+    out.push_str(&write_parts(x, index));
+    out
+}
+
+/// The findings, the ray and the parts of an explanation, without its title and question
+/// (a pixel's rays share their scene's); `index` makes its ids unique in the page.
+pub(crate) fn write_parts(x: &Explanation, index: usize) -> String {
+    let lang = x.lang;
+    let mut out = String::new();
     if !x.findings.is_empty() {
         let _ = writeln!(
             out,
@@ -319,7 +328,8 @@ pub fn write_document(doc: &Document, options: HtmlOptions) -> String {
     page(&esc(&doc.header.document_title(doc)), &out, doc.lang)
 }
 
-fn page(title: &str, body: &str, lang: Lang) -> String {
+/// A complete page around `body`.
+pub(crate) fn page(title: &str, body: &str, lang: Lang) -> String {
     format!(
         "<!DOCTYPE html>\n<html lang=\"{}\">\n<head>\n<meta charset=\"utf-8\">\n\
          <meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n\

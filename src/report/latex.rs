@@ -113,7 +113,7 @@ fn swatch([r, g, b]: [u8; 3]) -> String {
 }
 
 /// A line's pieces: words escaped, each run of math in `$…$`.
-fn pieces(line: &[Inline]) -> String {
+pub(crate) fn pieces(line: &[Inline]) -> String {
     let mut s = String::new();
     for run in runs(line) {
         match run {
@@ -168,12 +168,8 @@ pub fn write_body(x: &Explanation) -> String {
 }
 
 fn body(x: &Explanation, heading: &str) -> String {
-    let lang = x.lang;
     let mut out = String::new();
     out.push_str(&format!("\\section*{{{}}}\n", escape(heading)));
-    // Ragged right: a step with a long value breaks its line early instead of running into
-    // the margin (the equation number stays at the right).
-    out.push_str("\\begingroup\\raggedright\n");
     out.push_str(&format!("\\noindent\\emph{{{}}}\n\n", escape(&x.source())));
     if let Some(q) = &x.question {
         out.push_str(&format!(
@@ -181,6 +177,17 @@ fn body(x: &Explanation, heading: &str) -> String {
             escape(q)
         ));
     }
+    out.push_str(&write_parts(x));
+    out
+}
+
+/// The findings, the ray and the parts of an explanation, without its title and question
+/// (a pixel's rays share their scene's). Ragged right: a step with a long value breaks its line
+/// early instead of running into the margin (the equation number stays at the right).
+pub(crate) fn write_parts(x: &Explanation) -> String {
+    let lang = x.lang;
+    let mut out = String::new();
+    out.push_str("\\begingroup\\raggedright\n");
     if !x.findings.is_empty() {
         out.push_str(&format!(
             "\\subsection*{{{}}}\n\\begin{{itemize}}\n",
@@ -227,7 +234,7 @@ pub fn write_all(xs: &[Explanation], options: LatexOptions) -> String {
 
 /// The body as a complete document (babel in the explanation's language, so that Portuguese
 /// is hyphenated as Portuguese), or as a fragment with a comment naming the packages it needs.
-fn wrap(body: &str, options: LatexOptions, lang: Lang) -> String {
+pub(crate) fn wrap(body: &str, options: LatexOptions, lang: Lang) -> String {
     if options.fragment {
         return format!(
             "% phong solve --format latex --fragment: needs \\usepackage{{amsmath,xcolor}}\n{body}"

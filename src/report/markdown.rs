@@ -23,7 +23,7 @@ pub fn escape(s: &str) -> String {
 }
 
 /// A line's pieces: words escaped, math in `$…$`.
-fn pieces(line: &[Inline]) -> String {
+pub(crate) fn pieces(line: &[Inline]) -> String {
     let mut s = String::new();
     for run in runs(line) {
         match run {
@@ -86,13 +86,21 @@ pub fn write_explanation(x: &Explanation) -> String {
 }
 
 fn explanation(x: &Explanation, heading: &str) -> String {
-    let lang = x.lang;
     let mut out = String::new();
     out.push_str(&format!("## {}\n\n", escape(heading)));
     out.push_str(&format!("*{}*\n\n", escape(&x.source())));
     if let Some(q) = &x.question {
         out.push_str(&format!("> {}\n\n", escape(q)));
     }
+    out.push_str(&write_parts(x));
+    out
+}
+
+/// The findings, the ray and the parts of an explanation, without its title and question
+/// (a pixel's rays share their scene's).
+pub(crate) fn write_parts(x: &Explanation) -> String {
+    let lang = x.lang;
+    let mut out = String::new();
     if !x.findings.is_empty() {
         out.push_str(&format!("### {}\n\n", Phrase::Findings.get(lang)));
         for f in &x.findings {

@@ -79,7 +79,6 @@ pub fn write_explanation(x: &Explanation, color: bool) -> String {
 
 fn explanation(x: &Explanation, heading: &str, color: bool) -> String {
     let style = Style { on: color };
-    let lang = x.lang;
     let mut out = String::new();
     let _ = writeln!(out, "{}  ({})", style.bold(heading), x.source());
     if let Some(q) = &x.question {
@@ -87,6 +86,16 @@ fn explanation(x: &Explanation, heading: &str, color: bool) -> String {
             let _ = writeln!(out, "  {line}");
         }
     }
+    out.push_str(&write_parts(x, color));
+    out
+}
+
+/// The findings, the ray and the parts of an explanation, without its title and question
+/// (a pixel's rays share their scene's).
+pub(crate) fn write_parts(x: &Explanation, color: bool) -> String {
+    let style = Style { on: color };
+    let lang = x.lang;
+    let mut out = String::new();
     if !x.findings.is_empty() {
         let _ = writeln!(out, "\n{}", style.bold(Phrase::Findings.get(lang)));
         for f in &x.findings {
