@@ -39,6 +39,9 @@ pub struct ProblemFile {
     /// The question as the exercise words it.
     #[serde(default)]
     pub question: Option<String>,
+    /// The question in Portuguese (used with `--lang pt`; `question` when absent).
+    #[serde(default)]
+    pub question_pt: Option<String>,
     /// Named materials, referred to by name from `point.material` or `surfaces[i].material`.
     #[serde(default, deserialize_with = "materials")]
     pub materials: BTreeMap<String, MaterialSpec>,

@@ -14,6 +14,8 @@ pub struct Problem<R: Real> {
     /// The title in Portuguese, when the file gives one.
     pub title_pt: Option<String>,
     pub question: Option<String>,
+    /// The question in Portuguese, when the file gives one.
+    pub question_pt: Option<String>,
     /// I_a and the point, directional and spot lights, as the core takes them.
     pub lights: LightSet<R>,
     /// For each light in `lights.lights`, where it came from.

@@ -170,6 +170,7 @@ pub fn validate_in<R: Real>(
         title: file.title.clone(),
         title_pt: file.title_pt.clone(),
         question: file.question.clone(),
+        question_pt: file.question_pt.clone(),
         lights,
         light_info,
         ambient_info,

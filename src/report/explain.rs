@@ -204,7 +204,10 @@ pub fn explain<R: Real>(
         title: title.unwrap_or_else(|| Phrase::Problem.get(lang).to_owned()),
         file: file_name(file),
         precision: R::NAME,
-        question: s.question.clone(),
+        question: match lang {
+            Lang::Pt => problem.question_pt.clone().or_else(|| s.question.clone()),
+            Lang::En => s.question.clone(),
+        },
         data: data(problem, lang),
         findings: s
             .findings

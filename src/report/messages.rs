@@ -723,6 +723,9 @@ const ERRORS_PT: &[(&str, &str)] = &[
     (": it gives ", ": dá "),
     ("Correção: add ", "Correção: acrescente "),
     ("the problem has nothing to shade", "o problema não tem nada a iluminar"),
+    ("the file has no answer key to check", "o arquivo não tem gabarito para conferir"),
+    ("pass --answer ", "passe --answer "),
+    (" to the file", " ao arquivo"),
     (
         "give \"point\" (with \"material\", and \"position\" and \"normal\" where lights need them), \"ray\" with \"surfaces\", or a \"camera\" with \"surfaces\"",
         "dê \"point\" (com \"material\", e \"position\" e \"normal\" onde as fontes de luz precisarem), \"ray\" com \"surfaces\", ou uma \"camera\" com \"surfaces\"",
@@ -772,6 +775,7 @@ const ERRORS_PT: &[(&str, &str)] = &[
     (" and Y from 0 to ", " e Y de 0 a "),
     // Last, the small words left between the fragments above.
     (" or ", " ou "),
+    ("ou add ", "ou acrescente "),
     (" with ", " com "),
     (" and ", " e "),
 ];

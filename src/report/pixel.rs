@@ -209,7 +209,13 @@ pub fn report<R: Real>(
         lang,
         title,
         source: scene_x.1,
-        question: problem.question.clone(),
+        question: match lang {
+            Lang::Pt => problem
+                .question_pt
+                .clone()
+                .or_else(|| problem.question.clone()),
+            Lang::En => problem.question.clone(),
+        },
         scene: scene_x.2,
         settings,
         samples,
