@@ -122,7 +122,7 @@ fn user_text_with_special_characters_and_accents_compiles() {
 }
 
 #[test]
-fn a_fragment_compiles_inside_a_document_that_loads_amsmath_and_xcolor() {
+fn a_fragment_compiles_inside_a_document_that_loads_amsmath_xcolor_and_tikz() {
     let Some(pdflatex) = support::require("pdflatex", INSTALL) else {
         return;
     };
@@ -134,7 +134,7 @@ fn a_fragment_compiles_inside_a_document_that_loads_amsmath_and_xcolor() {
     let body = write_all(&xs, LatexOptions { fragment: true });
     let tex = format!(
         "\\documentclass{{article}}\n\\usepackage[utf8]{{inputenc}}\n\\usepackage[T1]{{fontenc}}\n\
-         \\usepackage{{lmodern,amsmath,xcolor}}\n\\begin{{document}}\n{body}\\end{{document}}\n"
+         \\usepackage{{lmodern,amsmath,xcolor,tikz}}\n\\begin{{document}}\n{body}\\end{{document}}\n"
     );
     compile(&pdflatex, dir.path(), "notes", &tex);
 }

@@ -146,6 +146,11 @@ pub struct Diagram {
     /// V, from the eye to the point, when there is a viewer.
     pub v: Option<[f64; 3]>,
     pub status: LightStatus,
+    /// A spot's cone: its axis D_l (unit) and half-angle γ in degrees.
+    pub cone: Option<([f64; 3], f64)>,
+    /// A ray problem's ray: its unit direction D and the t of the point (negative: the point
+    /// is behind the ray's origin, on its line).
+    pub ray: Option<([f64; 3], f64)>,
 }
 
 fn v<R: Real>(x: V3<R>) -> [f64; 3] {
@@ -184,7 +189,10 @@ pub fn explain<R: Real>(
         heading: Phrase::AsWritten.get(lang).to_owned(),
         explanation: None,
         ray: None,
-        shading: s.evaluation.as_ref().map(|e| shading(problem, e, lang)),
+        shading: s
+            .evaluation
+            .as_ref()
+            .map(|e| shading(problem, e, lang, ray_mark(s.intersection.as_ref()))),
     })
     .chain(s.readings.iter().map(|r| Part {
         heading: capitalised(messages::reading_label_in(r.code, lang)),
@@ -192,7 +200,12 @@ pub fn explain<R: Real>(
             messages::reading_explanation_given(r.code, lang, problem.viewer.is_some()).to_owned(),
         ),
         ray: r.intersection.as_ref().map(|x| intersection(x, lang)),
-        shading: Some(shading(problem, &r.evaluation, lang)),
+        shading: Some(shading(
+            problem,
+            &r.evaluation,
+            lang,
+            ray_mark(r.intersection.as_ref()),
+        )),
     }))
     .collect();
     let title = match lang {
@@ -566,7 +579,17 @@ fn color_spec(c: &ColorSpec) -> Vec<Inline> {
     }
 }
 
-fn shading<R: Real>(problem: &Problem<R>, e: &Evaluation<R>, lang: Lang) -> Shading {
+/// The ray of an intersection, for the diagrams: its unit direction and the point's t.
+fn ray_mark<R: Real>(x: Option<&Intersection<R>>) -> Option<([f64; 3], f64)> {
+    x.and_then(|x| x.t.map(|t| (v::<R>(x.direction), t.to_f64())))
+}
+
+fn shading<R: Real>(
+    problem: &Problem<R>,
+    e: &Evaluation<R>,
+    lang: Lang,
+    ray: Option<([f64; 3], f64)>,
+) -> Shading {
     // What is given.
     let mut given = Steps(Vec::new());
     if let Some(pt) = e.point {
@@ -710,6 +733,10 @@ fn shading<R: Real>(problem: &Problem<R>, e: &Evaluation<R>, lang: Lang) -> Shad
             &mut diagrams,
             e,
         );
+    }
+
+    for d in &mut diagrams {
+        d.ray = ray;
     }
 
     // The total.
@@ -1015,6 +1042,11 @@ fn light<R: Real>(
             r: s.r.map(v::<R>),
             v: e.viewer.map(|vw| v::<R>(vw.v)),
             status: term.status,
+            cone: match l.kind {
+                LightKind::Spot { cone, .. } => Some((v::<R>(cone.axis), cone.angle_deg.to_f64())),
+                _ => None,
+            },
+            ray: None,
         });
     }
 }

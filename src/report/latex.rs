@@ -160,6 +160,9 @@ fn shading(out: &mut String, sh: &Shading, lang: Lang) {
     block(out, Phrase::Given, &sh.given, false, lang);
     block(out, Phrase::Steps, &sh.steps, true, lang);
     block(out, Phrase::Total, &sh.total, false, lang);
+    for d in &sh.diagrams {
+        out.push_str(&super::diagram::tikz(d, lang));
+    }
 }
 
 /// The LaTeX body of one explanation: a `\section*` with its subsections.
@@ -173,7 +176,7 @@ fn body(x: &Explanation, heading: &str) -> String {
     out.push_str(&format!("\\noindent\\emph{{{}}}\n\n", escape(&x.source())));
     if let Some(q) = &x.question {
         out.push_str(&format!(
-            "\\begin{{quote}}\n{}\n\\end{{quote}}\n\n",
+            "\\begin{{quote}}\\raggedright\n{}\n\\end{{quote}}\n\n",
             escape(q)
         ));
     }
@@ -237,7 +240,7 @@ pub fn write_all(xs: &[Explanation], options: LatexOptions) -> String {
 pub(crate) fn wrap(body: &str, options: LatexOptions, lang: Lang) -> String {
     if options.fragment {
         return format!(
-            "% phong solve --format latex --fragment: needs \\usepackage{{amsmath,xcolor}}\n{body}"
+            "% phong solve --format latex --fragment: needs \\usepackage{{amsmath,xcolor,tikz}}\n{body}"
         );
     }
     let babel = match lang {
@@ -252,6 +255,7 @@ pub(crate) fn wrap(body: &str, options: LatexOptions, lang: Lang) -> String {
          \\usepackage{{lmodern}}\n\
          \\usepackage{{amsmath}}\n\
          \\usepackage{{xcolor}}\n\
+         \\usepackage{{tikz}}\n\
          \\usepackage[a4paper,margin=2cm]{{geometry}}\n\
          \\setlength{{\\parindent}}{{0pt}}\n\
          \\begin{{document}}\n\n\

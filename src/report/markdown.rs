@@ -74,10 +74,19 @@ fn block(out: &mut String, heading: Phrase, steps: &[Step], numbered: bool, lang
     out.push('\n');
 }
 
-fn shading(out: &mut String, sh: &Shading, lang: Lang) {
+fn shading(out: &mut String, sh: &Shading, lang: Lang, id: &str) {
     block(out, Phrase::Given, &sh.given, false, lang);
     block(out, Phrase::Steps, &sh.steps, true, lang);
     block(out, Phrase::Total, &sh.total, false, lang);
+    // The diagrams inline, as the same SVG as the HTML's (Markdown passes HTML through).
+    for d in &sh.diagrams {
+        out.push_str(&super::diagram::svg(
+            d,
+            &format!("{id}-light{}", d.light_index),
+            lang,
+        ));
+        out.push('\n');
+    }
 }
 
 /// The Markdown of one explanation.
@@ -113,7 +122,7 @@ pub(crate) fn write_parts(x: &Explanation) -> String {
         list(&mut out, &nest(ray), 0, false, lang);
         out.push('\n');
     }
-    for part in &x.parts {
+    for (i, part) in x.parts.iter().enumerate() {
         out.push_str(&format!("### {}\n\n", escape(&part.heading)));
         if let Some(e) = &part.explanation {
             out.push_str(&format!("*{}*\n\n", escape(e)));
@@ -123,7 +132,7 @@ pub(crate) fn write_parts(x: &Explanation) -> String {
             out.push('\n');
         }
         match &part.shading {
-            Some(sh) => shading(&mut out, sh, lang),
+            Some(sh) => shading(&mut out, sh, lang, &format!("diagram-{i}")),
             None => out.push_str(&format!("{}\n\n", escape(Phrase::NothingToShade.get(lang)))),
         }
     }

@@ -120,6 +120,7 @@ phrases! {
     DiagramOf => "Diagram for ", "Diagrama para ";
     LightMark => "light", "fonte de luz";
     ViewerMark => "viewer", "observador";
+    RayOriginMark => "ray's origin O", "origem O do raio";
     BackSide => "back side", "lado de trás";
     VProjected => "V is not in this plane: its projection is drawn.",
         "V não está neste plano: sua projeção é desenhada.";

@@ -467,7 +467,11 @@ pub fn write_latex(p: &PixelReport, options: super::latex::LatexOptions) -> Stri
         escape(&p.source)
     );
     if let Some(q) = &p.question {
-        let _ = writeln!(out, "\\begin{{quote}}\n{}\n\\end{{quote}}\n", escape(q));
+        let _ = writeln!(
+            out,
+            "\\begin{{quote}}\\raggedright\n{}\n\\end{{quote}}\n",
+            escape(q)
+        );
     }
     if !p.scene.is_empty() {
         out.push_str(
