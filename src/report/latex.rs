@@ -303,7 +303,7 @@ fn statement(out: &mut String, doc: &Document, i: usize) {
     ));
     for row in &x.data {
         out.push_str(&format!(
-            "{} & \\raggedright {} \\tabularnewline\n",
+            "\\raggedright {} & \\raggedright {} \\tabularnewline\n",
             pieces(&row.what),
             pieces(&row.value)
         ));
@@ -330,7 +330,7 @@ fn key(out: &mut String, doc: &Document) {
             cell.push_str(&format!("\\newline {{\\small {}}}", pieces(r)));
         }
         out.push_str(&format!(
-            "{} & \\raggedright {} \\tabularnewline\n",
+            "\\raggedright {} & \\raggedright {} \\tabularnewline\n",
             escape(&doc.heading(i)),
             cell
         ));

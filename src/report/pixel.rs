@@ -480,7 +480,7 @@ pub fn write_latex(p: &PixelReport, options: super::latex::LatexOptions) -> Stri
         for row in &p.scene {
             let _ = writeln!(
                 out,
-                "{} & \\raggedright {} \\tabularnewline",
+                "\\raggedright {} & \\raggedright {} \\tabularnewline",
                 pieces(&row.what),
                 pieces(&row.value)
             );
