@@ -109,6 +109,16 @@ impl Document<'_> {
     pub fn numbered(&self) -> bool {
         self.contents != Contents::Solution || !self.header.is_empty()
     }
+
+    /// The heading of exercise `i`'s solution: numbered when [`Document::numbered`], else its
+    /// title.
+    pub fn solution_heading(&self, i: usize) -> String {
+        if self.numbered() {
+            self.heading(i)
+        } else {
+            self.exercises[i].title.clone()
+        }
+    }
 }
 
 /// "Exercise" or "Exercício", for the key's column.

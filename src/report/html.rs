@@ -8,7 +8,9 @@ use std::fmt::Write;
 
 use super::diagram;
 use super::document::{exercise_word, Document};
-use super::explain::{language_tag, nest, to_rgb8, Explanation, Inline, Node, Shading, Step};
+use super::explain::{
+    language_tag, nest, to_rgb8, DataRow, Explanation, Inline, Node, Shading, Step,
+};
 use super::formula::{push_html_escaped, unicode_to_html};
 use super::lang::Lang;
 use super::messages::Phrase;
@@ -230,24 +232,30 @@ fn statement(out: &mut String, doc: &Document, i: usize) {
     if let Some(q) = &x.question {
         let _ = writeln!(out, "<p class=\"question\">{}</p>", esc(q));
     }
-    if !x.data.is_empty() {
+    out.push_str(&data_table(&x.data, doc.lang));
+    out.push_str("</article>\n");
+}
+
+/// A problem's data as a table (nothing when there is none).
+pub(crate) fn data_table(rows: &[DataRow], lang: Lang) -> String {
+    if rows.is_empty() {
+        return String::new();
+    }
+    let mut out = format!(
+        "<table class=\"data\">\n<tr><th>{}</th><th>{}</th></tr>\n",
+        Phrase::Quantity.get(lang),
+        Phrase::Value.get(lang)
+    );
+    for row in rows {
         let _ = writeln!(
             out,
-            "<table class=\"data\">\n<tr><th>{}</th><th>{}</th></tr>",
-            Phrase::Quantity.get(doc.lang),
-            Phrase::Value.get(doc.lang)
+            "<tr><td>{}</td><td>{}</td></tr>",
+            line(&row.what),
+            line(&row.value)
         );
-        for row in &x.data {
-            let _ = writeln!(
-                out,
-                "<tr><td>{}</td><td>{}</td></tr>",
-                line(&row.what),
-                line(&row.value)
-            );
-        }
-        out.push_str("</table>\n");
     }
-    out.push_str("</article>\n");
+    out.push_str("</table>\n");
+    out
 }
 
 /// The answer key: one table, a row per exercise.
@@ -311,12 +319,11 @@ pub fn write_document(doc: &Document, options: HtmlOptions) -> String {
     }
     if doc.contents.solutions() {
         for (i, x) in doc.exercises.iter().enumerate() {
-            let heading = if doc.numbered() {
-                doc.heading(i)
-            } else {
-                x.title.clone()
-            };
-            out.push_str(&article(x, doc.first_number + i - 1, &heading));
+            out.push_str(&article(
+                x,
+                doc.first_number + i - 1,
+                &doc.solution_heading(i),
+            ));
         }
     }
     if doc.contents.key() {

@@ -10,7 +10,9 @@
 //! code point rather than breaking the build.
 
 use super::document::{exercise_word, Document};
-use super::explain::{latex_math, nest, runs, Explanation, Inline, Node, Run, Shading, Step};
+use super::explain::{
+    latex_math, nest, runs, DataRow, Explanation, Inline, Node, Run, Shading, Step,
+};
 use super::lang::Lang;
 use super::messages::Phrase;
 
@@ -290,18 +292,23 @@ fn statement(out: &mut String, doc: &Document, i: usize) {
     if let Some(q) = &x.question {
         out.push_str(&format!("{}\n\n", escape(q)));
     }
-    if x.data.is_empty() {
-        return;
+    out.push_str(&data_table(&x.data, doc.lang));
+}
+
+/// A problem's data as a table (nothing when there is none).
+pub(crate) fn data_table(rows: &[DataRow], lang: Lang) -> String {
+    if rows.is_empty() {
+        return String::new();
     }
-    out.push_str(
+    let mut out = String::from(
         "\\begin{center}\n\\begin{tabular}{@{}p{0.3\\linewidth}p{0.64\\linewidth}@{}}\n\\hline\n",
     );
     out.push_str(&format!(
         "\\textbf{{{}}} & \\textbf{{{}}} \\\\\n\\hline\n",
-        Phrase::Quantity.get(doc.lang),
-        Phrase::Value.get(doc.lang)
+        Phrase::Quantity.get(lang),
+        Phrase::Value.get(lang)
     ));
-    for row in &x.data {
+    for row in rows {
         out.push_str(&format!(
             "\\raggedright {} & \\raggedright {} \\tabularnewline\n",
             pieces(&row.what),
@@ -309,6 +316,7 @@ fn statement(out: &mut String, doc: &Document, i: usize) {
         ));
     }
     out.push_str("\\hline\n\\end{tabular}\n\\end{center}\n\n");
+    out
 }
 
 /// The answer key: one table, a row per exercise.
@@ -358,14 +366,7 @@ pub fn write_document(doc: &Document, options: LatexOptions) -> String {
             out.push_str("\\clearpage\n");
         }
         let bodies: Vec<String> = (0..doc.exercises.len())
-            .map(|i| {
-                let x = &doc.exercises[i];
-                if doc.numbered() {
-                    body(x, &doc.heading(i))
-                } else {
-                    body(x, &x.title)
-                }
-            })
+            .map(|i| body(&doc.exercises[i], &doc.solution_heading(i)))
             .collect();
         out.push_str(&bodies.join("\n\\bigskip\n\n"));
     }

@@ -3,7 +3,9 @@
 //! chapter's equation number, ready to paste into notes. It lays out an [`Explanation`].
 
 use super::document::{exercise_word, Document};
-use super::explain::{latex_math, nest, runs, Explanation, Inline, Node, Run, Shading, Step};
+use super::explain::{
+    latex_math, nest, runs, DataRow, Explanation, Inline, Node, Run, Shading, Step,
+};
 use super::lang::Lang;
 use super::messages::Phrase;
 
@@ -147,6 +149,27 @@ pub fn write_all(xs: &[Explanation]) -> String {
         .join("---\n\n")
 }
 
+/// A problem's data as a table (nothing when there is none).
+pub(crate) fn data_table(rows: &[DataRow], lang: Lang) -> String {
+    if rows.is_empty() {
+        return String::new();
+    }
+    let mut out = format!(
+        "| {} | {} |\n|---|---|\n",
+        Phrase::Quantity.get(lang),
+        Phrase::Value.get(lang)
+    );
+    for row in rows {
+        out.push_str(&format!(
+            "| {} | {} |\n",
+            pieces(&row.what),
+            pieces(&row.value)
+        ));
+    }
+    out.push('\n');
+    out
+}
+
 /// A document: the header, then the statements (each with its data as a table), the solutions
 /// or the answer key (one table), or all three.
 pub fn write_document(doc: &Document) -> String {
@@ -168,21 +191,7 @@ pub fn write_document(doc: &Document) -> String {
             if let Some(q) = &x.question {
                 out.push_str(&format!("{}\n\n", escape(q)));
             }
-            if !x.data.is_empty() {
-                out.push_str(&format!(
-                    "| {} | {} |\n|---|---|\n",
-                    Phrase::Quantity.get(lang),
-                    Phrase::Value.get(lang)
-                ));
-                for row in &x.data {
-                    out.push_str(&format!(
-                        "| {} | {} |\n",
-                        pieces(&row.what),
-                        pieces(&row.value)
-                    ));
-                }
-                out.push('\n');
-            }
+            out.push_str(&data_table(&x.data, lang));
         }
     }
     if doc.contents.solutions() {
@@ -193,13 +202,7 @@ pub fn write_document(doc: &Document) -> String {
             .exercises
             .iter()
             .enumerate()
-            .map(|(i, x)| {
-                if doc.numbered() {
-                    explanation(x, &doc.heading(i))
-                } else {
-                    explanation(x, &x.title)
-                }
-            })
+            .map(|(i, x)| explanation(x, &doc.solution_heading(i)))
             .collect();
         out.push_str(&bodies.join("---\n\n"));
     }

@@ -9,7 +9,7 @@ use serde::Serialize;
 
 use super::explain::{plain, DataRow, Explanation};
 use super::lang::Lang;
-use super::messages::{pick, Phrase};
+use super::messages::pick;
 use super::number::{num, vec3};
 use super::{json, text};
 use crate::core::real::to_f64_array;
@@ -414,12 +414,12 @@ pub fn write_text(p: &PixelReport) -> String {
 
 /// A pixel's explanation as Markdown.
 pub fn write_markdown(p: &PixelReport) -> String {
-    use super::markdown::{escape, pieces};
+    use super::markdown::escape;
     let mut out = format!("## {}\n\n*{}*\n\n", escape(&p.title), escape(&p.source));
     if let Some(q) = &p.question {
         let _ = writeln!(out, "> {}\n", escape(q));
     }
-    table_md(&mut out, p);
+    out.push_str(&super::markdown::data_table(&p.scene, p.lang));
     let _ = writeln!(out, "{}\n", escape(&p.settings));
     for sample in &p.samples {
         let _ = writeln!(out, "### {}\n", escape(&sample.heading));
@@ -440,27 +440,12 @@ pub fn write_markdown(p: &PixelReport) -> String {
         let _ = writeln!(out, "**{}**\n", escape(&sample.color));
     }
     let _ = writeln!(out, "**{}**", escape(&p.result));
-    fn table_md(out: &mut String, p: &PixelReport) {
-        if p.scene.is_empty() {
-            return;
-        }
-        let _ = writeln!(
-            out,
-            "| {} | {} |\n|---|---|",
-            Phrase::Quantity.get(p.lang),
-            Phrase::Value.get(p.lang)
-        );
-        for row in &p.scene {
-            let _ = writeln!(out, "| {} | {} |", pieces(&row.what), pieces(&row.value));
-        }
-        out.push('\n');
-    }
     out
 }
 
 /// A pixel's explanation as LaTeX: a document, or (`fragment`) its body.
 pub fn write_latex(p: &PixelReport, options: super::latex::LatexOptions) -> String {
-    use super::latex::{escape, pieces};
+    use super::latex::escape;
     let mut out = format!(
         "\\section*{{{}}}\n\\noindent\\emph{{{}}}\n\n",
         escape(&p.title),
@@ -473,20 +458,7 @@ pub fn write_latex(p: &PixelReport, options: super::latex::LatexOptions) -> Stri
             escape(q)
         );
     }
-    if !p.scene.is_empty() {
-        out.push_str(
-            "\\begin{center}\n\\begin{tabular}{@{}p{0.3\\linewidth}p{0.64\\linewidth}@{}}\n\\hline\n",
-        );
-        for row in &p.scene {
-            let _ = writeln!(
-                out,
-                "\\raggedright {} & \\raggedright {} \\tabularnewline",
-                pieces(&row.what),
-                pieces(&row.value)
-            );
-        }
-        out.push_str("\\hline\n\\end{tabular}\n\\end{center}\n\n");
-    }
+    out.push_str(&super::latex::data_table(&p.scene, p.lang));
     let _ = writeln!(out, "{}\n", escape(&p.settings));
     for sample in &p.samples {
         let _ = writeln!(out, "\\subsection*{{{}}}", escape(&sample.heading));
@@ -521,7 +493,7 @@ pub fn write_latex(p: &PixelReport, options: super::latex::LatexOptions) -> Stri
 
 /// A pixel's explanation as HTML: a page, or (`fragment`) its body.
 pub fn write_html(p: &PixelReport, options: super::html::HtmlOptions) -> String {
-    use super::html::{esc, line};
+    use super::html::esc;
     let mut out = format!(
         "<article class=\"pixel\">\n<h1>{}</h1>\n<p class=\"source\">{}</p>\n",
         esc(&p.title),
@@ -534,18 +506,7 @@ pub fn write_html(p: &PixelReport, options: super::html::HtmlOptions) -> String 
             esc(q)
         );
     }
-    if !p.scene.is_empty() {
-        out.push_str("<table class=\"data\">\n");
-        for row in &p.scene {
-            let _ = writeln!(
-                out,
-                "<tr><td>{}</td><td>{}</td></tr>",
-                line(&row.what),
-                line(&row.value)
-            );
-        }
-        out.push_str("</table>\n");
-    }
+    out.push_str(&super::html::data_table(&p.scene, p.lang));
     let _ = writeln!(out, "<p>{}</p>", esc(&p.settings));
     let mut index = 0;
     for sample in &p.samples {

@@ -200,12 +200,7 @@ pub fn write_document(doc: &Document, color: bool) -> String {
     }
     if doc.contents.solutions() {
         for (i, x) in doc.exercises.iter().enumerate() {
-            let heading = if doc.numbered() {
-                doc.heading(i)
-            } else {
-                x.title.clone()
-            };
-            blocks.push(explanation(x, &heading, color));
+            blocks.push(explanation(x, &doc.solution_heading(i), color));
         }
     }
     if doc.contents.key() {
