@@ -6,7 +6,8 @@
 //!
 //! What is not prose is left out before the words are read: the file's own identifiers (JSON
 //! field names in quotes or backticks, `lights[0]`, slip codes such as `light_reversed`), LaTeX
-//! commands and environment names, HTML tags, the CSS, and the file names.
+//! commands and environment names, TikZ's drawing commands (not its labels), HTML tags, the
+//! CSS, and the file names.
 
 use std::collections::BTreeSet;
 use std::path::Path;
@@ -128,7 +129,16 @@ fn english_words() -> BTreeSet<String> {
 
 /// The prose of an output: identifiers, markup and file names taken out.
 fn prose(s: &str) -> String {
-    let mut s = s.to_owned();
+    // TikZ's drawing commands (their options are TikZ's words); its \node labels stay.
+    let mut s: String = s
+        .lines()
+        .filter(|l| {
+            !["\\draw", "\\fill", "\\filldraw", "\\clip", "\\definecolor"]
+                .iter()
+                .any(|c| l.trim_start().starts_with(c))
+        })
+        .collect::<Vec<_>>()
+        .join("\n");
     // The stylesheet, HTML tags and entities.
     if let (Some(a), Some(b)) = (s.find("<style>"), s.find("</style>")) {
         s.replace_range(a..b, " ");

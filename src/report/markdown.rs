@@ -93,23 +93,24 @@ fn shading(out: &mut String, sh: &Shading, lang: Lang, id: &str) {
 
 /// The Markdown of one explanation.
 pub fn write_explanation(x: &Explanation) -> String {
-    explanation(x, &x.title)
+    explanation(x, &x.title, 0)
 }
 
-fn explanation(x: &Explanation, heading: &str) -> String {
+/// One explanation under `heading`; `index` makes its diagrams' ids unique in the document.
+fn explanation(x: &Explanation, heading: &str, index: usize) -> String {
     let mut out = String::new();
     out.push_str(&format!("## {}\n\n", escape(heading)));
     out.push_str(&format!("*{}*\n\n", escape(&x.source())));
     if let Some(q) = &x.question {
         out.push_str(&format!("> {}\n\n", escape(q)));
     }
-    out.push_str(&write_parts(x));
+    out.push_str(&write_parts(x, index));
     out
 }
 
 /// The findings, the ray and the parts of an explanation, without its title and question
 /// (a pixel's rays share their scene's).
-pub(crate) fn write_parts(x: &Explanation) -> String {
+pub(crate) fn write_parts(x: &Explanation, index: usize) -> String {
     let lang = x.lang;
     let mut out = String::new();
     if !x.findings.is_empty() {
@@ -134,7 +135,7 @@ pub(crate) fn write_parts(x: &Explanation) -> String {
             out.push('\n');
         }
         match &part.shading {
-            Some(sh) => shading(&mut out, sh, lang, &format!("diagram-{i}")),
+            Some(sh) => shading(&mut out, sh, lang, &format!("diagram-{index}-{i}")),
             None => out.push_str(&format!("{}\n\n", escape(Phrase::NothingToShade.get(lang)))),
         }
     }
@@ -144,7 +145,8 @@ pub(crate) fn write_parts(x: &Explanation) -> String {
 /// The Markdown of several explanations, separated by rules.
 pub fn write_all(xs: &[Explanation]) -> String {
     xs.iter()
-        .map(write_explanation)
+        .enumerate()
+        .map(|(i, x)| explanation(x, &x.title, i))
         .collect::<Vec<_>>()
         .join("---\n\n")
 }
@@ -202,7 +204,7 @@ pub fn write_document(doc: &Document) -> String {
             .exercises
             .iter()
             .enumerate()
-            .map(|(i, x)| explanation(x, &doc.solution_heading(i)))
+            .map(|(i, x)| explanation(x, &doc.solution_heading(i), doc.first_number + i - 1))
             .collect();
         out.push_str(&bodies.join("---\n\n"));
     }

@@ -421,6 +421,7 @@ pub fn write_markdown(p: &PixelReport) -> String {
     }
     out.push_str(&super::markdown::data_table(&p.scene, p.lang));
     let _ = writeln!(out, "{}\n", escape(&p.settings));
+    let mut index = 0;
     for sample in &p.samples {
         let _ = writeln!(out, "### {}\n", escape(&sample.heading));
         for ray in &sample.rays {
@@ -430,7 +431,8 @@ pub fn write_markdown(p: &PixelReport) -> String {
             }
             out.push('\n');
             if let Some(x) = &ray.explanation {
-                out.push_str(&super::markdown::write_parts(x).replace("\n### ", "\n##### "));
+                out.push_str(&super::markdown::write_parts(x, index).replace("\n### ", "\n##### "));
+                index += 1;
             }
             for l in &ray.after {
                 let _ = writeln!(out, "- {}", escape(l));
