@@ -3,7 +3,10 @@
 //! - the DOM after rendering holds each light's diagram with N, L, R, V, the light and the
 //!   viewer, labelled in the page's language;
 //! - a screenshot is not blank: it shows the final colour's swatch and the light's marker in
-//!   their exact colours.
+//!   their exact colours;
+//! - no label of a diagram overlaps another label or crosses a line, measured by the browser
+//!   (`getBBox`) after layout; a spot's cone, θ and φ, and a ray problem's ray, origin and t
+//!   are drawn.
 //!
 //! `.ci/run` installs chromium. Under `CI=true` a missing chromium is a failure; elsewhere the
 //! test says it was skipped and why.
@@ -173,4 +176,111 @@ fn a_screenshot_shows_the_colour_swatch_and_the_diagram() {
     let png = shot("4.2");
     let (marker, _) = pixels_of(&png, [0xff, 0xd6, 0x33]);
     assert!(marker >= 100, "only {marker} pixels of the light's marker");
+}
+
+/// A script that measures, in the rendered page, every diagram's label boxes (`getBBox`) and
+/// writes into `<pre id="overlaps">` each pair of labels whose boxes intersect and each label
+/// whose box a vector's or the surface's line crosses (boxes shrunk by 1 px, for antialiasing).
+const OVERLAPS: &str = r#"<script>
+window.addEventListener('load', () => {
+  const out = [];
+  const meets = (b, x1, y1, x2, y2) => {
+    let t0 = 0, t1 = 1;
+    const dx = x2 - x1, dy = y2 - y1;
+    for (const [p, q] of [[-dx, x1 - b.x0], [dx, b.x1 - x1], [-dy, y1 - b.y0], [dy, b.y1 - y1]]) {
+      if (p === 0) { if (q < 0) return false; }
+      else { const r = q / p; if (p < 0) t0 = Math.max(t0, r); else t1 = Math.min(t1, r); }
+    }
+    return t0 <= t1;
+  };
+  let labels = 0;
+  for (const svg of document.querySelectorAll('svg.diagram')) {
+    const boxes = [...svg.querySelectorAll('text')].map(t => {
+      const b = t.getBBox();
+      return { id: t.id, x0: b.x + 1, y0: b.y + 1, x1: b.x + b.width - 1, y1: b.y + b.height - 1 };
+    });
+    labels += boxes.length;
+    for (let i = 0; i < boxes.length; i++) {
+      for (let j = i + 1; j < boxes.length; j++) {
+        const a = boxes[i], b = boxes[j];
+        if (a.x0 < b.x1 && b.x0 < a.x1 && a.y0 < b.y1 && b.y0 < a.y1) out.push(a.id + ' overlaps ' + b.id);
+      }
+    }
+    for (const l of svg.querySelectorAll('line')) {
+      const c = ['x1', 'y1', 'x2', 'y2'].map(k => parseFloat(l.getAttribute(k)));
+      for (const b of boxes) if (meets(b, ...c)) out.push(l.id + ' crosses ' + b.id);
+    }
+  }
+  const pre = document.createElement('pre');
+  pre.id = 'overlaps';
+  pre.textContent = 'labels ' + labels + '\n' + out.join('\n');
+  document.body.appendChild(pre);
+});
+</script>"#;
+
+#[test]
+fn no_label_of_a_diagram_overlaps_another_or_a_line() {
+    let Some(browser) = support::require("chromium", INSTALL) else {
+        return;
+    };
+    let dir = tempfile::tempdir().unwrap();
+    let profile = tempfile::tempdir().unwrap();
+    let mut problems = Vec::new();
+    for exercise in [
+        "4.2",
+        "4.3",
+        "several-lights",
+        "spot-edge",
+        "spot-inside",
+        "sphere-hit",
+    ] {
+        for lang in ["en", "pt"] {
+            let html = page(dir.path(), exercise, lang);
+            let text = std::fs::read_to_string(&html).unwrap();
+            std::fs::write(
+                &html,
+                text.replace("</body>", &format!("{OVERLAPS}</body>")),
+            )
+            .unwrap();
+            let dom = chromium(&browser, profile.path(), &["--dump-dom"], &html);
+            let dom = String::from_utf8(dom.stdout).unwrap();
+            let at = dom
+                .find("<pre id=\"overlaps\">")
+                .unwrap_or_else(|| panic!("{exercise} ({lang}): the script did not run"));
+            let report = &dom[at + 19..];
+            let report = &report[..report.find("</pre>").unwrap()];
+            let mut lines = report.lines();
+            let count: usize = lines
+                .next()
+                .and_then(|l| l.strip_prefix("labels "))
+                .and_then(|n| n.parse().ok())
+                .unwrap();
+            assert!(count > 0, "{exercise} ({lang}): no labels measured");
+            problems.extend(lines.map(|l| format!("{exercise} ({lang}): {l}")));
+        }
+    }
+    assert!(problems.is_empty(), "{}", problems.join("\n"));
+}
+
+#[test]
+fn a_spot_draws_its_cone_and_a_ray_problem_its_ray_origin_and_t() {
+    let dir = tempfile::tempdir().unwrap();
+    let spot = std::fs::read_to_string(page(dir.path(), "spot-inside", "en")).unwrap();
+    assert!(spot.contains("-cone\" class=\"cone\""), "no cone drawn");
+    for angle in ["theta-label", "phi-label"] {
+        assert!(spot.contains(angle), "no {angle}");
+    }
+    // 4.3: the line's point, behind the ray's origin, with the ray, its origin and t = −90.
+    let ray = std::fs::read_to_string(page(dir.path(), "4.3", "pt")).unwrap();
+    for part in [
+        "-ray\"",
+        "-line\"",
+        "-origin\"",
+        "-origin-label",
+        "-t-label",
+    ] {
+        assert!(ray.contains(part), "4.3: no {part}");
+    }
+    assert!(ray.contains(">t = −90<"), "4.3: t is not labelled");
+    assert!(ray.contains(">origem O do raio<"));
 }

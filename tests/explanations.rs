@@ -123,7 +123,7 @@ fn the_portuguese_explanation_of_4_2_uses_the_chapters_terms() {
         "observador",
         "normal",
         "Solução (o problema como escrito)",
-        "Leitura: leitura provavelmente pretendida",
+        "Leitura provavelmente pretendida",
     ] {
         assert!(t.contains(term), "missing «{term}» in:\n{t}");
     }

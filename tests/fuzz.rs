@@ -233,7 +233,9 @@ impl J {
 const FIELD_NAMES: &[&str] = &[
     "$schema",
     "title",
+    "title_pt",
     "question",
+    "question_pt",
     "materials",
     "lights",
     "viewer",
@@ -246,6 +248,7 @@ const FIELD_NAMES: &[&str] = &[
     "answer",
     "type",
     "name",
+    "name_pt",
     "color",
     "position",
     "direction",
@@ -280,9 +283,9 @@ const FIELD_NAMES: &[&str] = &[
     "tolerance",
 ];
 
-/// The top-level fields, which every field path of an error starts with: the first 13 of
+/// The top-level fields, which every field path of an error starts with: the first 15 of
 /// [`FIELD_NAMES`], which lists them first.
-const TOP_LEVEL: &[&str] = FIELD_NAMES.split_at(13).0;
+const TOP_LEVEL: &[&str] = FIELD_NAMES.split_at(15).0;
 
 /// Mesh paths relative to the case's folder: the fixtures of [`Workspace::new`], missing files,
 /// folders and `..`.

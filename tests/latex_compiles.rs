@@ -1,8 +1,11 @@
 //! The LaTeX explanation compiles: every exercise in `exercises/`, in English and in
 //! Portuguese, and a problem whose title, question and light names hold TeX's special
 //! characters, accents and a character the fonts lack, each compiled by pdflatex (Debian's
-//! texlive, installed by `.ci/run`). Under `CI=true` a missing pdflatex is a failure; elsewhere
-//! the test says it was skipped and why.
+//! texlive, installed by `.ci/run`); the documents of `--part statement|key|all` with a set's
+//! header; and the fragment `\input` into a preamble with `\usepackage[brazilian]{babel}` and
+//! one with `[english]`. Every compilation fails on an overfull line and on any babel warning
+//! (a missing language, a shorthand). Under `CI=true` a missing pdflatex is a failure;
+//! elsewhere the test says it was skipped and why.
 
 mod support;
 
@@ -10,12 +13,14 @@ use std::path::Path;
 use std::process::Command;
 
 use phong::core::Precision;
+use phong::report::document::{Contents, Document, Header};
 use phong::report::file::explain_file;
 use phong::report::lang::Lang;
-use phong::report::latex::{write_all, LatexOptions};
+use phong::report::latex::{write_all, write_document, LatexOptions};
 
 const INSTALL: &str = "apt-get install -y --no-install-recommends texlive-latex-base \
-                       texlive-latex-recommended lmodern";
+                       texlive-latex-recommended texlive-lang-portuguese texlive-pictures \
+                       lmodern";
 
 /// Compiles `tex` in `dir` as `name.tex`; on failure, panics with the errors of the log.
 fn compile(pdflatex: &Path, dir: &Path, name: &str, tex: &str) {
@@ -43,6 +48,20 @@ fn compile(pdflatex: &Path, dir: &Path, name: &str, tex: &str) {
     );
     let pdf = std::fs::metadata(dir.join(format!("{name}.pdf"))).expect("a PDF is written");
     assert!(pdf.len() > 1000, "{name}.pdf is only {} bytes", pdf.len());
+    // The log, not stdout: pdflatex wraps its lines at 79 columns in both, but the log has all.
+    let log = std::fs::read(dir.join(format!("{name}.log"))).expect("a log is written");
+    let log = String::from_utf8_lossy(&log);
+    let lines: Vec<&str> = log.lines().collect();
+    for (i, l) in lines.iter().enumerate() {
+        let bad = l.starts_with("Overfull \\hbox")
+            || l.starts_with("Package babel Warning")
+            || l.contains("babel") && l.contains("Warning");
+        assert!(
+            !bad,
+            "{name}.tex: {}\n--- the LaTeX ---\n{tex}",
+            lines[i..(i + 4).min(lines.len())].join("\n")
+        );
+    }
 }
 
 #[test]
@@ -103,7 +122,7 @@ fn user_text_with_special_characters_and_accents_compiles() {
 }
 
 #[test]
-fn a_fragment_compiles_inside_a_document_that_loads_amsmath_and_xcolor() {
+fn a_fragment_compiles_inside_a_document_that_loads_amsmath_xcolor_and_tikz() {
     let Some(pdflatex) = support::require("pdflatex", INSTALL) else {
         return;
     };
@@ -115,7 +134,79 @@ fn a_fragment_compiles_inside_a_document_that_loads_amsmath_and_xcolor() {
     let body = write_all(&xs, LatexOptions { fragment: true });
     let tex = format!(
         "\\documentclass{{article}}\n\\usepackage[utf8]{{inputenc}}\n\\usepackage[T1]{{fontenc}}\n\
-         \\usepackage{{lmodern,amsmath,xcolor}}\n\\begin{{document}}\n{body}\\end{{document}}\n"
+         \\usepackage{{lmodern,amsmath,xcolor,tikz}}\n\\begin{{document}}\n{body}\\end{{document}}\n"
     );
     compile(&pdflatex, dir.path(), "notes", &tex);
+}
+
+/// The exercises of the chapter, in `lang`.
+fn chapter(lang: Lang) -> Vec<phong::report::explain::Explanation> {
+    [
+        "exercises/4.1.json",
+        "exercises/4.2.json",
+        "exercises/4.3.json",
+    ]
+    .iter()
+    .map(|p| explain_file(Path::new(p), Precision::F64, lang).unwrap())
+    .collect()
+}
+
+#[test]
+fn the_handout_the_key_and_the_whole_set_compile_in_both_languages() {
+    let Some(pdflatex) = support::require("pdflatex", INSTALL) else {
+        return;
+    };
+    let dir = tempfile::tempdir().unwrap();
+    let header = Header {
+        course: Some("Computação Gráfica".into()),
+        title: Some("Lista 4 — Modelos de Iluminação".into()),
+        date: Some("1 de dezembro de 2026".into()),
+        author: Some("Paulo Pagliosa".into()),
+    };
+    for (lang, code) in [(Lang::En, "en"), (Lang::Pt, "pt")] {
+        let xs = chapter(lang);
+        for (contents, part) in [
+            (Contents::Statement, "statement"),
+            (Contents::Key, "key"),
+            (Contents::All, "all"),
+        ] {
+            let doc = Document {
+                header: &header,
+                contents,
+                exercises: &xs,
+                first_number: 1,
+                lang,
+            };
+            let tex = write_document(&doc, LatexOptions::default());
+            compile(&pdflatex, dir.path(), &format!("{part}-{code}"), &tex);
+        }
+    }
+}
+
+#[test]
+fn a_fragment_input_under_babel_brazilian_or_english_compiles_without_warnings() {
+    let Some(pdflatex) = support::require("pdflatex", INSTALL) else {
+        return;
+    };
+    let dir = tempfile::tempdir().unwrap();
+    for (lang, code, babel) in [(Lang::Pt, "pt", "brazilian"), (Lang::En, "en", "english")] {
+        let xs = chapter(lang);
+        let header = Header::default();
+        let doc = Document {
+            header: &header,
+            contents: Contents::All,
+            exercises: &xs,
+            first_number: 1,
+            lang,
+        };
+        let body = write_document(&doc, LatexOptions { fragment: true });
+        std::fs::write(dir.path().join(format!("body-{code}.tex")), body).unwrap();
+        let tex = format!(
+            "\\documentclass[11pt]{{article}}\n\\usepackage[utf8]{{inputenc}}\n\
+             \\usepackage[T1]{{fontenc}}\n\\usepackage[{babel}]{{babel}}\n\
+             \\usepackage{{lmodern,amsmath,xcolor,tikz}}\n\\usepackage[a4paper,margin=2cm]{{geometry}}\n\
+             \\begin{{document}}\n\\input{{body-{code}}}\n\\end{{document}}\n"
+        );
+        compile(&pdflatex, dir.path(), &format!("babel-{code}"), &tex);
+    }
 }

@@ -561,6 +561,8 @@ pub(crate) fn slips_text(file: &str, x: &super::Expected, lang: Lang) -> String 
     for o in &x.outcomes {
         let codes: Vec<_> = o.slips.iter().map(|s| s.code()).collect();
         let _ = writeln!(out, "  {:<44} {}", codes.join(" + "), show(&o.target));
+        // What the codes mean, in the language asked for.
+        let _ = writeln!(out, "      {}", messages::slips(&o.slips, lang));
     }
     out
 }

@@ -13,6 +13,7 @@ use super::parse::{
 use crate::check;
 use crate::core::Precision;
 use crate::generate;
+use crate::report::document::Contents;
 use crate::report::lang::Lang;
 use crate::tracer::output::ImageFormat;
 
@@ -45,6 +46,19 @@ pub(crate) enum Command {
     /// Measure what each tracer setting (precision, level, minimum weight, samples) costs in
     /// time and buys in accuracy against a reference render; name the fastest within a budget.
     Tradeoff(TradeoffArgs),
+}
+
+impl Command {
+    /// The language the command's messages (its errors included) are written in: `--lang`
+    /// where the command has it, else English.
+    pub fn lang(&self) -> Lang {
+        match self {
+            Command::Solve(a) => a.lang,
+            Command::Render(a) => a.lang,
+            Command::Check(a) => a.lang,
+            _ => Lang::En,
+        }
+    }
 }
 
 #[derive(Debug, Args)]
@@ -165,9 +179,12 @@ pub(crate) struct RenderArgs {
     /// the image: its rays, each hit solved as `phong solve` solves a ray problem.
     #[arg(long, value_name = "X,Y", value_parser = parse_pixel)]
     pub(crate) explain_pixel: Option<(u32, u32)>,
-    /// Format of the explanation.
+    /// Format of the explanation (text, markdown, latex, html or json).
     #[arg(long, value_enum, default_value_t = Format::Text)]
     pub(crate) format: Format,
+    /// Language of the explanation and of the errors (json is language-neutral).
+    #[arg(long, value_enum, default_value_t = Lang::En)]
+    pub(crate) lang: Lang,
     /// Print the number of rays traced and the time taken to stderr.
     #[arg(long)]
     pub(crate) stats: bool,
@@ -309,7 +326,24 @@ pub(crate) struct SolveArgs {
     /// Floating-point precision of the whole calculation.
     #[arg(long, value_enum, default_value_t = Precision::F64)]
     pub(crate) precision: Precision,
-    /// Write the output to this file (atomically) instead of standard output.
+    /// Which document: statement (the student's handout: numbered statements, the data as a
+    /// table), solution (the worked solutions), key (one answer-key table), or all three.
+    #[arg(long, value_enum, default_value_t = Contents::Solution)]
+    pub(crate) part: Contents,
+    /// The problem set's course, printed in its header.
+    #[arg(long, value_name = "TEXT")]
+    pub(crate) course: Option<String>,
+    /// The problem set's title, printed in its header (and the HTML page's title).
+    #[arg(long, value_name = "TEXT")]
+    pub(crate) title: Option<String>,
+    /// The problem set's date, printed in its header as given.
+    #[arg(long, value_name = "TEXT")]
+    pub(crate) date: Option<String>,
+    /// The problem set's author, printed in its header.
+    #[arg(long, value_name = "TEXT")]
+    pub(crate) author: Option<String>,
+    /// Write the output to this file (atomically) instead of standard output; a folder (an
+    /// existing one, or a path ending in /) gets one file per exercise, named after it.
     #[arg(short, long, value_name = "PATH")]
     pub(crate) output: Option<PathBuf>,
 }

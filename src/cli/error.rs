@@ -8,6 +8,8 @@ use super::exit::Exit;
 use crate::check::answer::BadAnswer;
 use crate::check::grade::Unreadable;
 use crate::problem::{Invalid, ProblemError};
+use crate::report::lang::Lang;
+use crate::report::messages;
 
 /// Why a command failed (or, in a batch, why one of its steps did).
 #[derive(Debug, thiserror::Error)]
@@ -90,12 +92,22 @@ impl CliError {
 /// Prints an error on standard error as `error: …`; every error of `phong` is printed here (a
 /// closed standard error is ignored: [`super::output::say`]).
 pub(crate) fn print(error: &dyn Display) {
-    super::output::say(&format_args!("error: {error}"));
+    print_in(error, Lang::En);
+}
+
+/// Prints an error on standard error in `lang` (`erro: …` in Portuguese, through the catalogue
+/// of [`crate::report::messages::error_in`]); a closed standard error is ignored.
+pub(crate) fn print_in(error: &dyn Display, lang: Lang) {
+    super::output::say(&format_args!(
+        "{}: {}",
+        messages::error_word(lang),
+        messages::error_in(&error.to_string(), lang)
+    ));
 }
 
 /// Prints a warning (a likely mistake that is not an error) on standard error.
 pub(crate) fn warn(warning: &dyn Display) {
-    eprintln!("warning: {warning}");
+    super::output::say(&format_args!("warning: {warning}"));
 }
 
 /// The exit of a step a command goes on after (one file of several): success, or bad input
@@ -109,7 +121,12 @@ pub(crate) fn carry_on(step: Result<(), CliError>) -> Exit {
 
 /// Prints an error and gives its exit.
 pub(crate) fn fail(e: &CliError) -> Exit {
-    print(e);
+    fail_in(e, Lang::En)
+}
+
+/// Prints an error in `lang` and gives its exit.
+pub(crate) fn fail_in(e: &CliError, lang: Lang) -> Exit {
+    print_in(e, lang);
     Exit::BadInput
 }
 

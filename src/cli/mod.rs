@@ -38,5 +38,5 @@ pub(crate) fn run(cli: &Cli) -> Exit {
         Command::Grade(args) => commands::grade::run(args),
         Command::New(args) => commands::new::run(args),
     };
-    result.unwrap_or_else(|e| error::fail(&e))
+    result.unwrap_or_else(|e| error::fail_in(&e, cli.command.lang()))
 }

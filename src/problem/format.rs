@@ -32,9 +32,16 @@ pub struct ProblemFile {
     /// A short title, such as "Exercise 4.2".
     #[serde(default)]
     pub title: Option<String>,
+    /// The title in Portuguese, such as "Exercício 4.2" (used with `--lang pt`; `title` when
+    /// absent).
+    #[serde(default)]
+    pub title_pt: Option<String>,
     /// The question as the exercise words it.
     #[serde(default)]
     pub question: Option<String>,
+    /// The question in Portuguese (used with `--lang pt`; `question` when absent).
+    #[serde(default)]
+    pub question_pt: Option<String>,
     /// Named materials, referred to by name from `point.material` or `surfaces[i].material`.
     #[serde(default, deserialize_with = "materials")]
     pub materials: BTreeMap<String, MaterialSpec>,
@@ -232,6 +239,8 @@ kinds! {
         /// A name for the light, shown beside it in explanations and the JSON
         /// (`lights[1] (point) "key"`).
         name: String,
+        /// The light's name in Portuguese, shown instead of `name` with `--lang pt`.
+        name_pt: String,
     }
     fields {
         // Also the purpose of `color` in a scaled colour and an answer key.
@@ -577,7 +586,7 @@ pub fn schema_json() -> String {
 mod tests {
     use super::*;
 
-    /// The property names of each `type` in a oneOf schema, without `type` and `name`.
+    /// The property names of each `type` in a oneOf schema, without `type`, `name` and `name_pt`.
     fn schema_fields(schema: &serde_json::Value) -> Vec<(String, Vec<String>)> {
         let mut out = Vec::new();
         for variant in schema["oneOf"].as_array().expect("one shape per type") {
@@ -588,7 +597,7 @@ mod tests {
                 .to_owned();
             let mut fields: Vec<String> = props
                 .keys()
-                .filter(|k| *k != "type" && *k != "name")
+                .filter(|k| *k != "type" && *k != "name" && *k != "name_pt")
                 .cloned()
                 .collect();
             fields.sort();

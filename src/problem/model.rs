@@ -12,8 +12,12 @@ use crate::geometry::{Ray, Shape};
 pub struct Problem<R: Real> {
     /// The file's `title`, shown as the explanation's heading.
     pub title: Option<String>,
+    /// The title in Portuguese, when the file gives one.
+    pub title_pt: Option<String>,
     /// The file's `question`, as written.
     pub question: Option<String>,
+    /// The question in Portuguese, when the file gives one.
+    pub question_pt: Option<String>,
     /// I_a and the point, directional and spot lights, as the core takes them.
     pub lights: LightSet<R>,
     /// For each light in `lights.lights`, where it came from.
@@ -147,6 +151,8 @@ pub struct LightInfo<R: Real> {
     pub file_index: usize,
     /// The light's `name` in the file.
     pub name: Option<String>,
+    /// The name in Portuguese, when the file gives one.
+    pub name_pt: Option<String>,
     /// "point", "directional" or "spot".
     pub kind: &'static str,
     /// The length of the given direction or axis, when it was not 1 (it was normalised).
@@ -160,6 +166,8 @@ pub struct AmbientInfo<R: Real> {
     pub file_index: usize,
     /// Its `name` in the file.
     pub name: Option<String>,
+    /// The name in Portuguese, when the file gives one.
+    pub name_pt: Option<String>,
     /// Its colour, which adds to I_a (Eq. 4.5).
     pub color: V3<R>,
 }

@@ -174,7 +174,9 @@ pub fn validate_in<R: Real>(
     }
     Ok(Problem {
         title: file.title.clone(),
+        title_pt: file.title_pt.clone(),
         question: file.question.clone(),
+        question_pt: file.question_pt.clone(),
         lights,
         light_info,
         ambient_info,
@@ -522,6 +524,7 @@ fn lights<R: Real>(specs: &[LightSpec]) -> Result<Lights<R>, Invalid> {
                 ambient_info.push(AmbientInfo {
                     file_index: i,
                     name,
+                    name_pt: spec.name_pt.clone(),
                     color: c,
                 });
                 continue;
@@ -570,6 +573,7 @@ fn lights<R: Real>(specs: &[LightSpec]) -> Result<Lights<R>, Invalid> {
         info.push(LightInfo {
             file_index: i,
             name,
+            name_pt: spec.name_pt.clone(),
             kind: spec.kind.name(),
             direction_length,
         });

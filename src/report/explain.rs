@@ -78,19 +78,31 @@ pub struct Step {
     pub eq: Option<Ref>,
 }
 
+/// One row of a problem's data (the handout's table): what is given, and its value.
+#[derive(Clone, Debug, PartialEq)]
+pub struct DataRow {
+    /// What the row gives: "Point light “white light”", "Normal at P", …
+    pub what: Vec<Inline>,
+    /// Its value: "P_l = (1, 1, 1), C_l = (1, 1, 1), f = 1 (linear)".
+    pub value: Vec<Inline>,
+}
+
 /// The explanation of one solved problem.
 #[derive(Clone, Debug)]
 pub struct Explanation {
     /// The language of its words.
     pub lang: Lang,
-    /// The problem's title, or "Problem".
+    /// The problem's title in `lang` (`title_pt` in Portuguese, when the file has one), or
+    /// "Problem".
     pub title: String,
-    /// The problem file's path, as given.
+    /// The file's name, without its folder (no machine path reaches a document).
     pub file: String,
     /// "f32" or "f64".
     pub precision: &'static str,
     /// The problem's question, as written.
     pub question: Option<String>,
+    /// What the problem gives, row by row, for the statement (the student's handout).
+    pub data: Vec<DataRow>,
     /// The findings, as sentences.
     pub findings: Vec<String>,
     /// A ray problem's intersection, as written.
@@ -105,7 +117,8 @@ pub struct Explanation {
 /// The problem as written, or another reading of it.
 #[derive(Clone, Debug)]
 pub struct Part {
-    /// "Solution (the problem as written)" or "Reading: …".
+    /// "Solution (the problem as written)", or the reading's label ("Likely intended reading:
+    /// …").
     pub heading: String,
     /// Why a reading is shown and what it assumes.
     pub explanation: Option<String>,
@@ -152,6 +165,11 @@ pub struct Diagram {
     pub v: Option<[f64; 3]>,
     /// Whether the light lights the point, and if not why.
     pub status: LightStatus,
+    /// A spot's cone: its axis D_l (unit) and half-angle γ in degrees.
+    pub cone: Option<([f64; 3], f64)>,
+    /// A ray problem's ray: its unit direction D and the t of the point (negative: the point
+    /// is behind the ray's origin, on its line).
+    pub ray: Option<([f64; 3], f64)>,
 }
 
 fn v<R: Real>(x: V3<R>) -> [f64; 3] {
@@ -190,28 +208,39 @@ pub fn explain<R: Real>(
         heading: Phrase::AsWritten.get(lang).to_owned(),
         explanation: None,
         ray: None,
-        shading: s.evaluation.as_ref().map(|e| shading(problem, e, lang)),
+        shading: s
+            .evaluation
+            .as_ref()
+            .map(|e| shading(problem, e, lang, ray_mark(s.intersection.as_ref()))),
     })
     .chain(s.readings.iter().map(|r| Part {
-        heading: format!(
-            "{}{}",
-            Phrase::ReadingHeading.get(lang),
-            messages::reading_label_in(r.code, lang)
+        heading: capitalised(messages::reading_label_in(r.code, lang)),
+        explanation: Some(
+            messages::reading_explanation_given(r.code, lang, problem.viewer.is_some()).to_owned(),
         ),
-        explanation: Some(messages::reading_explanation_in(r.code, lang).to_owned()),
         ray: r.intersection.as_ref().map(|x| intersection(x, lang)),
-        shading: Some(shading(problem, &r.evaluation, lang)),
+        shading: Some(shading(
+            problem,
+            &r.evaluation,
+            lang,
+            ray_mark(r.intersection.as_ref()),
+        )),
     }))
     .collect();
+    let title = match lang {
+        Lang::Pt => problem.title_pt.clone().or_else(|| s.title.clone()),
+        Lang::En => s.title.clone(),
+    };
     Explanation {
         lang,
-        title: s
-            .title
-            .clone()
-            .unwrap_or_else(|| Phrase::Problem.get(lang).to_owned()),
-        file: file.to_owned(),
+        title: title.unwrap_or_else(|| Phrase::Problem.get(lang).to_owned()),
+        file: file_name(file),
         precision: R::NAME,
-        question: s.question.clone(),
+        question: match lang {
+            Lang::Pt => problem.question_pt.clone().or_else(|| s.question.clone()),
+            Lang::En => s.question.clone(),
+        },
+        data: data(problem, lang),
         findings: s
             .findings
             .iter()
@@ -225,6 +254,282 @@ pub fn explain<R: Real>(
             .map(|w| messages::warning(w, lang))
             .collect(),
     }
+}
+
+impl Explanation {
+    /// The line under the title: the file's name, and the precision when it is not the default
+    /// f64 ("4.2.json", "4.2.json, f32").
+    pub fn source(&self) -> String {
+        if self.precision == "f64" {
+            self.file.clone()
+        } else {
+            format!("{}, {}", self.file, self.precision)
+        }
+    }
+
+    /// The answer key's cells: the answer to the problem as written (its colour clamped to
+    /// [0, 1] and in 8 bits, or that there is nothing to shade), then each other reading's
+    /// label and colour.
+    pub fn key(&self) -> (Vec<Inline>, Vec<Vec<Inline>>) {
+        let answer = |sh: Option<&Shading>| match sh {
+            Some(sh) => vec![
+                Color(sh.clamped),
+                t(" · "),
+                Inline::Rgb8(sh.rgb8),
+                Inline::Swatch(sh.rgb8),
+            ],
+            None => vec![p(Phrase::NoHitAnswer, self.lang)],
+        };
+        let mut parts = self.parts.iter();
+        let written = answer(parts.next().and_then(|x| x.shading.as_ref()));
+        let readings = parts
+            .map(|x| {
+                let mut line = vec![t(format!("{}: ", x.heading))];
+                line.extend(answer(x.shading.as_ref()));
+                line
+            })
+            .collect();
+        (written, readings)
+    }
+}
+
+/// A file's name without its folder: "exercises/4.2.json" is "4.2.json".
+fn file_name(file: &str) -> String {
+    std::path::Path::new(file)
+        .file_name()
+        .map_or_else(|| file.to_owned(), |n| n.to_string_lossy().into_owned())
+}
+
+/// The text with its first letter in capitals ("likely …" becomes "Likely …").
+fn capitalised(s: &str) -> String {
+    let mut c = s.chars();
+    match c.next() {
+        Some(first) => first.to_uppercase().chain(c).collect(),
+        None => String::new(),
+    }
+}
+
+/// A name as the explanation quotes it: “white light”.
+pub fn quoted(name: &str) -> String {
+    format!("“{name}”")
+}
+
+/// What a problem gives, row by row (the statement's table, and a pixel's scene).
+pub(crate) fn data_rows<R: Real>(problem: &Problem<R>, lang: Lang) -> Vec<DataRow> {
+    data(problem, lang)
+}
+
+/// What a problem gives, row by row: the lights, the point or the ray and its surfaces, the
+/// viewer and the materials.
+fn data<R: Real>(problem: &Problem<R>, lang: Lang) -> Vec<DataRow> {
+    use crate::geometry::Shape;
+    use crate::problem::model::{NamedMaterial, Target};
+    let mut rows = Vec::new();
+    let mut row = |what: Vec<Inline>, value: Vec<Inline>| rows.push(DataRow { what, value });
+    let named = |base: String, name: Option<&str>| match name {
+        Some(n) => format!("{base} {}", quoted(n)),
+        None => base,
+    };
+    let local = |en: &Option<String>, pt: &Option<String>| match lang {
+        Lang::Pt => pt.clone().or_else(|| en.clone()),
+        Lang::En => en.clone(),
+    };
+    for a in &problem.ambient_info {
+        row(
+            vec![t(named(
+                Phrase::AmbientLight.get(lang).to_owned(),
+                local(&a.name, &a.name_pt).as_deref(),
+            ))],
+            vec![Math(Formula::IA), EQ, Color(v::<R>(a.color))],
+        );
+    }
+    for (l, info) in problem.lights.lights.iter().zip(&problem.light_info) {
+        let kind = match l.kind {
+            LightKind::Point { .. } => Phrase::PointLight,
+            LightKind::Spot { .. } => Phrase::SpotLight,
+            LightKind::Directional { .. } => Phrase::DirectionalLight,
+        };
+        let what = named(
+            kind.get(lang).to_owned(),
+            local(&info.name, &info.name_pt).as_deref(),
+        );
+        let sep = || t(", ");
+        let falloff = |f: Falloff| {
+            let word = match f {
+                Falloff::None => Phrase::FalloffNone,
+                Falloff::Linear => Phrase::FalloffLinear,
+                Falloff::Quadratic => Phrase::FalloffQuadratic,
+            };
+            vec![
+                sep(),
+                Math(Formula::F),
+                EQ,
+                Num(f64::from(f.exponent())),
+                t(format!(" ({})", word.get(lang))),
+            ]
+        };
+        let mut value = Vec::new();
+        match l.kind {
+            LightKind::Point {
+                position,
+                falloff: f,
+            } => {
+                value.extend([Math(Formula::PL), EQ, Vector(v::<R>(position)), sep()]);
+                value.extend([Math(Formula::CL), EQ, Color(v::<R>(l.color))]);
+                value.extend(falloff(f));
+            }
+            LightKind::Spot {
+                position,
+                falloff: f,
+                cone,
+            } => {
+                value.extend([Math(Formula::PL), EQ, Vector(v::<R>(position)), sep()]);
+                value.extend([Math(Formula::DL), EQ, Vector(v::<R>(cone.axis)), sep()]);
+                value.extend([
+                    Math(Formula::Gamma),
+                    EQ,
+                    Inline::Degrees(cone.angle_deg.to_f64()),
+                    sep(),
+                    Math(Formula::SpotExponent),
+                    EQ,
+                    Num(cone.exponent.to_f64()),
+                    sep(),
+                ]);
+                value.extend([Math(Formula::CL), EQ, Color(v::<R>(l.color))]);
+                value.extend(falloff(f));
+            }
+            LightKind::Directional { direction } => {
+                value.extend([Math(Formula::DL), EQ, Vector(v::<R>(direction)), sep()]);
+                value.extend([Math(Formula::CL), EQ, Color(v::<R>(l.color))]);
+            }
+        }
+        row(vec![t(what)], value);
+    }
+    let mut materials: Vec<&NamedMaterial<R>> = Vec::new();
+    match &problem.target {
+        Target::Point {
+            position,
+            normal,
+            material,
+        } => {
+            if let Some(pt) = position {
+                row(
+                    vec![p(Phrase::ThePoint, lang)],
+                    vec![Math(Formula::P), EQ, Vector(v::<R>(*pt))],
+                );
+            }
+            if let Some(nu) = normal {
+                row(
+                    vec![p(Phrase::NormalAt, lang), Math(Formula::P)],
+                    vec![Math(Formula::N), EQ, Vector(v::<R>(nu.given))],
+                );
+            }
+            materials.push(material);
+        }
+        Target::Ray {
+            ray,
+            direction,
+            surfaces,
+        } => {
+            row(
+                vec![p(Phrase::Ray, lang)],
+                vec![
+                    Math(Formula::O),
+                    EQ,
+                    Vector(v::<R>(ray.origin)),
+                    t(", "),
+                    Math(Formula::D),
+                    EQ,
+                    Vector(v::<R>(direction.given)),
+                ],
+            );
+            for sf in surfaces {
+                let mut value = match &sf.shape {
+                    Shape::Plane(pl) => vec![
+                        Math(Formula::Q),
+                        EQ,
+                        Vector(v::<R>(pl.point)),
+                        t(", "),
+                        Math(Formula::N),
+                        EQ,
+                        Vector(v::<R>(sf.normal.map_or(pl.normal, |n| n.given))),
+                    ],
+                    Shape::Sphere(sp) => vec![
+                        Math(Formula::Center),
+                        EQ,
+                        Vector(v::<R>(sp.center)),
+                        t(", "),
+                        Math(Formula::Radius),
+                        EQ,
+                        Num(sp.radius.to_f64()),
+                    ],
+                    Shape::Triangle(_) => continue,
+                };
+                if let Some(n) = &sf.material.name {
+                    value.push(t(format!("; {} {}", Phrase::Material.get(lang), quoted(n))));
+                }
+                let kind = match sf.shape {
+                    Shape::Plane(_) => Phrase::Plane,
+                    _ => Phrase::Sphere,
+                };
+                row(
+                    vec![t(format!(
+                        "{}: {}",
+                        Phrase::Surface.get(lang),
+                        kind.get(lang)
+                    ))],
+                    value,
+                );
+                if !materials
+                    .iter()
+                    .any(|m| m.name.is_some() && m.name == sf.material.name)
+                {
+                    materials.push(&sf.material);
+                }
+            }
+        }
+        Target::Scene { .. } => {}
+    }
+    if let Some(e) = problem.viewer {
+        row(
+            vec![p(Phrase::TheViewer, lang)],
+            vec![Math(Formula::E), EQ, Vector(v::<R>(e))],
+        );
+    }
+    for m in materials {
+        let mut value = Vec::new();
+        let colors = [
+            (Formula::OA, &m.spec.ambient),
+            (Formula::OD, &m.spec.diffuse),
+            (Formula::OS, &m.spec.specular),
+        ];
+        for (symbol, spec) in colors {
+            if let Some(c) = spec {
+                if !value.is_empty() {
+                    value.push(t(", "));
+                }
+                value.extend([Math(symbol), EQ]);
+                value.extend(color_spec(c));
+            }
+        }
+        if m.spec.shininess.is_some() {
+            value.extend([t(", "), Math(Formula::NS), EQ, Num(m.material.n_s.to_f64())]);
+        }
+        if let (Some(o_r), Some(ReflectivitySource::Explicit)) = (m.material.o_r, m.reflectivity) {
+            value.extend([t(", "), Math(Formula::OR), EQ, Color(v::<R>(o_r))]);
+        }
+        if value.is_empty() {
+            continue;
+        }
+        row(
+            vec![t(named(
+                capitalised(Phrase::Material.get(lang)),
+                m.name.as_deref(),
+            ))],
+            value,
+        );
+    }
+    rows
 }
 
 fn intersection<R: Real>(x: &Intersection<R>, lang: Lang) -> Vec<Step> {
@@ -298,7 +603,17 @@ fn color_spec(c: &ColorSpec) -> Vec<Inline> {
     }
 }
 
-fn shading<R: Real>(problem: &Problem<R>, e: &Evaluation<R>, lang: Lang) -> Shading {
+/// The ray of an intersection, for the diagrams: its unit direction and the point's t.
+fn ray_mark<R: Real>(x: Option<&Intersection<R>>) -> Option<([f64; 3], f64)> {
+    x.and_then(|x| x.t.map(|t| (v::<R>(x.direction), t.to_f64())))
+}
+
+fn shading<R: Real>(
+    problem: &Problem<R>,
+    e: &Evaluation<R>,
+    lang: Lang,
+    ray: Option<([f64; 3], f64)>,
+) -> Shading {
     // What is given.
     let mut given = Steps(Vec::new());
     if let Some(pt) = e.point {
@@ -344,7 +659,7 @@ fn shading<R: Real>(problem: &Problem<R>, e: &Evaluation<R>, lang: Lang) -> Shad
     let name = m
         .name
         .as_deref()
-        .map_or(String::new(), |n| format!(" \"{n}\""));
+        .map_or(String::new(), |n| format!(" {}", quoted(n)));
     given.push(
         0,
         vec![p(Phrase::Material, lang), t(format!("{name}:"))],
@@ -442,6 +757,10 @@ fn shading<R: Real>(problem: &Problem<R>, e: &Evaluation<R>, lang: Lang) -> Shad
             &mut diagrams,
             e,
         );
+    }
+
+    for d in &mut diagrams {
+        d.ray = ray;
     }
 
     // The total.
@@ -747,6 +1066,11 @@ fn light<R: Real>(
             r: s.r.map(v::<R>),
             v: e.viewer.map(|vw| v::<R>(vw.v)),
             status: term.status,
+            cone: match l.kind {
+                LightKind::Spot { cone, .. } => Some((v::<R>(cone.axis), cone.angle_deg.to_f64())),
+                _ => None,
+            },
+            ray: None,
         });
     }
 }

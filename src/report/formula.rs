@@ -96,6 +96,14 @@ pub enum Formula {
     Specular,
     /// I, the colour of Eq. 4.16.
     I,
+    /// P_l, a point or spot light's position.
+    PL,
+    /// Q, a point on a plane.
+    Q,
+    /// C, a sphere's centre.
+    Center,
+    /// r, a sphere's radius.
+    Radius,
 }
 
 impl Formula {
@@ -148,6 +156,10 @@ impl Formula {
             CosPhiPow => "(cos φ)^n_s",
             Specular => "O_s I_l (cos φ)^n_s",
             I => "I",
+            PL => "P_l",
+            Q => "Q",
+            Center => "C",
+            Radius => "r",
         }
     }
 
@@ -200,6 +212,10 @@ impl Formula {
             CosPhiPow => "(\\cos\\phi)^{n_s}",
             Specular => "O_s I_l (\\cos\\phi)^{n_s}",
             I => "I",
+            PL => "P_l",
+            Q => "Q",
+            Center => "C",
+            Radius => "r",
         }
     }
 }

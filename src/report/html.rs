@@ -7,7 +7,10 @@
 use std::fmt::Write;
 
 use super::diagram;
-use super::explain::{language_tag, nest, to_rgb8, Explanation, Inline, Node, Shading, Step};
+use super::document::{exercise_word, Document};
+use super::explain::{
+    language_tag, nest, to_rgb8, DataRow, Explanation, Inline, Node, Shading, Step,
+};
 use super::formula::{push_html_escaped, unicode_to_html};
 use super::lang::Lang;
 use super::messages::Phrase;
@@ -29,10 +32,13 @@ ol,ul{padding-left:1.6rem}li{margin:.1rem 0}
 .reading{color:#444;font-style:italic}
 .diagrams{display:flex;flex-wrap:wrap;gap:1rem}
 figure.diagram{margin:.4rem 0;max-width:340px}figcaption{font-size:.8em;color:#555}
+table.data,table.key{border-collapse:collapse;margin:.6rem 0}table.data td,table.data th,table.key td,table.key th{border-top:1px solid #ddd;padding:.25rem .6rem;text-align:left;vertical-align:top}
+.set{text-align:center;margin-bottom:1.5rem}.set .course{font-variant:small-caps;font-size:1.1rem}.set h1{font-size:1.8rem}
 svg text{font-family:'DejaVu Sans',sans-serif;font-size:14px}svg text.sym{font-weight:bold;font-style:italic}svg text.note{font-size:11px;fill:#777}svg text.mark{font-size:12px}
 ";
 
-fn esc(s: &str) -> String {
+/// Escapes text for HTML.
+pub(crate) fn esc(s: &str) -> String {
     let mut out = String::with_capacity(s.len());
     for c in s.chars() {
         push_html_escaped(&mut out, c);
@@ -49,7 +55,7 @@ fn swatch(rgb: [u8; 3], class: &str, title: &str) -> String {
 }
 
 /// A line's pieces as HTML.
-fn line(pieces: &[Inline]) -> String {
+pub(crate) fn line(pieces: &[Inline]) -> String {
     let mut s = String::new();
     for piece in pieces {
         match piece {
@@ -142,15 +148,17 @@ fn shading(out: &mut String, sh: &Shading, lang: Lang, id: &str) {
 
 /// The `<article>` of one explanation; `index` makes its ids unique in the page.
 pub(crate) fn write_article(x: &Explanation, index: usize) -> String {
-    let lang = x.lang;
+    article(x, index, &x.title)
+}
+
+fn article(x: &Explanation, index: usize, heading: &str) -> String {
     let mut out = String::new();
     let _ = writeln!(out, "<article class=\"problem\" id=\"problem-{index}\">");
     let _ = writeln!(
         out,
-        "<h1>{}</h1>\n<p class=\"source\">{} · {}</p>",
-        esc(&x.title),
-        esc(&x.file),
-        x.precision
+        "<h1>{}</h1>\n<p class=\"source\">{}</p>",
+        esc(heading),
+        esc(&x.source())
     );
     if let Some(q) = &x.question {
         let _ = writeln!(
@@ -159,6 +167,15 @@ pub(crate) fn write_article(x: &Explanation, index: usize) -> String {
             esc(q)
         );
     }
+    out.push_str(&write_parts(x, index));
+    out
+}
+
+/// The findings, the ray and the parts of an explanation, without its title and question
+/// (a pixel's rays share their scene's); `index` makes its ids unique in the page.
+pub(crate) fn write_parts(x: &Explanation, index: usize) -> String {
+    let lang = x.lang;
+    let mut out = String::new();
     if !x.findings.is_empty() {
         let _ = writeln!(
             out,
@@ -204,6 +221,130 @@ pub(crate) fn write_article(x: &Explanation, index: usize) -> String {
     out
 }
 
+/// One exercise's statement: its numbered heading, the question, and its data as a table.
+fn statement(out: &mut String, doc: &Document, i: usize) {
+    let x = &doc.exercises[i];
+    let _ = writeln!(
+        out,
+        "<article class=\"statement\" id=\"statement-{i}\">\n<h2>{}</h2>",
+        esc(&doc.heading(i))
+    );
+    if let Some(q) = &x.question {
+        let _ = writeln!(out, "<p class=\"question\">{}</p>", esc(q));
+    }
+    out.push_str(&data_table(&x.data, doc.lang));
+    out.push_str("</article>\n");
+}
+
+/// A problem's data as a table (nothing when there is none).
+pub(crate) fn data_table(rows: &[DataRow], lang: Lang) -> String {
+    if rows.is_empty() {
+        return String::new();
+    }
+    let mut out = format!(
+        "<table class=\"data\">\n<tr><th>{}</th><th>{}</th></tr>\n",
+        Phrase::Quantity.get(lang),
+        Phrase::Value.get(lang)
+    );
+    for row in rows {
+        let _ = writeln!(
+            out,
+            "<tr><td>{}</td><td>{}</td></tr>",
+            line(&row.what),
+            line(&row.value)
+        );
+    }
+    out.push_str("</table>\n");
+    out
+}
+
+/// The answer key: one table, a row per exercise.
+fn key(out: &mut String, doc: &Document) {
+    let lang = doc.lang;
+    let _ = writeln!(
+        out,
+        "<section class=\"key\">\n<h2>{}</h2>\n<table class=\"key\">\n<tr><th>{}</th><th>{}</th></tr>",
+        Phrase::AnswerKey.get(lang),
+        exercise_word(lang),
+        Phrase::Answer.get(lang)
+    );
+    for (i, x) in doc.exercises.iter().enumerate() {
+        let (written, readings) = x.key();
+        let mut cell = key_cell(&written);
+        for r in &readings {
+            let _ = write!(cell, "<br><small>{}</small>", key_cell(r));
+        }
+        let _ = writeln!(
+            out,
+            "<tr><td>{}</td><td>{cell}</td></tr>",
+            esc(&doc.heading(i))
+        );
+    }
+    out.push_str("</table>\n</section>\n");
+}
+
+/// A key's cell: the line, with a swatch where it shows an 8-bit colour.
+fn key_cell(pieces: &[Inline]) -> String {
+    let mut s = String::new();
+    for piece in pieces {
+        match piece {
+            Inline::Swatch(rgb) => s.push_str(&swatch(*rgb, "sw", "")),
+            Inline::Color(x) => s.push_str(&vec3(*x)),
+            other => s.push_str(&line(std::slice::from_ref(other))),
+        }
+    }
+    s
+}
+
+/// A document: the header, then the statements, the solutions or the answer key (or all
+/// three), as one page or (`fragment`) its body only.
+pub fn write_document(doc: &Document, options: HtmlOptions) -> String {
+    let mut out = String::new();
+    let h = doc.header;
+    if !h.is_empty() {
+        out.push_str("<header class=\"set\">\n");
+        if let (Some(c), Some(_)) = (&h.course, &h.title) {
+            let _ = writeln!(out, "<div class=\"course\">{}</div>", esc(c));
+        }
+        let _ = writeln!(out, "<h1>{}</h1>", esc(&h.document_title(doc)));
+        if let Some(b) = h.byline() {
+            let _ = writeln!(out, "<div class=\"byline\">{}</div>", esc(&b));
+        }
+        out.push_str("</header>\n");
+    }
+    if doc.contents.statements() {
+        for i in 0..doc.exercises.len() {
+            statement(&mut out, doc, i);
+        }
+    }
+    if doc.contents.solutions() {
+        for (i, x) in doc.exercises.iter().enumerate() {
+            out.push_str(&article(
+                x,
+                doc.first_number + i - 1,
+                &doc.solution_heading(i),
+            ));
+        }
+    }
+    if doc.contents.key() {
+        key(&mut out, doc);
+    }
+    if options.fragment {
+        return out;
+    }
+    page(&esc(&doc.header.document_title(doc)), &out, doc.lang)
+}
+
+/// A complete page around `body`.
+pub(crate) fn page(title: &str, body: &str, lang: Lang) -> String {
+    format!(
+        "<!DOCTYPE html>\n<html lang=\"{}\">\n<head>\n<meta charset=\"utf-8\">\n\
+         <meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n\
+         <title>{title}</title>\n<style>\n{STYLE}</style>\n</head>\n<body>\n{body}</body>\n</html>\n",
+        language_tag(lang)
+    )
+}
+
 /// How to write the HTML.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct HtmlOptions {
@@ -223,12 +364,7 @@ pub fn write_all(xs: &[Explanation], options: HtmlOptions, lang: Lang) -> String
     }
     let title = match xs {
         [one] => esc(&one.title),
-        _ => "phong".to_owned(),
+        _ => esc(Phrase::Solutions.get(lang)),
     };
-    format!(
-        "<!DOCTYPE html>\n<html lang=\"{}\">\n<head>\n<meta charset=\"utf-8\">\n\
-         <meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n\
-         <title>{title}</title>\n<style>\n{STYLE}</style>\n</head>\n<body>\n{articles}</body>\n</html>\n",
-        language_tag(lang)
-    )
+    page(&title, &articles, lang)
 }

@@ -9,14 +9,50 @@
 //! signs of the sentences become math, and a character the T1 fonts lack is written as its
 //! code point rather than breaking the build.
 
-use super::explain::{latex_math, nest, runs, Explanation, Node, Run, Shading, Step};
+use super::document::{exercise_word, Document};
+use super::explain::{
+    latex_math, nest, runs, DataRow, Explanation, Inline, Node, Run, Shading, Step,
+};
 use super::lang::Lang;
 use super::messages::Phrase;
 
-/// Escapes text for LaTeX (outside math).
+/// A symbol with a subscript written in prose ("k_a", "P_l", "O_R"): a letter, `_`, letters
+/// and digits, standing alone as a word. Its length in characters, if `chars[i..]` starts one.
+fn subscripted(chars: &[char], i: usize) -> Option<usize> {
+    let word = |c: &char| c.is_ascii_alphanumeric();
+    if i > 0 && (word(&chars[i - 1]) || chars[i - 1] == '_') {
+        return None;
+    }
+    if !(chars.get(i)?.is_ascii_alphabetic() && *chars.get(i + 1)? == '_') {
+        return None;
+    }
+    let sub = chars[i + 2..].iter().take_while(|c| word(c)).count();
+    let end = i + 2 + sub;
+    (sub > 0 && chars.get(end).is_none_or(|c| !word(c) && *c != '_')).then_some(end - i)
+}
+
+/// Escapes text for LaTeX (outside math). Symbols with a subscript ("n_s") become math, and
+/// so does a minus sign before a number ("-0.5", "−3/5"), so that prose and formulas share one
+/// minus sign.
 pub(crate) fn escape(s: &str) -> String {
     let mut out = String::with_capacity(s.len());
-    for c in s.chars() {
+    let chars: Vec<char> = s.chars().collect();
+    let mut i = 0;
+    while i < chars.len() {
+        if let Some(n) = subscripted(&chars, i) {
+            let sub: String = chars[i + 2..i + n].iter().collect();
+            out.push_str(&format!("\\ensuremath{{{}_{{{sub}}}}}", chars[i]));
+            i += n;
+            continue;
+        }
+        let c = chars[i];
+        let before_number = chars.get(i + 1).is_some_and(|d| d.is_ascii_digit())
+            && (i == 0 || !chars[i - 1].is_alphanumeric());
+        i += 1;
+        if c == '-' && before_number {
+            out.push_str("\\ensuremath{-}");
+            continue;
+        }
         let math = |m: &str| format!("\\ensuremath{{{m}}}");
         let piece: String = match c {
             '\\' => "\\textbackslash{}".into(),
@@ -78,16 +114,21 @@ fn swatch([r, g, b]: [u8; 3]) -> String {
     )
 }
 
-fn line(step: &Step, lang: Lang) -> String {
+/// A line's pieces: words escaped, each run of math in `$…$`.
+pub(crate) fn pieces(line: &[Inline]) -> String {
     let mut s = String::new();
-    for run in runs(&step.line) {
+    for run in runs(line) {
         match run {
             Run::Text(t) => s.push_str(&escape(&t)),
             Run::Math(m) => s.push_str(&format!("${}$", latex_math(&m))),
             Run::Swatch(rgb) => s.push_str(&swatch(rgb)),
         }
     }
-    let mut s = s.split_whitespace().collect::<Vec<_>>().join(" ");
+    s.split_whitespace().collect::<Vec<_>>().join(" ")
+}
+
+fn line(step: &Step, lang: Lang) -> String {
+    let mut s = pieces(&step.line);
     if let Some(eq) = step.eq {
         let eq = escape(&eq.text(lang)).replace(". ", ".~");
         s.push_str(&format!("\\hfill\\mbox{{\\small {eq}}}"));
@@ -121,24 +162,37 @@ fn shading(out: &mut String, sh: &Shading, lang: Lang) {
     block(out, Phrase::Given, &sh.given, false, lang);
     block(out, Phrase::Steps, &sh.steps, true, lang);
     block(out, Phrase::Total, &sh.total, false, lang);
+    for d in &sh.diagrams {
+        out.push_str(&super::diagram::tikz(d, lang));
+    }
 }
 
 /// The LaTeX body of one explanation: a `\section*` with its subsections.
 pub(crate) fn write_body(x: &Explanation) -> String {
-    let lang = x.lang;
+    body(x, &x.title)
+}
+
+fn body(x: &Explanation, heading: &str) -> String {
     let mut out = String::new();
-    out.push_str(&format!("\\section*{{{}}}\n", escape(&x.title)));
-    out.push_str(&format!(
-        "\\noindent\\emph{{{}, {}}}\n\n",
-        escape(&x.file),
-        x.precision
-    ));
+    out.push_str(&format!("\\section*{{{}}}\n", escape(heading)));
+    out.push_str(&format!("\\noindent\\emph{{{}}}\n\n", escape(&x.source())));
     if let Some(q) = &x.question {
         out.push_str(&format!(
-            "\\begin{{quote}}\n{}\n\\end{{quote}}\n\n",
+            "\\begin{{quote}}\\raggedright\n{}\n\\end{{quote}}\n\n",
             escape(q)
         ));
     }
+    out.push_str(&write_parts(x));
+    out
+}
+
+/// The findings, the ray and the parts of an explanation, without its title and question
+/// (a pixel's rays share their scene's). Ragged right: a step with a long value breaks its line
+/// early instead of running into the margin (the equation number stays at the right).
+pub(crate) fn write_parts(x: &Explanation) -> String {
+    let lang = x.lang;
+    let mut out = String::new();
+    out.push_str("\\begingroup\\raggedright\n");
     if !x.findings.is_empty() {
         out.push_str(&format!(
             "\\subsection*{{{}}}\n\\begin{{itemize}}\n",
@@ -168,6 +222,7 @@ pub(crate) fn write_body(x: &Explanation) -> String {
         }
         out.push('\n');
     }
+    out.push_str("\\par\\endgroup\n");
     out
 }
 
@@ -178,24 +233,150 @@ pub fn write_all(xs: &[Explanation], options: LatexOptions) -> String {
         .map(write_body)
         .collect::<Vec<_>>()
         .join("\n\\bigskip\n\n");
+    let lang = xs.first().map_or(Lang::En, |x| x.lang);
+    wrap(&body, options, lang)
+}
+
+/// The body as a complete document (babel in the explanation's language, so that Portuguese
+/// is hyphenated as Portuguese), or as a fragment with a comment naming the packages it needs.
+pub(crate) fn wrap(body: &str, options: LatexOptions, lang: Lang) -> String {
     if options.fragment {
         return format!(
-            "% phong solve --format latex --fragment: needs \\usepackage{{amsmath,xcolor}}\n{body}"
+            "% phong solve --format latex --fragment: needs \\usepackage{{amsmath,xcolor,tikz}}\n{body}"
         );
     }
+    let babel = match lang {
+        Lang::En => "english",
+        Lang::Pt => "brazilian",
+    };
     format!(
         "\\documentclass[11pt]{{article}}\n\
          \\usepackage[utf8]{{inputenc}}\n\
          \\usepackage[T1]{{fontenc}}\n\
+         \\usepackage[{babel}]{{babel}}\n\
          \\usepackage{{lmodern}}\n\
          \\usepackage{{amsmath}}\n\
          \\usepackage{{xcolor}}\n\
+         \\usepackage{{tikz}}\n\
          \\usepackage[a4paper,margin=2cm]{{geometry}}\n\
          \\setlength{{\\parindent}}{{0pt}}\n\
          \\begin{{document}}\n\n\
          {body}\n\
          \\end{{document}}\n"
     )
+}
+
+/// The problem set's header: course, title, author and date, centred.
+fn header(out: &mut String, doc: &Document) {
+    let h = doc.header;
+    if h.is_empty() {
+        return;
+    }
+    out.push_str("\\begin{center}\n");
+    if let Some(c) = &h.course {
+        out.push_str(&format!("{{\\large\\scshape {}}}\\\\[0.4em]\n", escape(c)));
+    }
+    if let Some(t) = &h.title {
+        out.push_str(&format!("{{\\LARGE\\bfseries {}}}\\\\[0.4em]\n", escape(t)));
+    }
+    if let Some(b) = h.byline() {
+        out.push_str(&format!("{}\n", escape(&b)));
+    }
+    out.push_str("\\end{center}\n\n");
+}
+
+/// One exercise's statement: its numbered heading, the question, and its data as a table.
+fn statement(out: &mut String, doc: &Document, i: usize) {
+    let x = &doc.exercises[i];
+    out.push_str(&format!("\\subsection*{{{}}}\n", escape(&doc.heading(i))));
+    if let Some(q) = &x.question {
+        out.push_str(&format!("{}\n\n", escape(q)));
+    }
+    out.push_str(&data_table(&x.data, doc.lang));
+}
+
+/// A problem's data as a table (nothing when there is none).
+pub(crate) fn data_table(rows: &[DataRow], lang: Lang) -> String {
+    if rows.is_empty() {
+        return String::new();
+    }
+    let mut out = String::from(
+        "\\begin{center}\n\\begin{tabular}{@{}p{0.3\\linewidth}p{0.64\\linewidth}@{}}\n\\hline\n",
+    );
+    out.push_str(&format!(
+        "\\textbf{{{}}} & \\textbf{{{}}} \\\\\n\\hline\n",
+        Phrase::Quantity.get(lang),
+        Phrase::Value.get(lang)
+    ));
+    for row in rows {
+        out.push_str(&format!(
+            "\\raggedright {} & \\raggedright {} \\tabularnewline\n",
+            pieces(&row.what),
+            pieces(&row.value)
+        ));
+    }
+    out.push_str("\\hline\n\\end{tabular}\n\\end{center}\n\n");
+    out
+}
+
+/// The answer key: one table, a row per exercise.
+fn key(out: &mut String, doc: &Document) {
+    let lang = doc.lang;
+    out.push_str(&format!("\\section*{{{}}}\n", Phrase::AnswerKey.get(lang)));
+    out.push_str(
+        "\\begin{center}\n\\begin{tabular}{@{}p{0.25\\linewidth}p{0.7\\linewidth}@{}}\n\\hline\n",
+    );
+    out.push_str(&format!(
+        "\\textbf{{{}}} & \\textbf{{{}}} \\\\\n\\hline\n",
+        exercise_word(lang),
+        Phrase::Answer.get(lang)
+    ));
+    for i in 0..doc.exercises.len() {
+        let (written, readings) = doc.exercises[i].key();
+        let mut cell = pieces(&written);
+        for r in &readings {
+            cell.push_str(&format!("\\newline {{\\small {}}}", pieces(r)));
+        }
+        out.push_str(&format!(
+            "\\raggedright {} & \\raggedright {} \\tabularnewline\n",
+            escape(&doc.heading(i)),
+            cell
+        ));
+    }
+    out.push_str("\\hline\n\\end{tabular}\n\\end{center}\n");
+}
+
+/// A document: the header, then the statements, the solutions or the key (or all three).
+pub fn write_document(doc: &Document, options: LatexOptions) -> String {
+    let mut out = String::new();
+    header(&mut out, doc);
+    if doc.contents.statements() {
+        if doc.contents.solutions() {
+            out.push_str(&format!(
+                "\\section*{{{}}}\n",
+                Phrase::Statements.get(doc.lang)
+            ));
+        }
+        for i in 0..doc.exercises.len() {
+            statement(&mut out, doc, i);
+        }
+    }
+    if doc.contents.solutions() {
+        if doc.contents.statements() {
+            out.push_str("\\clearpage\n");
+        }
+        let bodies: Vec<String> = (0..doc.exercises.len())
+            .map(|i| body(&doc.exercises[i], &doc.solution_heading(i)))
+            .collect();
+        out.push_str(&bodies.join("\n\\bigskip\n\n"));
+    }
+    if doc.contents.key() {
+        if doc.contents.solutions() {
+            out.push_str("\\clearpage\n");
+        }
+        key(&mut out, doc);
+    }
+    wrap(&out, options, doc.lang)
 }
 
 #[cfg(test)]
@@ -206,7 +387,7 @@ mod tests {
     fn tex_special_characters_in_user_text_are_escaped() {
         assert_eq!(
             escape(r"50% of $x_1 & #2 {a} ~ ^ \ "),
-            r"50\% of \$x\_1 \& \#2 \{a\} \textasciitilde{} \^{} \textbackslash{} "
+            r"50\% of \$\ensuremath{x_{1}} \& \#2 \{a\} \textasciitilde{} \^{} \textbackslash{} "
         );
     }
 
@@ -217,6 +398,11 @@ mod tests {
             "cos \\ensuremath{\\theta} \\ensuremath{\\le} 0"
         );
         assert_eq!(escape("reflexão difusa"), "reflexão difusa");
+        assert_eq!(
+            escape("k_a = 1, O_R(8, 4, 6), t = -90, 8-bit"),
+            "\\ensuremath{k_{a}} = 1, \\ensuremath{O_{R}}(8, 4, 6), t = \\ensuremath{-}90, 8-bit"
+        );
+        assert_eq!(escape("lights[0]_x"), "lights[0]\\_x");
     }
 
     #[test]

@@ -2,7 +2,10 @@
 //! its value in `$…$` math (GitHub, GitLab, Obsidian, Jupyter and pandoc render it) and the
 //! chapter's equation number, ready to paste into notes. It lays out an [`Explanation`].
 
-use super::explain::{latex_math, nest, runs, Explanation, Node, Run, Shading, Step};
+use super::document::{exercise_word, Document};
+use super::explain::{
+    latex_math, nest, runs, DataRow, Explanation, Inline, Node, Run, Shading, Step,
+};
 use super::lang::Lang;
 use super::messages::Phrase;
 
@@ -21,10 +24,10 @@ pub(crate) fn escape(s: &str) -> String {
     out
 }
 
-/// A line of a step: words escaped, math in `$…$`.
-fn line(step: &Step, lang: Lang) -> String {
+/// A line's pieces: words escaped, math in `$…$`.
+pub(crate) fn pieces(line: &[Inline]) -> String {
     let mut s = String::new();
-    for run in runs(&step.line) {
+    for run in runs(line) {
         match run {
             Run::Text(t) => s.push_str(&escape(&t)),
             Run::Math(m) => {
@@ -35,7 +38,12 @@ fn line(step: &Step, lang: Lang) -> String {
             Run::Swatch(_) => {}
         }
     }
-    let mut s = s.split_whitespace().collect::<Vec<_>>().join(" ");
+    s.split_whitespace().collect::<Vec<_>>().join(" ")
+}
+
+/// A line of a step: words escaped, math in `$…$`.
+fn line(step: &Step, lang: Lang) -> String {
+    let mut s = pieces(&step.line);
     if let Some(eq) = step.eq {
         s.push_str(&format!(" — *{}*", eq.text(lang)));
     }
@@ -68,21 +76,43 @@ fn block(out: &mut String, heading: Phrase, steps: &[Step], numbered: bool, lang
     out.push('\n');
 }
 
-fn shading(out: &mut String, sh: &Shading, lang: Lang) {
+fn shading(out: &mut String, sh: &Shading, lang: Lang, id: &str) {
     block(out, Phrase::Given, &sh.given, false, lang);
     block(out, Phrase::Steps, &sh.steps, true, lang);
     block(out, Phrase::Total, &sh.total, false, lang);
+    // The diagrams inline, as the same SVG as the HTML's (Markdown passes HTML through).
+    for d in &sh.diagrams {
+        out.push_str(&super::diagram::svg(
+            d,
+            &format!("{id}-light{}", d.light_index),
+            lang,
+        ));
+        out.push('\n');
+    }
 }
 
 /// The Markdown of one explanation.
 pub fn write_explanation(x: &Explanation) -> String {
-    let lang = x.lang;
+    explanation(x, &x.title, 0)
+}
+
+/// One explanation under `heading`; `index` makes its diagrams' ids unique in the document.
+fn explanation(x: &Explanation, heading: &str, index: usize) -> String {
     let mut out = String::new();
-    out.push_str(&format!("## {}\n\n", escape(&x.title)));
-    out.push_str(&format!("*{}, {}*\n\n", escape(&x.file), x.precision));
+    out.push_str(&format!("## {}\n\n", escape(heading)));
+    out.push_str(&format!("*{}*\n\n", escape(&x.source())));
     if let Some(q) = &x.question {
         out.push_str(&format!("> {}\n\n", escape(q)));
     }
+    out.push_str(&write_parts(x, index));
+    out
+}
+
+/// The findings, the ray and the parts of an explanation, without its title and question
+/// (a pixel's rays share their scene's).
+pub(crate) fn write_parts(x: &Explanation, index: usize) -> String {
+    let lang = x.lang;
+    let mut out = String::new();
     if !x.findings.is_empty() {
         out.push_str(&format!("### {}\n\n", Phrase::Findings.get(lang)));
         for f in &x.findings {
@@ -95,7 +125,7 @@ pub fn write_explanation(x: &Explanation) -> String {
         list(&mut out, &nest(ray), 0, false, lang);
         out.push('\n');
     }
-    for part in &x.parts {
+    for (i, part) in x.parts.iter().enumerate() {
         out.push_str(&format!("### {}\n\n", escape(&part.heading)));
         if let Some(e) = &part.explanation {
             out.push_str(&format!("*{}*\n\n", escape(e)));
@@ -105,7 +135,7 @@ pub fn write_explanation(x: &Explanation) -> String {
             out.push('\n');
         }
         match &part.shading {
-            Some(sh) => shading(&mut out, sh, lang),
+            Some(sh) => shading(&mut out, sh, lang, &format!("diagram-{index}-{i}")),
             None => out.push_str(&format!("{}\n\n", escape(Phrase::NothingToShade.get(lang)))),
         }
     }
@@ -115,9 +145,90 @@ pub fn write_explanation(x: &Explanation) -> String {
 /// The Markdown of several explanations, separated by rules.
 pub fn write_all(xs: &[Explanation]) -> String {
     xs.iter()
-        .map(write_explanation)
+        .enumerate()
+        .map(|(i, x)| explanation(x, &x.title, i))
         .collect::<Vec<_>>()
         .join("---\n\n")
+}
+
+/// A problem's data as a table (nothing when there is none).
+pub(crate) fn data_table(rows: &[DataRow], lang: Lang) -> String {
+    if rows.is_empty() {
+        return String::new();
+    }
+    let mut out = format!(
+        "| {} | {} |\n|---|---|\n",
+        Phrase::Quantity.get(lang),
+        Phrase::Value.get(lang)
+    );
+    for row in rows {
+        out.push_str(&format!(
+            "| {} | {} |\n",
+            pieces(&row.what),
+            pieces(&row.value)
+        ));
+    }
+    out.push('\n');
+    out
+}
+
+/// A document: the header, then the statements (each with its data as a table), the solutions
+/// or the answer key (one table), or all three.
+pub fn write_document(doc: &Document) -> String {
+    let lang = doc.lang;
+    let mut out = String::new();
+    let h = doc.header;
+    if !h.is_empty() {
+        out.push_str(&format!("# {}\n\n", escape(&h.document_title(doc))));
+        if let (Some(c), Some(_)) = (&h.course, &h.title) {
+            out.push_str(&format!("**{}**\n\n", escape(c)));
+        }
+        if let Some(b) = h.byline() {
+            out.push_str(&format!("{}\n\n", escape(&b)));
+        }
+    }
+    if doc.contents.statements() {
+        for (i, x) in doc.exercises.iter().enumerate() {
+            out.push_str(&format!("## {}\n\n", escape(&doc.heading(i))));
+            if let Some(q) = &x.question {
+                out.push_str(&format!("{}\n\n", escape(q)));
+            }
+            out.push_str(&data_table(&x.data, lang));
+        }
+    }
+    if doc.contents.solutions() {
+        if doc.contents.statements() {
+            out.push_str("---\n\n");
+        }
+        let bodies: Vec<String> = doc
+            .exercises
+            .iter()
+            .enumerate()
+            .map(|(i, x)| explanation(x, &doc.solution_heading(i), doc.first_number + i - 1))
+            .collect();
+        out.push_str(&bodies.join("---\n\n"));
+    }
+    if doc.contents.key() {
+        if doc.contents.solutions() {
+            out.push_str("---\n\n");
+        }
+        out.push_str(&format!(
+            "## {}\n\n| {} | {} |\n|---|---|\n",
+            Phrase::AnswerKey.get(lang),
+            exercise_word(lang),
+            Phrase::Answer.get(lang)
+        ));
+        for (i, x) in doc.exercises.iter().enumerate() {
+            let (written, readings) = x.key();
+            let mut cell = pieces(&written);
+            for r in &readings {
+                cell.push_str(&format!("<br>{}", pieces(r)));
+            }
+            out.push_str(&format!("| {} | {} |\n", escape(&doc.heading(i)), cell));
+        }
+        out.push('\n');
+    }
+    out
 }
 
 #[cfg(test)]

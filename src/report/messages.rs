@@ -29,6 +29,12 @@ pub fn pick<T>(lang: Lang, en: T, pt: T) -> T {
     }
 }
 
+/// Every fixed phrase of the explanations in `lang`, in the order declared: the catalogue a
+/// translator reads, and the one `tests/portuguese.rs` checks outputs against.
+pub fn catalogue(lang: Lang) -> Vec<&'static str> {
+    Phrase::ALL.iter().map(|p| p.get(lang)).collect()
+}
+
 /// Declares the fixed phrases: `Name => "English", "Português";`. Leaving one language out is a
 /// compile error (the macro's pattern does not match).
 macro_rules! phrases {
@@ -40,9 +46,8 @@ macro_rules! phrases {
         }
 
         impl Phrase {
-            /// Every phrase, for tests.
-            #[cfg(test)]
-            pub const ALL: &'static [Phrase] = &[$(Phrase::$name,)*];
+            /// Every phrase, in the order declared.
+            pub(crate) const ALL: &'static [Phrase] = &[$(Phrase::$name,)*];
 
             /// The phrase in `lang`.
             pub fn get(self, lang: Lang) -> &'static str {
@@ -60,7 +65,6 @@ phrases! {
     Findings => "Findings", "Observações";
     Ray => "Ray", "Raio";
     AsWritten => "Solution (the problem as written)", "Solução (o problema como escrito)";
-    ReadingHeading => "Reading: ", "Leitura: ";
     NothingToShade => "no point to shade: the ray hits nothing",
         "nenhum ponto a iluminar: o raio não atinge nada";
     Given => "Given", "Dados";
@@ -124,6 +128,7 @@ phrases! {
     DiagramOf => "Diagram for ", "Diagrama para ";
     LightMark => "light", "fonte de luz";
     ViewerMark => "viewer", "observador";
+    RayOriginMark => "ray's origin O", "origem O do raio";
     BackSide => "back side", "lado de trás";
     VProjected => "V is not in this plane: its projection is drawn.",
         "V não está neste plano: sua projeção é desenhada.";
@@ -132,6 +137,22 @@ phrases! {
     LAlongN => "L is along N: every plane through N is a plane of incidence; this one is chosen to hold V.",
         "L está na direção de N: todo plano que contém N é um plano de incidência; este foi escolhido para conter V.";
     Swatch => "the colour, clamped to [0, 1]", "a cor, limitada a [0, 1]";
+    // The statement's data and the answer key.
+    AmbientLight => "Ambient light", "Luz ambiente";
+    PointLight => "Point light", "Luz pontual";
+    SpotLight => "Spot light", "Luz spot";
+    DirectionalLight => "Directional light", "Luz direcional";
+    ThePoint => "Point", "Ponto";
+    NormalAt => "Normal at ", "Normal em ";
+    TheViewer => "Viewer", "Observador";
+    Surface => "Surface", "Superfície";
+    Statements => "Statements", "Enunciados";
+    Solutions => "Solutions", "Soluções";
+    AnswerKey => "Answer key", "Gabarito";
+    Quantity => "Given", "Dado";
+    Value => "Value", "Valor";
+    Answer => "Answer (as written)", "Resposta (como escrito)";
+    NoHitAnswer => "no hit: the ray hits nothing", "nenhuma interseção: o raio não atinge nada";
 }
 
 /// The word for a light's kind, as the file names it ("point", "directional", "spot").
@@ -155,8 +176,19 @@ pub fn surface_kind(kind: &str, lang: Lang) -> &str {
     }
 }
 
-/// "lights[1] (point) \"key\"", or "lights[1] (pontual) \"key\"" in Portuguese.
-pub fn light_name_in<R: Real>(problem: &Problem<R>, file_index: usize, lang: Lang) -> String {
+/// "lights[1] (point) “key”", or "lights[1] (pontual) “principal”" in Portuguese (the
+/// light's `name_pt`, when it has one).
+pub(crate) fn light_name_in<R: Real>(
+    problem: &Problem<R>,
+    file_index: usize,
+    lang: Lang,
+) -> String {
+    light_label(problem, file_index, lang, false)
+}
+
+/// A light's label; `json` keeps the English name in straight quotes, as the JSON's sentences
+/// have always had it.
+fn light_label<R: Real>(problem: &Problem<R>, file_index: usize, lang: Lang, json: bool) -> String {
     // The lights are in file order: a binary search, not a scan (a scan per light made the
     // report of a problem with many lights quadratic).
     let info = problem
@@ -166,23 +198,32 @@ pub fn light_name_in<R: Real>(problem: &Problem<R>, file_index: usize, lang: Lan
         .map(|k| &problem.light_info[k]);
     let kind = light_kind(info.map_or("light", |i| i.kind), lang);
     let label = format!("lights[{file_index}] ({kind})");
-    match info.and_then(|i| i.name.as_deref()) {
-        Some(name) => format!("{label} \"{name}\""),
+    let name = info.and_then(|i| match lang {
+        Lang::Pt => i.name_pt.as_deref().or(i.name.as_deref()),
+        Lang::En => i.name.as_deref(),
+    });
+    match name {
+        Some(name) if json => format!("{label} \"{name}\""),
+        Some(name) => format!("{label} {}", super::explain::quoted(name)),
         None => label,
     }
 }
 
 /// The sentence for a finding, in English (as the JSON has it).
 pub fn finding<R: Real>(problem: &Problem<R>, f: &Finding) -> String {
-    finding_in(problem, f, Lang::En)
+    finding_with(problem, f, Lang::En, true)
 }
 
 /// The sentence for a finding.
 pub fn finding_in<R: Real>(problem: &Problem<R>, f: &Finding, lang: Lang) -> String {
+    finding_with(problem, f, lang, false)
+}
+
+fn finding_with<R: Real>(problem: &Problem<R>, f: &Finding, lang: Lang, json: bool) -> String {
     let p = R::NAME;
     let light = f
         .light
-        .map(|i| light_name_in(problem, i, lang))
+        .map(|i| light_label(problem, i, lang, json))
         .unwrap_or_default();
     match f.data {
         FindingData::HitBehindOrigin { t } => pick(
@@ -622,6 +663,151 @@ pub fn reading_explanation_in(code: ReadingCode, lang: Lang) -> &'static str {
              problema como escrito",
         ),
     }
+}
+
+/// Why a reading is shown, for a problem that gives a viewer or not: the line's hit keeps the
+/// problem's viewer where it gives one, so its V is not −D then.
+pub fn reading_explanation_given(code: ReadingCode, lang: Lang, viewer: bool) -> &'static str {
+    match code {
+        ReadingCode::LineBehindOrigin if viewer => pick(
+            lang,
+            "the hit at t < 0 is behind the ray's origin; it is the hit of the ray with its \
+             direction reversed, shaded for the viewer the problem gives (V from the viewer to \
+             the point). This is not the problem as written",
+            "a interseção em t < 0 está atrás da origem do raio; é a interseção do raio com a \
+             direção invertida, iluminada para o observador dado pelo problema (V do \
+             observador para o ponto). Este não é o problema como escrito",
+        ),
+        _ => reading_explanation_in(code, lang),
+    }
+}
+
+/// The Portuguese of the error messages' common parts, longest first where one contains
+/// another: each English fragment is replaced by its Portuguese wherever it occurs. Field
+/// names, file names and values are left as they are (a file's fields are its own words).
+/// A fragment not listed stays English: extend the list as messages are added.
+const ERRORS_PT: &[(&str, &str)] = &[
+    // The frame of every message.
+    (". Fix: ", ". Correção: "),
+    // Files.
+    ("cannot read the file: ", "não é possível ler o arquivo: "),
+    ("No such file or directory (os error 2)", "arquivo ou pasta inexistente (erro 2 do sistema)"),
+    ("Permission denied (os error 13)", "permissão negada (erro 13 do sistema)"),
+    ("Is a directory (os error 21)", "é uma pasta (erro 21 do sistema)"),
+    (
+        "check the path, and that the file exists and is readable",
+        "confira o caminho, e que o arquivo existe e pode ser lido",
+    ),
+    ("cannot write ", "não é possível escrever "),
+    ("standard output", "a saída padrão"),
+    // Syntax (serde's words).
+    ("unknown field ", "campo desconhecido "),
+    (", expected one of ", ", esperado um de "),
+    (
+        "remove the field or correct its spelling (`phong schema` lists every field)",
+        "remova o campo ou corrija sua grafia (`phong schema` lista todos os campos)",
+    ),
+    ("invalid type: ", "tipo inválido: "),
+    ("integer ", "inteiro "),
+    ("floating point ", "número "),
+    ("string ", "texto "),
+    (", expected a string", ", esperado um texto"),
+    (", expected a sequence", ", esperada uma lista"),
+    ("see `phong schema` for the expected form", "veja em `phong schema` a forma esperada"),
+    ("EOF while parsing a value", "fim do arquivo no meio de um valor"),
+    ("EOF while parsing an object", "fim do arquivo no meio de um objeto"),
+    ("EOF while parsing a list", "fim do arquivo no meio de uma lista"),
+    ("EOF while parsing a string", "fim do arquivo no meio de um texto"),
+    ("expected value", "esperado um valor"),
+    ("expected `,` or `}`", "esperado `,` ou `}`"),
+    ("expected `,` or `]`", "esperado `,` ou `]`"),
+    ("trailing characters", "caracteres a mais no fim"),
+    ("one of the words ", "uma das palavras "),
+    // Missing and refused values.
+    ("missing field ", "campo ausente "),
+    ("missing: ", "ausente: "),
+    ("a point light needs ", "uma luz pontual precisa de "),
+    ("a spot light needs ", "uma luz spot precisa de "),
+    ("a directional light needs ", "uma luz direcional precisa de "),
+    ("an ambient light needs ", "uma luz ambiente precisa de "),
+    (": it gives ", ": dá "),
+    ("Correção: add ", "Correção: acrescente "),
+    ("the problem has nothing to shade", "o problema não tem nada a iluminar"),
+    ("the file has no answer key to check", "o arquivo não tem gabarito para conferir"),
+    ("pass --answer ", "passe --answer "),
+    (" to the file", " ao arquivo"),
+    (
+        "give \"point\" (with \"material\", and \"position\" and \"normal\" where lights need them), \"ray\" with \"surfaces\", or a \"camera\" with \"surfaces\"",
+        "dê \"point\" (com \"material\", e \"position\" e \"normal\" onde as fontes de luz precisarem), \"ray\" com \"surfaces\", ou uma \"camera\" com \"surfaces\"",
+    ),
+    // What each field gives (problem/format.rs's purposes).
+    ("P_l, for L and d (Eq. 4.1)", "P_l, para L e d (Eq. 4.1)"),
+    ("a point of the plane", "um ponto do plano"),
+    (
+        "f in I_l = C_l/d^f (Eq. 4.2, 4.3): 0 none, 1 linear, 2 quadratic",
+        "f em I_l = C_l/d^f (Eq. 4.2, 4.3): 0 sem decaimento, 1 linear, 2 quadrático",
+    ),
+    ("the cone's axis D_l (Eq. 4.4)", "o eixo D_l do cone (Eq. 4.4)"),
+    ("the cone's half-angle γ in degrees (Eq. 4.4)", "o ângulo γ do cone, em graus (Eq. 4.4)"),
+    (
+        "the direction of travel (L for a directional light, D for a ray)",
+        "a direção de propagação (L de uma luz direcional, D de um raio)",
+    ),
+    (
+        "the light's colour C_l (or a coefficient's colour O)",
+        "a cor C_l da fonte de luz (ou a cor O de um coeficiente)",
+    ),
+    ("the material at the point", "o material no ponto"),
+    ("the mesh's Wavefront OBJ file", "o arquivo Wavefront OBJ da malha"),
+    ("the plane's normal", "a normal do plano"),
+    ("the spot exponent e of cos(ψ)^e (Eq. 4.4)", "o expoente de decaimento e de cos(ψ)^e (Eq. 4.4)"),
+    ("the triangle's three corners", "os três vértices do triângulo"),
+    ("the sphere", "a esfera"),
+    ("rendering needs a camera", "a renderização precisa de uma câmera"),
+    ("a light's colour has a negative component", "a cor de uma fonte de luz tem um componente negativo"),
+    ("colour components must be ≥ 0", "os componentes de uma cor devem ser ≥ 0"),
+    ("is not three numbers: write three numbers such as ", "não são três números: escreva três números como "),
+    ("three integers 0–255 with --scale 255, or ", "três inteiros 0–255 com --scale 255, ou "),
+    // The command line.
+    ("--fragment applies to --format latex and html only", "--fragment vale só para --format latex e html"),
+    ("drop --fragment, or use --format latex or html", "tire --fragment, ou use --format latex ou html"),
+    (
+        "--part and the header flags apply to the documents, not to --format json",
+        "--part e as opções do cabeçalho valem para os documentos, não para --format json",
+    ),
+    (
+        "drop --part, --course, --title, --date and --author, or choose --format text, markdown, latex or html",
+        "tire --part, --course, --title, --date e --author, ou escolha --format text, markdown, latex ou html",
+    ),
+    ("is outside the ", "está fora da imagem "),
+    (" image", ""),
+    ("give X from 0 to ", "dê X de 0 a "),
+    (" and Y from 0 to ", " e Y de 0 a "),
+    // Last, the small words left between the fragments above.
+    (" or ", " ou "),
+    ("ou add ", "ou acrescente "),
+    (" with ", " com "),
+    (" and ", " e "),
+];
+
+/// An error message in `lang`: as it is in English; in Portuguese, its common parts translated
+/// ([`ERRORS_PT`]). The word before it ("error", "erro") is [`error_word`].
+pub fn error_in(message: &str, lang: Lang) -> String {
+    match lang {
+        Lang::En => message.to_owned(),
+        Lang::Pt => {
+            let mut s = message.to_owned();
+            for (en, pt) in ERRORS_PT {
+                s = s.replace(en, pt);
+            }
+            s
+        }
+    }
+}
+
+/// "error" or "erro", before a message on standard error.
+pub fn error_word(lang: Lang) -> &'static str {
+    pick(lang, "error", "erro")
 }
 
 /// "surfaces[2]", or "surfaces[2] (mesh), triangle 17".

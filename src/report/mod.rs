@@ -6,6 +6,7 @@
 //! [`formula`].
 
 pub(crate) mod diagram;
+pub mod document;
 pub mod explain;
 pub mod file;
 pub mod formula;
@@ -18,3 +19,4 @@ pub(crate) mod messages;
 pub(crate) mod number;
 pub mod pixel;
 pub mod text;
+pub use messages::catalogue;

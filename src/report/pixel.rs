@@ -1,11 +1,15 @@
 //! The report of `phong render --explain-pixel`: the pixel's path ray by ray (level, weight,
 //! offset origin, why it stopped), each hit explained by the solver's own report of the
-//! equivalent ray problem, as text for people and JSON for scripts.
+//! equivalent ray problem, the scene said once: as text, Markdown, LaTeX or HTML for people
+//! (in English or Portuguese, [`report`] then `write_*`) and JSON for scripts ([`document`]).
 
 use std::fmt::Write;
 
 use serde::Serialize;
 
+use super::explain::{plain, DataRow, Explanation};
+use super::lang::Lang;
+use super::messages::pick;
 use super::number::{num, vec3};
 use super::{json, text};
 use crate::core::real::to_f64_array;
@@ -22,144 +26,524 @@ fn n<R: Real>(x: R) -> String {
     num(x.to_f64())
 }
 
-/// Why a path stopped, in words.
+/// Why a path stopped, in words (English, as the JSON has it).
 pub(crate) fn stop_reason(stop: Stop) -> &'static str {
+    stop_reason_in(stop, Lang::En)
+}
+
+/// Why a path stopped, in `lang`.
+pub(crate) fn stop_reason_in(stop: Stop, lang: Lang) -> &'static str {
     match stop {
-        Stop::Miss => "the ray hits nothing: its colour is the background",
-        Stop::NotReflective => "the surface has no reflectivity O_r: no reflection ray",
-        Stop::MaxLevel => "the reflection ray's level would exceed the maximum level",
-        Stop::MinWeight => {
-            "the reflection ray's weight w_s = w_p·max(O_r) would not exceed the minimum weight"
-        }
+        Stop::Miss => pick(
+            lang,
+            "the ray hits nothing: its colour is the background",
+            "o raio não atinge nada: sua cor é a do fundo",
+        ),
+        Stop::NotReflective => pick(
+            lang,
+            "the surface has no reflectivity O_r: no reflection ray",
+            "a superfície não tem reflexividade O_r: sem raio de reflexão",
+        ),
+        Stop::MaxLevel => pick(
+            lang,
+            "the reflection ray's level would exceed the maximum level",
+            "o nível de recursão do raio de reflexão passaria do nível máximo",
+        ),
+        Stop::MinWeight => pick(
+            lang,
+            "the reflection ray's weight w_s = w_p·max(O_r) would not exceed the minimum weight",
+            "o peso do raio de reflexão w_s = w_p·max(O_r) não passaria do peso mínimo",
+        ),
     }
 }
 
-/// The text report.
-pub fn render_text<R: Real>(file: &str, problem: &Problem<R>, e: &PixelExplanation<R>) -> String {
-    let mut out = String::new();
+/// A pixel's explanation, decided once and laid out by every format: the scene said once
+/// (title, description, lights and settings), then each sample's rays, each hit explained by
+/// the solver (without the scene's title and description, and without a finding an earlier
+/// ray already said).
+pub struct PixelReport {
+    /// The language of every phrase.
+    pub lang: Lang,
+    /// "Pixel (160, 150) of “Classic …”: 8-bit colour (37, 39, 45)".
+    pub title: String,
+    /// The scene file's name (and the precision when it is f32).
+    pub source: String,
+    /// The scene's description.
+    pub question: Option<String>,
+    /// The scene's lights and viewer, once.
+    pub scene: Vec<DataRow>,
+    /// The tracer's settings, as one line.
+    pub settings: String,
+    /// The samples, in order.
+    pub samples: Vec<SampleReport>,
+    /// How the pixel's colour comes from its samples.
+    pub result: String,
+}
+
+/// One sample of a pixel: its rays and the path's colour.
+pub struct SampleReport {
+    /// "Sample 1 of 1 at (0.5, 0.5) in the pixel".
+    pub heading: String,
+    /// Its rays, primary first.
+    pub rays: Vec<RayReport>,
+    /// "Colour of the path: …".
+    pub color: String,
+}
+
+/// One ray of a path: where it comes from, the solver's explanation of its hit, and what
+/// follows.
+pub struct RayReport {
+    /// "Ray 2 (reflection): level 2, weight w = 0.3, factor in the pixel (0.3, 0.3, 0.3)".
+    pub heading: String,
+    /// Where the ray comes from and where it goes.
+    pub origin: Vec<String>,
+    /// The solver's explanation of the equivalent ray problem, when the ray hits a surface.
+    pub explanation: Option<Explanation>,
+    /// What follows: a miss, O_r and the weight, a reflection ray or the end of the path.
+    pub after: Vec<String>,
+}
+
+/// Decides a pixel's explanation in `lang`.
+pub fn report<R: Real>(
+    file: &str,
+    problem: &Problem<R>,
+    e: &PixelExplanation<R>,
+    lang: Lang,
+) -> PixelReport {
     let s = &problem.render;
     let [r, g, b] = e.rgb8;
-    let _ = writeln!(
-        out,
-        "Pixel ({}, {}) of {file}: 8-bit colour ({r}, {g}, {b})",
-        e.x, e.y
+    let mut seen: Vec<String> = Vec::new();
+    let scene_x = problem_explanation(file, problem, lang);
+    let title = pick(
+        lang,
+        format!(
+            "Pixel ({}, {}) of {}: 8-bit colour ({r}, {g}, {b})",
+            e.x, e.y, scene_x.0
+        ),
+        format!(
+            "Pixel ({}, {}) de {}: cor em 8 bits ({r}, {g}, {b})",
+            e.x, e.y, scene_x.0
+        ),
     );
-    let _ = writeln!(
-        out,
-        "Settings: maximum level {}, minimum weight {}, shadows {}, {} sample{} per pixel, {}",
-        s.max_level,
-        n(s.min_weight),
-        if s.shadows { "on" } else { "off" },
-        s.samples,
-        if s.samples == 1 { "" } else { "s" },
-        R::NAME
+    let settings = pick(
+        lang,
+        format!(
+            "Settings: maximum level {}, minimum weight {}, shadows {}, {} sample{} per pixel",
+            s.max_level,
+            n(s.min_weight),
+            if s.shadows { "on" } else { "off" },
+            s.samples,
+            if s.samples == 1 { "" } else { "s" },
+        ),
+        format!(
+            "Parâmetros: nível máximo de recursão {}, peso mínimo {}, sombras {}, {} amostra{} por pixel",
+            s.max_level,
+            n(s.min_weight),
+            if s.shadows { "ligadas" } else { "desligadas" },
+            s.samples,
+            if s.samples == 1 { "" } else { "s" },
+        ),
     );
-    for (k, sample) in e.samples.iter().enumerate() {
-        let (sx, sy) = sample.position;
-        let _ = writeln!(
-            out,
-            "\nSample {} of {} at ({}, {}) in the pixel",
-            k + 1,
-            e.samples.len(),
-            num(sx),
-            num(sy)
-        );
-        for ray in &sample.rays {
-            ray_text(&mut out, file, problem, ray);
-        }
-        let c = sample.color.to_array().map(|x| x.max(R::ZERO).min(R::ONE));
-        let _ = writeln!(
-            out,
-            "\n  Colour of the path: C = Σ factor·C_local = {}, clamped {}",
-            v::<R>(sample.color),
-            v::<R>(V3::<R>::new(c[0], c[1], c[2]))
-        );
+    let samples = e
+        .samples
+        .iter()
+        .enumerate()
+        .map(|(k, sample)| {
+            let (sx, sy) = sample.position;
+            let heading = pick(
+                lang,
+                format!(
+                    "Sample {} of {} at ({}, {}) in the pixel",
+                    k + 1,
+                    e.samples.len(),
+                    num(sx),
+                    num(sy)
+                ),
+                format!(
+                    "Amostra {} de {} em ({}, {}) no pixel",
+                    k + 1,
+                    e.samples.len(),
+                    num(sx),
+                    num(sy)
+                ),
+            );
+            let rays = sample
+                .rays
+                .iter()
+                .map(|ray| ray_report(file, problem, ray, lang, &mut seen))
+                .collect();
+            let c = sample.color.to_array().map(|x| x.max(R::ZERO).min(R::ONE));
+            let clamped = v::<R>(V3::<R>::new(c[0], c[1], c[2]));
+            let color = pick(
+                lang,
+                format!(
+                    "Colour of the path: C = Σ factor·C_local = {}, clamped {clamped}",
+                    v::<R>(sample.color)
+                ),
+                format!(
+                    "Cor do caminho: C = Σ fator·C_local = {}, limitada {clamped}",
+                    v::<R>(sample.color)
+                ),
+            );
+            SampleReport {
+                heading,
+                rays,
+                color,
+            }
+        })
+        .collect();
+    let count = e.samples.len();
+    let result = pick(
+        lang,
+        format!(
+            "Pixel: the mean of {count} clamped sample{}, round(255·c) = ({r}, {g}, {b})",
+            if count == 1 { "" } else { "s" }
+        ),
+        format!(
+            "Pixel: a média de {count} amostra{} limitada{}, round(255·c) = ({r}, {g}, {b})",
+            if count == 1 { "" } else { "s" },
+            if count == 1 { "" } else { "s" }
+        ),
+    );
+    PixelReport {
+        lang,
+        title,
+        source: scene_x.1,
+        question: match lang {
+            Lang::Pt => problem
+                .question_pt
+                .clone()
+                .or_else(|| problem.question.clone()),
+            Lang::En => problem.question.clone(),
+        },
+        scene: scene_x.2,
+        settings,
+        samples,
+        result,
     }
-    let _ = writeln!(
-        out,
-        "\nPixel: the mean of {} clamped sample{}, round(255·c) = ({r}, {g}, {b})",
-        e.samples.len(),
-        if e.samples.len() == 1 { "" } else { "s" }
-    );
-    out
 }
 
-fn ray_text<R: Real>(out: &mut String, file: &str, problem: &Problem<R>, ray: &RayExplanation<R>) {
-    let r = &ray.record;
-    let kind = if r.level == 1 {
-        "primary"
-    } else {
-        "reflection"
+/// The scene's title (quoted), source line and data rows, from an explanation of no solution.
+fn problem_explanation<R: Real>(
+    file: &str,
+    problem: &Problem<R>,
+    lang: Lang,
+) -> (String, String, Vec<DataRow>) {
+    let title = match lang {
+        Lang::Pt => problem.title_pt.clone().or_else(|| problem.title.clone()),
+        Lang::En => problem.title.clone(),
     };
-    let _ = writeln!(
-        out,
-        "\n  Ray {} ({kind}): level {}, weight w = {}, factor in the pixel {}",
-        r.level,
-        r.level,
-        n(r.weight),
-        v::<R>(r.factor)
+    let name = std::path::Path::new(file)
+        .file_name()
+        .map_or_else(|| file.to_owned(), |n| n.to_string_lossy().into_owned());
+    let source = if R::NAME == "f64" {
+        name.clone()
+    } else {
+        format!("{name}, {}", R::NAME)
+    };
+    let title = title.map_or(name, |t| super::explain::quoted(&t));
+    (title, source, super::explain::data_rows(problem, lang))
+}
+
+fn ray_report<R: Real>(
+    file: &str,
+    problem: &Problem<R>,
+    ray: &RayExplanation<R>,
+    lang: Lang,
+    seen: &mut Vec<String>,
+) -> RayReport {
+    let r = &ray.record;
+    let kind = match (r.level == 1, lang) {
+        (true, Lang::En) => "primary",
+        (false, Lang::En) => "reflection",
+        (true, Lang::Pt) => "primário",
+        (false, Lang::Pt) => "de reflexão",
+    };
+    let heading = pick(
+        lang,
+        format!(
+            "Ray {} ({kind}): level {}, weight w = {}, factor in the pixel {}",
+            r.level,
+            r.level,
+            n(r.weight),
+            v::<R>(r.factor)
+        ),
+        format!(
+            "Raio {} ({kind}): nível {}, peso w = {}, fator no pixel {}",
+            r.level,
+            r.level,
+            n(r.weight),
+            v::<R>(r.factor)
+        ),
     );
+    let mut origin = Vec::new();
     match &r.spawn {
-        None => {
-            let _ = writeln!(out, "    from the eye O = {}", v::<R>(r.ray.origin));
-        }
+        None => origin.push(pick(
+            lang,
+            format!("from the eye O = {}", v::<R>(r.ray.origin)),
+            format!("parte do olho O = {}", v::<R>(r.ray.origin)),
+        )),
         Some(sp) => {
-            let _ = writeln!(
-                out,
-                "    R_V = V − 2(N·V)N = {}                            (Eq. 4.17)",
+            origin.push(format!(
+                "R_V = V − 2(N·V)N = {}  (Eq. 4.17)",
                 v::<R>(r.ray.direction)
-            );
-            let _ = writeln!(
-                out,
-                "    leaves P = {} offset along the surface's normal by the error bound of P \
-                 ({}) to O = {}",
-                v::<R>(sp.from),
-                v::<R>(sp.p_error),
-                v::<R>(sp.origin)
-            );
+            ));
+            origin.push(pick(
+                lang,
+                format!(
+                    "leaves P = {} offset along the surface's normal by the error bound of P ({}) \
+                     to O = {}",
+                    v::<R>(sp.from),
+                    v::<R>(sp.p_error),
+                    v::<R>(sp.origin)
+                ),
+                format!(
+                    "parte de P = {} deslocado ao longo da normal da superfície pela cota do erro \
+                     de P ({}) para O = {}",
+                    v::<R>(sp.from),
+                    v::<R>(sp.p_error),
+                    v::<R>(sp.origin)
+                ),
+            ));
         }
     }
-    let _ = writeln!(out, "    direction D = {}", v::<R>(r.ray.direction));
-    if let Some(solution) = &ray.solution {
-        out.push_str(
-            "\n    The solver on this ray (`phong solve` of the equivalent ray problem):\n",
-        );
-        for line in text::render(file, problem, solution).lines() {
-            if line.is_empty() {
-                out.push('\n');
-            } else {
-                let _ = writeln!(out, "    │ {line}");
-            }
-        }
-    } else {
-        let _ = writeln!(
-            out,
-            "    hits nothing: C = background = {}",
-            v::<R>(r.local)
-        );
+    origin.push(pick(
+        lang,
+        format!("direction D = {}", v::<R>(r.ray.direction)),
+        format!("direção D = {}", v::<R>(r.ray.direction)),
+    ));
+    let explanation = ray.solution.as_ref().map(|solution| {
+        let mut x = super::explain::explain(file, problem, solution, lang);
+        x.question = None;
+        x.findings.retain(|f| !seen.contains(f));
+        seen.extend(x.findings.iter().cloned());
+        x
+    });
+    let mut after = Vec::new();
+    if ray.solution.is_none() {
+        after.push(pick(
+            lang,
+            format!("hits nothing: C = background = {}", v::<R>(r.local)),
+            format!("não atinge nada: C = fundo = {}", v::<R>(r.local)),
+        ));
     }
     if let Some(o_r) = r.o_r {
-        let _ = write!(out, "    O_r = {}", v::<R>(o_r));
+        let mut line = format!("O_r = {}", v::<R>(o_r));
         if let Some(w) = r.next_weight {
-            let _ = write!(out, "; w_s = w_p·max(O_r) = {}", n(w));
+            line.push_str(&format!("; w_s = w_p·max(O_r) = {}", n(w)));
         }
-        out.push('\n');
+        after.push(line);
     }
-    match r.stop {
-        Some(stop) => {
-            let _ = writeln!(out, "    The path ends here: {}.", stop_reason(stop));
-        }
+    after.push(match r.stop {
+        Some(stop) => pick(
+            lang,
+            format!("The path ends here: {}.", stop_reason_in(stop, lang)),
+            format!("O caminho termina aqui: {}.", stop_reason_in(stop, lang)),
+        ),
         None => {
-            let _ = writeln!(
-                out,
-                "    A reflection ray follows: level {} ≤ {} and weight {} > {}; it adds O_r·C_r.",
+            let (level, max, w, min) = (
                 r.level + 1,
                 problem.render.max_level,
                 n(r.next_weight.unwrap_or(R::ZERO)),
-                n(problem.render.min_weight)
+                n(problem.render.min_weight),
             );
+            pick(
+                lang,
+                format!(
+                    "A reflection ray follows: level {level} ≤ {max} and weight {w} > {min}; it \
+                     adds O_r·C_r."
+                ),
+                format!(
+                    "Segue um raio de reflexão: nível {level} ≤ {max} e peso {w} > {min}; ele \
+                     soma O_r·C_r."
+                ),
+            )
+        }
+    });
+    RayReport {
+        heading,
+        origin,
+        explanation,
+        after,
+    }
+}
+
+/// The text report, in English.
+pub fn render_text<R: Real>(file: &str, problem: &Problem<R>, e: &PixelExplanation<R>) -> String {
+    write_text(&report(file, problem, e, Lang::En))
+}
+
+/// A pixel's explanation as text.
+pub fn write_text(p: &PixelReport) -> String {
+    let mut out = String::new();
+    let _ = writeln!(out, "{}  ({})", p.title, p.source);
+    if let Some(q) = &p.question {
+        for line in text::wrap(q, 92) {
+            let _ = writeln!(out, "  {line}");
         }
     }
+    for row in &p.scene {
+        let _ = writeln!(out, "  {}: {}", plain(&row.what), plain(&row.value));
+    }
+    let _ = writeln!(out, "{}", p.settings);
+    for sample in &p.samples {
+        let _ = writeln!(out, "\n{}", sample.heading);
+        for ray in &sample.rays {
+            let _ = writeln!(out, "\n  {}", ray.heading);
+            for l in &ray.origin {
+                let _ = writeln!(out, "    {l}");
+            }
+            if let Some(x) = &ray.explanation {
+                for line in text::write_parts(x, false).lines() {
+                    if line.is_empty() {
+                        out.push('\n');
+                    } else {
+                        let _ = writeln!(out, "    │ {line}");
+                    }
+                }
+            }
+            for l in &ray.after {
+                let _ = writeln!(out, "    {l}");
+            }
+        }
+        let _ = writeln!(out, "\n  {}", sample.color);
+    }
+    let _ = writeln!(out, "\n{}", p.result);
+    out
+}
+
+/// A pixel's explanation as Markdown.
+pub fn write_markdown(p: &PixelReport) -> String {
+    use super::markdown::escape;
+    let mut out = format!("## {}\n\n*{}*\n\n", escape(&p.title), escape(&p.source));
+    if let Some(q) = &p.question {
+        let _ = writeln!(out, "> {}\n", escape(q));
+    }
+    out.push_str(&super::markdown::data_table(&p.scene, p.lang));
+    let _ = writeln!(out, "{}\n", escape(&p.settings));
+    let mut index = 0;
+    for sample in &p.samples {
+        let _ = writeln!(out, "### {}\n", escape(&sample.heading));
+        for ray in &sample.rays {
+            let _ = writeln!(out, "#### {}\n", escape(&ray.heading));
+            for l in &ray.origin {
+                let _ = writeln!(out, "- {}", escape(l));
+            }
+            out.push('\n');
+            if let Some(x) = &ray.explanation {
+                out.push_str(&super::markdown::write_parts(x, index).replace("\n### ", "\n##### "));
+                index += 1;
+            }
+            for l in &ray.after {
+                let _ = writeln!(out, "- {}", escape(l));
+            }
+            out.push('\n');
+        }
+        let _ = writeln!(out, "**{}**\n", escape(&sample.color));
+    }
+    let _ = writeln!(out, "**{}**", escape(&p.result));
+    out
+}
+
+/// A pixel's explanation as LaTeX: a document, or (`fragment`) its body.
+pub fn write_latex(p: &PixelReport, options: super::latex::LatexOptions) -> String {
+    use super::latex::escape;
+    let mut out = format!(
+        "\\section*{{{}}}\n\\noindent\\emph{{{}}}\n\n",
+        escape(&p.title),
+        escape(&p.source)
+    );
+    if let Some(q) = &p.question {
+        let _ = writeln!(
+            out,
+            "\\begin{{quote}}\\raggedright\n{}\n\\end{{quote}}\n",
+            escape(q)
+        );
+    }
+    out.push_str(&super::latex::data_table(&p.scene, p.lang));
+    let _ = writeln!(out, "{}\n", escape(&p.settings));
+    for sample in &p.samples {
+        let _ = writeln!(out, "\\subsection*{{{}}}", escape(&sample.heading));
+        for ray in &sample.rays {
+            let _ = writeln!(
+                out,
+                "\\subsubsection*{{{}}}\n\\begin{{itemize}}",
+                escape(&ray.heading)
+            );
+            for l in &ray.origin {
+                let _ = writeln!(out, "  \\item {}", escape(l));
+            }
+            out.push_str("\\end{itemize}\n");
+            if let Some(x) = &ray.explanation {
+                out.push_str(
+                    &super::latex::write_parts(x)
+                        .replace("\\subsection*{", "\\paragraph*{")
+                        .replace("\\paragraph{", "\\subparagraph{"),
+                );
+            }
+            out.push_str("\\begin{itemize}\n");
+            for l in &ray.after {
+                let _ = writeln!(out, "  \\item {}", escape(l));
+            }
+            out.push_str("\\end{itemize}\n");
+        }
+        let _ = writeln!(out, "\\textbf{{{}}}\n", escape(&sample.color));
+    }
+    let _ = writeln!(out, "\\textbf{{{}}}", escape(&p.result));
+    super::latex::wrap(&out, options, p.lang)
+}
+
+/// A pixel's explanation as HTML: a page, or (`fragment`) its body.
+pub fn write_html(p: &PixelReport, options: super::html::HtmlOptions) -> String {
+    use super::html::esc;
+    let mut out = format!(
+        "<article class=\"pixel\">\n<h1>{}</h1>\n<p class=\"source\">{}</p>\n",
+        esc(&p.title),
+        esc(&p.source)
+    );
+    if let Some(q) = &p.question {
+        let _ = writeln!(
+            out,
+            "<blockquote class=\"question\">{}</blockquote>",
+            esc(q)
+        );
+    }
+    out.push_str(&super::html::data_table(&p.scene, p.lang));
+    let _ = writeln!(out, "<p>{}</p>", esc(&p.settings));
+    let mut index = 0;
+    for sample in &p.samples {
+        let _ = writeln!(out, "<h2>{}</h2>", esc(&sample.heading));
+        for ray in &sample.rays {
+            let _ = writeln!(
+                out,
+                "<section class=\"ray\">\n<h3>{}</h3>\n<ul>",
+                esc(&ray.heading)
+            );
+            for l in &ray.origin {
+                let _ = writeln!(out, "<li>{}</li>", esc(l));
+            }
+            out.push_str("</ul>\n");
+            if let Some(x) = &ray.explanation {
+                out.push_str(&super::html::write_parts(x, index));
+                index += 1;
+            }
+            out.push_str("<ul>\n");
+            for l in &ray.after {
+                let _ = writeln!(out, "<li>{}</li>", esc(l));
+            }
+            out.push_str("</ul>\n</section>\n");
+        }
+        let _ = writeln!(out, "<p><strong>{}</strong></p>", esc(&sample.color));
+    }
+    let _ = writeln!(
+        out,
+        "<p><strong>{}</strong></p>\n</article>",
+        esc(&p.result)
+    );
+    if options.fragment {
+        return out;
+    }
+    super::html::page(&esc(&p.title), &out, p.lang)
 }
 
 /// The JSON document.

@@ -6,6 +6,7 @@
 
 use std::fmt::Write;
 
+use super::document::Document;
 use super::explain::{explain, plain, Explanation, Inline, Shading, Step};
 use super::lang::Lang;
 use super::messages::Phrase;
@@ -55,21 +56,28 @@ pub fn render<R: Real>(file: &str, problem: &Problem<R>, s: &Solution<R>) -> Str
 
 /// Lays out an explanation as text.
 pub fn write_explanation(x: &Explanation, color: bool) -> String {
+    explanation(x, &x.title, color)
+}
+
+fn explanation(x: &Explanation, heading: &str, color: bool) -> String {
     let style = Style { on: color };
-    let lang = x.lang;
     let mut out = String::new();
-    let _ = writeln!(
-        out,
-        "{}  ({}, {})",
-        style.bold(&x.title),
-        x.file,
-        x.precision
-    );
+    let _ = writeln!(out, "{}  ({})", style.bold(heading), x.source());
     if let Some(q) = &x.question {
         for line in wrap(q, 92) {
             let _ = writeln!(out, "  {line}");
         }
     }
+    out.push_str(&write_parts(x, color));
+    out
+}
+
+/// The findings, the ray and the parts of an explanation, without its title and question
+/// (a pixel's rays share their scene's).
+pub(crate) fn write_parts(x: &Explanation, color: bool) -> String {
+    let style = Style { on: color };
+    let lang = x.lang;
+    let mut out = String::new();
     if !x.findings.is_empty() {
         let _ = writeln!(out, "\n{}", style.bold(Phrase::Findings.get(lang)));
         for f in &x.findings {
@@ -137,6 +145,65 @@ fn steps(out: &mut String, style: &Style, indent: usize, list: &[Step], lang: La
         out.push_str(line.trim_end());
         out.push('\n');
     }
+}
+
+/// A document as text: the header, then the statements (each with its data), the solutions or
+/// the answer key, or all three.
+pub fn write_document(doc: &Document, color: bool) -> String {
+    let style = Style { on: color };
+    let lang = doc.lang;
+    let mut blocks = Vec::new();
+    let h = doc.header;
+    if !h.is_empty() {
+        let mut b = String::new();
+        if let (Some(c), Some(_)) = (&h.course, &h.title) {
+            let _ = writeln!(b, "{c}");
+        }
+        let _ = writeln!(b, "{}", style.bold(&h.document_title(doc)));
+        if let Some(by) = h.byline() {
+            let _ = writeln!(b, "{by}");
+        }
+        blocks.push(b);
+    }
+    if doc.contents.statements() {
+        for (i, x) in doc.exercises.iter().enumerate() {
+            let mut b = String::new();
+            let _ = writeln!(b, "{}", style.bold(&doc.heading(i)));
+            if let Some(q) = &x.question {
+                for line in wrap(q, 92) {
+                    let _ = writeln!(b, "  {line}");
+                }
+            }
+            for row in &x.data {
+                let _ = writeln!(b, "  {}: {}", plain(&row.what), plain(&row.value));
+            }
+            blocks.push(b);
+        }
+    }
+    if doc.contents.solutions() {
+        for (i, x) in doc.exercises.iter().enumerate() {
+            blocks.push(explanation(x, &doc.solution_heading(i), color));
+        }
+    }
+    if doc.contents.key() {
+        let mut b = String::new();
+        let _ = writeln!(
+            b,
+            "{}",
+            style.bold(super::messages::Phrase::AnswerKey.get(lang))
+        );
+        for (i, x) in doc.exercises.iter().enumerate() {
+            let (written, readings) = x.key();
+            let _ = writeln!(b, "  {}: {}", doc.heading(i), plain(&written));
+            for r in &readings {
+                for line in wrap(&plain(r), 88) {
+                    let _ = writeln!(b, "      {line}");
+                }
+            }
+        }
+        blocks.push(b);
+    }
+    blocks.join("\n")
 }
 
 /// Word-wraps a paragraph to lines of at most `width` characters.

@@ -51,7 +51,7 @@ pub(crate) fn run(args: &CheckArgs) -> Result<Exit, CliError> {
             error::warn(&crate::report::messages::warning(w, args.lang));
         }
         if let Err(f) = &c.outcome {
-            error::print(&f.message);
+            error::print_in(&f.message, args.lang);
         }
         match args.format {
             CheckFormat::Text => {
@@ -215,7 +215,7 @@ fn slips(args: &CheckArgs) -> Result<Exit, CliError> {
                 args.lang,
             )),
             Err(e) => {
-                error::print(&e);
+                error::print_in(&e, args.lang);
                 exit = Exit::BadInput;
             }
         }

@@ -1,5 +1,6 @@
 //! `phong render`: the scene rendered into an image file, or one pixel of it explained step by
-//! step (text or JSON), in the precision asked for.
+//! step (text, Markdown, LaTeX, HTML in English or Portuguese, or JSON), in the precision
+//! asked for.
 
 use std::path::Path;
 use std::time::Instant;
@@ -124,15 +125,14 @@ fn explain_pixel<R: Real>(
     let path: &Path = &args.scene;
     let e = tracer::explain_pixel(problem, camera, scene, x, y).map_err(|e| e.at(path))?;
     let file = path.display().to_string();
+    let pixel = || report::pixel::report(&file, problem, &e, args.lang);
     let out = match args.format {
-        Format::Markdown | Format::Latex | Format::Html => {
-            return Err(CliError::Usage {
-                flag: "--format".into(),
-                message: "a pixel's explanation is written as text or json".into(),
-                fix: "give --format text or --format json with --explain-pixel".into(),
-            })
+        Format::Text => report::pixel::write_text(&pixel()),
+        Format::Markdown => report::pixel::write_markdown(&pixel()),
+        Format::Latex => {
+            report::pixel::write_latex(&pixel(), report::latex::LatexOptions::default())
         }
-        Format::Text => report::pixel::render_text(&file, problem, &e),
+        Format::Html => report::pixel::write_html(&pixel(), report::html::HtmlOptions::default()),
         Format::Json => output::json_pretty(
             &serde_json::to_value(report::pixel::document(&file, problem, &e))
                 .expect("the explanation serialises"),

@@ -1,11 +1,17 @@
 //! `phong solve`: each file solved and explained (text, Markdown, LaTeX, HTML) or written as
-//! JSON; a bad file is reported and the others are still solved.
+//! JSON; a bad file is reported and the others are still solved. `--part` chooses the
+//! document (statements, solutions, answer key, or all three), `--course`/`--title`/`--date`/
+//! `--author` its header, and `-o DIR/` writes one file per exercise.
+
+use std::path::Path;
 
 use crate::cli::args::{Format, SolveArgs};
 use crate::cli::error::{self, CliError};
 use crate::cli::exit::Exit;
 use crate::cli::output;
 use crate::report;
+use crate::report::document::{Contents, Document, Header};
+use crate::report::explain::Explanation;
 use crate::report::file::{error_json, explain_file, solve_json_warned};
 
 pub(crate) fn run(args: &SolveArgs) -> Result<Exit, CliError> {
@@ -17,9 +23,27 @@ pub(crate) fn run(args: &SolveArgs) -> Result<Exit, CliError> {
             fix: "drop --fragment, or use --format latex or html".into(),
         });
     }
+    let header = Header {
+        course: args.course.clone(),
+        title: args.title.clone(),
+        date: args.date.clone(),
+        author: args.author.clone(),
+    };
+    if args.format == Format::Json && (args.part != Contents::Solution || !header.is_empty()) {
+        return Err(CliError::Conflict {
+            message: "--part and the header flags apply to the documents, not to --format json"
+                .into(),
+            fix: "drop --part, --course, --title, --date and --author, or choose --format text, \
+                  markdown, latex or html"
+                .into(),
+        });
+    }
+    let folder = args.output.as_deref().filter(|p| is_folder(p));
     let mut failed = false;
     let mut docs = Vec::new();
     let mut explanations = Vec::new();
+    // The files solved, in order, for the names of the files written per exercise.
+    let mut solved: Vec<&Path> = Vec::new();
     for path in &args.files {
         let result = match args.format {
             Format::Json => {
@@ -33,11 +57,15 @@ pub(crate) fn run(args: &SolveArgs) -> Result<Exit, CliError> {
                 explanations.push(x);
             }),
         };
-        if let Err(e) = result {
-            failed = true;
-            error::print(&e);
-            if args.format == Format::Json {
-                docs.push(error_json(path, &e));
+        match result {
+            Ok(()) => solved.push(path),
+            Err(e) => {
+                failed = true;
+                error::print_in(&e, args.lang);
+                if args.format == Format::Json {
+                    docs.push(error_json(path, &e));
+                    solved.push(path);
+                }
             }
         }
     }
@@ -46,35 +74,101 @@ pub(crate) fn run(args: &SolveArgs) -> Result<Exit, CliError> {
     if failed && explanations.is_empty() && docs.is_empty() {
         return Ok(Exit::BadInput);
     }
-    let out = match args.format {
-        Format::Text => {
-            let color = output::use_color(args.color, args.output.is_some());
-            explanations
-                .iter()
-                .map(|x| report::text::write_explanation(x, color))
-                .collect::<Vec<_>>()
-                .join("\n")
+    match folder {
+        Some(dir) => {
+            std::fs::create_dir_all(dir).map_err(|source| CliError::Write {
+                path: Some(dir.to_owned()),
+                source,
+            })?;
+            let ext = extension(args.format);
+            for (i, path) in solved.iter().enumerate() {
+                let file = dir.join(format!("{}.{ext}", stem(path)));
+                let out = match args.format {
+                    Format::Json => output::json_text(vec![docs[i].clone()]),
+                    _ => write(args, &header, std::slice::from_ref(&explanations[i]), i + 1),
+                };
+                output::emit(Some(&file), &out)?;
+            }
         }
-        Format::Markdown => report::markdown::write_all(&explanations),
-        Format::Latex => report::latex::write_all(
-            &explanations,
-            report::latex::LatexOptions {
-                fragment: args.fragment,
-            },
-        ),
-        Format::Html => report::html::write_all(
-            &explanations,
-            report::html::HtmlOptions {
-                fragment: args.fragment,
-            },
-            args.lang,
-        ),
-        Format::Json => output::json_text(docs),
-    };
-    output::emit(args.output.as_deref(), &out)?;
+        None => {
+            let out = match args.format {
+                Format::Json => output::json_text(docs),
+                _ => write(args, &header, &explanations, 1),
+            };
+            output::emit(args.output.as_deref(), &out)?;
+        }
+    }
     Ok(if failed {
         Exit::BadInput
     } else {
         Exit::Success
     })
+}
+
+/// Whether `-o` names a folder: an existing one, or a path ending in a separator.
+fn is_folder(p: &Path) -> bool {
+    p.is_dir()
+        || p.as_os_str()
+            .to_string_lossy()
+            .ends_with(std::path::MAIN_SEPARATOR)
+        || p.as_os_str().to_string_lossy().ends_with('/')
+}
+
+/// The file name of an exercise's own output: its file's stem ("4.2" for 4.2.json).
+fn stem(path: &Path) -> String {
+    path.file_stem().map_or_else(
+        || "problem".to_owned(),
+        |s| s.to_string_lossy().into_owned(),
+    )
+}
+
+/// The extension of a format's files.
+fn extension(format: Format) -> &'static str {
+    match format {
+        Format::Text => "txt",
+        Format::Markdown => "md",
+        Format::Latex => "tex",
+        Format::Html => "html",
+        Format::Json => "json",
+    }
+}
+
+/// The document of `explanations`, numbered from `first`, in the chosen format.
+fn write(args: &SolveArgs, header: &Header, explanations: &[Explanation], first: usize) -> String {
+    let doc = Document {
+        header,
+        contents: args.part,
+        exercises: explanations,
+        first_number: first,
+        lang: args.lang,
+    };
+    let plain = args.part == Contents::Solution && header.is_empty();
+    match args.format {
+        Format::Text => {
+            let color = output::use_color(args.color, args.output.is_some());
+            if plain {
+                explanations
+                    .iter()
+                    .map(|x| report::text::write_explanation(x, color))
+                    .collect::<Vec<_>>()
+                    .join("\n")
+            } else {
+                report::text::write_document(&doc, color)
+            }
+        }
+        Format::Markdown => report::markdown::write_document(&doc),
+        Format::Latex => report::latex::write_document(
+            &doc,
+            report::latex::LatexOptions {
+                fragment: args.fragment,
+            },
+        ),
+        Format::Html => report::html::write_document(
+            &doc,
+            report::html::HtmlOptions {
+                fragment: args.fragment,
+            },
+        ),
+        Format::Json => unreachable!("JSON is written by the caller"),
+    }
 }
