@@ -512,3 +512,36 @@ fn a_dash_reads_standard_input() {
         .code(0)
         .stdout(predicate::str::contains("ana,4.1,0.5 0.7 0.3,right"));
 }
+
+#[test]
+fn a_write_over_the_file_size_limit_fails_cleanly_and_leaves_no_temporary_file() {
+    // SIGXFSZ while a report is written left a `.tmpXXXXXX` beside the target (issue 12). Under
+    // `ulimit -f 1` (one block: 512 bytes in sh, 1 KiB in bash) the HTML explanation of 4.2
+    // (tens of kB) cannot be written: the write fails with EFBIG instead of killing the process,
+    // the temporary file is removed, and the existing target is left as it was.
+    let dir = TempDir::new().unwrap();
+    let target = write(&dir, "out.html", "the previous report\n");
+    let phong = assert_cmd::cargo::cargo_bin("phong");
+    let out = Std::new("sh")
+        .arg("-c")
+        .arg("ulimit -f 1 && exec \"$0\" solve \"$1\" --format html -o \"$2\"")
+        .arg(&phong)
+        .arg(exercise("4.2.json"))
+        .arg(&target)
+        .stdin(Stdio::null())
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(2), "{out:?}");
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(stderr.starts_with("error: "), "{stderr}");
+    assert!(stderr.contains("out.html"), "{stderr}");
+    let left: Vec<_> = std::fs::read_dir(dir.path())
+        .unwrap()
+        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+        .collect();
+    assert_eq!(left, ["out.html"], "nothing beside the target");
+    assert_eq!(
+        std::fs::read_to_string(&target).unwrap(),
+        "the previous report\n"
+    );
+}
