@@ -768,6 +768,11 @@ const ERRORS_PT: &[(&str, &str)] = &[
     ("colour components must be ≥ 0", "os componentes de uma cor devem ser ≥ 0"),
     ("is not three numbers: write three numbers such as ", "não são três números: escreva três números como "),
     ("three integers 0–255 with --scale 255, or ", "três inteiros 0–255 com --scale 255, ou "),
+    ("three integers 0–255 with --scale 255, ", "três inteiros 0–255 com --scale 255, "),
+    (
+        "or \"none\" when the ray hits nothing",
+        "ou \"nenhuma\" quando o raio não atinge nada",
+    ),
     // The command line.
     ("--fragment applies to --format latex and html only", "--fragment vale só para --format latex e html"),
     ("drop --fragment, or use --format latex or html", "tire --fragment, ou use --format latex ou html"),
