@@ -19,6 +19,7 @@
 //! Everything is generic over [`Real`] (f32 or f64) from one source.
 
 pub mod color;
+pub mod lanes;
 pub mod light;
 pub mod material;
 pub mod real;

@@ -13,7 +13,7 @@ use super::{Ray, Shape};
 use crate::core::Real;
 
 /// Up to this many bounded shapes are tested in a plain loop rather than through the BVH.
-const FLAT: usize = 8;
+pub(crate) const FLAT: usize = 8;
 
 /// The surfaces of a scene, indexed in the order given.
 #[derive(Clone, Debug)]

@@ -14,6 +14,7 @@ pub mod hit;
 pub mod plane;
 pub mod ray;
 pub mod shadow;
+pub mod soa;
 pub mod sphere;
 pub mod triangle;
 

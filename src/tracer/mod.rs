@@ -7,6 +7,7 @@
 //! - [`sampler`]: where in the pixel each sample goes (stratified, deterministic).
 //! - [`trace`]: one ray's path (the hot path, and the same path recorded for an explanation).
 //! - [`render`]: the image, rows in parallel, bytes independent of the thread count.
+//! - [`wide`]: the same paths traced in packets of lanes, queues per bounce (the default engine).
 //! - [`explain`]: one pixel's derivation, every ray solved by the solver.
 //! - [`output`]: PNG and PPM files.
 
@@ -16,8 +17,10 @@ pub mod output;
 pub mod render;
 pub mod sampler;
 pub mod trace;
+pub mod wide;
 
 pub use camera::CameraRays;
 pub use explain::{explain_pixel, PixelExplanation};
-pub use render::{render, render_linear, Image, LinearImage};
+pub use render::{render, render_linear, render_linear_with, render_with, Image, LinearImage};
 pub use trace::{Counts, Scene, Stop, Tracer};
+pub use wide::Engine;

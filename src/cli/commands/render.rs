@@ -51,8 +51,8 @@ fn render<R: Real>(args: &RenderArgs) -> Result<Exit, CliError> {
     let out = args.output.as_deref().expect("clap requires --output here");
     let bar = output::progress_bar(u64::from(camera.height));
     let tracing = Instant::now();
-    let (image, counts) =
-        pool.install(|| tracer::render(&problem, &camera, &scene, &|| bar.inc(1)));
+    let (image, counts) = pool
+        .install(|| tracer::render_with(args.engine, &problem, &camera, &scene, &|| bar.inc(1)));
     bar.finish_and_clear();
     let traced = tracing.elapsed();
     let bytes = tracer::output::encode(&image, image_format.expect("known format"));
@@ -62,7 +62,7 @@ fn render<R: Real>(args: &RenderArgs) -> Result<Exit, CliError> {
         eprintln!(
             "{}×{}, {} sample(s)/pixel, {}, {} thread(s): read and validated in {:.3} s, BVH of \
              {} surfaces built in {:.3} s, traced {} rays ({} primary, {} reflection, {} shadow) \
-             in {:.3} s: {:.2} Mrays/s",
+             in {:.3} s: {:.2} Mrays/s ({} engine)",
             image.width,
             image.height,
             problem.render.samples,
@@ -76,7 +76,8 @@ fn render<R: Real>(args: &RenderArgs) -> Result<Exit, CliError> {
             counts.reflection,
             counts.shadow,
             secs,
-            counts.total() as f64 / secs / 1e6
+            counts.total() as f64 / secs / 1e6,
+            args.engine.name()
         );
     }
     Ok(Exit::Success)
