@@ -126,6 +126,9 @@ impl<R: Real> FlatScene<R> {
     /// The aggregate's surfaces in lanes, when it is flat: no BVH (at most [`FLAT`] bounded
     /// shapes) and no triangles. `None` otherwise: the wide tracer then asks the aggregate.
     pub fn new(aggregate: &Aggregate<R>) -> Option<Self> {
+        if aggregate.shapes().len() >= 1 << 24 {
+            return None;
+        }
         let mut planes = Vec::new();
         let mut spheres = Vec::new();
         for (i, s) in aggregate.shapes().iter().enumerate() {
@@ -180,61 +183,64 @@ impl<R: Real> FlatScene<R> {
         let o = W3::<W<R>>::gather(rays.iter().map(|r| r.origin), fill.origin);
         let d = W3::<W<R>>::gather(rays.iter().map(|r| r.direction), fill.direction);
         let infinity = R::from_f64(f64::INFINITY);
+        let zero = W::<R>::splat(R::ZERO);
         let mut best_t = W::<R>::splat(infinity);
-        let mut best = [u32::MAX; 8];
+        // The best shape's index + 1 in each lane (0: none yet), exact in either precision
+        // below 2^24 shapes (FlatScene::new).
+        let mut best_i = zero;
         let live = (1u32 << rays.len()) - 1;
+        // Keeps each lane's hit where it is nearer than its best so far: the lanes' own
+        // test, with the lanes it could not decide tested by the scalar code.
+        let mut take = |(hit, t, slow): (W<R>, W<R>, W<R>),
+                        index: u32,
+                        best_t: &mut W<R>,
+                        scalar: &dyn Fn(&Ray<R>, R) -> Option<R>| {
+            let slow = slow.bits() & live;
+            let (hit, t) = if slow == 0 {
+                (hit, t)
+            } else {
+                let (mut t, mut h) = (
+                    t.to_array(),
+                    hit.select(W::<R>::splat(R::ONE), zero).to_array(),
+                );
+                let bests = best_t.to_array();
+                for k in lanes_of(slow) {
+                    let found = scalar(&rays[k], bests.as_ref()[k]);
+                    h.as_mut()[k] = if found.is_some() { R::ONE } else { R::ZERO };
+                    t.as_mut()[k] = found.unwrap_or(R::ZERO);
+                }
+                (W::<R>::from_array(h).gt(zero), W::<R>::from_array(t))
+            };
+            *best_t = hit.select(t, *best_t);
+            best_i = hit.select(W::<R>::splat(R::from_f64(f64::from(index) + 1.0)), best_i);
+        };
         // Planes first, then spheres, each in the scene's order, as the aggregate takes them.
         for (index, plane) in &self.planes {
-            let (hit, t, slow) = plane_hit_t(o, d, plane, best_t);
-            let mut bits = hit.bits() & live;
-            let slow = slow.bits() & live;
-            let (mut t, mut best_arr) = (t.to_array(), best_t.to_array());
-            for k in lanes_of(slow) {
-                bits &= !(1 << k);
-                if let Some(tk) = Shape::Plane(*plane).hit_t(&rays[k], best_arr.as_ref()[k]) {
-                    t.as_mut()[k] = tk;
-                    bits |= 1 << k;
-                }
-            }
-            for k in lanes_of(bits) {
-                best_arr.as_mut()[k] = t.as_ref()[k];
-                best[k] = *index;
-            }
-            best_t = W::<R>::from_array(best_arr);
+            let found = plane_hit_t(o, d, plane, best_t);
+            take(found, *index, &mut best_t, &|ray, t_max| {
+                Shape::Plane(*plane).hit_t(ray, t_max)
+            });
         }
         for (index, sphere) in &self.spheres {
             let c = W3::<W<R>>::splat(sphere.center);
             let r2 = W::<R>::splat(sphere.radius * sphere.radius);
-            let (hit, t, slow) = sphere_hit_t(o, d, c, r2, best_t);
-            let mut bits = hit.bits() & live;
-            let slow = slow.bits() & live;
-            if bits == 0 && slow == 0 {
-                continue;
-            }
-            let (mut t, mut best_arr) = (t.to_array(), best_t.to_array());
-            for k in lanes_of(slow) {
-                bits &= !(1 << k);
-                if let Some(tk) = Shape::Sphere(*sphere).hit_t(&rays[k], best_arr.as_ref()[k]) {
-                    t.as_mut()[k] = tk;
-                    bits |= 1 << k;
-                }
-            }
-            for k in lanes_of(bits) {
-                best_arr.as_mut()[k] = t.as_ref()[k];
-                best[k] = *index;
-            }
-            best_t = W::<R>::from_array(best_arr);
+            let found = sphere_hit_t(o, d, c, r2, best_t);
+            take(found, *index, &mut best_t, &|ray, t_max| {
+                Shape::Sphere(*sphere).hit_t(ray, t_max)
+            });
         }
-        let best_t = best_t.to_array();
+        let (best_t, best_i) = (best_t.to_array(), best_i.to_array());
         for (k, ray) in rays.iter().enumerate() {
             // Only the nearest hit gets its point, error bound and normal, as in the aggregate.
-            out[k] = (best[k] != u32::MAX).then_some(()).and_then(|()| {
-                let index = best[k] as usize;
-                Some(AggregateHit {
-                    index,
-                    hit: aggregate.shapes()[index].hit_at(ray, best_t.as_ref()[k])?,
-                })
-            });
+            let i = best_i.as_ref()[k].to_f64();
+            out[k] = if i == 0.0 {
+                None
+            } else {
+                let index = i as usize - 1;
+                aggregate.shapes()[index]
+                    .hit_at(ray, best_t.as_ref()[k])
+                    .map(|hit| AggregateHit { index, hit })
+            };
         }
     }
 
