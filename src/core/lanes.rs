@@ -185,26 +185,6 @@ impl<L: Wide> W3<L> {
         }
     }
 
-    /// Lane-wise difference.
-    #[inline(always)]
-    pub fn sub(self, o: Self) -> Self {
-        W3 {
-            x: self.x - o.x,
-            y: self.y - o.y,
-            z: self.z - o.z,
-        }
-    }
-
-    /// Lane-wise sum.
-    #[inline(always)]
-    pub fn add(self, o: Self) -> Self {
-        W3 {
-            x: self.x + o.x,
-            y: self.y + o.y,
-            z: self.z + o.z,
-        }
-    }
-
     /// Each component times the lane's `s`.
     #[inline(always)]
     pub fn scale(self, s: L) -> Self {
@@ -225,6 +205,32 @@ impl<L: Wide> W3<L> {
     #[inline(always)]
     pub fn finite(self) -> L {
         self.x.finite().and(self.y.finite()).and(self.z.finite())
+    }
+}
+
+impl<L: Wide> Sub for W3<L> {
+    type Output = Self;
+    /// Lane-wise difference.
+    #[inline(always)]
+    fn sub(self, o: Self) -> Self {
+        W3 {
+            x: self.x - o.x,
+            y: self.y - o.y,
+            z: self.z - o.z,
+        }
+    }
+}
+
+impl<L: Wide> Add for W3<L> {
+    type Output = Self;
+    /// Lane-wise sum.
+    #[inline(always)]
+    fn add(self, o: Self) -> Self {
+        W3 {
+            x: self.x + o.x,
+            y: self.y + o.y,
+            z: self.z + o.z,
+        }
     }
 }
 

@@ -52,12 +52,12 @@ fn safe_square<L: Wide>(x: L) -> L {
 #[inline(always)]
 fn sphere_hit_t<L: Wide>(o: W3<L>, d: W3<L>, center: W3<L>, r2: L, t_max: L) -> (L, L, L) {
     let zero = L::splat(<L::Scalar as Real>::ZERO);
-    let f = o.sub(center);
+    let f = o - center;
     let b = d.dot(f);
     let ff = f.dot(f);
     // Outside the sphere and moving away: both roots are behind the origin.
     let away = b.gt(zero).and(ff.gt(r2));
-    let q = f.sub(d.scale(b));
+    let q = f - d.scale(b);
     let perp2 = q.dot(q);
     let safe = safe_square(perp2).and(safe_square(r2)).and(safe_square(ff));
     let disc = r2 - perp2;
@@ -95,10 +95,10 @@ fn plane_hit_t<L: Wide>(o: W3<L>, d: W3<L>, plane: &Plane<L::Scalar>, t_max: L) 
     let zero = L::splat(<L::Scalar as Real>::ZERO);
     let n = W3::<L>::splat(plane.normal);
     let denom = n.dot(d);
-    let diff = W3::<L>::splat(plane.point).sub(o);
+    let diff = W3::<L>::splat(plane.point) - o;
     let fast = diff.finite();
     let t = n.dot(diff) / denom;
-    let at = o.add(d.scale(t));
+    let at = o + d.scale(t);
     let hit = denom
         .eq(zero)
         .not()
