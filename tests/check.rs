@@ -264,10 +264,7 @@ fn a_batch_of_keys_goes_on_past_bad_files_and_reports_each_in_order() {
         .map(|d| d["verdict"].as_str().unwrap())
         .collect();
     // The key's own tolerance 0.05 accepts 0.33 for 0.3.
-    assert_eq!(
-        verdicts,
-        ["right", "invalid", "right", "invalid", "reading"]
-    );
+    assert_eq!(verdicts, ["right", "invalid", "right", "invalid", "right"]);
     assert_eq!(docs[1]["error"]["kind"], "syntax");
     assert_eq!(docs[3]["error"]["kind"], "no_answer");
     assert_eq!(docs[2]["tolerance"], 0.05);
@@ -425,6 +422,241 @@ fn portuguese_verdicts_use_the_chapters_terms() {
 
 /// Rounds every non-integer number to 10 significant digits (as tests/snapshots.rs does), and
 /// differences below 1e-12 (last-bit noise) to 0.
+#[test]
+fn exercise_4_3_accepts_no_hit_in_either_language_even_under_strict() {
+    // As written the ray meets the plane at t = −90, behind its origin: it hits nothing.
+    for answer in [
+        "nenhuma",
+        "none",
+        "Sem interseção",
+        "sem intersecao",
+        "no hit",
+        "—",
+        "Nenhum",
+    ] {
+        let (code, out, err) = check("4.3.json", &["--answer", answer, "--strict"]);
+        assert_eq!(code, 0, "{answer}: {out}{err}");
+        assert!(out.contains(": right"), "{out}");
+    }
+    // The key says so too, and the line's colour is the likely intended reading.
+    assert_eq!(check("4.3.json", &[]).0, 0);
+    let (code, json) = check_json("4.3.json", &["--answer", "0.524 0.027 0"]);
+    assert_eq!((code, json["verdict"].as_str()), (0, Some("reading")));
+    assert_eq!(
+        check("4.3.json", &["--answer", "0.524 0.027 0", "--strict"]).0,
+        1
+    );
+    // A point problem always has a colour: "no hit" is wrong there, and the colour is shown.
+    let (code, json) = check_json("4.1.json", &["--answer", "nenhuma"]);
+    assert_eq!(code, 1);
+    assert_eq!(
+        json["expected"]["color"],
+        serde_json::json!([0.5, 0.7, 0.3])
+    );
+    assert_eq!(json["answer"]["values"], Value::Null);
+}
+
+#[test]
+fn the_keys_own_tolerance_judges_an_answer_given_on_the_command_line() {
+    // O_a = (0.5, 0.7, 0.3) under white light; the key allows ±0.05. (0.53, 0.7, 0.3) is 0.03
+    // off: wrong under the default ±0.005, right under the key's ±0.05 (before the fix the key's
+    // tolerance was used only when the key itself was checked).
+    let f = temp_problem(
+        r#"{"lights": [{"type": "ambient", "color": [1, 1, 1]}],
+            "point": {"material": {"ambient": [0.5, 0.7, 0.3]}},
+            "answer": {"color": [0.5, 0.7, 0.3], "tolerance": 0.05}}"#,
+    );
+    let out = phong()
+        .args(["check", "--format", "json", "--answer", "0.53 0.7 0.3"])
+        .arg(f.path())
+        .output()
+        .unwrap();
+    let json: Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert_eq!(out.status.code(), Some(0), "{json}");
+    assert_eq!(json["tolerance"], 0.05);
+    // On the 255 scale the key's 0.05 is 0.05·255 = 12.75: 255·0.5 = 127.5, so 140 is in.
+    let out = phong()
+        .args([
+            "check",
+            "--format",
+            "json",
+            "--scale",
+            "255",
+            "--answer",
+            "140 179 77",
+        ])
+        .arg(f.path())
+        .output()
+        .unwrap();
+    let json: Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert_eq!(out.status.code(), Some(0), "{json}");
+    assert!((json["tolerance"].as_f64().unwrap() - 12.75).abs() < 1e-9);
+    // --tolerance still wins.
+    let out = phong()
+        .args(["check", "--answer", "0.53 0.7 0.3", "--tolerance", "0.01"])
+        .arg(f.path())
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(1));
+}
+
+#[test]
+fn check_help_says_the_keys_tolerance_is_the_default() {
+    let out = phong().args(["check", "--help"]).output().unwrap();
+    let help = String::from_utf8(out.stdout).unwrap();
+    assert!(help.contains("the key's"), "{help}");
+    assert!(help.contains("--step"), "{help}");
+}
+
+// Exercise 4.2 by hand: L = ((3,1,3) − (1,1,1))/‖·‖ = (2, 0, 2)/(2√2) = (0.707107, 0, 0.707107);
+// N·L = (0.6·2 + 0.8·2)/(2√2) = 2.8/(2√2) = 0.989949, so cos θ = −N·L = −0.989949 (Eq. 4.7): the
+// light is behind the surface. In the likely intended reading (L reversed) cos θ = +0.989949.
+#[test]
+fn a_step_with_the_wrong_sign_of_cos_theta_is_wrong_as_written_and_names_eq_4_7() {
+    let (code, out, _) = check("4.2.json", &["--step", "cos_theta=0.98995"]);
+    assert!(out.contains("cos_theta[0]"), "{out}");
+    assert!(out.contains("wrong as written"), "{out}");
+    assert!(out.contains("Eq. 4.7"), "{out}");
+    assert!(out.contains("-0.989949 (the sign differs)"), "{out}");
+    assert!(out.contains("likely intended reading"), "{out}");
+    assert!(
+        out.contains("first wrong step as written: cos_theta[0] (Eq. 4.7"),
+        "{out}"
+    );
+    // It is the likely intended reading's value: accepted as a reading, refused under --strict.
+    assert_eq!(code, 0);
+    assert_eq!(
+        check("4.2.json", &["--step", "cos_theta=0.98995", "--strict"]).0,
+        1
+    );
+    // The value as written is right.
+    let (code, out, _) = check("4.2.json", &["--step", "cos_theta=-0.98995"]);
+    assert_eq!(code, 0, "{out}");
+    assert!(out.contains("every step given is right"), "{out}");
+}
+
+#[test]
+fn steps_are_judged_in_the_order_of_the_solution_with_the_first_wrong_named() {
+    // By hand (see above): d = 2√2 = 2.828427, I_l = 1/d = 0.353553 (linear falloff, Eq. 4.2);
+    // quadratic by mistake gives 1/d² = 0.125. V = ((3,1,3) − (5,4,6))/√22 = (−0.4264, −0.6396,
+    // −0.6396). R = L − 2(N·L)N = (0.707107 − 1.187939, 0, 0.707107 − 1.583919)
+    // = (−0.480833, 0, −0.876812).
+    let (code, json) = check_json(
+        "4.2.json",
+        &[
+            "--step",
+            "R=-0.48,0,-0.88",
+            "--step",
+            "I_l=0.125,0.125,0.125",
+            "--step",
+            "V=-0.426,-0.64,-0.64",
+            "--step",
+            "d=2.83",
+        ],
+    );
+    assert_eq!(code, 1, "{json}");
+    let steps = json["steps"]["steps"].as_array().unwrap();
+    let names: Vec<&str> = steps.iter().map(|s| s["name"].as_str().unwrap()).collect();
+    assert_eq!(names, ["V", "d", "I_l", "R"]);
+    let verdicts: Vec<&str> = steps
+        .iter()
+        .map(|s| s["verdict"].as_str().unwrap())
+        .collect();
+    assert_eq!(verdicts, ["right", "right", "wrong", "right"]);
+    assert_eq!(
+        steps[2]["slips"],
+        serde_json::json!(["falloff_quadratic_not_linear"])
+    );
+    assert_eq!(json["steps"]["first_wrong"]["name"], "I_l");
+    assert_eq!(json["steps"]["first_wrong"]["equation"], "4.2");
+    assert_eq!(json["verdict"], "wrong");
+}
+
+#[test]
+fn steps_from_a_file_and_in_portuguese() {
+    let steps =
+        temp_problem(r#"{"cos_theta": -0.98995, "L": [0.7071, 0, 0.7071], "diffuse": "0 0 0"}"#);
+    let out = phong()
+        .args(["check", "exercises/4.2.json", "--lang", "pt", "--steps"])
+        .arg(steps.path())
+        .output()
+        .unwrap();
+    let text = String::from_utf8(out.stdout).unwrap();
+    assert_eq!(out.status.code(), Some(0), "{text}");
+    assert!(text.contains("passos"), "{text}");
+    assert!(
+        text.contains("todos os passos dados estão certos"),
+        "{text}"
+    );
+}
+
+#[test]
+fn exercise_4_3s_steps_are_those_of_its_likely_intended_reading() {
+    // The line meets the plane where (8 + 0.8t) + 4 + (6 − 0.6t) = 0: 18 + 0.2t = 0, t = −90,
+    // P = (8 − 72, 4, 6 + 54) = (−64, 4, 60). The yellow light at (0, 0, 5):
+    // L = (P − P_l)/‖·‖ = (−64, 4, 55)/√(4096 + 16 + 3025) = (−64, 4, 55)/84.4808
+    //   = (−0.757569, 0.047348, 0.651036); N = (1, 1, 1)/√3; N·L = −0.059185/√3 … cos θ
+    //   = −N·L = (0.757569 − 0.047348 − 0.651036)/√3 = 0.059185/1.732051 = 0.034171.
+    let (code, out, _) = check(
+        "4.3.json",
+        &[
+            "--step",
+            "t=-90",
+            "--step",
+            "P=-64,4,60",
+            "--step",
+            "cos_theta=0.03417",
+        ],
+    );
+    assert_eq!(code, 0, "{out}");
+    assert!(out.contains("t              = -90  right"), "{out}");
+    assert!(out.contains("cos_theta[1]"), "{out}");
+    assert!(out.contains("as written the ray hits nothing"), "{out}");
+}
+
+#[test]
+fn bad_steps_exit_2_naming_the_names_and_the_lights() {
+    let (code, _, err) = check("4.2.json", &["--step", "cos_thet=0.5"]);
+    assert_eq!(code, 2);
+    assert!(err.contains("cos_theta"), "{err}");
+    let (code, _, err) = check("4.2.json", &["--step", "R=0.5"]);
+    assert_eq!(code, 2);
+    assert!(err.contains("three numbers"), "{err}");
+    let (code, _, err) = check("4.3.json", &["--step", "cos_theta[0]=0.5"]);
+    assert_eq!(code, 2);
+    assert!(err.contains("ambient light"), "{err}");
+    let (code, _, err) = check("4.2.json", &["--step", "cos_psi=0.5"]);
+    assert_eq!(code, 2);
+    assert!(err.contains("has no cos_psi"), "{err}");
+}
+
+#[test]
+fn a_0_255_colour_is_a_warning_not_an_error() {
+    let f = temp_problem(
+        r#"{"lights": [{"type": "ambient", "color": [1, 1, 1]}],
+            "point": {"material": {"ambient": [128, 179, 77]}}}"#,
+    );
+    let out = phong()
+        .args(["check", "--format", "json", "--answer", "1 1 1"])
+        .arg(f.path())
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(0));
+    let err = String::from_utf8(out.stderr).unwrap();
+    assert!(err.contains("warning: point.material.ambient"), "{err}");
+    let json: Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert_eq!(json["warnings"][0]["code"], "material_color_0_255");
+    let out = phong()
+        .arg("solve")
+        .arg(f.path())
+        .args(["--lang", "pt"])
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(0));
+    let err = String::from_utf8(out.stderr).unwrap();
+    assert!(err.contains("divida por 255"), "{err}");
+}
+
 fn rounded(v: Value) -> Value {
     match v {
         Value::Number(n) if n.is_f64() => {

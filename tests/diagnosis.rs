@@ -447,3 +447,139 @@ fn a_slip_that_does_not_apply_is_not_listed() {
     }
     assert!(text.contains("falloff_forgotten"), "{text}");
 }
+
+/// Checks `answer` (text) against a problem file given as JSON text, with extra arguments.
+fn check_text(problem: &str, answer: &str, extra: &[&str]) -> (i32, Value) {
+    let mut f = tempfile::Builder::new().suffix(".json").tempfile().unwrap();
+    f.write_all(problem.as_bytes()).unwrap();
+    let out = Command::cargo_bin("phong")
+        .unwrap()
+        .args(["check", "--format", "json", "--answer", answer])
+        .args(extra)
+        .arg(f.path())
+        .output()
+        .unwrap();
+    let json: Value = serde_json::from_slice(&out.stdout).expect("JSON output");
+    (out.status.code().unwrap(), json)
+}
+
+/// 4.2's likely intended reading, by hand (L from the point to the light):
+/// L = ((1,1,1) − (3,1,3))/‖·‖ = (−2, 0, −2)/(2√2); d = 2√2; I_l = 1/d = 1/(2√2);
+/// N·L = (0.6·(−2) + 0.8·(−2))/(2√2) = −2.8/(2√2) = −1.4/√2, cos θ = 1.4/√2 = 0.989949;
+/// diffuse = O_d · I_l · cos θ = O_d · 1.4/4 = O_d · 0.35 = (0.245, 0.28, 0.21);
+/// R = L − 2(N·L)N = (0.480833, 0, 0.876812); V = (−2, −3, −3)/√22;
+/// cos φ = −R·V = (0.480833·2 + 0.876812·3)/√22 = 0.765839;
+/// specular = O_s · I_l · cos φ = O_s · 0.270765 = (0.054153, 0.081230, 0.108306);
+/// total (0.299153, 0.361230, 0.318306).
+const INTENDED_4_2: V = [0.299153, 0.361230, 0.318306];
+
+#[test]
+fn ambient_assumed_an_assumed_white_ambient_on_4_2s_intended_reading() {
+    // 4.2 gives no ambient light; the material's O_a = (0.5, 0.4, 0.6) with an assumed white
+    // I_a = (1, 1, 1) adds (0.5, 0.4, 0.6) to the intended (0.299153, 0.361230, 0.318306):
+    // (0.799153, 0.761230, 0.918306), written to three decimals (0.799, 0.761, 0.918).
+    let by_hand = [
+        INTENDED_4_2[0] + 0.5,
+        INTENDED_4_2[1] + 0.4,
+        INTENDED_4_2[2] + 0.6,
+    ];
+    assert!((by_hand[0] - 0.799).abs() < 5e-4 && (by_hand[2] - 0.918).abs() < 5e-4);
+    let (code, json) = check_path(
+        std::path::Path::new("exercises/4.2.json"),
+        [0.799, 0.761, 0.918],
+    );
+    assert_eq!(code, 1);
+    assert_eq!(
+        diagnosed(&json),
+        [vec![
+            "light_reversed".to_owned(),
+            "ambient_assumed".to_owned()
+        ]]
+    );
+    assert_eq!(json["diagnosis"][0]["intended"], json!(["light_reversed"]));
+}
+
+#[test]
+fn intermediates_rounded_to_two_decimals_on_4_2s_intended_reading() {
+    // Every intermediate rounded to 2 decimals before the next step (by hand):
+    // V = (−0.4264, −0.6396, −0.6396) → (−0.43, −0.64, −0.64); L → (−0.71, 0, −0.71);
+    // I_l = 0.35355 → 0.35; N·L = 0.6·(−0.71) + 0.8·(−0.71) = −0.994 → −0.99, cos θ = 0.99;
+    // diffuse = O_d·0.35·0.99 = O_d·0.3465 = (0.24255, 0.2772, 0.2079) → (0.24, 0.28, 0.21);
+    // R = L − 2(−0.99)N = (−0.71 + 1.188, 0, −0.71 + 1.584) = (0.478, 0, 0.874) → (0.48, 0, 0.87);
+    // cos φ = −R·V = 0.48·0.43 + 0.87·0.64 = 0.2064 + 0.5568 = 0.7632 → 0.76 (n_s = 1);
+    // specular = O_s·0.35·0.76 = O_s·0.266 = (0.0532, 0.0798, 0.1064) → (0.05, 0.08, 0.11);
+    // total (0.29, 0.36, 0.32): 0.0092 from the intended red, outside ±0.005.
+    let (code, json) = check_path(
+        std::path::Path::new("exercises/4.2.json"),
+        [0.29, 0.36, 0.32],
+    );
+    assert_eq!(code, 1);
+    assert_eq!(
+        diagnosed(&json),
+        [vec![
+            "light_reversed".to_owned(),
+            "intermediates_rounded".to_owned()
+        ]]
+    );
+}
+
+#[test]
+fn truncated_decimals_and_the_nearest_candidate_on_4_2() {
+    // The intended (0.299153, 0.361230, 0.318306) cut to 2 decimals: (0.29, 0.36, 0.31);
+    // rounded it would be (0.30, 0.36, 0.32). The nearest candidate is the intended reading,
+    // 0.299153 − 0.29 = 0.009153 away (the largest channel difference).
+    let (code, json) = check_path(
+        std::path::Path::new("exercises/4.2.json"),
+        [0.29, 0.36, 0.31],
+    );
+    assert_eq!(code, 1);
+    assert_eq!(
+        diagnosed(&json),
+        [vec![
+            "light_reversed".to_owned(),
+            "truncated_decimals".to_owned()
+        ]]
+    );
+    assert_eq!(json["nearest"]["source"], "reading");
+    assert_eq!(json["nearest"]["reading"], "light_reversed");
+    let d = json["nearest"]["distance"].as_f64().unwrap();
+    assert!((d - 0.009153).abs() < 1e-5, "{d}");
+    assert!(json["nearest"]["description"]
+        .as_str()
+        .unwrap()
+        .starts_with("close to the likely intended reading"));
+}
+
+#[test]
+fn the_nearest_candidate_is_named_when_no_slip_matches() {
+    // 4.2 as written is (0, 0, 0) and its intended reading (0.299153, 0.361230, 0.318306);
+    // (0.31, 0.35, 0.33) differs from the intended by (+0.010847, −0.011230, +0.011694): at
+    // most 0.011694 (blue, 0.33 − 0.318306); black is 0.35 away, and no slip is nearer (the
+    // |cos θ| diffuse alone, (0.245, 0.28, 0.21), is 0.12 away; intermediates rounded,
+    // (0.29, 0.36, 0.32), 0.02).
+    let (code, json) = check_path(
+        std::path::Path::new("exercises/4.2.json"),
+        [0.31, 0.35, 0.33],
+    );
+    assert_eq!(code, 1);
+    assert_eq!(diagnosed(&json), Vec::<Vec<String>>::new());
+    assert_eq!(json["nearest"]["reading"], "light_reversed");
+    let d = json["nearest"]["distance"].as_f64().unwrap();
+    assert!((d - 0.011694).abs() < 1e-5, "{d}");
+}
+
+#[test]
+fn truncated_rgb8_under_a_keys_tolerance_of_half_a_step() {
+    // O_a = (0.7, 0.45, 0.99) under white ambient light: 255·c = (178.5, 114.75, 252.45),
+    // rounded (179, 115, 252), truncated (178, 114, 252). The key's tolerance 0.5 accepts the
+    // rounded value (differences 0.5, 0.25, 0.45) and not the truncated one (0.75 in green).
+    let problem = r#"{"lights": [{"type": "ambient", "color": [1, 1, 1]}],
+        "point": {"material": {"ambient": [0.7, 0.45, 0.99]}},
+        "answer": {"color": [179, 115, 252], "scale": 255, "tolerance": 0.5}}"#;
+    let (code, json) = check_text(problem, "179 115 252", &["--scale", "255"]);
+    assert_eq!(code, 0, "{json}");
+    assert_eq!(json["tolerance"], 0.5);
+    let (code, json) = check_text(problem, "178 114 252", &["--scale", "255"]);
+    assert_eq!(code, 1, "{json}");
+    assert_eq!(diagnosed(&json), [vec!["truncated_rgb8".to_owned()]]);
+}

@@ -2472,24 +2472,25 @@ fn an_unknown_field_named_like_a_path_is_named_whole() {
     }
 }
 
-#[test]
-fn a_floor_met_beyond_the_range_of_f64_is_not_met() {
-    // Round 18 of CI's extended fuzz (seed 1592651828): the classic scene seen from (1e308,
-    // 1e308, 1e308) with a field of view of 179.9999999°. A corner ray runs almost parallel to
-    // the floor and meets it at a finite t where O + tD is beyond f64 (x = −inf); the explained
-    // pixel's JSON printed that hit point (`"point": [null, 0.0, 6.3e307]`). A meeting point
-    // that cannot be represented is no meeting point (docs/conventions.md): the ray misses.
-    let ws = Workspace::new();
-    let classic = &bases()
+/// A bundled file's text, by its path in the repository.
+fn bundled(name: &str) -> &'static str {
+    &bases()
         .iter()
-        .find(|b| b.name == "scenes/classic.json")
+        .find(|b| b.name == name)
         .expect("bundled")
-        .text;
-    let text = classic
-        .replace("\"fov\": 40", "\"fov\": 179.9999999")
-        .replace("\"eye\": [0, 2.5, 8]", "\"eye\": [1e308, 1e308, 1e308]");
-    assert_eq!(text.matches("1e308").count(), 3, "the eye was replaced");
-    assert!(text.contains("179.9999999"), "the fov was replaced");
+        .text
+}
+
+/// `text` as a scene at the fuzz's tiny render settings (8×6 pixels, 4 samples, level 3), in
+/// f64: the problem, its camera and its scene.
+fn tiny_scene(
+    ws: &Workspace,
+    text: &str,
+) -> (
+    problem::Problem<f64>,
+    problem::Camera<f64>,
+    tracer::Scene<f64>,
+) {
     fs::write(&ws.case, text).expect("written");
     let (_, mut problem) = problem::load::<f64>(&ws.case).expect("a valid scene");
     let mut camera = problem.camera.expect("a camera");
@@ -2498,6 +2499,23 @@ fn a_floor_met_beyond_the_range_of_f64_is_not_met() {
     problem.render.samples = 4;
     problem.render.max_level = 3;
     let scene = tracer::Scene::new(&problem);
+    (problem, camera, scene)
+}
+
+#[test]
+fn a_floor_met_beyond_the_range_of_f64_is_not_met() {
+    // Round 18 of CI's extended fuzz (seed 1592651828): the classic scene seen from (1e308,
+    // 1e308, 1e308) with a field of view of 179.9999999°. A corner ray runs almost parallel to
+    // the floor and meets it at a finite t where O + tD is beyond f64 (x = −inf); the explained
+    // pixel's JSON printed that hit point (`"point": [null, 0.0, 6.3e307]`). A meeting point
+    // that cannot be represented is no meeting point (docs/conventions.md): the ray misses.
+    let ws = Workspace::new();
+    let text = bundled("scenes/classic.json")
+        .replace("\"fov\": 40", "\"fov\": 179.9999999")
+        .replace("\"eye\": [0, 2.5, 8]", "\"eye\": [1e308, 1e308, 1e308]");
+    assert_eq!(text.matches("1e308").count(), 3, "the eye was replaced");
+    assert!(text.contains("179.9999999"), "the fov was replaced");
+    let (problem, camera, scene) = tiny_scene(&ws, &text);
     for (x, y) in [(4, 3), (0, 0), (7, 5), (0, 5), (7, 0)] {
         let e = tracer::explain_pixel(&problem, &camera, &scene, x, y).expect("explained");
         let doc = reports::pixel::document("classic", &problem, &e);
@@ -2514,12 +2532,7 @@ fn a_pixel_whose_reflections_overflow_is_refused_not_shown_as_infinite() {
     // pixel's JSON held `"color": [inf, …]`. The solver refuses a colour that overflows; so
     // does the pixel's explanation now, naming a surface whose reflection overflowed.
     let ws = Workspace::new();
-    let classic = &bases()
-        .iter()
-        .find(|b| b.name == "scenes/classic.json")
-        .expect("bundled")
-        .text;
-    let text = classic
+    let text = bundled("scenes/classic.json")
         .replace(
             "\"reflectivity\": [0.95, 0.95, 0.95]",
             "\"reflectivity\": [9.5e299, 9.5e299, 9.5e299]",
@@ -2534,14 +2547,7 @@ fn a_pixel_whose_reflections_overflow_is_refused_not_shown_as_infinite() {
         text.contains("9.5e299") && text.contains("3.4028235e38"),
         "{text}"
     );
-    fs::write(&ws.case, text).expect("written");
-    let (_, mut problem) = problem::load::<f64>(&ws.case).expect("a valid scene");
-    let mut camera = problem.camera.expect("a camera");
-    (camera.width, camera.height) = (8, 6);
-    problem.camera = Some(camera);
-    problem.render.samples = 4;
-    problem.render.max_level = 3;
-    let scene = tracer::Scene::new(&problem);
+    let (problem, camera, scene) = tiny_scene(&ws, &text);
     match tracer::explain_pixel(&problem, &camera, &scene, 4, 3) {
         Ok(e) => panic!(
             "explained with colour {:?}",

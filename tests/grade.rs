@@ -239,3 +239,27 @@ fn an_unreadable_csv_or_folder_exits_2() {
         .code(2)
         .stderr(predicate::str::contains("--exercises: not a folder"));
 }
+
+#[test]
+fn grade_honours_each_keys_tolerance_and_accepts_no_hit() {
+    let dir = exercises();
+    // A key with its own tolerance ±0.05: (0.53, 0.7, 0.3) is 0.03 from (0.5, 0.7, 0.3), right
+    // under the key (before the fix grade used the default ±0.005 and called it wrong).
+    std::fs::write(
+        dir.path().join("loose.json"),
+        r#"{"lights": [{"type": "ambient", "color": [1, 1, 1]}],
+            "point": {"material": {"ambient": [0.5, 0.7, 0.3]}},
+            "answer": {"color": [0.5, 0.7, 0.3], "tolerance": 0.05}}"#,
+    )
+    .unwrap();
+    let csv =
+        b"student,exercise,answer\na,loose,0.53 0.7 0.3\nb,4.3,nenhuma\nc,4.3,0.524 0.027 0\n";
+    let (code, out) = grade(csv, dir.path(), "json");
+    assert_eq!(code, 0);
+    let json: Value = serde_json::from_str(&out).unwrap();
+    let rows = json["rows"].as_array().unwrap();
+    assert_eq!(rows[0]["verdict"], "right", "{}", rows[0]);
+    assert_eq!(rows[0]["tolerance"], 0.05);
+    assert_eq!(rows[1]["verdict"], "right", "{}", rows[1]);
+    assert_eq!(rows[2]["verdict"], "reading", "{}", rows[2]);
+}

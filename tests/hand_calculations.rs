@@ -1,8 +1,8 @@
 //! Checks the solver's JSON for the chapter's exercises 4.1, 4.2 and 4.3 against values
 //! calculated independently here: a second, deliberately plain implementation of the chapter's
-//! formulas on `[f64; 3]` arrays (Eqs. 4.1–4.16, with the sign conventions of DESIGN.md), and,
-//! where a value has a simple closed form, that closed form written out by hand. No expected
-//! number in this file was copied from the program's output.
+//! formulas on `[f64; 3]` arrays (Eqs. 4.1–4.16, with the sign conventions of
+//! docs/conventions.md), and, where a value has a simple closed form, that closed form written
+//! out by hand. No expected number in this file was copied from the program's output.
 //!
 //! A last test runs every exercise file in both precisions and checks that the f32 calculation
 //! agrees with the f64 reference on every numeric leaf of the JSON.
@@ -116,9 +116,10 @@ struct Shading {
     diffuse_literal: V3,
     /// O_s I_l (cos φ)^n_s (Eq. 4.10), taken literally.
     specular_literal: V3,
-    /// The diffuse term with DESIGN.md's gating: only where cos θ > 0.
+    /// The diffuse term, gated (docs/conventions.md, "Gating"): only where cos θ > 0.
     diffuse: V3,
-    /// The specular term with DESIGN.md's gating: only where cos θ > 0 and cos φ > 0.
+    /// The specular term, gated (docs/conventions.md, "Gating"): only where cos θ > 0 and
+    /// cos φ > 0.
     specular: V3,
     /// Eq. 4.16 taken literally: ambient + literal diffuse + literal specular.
     literal: V3,

@@ -977,7 +977,8 @@ fn a_point_on_the_cone_s_edge_is_lit_and_reported_and_1e_minus_12_off_it_is_deci
     let apex = [1.0, -2.0, 3.0];
     for (angle, axis, delta) in cases {
         for p in BOTH {
-            // On the edge: lit (DESIGN.md), and reported as on the edge to within rounding.
+            // On the edge: lit (docs/conventions.md, "Spot cone"), and reported as on the edge to
+            // within rounding.
             let doc = solve(&spot_problem(apex, axis, angle, delta), p).unwrap();
             assert_eq!(
                 doc["solution"]["lights"][0]["status"], "lit",

@@ -1,7 +1,9 @@
 //! Answers as people write them: three numbers separated by spaces, commas or semicolons,
 //! optionally in parentheses or brackets (`0.52 0.03 0`, `(0.52, 0.03, 0)`, `[0.52;0.03;0]`,
-//! `0,52 0,03 0` with decimal commas, `3/5` fractions), 8-bit integers with `--scale 255`, or
-//! `#RRGGBB`. The tolerance an answer is compared under has a default per scale.
+//! `0,52 0,03 0` with decimal commas, `3/5` fractions), 8-bit integers with `--scale 255`,
+//! `#RRGGBB`, or a word saying that the ray hits nothing (`none`, `nenhuma`, `sem interseção`,
+//! `no hit`, `—`: [`is_no_hit`]). The tolerance an answer is compared under has a default per
+//! scale.
 
 use crate::problem::format::{AnswerColor, AnswerSpec};
 use crate::problem::validate::show;
@@ -43,11 +45,79 @@ impl Scale {
     }
 }
 
-/// An answer: three numbers on a scale.
+/// An answer: three numbers on a scale, or "no hit".
 #[derive(Clone, Copy, Debug, PartialEq, serde::Serialize)]
 pub struct Answer {
-    pub values: [f64; 3],
+    /// The colour; `None` when the answer is that the ray hits nothing ("none", "nenhuma", …).
+    pub values: Option<[f64; 3]>,
+    /// The scale the numbers are on (0–1, or 0–255).
     pub scale: Scale,
+}
+
+impl Answer {
+    /// The answer "the ray hits nothing".
+    pub(crate) fn no_hit(scale: Scale) -> Self {
+        Answer {
+            values: None,
+            scale,
+        }
+    }
+}
+
+/// The words (accents, case, spaces, hyphens and underscores aside) that answer "the ray hits
+/// nothing", in English and Portuguese.
+const NO_HIT_WORDS: [&str; 22] = [
+    "none",
+    "no hit",
+    "nohit",
+    "no intersection",
+    "nothing",
+    "no colour",
+    "no color",
+    "miss",
+    "nenhuma",
+    "nenhum",
+    "nada",
+    "nenhuma intersecao",
+    "nenhuma interseccao",
+    "sem intersecao",
+    "sem interseccao",
+    "sem cor",
+    "nao ha intersecao",
+    "nao ha interseccao",
+    "nao intercepta",
+    "nao atinge",
+    "nao ha",
+    "n/a",
+];
+
+/// Whether `text` says that the ray hits nothing: one of [`NO_HIT_WORDS`] in any case, with or
+/// without accents ("sem interseção", "Sem intersecao", "NENHUMA", "no-hit"), or a dash alone
+/// ("—", "–", "-").
+pub(crate) fn is_no_hit(text: &str) -> bool {
+    let t = text
+        .trim()
+        .trim_matches(|c: char| matches!(c, '"' | '\'' | '(' | ')' | '[' | ']' | '.' | '!'))
+        .trim();
+    if matches!(t, "—" | "–" | "-" | "--" | "∅") {
+        return true;
+    }
+    let folded: String = t
+        .to_lowercase()
+        .chars()
+        .map(|c| match c {
+            'á' | 'à' | 'â' | 'ã' | 'ä' => 'a',
+            'é' | 'è' | 'ê' | 'ë' => 'e',
+            'í' | 'ì' | 'î' | 'ï' => 'i',
+            'ó' | 'ò' | 'ô' | 'õ' | 'ö' => 'o',
+            'ú' | 'ù' | 'û' | 'ü' => 'u',
+            'ç' => 'c',
+            '-' | '_' => ' ',
+            c => c,
+        })
+        .collect();
+    let words = folded.split_whitespace().collect::<Vec<_>>().join(" ");
+    NO_HIT_WORDS.contains(&words.as_str())
 }
 
 /// Why an answer cannot be read; the message says what was expected.
@@ -64,7 +134,8 @@ fn bad(message: impl Into<String>) -> BadAnswer {
 }
 
 const FORMS: &str = "write three numbers such as \"0.52 0.03 0\", \"(0.52, 0.03, 0)\" or \
-                     \"[0.52; 0.03; 0]\", three integers 0–255 with --scale 255, or \"#RRGGBB\"";
+                     \"[0.52; 0.03; 0]\", three integers 0–255 with --scale 255, \"#RRGGBB\", or \
+                     \"none\" when the ray hits nothing";
 
 /// Reads an answer written on `scale` (a `#RRGGBB` answer is always on the 255 scale).
 pub fn parse(text: &str, scale: Scale) -> Result<Answer, BadAnswer> {
@@ -72,9 +143,12 @@ pub fn parse(text: &str, scale: Scale) -> Result<Answer, BadAnswer> {
     if t.is_empty() {
         return Err(bad(format!("the answer is empty: {FORMS}")));
     }
+    if is_no_hit(t) {
+        return Ok(Answer::no_hit(scale));
+    }
     if let Some(hex) = t.strip_prefix('#') {
         return parse_hex(hex).map(|values| Answer {
-            values,
+            values: Some(values),
             scale: Scale::Bits8,
         });
     }
@@ -87,7 +161,10 @@ pub fn parse(text: &str, scale: Scale) -> Result<Answer, BadAnswer> {
             .ok_or_else(|| bad(format!("\"{tok}\" in \"{t}\" is not a number: {FORMS}")))?;
     }
     check_scale(values, scale, t)?;
-    Ok(Answer { values, scale })
+    Ok(Answer {
+        values: Some(values),
+        scale,
+    })
 }
 
 /// Checks that an answer's numbers fit its scale.
@@ -114,6 +191,15 @@ pub struct Key {
     pub tolerance: Option<f64>,
 }
 
+impl Key {
+    /// The key's own tolerance on `scale` (the key's scale converted: 2 on the 255 scale is
+    /// 2/255 on the 0–1 scale); `None` when the key gives none.
+    pub(crate) fn tolerance_on(&self, scale: Scale) -> Option<f64> {
+        self.tolerance
+            .map(|t| t * scale.factor() / self.answer.scale.factor())
+    }
+}
+
 /// An answer key from a problem file.
 pub fn from_key(key: &AnswerSpec) -> Result<Key, BadAnswer> {
     let (color, scale, tolerance) = key.parts();
@@ -129,10 +215,12 @@ pub fn from_key(key: &AnswerSpec) -> Result<Key, BadAnswer> {
         }
     };
     let answer = match color {
+        AnswerColor::Hex(h) if is_no_hit(h) => Answer::no_hit(scale.unwrap_or(Scale::Unit)),
         AnswerColor::Hex(h) => {
             let hex = h.strip_prefix('#').ok_or_else(|| {
                 bad(format!(
-                    "answer: \"{h}\" is not a colour: write \"#RRGGBB\" or [r, g, b]"
+                    "answer: \"{h}\" is not a colour: write \"#RRGGBB\" or [r, g, b], or \
+                     \"none\" when the ray hits nothing"
                 ))
             })?;
             if scale == Some(Scale::Unit) {
@@ -142,14 +230,17 @@ pub fn from_key(key: &AnswerSpec) -> Result<Key, BadAnswer> {
                 ));
             }
             Answer {
-                values: parse_hex(hex).map_err(|e| bad(format!("answer: {e}")))?,
+                values: Some(parse_hex(hex).map_err(|e| bad(format!("answer: {e}")))?),
                 scale: Scale::Bits8,
             }
         }
         AnswerColor::Rgb(c) => {
             let scale = scale.unwrap_or(Scale::Unit);
             check_scale(*c, scale, &format!("{c:?}")).map_err(|e| bad(format!("answer: {e}")))?;
-            Answer { values: *c, scale }
+            Answer {
+                values: Some(*c),
+                scale,
+            }
         }
     };
     if let Some(t) = tolerance {
@@ -179,6 +270,17 @@ fn parse_hex(hex: &str) -> Result<[f64; 3], BadAnswer> {
     }
     let byte = |i: usize| f64::from(u8::from_str_radix(&hex[i..i + 2], 16).expect("hex digits"));
     Ok([byte(0), byte(2), byte(4)])
+}
+
+/// Three numbers written as an answer's are (brackets, commas, semicolons, decimal commas,
+/// fractions), or `None`.
+pub(crate) fn three(text: &str) -> Option<[f64; 3]> {
+    let tokens = split(strip_brackets(text.trim()))?;
+    let mut values = [0.0; 3];
+    for (v, tok) in values.iter_mut().zip(&tokens) {
+        *v = number(tok)?;
+    }
+    Some(values)
 }
 
 /// Removes one pair of surrounding brackets: (), [], {}, or a leading "rgb(".
@@ -243,7 +345,7 @@ mod tests {
     use super::*;
 
     fn unit(text: &str) -> [f64; 3] {
-        parse(text, Scale::Unit).expect(text).values
+        parse(text, Scale::Unit).expect(text).values.expect(text)
     }
 
     #[test]
@@ -271,7 +373,7 @@ mod tests {
     #[test]
     fn eight_bit_answers_need_integers_from_0_to_255() {
         let a = parse("134 7 0", Scale::Bits8).unwrap();
-        assert_eq!(a.values, [134.0, 7.0, 0.0]);
+        assert_eq!(a.values, Some([134.0, 7.0, 0.0]));
         assert!(parse("134 7 256", Scale::Bits8).is_err());
         assert!(parse("0.5 7 0", Scale::Bits8).is_err());
         assert!(parse("-1 7 0", Scale::Bits8).is_err());
@@ -281,7 +383,7 @@ mod tests {
     fn a_hex_colour_is_read_on_the_255_scale_whatever_the_flag() {
         let a = parse("#86070a", Scale::Unit).unwrap();
         assert_eq!(a.scale, Scale::Bits8);
-        assert_eq!(a.values, [134.0, 7.0, 10.0]);
+        assert_eq!(a.values, Some([134.0, 7.0, 10.0]));
         assert!(parse("#86070", Scale::Unit).is_err());
         assert!(parse("#86070g", Scale::Unit).is_err());
     }
@@ -320,10 +422,13 @@ mod tests {
         } = from_key(&key).unwrap();
         assert_eq!(
             (a.values, a.scale, t),
-            ([134.0, 7.0, 0.0], Scale::Bits8, Some(2.0))
+            (Some([134.0, 7.0, 0.0]), Scale::Bits8, Some(2.0))
         );
         let key: AnswerSpec = serde_json::from_str(r##""#FF8000""##).unwrap();
-        assert_eq!(from_key(&key).unwrap().answer.values, [255.0, 128.0, 0.0]);
+        assert_eq!(
+            from_key(&key).unwrap().answer.values,
+            Some([255.0, 128.0, 0.0])
+        );
         let key: AnswerSpec = serde_json::from_str("[0.5, 0.7, 0.3]").unwrap();
         assert_eq!(from_key(&key).unwrap().answer.scale, Scale::Unit);
         let key: AnswerSpec =
@@ -335,5 +440,49 @@ mod tests {
             .unwrap_err()
             .message
             .contains("answer.tolerance"));
+    }
+
+    #[test]
+    fn no_hit_is_read_in_either_language_with_or_without_accents() {
+        for text in [
+            "none",
+            "None",
+            "NONE",
+            "no hit",
+            "no-hit",
+            "nenhuma",
+            "Nenhuma.",
+            "nenhum",
+            "sem interseção",
+            "Sem Intersecao",
+            "sem intersecção",
+            "não há interseção",
+            "—",
+            "–",
+            "-",
+            "\"none\"",
+        ] {
+            assert_eq!(parse(text, Scale::Unit).expect(text).values, None, "{text}");
+        }
+        for text in ["non", "nenhumas", "0 0 0", "sem", "hit"] {
+            assert!(!is_no_hit(text), "{text}");
+        }
+        let key: AnswerSpec = serde_json::from_str(r#""none""#).unwrap();
+        assert_eq!(from_key(&key).unwrap().answer.values, None);
+        let key: AnswerSpec =
+            serde_json::from_str(r#"{"color": "nenhuma", "tolerance": 0.01}"#).unwrap();
+        assert_eq!(from_key(&key).unwrap().answer.values, None);
+    }
+
+    #[test]
+    fn a_keys_tolerance_is_converted_to_the_answers_scale() {
+        let key: AnswerSpec =
+            serde_json::from_str(r#"{"color": [134, 7, 0], "scale": 255, "tolerance": 2}"#)
+                .unwrap();
+        let k = from_key(&key).unwrap();
+        assert_eq!(k.tolerance_on(Scale::Bits8), Some(2.0));
+        assert_eq!(k.tolerance_on(Scale::Unit), Some(2.0 / 255.0));
+        let key: AnswerSpec = serde_json::from_str("[0.5, 0.7, 0.3]").unwrap();
+        assert_eq!(from_key(&key).unwrap().tolerance_on(Scale::Unit), None);
     }
 }

@@ -24,7 +24,8 @@ pub struct Options {
     pub exercises: PathBuf,
     /// The scale of answers that are not `#RRGGBB`.
     pub scale: Scale,
-    /// The tolerance; `None` for the scale's default (0.005, or 1 on the 255 scale).
+    /// The tolerance; `None` for each exercise key's own, else the scale's default (0.005, or 1
+    /// on the 255 scale).
     pub tolerance: Option<f64>,
     /// Only the problem as written is right (a likely intended reading is not accepted).
     pub strict: bool,
@@ -37,14 +38,20 @@ pub struct RowOut {
     pub row: usize,
     /// The line of the CSV file where the row starts.
     pub line: u64,
+    /// The `student` column, as written.
     pub student: String,
+    /// The `exercise` column, as written (exercise `4.2` is the file `4.2.json`).
     pub exercise: String,
+    /// The `answer` column, as written.
     pub answer: String,
     /// "right", "reading", "wrong" or "invalid".
     pub verdict: &'static str,
+    /// Right, or a likely intended reading without `--strict`.
     pub accepted: bool,
     /// 1 or 255 (`null` for an invalid row).
     pub scale: Option<u32>,
+    /// The largest difference accepted per channel, on the answer's scale (`null` for an
+    /// invalid row).
     pub tolerance: Option<f64>,
     /// The colour compared with, on the answer's scale.
     pub expected: Option<[f64; 3]>,
@@ -61,47 +68,66 @@ pub struct RowOut {
 /// The rows of one exercise, counted.
 #[derive(Clone, Debug, Default, Serialize)]
 pub struct SummaryOut {
+    /// The exercise, as the rows name it.
     pub exercise: String,
+    /// The number of its rows.
     pub rows: usize,
+    /// Rows whose verdict is "right".
     pub right: usize,
+    /// Rows whose verdict is "reading" (the likely intended reading).
     pub reading: usize,
+    /// Rows whose verdict is "wrong".
     pub wrong: usize,
+    /// Rows that could not be checked (verdict "invalid").
     pub invalid: usize,
     /// The diagnoses of wrong rows, most common first.
     pub slips: Vec<SlipCount>,
 }
 
+/// An entry of `slips`: a diagnosis and how many wrong rows it explains.
 #[derive(Clone, Debug, Serialize)]
 pub struct SlipCount {
+    /// The slips' codes (one, or two made together).
     pub slips: Vec<Slip>,
+    /// The number of wrong rows whose answer they explain.
     pub count: usize,
 }
 
 /// A graded CSV.
 #[derive(Clone, Debug, Serialize)]
 pub struct Report {
+    /// The version of this format, [`CHECK_FORMAT_VERSION`] (1).
     pub format_version: u32,
+    /// Each data row of the CSV, graded, in file order.
     pub rows: Vec<RowOut>,
+    /// Each exercise's rows, counted, in order of first appearance.
     pub summary: Vec<SummaryOut>,
 }
 
 /// The CSV cannot be read at all (a row that cannot be read is reported in its place instead).
 #[derive(Debug, thiserror::Error)]
 #[error("{path}: cannot read the file: {source}. Fix: check the path, and that the file exists and is readable")]
-pub struct Unreadable {
+pub(crate) struct Unreadable {
     pub path: PathBuf,
     #[source]
     pub source: std::io::Error,
 }
 
+/// An exercise solved once: what answers are judged against, and its answer key's own
+/// tolerance (which, like `phong check`'s, judges every answer to it unless `--tolerance`).
+struct Exercise {
+    expected: Expected,
+    key: Option<answer::Key>,
+}
+
 /// Each exercise solved once, or why it cannot be.
 struct Cache<'a> {
     options: &'a Options,
-    solved: BTreeMap<String, Result<Expected, String>>,
+    solved: BTreeMap<String, Result<Exercise, String>>,
 }
 
 impl Cache<'_> {
-    fn get(&mut self, exercise: &str) -> &Result<Expected, String> {
+    fn get(&mut self, exercise: &str) -> &Result<Exercise, String> {
         if !self.solved.contains_key(exercise) {
             let result = self.solve(exercise);
             self.solved.insert(exercise.to_owned(), result);
@@ -109,7 +135,7 @@ impl Cache<'_> {
         &self.solved[exercise]
     }
 
-    fn solve(&self, exercise: &str) -> Result<Expected, String> {
+    fn solve(&self, exercise: &str) -> Result<Exercise, String> {
         let dir = &self.options.exercises;
         let safe = !exercise.starts_with('.')
             && exercise
@@ -130,13 +156,16 @@ impl Cache<'_> {
                 dir.display()
             ));
         }
-        let (_, problem) = crate::problem::load::<f64>(&path).map_err(|e| e.to_string())?;
-        Expected::of(&problem).map_err(|e| e.at(&path).to_string())
+        let (file, problem) = crate::problem::load::<f64>(&path).map_err(|e| e.to_string())?;
+        let expected = Expected::of(&problem).map_err(|e| e.at(&path).to_string())?;
+        // A key that cannot be read judges nothing here (`phong check` reports it).
+        let key = file.answer.as_ref().and_then(|k| answer::from_key(k).ok());
+        Ok(Exercise { expected, key })
     }
 }
 
 /// Grades the CSV file at `path`.
-pub fn grade_file(path: &Path, options: &Options) -> Result<Report, Unreadable> {
+pub(crate) fn grade_file(path: &Path, options: &Options) -> Result<Report, Unreadable> {
     let bytes = std::fs::read(path).map_err(|source| Unreadable {
         path: path.to_owned(),
         source,
@@ -248,7 +277,7 @@ fn grade_row(row: &mut RowOut, fields: &[&[u8]], options: &Options, cache: &mut 
     if let Some(i) = empty {
         return invalid(row, format!("the {} field is empty", COLUMNS[i]));
     }
-    let expected = match cache.get(&row.exercise) {
+    let Exercise { expected, key } = match cache.get(&row.exercise) {
         Ok(e) => e,
         Err(e) => return invalid(row, e.clone()),
     };
@@ -258,13 +287,17 @@ fn grade_row(row: &mut RowOut, fields: &[&[u8]], options: &Options, cache: &mut 
     };
     let tolerance = options
         .tolerance
+        .or_else(|| key.and_then(|k| k.tolerance_on(a.scale)))
         .unwrap_or_else(|| a.scale.default_tolerance());
     let v: Verdict = judge(expected, &a, tolerance, options.strict);
     row.verdict = verdict_code(v.kind);
     row.accepted = v.accepted;
     row.scale = Some(scale_number(a.scale));
     row.tolerance = Some(tolerance);
-    row.expected = v.comparison.map(|c| c.expected);
+    row.expected = v
+        .comparison
+        .map(|c| c.expected)
+        .or(v.has_colour.map(|(c, _)| c));
     row.difference = v.comparison.map(|c| c.difference);
     row.reading = v.reading.as_ref().map(|r| r.code);
     row.diagnosis = v.diagnosis.iter().map(|d| d.slips.clone()).collect();
@@ -403,7 +436,7 @@ pub fn rows_csv(report: &Report) -> Vec<u8> {
 }
 
 /// The summary per exercise as CSV.
-pub fn summary_csv(report: &Report) -> Vec<u8> {
+pub(crate) fn summary_csv(report: &Report) -> Vec<u8> {
     let mut w = csv::Writer::from_writer(Vec::new());
     w.write_record([
         "exercise", "rows", "right", "reading", "wrong", "invalid", "slips",

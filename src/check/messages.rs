@@ -32,6 +32,20 @@ pub fn slip(s: Slip, lang: Lang) -> &'static str {
                 "quadratic falloff where the problem says linear (Eq. 4.3)"
             }
             Slip::AmbientForgotten => "the ambient term O_a I_a forgotten (Eq. 4.6)",
+            Slip::AmbientAssumed => {
+                "an ambient term the problem does not give: a white ambient light I_a = (1, 1, 1) \
+                 assumed, with the material's O_a (Eq. 4.6)"
+            }
+            Slip::IntermediatesRounded => {
+                "intermediates rounded to 2 decimals (L, d, I_l, cos θ, R, V, cos φ, each term): \
+                 keep 4 significant digits until the end"
+            }
+            Slip::TruncatedDecimals => {
+                "the colour truncated to 2 decimals instead of rounded (0.299 is 0.30, not 0.29)"
+            }
+            Slip::TruncatedRgb8 => {
+                "the 8-bit value truncated, ⌊255·c⌋, instead of rounded, round(255·c)"
+            }
             Slip::HalfVector => "cos φ from Blinn's half-vector, N·H, instead of −R·V (Eq. 4.10)",
             Slip::CosPhiNotRaised => "cos φ not raised to n_s (Eq. 4.10)",
             Slip::SpotConeIgnored => {
@@ -60,6 +74,20 @@ pub fn slip(s: Slip, lang: Lang) -> &'static str {
                 "decaimento quadrático onde o problema diz linear (Eq. 4.3)"
             }
             Slip::AmbientForgotten => "o termo de luz ambiente O_a I_a esquecido (Eq. 4.6)",
+            Slip::AmbientAssumed => {
+                "um termo ambiente que o problema não dá: uma luz ambiente branca \
+                 I_a = (1, 1, 1) suposta, com o O_a do material (Eq. 4.6)"
+            }
+            Slip::IntermediatesRounded => {
+                "valores intermediários arredondados a 2 casas decimais (L, d, I_l, cos θ, R, V, \
+                 cos φ, cada termo): mantenha 4 algarismos significativos até o fim"
+            }
+            Slip::TruncatedDecimals => {
+                "a cor truncada a 2 casas decimais em vez de arredondada (0,299 é 0,30, não 0,29)"
+            }
+            Slip::TruncatedRgb8 => {
+                "o valor de 8 bits truncado, ⌊255·c⌋, em vez de arredondado, round(255·c)"
+            }
             Slip::HalfVector => "cos φ pelo vetor médio de Blinn, N·H, em vez de −R·V (Eq. 4.10)",
             Slip::CosPhiNotRaised => "cos φ não elevado a n_s (Eq. 4.10)",
             Slip::SpotConeIgnored => "o cone do spot ignorado (tomado como luz pontual, Eq. 4.4)",
@@ -123,6 +151,7 @@ pub enum Line {
     Expected,
     Difference,
     Tolerance,
+    Closest,
 }
 
 pub fn line(l: Line, lang: Lang) -> &'static str {
@@ -135,7 +164,111 @@ pub fn line(l: Line, lang: Lang) -> &'static str {
         (Lang::Pt, Line::Expected) => "esperado",
         (Lang::Pt, Line::Difference) => "diferença",
         (Lang::Pt, Line::Tolerance) => "tolerância",
+        (Lang::En, Line::Closest) => "closest",
+        (Lang::Pt, Line::Closest) => "mais perto",
     }
+}
+
+/// The answer "the ray hits nothing", as the text report shows it.
+pub fn no_hit_answer(lang: Lang) -> &'static str {
+    match lang {
+        Lang::En => "none (the ray hits nothing)",
+        Lang::Pt => "nenhuma (o raio não atinge nada)",
+    }
+}
+
+/// An answer "no hit" to a problem that has a colour.
+pub fn has_colour(ray: bool, lang: Lang) -> &'static str {
+    match (lang, ray) {
+        (Lang::En, true) => "the problem as written: its ray hits a surface (t > 0), so there is a colour to give",
+        (Lang::En, false) => "the problem as written: a point problem has no ray to miss; give its colour",
+        (Lang::Pt, true) => "o problema como enunciado: o raio atinge uma superfície (t > 0), então há uma cor a dar",
+        (Lang::Pt, false) => "o problema como enunciado: um problema de ponto não tem raio que erre; dê a sua cor",
+    }
+}
+
+/// What a nearest candidate is, how far the answer is from it, against the tolerance.
+pub fn nearest(c: &super::Candidate, distance: f64, tolerance: f64, lang: Lang) -> String {
+    use crate::report::number::num;
+    let what = match (lang, c) {
+        (Lang::En, super::Candidate::Written) => "the problem as written".to_owned(),
+        (Lang::Pt, super::Candidate::Written) => "o problema como enunciado".to_owned(),
+        (Lang::En, super::Candidate::Reading(r, true)) => {
+            format!("the likely intended reading \"{}\"", reading(*r, lang))
+        }
+        (Lang::Pt, super::Candidate::Reading(r, true)) => {
+            format!(
+                "a leitura provavelmente pretendida \"{}\"",
+                reading(*r, lang)
+            )
+        }
+        (Lang::En, super::Candidate::Reading(r, false)) => {
+            format!("the reading \"{}\"", reading(*r, lang))
+        }
+        (Lang::Pt, super::Candidate::Reading(r, false)) => {
+            format!("a leitura \"{}\"", reading(*r, lang))
+        }
+        (
+            _,
+            super::Candidate::Slips {
+                slips: list,
+                intended,
+            },
+        ) => {
+            let mistakes: Vec<Slip> = list
+                .iter()
+                .copied()
+                .filter(|s| !intended.contains(s))
+                .collect();
+            let within = if intended.is_empty() {
+                String::new()
+            } else {
+                format!(" ({})", in_intended_reading(lang))
+            };
+            format!("{}{within}", slips(&mistakes, lang))
+        }
+    };
+    // Within ten tolerances (a few hundredths on the 0–1 scale) it is a near miss.
+    let near = distance <= 10.0 * tolerance;
+    match (lang, near) {
+        (Lang::En, true) => format!(
+            "close to {what}: {} away at most per channel (tolerance ±{})",
+            num(distance),
+            num(tolerance)
+        ),
+        (Lang::En, false) => format!(
+            "the nearest is {what}: {} away at most per channel (tolerance ±{})",
+            num(distance),
+            num(tolerance)
+        ),
+        (Lang::Pt, true) => format!(
+            "perto {}: no máximo {} de diferença por canal (tolerância ±{})",
+            de(&what),
+            num(distance),
+            num(tolerance)
+        ),
+        (Lang::Pt, false) => format!(
+            "o mais perto é {what}: no máximo {} de diferença por canal (tolerância ±{})",
+            num(distance),
+            num(tolerance)
+        ),
+    }
+}
+
+/// "de" before a Portuguese noun phrase, contracted with its article as Portuguese requires
+/// ("perto da leitura", "perto do problema"): "de a" is not written.
+fn de(phrase: &str) -> String {
+    for (article, contracted) in [
+        ("os ", "dos "),
+        ("as ", "das "),
+        ("o ", "do "),
+        ("a ", "da "),
+    ] {
+        if let Some(rest) = phrase.strip_prefix(article) {
+            return format!("{contracted}{rest}");
+        }
+    }
+    format!("de {phrase}")
 }
 
 /// What the expected colour is: the problem as written or a reading, clamped or not.
@@ -168,8 +301,14 @@ pub fn per_channel(scale: super::Scale, lang: Lang) -> &'static str {
 /// The problem as written has no colour (its ray hits nothing).
 pub fn nothing_to_shade(lang: Lang) -> &'static str {
     match lang {
-        Lang::En => "as written, the problem has no colour: its ray hits nothing (t > 0)",
-        Lang::Pt => "como enunciado, o problema não tem cor: o raio não atinge nada (t > 0)",
+        Lang::En => {
+            "as written, the problem has no colour: its ray hits nothing (t > 0), and the answer \
+             is \"none\""
+        }
+        Lang::Pt => {
+            "como enunciado, o problema não tem cor: o raio não atinge nada (t > 0), e a \
+             resposta é \"nenhuma\""
+        }
     }
 }
 
@@ -262,5 +401,178 @@ pub fn summary(kind: VerdictKind, accepted: bool, reading: Option<ReadingCode>) 
             self::reading(r, Lang::En)
         ),
         _ => "the answer is wrong".into(),
+    }
+}
+
+/// The heading of a file's steps.
+pub fn steps_heading(lang: Lang) -> &'static str {
+    match lang {
+        Lang::En => "steps",
+        Lang::Pt => "passos",
+    }
+}
+
+/// A step's verdict word.
+pub fn step_verdict(v: super::steps::StepVerdict, lang: Lang) -> &'static str {
+    use super::steps::StepVerdict as V;
+    match (lang, v) {
+        (Lang::En, V::Right) => "right",
+        (Lang::En, V::Reading) => "wrong as written, right in the likely intended reading",
+        (Lang::En, V::Wrong) => "wrong",
+        (Lang::Pt, V::Right) => "certo",
+        (Lang::Pt, V::Reading) => {
+            "errado como enunciado, certo na leitura provavelmente pretendida"
+        }
+        (Lang::Pt, V::Wrong) => "errado",
+    }
+}
+
+/// A step of the likely intended reading of a problem that, as written, has no such quantity
+/// (its ray hits nothing).
+pub fn step_no_hit(code: ReadingCode, lang: Lang) -> String {
+    match lang {
+        Lang::En => format!(
+            "as the likely intended reading \"{}\" has it; as written the ray hits nothing, so \
+             there is no such step",
+            reading(code, lang)
+        ),
+        Lang::Pt => format!(
+            "como na leitura provavelmente pretendida \"{}\"; como enunciado o raio não atinge \
+             nada, então não há esse passo",
+            reading(code, lang)
+        ),
+    }
+}
+
+/// What the step's value is (as written, or in the likely intended reading when the problem as
+/// written has none).
+pub fn step_exact(exact: &str, from: Option<ReadingCode>, lang: Lang) -> String {
+    match (lang, from) {
+        (Lang::En, None) => format!("the problem as written gives {exact}"),
+        (Lang::Pt, None) => format!("o problema como enunciado dá {exact}"),
+        (Lang::En, Some(c)) => format!(
+            "the likely intended reading \"{}\" gives {exact} (as written the ray hits nothing)",
+            reading(c, lang)
+        ),
+        (Lang::Pt, Some(c)) => format!(
+            "a leitura provavelmente pretendida \"{}\" dá {exact} (como enunciado o raio não \
+             atinge nada)",
+            reading(c, lang)
+        ),
+    }
+}
+
+/// A step wrong as written whose value is the likely intended reading's.
+pub fn step_reading(code: ReadingCode, lang: Lang) -> String {
+    match lang {
+        Lang::En => format!(
+            "yours is the value of the likely intended reading \"{}\"",
+            reading(code, lang)
+        ),
+        Lang::Pt => format!(
+            "o seu é o valor da leitura provavelmente pretendida \"{}\"",
+            reading(code, lang)
+        ),
+    }
+}
+
+/// The given value is the expected one with its sign reversed.
+pub fn step_sign(vector: bool, lang: Lang) -> &'static str {
+    match (lang, vector) {
+        (Lang::En, false) => " (the sign differs)",
+        (Lang::En, true) => " (the vector is reversed: every sign differs)",
+        (Lang::Pt, false) => " (o sinal é outro)",
+        (Lang::Pt, true) => " (o vetor está invertido: todos os sinais trocados)",
+    }
+}
+
+/// The given value is the ungated one.
+pub fn step_literal(lang: Lang) -> &'static str {
+    match lang {
+        Lang::En => {
+            "yours is the value without gating (a light behind the surface, cos θ ≤ 0, or \
+             cos φ ≤ 0, adds nothing)"
+        }
+        Lang::Pt => {
+            "o seu é o valor sem o limite (uma luz atrás da superfície, cos θ ≤ 0, ou \
+             cos φ ≤ 0, não contribui)"
+        }
+    }
+}
+
+/// The given value is that of a reading other than the likely intended one.
+pub fn step_other_reading(code: ReadingCode, lang: Lang) -> String {
+    match lang {
+        Lang::En => format!("it is the value of the reading \"{}\"", reading(code, lang)),
+        Lang::Pt => format!("é o valor da leitura \"{}\"", reading(code, lang)),
+    }
+}
+
+/// The given value is what these slips give.
+pub fn step_slips(list: &[Slip], lang: Lang) -> String {
+    let each: Vec<&str> = list.iter().map(|s| slip(*s, lang)).collect();
+    match lang {
+        Lang::En => format!("it is what this slip gives: {}", each.join("; or ")),
+        Lang::Pt => format!("é o que este erro dá: {}", each.join("; ou ")),
+    }
+}
+
+/// The first wrong step, with its equation.
+pub fn first_wrong(label: &str, eq: &str, reading_only: bool, lang: Lang) -> String {
+    match (lang, reading_only) {
+        (Lang::En, false) => format!("first wrong step: {label} ({eq})"),
+        (Lang::En, true) => format!(
+            "first wrong step as written: {label} ({eq}); from there on you follow the likely \
+             intended reading"
+        ),
+        (Lang::Pt, false) => format!("primeiro passo errado: {label} ({eq})"),
+        (Lang::Pt, true) => format!(
+            "primeiro passo errado como enunciado: {label} ({eq}); dali em diante você segue a \
+             leitura provavelmente pretendida"
+        ),
+    }
+}
+
+/// Every step right.
+pub fn all_steps_right(lang: Lang) -> &'static str {
+    match lang {
+        Lang::En => "every step given is right",
+        Lang::Pt => "todos os passos dados estão certos",
+    }
+}
+
+/// The tolerance of steps.
+pub fn step_tolerance(relative: f64, absolute: f64, lang: Lang) -> String {
+    use crate::report::number::num;
+    let pct = num(relative * 100.0);
+    match lang {
+        Lang::En => format!(
+            "tolerance: {pct} % of the value's size or ±{}, whichever is larger (hand calculation)",
+            num(absolute)
+        ),
+        Lang::Pt => format!(
+            "tolerância: {pct} % do tamanho do valor ou ±{}, o que for maior (cálculo à mão)",
+            num(absolute)
+        ),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::de;
+
+    #[test]
+    fn de_is_contracted_with_the_article_as_portuguese_writes_it() {
+        assert_eq!(
+            de("a leitura provavelmente pretendida"),
+            "da leitura provavelmente pretendida"
+        );
+        assert_eq!(
+            de("o problema como enunciado"),
+            "do problema como enunciado"
+        );
+        assert_eq!(de("os erros"), "dos erros");
+        assert_eq!(de("as cores"), "das cores");
+        assert_eq!(de("erro de sinal"), "de erro de sinal");
     }
 }

@@ -1,8 +1,8 @@
 //! Checking answers: `phong check` and `phong grade`.
 //!
-//! A problem is solved once into an [`Expected`]: the colour of the problem as written, the
+//! A problem is solved once into an `Expected`: the colour of the problem as written, the
 //! colours of its readings, and the colour each classic slip (and pair of slips) gives, all
-//! computed by the same solver and core ([`slips`]). Judging an answer against it is then a few
+//! computed by the same solver and core (`slips`). Judging an answer against it is then a few
 //! comparisons, cheap enough to grade a class's CSV in one pass ([`grade`]).
 //!
 //! Verdicts (see README "Checking answers"):
@@ -15,11 +15,12 @@
 //! - `wrong` (exit 1): anything else, with the slips whose colour it matches, and the other
 //!   reading it matches, if any (4.2's "normal reversed" is |cos θ|, a slip, not an intent).
 
-pub mod answer;
+pub(crate) mod answer;
 pub mod grade;
-pub mod messages;
+pub(crate) mod messages;
 pub mod report;
-pub mod slips;
+pub(crate) mod slips;
+pub(crate) mod steps;
 
 use std::path::Path;
 
@@ -27,8 +28,10 @@ use crate::problem::{Problem, ProblemError, ProblemFile};
 use crate::solve::{Evaluation, ReadingCode};
 use report::{AnswerSource, Checked, Failure, FailureKind, Judged};
 
-pub use answer::{Answer, BadAnswer, Key, Scale};
-pub use slips::{Outcome, Slip};
+pub(crate) use answer::Key;
+pub use answer::{Answer, Scale};
+pub(crate) use slips::Outcome;
+pub use slips::Slip;
 
 /// A colour an answer can be compared with, on the 0–1 scale.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -62,6 +65,7 @@ pub enum Against {
 /// An answer against one target.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Comparison {
+    /// Which value of the target the answer was compared with.
     pub against: Against,
     /// The target's value on the answer's scale.
     pub expected: [f64; 3],
@@ -74,9 +78,10 @@ pub struct Comparison {
 /// Compares an answer with a target: the clamped colour first, then (0–1 scale only) the
 /// unclamped one; the first within the tolerance, or else the clamped one. `None` when the
 /// target has no value on the answer's scale (a literal value against an 8-bit answer).
-pub fn compare(answer: &Answer, target: &Target, tolerance: f64) -> Option<Comparison> {
+pub(crate) fn compare(answer: &Answer, target: &Target, tolerance: f64) -> Option<Comparison> {
+    let values = answer.values?;
     let with = |against, expected: [f64; 3]| {
-        let difference = [0, 1, 2].map(|i| answer.values[i] - expected[i]);
+        let difference = [0, 1, 2].map(|i| values[i] - expected[i]);
         // A decimal answer is not exact in binary: 0.25 − 0.245 is 0.0050000000000000044.
         let slack = tolerance * 1e-9 + 1e-12;
         Comparison {
@@ -100,28 +105,64 @@ pub fn compare(answer: &Answer, target: &Target, tolerance: f64) -> Option<Compa
     }
 }
 
+impl Comparison {
+    /// The largest |difference| of a channel: how far the answer is, on its scale.
+    pub(crate) fn distance(&self) -> f64 {
+        self.difference.iter().fold(0.0, |m, d| m.max(d.abs()))
+    }
+}
+
+/// What a nearest candidate is: the problem as written, a reading, or a slip (or pair).
+#[derive(Clone, Debug, PartialEq)]
+pub enum Candidate {
+    /// The problem as written.
+    Written,
+    /// A reading of the problem (its code; whether it is the likely intended one).
+    Reading(ReadingCode, bool),
+    /// The colour these slips give (with those that are the likely intended reading).
+    Slips {
+        /// The slips made.
+        slips: Vec<Slip>,
+        /// Those of them that are the likely intended reading, not mistakes.
+        intended: Vec<Slip>,
+    },
+}
+
+/// The candidate colour closest to a wrong answer, with how far it is.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Nearest {
+    /// What the colour is.
+    pub candidate: Candidate,
+    /// The answer against it (the clamped or unclamped value, whichever is closer).
+    pub comparison: Comparison,
+}
+
 /// A reading of the problem and its colour.
 #[derive(Clone, Debug, PartialEq)]
 pub struct ReadingTarget {
+    /// Which reading.
     pub code: ReadingCode,
     /// The solver labels it the likely intended reading.
     pub likely_intended: bool,
+    /// The reading's colour.
     pub target: Target,
 }
 
 /// Everything an answer to one problem is judged against, computed once.
 #[derive(Clone, Debug)]
-pub struct Expected {
+pub(crate) struct Expected {
     /// The problem as written; `None` when there is nothing to shade (the ray hits nothing).
     pub solution: Option<Target>,
     pub readings: Vec<ReadingTarget>,
     /// What each applicable slip, and pair of slips, gives.
     pub outcomes: Vec<Outcome>,
+    /// The problem has a ray (a ray problem), rather than a point.
+    pub ray: bool,
 }
 
 impl Expected {
     /// Solves the problem, its readings and its slips (f64, the reference precision).
-    pub fn of(problem: &Problem<f64>) -> Result<Expected, crate::problem::Invalid> {
+    pub(crate) fn of(problem: &Problem<f64>) -> Result<Expected, crate::problem::Invalid> {
         let solution = crate::solve::solve(problem)?;
         let base = solution.evaluation.as_ref().map(Target::of);
         let readings = solution
@@ -137,12 +178,13 @@ impl Expected {
             solution: base,
             readings,
             outcomes: slips::outcomes(problem, base.as_ref()),
+            ray: matches!(problem.target, crate::problem::Target::Ray { .. }),
         })
     }
 
     /// The colour an answer is measured against: the problem as written, or, when it has none,
     /// its likely intended reading.
-    pub fn reference(&self) -> Option<Reference> {
+    pub(crate) fn reference(&self) -> Option<Reference> {
         match self.solution {
             Some(target) => Some(Reference {
                 target,
@@ -162,7 +204,7 @@ impl Expected {
 
 /// The colour an answer is measured against ([`Expected::reference`]).
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Reference {
+pub(crate) struct Reference {
     pub target: Target,
     /// `None` for the problem as written, or the reading whose colour it is.
     pub reading: Option<ReadingCode>,
@@ -172,23 +214,28 @@ pub struct Reference {
 #[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize)]
 #[serde(rename_all = "snake_case")]
 pub enum VerdictKind {
+    /// Within the tolerance of the problem as written.
     Right,
+    /// Within the tolerance of a likely intended reading, not of the problem as written.
     Reading,
+    /// Neither.
     Wrong,
 }
 
 /// A slip (or pair) the answer matches.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Diagnosis {
+    /// The slips' codes (one, or two made together).
     pub slips: Vec<Slip>,
     /// Those of `slips` that are the likely intended reading (not counted as mistakes).
     pub intended: Vec<Slip>,
+    /// The answer against the colour these slips give.
     pub comparison: Comparison,
 }
 
 impl Diagnosis {
     /// The slips that are mistakes (all but the likely intended reading's).
-    pub fn mistakes(&self) -> Vec<Slip> {
+    pub(crate) fn mistakes(&self) -> Vec<Slip> {
         let m: Vec<Slip> = self
             .slips
             .iter()
@@ -206,6 +253,7 @@ impl Diagnosis {
 /// The verdict on one answer, with everything the report says about it.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Verdict {
+    /// Right, reading or wrong.
     pub kind: VerdictKind,
     /// Right, or a likely intended reading without `--strict`: exit 0.
     pub accepted: bool,
@@ -224,10 +272,16 @@ pub struct Verdict {
     pub pairs: bool,
     /// A wrong 0–1 answer whose numbers look like 8-bit values (integers, some above 1).
     pub looks_8bit: bool,
+    /// For a wrong answer: the closest of the problem as written, its readings and every slip's
+    /// colour that it does not match (a near miss is told how near it is, and to what).
+    pub nearest: Option<Nearest>,
+    /// For an answer "no hit" to a problem that has a colour: that colour (clamped, on the
+    /// answer's scale), and whether the problem has a ray at all.
+    pub has_colour: Option<([f64; 3], bool)>,
 }
 
 /// Judges an answer.
-pub fn judge(expected: &Expected, answer: &Answer, tolerance: f64, strict: bool) -> Verdict {
+pub(crate) fn judge(expected: &Expected, answer: &Answer, tolerance: f64, strict: bool) -> Verdict {
     let mut v = Verdict {
         kind: VerdictKind::Wrong,
         accepted: false,
@@ -238,7 +292,24 @@ pub fn judge(expected: &Expected, answer: &Answer, tolerance: f64, strict: bool)
         diagnosis: Vec::new(),
         pairs: false,
         looks_8bit: false,
+        nearest: None,
+        has_colour: None,
     };
+    if answer.values.is_none() {
+        // "No hit": right exactly when the problem as written has nothing to shade.
+        match &expected.solution {
+            None => {
+                v.kind = VerdictKind::Right;
+                v.accepted = true;
+            }
+            Some(t) => {
+                let k = answer.scale.factor();
+                let c = t.clamped.unwrap_or(t.unclamped).map(|x| x * k);
+                v.has_colour = Some((c, expected.ray));
+            }
+        }
+        return v;
+    }
     if let Some(t) = &expected.solution {
         v.comparison = compare(answer, t, tolerance);
         v.written = v.comparison;
@@ -309,13 +380,103 @@ pub fn judge(expected: &Expected, answer: &Answer, tolerance: f64, strict: bool)
         v.diagnosis = matching(true);
         v.pairs = !v.diagnosis.is_empty();
     }
+    let values = answer.values.unwrap_or_default();
     v.looks_8bit = answer.scale == Scale::Unit
-        && answer
-            .values
+        && values
             .iter()
             .all(|x| x.fract() == 0.0 && (0.0..=255.0).contains(x))
-        && answer.values.iter().any(|&x| x > 1.0);
+        && values.iter().any(|&x| x > 1.0);
+    v.nearest = nearest(expected, answer, tolerance, &intended);
+    // Where slips explain the answer, the nearest other colour is news only if it is the problem
+    // as written or a reading, and near (a few hundredths on the 0–1 scale).
+    if !v.diagnosis.is_empty() {
+        v.nearest = nearest_reading(expected, answer, tolerance)
+            .filter(|n| n.comparison.distance() <= 10.0 * tolerance);
+    }
     v
+}
+
+/// [`nearest`] among the problem as written and its readings only.
+fn nearest_reading(expected: &Expected, answer: &Answer, tolerance: f64) -> Option<Nearest> {
+    let only = Expected {
+        outcomes: Vec::new(),
+        ..expected.clone()
+    };
+    nearest(&only, answer, tolerance, &[])
+}
+
+/// The answer against a target's clamped and (0–1 scale) unclamped value: the closer one.
+fn closest(answer: &Answer, target: &Target) -> Option<Comparison> {
+    let clamped = compare(answer, target, f64::INFINITY).filter(|c| c.against == Against::Clamped);
+    let unclamped = (answer.scale == Scale::Unit)
+        .then(|| {
+            let t = Target {
+                clamped: None,
+                ..*target
+            };
+            compare(answer, &t, f64::INFINITY)
+        })
+        .flatten();
+    match (clamped, unclamped) {
+        (Some(c), Some(u)) if u.distance() < c.distance() => Some(u),
+        (Some(c), _) => Some(c),
+        (None, u) => u,
+    }
+}
+
+/// The closest candidate a wrong answer does not match: the problem as written, a reading, or
+/// a slip's (or pair's) colour; truncations are left out (an answer they explain matches one).
+/// Ties go to the first in that order.
+fn nearest(
+    expected: &Expected,
+    answer: &Answer,
+    tolerance: f64,
+    intended: &[Slip],
+) -> Option<Nearest> {
+    let written = expected.solution.iter().map(|t| (Candidate::Written, *t));
+    let readings = expected
+        .readings
+        .iter()
+        .map(|r| (Candidate::Reading(r.code, r.likely_intended), r.target));
+    let slips = expected
+        .outcomes
+        .iter()
+        .filter(|o| !o.slips.iter().any(|s| s.is_truncation()))
+        .map(|o| {
+            let mine: Vec<Slip> = o
+                .slips
+                .iter()
+                .copied()
+                .filter(|s| o.slips.len() > 1 && intended.contains(s))
+                .collect();
+            (
+                Candidate::Slips {
+                    slips: o.slips.clone(),
+                    intended: mine,
+                },
+                o.target,
+            )
+        });
+    let mut best: Option<Nearest> = None;
+    for (candidate, target) in written.chain(readings).chain(slips) {
+        let Some(c) = closest(answer, &target) else {
+            continue;
+        };
+        let slack = tolerance * 1e-9 + 1e-12;
+        if c.distance() <= tolerance + slack {
+            continue;
+        }
+        if best
+            .as_ref()
+            .is_none_or(|b| c.distance() < b.comparison.distance())
+        {
+            best = Some(Nearest {
+                candidate,
+                comparison: c,
+            });
+        }
+    }
+    best
 }
 
 /// How `phong check` reads and judges an answer.
@@ -340,22 +501,33 @@ pub fn check_file(path: &Path, options: &CheckOptions) -> report::Checked {
     } else {
         AnswerSource::Key
     };
-    let checked = |text, outcome| Checked {
+    let checked = |text, outcome, warnings| Checked {
         file: file.clone(),
         text,
         source,
         outcome,
+        warnings,
     };
     let loaded = match Loaded::read(path) {
         Ok(l) => l,
-        Err(e) => return checked(options.answer.clone(), Err(Failure::problem(&e))),
+        Err(e) => {
+            return checked(
+                options.answer.clone(),
+                Err(Failure::problem(&e)),
+                Vec::new(),
+            )
+        }
     };
+    let warnings = loaded
+        .problem
+        .as_ref()
+        .map_or_else(|_| Vec::new(), |p| p.warnings.clone());
     let key = loaded.file.answer.as_ref();
     let text = options
         .answer
         .clone()
         .or_else(|| key.map(|k| serde_json::to_string(&key_json(k)).unwrap_or_default()));
-    checked(text, judge_loaded(path, &file, loaded, options))
+    checked(text, judge_loaded(path, &file, loaded, options), warnings)
 }
 
 /// A problem file loaded as `solve` and `grade` load it ([`crate::problem::load`], which finds
@@ -398,10 +570,15 @@ fn judge_loaded(
         message,
     };
     let key = match (&options.answer, &loaded.file.answer) {
-        (Some(text), _) => answer::parse(text, options.scale)
+        (Some(text), file_key) => answer::parse(text, options.scale)
             .map(|answer| Key {
                 answer,
-                tolerance: None,
+                // The file's key says how closely its exercise is judged: an answer given on
+                // the command line is judged so too (on its own scale).
+                tolerance: file_key
+                    .as_ref()
+                    .and_then(|k| answer::from_key(k).ok())
+                    .and_then(|k| k.tolerance_on(answer.scale)),
             })
             .map_err(|e| answer_failure("--answer", format!("{file}: --answer: {e}")))?,
         (None, Some(key)) => {

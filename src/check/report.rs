@@ -7,8 +7,7 @@ use std::fmt::Write;
 use serde::Serialize;
 
 use super::messages::{self, Line};
-use super::{Answer, Comparison, Scale, Verdict, VerdictKind};
-use crate::cli::Exit;
+use super::{Answer, Candidate, Comparison, Nearest, Scale, Verdict, VerdictKind};
 use crate::problem::ProblemError;
 use crate::report::lang::Lang;
 use crate::report::number::num;
@@ -30,34 +29,44 @@ pub enum AnswerSource {
 /// One checked answer, or why it could not be checked.
 #[derive(Clone, Debug)]
 pub struct Checked {
+    /// The problem file's path, as given.
     pub file: String,
     /// The answer as written, when there is one.
     pub text: Option<String>,
+    /// Where the answer came from.
     pub source: AnswerSource,
+    /// The judged answer, or why it could not be checked.
     pub outcome: Result<Judged, Failure>,
+    /// Likely unit mistakes in the problem file (never errors).
+    pub warnings: Vec<crate::problem::warnings::Warning>,
 }
 
 /// An answer that could be checked: the answer read, the tolerance it was judged under, and
 /// the verdict.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Judged {
+    /// The answer, read.
     pub answer: Answer,
     /// The largest difference accepted per channel, on the answer's scale.
     pub tolerance: f64,
+    /// The verdict, with the comparisons and the diagnosis behind it.
     pub verdict: Verdict,
 }
 
 /// Why an answer could not be checked.
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct Failure {
+    /// What could not be checked (`error.kind` in the JSON).
     pub kind: FailureKind,
+    /// The field of the problem file at fault, where there is one (`lights[1].falloff`).
     pub field: Option<String>,
+    /// The error as an English sentence, with its fix.
     pub message: String,
 }
 
 impl Failure {
     /// A problem file that cannot be read, parsed, validated or solved.
-    pub fn problem(e: &ProblemError) -> Self {
+    pub(crate) fn problem(e: &ProblemError) -> Self {
         Failure {
             kind: FailureKind::of(e),
             field: e.field().map(str::to_owned),
@@ -85,7 +94,7 @@ pub enum FailureKind {
 
 impl FailureKind {
     /// The kind of a problem file's error.
-    pub fn of(e: &ProblemError) -> Self {
+    pub(crate) fn of(e: &ProblemError) -> Self {
         match e {
             ProblemError::Read { .. } => FailureKind::Read,
             ProblemError::Syntax { .. } => FailureKind::Syntax,
@@ -113,13 +122,25 @@ impl Serialize for FailureKind {
     }
 }
 
+/// What a check decided, in the three ways a caller acts on it (the command line maps them to
+/// the exit codes 0, 1 and 2).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum Status {
+    /// Right, or the likely intended reading without `--strict`.
+    Accepted,
+    /// Wrong, or the likely intended reading under `--strict`.
+    Refused,
+    /// The answer or the problem could not be read, validated or solved.
+    Unchecked,
+}
+
 impl Checked {
-    /// 0 accepted, 1 wrong (or a reading under --strict), 2 cannot be checked.
-    pub fn exit_code(&self) -> Exit {
+    /// Whether the answer was accepted, refused, or could not be checked.
+    pub(crate) fn status(&self) -> Status {
         match &self.outcome {
-            Ok(j) if j.verdict.accepted => Exit::Success,
-            Ok(_) => Exit::Wrong,
-            Err(_) => Exit::BadInput,
+            Ok(j) if j.verdict.accepted => Status::Accepted,
+            Ok(_) => Status::Refused,
+            Err(_) => Status::Unchecked,
         }
     }
 }
@@ -164,12 +185,11 @@ pub fn text(c: &Checked, lang: Lang) -> String {
         messages::verdict(v.kind, v.accepted, lang)
     );
     let label = |l| format!("{:<11}", messages::line(l, lang));
-    let _ = writeln!(
-        out,
-        "  {}{}",
-        label(Line::Answer),
-        triple(answer.values, num)
-    );
+    let shown = match answer.values {
+        Some(values) => triple(values, num),
+        None => messages::no_hit_answer(lang).to_owned(),
+    };
+    let _ = writeln!(out, "  {}{shown}", label(Line::Answer));
     match &v.comparison {
         Some(cmp) => {
             let _ = writeln!(
@@ -186,9 +206,20 @@ pub fn text(c: &Checked, lang: Lang) -> String {
                 triple(cmp.difference, signed)
             );
         }
-        None => {
-            let _ = writeln!(out, "  {}", messages::nothing_to_shade(lang));
-        }
+        None => match v.has_colour {
+            Some((colour, ray)) => {
+                let _ = writeln!(
+                    out,
+                    "  {}{}  {}",
+                    label(Line::Expected),
+                    triple(colour, num),
+                    messages::has_colour(ray, lang)
+                );
+            }
+            None => {
+                let _ = writeln!(out, "  {}", messages::nothing_to_shade(lang));
+            }
+        },
     }
     let _ = writeln!(
         out,
@@ -221,6 +252,9 @@ pub fn text(c: &Checked, lang: Lang) -> String {
             }
         }
     }
+    if v.kind == VerdictKind::Wrong && v.written.is_none() && answer.values.is_some() {
+        let _ = writeln!(out, "  {}", messages::nothing_to_shade(lang));
+    }
     if v.kind == VerdictKind::Wrong {
         if v.diagnosis.is_empty() {
             let _ = writeln!(out, "  {}", messages::no_diagnosis(lang));
@@ -243,8 +277,27 @@ pub fn text(c: &Checked, lang: Lang) -> String {
         if v.looks_8bit {
             let _ = writeln!(out, "  {}", messages::looks_8bit(lang));
         }
+        if let Some(n) = v.nearest.as_ref().filter(|n| worth_showing(n, v)) {
+            let _ = writeln!(
+                out,
+                "  {}{}  {}",
+                label(Line::Closest),
+                triple(n.comparison.expected, num),
+                messages::nearest(&n.candidate, n.comparison.distance(), *tolerance, lang)
+            );
+        }
     }
     out
+}
+
+/// A nearest candidate is news unless it is the colour the "expected" line already shows.
+fn worth_showing(n: &Nearest, v: &Verdict) -> bool {
+    let shown = match (&n.candidate, v.compared_reading) {
+        (Candidate::Written, None) => true,
+        (Candidate::Reading(code, _), Some(r)) => *code == r,
+        _ => false,
+    };
+    !shown
 }
 
 /// The JSON form of a comparison's target.
@@ -260,22 +313,31 @@ pub struct ExpectedOut {
     pub against: super::Against,
 }
 
+/// `answer`: the answer checked.
 #[derive(Serialize)]
 pub struct AnswerOut {
+    /// The answer as written; `null` when there is none.
     pub text: Option<String>,
+    /// Where it came from: "argument" (`--answer` or a CSV row) or "key" (the file's `answer`).
     pub source: AnswerSource,
     /// 1 or 255.
     pub scale: Option<u32>,
+    /// The three numbers read, on `scale`; `null` when the answer could not be checked.
     pub values: Option<[f64; 3]>,
 }
 
+/// `reading`: a reading of the problem the answer matches.
 #[derive(Serialize)]
 pub struct ReadingOut {
+    /// Which reading: "light_reversed", "normal_reversed" or "line_behind_origin".
     pub code: ReadingCode,
+    /// Whether the solver labels it the likely intended reading.
     pub likely_intended: bool,
+    /// The reading in English.
     pub label: &'static str,
 }
 
+/// An entry of `diagnosis`: slips whose colour the answer matches.
 #[derive(Serialize)]
 pub struct DiagnosisOut {
     /// The slips' codes (one, or two made together).
@@ -286,26 +348,63 @@ pub struct DiagnosisOut {
     pub description: String,
     /// The colour those slips give, on the answer's scale.
     pub color: [f64; 3],
+    /// answer − color, per channel, on the answer's scale.
     pub difference: [f64; 3],
 }
 
 /// One check, for scripts.
 #[derive(Serialize)]
 pub struct CheckOut {
+    /// The version of this format, [`CHECK_FORMAT_VERSION`] (1).
     pub format_version: u32,
+    /// The problem file's path, as given.
     pub file: String,
+    /// The answer checked.
     pub answer: AnswerOut,
+    /// The largest difference accepted per channel, on the answer's scale; `null` when the answer
+    /// cannot be checked.
     pub tolerance: Option<f64>,
     /// "right", "reading", "wrong" or "invalid".
     pub verdict: &'static str,
     /// Exit code 0: right, or a likely intended reading without --strict.
     pub accepted: bool,
+    /// The verdict (or the error) as an English sentence.
     pub message: String,
+    /// The colour the answer was compared with; `null` when there is none.
     pub expected: Option<ExpectedOut>,
+    /// answer − expected, per channel, on the answer's scale; `null` without `expected`.
     pub difference: Option<[f64; 3]>,
+    /// A reading of the problem the answer matches; `null` when it matches none.
     pub reading: Option<ReadingOut>,
+    /// The slips (or pairs of slips) whose colour the answer matches.
     pub diagnosis: Vec<DiagnosisOut>,
+    /// For a wrong answer: the closest candidate it does not match, and how far it is.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub nearest: Option<NearestOut>,
+    /// Why the answer could not be checked (`kind`, `field`, `message`); `null` when it was.
     pub error: Option<Failure>,
+    /// Likely unit mistakes in the problem file; absent when there are none.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub warnings: Vec<crate::report::json::WarningOut>,
+}
+
+/// The candidate closest to a wrong answer.
+#[derive(Serialize)]
+pub struct NearestOut {
+    /// "solution" (the problem as written), "reading" or "slips".
+    pub source: &'static str,
+    /// The reading's code when `source` is "reading".
+    pub reading: Option<ReadingCode>,
+    /// The slips' codes when `source` is "slips".
+    pub slips: Vec<super::Slip>,
+    /// Its colour, on the answer's scale.
+    pub color: [f64; 3],
+    /// answer − color, per channel, on the answer's scale.
+    pub difference: [f64; 3],
+    /// The largest |difference| of a channel.
+    pub distance: f64,
+    /// In words (English).
+    pub description: String,
 }
 
 fn expected_out(cmp: &Comparison, reading: Option<ReadingCode>) -> ExpectedOut {
@@ -340,7 +439,9 @@ pub fn json(c: &Checked) -> CheckOut {
         difference: None,
         reading: None,
         diagnosis: Vec::new(),
+        nearest: None,
         error: None,
+        warnings: crate::report::json::warnings_out(&c.warnings),
     };
     match &c.outcome {
         Err(f) => {
@@ -353,7 +454,7 @@ pub fn json(c: &Checked) -> CheckOut {
             verdict: v,
         }) => {
             out.answer.scale = Some(scale_number(answer.scale));
-            out.answer.values = Some(answer.values);
+            out.answer.values = answer.values;
             out.tolerance = Some(*tolerance);
             out.verdict = verdict_code(v.kind);
             out.accepted = v.accepted;
@@ -379,13 +480,42 @@ pub fn json(c: &Checked) -> CheckOut {
                     difference: d.comparison.difference,
                 })
                 .collect();
+            out.nearest = v.nearest.as_ref().map(|n| {
+                let (source, reading, slips) = match &n.candidate {
+                    Candidate::Written => ("solution", None, Vec::new()),
+                    Candidate::Reading(code, _) => ("reading", Some(*code), Vec::new()),
+                    Candidate::Slips { slips, .. } => ("slips", None, slips.clone()),
+                };
+                NearestOut {
+                    source,
+                    reading,
+                    slips,
+                    color: n.comparison.expected,
+                    difference: n.comparison.difference,
+                    distance: n.comparison.distance(),
+                    description: messages::nearest(
+                        &n.candidate,
+                        n.comparison.distance(),
+                        *tolerance,
+                        Lang::En,
+                    ),
+                }
+            });
+            if let Some((colour, _)) = v.has_colour {
+                out.expected = Some(ExpectedOut {
+                    color: colour,
+                    source: "solution",
+                    reading: None,
+                    against: super::Against::Clamped,
+                });
+            }
         }
     }
     out
 }
 
 /// 1 or 255.
-pub fn scale_number(s: Scale) -> u32 {
+pub(crate) fn scale_number(s: Scale) -> u32 {
     match s {
         Scale::Unit => 1,
         Scale::Bits8 => 255,
@@ -393,7 +523,7 @@ pub fn scale_number(s: Scale) -> u32 {
 }
 
 /// The stable code of a verdict.
-pub fn verdict_code(k: VerdictKind) -> &'static str {
+pub(crate) fn verdict_code(k: VerdictKind) -> &'static str {
     match k {
         VerdictKind::Right => "right",
         VerdictKind::Reading => "reading",
@@ -402,7 +532,7 @@ pub fn verdict_code(k: VerdictKind) -> &'static str {
 }
 
 /// What the problem, its readings and each applicable slip give (`phong check --slips`).
-pub fn slips_text(file: &str, x: &super::Expected, lang: Lang) -> String {
+pub(crate) fn slips_text(file: &str, x: &super::Expected, lang: Lang) -> String {
     let mut out = String::new();
     let _ = writeln!(out, "{file}");
     let show = |t: &super::Target| match t.clamped {

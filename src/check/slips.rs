@@ -7,7 +7,11 @@
 //! - two live inside a formula and are switched in the core ([`Slipped`]: |cos θ|, Blinn's
 //!   half-vector), at no cost to the chapter's path; a third switch lets an unnormalised
 //!   normal's "cos φ" exceed 1, as it does by hand;
-//! - "no clamping" reads the literal Eq. 4.16 that the core records anyway.
+//! - "no clamping" reads the literal Eq. 4.16 that the core records anyway;
+//! - intermediates rounded to two decimals is a third formula switch (`round_to`): the core
+//!   rounds each value it writes down before the next step uses it;
+//! - the final colour truncated instead of rounded (to two decimals, or to 8 bits) is the
+//!   colour of the problem as written, or of another slip, cut down: [`truncate`].
 //!
 //! A slip is offered only where it applies to the problem, and kept only where it changes the
 //! result. Pairs of slips are tried too, for an answer that no single slip explains.
@@ -44,19 +48,29 @@ pub enum Slip {
     FalloffQuadraticNotLinear,
     /// The ambient term O_a I_a forgotten (Eq. 4.6).
     AmbientForgotten,
+    /// An ambient term the problem does not give: a white ambient light I_a = (1, 1, 1) assumed,
+    /// with the material's own O_a (Eq. 4.6).
+    AmbientAssumed,
     /// cos φ from Blinn's half-vector, N·H, instead of −R·V (Eq. 4.10).
     HalfVector,
     /// cos φ not raised to n_s (n_s taken as 1).
     CosPhiNotRaised,
     /// The spot light's cone ignored: the spot taken as a point light (Eq. 4.4).
     SpotConeIgnored,
+    /// Every intermediate (N, V, L, d, 1/d^f, I_l, N·L, R, cos φ, each term) rounded to two
+    /// decimals before the next step uses it.
+    IntermediatesRounded,
     /// Negative cosines kept: Eq. 4.16 taken literally, without clamping cos θ and cos φ at 0.
     NoClamping,
+    /// The final colour truncated to two decimals instead of rounded (0.29 for 0.2992).
+    TruncatedDecimals,
+    /// The 8-bit colour truncated, ⌊255·c⌋, instead of rounded, round(255·c).
+    TruncatedRgb8,
 }
 
 impl Slip {
     /// Every slip, in the order of application.
-    pub const ALL: [Slip; 14] = [
+    pub const ALL: [Slip; 18] = [
         Slip::HitBehindOrigin,
         Slip::LightReversed,
         Slip::ViewerReversed,
@@ -67,10 +81,14 @@ impl Slip {
         Slip::FalloffLinearNotQuadratic,
         Slip::FalloffQuadraticNotLinear,
         Slip::AmbientForgotten,
+        Slip::AmbientAssumed,
         Slip::HalfVector,
         Slip::CosPhiNotRaised,
         Slip::SpotConeIgnored,
+        Slip::IntermediatesRounded,
         Slip::NoClamping,
+        Slip::TruncatedDecimals,
+        Slip::TruncatedRgb8,
     ];
 
     /// The stable code (as in the JSON output).
@@ -86,22 +104,32 @@ impl Slip {
             Slip::FalloffLinearNotQuadratic => "falloff_linear_not_quadratic",
             Slip::FalloffQuadraticNotLinear => "falloff_quadratic_not_linear",
             Slip::AmbientForgotten => "ambient_forgotten",
+            Slip::AmbientAssumed => "ambient_assumed",
             Slip::HalfVector => "half_vector",
             Slip::CosPhiNotRaised => "cos_phi_not_raised",
             Slip::SpotConeIgnored => "spot_cone_ignored",
+            Slip::IntermediatesRounded => "intermediates_rounded",
             Slip::NoClamping => "no_clamping",
+            Slip::TruncatedDecimals => "truncated_decimals",
+            Slip::TruncatedRgb8 => "truncated_rgb8",
         }
     }
 
     /// Slips that exclude each other (one falloff exponent at a time) share a group.
     fn group(self) -> Option<u8> {
-        matches!(
-            self,
+        match self {
             Slip::FalloffForgotten
-                | Slip::FalloffLinearNotQuadratic
-                | Slip::FalloffQuadraticNotLinear
-        )
-        .then_some(0)
+            | Slip::FalloffLinearNotQuadratic
+            | Slip::FalloffQuadraticNotLinear => Some(0),
+            Slip::TruncatedDecimals | Slip::TruncatedRgb8 => Some(1),
+            _ => None,
+        }
+    }
+
+    /// A slip of the final colour's last step (truncation), made on top of another outcome
+    /// rather than as a change of the problem.
+    pub fn is_truncation(self) -> bool {
+        matches!(self, Slip::TruncatedDecimals | Slip::TruncatedRgb8)
     }
 }
 
@@ -195,6 +223,19 @@ impl Variant {
                 refall(&mut v.problem, |f| f == Falloff::Linear, Falloff::Quadratic)
             }
             Slip::AmbientForgotten => v.problem.lights.ambient.take().is_some(),
+            Slip::AmbientAssumed => {
+                let has_o_a = materials(&mut v.problem)
+                    .iter()
+                    .any(|m| m.material.o_a.is_some());
+                if v.problem.lights.ambient.is_none() && has_o_a {
+                    v.problem.lights.ambient = Some(crate::core::V3::<f64>::new(1.0, 1.0, 1.0));
+                    true
+                } else {
+                    false
+                }
+            }
+            Slip::IntermediatesRounded => v.formulas.round_to.replace(2).is_none(),
+            Slip::TruncatedDecimals | Slip::TruncatedRgb8 => false,
             Slip::CosPhiNotRaised => {
                 let mut any = false;
                 for m in materials(&mut v.problem) {
@@ -352,7 +393,68 @@ pub fn outcomes(problem: &Problem<f64>, base: Option<&Target>) -> Vec<Outcome> {
             }
         }
     }
+    // Truncation: the colour of the problem as written, and of each outcome so far, cut down.
+    let mut cut = Vec::new();
+    let base_or_slips = base
+        .map(|t| (Vec::new(), *t))
+        .into_iter()
+        .chain(out.iter().map(|o| (o.slips.clone(), o.target)));
+    for (slips, target) in base_or_slips {
+        if slips.len() > 1 {
+            continue;
+        }
+        for slip in [Slip::TruncatedDecimals, Slip::TruncatedRgb8] {
+            let Some(t) = truncate(&target, slip) else {
+                continue;
+            };
+            if differs(&t, base) && !t.same_as(&target) {
+                let mut s = slips.clone();
+                s.push(slip);
+                cut.push(Outcome {
+                    slips: s,
+                    target: t,
+                });
+            }
+        }
+    }
+    // Singles before pairs.
+    let (singles_cut, pairs_cut): (Vec<_>, Vec<_>) =
+        cut.into_iter().partition(|o| o.slips.len() == 1);
+    let at = out.iter().take_while(|o| o.slips.len() == 1).count();
+    out.splice(at..at, singles_cut);
+    out.extend(pairs_cut);
     out
+}
+
+/// The colour `target` gives, truncated as `slip` says: to two decimals (⌊100·c⌋/100), or to
+/// 8 bits (⌊255·c⌋/255, on the 0–1 scale), of the colour clamped to [0, 1]. `None` for a
+/// literal value (no clamped colour) or a slip that is no truncation. A hair (1e-7) is added
+/// before cutting, so that a colour that is exactly 0.29 is not cut to 0.28 by its binary form.
+pub fn truncate(target: &Target, slip: Slip) -> Option<Target> {
+    let k = match slip {
+        Slip::TruncatedDecimals => 100.0,
+        Slip::TruncatedRgb8 => 255.0,
+        _ => return None,
+    };
+    let c = target.clamped?.map(|x| (x * k + 1e-7).floor() / k);
+    Some(Target {
+        unclamped: c,
+        clamped: Some(c),
+    })
+}
+
+/// Each slip that applies to the problem as written, made alone, and the solution it gives
+/// (for step checking: which slip gives a student's intermediate value).
+pub(crate) fn single_solutions(problem: &Problem<f64>) -> Vec<(Slip, Solution<f64>)> {
+    let root = Variant::of(problem);
+    let root_solution = root.solve();
+    Slip::ALL
+        .iter()
+        .filter_map(|slip| {
+            let v = root.with(*slip, root_solution.as_ref())?;
+            Some((*slip, v.solve()?))
+        })
+        .collect()
 }
 
 /// One slip made on the problem as written: the variant, its solution and the colour it gives.

@@ -16,13 +16,13 @@ use crate::tracer::output::ImageFormat;
 /// Solve and explain the illumination exercises of Chapter 4 (Phong's model).
 #[derive(Debug, Parser)]
 #[command(name = "phong", version, about, long_about = None)]
-pub struct Cli {
+pub(crate) struct Cli {
     #[command(subcommand)]
-    pub command: Command,
+    pub(crate) command: Command,
 }
 
 #[derive(Debug, Subcommand)]
-pub enum Command {
+pub(crate) enum Command {
     /// Solve problem files, printing every intermediate quantity with its equation.
     Solve(SolveArgs),
     /// Render a scene (a problem file with a camera) with the Whitted ray tracer, or explain
@@ -45,13 +45,13 @@ pub enum Command {
 }
 
 #[derive(Debug, Args)]
-pub struct TradeoffArgs {
+pub(crate) struct TradeoffArgs {
     /// The scene: a problem file with a "camera" and "surfaces".
     #[arg(value_name = "SCENE")]
-    pub scene: PathBuf,
+    pub(crate) scene: PathBuf,
     /// Precisions to sweep.
     #[arg(long, value_enum, value_delimiter = ',', default_value = "f32,f64")]
-    pub precisions: Vec<Precision>,
+    pub(crate) precisions: Vec<Precision>,
     /// Maximum levels to sweep.
     #[arg(
         long,
@@ -59,11 +59,11 @@ pub struct TradeoffArgs {
         value_name = "N,...",
         default_value = "1,2,3,5,10"
     )]
-    pub levels: Vec<u32>,
+    pub(crate) levels: Vec<u32>,
     /// Minimum weights to sweep (decimals or fractions such as 1/255).
     #[arg(long, value_delimiter = ',', value_name = "W,...", value_parser = parse_fraction,
           default_value = "0,1/255,0.1")]
-    pub min_weights: Vec<f64>,
+    pub(crate) min_weights: Vec<f64>,
     /// Samples per pixel to sweep.
     #[arg(
         long,
@@ -71,81 +71,81 @@ pub struct TradeoffArgs {
         value_name = "N,...",
         default_value = "1,4,16"
     )]
-    pub samples: Vec<u32>,
+    pub(crate) samples: Vec<u32>,
     /// Renders per setting; its time is their median.
     #[arg(long, value_name = "N", default_value_t = 3)]
-    pub runs: u32,
+    pub(crate) runs: u32,
     /// The reference's maximum level (it is f64 with minimum weight 0).
     #[arg(long, value_name = "N", default_value_t = 64)]
-    pub reference_level: u32,
+    pub(crate) reference_level: u32,
     /// The reference's samples per pixel.
     #[arg(long, value_name = "N", default_value_t = 64)]
-    pub reference_samples: u32,
+    pub(crate) reference_samples: u32,
     /// The error budget: which setting is the fastest with its error at most this?
     #[arg(long, value_name = "E", value_parser = parse_fraction, default_value = "1/255")]
-    pub budget: f64,
+    pub(crate) budget: f64,
     /// The error the budget and the Pareto front are judged by.
     #[arg(long, value_enum, default_value_t = crate::tradeoff::Metric::Rmse)]
-    pub metric: crate::tradeoff::Metric,
+    pub(crate) metric: crate::tradeoff::Metric,
     /// Render at this size instead of the camera's (quicker sweeps).
     #[arg(long, value_name = "WxH", value_parser = parse_size)]
-    pub size: Option<(u32, u32)>,
+    pub(crate) size: Option<(u32, u32)>,
     /// Worker threads (default: one per core).
     #[arg(long, value_name = "N")]
-    pub threads: Option<usize>,
+    pub(crate) threads: Option<usize>,
     /// Format of the table.
     #[arg(long, value_enum, default_value_t = TradeoffFormat::Text)]
-    pub format: TradeoffFormat,
+    pub(crate) format: TradeoffFormat,
     /// Write the table to this file (atomically) instead of standard output.
     #[arg(short, long, value_name = "PATH")]
-    pub output: Option<PathBuf>,
+    pub(crate) output: Option<PathBuf>,
     /// Write the plot of error against time (SVG) to this file.
     #[arg(long, value_name = "PATH.svg")]
-    pub plot: Option<PathBuf>,
+    pub(crate) plot: Option<PathBuf>,
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
-pub enum TradeoffFormat {
+pub(crate) enum TradeoffFormat {
     Text,
     Json,
     Csv,
 }
 
 #[derive(Debug, Args)]
-pub struct ExportPovArgs {
+pub(crate) struct ExportPovArgs {
     /// The scene: a problem file with a "camera" and "surfaces".
     #[arg(value_name = "SCENE")]
-    pub scene: PathBuf,
+    pub(crate) scene: PathBuf,
     /// Write the SDL to this file (atomically) instead of standard output.
     #[arg(short, long, value_name = "PATH")]
-    pub output: Option<PathBuf>,
+    pub(crate) output: Option<PathBuf>,
     /// The tracer's settings over the scene's (POV-Ray can only match 1 sample per pixel).
     #[command(flatten)]
-    pub settings: TraceSettings,
+    pub(crate) settings: TraceSettings,
 }
 
 /// The tracer's settings, each over the scene's `render` (or its default).
 #[derive(Debug, Args)]
-pub struct TraceSettings {
+pub(crate) struct TraceSettings {
     /// The maximum recursion level (primary rays are level 1) [scene's, or 5].
     #[arg(long, value_name = "N")]
-    pub max_level: Option<u32>,
+    pub(crate) max_level: Option<u32>,
     /// The minimum weight of a reflection ray [scene's, or 1/255].
     #[arg(long, value_name = "W")]
-    pub min_weight: Option<f64>,
+    pub(crate) min_weight: Option<f64>,
     /// Samples per pixel, 1 to 4096, stratified and deterministic [scene's, or 1].
     #[arg(long, value_name = "N")]
-    pub samples: Option<u32>,
+    pub(crate) samples: Option<u32>,
     /// Shadow rays on or off [scene's, or on].
     #[arg(long, value_enum, value_name = "ON|OFF")]
-    pub shadows: Option<Switch>,
+    pub(crate) shadows: Option<Switch>,
 }
 
 #[derive(Debug, Args)]
-pub struct RenderArgs {
+pub(crate) struct RenderArgs {
     /// The scene: a problem file with a "camera" and "surfaces".
     #[arg(value_name = "SCENE")]
-    pub scene: PathBuf,
+    pub(crate) scene: PathBuf,
     /// The image to write (atomically): .png or .ppm. Required unless --explain-pixel.
     #[arg(
         short,
@@ -153,167 +153,178 @@ pub struct RenderArgs {
         value_name = "PATH",
         required_unless_present = "explain_pixel"
     )]
-    pub output: Option<PathBuf>,
+    pub(crate) output: Option<PathBuf>,
     /// The image format, when the output's extension does not say.
     #[arg(long, value_enum, value_name = "FORMAT")]
-    pub image_format: Option<ImageFormat>,
+    pub(crate) image_format: Option<ImageFormat>,
     #[command(flatten)]
-    pub settings: TraceSettings,
+    pub(crate) settings: TraceSettings,
     /// Floating-point precision of the whole calculation.
     #[arg(long, value_enum, default_value_t = Precision::F64)]
-    pub precision: Precision,
+    pub(crate) precision: Precision,
     /// Worker threads (default: one per core). The image is the same for any number.
     #[arg(long, value_name = "N")]
-    pub threads: Option<usize>,
+    pub(crate) threads: Option<usize>,
     /// The tracer: packets of rays in SIMD lanes with queues per bounce (wide), or one ray at a
     /// time (scalar). The image is the same bytes by either; --explain-pixel is always scalar.
     #[arg(long, value_enum, default_value_t = crate::tracer::Engine::Wide)]
-    pub engine: crate::tracer::Engine,
+    pub(crate) engine: crate::tracer::Engine,
     /// Explain pixel X,Y (from the top-left corner, 0-based) step by step instead of writing
     /// the image: its rays, each hit solved as `phong solve` solves a ray problem.
     #[arg(long, value_name = "X,Y", value_parser = parse_pixel)]
-    pub explain_pixel: Option<(u32, u32)>,
+    pub(crate) explain_pixel: Option<(u32, u32)>,
     /// Format of the explanation.
     #[arg(long, value_enum, default_value_t = Format::Text)]
-    pub format: Format,
+    pub(crate) format: Format,
     /// Print the number of rays traced and the time taken to stderr.
     #[arg(long)]
-    pub stats: bool,
+    pub(crate) stats: bool,
 }
 
 /// On or off.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
-pub enum Switch {
+pub(crate) enum Switch {
     On,
     Off,
 }
 
 #[derive(Debug, Args)]
-pub struct CheckArgs {
+pub(crate) struct CheckArgs {
     /// Problem files (JSON). Without --answer, each file's answer key is checked.
     #[arg(required = true, value_name = "FILE")]
-    pub files: Vec<PathBuf>,
+    pub(crate) files: Vec<PathBuf>,
     /// The answer to check: "0.52 0.03 0", "(0.52, 0.03, 0)", "[0.52; 0.03; 0]", "#RRGGBB", or
     /// three integers 0–255 with --scale 255. Only with one FILE.
     #[arg(long, value_name = "ANSWER", allow_hyphen_values = true)]
-    pub answer: Option<String>,
+    pub(crate) answer: Option<String>,
     /// The answer's scale: 1 (components on [0, 1]) or 255 (8-bit integers). "#RRGGBB" is 255.
     #[arg(long, value_enum, default_value = "1")]
-    pub scale: check::Scale,
+    pub(crate) scale: check::Scale,
     /// The largest difference accepted per channel, on the answer's scale [default: the key's
     /// own, else 0.005 on the 0–1 scale, 1 on the 255 scale].
     #[arg(long, value_name = "T", allow_hyphen_values = true)]
-    pub tolerance: Option<f64>,
+    pub(crate) tolerance: Option<f64>,
     /// Accept only the problem as written, not its likely intended reading.
     #[arg(long)]
-    pub strict: bool,
+    pub(crate) strict: bool,
+    /// Check an intermediate step, NAME=VALUE (repeatable): cos_theta=0.98995, R=0.6,0,0.8,
+    /// cos_theta[1]=0.5 for lights[1]. Names: t, P, N, V, I_a, ambient, L, d, falloff_factor,
+    /// cos_psi, spot_factor, I_l, n_dot_l, cos_theta, diffuse, R, cos_phi, cos_phi_pow,
+    /// specular, total_diffuse, total_specular, I. Only with one FILE.
+    #[arg(long, value_name = "NAME=VALUE", allow_hyphen_values = true)]
+    pub(crate) step: Vec<String>,
+    /// Check the steps in a JSON file: {"cos_theta": 0.98995, "R": [0.6, 0, 0.8]}. Only with
+    /// one FILE.
+    #[arg(long, value_name = "STEPS.json")]
+    pub(crate) steps: Option<PathBuf>,
     /// Instead of checking an answer, list what each applicable slip (and pair) gives.
-    #[arg(long, conflicts_with_all = ["answer", "format"])]
-    pub slips: bool,
+    #[arg(long, conflicts_with_all = ["answer", "format", "step", "steps"])]
+    pub(crate) slips: bool,
     /// Output format: text for people, json for scripts (stable field names, format_version).
     #[arg(long, value_enum, default_value_t = CheckFormat::Text)]
-    pub format: CheckFormat,
+    pub(crate) format: CheckFormat,
     /// Language of the text output.
     #[arg(long, value_enum, default_value_t = Lang::En)]
-    pub lang: Lang,
+    pub(crate) lang: Lang,
     /// Write the output to this file (atomically) instead of standard output.
     #[arg(short, long, value_name = "PATH")]
-    pub output: Option<PathBuf>,
+    pub(crate) output: Option<PathBuf>,
 }
 
 #[derive(Debug, Args)]
-pub struct GradeArgs {
+pub(crate) struct GradeArgs {
     /// The submissions: a CSV file with the columns student, exercise, answer (a first row
     /// starting with "student" is a header).
     #[arg(value_name = "SUBMISSIONS")]
-    pub submissions: PathBuf,
+    pub(crate) submissions: PathBuf,
     /// The folder of exercise files: exercise "4.2" is DIR/4.2.json.
     #[arg(long, value_name = "DIR")]
-    pub exercises: PathBuf,
+    pub(crate) exercises: PathBuf,
     /// Report format: one CSV line per input row, or JSON with the rows and the summary.
     #[arg(long, value_enum, default_value_t = GradeFormat::Csv)]
-    pub format: GradeFormat,
+    pub(crate) format: GradeFormat,
     /// The scale of answers that are not "#RRGGBB".
     #[arg(long, value_enum, default_value = "1")]
-    pub scale: check::Scale,
-    /// The largest difference accepted per channel [default: 0.005 on the 0–1 scale, 1 on 255].
+    pub(crate) scale: check::Scale,
+    /// The largest difference accepted per channel [default: each exercise key's own, else
+    /// 0.005 on the 0–1 scale, 1 on the 255 scale].
     #[arg(long, value_name = "T", allow_hyphen_values = true)]
-    pub tolerance: Option<f64>,
+    pub(crate) tolerance: Option<f64>,
     /// Accept only the problem as written, not its likely intended reading.
     #[arg(long)]
-    pub strict: bool,
+    pub(crate) strict: bool,
     /// Write the report to this file (atomically) instead of standard output.
     #[arg(short, long, value_name = "PATH")]
-    pub output: Option<PathBuf>,
+    pub(crate) output: Option<PathBuf>,
     /// Also write the summary per exercise as CSV to this file (atomically).
     #[arg(long, value_name = "PATH")]
-    pub summary: Option<PathBuf>,
+    pub(crate) summary: Option<PathBuf>,
 }
 
 #[derive(Debug, Args)]
-pub struct NewArgs {
+pub(crate) struct NewArgs {
     /// The kind of problem.
     #[arg(long, value_enum)]
-    pub kind: generate::Kind,
+    pub(crate) kind: generate::Kind,
     /// How many problems.
     #[arg(long, default_value_t = 1, value_parser = clap::value_parser!(u32).range(1..=10000))]
-    pub count: u32,
+    pub(crate) count: u32,
     /// The seed: the same seed, kind and count give the same files, byte for byte.
     #[arg(long, default_value_t = 1)]
-    pub seed: u64,
+    pub(crate) seed: u64,
     /// Write each problem to DIR/KIND-SEED-I.json (atomically); without it, print them (one JSON
     /// document, or an array for several).
     #[arg(short, long, value_name = "DIR")]
-    pub output: Option<PathBuf>,
+    pub(crate) output: Option<PathBuf>,
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
-pub enum CheckFormat {
+pub(crate) enum CheckFormat {
     Text,
     Json,
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
-pub enum GradeFormat {
+pub(crate) enum GradeFormat {
     Csv,
     Json,
 }
 
 #[derive(Debug, Args)]
-pub struct SolveArgs {
+pub(crate) struct SolveArgs {
     /// Problem files (JSON). Each is solved even when another one is bad.
     #[arg(required = true, value_name = "FILE")]
-    pub files: Vec<PathBuf>,
+    pub(crate) files: Vec<PathBuf>,
     /// Output format: text for people (a terminal), markdown, latex or html explanations for
     /// notes and course pages, json for scripts (stable field names, format_version).
     #[arg(long, value_enum, default_value_t = Format::Text)]
-    pub format: Format,
+    pub(crate) format: Format,
     /// Language of the explanation (text, markdown, latex, html); json is language-neutral.
     #[arg(long, value_enum, default_value_t = Lang::En)]
-    pub lang: Lang,
+    pub(crate) lang: Lang,
     /// Colour in the text format: auto (on a terminal, unless NO_COLOR is set), always, never.
     #[arg(long, value_enum, default_value_t = ColorChoice::Auto)]
-    pub color: ColorChoice,
+    pub(crate) color: ColorChoice,
     /// latex and html only: write the body without the preamble or page around it.
     #[arg(long)]
-    pub fragment: bool,
+    pub(crate) fragment: bool,
     /// Floating-point precision of the whole calculation.
     #[arg(long, value_enum, default_value_t = Precision::F64)]
-    pub precision: Precision,
+    pub(crate) precision: Precision,
     /// Write the output to this file (atomically) instead of standard output.
     #[arg(short, long, value_name = "PATH")]
-    pub output: Option<PathBuf>,
+    pub(crate) output: Option<PathBuf>,
 }
 
 #[derive(Debug, Args)]
-pub struct SchemaArgs {
+pub(crate) struct SchemaArgs {
     /// Write the schema to this file (atomically) instead of standard output.
     #[arg(short, long, value_name = "PATH")]
-    pub output: Option<PathBuf>,
+    pub(crate) output: Option<PathBuf>,
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
-pub enum Format {
+pub(crate) enum Format {
     Text,
     Markdown,
     Latex,
@@ -322,7 +333,7 @@ pub enum Format {
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
-pub enum ColorChoice {
+pub(crate) enum ColorChoice {
     /// Colour when writing to a terminal and NO_COLOR is not set.
     Auto,
     Always,

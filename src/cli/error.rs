@@ -11,7 +11,7 @@ use crate::problem::{Invalid, ProblemError};
 
 /// Why a command failed (or, in a batch, why one of its steps did).
 #[derive(Debug, thiserror::Error)]
-pub enum CliError {
+pub(crate) enum CliError {
     /// A problem file that cannot be read, parsed or validated (or, for `export-pov`, expressed
     /// in POV-Ray).
     #[error(transparent)]
@@ -78,7 +78,7 @@ fn destination(path: Option<&Path>) -> String {
 impl CliError {
     /// A setting refused by the library, named by its field (`max_level`, `min_weights`): the
     /// flag that gave it is that name in kebab case (`--max-level`, `--min-weights`).
-    pub fn setting(e: Invalid) -> CliError {
+    pub(crate) fn setting(e: Invalid) -> CliError {
         CliError::Usage {
             flag: format!("--{}", e.field.replace('_', "-")),
             message: e.message,
@@ -88,13 +88,18 @@ impl CliError {
 }
 
 /// Prints an error on standard error as `error: …`; every error of `phong` is printed here.
-pub fn print(error: &dyn Display) {
+pub(crate) fn print(error: &dyn Display) {
     eprintln!("error: {error}");
+}
+
+/// Prints a warning (a likely mistake that is not an error) on standard error.
+pub(crate) fn warn(warning: &dyn Display) {
+    eprintln!("warning: {warning}");
 }
 
 /// The exit of a step a command goes on after (one file of several): success, or bad input
 /// once its error is printed.
-pub fn carry_on(step: Result<(), CliError>) -> Exit {
+pub(crate) fn carry_on(step: Result<(), CliError>) -> Exit {
     match step {
         Ok(()) => Exit::Success,
         Err(e) => fail(&e),
@@ -102,7 +107,7 @@ pub fn carry_on(step: Result<(), CliError>) -> Exit {
 }
 
 /// Prints an error and gives its exit.
-pub fn fail(e: &CliError) -> Exit {
+pub(crate) fn fail(e: &CliError) -> Exit {
     print(e);
     Exit::BadInput
 }

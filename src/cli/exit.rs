@@ -6,7 +6,7 @@ use std::process::ExitCode;
 /// How a command ended. Ordered from best to worst: a command that did several things (a batch
 /// of files) ends with the worst of them, their [`Ord::max`].
 #[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord)]
-pub enum Exit {
+pub(crate) enum Exit {
     /// 0: everything solved and written, or every checked answer accepted.
     Success,
     /// 1: a checked answer is wrong (or is the likely intended reading, under `--strict`).
@@ -18,7 +18,7 @@ pub enum Exit {
 
 impl Exit {
     /// The process exit code: 0, 1 or 2.
-    pub fn code(self) -> u8 {
+    pub(crate) fn code(self) -> u8 {
         match self {
             Exit::Success => 0,
             Exit::Wrong => 1,

@@ -1,13 +1,13 @@
 //! The `phong` command line, as ripgrep's `main` and cargo's `commands/` are laid out: parse the
-//! arguments ([`args`], [`parse`]), run the command ([`commands`], one file each), and map how
-//! it ended to an exit code ([`exit`]: 0 solved or right, 1 a checked answer is wrong, 2 bad
-//! input or usage) once. An error that stops a command ([`error`]) is printed here, once; output
-//! goes to standard output or a file written atomically ([`output`]).
+//! arguments (`args`, `parse`), run the command (`commands`, one file each), and map how
+//! it ended to an exit code (`exit`: 0 solved or right, 1 a checked answer is wrong, 2 bad
+//! input or usage) once. An error that stops a command (`error`) is printed here, once; output
+//! goes to standard output or a file written atomically (`output`).
 
-pub mod args;
+pub(crate) mod args;
 mod commands;
-pub mod error;
-pub mod exit;
+pub(crate) mod error;
+pub(crate) mod exit;
 mod output;
 mod parse;
 
@@ -15,9 +15,8 @@ use std::process::ExitCode;
 
 use clap::Parser;
 
-pub use args::Cli;
-pub use error::CliError;
-pub use exit::Exit;
+pub(crate) use args::Cli;
+pub(crate) use exit::Exit;
 
 use args::Command;
 
@@ -27,7 +26,7 @@ pub fn main() -> ExitCode {
 }
 
 /// Runs a parsed command line: how it ended, its error printed if it failed.
-pub fn run(cli: &Cli) -> Exit {
+pub(crate) fn run(cli: &Cli) -> Exit {
     let result = match &cli.command {
         Command::Solve(args) => commands::solve::run(args),
         Command::Render(args) => commands::render::run(args),

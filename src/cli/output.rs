@@ -9,13 +9,13 @@ use super::args::ColorChoice;
 use super::error::CliError;
 
 /// Writes `text` to standard output, or atomically to `path`.
-pub fn emit(path: Option<&Path>, text: &str) -> Result<(), CliError> {
+pub(crate) fn emit(path: Option<&Path>, text: &str) -> Result<(), CliError> {
     emit_bytes(path, text.as_bytes())
 }
 
 /// Writes `bytes` to standard output, or atomically to `path`. A closed pipe (`phong solve … |
 /// head`) is not an error of ours.
-pub fn emit_bytes(path: Option<&Path>, bytes: &[u8]) -> Result<(), CliError> {
+pub(crate) fn emit_bytes(path: Option<&Path>, bytes: &[u8]) -> Result<(), CliError> {
     let result = match path {
         None => {
             let mut out = std::io::stdout().lock();
@@ -33,7 +33,7 @@ pub fn emit_bytes(path: Option<&Path>, bytes: &[u8]) -> Result<(), CliError> {
 }
 
 /// Writes `bytes` atomically to the file `path` (an image, a plot).
-pub fn write_file(path: &Path, bytes: &[u8]) -> Result<(), CliError> {
+pub(crate) fn write_file(path: &Path, bytes: &[u8]) -> Result<(), CliError> {
     write_atomically(path, bytes).map_err(|source| CliError::Write {
         path: Some(path.to_owned()),
         source,
@@ -62,7 +62,7 @@ fn write_atomically(path: &Path, bytes: &[u8]) -> std::io::Result<()> {
 }
 
 /// One JSON document, or an array for several, pretty-printed with a final newline.
-pub fn json_text(mut docs: Vec<serde_json::Value>) -> String {
+pub(crate) fn json_text(mut docs: Vec<serde_json::Value>) -> String {
     let value = if docs.len() == 1 {
         docs.pop().expect("one document")
     } else {
@@ -73,14 +73,14 @@ pub fn json_text(mut docs: Vec<serde_json::Value>) -> String {
 
 /// `value` pretty-printed with a final newline (a struct's fields in their order, a
 /// [`serde_json::Value`]'s keys sorted).
-pub fn json_pretty(value: &impl serde::Serialize) -> String {
+pub(crate) fn json_pretty(value: &impl serde::Serialize) -> String {
     let mut s = serde_json::to_string_pretty(value).expect("the output serialises");
     s.push('\n');
     s
 }
 
 /// A progress bar on stderr when it is a terminal; hidden otherwise (and under CI).
-pub fn progress_bar(rows: u64) -> indicatif::ProgressBar {
+pub(crate) fn progress_bar(rows: u64) -> indicatif::ProgressBar {
     use std::io::IsTerminal;
     if !std::io::stderr().is_terminal() {
         return indicatif::ProgressBar::hidden();
@@ -97,7 +97,7 @@ pub fn progress_bar(rows: u64) -> indicatif::ProgressBar {
 /// Whether the text report is coloured: `always`, `never`, or for `auto` when writing to a
 /// terminal (not a file or a pipe), NO_COLOR is unset or empty (no-color.org) and TERM is not
 /// "dumb".
-pub fn use_color(choice: ColorChoice, to_file: bool) -> bool {
+pub(crate) fn use_color(choice: ColorChoice, to_file: bool) -> bool {
     use std::io::IsTerminal;
     match choice {
         ColorChoice::Always => true,

@@ -6,7 +6,7 @@
 //! rounded in a lane exactly as in a scalar, negation flips the sign bit as a scalar's does, and
 //! nothing is fused (no FMA). Code written with [`Wide`] in the same order as the scalar code
 //! therefore computes the scalar code's bits in every lane: that is what lets the wide tracer's
-//! image equal the scalar one's byte for byte (tests/wide.rs). Comparisons give masks (all bits
+//! image equal the scalar one's byte for byte (src/tracer/wide/tests.rs). Comparisons give masks (all bits
 //! set where true, as the hardware does), [`Wide::select`] picks per lane; a NaN compares false,
 //! as a scalar's comparison does.
 

@@ -19,7 +19,7 @@ pub enum Falloff {
 
 impl Falloff {
     /// The falloff from its exponent f ∈ {0, 1, 2}.
-    pub fn from_exponent(f: u8) -> Option<Falloff> {
+    pub(crate) fn from_exponent(f: u8) -> Option<Falloff> {
         match f {
             0 => Some(Falloff::None),
             1 => Some(Falloff::Linear),
@@ -29,7 +29,7 @@ impl Falloff {
     }
 
     /// The exponent f.
-    pub fn exponent(self) -> u8 {
+    pub(crate) fn exponent(self) -> u8 {
         match self {
             Falloff::None => 0,
             Falloff::Linear => 1,
@@ -40,7 +40,7 @@ impl Falloff {
     /// The factor 1/d^f, for the record, computed as repeated division so that d² is never
     /// formed: d = 1e160 gives 1e-320 in f64 rather than overflowing d² to infinity.
     #[inline]
-    pub fn factor<R: Real>(self, d: R) -> R {
+    pub(crate) fn factor<R: Real>(self, d: R) -> R {
         match self {
             Falloff::None => R::ONE,
             Falloff::Linear => R::ONE / d,
@@ -51,7 +51,7 @@ impl Falloff {
     /// C_l / d^f, Eq. 4.2, dividing the colour itself so that neither d^f nor 1/d^f is formed:
     /// a tiny colour close to the light, or a huge one far from it, stays representable.
     #[inline]
-    pub fn attenuate<R: Real, V: Vector<R>>(self, color: V, d: R) -> V {
+    pub(crate) fn attenuate<R: Real, V: Vector<R>>(self, color: V, d: R) -> V {
         match self {
             Falloff::None => color,
             Falloff::Linear => color / d,
@@ -76,6 +76,8 @@ pub struct Cone<R: Real> {
 }
 
 impl<R: Real> Cone<R> {
+    /// The cone with unit axis D_l, angle γ_l in degrees and exponent e_l, its γ_l in radians
+    /// and cos γ_l computed once.
     pub fn new(axis: V3<R>, angle_deg: R, exponent: R) -> Self {
         Cone {
             axis,
@@ -89,7 +91,7 @@ impl<R: Real> Cone<R> {
     /// The bound (radians) on the rounding error of the computed ψ − γ for an exact P: a point
     /// with |ψ − γ| within it is on the edge to within rounding (see `CONE_EDGE_ULPS`).
     #[inline]
-    pub fn edge_tolerance(&self) -> R {
+    pub(crate) fn edge_tolerance(&self) -> R {
         R::from_f64(CONE_EDGE_ULPS) * R::EPSILON * (R::ONE + self.gamma)
     }
 }
@@ -98,13 +100,24 @@ impl<R: Real> Cone<R> {
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum LightKind<R: Real> {
     /// A point light at P_l.
-    Point { position: V3<R>, falloff: Falloff },
+    Point {
+        /// P_l, the light's position.
+        position: V3<R>,
+        /// f, how its colour falls off with the distance d (Eq. 4.2–4.3).
+        falloff: Falloff,
+    },
     /// A directional light travelling along the unit vector D_l.
-    Directional { direction: V3<R> },
+    Directional {
+        /// D_l, unit: the direction the light travels in (L = D_l at every point).
+        direction: V3<R>,
+    },
     /// A spot light: a point light whose flux is restricted to a cone.
     Spot {
+        /// P_l, the light's position (the cone's apex).
         position: V3<R>,
+        /// f, how its colour falls off with the distance d (Eq. 4.2–4.3).
         falloff: Falloff,
+        /// The cone: D_l, γ_l and e_l (Eq. 4.4).
         cone: Cone<R>,
     },
 }
@@ -112,7 +125,9 @@ pub enum LightKind<R: Real> {
 /// A light other than ambient: its colour C_l and its kind.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Light<R: Real> {
+    /// C_l, the light's colour (I_l = C_l / d^f, Eq. 4.2).
     pub color: V3<R>,
+    /// Where it is and how its colour decays: point, directional or spot.
     pub kind: LightKind<R>,
 }
 
@@ -134,9 +149,10 @@ pub struct ConeTest<R: Real> {
     /// cos ψ = D_l · L.
     pub cos_psi: R,
     /// ψ in degrees, from atan2(‖D_l × L‖, D_l · L): accurate at every angle, where acos(cos ψ)
-    /// loses half the digits near 0°. Left at 0 by [`Light::arrive_with`] without detail where
+    /// loses half the digits near 0°. Left at 0 by `Light::arrive_with` without detail where
     /// cos ψ alone decided the test.
     pub psi_deg: R,
+    /// cos γ_l, the cosine of the cone's angle.
     pub cos_gamma: R,
     /// ψ ≤ γ (a point on the edge counts as inside).
     pub inside: bool,
@@ -161,13 +177,14 @@ pub struct Arrival<R: Real> {
     pub cone: Option<ConeTest<R>>,
     /// I_l: the light's colour at P.
     pub i_l: V3<R>,
+    /// Whether the light's flux arrives at P at all (inside the cone, P not at the light).
     pub reach: Reach,
 }
 
 /// Tolerance of the cone-edge test in units of machine epsilon ε (radians, times 1 + γ): a
 /// point whose computed ψ lies within this of the computed γ is on the edge to within rounding,
-/// and the edge is lit (DESIGN.md). It bounds the error of ψ − γ for exact (binary) P, P_l, D_l
-/// and angle, with u = ε/2 and γ_k = ku/(1 − ku):
+/// and the edge is lit (docs/conventions.md, "Spot cone"). It bounds the error of ψ − γ for
+/// exact (binary) P, P_l, D_l and angle, with u = ε/2 and γ_k = ku/(1 − ku):
 /// - D_l as used is the given axis normalised (γ₆ per component: its direction is off by at
 ///   most γ₆ rad) or, when its length is 1 to within 8ε, the given vector itself (the same
 ///   direction; the angle from atan2 does not depend on the length);
@@ -193,14 +210,15 @@ const CONE_COS_MARGIN_ULPS: f64 = 128.0;
 impl<R: Real> Light<R> {
     /// What this light delivers at P (Eq. 4.1–4.4), with every intermediate.
     #[inline]
-    pub fn arrive(&self, p: V3<R>) -> Arrival<R> {
+    #[cfg(test)]
+    pub(crate) fn arrive(&self, p: V3<R>) -> Arrival<R> {
         self.arrive_with(p, true)
     }
 
     /// [`Light::arrive`]; without `detail`, a spot's ψ (degrees) is left at 0 where cos ψ alone
     /// decides the cone test, to spare an atan2 on the tracer's hot path.
     #[inline]
-    pub fn arrive_with(&self, p: V3<R>, detail: bool) -> Arrival<R> {
+    pub(crate) fn arrive_with(&self, p: V3<R>, detail: bool) -> Arrival<R> {
         match self.kind {
             LightKind::Directional { direction } => Arrival {
                 l: direction,
@@ -297,7 +315,7 @@ impl<R: Real> Light<R> {
     }
 
     /// The light's position, for point and spot lights.
-    pub fn position(&self) -> Option<V3<R>> {
+    pub(crate) fn position(&self) -> Option<V3<R>> {
         match self.kind {
             LightKind::Point { position, .. } | LightKind::Spot { position, .. } => Some(position),
             LightKind::Directional { .. } => None,

@@ -1,6 +1,6 @@
 //! The shading core: Phong's illumination model of Chapter 4, pure and free of I/O.
 //!
-//! Symbols, as the chapter names them (DESIGN.md fixes the signs):
+//! Symbols, as the chapter names them (docs/conventions.md fixes the signs):
 //!
 //! | symbol | meaning | eq. |
 //! |---|---|---|
@@ -18,20 +18,21 @@
 //!
 //! Everything is generic over [`Real`] (f32 or f64) from one source.
 
-pub mod color;
-pub mod lanes;
-pub mod light;
-pub mod material;
+pub(crate) mod color;
+pub(crate) mod lanes;
+pub(crate) mod light;
+pub(crate) mod material;
 pub mod real;
-pub mod rounding;
-pub mod shade;
-pub mod vector;
+pub(crate) mod rounding;
+pub(crate) mod shade;
+pub(crate) mod vector;
 
 pub use light::{Arrival, Cone, ConeTest, Falloff, Light, LightKind, LightSet, Reach};
 pub use material::Material;
 pub use real::{Precision, Real, Vector, V3};
 pub use shade::{
-    shade, shade_with, AllVisible, Chapter, Formulas, LightStatus, LightTerm, NoRecord, Recorder,
-    Shade, ShadingPoint, Slipped, SpecularStatus, SpecularTerm, Visibility,
+    shade, AllVisible, LightStatus, LightTerm, NoRecord, Recorder, Shade, ShadingPoint,
+    SpecularStatus, SpecularTerm, Visibility,
 };
-pub use vector::{between, normalize, Normalized};
+pub(crate) use shade::{shade_with, Chapter, Formulas, Slipped};
+pub use vector::{between, Normalized};

@@ -38,8 +38,11 @@ pub trait Real:
     type Wide: super::lanes::Wide<Scalar = Self>;
     /// `"f32"` or `"f64"`, as the CLI and the JSON output name it.
     const NAME: &'static str;
+    /// The number 0 in this precision.
     const ZERO: Self;
+    /// The number 1 in this precision.
     const ONE: Self;
+    /// The number 2 in this precision.
     const TWO: Self;
     /// Machine epsilon (the gap between 1 and the next representable number).
     const EPSILON: Self;
@@ -48,15 +51,23 @@ pub trait Real:
     fn from_f64(x: f64) -> Self;
     /// Widens to f64 (exact for both precisions).
     fn to_f64(self) -> f64;
+    /// The square root, correctly rounded.
     fn sqrt(self) -> Self;
+    /// The absolute value.
     fn abs(self) -> Self;
+    /// `self` raised to a real power `e` (the platform's `powf`).
     fn powf(self, e: Self) -> Self;
+    /// The larger of the two (the other one where one is NaN).
     fn max(self, o: Self) -> Self;
+    /// The smaller of the two (the other one where one is NaN).
     fn min(self, o: Self) -> Self;
+    /// Neither infinite nor NaN.
     fn is_finite(self) -> bool;
     /// The angle of (x = `other`, y = `self`) in radians, as `f64::atan2`.
     fn atan2(self, other: Self) -> Self;
+    /// Degrees to radians.
     fn to_radians(self) -> Self;
+    /// Radians to degrees.
     fn to_degrees(self) -> Self;
     /// Cosine of an angle given in degrees; exact at 0°, 60° and 90°, where the chapter's
     /// cone tests most often sit on the edge.
@@ -68,6 +79,7 @@ pub trait Real:
     /// The next representable number towards +∞ (towards −∞ for `next_down`): rounding an
     /// offset ray origin outward, as pbrt does.
     fn next_up(self) -> Self;
+    /// The next representable number towards −∞ (see [`Real::next_up`]).
     fn next_down(self) -> Self;
     /// Raises to an integer power by repeated multiplication.
     fn powi(self, n: i32) -> Self;
@@ -89,6 +101,7 @@ pub trait Real:
     /// Bounds on a squared length inside which x² + y² + z² neither overflows nor loses the
     /// largest component to underflow, so ‖v‖ = √(v·v) directly.
     const SAFE_SQUARED_MIN: Self;
+    /// The upper bound of that range (see [`Real::SAFE_SQUARED_MIN`]).
     const SAFE_SQUARED_MAX: Self;
 }
 
@@ -109,20 +122,32 @@ pub trait Vector<R>:
     + Div<R, Output = Self>
     + AddAssign
 {
+    /// The zero vector (black, as a colour).
     const ZERO: Self;
+    /// The vector (x, y, z) (or the colour (r, g, b)).
     fn new(x: R, y: R, z: R) -> Self;
+    /// The vector with all three components `v`.
     fn splat(v: R) -> Self;
+    /// The components as `[x, y, z]`.
     fn to_array(self) -> [R; 3];
+    /// The dot product.
     fn dot(self, o: Self) -> R;
+    /// The cross product, `self × o`.
     fn cross(self, o: Self) -> Self;
     /// The Euclidean length computed naively (may underflow or overflow; see
-    /// [`super::vector::normalize`] for the robust form).
+    /// `core::vector::normalize` for the robust form).
     fn naive_length(self) -> R;
+    /// The component-wise absolute value.
     fn abs(self) -> Self;
+    /// The largest component.
     fn max_element(self) -> R;
+    /// Every component is neither infinite nor NaN.
     fn is_finite(self) -> bool;
+    /// The first component (x, or red).
     fn x(self) -> R;
+    /// The second component (y, or green).
     fn y(self) -> R;
+    /// The third component (z, or blue).
     fn z(self) -> R;
 }
 
@@ -293,13 +318,15 @@ pub type V3<R> = <R as Real>::Vec3;
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord, serde::Serialize)]
 #[serde(rename_all = "lowercase")]
 pub enum Precision {
+    /// Single precision, `f32` (`--precision f32`).
     F32,
+    /// Double precision, `f64` (`--precision f64`, the default).
     F64,
 }
 
 impl Precision {
     /// "f32" or "f64", as `--precision` and [`Real::NAME`] write it.
-    pub fn name(self) -> &'static str {
+    pub(crate) fn name(self) -> &'static str {
         match self {
             Precision::F32 => f32::NAME,
             Precision::F64 => f64::NAME,
@@ -315,7 +342,7 @@ pub fn v3<R: Real>(a: [f64; 3]) -> V3<R> {
 
 /// Widens a vector to f64 components.
 #[inline]
-pub fn to_f64_array<R: Real>(v: V3<R>) -> [f64; 3] {
+pub(crate) fn to_f64_array<R: Real>(v: V3<R>) -> [f64; 3] {
     let a = v.to_array();
     [a[0].to_f64(), a[1].to_f64(), a[2].to_f64()]
 }

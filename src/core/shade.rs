@@ -1,5 +1,6 @@
-//! Phong's model at one point, Eq. 4.16, with the gating of DESIGN.md, recording every
-//! intermediate per light for callers that want it and nothing for callers that do not.
+//! Phong's model at one point, Eq. 4.16, gated as docs/conventions.md ("Gating") reads the
+//! chapter, recording every intermediate per light for callers that want it and nothing for
+//! callers that do not.
 //!
 //! The caller passes a [`Recorder`]: [`NoRecord`] (the tracer's hot path: no allocation, no
 //! literal values) or a `Vec<LightTerm>` (the solver's explanation). Shadowing is the caller's
@@ -25,7 +26,7 @@ pub struct ShadingPoint<R: Real> {
 #[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize)]
 #[serde(rename_all = "snake_case")]
 pub enum LightStatus {
-    /// cos θ > 0 (beyond its rounding error, [`tangent_tolerance`]) and the light arrives: it
+    /// cos θ > 0 (beyond its rounding error, `tangent_tolerance`) and the light arrives: it
     /// adds diffuse (and specular where cos φ > 0).
     Lit,
     /// cos θ < 0 (beyond its rounding error): the light is on the back side of the surface.
@@ -59,6 +60,7 @@ pub enum SpecularStatus {
 /// The specular part of one light's contribution, Eq. 4.9–4.15.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct SpecularTerm<R: Real> {
+    /// Why the term is what it is (lit, R away from the viewer, no viewer, …).
     pub status: SpecularStatus,
     /// R = L − 2(N·L)N, Eq. 4.15 (computed only where needed).
     pub r: Option<V3<R>>,
@@ -98,11 +100,13 @@ pub struct LightTerm<R: Real> {
     pub n_dot_l: R,
     /// cos θ = −N·L, Eq. 4.7.
     pub cos_theta: R,
+    /// Whether the light adds diffuse and specular light at P, and if not why.
     pub status: LightStatus,
     /// The gated diffuse term O_d I_l cos θ, Eq. 4.8; `None` when the material has no O_d.
     pub diffuse: Option<V3<R>>,
     /// O_d I_l cos θ without gating (recorded only when the recorder asks for detail).
     pub diffuse_literal: Option<V3<R>>,
+    /// The specular term, Eq. 4.9–4.15.
     pub specular: SpecularTerm<R>,
 }
 
@@ -124,7 +128,10 @@ pub struct Shade<R: Real> {
 /// Receives each light's record. `DETAIL` also asks the core for the literal (ungated) values
 /// and for R and cos φ of lights that do not light the point.
 pub trait Recorder<R: Real> {
+    /// Whether the core computes the literal values and the R and cos φ of unlit lights for
+    /// this recorder (`false` costs nothing on the hot path).
     const DETAIL: bool;
+    /// Receives one light's record, in the order of the light set.
     fn light(&mut self, term: &LightTerm<R>);
 }
 
@@ -146,6 +153,8 @@ impl<R: Real> Recorder<R> for Vec<LightTerm<R>> {
 
 /// Decides whether a light that faces the point actually reaches it (shadow rays).
 pub trait Visibility<R: Real> {
+    /// Whether `light`, which lights P from the front and arrives as `arrival` says, reaches P
+    /// unblocked.
     fn visible(&mut self, p: V3<R>, light: &Light<R>, arrival: &Arrival<R>) -> bool;
 }
 
@@ -216,7 +225,7 @@ fn literal_pow<R: Real>(x: R, n_s: R, clamp: bool, unit: Option<(V3<R>, V3<R>)>)
 /// check` can reproduce it with the same code (every other slip is a change of the input).
 /// [`Chapter`] answers `false` to both as a constant, so the chapter's path compiles to exactly
 /// the code it would be without these switches; [`Slipped`] answers at run time.
-pub trait Formulas: Copy {
+pub(crate) trait Formulas: Copy {
     /// cos θ taken as |N·L| instead of −N·L (Eq. 4.7): a light behind the surface lights it.
     fn abs_cos_theta(self) -> bool;
     /// cos φ taken as N·H with Blinn's half-vector H = (−L − V)/‖−L − V‖ instead of −R·V
@@ -225,11 +234,24 @@ pub trait Formulas: Copy {
     /// N is used as given, not of unit length: cos φ is then not a cosine and is not clamped to
     /// [−1, 1] (the clamp guards unit vectors against rounding only).
     fn raw_normal(self) -> bool;
+    /// An intermediate as a hand calculation writes it down: [`Chapter`] keeps every digit;
+    /// [`Slipped`] with `round_to: Some(k)` rounds N, V, L, d, 1/d^f, I_l, N·L, R, cos φ,
+    /// (cos φ)^n_s and each term to k decimals before the next step uses it.
+    fn round<R: Real>(self, x: R) -> R;
+    /// Whether [`Formulas::round`] rounds (then (cos φ)^n_s is the plain power of the rounded
+    /// cos φ, as by hand, not the accurate form near the highlight).
+    fn rounds(self) -> bool;
+}
+
+/// Every component of `v` as [`Formulas::round`] writes it down.
+#[inline(always)]
+fn round_v<R: Real, F: Formulas>(f: F, v: V3<R>) -> V3<R> {
+    V3::<R>::new(f.round(v.x()), f.round(v.y()), f.round(v.z()))
 }
 
 /// The chapter's formulas, unchanged: the tracer's and the solver's.
 #[derive(Clone, Copy, Debug, Default)]
-pub struct Chapter;
+pub(crate) struct Chapter;
 
 impl Formulas for Chapter {
     #[inline(always)]
@@ -244,14 +266,24 @@ impl Formulas for Chapter {
     fn raw_normal(self) -> bool {
         false
     }
+    #[inline(always)]
+    fn round<R: Real>(self, x: R) -> R {
+        x
+    }
+    #[inline(always)]
+    fn rounds(self) -> bool {
+        false
+    }
 }
 
 /// Formula switches chosen at run time (the mistake diagnosis of `phong check`).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub struct Slipped {
+pub(crate) struct Slipped {
     pub abs_cos_theta: bool,
     pub half_vector: bool,
     pub raw_normal: bool,
+    /// Round every intermediate to this many decimals (a hand calculation's slip).
+    pub round_to: Option<u8>,
 }
 
 impl Formulas for Slipped {
@@ -267,6 +299,20 @@ impl Formulas for Slipped {
     fn raw_normal(self) -> bool {
         self.raw_normal
     }
+    #[inline]
+    fn round<R: Real>(self, x: R) -> R {
+        match self.round_to {
+            Some(k) => {
+                let scale = 10f64.powi(i32::from(k));
+                R::from_f64((x.to_f64() * scale).round() / scale)
+            }
+            None => x,
+        }
+    }
+    #[inline]
+    fn rounds(self) -> bool {
+        self.round_to.is_some()
+    }
 }
 
 /// The bound on the rounding error of the computed cos θ = −N·L for a given point: γ₄₀·Σ|N_i L_i|
@@ -279,13 +325,14 @@ impl Formulas for Slipped {
 /// shrinks with cos θ itself, and such a grazing light is decided as the exact value says in
 /// any precision.
 #[inline]
-pub fn tangent_tolerance<R: Real>(n: V3<R>, l: V3<R>) -> R {
+pub(crate) fn tangent_tolerance<R: Real>(n: V3<R>, l: V3<R>) -> R {
     let sum = (n.x() * l.x()).abs() + (n.y() * l.y()).abs() + (n.z() * l.z()).abs();
     gamma::<R>(40) * sum
 }
 
-/// Shades P with Phong's model, Eq. 4.16, gated as DESIGN.md reads the chapter: a light adds
-/// diffuse and specular only where cos θ > 0, and specular only where also cos φ > 0.
+/// Shades P with Phong's model, Eq. 4.16, gated as docs/conventions.md ("Gating") reads the
+/// chapter: a light adds diffuse and specular only where cos θ > 0, and specular only where also
+/// cos φ > 0.
 #[inline]
 pub fn shade<R: Real, Rec: Recorder<R>, Vis: Visibility<R>>(
     at: &ShadingPoint<R>,
@@ -300,7 +347,7 @@ pub fn shade<R: Real, Rec: Recorder<R>, Vis: Visibility<R>>(
 /// [`shade`] with a formula switched as `formulas` says (see [`Formulas`]); with [`Chapter`]
 /// it is [`shade`] itself.
 #[inline]
-pub fn shade_with<R: Real, Rec: Recorder<R>, Vis: Visibility<R>, F: Formulas>(
+pub(crate) fn shade_with<R: Real, Rec: Recorder<R>, Vis: Visibility<R>, F: Formulas>(
     formulas: F,
     at: &ShadingPoint<R>,
     m: &Material<R>,
@@ -308,9 +355,15 @@ pub fn shade_with<R: Real, Rec: Recorder<R>, Vis: Visibility<R>, F: Formulas>(
     visibility: &mut Vis,
     rec: &mut Rec,
 ) -> Shade<R> {
+    // N and V as the formulas write them down (the chapter: exactly as given).
+    let at: &ShadingPoint<R> = &ShadingPoint {
+        p: at.p,
+        n: round_v::<R, F>(formulas, at.n),
+        v: at.v.map(|v| round_v::<R, F>(formulas, v)),
+    };
     // Ambient light, Eq. 4.6.
     let ambient = match (m.o_a, lights.ambient) {
-        (Some(o_a), Some(i_a)) => Some(o_a * i_a),
+        (Some(o_a), Some(i_a)) => Some(round_v::<R, F>(formulas, o_a * i_a)),
         _ => None,
     };
     let mut diffuse = V3::<R>::ZERO;
@@ -323,9 +376,13 @@ pub fn shade_with<R: Real, Rec: Recorder<R>, Vis: Visibility<R>, F: Formulas>(
     let contributes = m.o_d.is_some() || (m.o_s.is_some() && at.v.is_some());
 
     for (index, light) in lights.lights.iter().enumerate() {
-        let arrival = light.arrive_with(at.p, Rec::DETAIL);
+        let mut arrival = light.arrive_with(at.p, Rec::DETAIL);
+        arrival.l = round_v::<R, F>(formulas, arrival.l);
+        arrival.distance = arrival.distance.map(|d| formulas.round(d));
+        arrival.falloff_factor = formulas.round(arrival.falloff_factor);
+        arrival.i_l = round_v::<R, F>(formulas, arrival.i_l);
         // Diffuse reflection, cos θ = −N·L, Eq. 4.7–4.8.
-        let n_dot_l = at.n.dot(arrival.l);
+        let n_dot_l = formulas.round(at.n.dot(arrival.l));
         let cos_theta = if formulas.abs_cos_theta() {
             n_dot_l.abs()
         } else {
@@ -363,7 +420,7 @@ pub fn shade_with<R: Real, Rec: Recorder<R>, Vis: Visibility<R>, F: Formulas>(
             None => (None, None),
             Some(o_d) => {
                 let value = if arrives && (lit || Rec::DETAIL) {
-                    o_d * arrival.i_l * cos_theta
+                    round_v::<R, F>(formulas, o_d * arrival.i_l * cos_theta)
                 } else {
                     V3::<R>::ZERO
                 };
@@ -386,13 +443,13 @@ pub fn shade_with<R: Real, Rec: Recorder<R>, Vis: Visibility<R>, F: Formulas>(
                 SpecularTerm::skipped(SpecularStatus::LightNotLit)
             }
             (Some(o_s), Some(v)) => {
-                let r = arrival.l - at.n * (R::TWO * n_dot_l);
+                let r: V3<R> = round_v::<R, F>(formulas, arrival.l - at.n * (R::TWO * n_dot_l));
                 let cos_phi = if formulas.half_vector() {
                     // Blinn: H halfway between the directions to the light and to the eye.
                     crate::core::vector::normalize::<R>(-arrival.l - v)
                         .map_or(R::ZERO, |h| at.n.dot(h.unit))
                 } else {
-                    -r.dot(v)
+                    formulas.round(-r.dot(v))
                 };
                 let (st, pow, term) = if !lit {
                     (SpecularStatus::LightNotLit, None, V3::<R>::ZERO)
@@ -401,12 +458,17 @@ pub fn shade_with<R: Real, Rec: Recorder<R>, Vis: Visibility<R>, F: Formulas>(
                     // nor a cos φ that rounds to 1 into a spurious 1 (see `cos_phi_pow`).
                     let pow = if formulas.raw_normal() {
                         cos_phi.pow(m.n_s)
-                    } else if formulas.half_vector() {
+                    } else if formulas.half_vector() || formulas.rounds() {
                         cos_phi.min(R::ONE).pow(m.n_s)
                     } else {
                         cos_phi_pow(cos_phi, r, v, m.n_s)
                     };
-                    (SpecularStatus::Lit, Some(pow), o_s * arrival.i_l * pow)
+                    let pow = formulas.round(pow);
+                    (
+                        SpecularStatus::Lit,
+                        Some(pow),
+                        round_v::<R, F>(formulas, o_s * arrival.i_l * pow),
+                    )
                 } else {
                     (SpecularStatus::AwayFromViewer, None, V3::<R>::ZERO)
                 };
@@ -416,7 +478,8 @@ pub fn shade_with<R: Real, Rec: Recorder<R>, Vis: Visibility<R>, F: Formulas>(
                     Some(V3::<R>::ZERO)
                 } else {
                     let clamp = !formulas.raw_normal();
-                    let unit = (clamp && !formulas.half_vector()).then_some((r, v));
+                    let unit =
+                        (clamp && !formulas.half_vector() && !formulas.rounds()).then_some((r, v));
                     literal_pow(cos_phi, m.n_s, clamp, unit).map(|p| o_s * arrival.i_l * p)
                 };
                 SpecularTerm {

@@ -9,6 +9,7 @@ use super::real::{Real, Vector, V3};
 /// A unit vector together with the length of the vector it came from.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Normalized<R: Real> {
+    /// v/‖v‖, of length 1 within rounding.
     pub unit: V3<R>,
     /// ‖v‖; may be +inf when the true length exceeds the precision's range (|v| near MAX).
     pub length: R,
@@ -16,7 +17,7 @@ pub struct Normalized<R: Real> {
 
 /// Normalises `v` without needless underflow or overflow. `None` for a zero or non-finite vector.
 #[inline]
-pub fn normalize<R: Real>(v: V3<R>) -> Option<Normalized<R>> {
+pub(crate) fn normalize<R: Real>(v: V3<R>) -> Option<Normalized<R>> {
     // The common case: v·v neither overflows nor underflows, so ‖v‖ = √(v·v).
     let sq = v.dot(v);
     if sq > R::SAFE_SQUARED_MIN && sq < R::SAFE_SQUARED_MAX {
@@ -64,7 +65,7 @@ pub fn between<R: Real>(a: V3<R>, b: V3<R>) -> Option<Normalized<R>> {
 
 /// The robust Euclidean length ‖v‖ (0 for the zero vector).
 #[inline]
-pub fn length<R: Real>(v: V3<R>) -> R {
+pub(crate) fn length<R: Real>(v: V3<R>) -> R {
     let sq = v.dot(v);
     if sq > R::SAFE_SQUARED_MIN && sq < R::SAFE_SQUARED_MAX {
         return sq.sqrt();
@@ -74,7 +75,7 @@ pub fn length<R: Real>(v: V3<R>) -> R {
 
 /// Whether `v` (a unit-normalised input) differed in length from 1 by more than rounding.
 #[inline]
-pub fn is_unit_length<R: Real>(length: R) -> bool {
+pub(crate) fn is_unit_length<R: Real>(length: R) -> bool {
     (length - R::ONE).abs() <= R::from_f64(8.0) * R::EPSILON
 }
 

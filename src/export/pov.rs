@@ -59,7 +59,9 @@ use crate::tracer::camera::CameraRays;
 pub struct Unexpressible {
     /// The part of the scene (a material, a light, a setting).
     pub what: String,
+    /// Why POV-Ray cannot compute it as phong does.
     pub why: String,
+    /// What would make the scene expressible.
     pub fix: String,
 }
 

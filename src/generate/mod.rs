@@ -51,14 +51,6 @@ impl Generated {
         s.push('\n');
         s
     }
-
-    /// The answer key written in the problem.
-    pub fn answer(&self) -> [f64; 3] {
-        self.problem
-            .answer
-            .expect("every generated problem has its key")
-            .map(|n| n.0)
-    }
 }
 
 /// Several problems as one text: one JSON document, or an array for several.

@@ -31,12 +31,13 @@ pub struct Aggregate<R: Real> {
 pub struct AggregateHit<R: Real> {
     /// The shape's index in the order given.
     pub index: usize,
+    /// Where the ray meets it: t, the point with its error bound, and the normal.
     pub hit: SurfaceHit<R>,
 }
 
 impl<R: Real> Aggregate<R> {
     /// Builds the BVH over the bounded shapes.
-    pub fn new(shapes: Vec<Shape<R>>) -> Self {
+    pub(crate) fn new(shapes: Vec<Shape<R>>) -> Self {
         let mut unbounded = Vec::new();
         let mut bounded = Vec::new();
         let mut boxes = Vec::new();
@@ -62,13 +63,13 @@ impl<R: Real> Aggregate<R> {
         }
     }
 
-    /// The shapes, in the order given.
-    pub fn shapes(&self) -> &[Shape<R>] {
+    /// The shapes, in the order given (the wide tracer's `FlatScene` lays them out in lanes).
+    pub(crate) fn shapes(&self) -> &[Shape<R>] {
         &self.shapes
     }
 
     /// The nearest hit with 0 < t < `t_max`.
-    pub fn nearest(&self, ray: &Ray<R>, t_max: R) -> Option<AggregateHit<R>> {
+    pub(crate) fn nearest(&self, ray: &Ray<R>, t_max: R) -> Option<AggregateHit<R>> {
         let mut best: Option<(usize, R)> = None;
         let mut t_max = t_max;
         for &i in &self.unbounded {
@@ -100,7 +101,7 @@ impl<R: Real> Aggregate<R> {
     }
 
     /// Whether any surface meets the ray with 0 < t < `t_max`.
-    pub fn occluded(&self, ray: &Ray<R>, t_max: R) -> bool {
+    pub(crate) fn occluded(&self, ray: &Ray<R>, t_max: R) -> bool {
         let blocks = |i: &u32| self.shapes[*i as usize].hit_t(ray, t_max).is_some();
         if self.unbounded.iter().any(blocks) {
             return true;

@@ -5,7 +5,6 @@
 //! distances are scaled by 1 + 2γ₃ (pbrt §6.8.2), and a ray lying exactly in a slab's plane
 //! (0·∞ = NaN) is taken to be inside that slab rather than outside it.
 
-use super::ray::Ray;
 use crate::core::rounding::gamma;
 use crate::core::{Real, Vector, V3};
 
@@ -15,10 +14,12 @@ pub(crate) fn infinity<R: Real>() -> R {
     R::from_f64(f64::INFINITY)
 }
 
-/// The box [min, max]; empty when min > max on some axis ([`Aabb::empty`] is +∞/−∞).
+/// The box [min, max]; empty when min > max on some axis (`Aabb::empty` is +∞/−∞).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Aabb<R: Real> {
+    /// The corner of smallest coordinates.
     pub min: V3<R>,
+    /// The corner of largest coordinates.
     pub max: V3<R>,
 }
 
@@ -54,7 +55,7 @@ fn greater<R: Real>(a: R, b: R) -> R {
 impl<R: Real> Aabb<R> {
     /// The empty box: the identity of [`Aabb::union`].
     #[inline]
-    pub fn empty() -> Self {
+    pub(crate) fn empty() -> Self {
         let inf = infinity::<R>();
         Aabb {
             min: V3::<R>::splat(inf),
@@ -64,7 +65,7 @@ impl<R: Real> Aabb<R> {
 
     /// The box of a single point.
     #[inline]
-    pub fn of_point(p: V3<R>) -> Self {
+    pub(crate) fn of_point(p: V3<R>) -> Self {
         Aabb { min: p, max: p }
     }
 
@@ -83,14 +84,15 @@ impl<R: Real> Aabb<R> {
 
     /// Whether the box holds no point.
     #[inline]
-    pub fn is_empty(&self) -> bool {
+    #[cfg(test)]
+    pub(crate) fn is_empty(&self) -> bool {
         let (lo, hi) = (self.min.to_array(), self.max.to_array());
         !(0..3).all(|a| lo[a] <= hi[a])
     }
 
     /// The smallest box holding both.
     #[inline]
-    pub fn union(self, o: Self) -> Self {
+    pub(crate) fn union(self, o: Self) -> Self {
         Aabb {
             min: zip::<R>(self.min, o.min, lesser),
             max: zip::<R>(self.max, o.max, greater),
@@ -99,7 +101,7 @@ impl<R: Real> Aabb<R> {
 
     /// The smallest box holding this box and the point `p`.
     #[inline]
-    pub fn union_point(self, p: V3<R>) -> Self {
+    pub(crate) fn union_point(self, p: V3<R>) -> Self {
         Aabb {
             min: zip::<R>(self.min, p, lesser),
             max: zip::<R>(self.max, p, greater),
@@ -108,7 +110,8 @@ impl<R: Real> Aabb<R> {
 
     /// Whether `o` lies inside this box (boundary included).
     #[inline]
-    pub fn contains(&self, o: &Self) -> bool {
+    #[cfg(test)]
+    pub(crate) fn contains(&self, o: &Self) -> bool {
         let (a0, a1, b0, b1) = (
             self.min.to_array(),
             self.max.to_array(),
@@ -120,20 +123,21 @@ impl<R: Real> Aabb<R> {
 
     /// The centre, as ½min + ½max so that it cannot overflow.
     #[inline]
-    pub fn centroid(&self) -> V3<R> {
+    pub(crate) fn centroid(&self) -> V3<R> {
         let half = R::ONE / R::TWO;
         self.min * half + self.max * half
     }
 
     /// The extent max − min (negative on some axis for an empty box).
     #[inline]
-    pub fn diagonal(&self) -> V3<R> {
+    pub(crate) fn diagonal(&self) -> V3<R> {
         self.max - self.min
     }
 
     /// 2(dx·dy + dy·dz + dz·dx); 0 for an empty box.
     #[inline]
-    pub fn surface_area(&self) -> R {
+    #[cfg(test)]
+    pub(crate) fn surface_area(&self) -> R {
         if self.is_empty() {
             return R::ZERO;
         }
@@ -143,7 +147,7 @@ impl<R: Real> Aabb<R> {
 
     /// The axis (0 = x, 1 = y, 2 = z) along which the box is longest; the first on a tie.
     #[inline]
-    pub fn longest_axis(&self) -> usize {
+    pub(crate) fn longest_axis(&self) -> usize {
         let d = self.diagonal().to_array();
         if d[0] >= d[1] && d[0] >= d[2] {
             0
@@ -158,7 +162,7 @@ impl<R: Real> Aabb<R> {
     /// component-wise (`inv_dir`, ±∞ where D has a ±0 component). Conservative: a box the ray
     /// really meets is never rejected (pbrt-v4 `Bounds3::IntersectP`, §6.1.2 and §6.8.2).
     #[inline]
-    pub fn hit(&self, origin: V3<R>, inv_dir: V3<R>, t_max: R) -> bool {
+    pub(crate) fn hit(&self, origin: V3<R>, inv_dir: V3<R>, t_max: R) -> bool {
         let (lo, hi) = (self.min.to_array(), self.max.to_array());
         let (o, inv) = (origin.to_array(), inv_dir.to_array());
         // Widen the far distances by the rounding of (b − o)·inv, pbrt's 1 + 2γ₃.
@@ -185,18 +189,11 @@ impl<R: Real> Aabb<R> {
         }
         t0 <= t1
     }
-
-    /// [`Aabb::hit`] for a ray, computing 1/D here; prefer [`Aabb::hit`] with a 1/D computed
-    /// once per ray when testing many boxes.
-    #[inline]
-    pub fn hit_ray(&self, ray: &Ray<R>, t_max: R) -> bool {
-        self.hit(ray.origin, inverse::<R>(ray.direction), t_max)
-    }
 }
 
 /// 1/D component-wise (±∞ for a ±0 component), for [`Aabb::hit`].
 #[inline]
-pub fn inverse<R: Real>(d: V3<R>) -> V3<R> {
+pub(crate) fn inverse<R: Real>(d: V3<R>) -> V3<R> {
     let d = d.to_array();
     V3::<R>::new(R::ONE / d[0], R::ONE / d[1], R::ONE / d[2])
 }
@@ -205,13 +202,13 @@ pub fn inverse<R: Real>(d: V3<R>) -> V3<R> {
 /// seeded, so every run tests the same cases, and no dependency.
 #[cfg(test)]
 pub(crate) mod test_rng {
-    pub struct Rng(u64);
+    pub(crate) struct Rng(u64);
 
     impl Rng {
-        pub fn new(seed: u64) -> Self {
+        pub(crate) fn new(seed: u64) -> Self {
             Rng(seed)
         }
-        pub fn next_u64(&mut self) -> u64 {
+        pub(crate) fn next_u64(&mut self) -> u64 {
             self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
             let mut z = self.0;
             z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
@@ -219,15 +216,15 @@ pub(crate) mod test_rng {
             z ^ (z >> 31)
         }
         /// Uniform in [0, 1).
-        pub fn unit(&mut self) -> f64 {
+        pub(crate) fn unit(&mut self) -> f64 {
             (self.next_u64() >> 11) as f64 / (1u64 << 53) as f64
         }
         /// Uniform in [lo, hi).
-        pub fn range(&mut self, lo: f64, hi: f64) -> f64 {
+        pub(crate) fn range(&mut self, lo: f64, hi: f64) -> f64 {
             lo + (hi - lo) * self.unit()
         }
         /// A uniformly distributed unit vector (normalised Gaussian-free: rejection in the cube).
-        pub fn direction(&mut self) -> [f64; 3] {
+        pub(crate) fn direction(&mut self) -> [f64; 3] {
             loop {
                 let v = [
                     self.range(-1.0, 1.0),

@@ -17,20 +17,20 @@ use crate::core::{Real, Vector};
 /// The most primitives a leaf holds; every node with this many or fewer is a leaf. (Letting
 /// the SAH split such nodes further, as pbrt does, tripled the node count and cost 40 % more
 /// build instructions, for the same instructions per query on 100,000 spheres.)
-pub const MAX_LEAF: usize = 4;
+pub(crate) const MAX_LEAF: usize = 4;
 /// Centroid bins of the SAH split search (pbrt-v4 uses 12).
 const BINS: usize = 12;
 /// Depth to which splits are chosen by the SAH. Deeper, a node is split at its median
 /// centroid, halving its count, so with fewer than 2³² primitives no path is longer than
 /// SAH_DEPTH + 31 nodes.
-pub const SAH_DEPTH: usize = 32;
+pub(crate) const SAH_DEPTH: usize = 32;
 /// The traversal stack: one entry per level at most, and levels ≤ SAH_DEPTH + 31 < 64.
 const STACK: usize = 64;
 
 /// One node of the flattened tree, in depth-first order: an interior node's first child
 /// follows it directly, its second child is at `offset` (pbrt-v4 `LinearBVHNode`).
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct BvhNode<R: Real> {
+pub(crate) struct BvhNode<R: Real> {
     pub bounds: Aabb<R>,
     /// A leaf's first entry in [`Bvh::prims`]; an interior node's second child.
     pub offset: u32,
@@ -52,7 +52,9 @@ pub struct Bvh<R: Real> {
 /// The nearest primitive a ray hits, and its t.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct BvhHit<R: Real> {
+    /// The primitive's index in the slice given to [`Bvh::build`].
     pub prim: u32,
+    /// The ray parameter of its hit.
     pub t: R,
 }
 
@@ -331,22 +333,26 @@ impl<R: Real> Bvh<R> {
     }
 
     /// The nodes in depth-first order (the root first); empty for no primitives.
-    pub fn nodes(&self) -> &[BvhNode<R>] {
+    #[cfg(test)]
+    pub(crate) fn nodes(&self) -> &[BvhNode<R>] {
         &self.nodes
     }
 
     /// The primitive indices in leaf order.
-    pub fn prims(&self) -> &[u32] {
+    #[cfg(test)]
+    pub(crate) fn prims(&self) -> &[u32] {
         &self.prims
     }
 
     /// The box of every primitive (empty for none).
-    pub fn bounds(&self) -> Aabb<R> {
+    #[cfg(test)]
+    pub(crate) fn bounds(&self) -> Aabb<R> {
         self.nodes.first().map_or(Aabb::empty(), |n| n.bounds)
     }
 
     /// The number of nodes on the longest path from the root to a leaf (0 when empty).
-    pub fn depth(&self) -> usize {
+    #[cfg(test)]
+    pub(crate) fn depth(&self) -> usize {
         fn walk<R: Real>(nodes: &[BvhNode<R>], i: usize) -> usize {
             let n = &nodes[i];
             if n.count > 0 {
@@ -436,7 +442,7 @@ impl<R: Real> Bvh<R> {
     /// Whether `test(prim, t_max)` holds for some primitive whose box the ray meets before
     /// `t_max` (shadow rays); stops at the first.
     #[inline]
-    pub fn any(&self, ray: &Ray<R>, t_max: R, mut test: impl FnMut(u32, R) -> bool) -> bool {
+    pub(crate) fn any(&self, ray: &Ray<R>, t_max: R, mut test: impl FnMut(u32, R) -> bool) -> bool {
         let mut found = false;
         self.traverse(ray, t_max, |prim, t_max| {
             found = test(prim, *t_max);

@@ -23,7 +23,7 @@ pub struct SurfaceHit<R: Real> {
     /// A bound on the absolute error of each component of `p`.
     pub p_error: V3<R>,
     /// The surface's own unit normal at `p` (a plane's as given, a sphere's outward, a
-    /// triangle's (v1 − v0) × (v2 − v0)); [`SurfaceHit::facing`] turns it to face a ray.
+    /// triangle's (v1 − v0) × (v2 − v0)); `SurfaceHit::facing` turns it to face a ray.
     pub normal: V3<R>,
 }
 
@@ -41,7 +41,7 @@ impl<R: Real> SurfaceHit<R> {
     /// the solver shades as the line's reading of a ray that meets its surface only behind
     /// (docs/conventions.md, "Ray hits"). `None` when the precision cannot resolve the normal
     /// there (see [`super::Sphere::normal_at`]).
-    pub fn behind_origin(shape: &Shape<R>, ray: &Ray<R>, t: R) -> Option<Self> {
+    pub(crate) fn behind_origin(shape: &Shape<R>, ray: &Ray<R>, t: R) -> Option<Self> {
         // The point's error bound, for any shape: O, P and tD each a few roundings off.
         let p = shape.point_at(ray, t);
         Some(SurfaceHit {
@@ -56,7 +56,7 @@ impl<R: Real> SurfaceHit<R> {
     /// `FaceForward`; docs/conventions.md, "Orientation"): reversed when N·D > 0, so that a
     /// primary ray sees the side it comes from.
     #[inline]
-    pub fn facing(&self, incoming: V3<R>) -> Facing<R> {
+    pub(crate) fn facing(&self, incoming: V3<R>) -> Facing<R> {
         let reversed = self.normal.dot(incoming) > R::ZERO;
         Facing {
             normal: if reversed { -self.normal } else { self.normal },
@@ -67,13 +67,13 @@ impl<R: Real> SurfaceHit<R> {
     /// The origin of a ray leaving the hit in direction `w` ([`offset_origin`] of the point,
     /// its error bound and the surface's own normal).
     #[inline]
-    pub fn spawn_origin(&self, w: V3<R>) -> V3<R> {
+    pub(crate) fn spawn_origin(&self, w: V3<R>) -> V3<R> {
         offset_origin::<R>(self.p, self.p_error, self.normal, w)
     }
 
     /// The ray leaving the hit in the unit direction `w`, from [`SurfaceHit::spawn_origin`].
     #[inline]
-    pub fn spawn_ray(&self, w: V3<R>) -> Ray<R> {
+    pub(crate) fn spawn_ray(&self, w: V3<R>) -> Ray<R> {
         Ray {
             origin: self.spawn_origin(w),
             direction: w,
@@ -82,7 +82,7 @@ impl<R: Real> SurfaceHit<R> {
 
     /// The shadow rays from the hit through `aggregate`, as the core's `Visibility`.
     #[inline]
-    pub fn shadow_rays<'a>(&self, aggregate: &'a Aggregate<R>) -> ShadowRays<'a, R> {
+    pub(crate) fn shadow_rays<'a>(&self, aggregate: &'a Aggregate<R>) -> ShadowRays<'a, R> {
         ShadowRays {
             aggregate,
             from: *self,

@@ -4,48 +4,52 @@
 //! Intersections return the parameter t along the *line* of the ray, of either sign: whether a
 //! hit behind the origin (t ≤ 0) counts is the caller's decision (docs/conventions.md, "Ray
 //! hits": a hit needs t > 0, and the solver reports what the line would give when it meets a
-//! surface only behind). Each shape bounds the error of its own hit point ([`Shape::hit_at`]
+//! surface only behind). Each shape bounds the error of its own hit point (`Shape::hit_at`
 //! only dispatches).
 
-pub mod aggregate;
-pub mod bounds;
-pub mod bvh;
-pub mod hit;
-pub mod plane;
-pub mod ray;
-pub mod shadow;
-pub mod soa;
-pub mod sphere;
-pub mod triangle;
+pub(crate) mod aggregate;
+pub(crate) mod bounds;
+pub(crate) mod bvh;
+pub(crate) mod hit;
+pub(crate) mod plane;
+pub(crate) mod ray;
+pub(crate) mod shadow;
+pub(crate) mod soa;
+pub(crate) mod sphere;
+pub(crate) mod triangle;
 
 pub use aggregate::{Aggregate, AggregateHit};
 pub use bounds::Aabb;
 pub use bvh::{Bvh, BvhHit};
-pub use hit::{offset_origin, Facing, SurfaceHit};
+pub use hit::{offset_origin, SurfaceHit};
 pub use plane::Plane;
 pub use ray::Ray;
-pub use shadow::{ShadowRay, ShadowRays};
 pub use sphere::Sphere;
-pub use triangle::{Triangle, TriangleHit};
+pub use triangle::Triangle;
 
 use crate::core::{Real, Vector, V3};
 
 /// A surface of a ray problem or scene.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum Shape<R: Real> {
+    /// An infinite plane.
     Plane(Plane<R>),
+    /// A sphere.
     Sphere(Sphere<R>),
+    /// A triangle (a mesh is stored as its triangles).
     Triangle(Triangle<R>),
 }
 
 /// Where the line of a ray meets a surface: up to two parameters, nearest first.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct LineHits<R: Real> {
+    /// The parameters t of the meetings along the line (of either sign), nearest first;
+    /// `None` where there are fewer than two.
     pub t: [Option<R>; 2],
 }
 
 impl<R: Real> LineHits<R> {
-    pub const NONE: Self = LineHits { t: [None, None] };
+    pub(crate) const NONE: Self = LineHits { t: [None, None] };
 
     /// The nearest hit in front of the origin (t > 0).
     pub fn nearest_in_front(&self) -> Option<R> {
@@ -53,7 +57,7 @@ impl<R: Real> LineHits<R> {
     }
 
     /// The hit behind the origin (t < 0) nearest to it.
-    pub fn nearest_behind(&self) -> Option<R> {
+    pub(crate) fn nearest_behind(&self) -> Option<R> {
         self.t
             .iter()
             .rev()
@@ -63,14 +67,14 @@ impl<R: Real> LineHits<R> {
     }
 
     /// Whether the line meets the surface exactly at the origin (t = 0).
-    pub fn at_origin(&self) -> bool {
+    pub(crate) fn at_origin(&self) -> bool {
         self.t.iter().flatten().any(|&t| t == R::ZERO)
     }
 }
 
 impl<R: Real> Shape<R> {
     /// The parameters where the ray's line meets the surface.
-    pub fn line_hits(&self, ray: &Ray<R>) -> LineHits<R> {
+    pub(crate) fn line_hits(&self, ray: &Ray<R>) -> LineHits<R> {
         match self {
             Shape::Plane(p) => LineHits {
                 t: [p.intersect_line(ray), None],
@@ -83,7 +87,7 @@ impl<R: Real> Shape<R> {
     }
 
     /// The nearest t with 0 < t < `t_max` where the ray meets the surface: the cheap test the
-    /// BVH asks of every candidate; [`Shape::hit_at`] then completes the winner.
+    /// BVH asks of every candidate; `Shape::hit_at` then completes the winner.
     #[inline]
     pub fn hit_t(&self, ray: &Ray<R>, t_max: R) -> Option<R> {
         let inside = |t: &R| *t > R::ZERO && *t < t_max;
@@ -102,7 +106,7 @@ impl<R: Real> Shape<R> {
     }
 
     /// The nearest hit with 0 < t < `t_max`, its point computed the accurate way for the shape
-    /// and bounded in error (for [`SurfaceHit::spawn_ray`]). This is the one intersection
+    /// and bounded in error (for `SurfaceHit::spawn_ray`). This is the one intersection
     /// routine of the tracer and of the solver's ray problems.
     #[inline]
     pub fn hit(&self, ray: &Ray<R>, t_max: R) -> Option<SurfaceHit<R>> {
@@ -114,7 +118,7 @@ impl<R: Real> Shape<R> {
 
     /// The hit at a t found by [`Shape::hit_t`], each shape's point and error bound its own.
     #[inline]
-    pub fn hit_at(&self, ray: &Ray<R>, t: R) -> Option<SurfaceHit<R>> {
+    pub(crate) fn hit_at(&self, ray: &Ray<R>, t: R) -> Option<SurfaceHit<R>> {
         match self {
             Shape::Plane(pl) => Some(pl.hit_at(ray, t)),
             Shape::Sphere(s) => s.hit_at(ray, t),
@@ -124,7 +128,7 @@ impl<R: Real> Shape<R> {
     }
 
     /// The point at t, re-projected onto the surface where that reduces rounding error.
-    pub fn point_at(&self, ray: &Ray<R>, t: R) -> V3<R> {
+    pub(crate) fn point_at(&self, ray: &Ray<R>, t: R) -> V3<R> {
         match self {
             Shape::Plane(_) | Shape::Triangle(_) => ray.at(t),
             Shape::Sphere(s) => s.project(ray.at(t)),
@@ -134,7 +138,7 @@ impl<R: Real> Shape<R> {
     /// The surface's own unit normal at a point on it (the plane's as given, the sphere's
     /// outward); turning it to face a ray is the caller's choice. `None` when the precision
     /// cannot resolve it (see [`Sphere::normal_at`]).
-    pub fn normal_at(&self, p: V3<R>) -> Option<V3<R>> {
+    pub(crate) fn normal_at(&self, p: V3<R>) -> Option<V3<R>> {
         match self {
             Shape::Plane(pl) => Some(pl.normal),
             Shape::Sphere(s) => s.normal_at(p),
@@ -143,7 +147,7 @@ impl<R: Real> Shape<R> {
     }
 
     /// "plane", "sphere" or "triangle".
-    pub fn kind(&self) -> &'static str {
+    pub(crate) fn kind(&self) -> &'static str {
         match self {
             Shape::Plane(_) => "plane",
             Shape::Sphere(_) => "sphere",

@@ -21,7 +21,7 @@ impl<R: Real> Plane<R> {
     /// point (docs/conventions.md, "Hits beyond the floating-point range"), so neither the tracer
     /// nor the solver shades, prints or spawns a ray from an infinite point.
     #[inline]
-    pub fn intersect_line(&self, ray: &Ray<R>) -> Option<R> {
+    pub(crate) fn intersect_line(&self, ray: &Ray<R>) -> Option<R> {
         let denom = self.normal.dot(ray.direction);
         if denom == R::ZERO {
             return None;
@@ -41,7 +41,7 @@ impl<R: Real> Plane<R> {
     /// The hit at a t found by [`Plane::intersect_line`]: O + tD, bounded in error, with the
     /// plane's normal as given.
     #[inline]
-    pub fn hit_at(&self, ray: &Ray<R>, t: R) -> SurfaceHit<R> {
+    pub(crate) fn hit_at(&self, ray: &Ray<R>, t: R) -> SurfaceHit<R> {
         // The point's error bound: t carries the rounding of N·(Q − O)/(N·D); O + tD adds two
         // more. (Each term is scaled by γ before the sum, which could overflow near the range's
         // end.)

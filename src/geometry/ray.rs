@@ -5,6 +5,7 @@ use crate::core::{Real, V3};
 /// A ray O + tD with a unit direction D.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Ray<R: Real> {
+    /// O, where the ray starts.
     pub origin: V3<R>,
     /// Unit length.
     pub direction: V3<R>,
@@ -13,7 +14,7 @@ pub struct Ray<R: Real> {
 impl<R: Real> Ray<R> {
     /// The point O + tD.
     #[inline]
-    pub fn at(&self, t: R) -> V3<R> {
+    pub(crate) fn at(&self, t: R) -> V3<R> {
         self.origin + self.direction * t
     }
 }

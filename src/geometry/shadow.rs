@@ -30,7 +30,7 @@ pub struct ShadowRay<R: Real> {
 impl<R: Real> ShadowRays<'_, R> {
     /// The shadow ray towards a light whose L (light to point) is `l`; `None` when the light is
     /// too close to the point to be told apart.
-    pub fn ray(&self, light: &Light<R>, l: V3<R>) -> Option<ShadowRay<R>> {
+    pub(crate) fn ray(&self, light: &Light<R>, l: V3<R>) -> Option<ShadowRay<R>> {
         let towards = -l;
         match light.position() {
             None => Some(ShadowRay {

@@ -10,6 +10,7 @@ use crate::core::{Real, Vector, V3};
 /// The sphere ‖X − C‖ = r.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Sphere<R: Real> {
+    /// C, the centre.
     pub center: V3<R>,
     /// r > 0.
     pub radius: R,
@@ -80,7 +81,7 @@ impl<R: Real> Sphere<R> {
     /// bounded in error, with the outward normal; `None` when the precision cannot resolve the
     /// normal (see [`Sphere::normal_at`]).
     #[inline]
-    pub fn hit_at(&self, ray: &Ray<R>, t: R) -> Option<SurfaceHit<R>> {
+    pub(crate) fn hit_at(&self, ray: &Ray<R>, t: R) -> Option<SurfaceHit<R>> {
         // The point's error bound: C + r·(P − C)/‖P − C‖ is a few roundings of |C| and |P|
         // (pbrt re-projects in object space; here C is not at the origin).
         let p = self.project(ray.at(t));
@@ -95,13 +96,13 @@ impl<R: Real> Sphere<R> {
     /// The outward unit normal at a point on the sphere; `None` when the point cannot be told
     /// from the centre in this precision (a radius below the rounding of the coordinates).
     #[inline]
-    pub fn normal_at(&self, p: V3<R>) -> Option<V3<R>> {
+    pub(crate) fn normal_at(&self, p: V3<R>) -> Option<V3<R>> {
         normalize::<R>(p - self.center).map(|n| n.unit)
     }
 
     /// Moves a point computed as O + tD back onto the sphere's surface.
     #[inline]
-    pub fn project(&self, p: V3<R>) -> V3<R> {
+    pub(crate) fn project(&self, p: V3<R>) -> V3<R> {
         match normalize::<R>(p - self.center) {
             Some(n) => self.center + n.unit * self.radius,
             None => p,

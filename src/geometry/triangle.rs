@@ -19,12 +19,13 @@ use crate::core::{Real, Vector, V3};
 /// The triangle with corners p₀, p₁, p₂.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Triangle<R: Real> {
+    /// The corners p₀, p₁, p₂; the normal is (p₁ − p₀) × (p₂ − p₀), normalised.
     pub p: [V3<R>; 3],
 }
 
 /// A ray's hit on a triangle, 0 < t < t_max.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct TriangleHit<R: Real> {
+pub(crate) struct TriangleHit<R: Real> {
     /// The ray parameter.
     pub t: R,
     /// Barycentric coordinates b₀, b₁, b₂ (non-negative, summing to 1 up to rounding).
@@ -57,6 +58,7 @@ fn max_abs<R: Real>(v: [R; 3]) -> R {
 }
 
 impl<R: Real> Triangle<R> {
+    /// The triangle with corners `p0`, `p1`, `p2`.
     #[inline]
     pub fn new(p0: V3<R>, p1: V3<R>, p2: V3<R>) -> Self {
         Triangle { p: [p0, p1, p2] }
@@ -64,7 +66,7 @@ impl<R: Real> Triangle<R> {
 
     /// The box of the three corners (exact: no arithmetic).
     #[inline]
-    pub fn bounds(&self) -> Aabb<R> {
+    pub(crate) fn bounds(&self) -> Aabb<R> {
         Aabb::of_point(self.p[0])
             .union_point(self.p[1])
             .union_point(self.p[2])
@@ -182,7 +184,7 @@ impl<R: Real> Triangle<R> {
     /// the rounding of the computation are rejected (pbrt's "t ≤ δt" test), which is what keeps
     /// a ray spawned from this triangle from hitting it again.
     #[inline]
-    pub fn intersect(&self, ray: &Ray<R>, t_max: R) -> Option<TriangleHit<R>> {
+    pub(crate) fn intersect(&self, ray: &Ray<R>, t_max: R) -> Option<TriangleHit<R>> {
         let RaySpace {
             e,
             det,
@@ -243,7 +245,7 @@ impl<R: Real> Triangle<R> {
     /// barycentric point, its error bound and the triangle's normal; `None` also for a
     /// triangle degenerate in this precision (see [`Triangle::normal`]).
     #[inline]
-    pub fn hit(&self, ray: &Ray<R>, t_max: R) -> Option<SurfaceHit<R>> {
+    pub(crate) fn hit(&self, ray: &Ray<R>, t_max: R) -> Option<SurfaceHit<R>> {
         let h = self.intersect(ray, t_max)?;
         Some(SurfaceHit {
             t: h.t,
@@ -256,7 +258,7 @@ impl<R: Real> Triangle<R> {
     /// t (of either sign, 0 included) where the ray's *line* meets the triangle, by the same
     /// watertight test; the solver uses it to report a hit behind the origin.
     #[inline]
-    pub fn line_t(&self, ray: &Ray<R>) -> Option<R> {
+    pub(crate) fn line_t(&self, ray: &Ray<R>) -> Option<R> {
         let rs = self.ray_space(ray)?;
         let t = rs.t_scaled / rs.det;
         t.is_finite().then_some(t)

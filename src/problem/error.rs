@@ -5,34 +5,53 @@ use std::path::PathBuf;
 /// Something wrong with a problem file. Every variant maps to exit code 2.
 #[derive(Debug, thiserror::Error)]
 pub enum ProblemError {
+    /// The file cannot be read (it does not exist, or is not readable).
     #[error("{path}: cannot read the file: {source}. Fix: check the path, and that the file exists and is readable")]
     Read {
+        /// The file.
         path: PathBuf,
+        /// What the operating system said.
         #[source]
         source: std::io::Error,
     },
+    /// The file is not a problem file's JSON: not UTF-8 text, a syntax error, an unknown or
+    /// missing field, or a value of the wrong type.
     #[error("{path}:{line}:{column}: {message}{}", fix_suffix(.fix))]
     Syntax {
+        /// The file.
         path: PathBuf,
+        /// The line where the parser stopped, from 1.
         line: usize,
+        /// The column where the parser stopped, from 1.
         column: usize,
         /// The field where the parser stopped, when it knows (`lights[1].falloff`).
         field: Option<String>,
+        /// What is wrong.
         message: String,
+        /// What would fix it (empty when the parser cannot say).
         fix: String,
     },
+    /// The file is well-formed but states a problem that is invalid (a zero normal, a negative
+    /// exponent, …) or cannot be solved.
     #[error("{path}: {field}: {message}{}", fix_suffix(.fix))]
     Invalid {
+        /// The file.
         path: PathBuf,
+        /// The field at fault (`lights[1].falloff`).
         field: String,
+        /// What is wrong with it.
         message: String,
+        /// What would fix it.
         fix: String,
     },
     /// A command-line setting that is out of range (`--samples 0`).
     #[error("{flag}: {message}{}", fix_suffix(.fix))]
     Usage {
+        /// The flag (`--samples`).
         flag: String,
+        /// What is wrong with its value.
         message: String,
+        /// What would fix it.
         fix: String,
     },
 }
@@ -47,7 +66,7 @@ fn fix_suffix(fix: &str) -> String {
 
 impl ProblemError {
     /// A stable machine-readable kind for the JSON output: "read", "syntax", "invalid" or "usage".
-    pub fn kind(&self) -> &'static str {
+    pub(crate) fn kind(&self) -> &'static str {
         match self {
             ProblemError::Read { .. } => "read",
             ProblemError::Syntax { .. } => "syntax",
@@ -57,7 +76,7 @@ impl ProblemError {
     }
 
     /// The field the error is about, when there is one.
-    pub fn field(&self) -> Option<&str> {
+    pub(crate) fn field(&self) -> Option<&str> {
         match self {
             ProblemError::Invalid { field, .. } => Some(field),
             ProblemError::Usage { flag, .. } => Some(flag),
@@ -70,13 +89,16 @@ impl ProblemError {
 /// A validation failure before the file's path is attached.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Invalid {
+    /// The field at fault (`lights[1].falloff`).
     pub field: String,
+    /// What is wrong with it.
     pub message: String,
+    /// What would fix it.
     pub fix: String,
 }
 
 impl Invalid {
-    pub fn new(
+    pub(crate) fn new(
         field: impl Into<String>,
         message: impl Into<String>,
         fix: impl Into<String>,
@@ -88,6 +110,7 @@ impl Invalid {
         }
     }
 
+    /// The error in the file at `path`.
     pub fn at(self, path: impl Into<PathBuf>) -> ProblemError {
         ProblemError::Invalid {
             path: path.into(),

@@ -109,8 +109,8 @@ pub struct RenderSpec {
     pub samples: Option<u32>,
 }
 
-/// An answer key: `[r, g, b]` on the 0–1 scale, `"#RRGGBB"` (8 bits), or an object with the
-/// colour and its own scale and tolerance.
+/// An answer key: `[r, g, b]` on the 0–1 scale, `"#RRGGBB"` (8 bits), `"none"` (the ray hits
+/// nothing), or an object with the colour and its own scale and tolerance.
 #[derive(Debug, Clone, PartialEq, JsonSchema)]
 #[serde(untagged)]
 pub enum AnswerSpec {
@@ -126,7 +126,8 @@ pub enum AnswerSpec {
 pub enum AnswerColor {
     /// `[r, g, b]`, on the key's scale (0–1 unless `scale` is 255).
     Rgb(Triple),
-    /// `"#RRGGBB"`: 8 bits per channel.
+    /// `"#RRGGBB"`: 8 bits per channel; or `"none"` (also "nenhuma", "sem interseção", "no
+    /// hit", "—"): the ray hits nothing.
     Hex(String),
 }
 
@@ -173,8 +174,13 @@ pub struct PointSpec {
 /// A ray: origin and direction (normalised if its length is not 1).
 #[derive(Debug, Clone, Deserialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
+// Doc comments here would become descriptions in `phong schema`'s output: the fields are
+// described in plain comments instead.
+#[allow(missing_docs)]
 pub struct RaySpec {
+    // O, the ray's origin.
     pub origin: Triple,
+    // D, the ray's direction (any non-zero length).
     pub direction: Triple,
 }
 
@@ -182,7 +188,7 @@ pub struct RaySpec {
 // bounds above it), then `Kind "word" [the fields it requires],`: see `problem/kinds.rs`.
 kinds! {
     /// A surface of a ray problem, as read: `type` and the fields of that type, parsed flat (see
-    /// [`super::kinds`]); [`SurfaceType::fields`] says which fields each type takes, and
+    /// `problem::kinds`); [`SurfaceType::fields`] says which fields each type takes, and
     /// validation enforces it.
     pub struct SurfaceSpec;
     /// The kinds of surface.
@@ -223,6 +229,8 @@ kinds! {
     /// A light: `type` selects the kind. Colours are RGB, each component ≥ 0 (above 1 is allowed).
     schema Light in light_schema;
     optional {
+        /// A name for the light, shown beside it in explanations and the JSON
+        /// (`lights[1] (point) "key"`).
         name: String,
     }
     fields {
@@ -289,8 +297,13 @@ pub enum ColorSpec {
 /// A coefficient k and a colour O; the material colour is k·O.
 #[derive(Debug, Clone, Copy, PartialEq, Deserialize, JsonSchema)]
 #[serde(deny_unknown_fields)]
+// Doc comments here would become descriptions in `phong schema`'s output: the fields are
+// described in plain comments instead.
+#[allow(missing_docs)]
 pub struct ScaledColor {
+    // The coefficient k.
     pub k: f64,
+    // The colour O, RGB.
     pub color: Triple,
 }
 
@@ -307,7 +320,11 @@ impl ColorSpec {
 /// The reflectivity O_r: an RGB colour, or the word "specular" for O_r = O_s.
 #[derive(Debug, Clone, Copy, PartialEq, JsonSchema)]
 #[serde(untagged)]
+// Doc comments here would become descriptions in `phong schema`'s output: the fields are
+// described in plain comments instead.
+#[allow(missing_docs)]
 pub enum ReflectivitySpec {
+    // O_r as an RGB colour.
     Rgb(Triple),
     /// Always "specular".
     Same(SameAsSpecular),
@@ -315,7 +332,11 @@ pub enum ReflectivitySpec {
 
 /// The word "specular".
 #[derive(Debug, Clone, Copy, PartialEq, JsonSchema)]
+// Doc comments here would become descriptions in `phong schema`'s output: the fields are
+// described in plain comments instead.
+#[allow(missing_docs)]
 pub enum SameAsSpecular {
+    // The word itself.
     #[serde(rename = "specular")]
     Specular,
 }
@@ -323,8 +344,13 @@ pub enum SameAsSpecular {
 /// A material: the name of one in `materials`, or one written in place.
 #[derive(Debug, Clone, JsonSchema)]
 #[serde(untagged)]
+// Doc comments here would become descriptions in `phong schema`'s output: the fields are
+// described in plain comments instead.
+#[allow(missing_docs)]
 pub enum MaterialRef {
+    // The name of a material in the file's `materials`.
     Name(String),
+    // A material written in place.
     Inline(MaterialSpec),
 }
 

@@ -35,7 +35,8 @@ use serde::Deserializer;
 /// pub enum LightType;
 /// /// doc of the schema (its description in `phong schema`)
 /// schema Light in light_schema;          // the schema's name, and a module for its types
-/// optional { name: String, }             // taken by every kind, never required
+/// optional { name: String, }             // taken by every kind, never required (a doc here
+///                                        // documents the parse struct, not the schema)
 /// fields {
 ///     /// description in the schema (optional), schemars attributes (optional)
 ///     #[schemars(range(min = 0, max = 2))]
@@ -151,16 +152,18 @@ macro_rules! kinds {
     // The flat parse struct, `present` and `purpose`.
     (
         @spec [$(#[$spec_doc:meta])*] $Spec:ident $Kind:ident
-        { $($opt:ident: $opt_ty:ty),* $(,)? }
+        { $($(#[$opt_meta:meta])* $opt:ident: $opt_ty:ty),* $(,)? }
         [$($field:ident: $ty:ty => $purpose:literal,)*]
     ) => {
         $(#[$spec_doc])*
         #[derive(Debug, Clone, ::serde::Deserialize)]
         #[serde(deny_unknown_fields)]
         pub struct $Spec {
+            /// The `type` word: which kind this is.
             #[serde(rename = "type")]
             pub kind: $Kind,
             $(
+                $(#[$opt_meta])*
                 #[serde(default)]
                 pub $opt: Option<$opt_ty>,
             )*
@@ -206,7 +209,9 @@ macro_rules! kinds {
     };
 
     // A kind's object: its required fields, then the optional ones.
-    (@kind $Variant:ident [$($takes:ident),*] { $($opt:ident: $opt_ty:ty),* $(,)? }) => {
+    // The optional fields' docs describe the parse struct only, not the schema.
+    (@kind $Variant:ident [$($takes:ident),*]
+        { $($(#[$opt_meta:meta])* $opt:ident: $opt_ty:ty),* $(,)? }) => {
         #[derive(::schemars::JsonSchema)]
         #[serde(deny_unknown_fields)]
         pub struct $Variant {

@@ -4,28 +4,31 @@
 //! rejects unknown fields, and validation checks that every term the question can compute has
 //! its inputs.
 
-pub mod error;
+pub(crate) mod error;
 pub mod format;
-pub mod kinds;
-pub mod mesh;
-pub mod model;
+pub(crate) mod kinds;
+pub(crate) mod mesh;
+pub(crate) mod model;
 pub mod validate;
+pub(crate) mod warnings;
 
 use std::path::Path;
 
 pub use error::{Invalid, ProblemError};
 pub use format::{schema_json, ProblemFile};
+pub(crate) use model::RenderOverrides;
 pub use model::{
-    Camera, GivenVector, NamedMaterial, Problem, RenderOverrides, RenderSettings, Surface,
-    SurfaceSource, Target,
+    AmbientInfo, Camera, GivenVector, LightInfo, NamedMaterial, Problem, ReflectivitySource,
+    RenderSettings, Surface, SurfaceSource, Target,
 };
+pub use warnings::{Warning, WarningKind};
 
 use crate::core::Real;
 use format::{LightSpec, LightType, SurfaceSpec, SurfaceType};
 
 /// Reads and parses a problem file (no validation). A leading byte order mark is skipped, as
 /// editors on Windows write one.
-pub fn parse_file(path: &Path) -> Result<ProblemFile, ProblemError> {
+pub(crate) fn parse_file(path: &Path) -> Result<ProblemFile, ProblemError> {
     let bytes = std::fs::read(path).map_err(|source| ProblemError::Read {
         path: path.to_owned(),
         source,
@@ -77,6 +80,10 @@ pub fn parse_str(path: &Path, source: &str) -> Result<ProblemFile, ProblemError>
                 message,
                 format!("JSON has no {word}: every number must be finite, such as 0 or 1e300"),
             )
+        } else if let Some(fix) = fraction_at(source, inner.line(), inner.column()) {
+            (message, fix)
+        } else if let Some(fix) = word_for_number(&message, field.as_deref()) {
+            (message, fix)
         } else {
             (message, fix)
         };
@@ -165,6 +172,85 @@ fn non_number_at(source: &str, line: usize, column: usize) -> Option<&str> {
         .then_some(token)
 }
 
+/// A fraction such as `3/5` at (or just before) the error's position: JSON has none. The fix
+/// gives the decimal, in English and in Portuguese (a parse error is written before any
+/// `--lang` applies).
+fn fraction_at(source: &str, line: usize, column: usize) -> Option<String> {
+    let text = source.lines().nth(line.checked_sub(1)?)?;
+    let bytes = text.as_bytes();
+    let at = column.checked_sub(1)?.min(bytes.len());
+    // The slash is where the parser stopped, or a character or two before (spaces).
+    let slash = (at.saturating_sub(2)..(at + 2).min(bytes.len())).find(|&i| bytes[i] == b'/')?;
+    let is_num = |b: u8| b.is_ascii_digit() || b == b'.';
+    let before = text[..slash].trim_end();
+    let start = before
+        .bytes()
+        .rposition(|b| !is_num(b) && b != b'-')
+        .map_or(0, |i| i + 1);
+    let a = &before[start..];
+    let after = text[slash + 1..].trim_start();
+    let end = after
+        .bytes()
+        .position(|b| !is_num(b))
+        .unwrap_or(after.len());
+    let b = &after[..end];
+    let (x, y) = (a.parse::<f64>().ok()?, b.parse::<f64>().ok()?);
+    if y == 0.0 {
+        return None;
+    }
+    let decimal = validate::show((x / y * 1e6).round() / 1e6);
+    Some(format!(
+        "JSON has no fractions: write {a}/{b} as a decimal, {decimal} (Português: o JSON não \
+         aceita frações: escreva {a}/{b} como decimal, {decimal})"
+    ))
+}
+
+/// A word (a string) where a number belongs: the number it likely means, in plain words, in
+/// English and in Portuguese.
+fn word_for_number(message: &str, field: Option<&str>) -> Option<String> {
+    let rest = message.strip_prefix("invalid type: string \"")?;
+    let (word, expected) = rest.split_once("\", expected ")?;
+    if !matches!(expected, "f64" | "u8" | "u32" | "a number") {
+        return None;
+    }
+    let is_falloff = field.is_some_and(|f| f.ends_with("falloff"));
+    let w = word.trim().to_lowercase();
+    let falloff = match w.as_str() {
+        "none" | "no" | "nenhum" | "nenhuma" | "sem" | "constant" | "constante" => Some(0),
+        "linear" => Some(1),
+        "quadratic" | "quadrático" | "quadratico" | "square" | "squared" => Some(2),
+        _ => None,
+    };
+    if let (true, Some(f)) = (is_falloff, falloff) {
+        return Some(format!(
+            "the falloff is the exponent f of d^f, a number: write {f} for \"{word}\" (0 none, 1 \
+             linear, 2 quadratic) (Português: o decaimento é o expoente f de d^f, um número: \
+             escreva {f} para \"{word}\")"
+        ));
+    }
+    let number = |t: &str| match t.split_once('/') {
+        Some((a, b)) => Some(a.trim().parse::<f64>().ok()? / b.trim().parse::<f64>().ok()?),
+        None => t.parse::<f64>().ok(),
+    };
+    if let Some(x) = number(word.trim()).filter(|x| x.is_finite()) {
+        return Some(format!(
+            "a number is written without quotes: {} (Português: um número se escreve sem aspas: \
+             {})",
+            validate::show(x),
+            validate::show(x)
+        ));
+    }
+    Some(format!(
+        "a number belongs here, not the word \"{word}\"{} (Português: aqui vai um número, não a \
+         palavra \"{word}\")",
+        if is_falloff {
+            ": the falloff is 0 (none), 1 (linear) or 2 (quadratic)"
+        } else {
+            ""
+        }
+    ))
+}
+
 fn syntax_fix(e: &serde_json::Error, message: &str) -> String {
     use serde_json::error::Category;
     match e.classify() {
@@ -241,7 +327,7 @@ pub fn load<R: Real>(path: &Path) -> Result<(ProblemFile, Problem<R>), ProblemEr
 }
 
 /// Reads a scene: a problem file with a camera and surfaces (what the tracer needs).
-pub fn load_scene<R: Real>(path: &Path) -> Result<(Problem<R>, Camera<R>), ProblemError> {
+pub(crate) fn load_scene<R: Real>(path: &Path) -> Result<(Problem<R>, Camera<R>), ProblemError> {
     let (_, problem) = load::<R>(path)?;
     let Some(camera) = problem.camera else {
         return Err(Invalid::new(
@@ -266,6 +352,34 @@ pub fn load_scene<R: Real>(path: &Path) -> Result<(Problem<R>, Camera<R>), Probl
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_fraction_or_a_word_where_a_number_belongs_gets_a_fix_in_both_languages() {
+        let path = Path::new("t.json");
+        let e = parse_str(
+            path,
+            r#"{"point": {"normal": [3/5, 0, 4/5], "material": "M"}}"#,
+        )
+        .unwrap_err()
+        .to_string();
+        // 3/5 = 0.6.
+        assert!(e.contains("write 3/5 as a decimal, 0.6"), "{e}");
+        assert!(e.contains("escreva 3/5 como decimal, 0.6"), "{e}");
+        let e = parse_str(
+            path,
+            r#"{"lights": [{"type": "point", "position": [0, 0, 1], "color": [1, 1, 1],
+                "falloff": "linear"}]}"#,
+        )
+        .unwrap_err()
+        .to_string();
+        assert!(e.contains("lights[0].falloff"), "{e}");
+        assert!(e.contains("write 1 for \"linear\""), "{e}");
+        assert!(e.contains("escreva 1 para \"linear\""), "{e}");
+        let e = parse_str(path, r#"{"viewer": ["1", 0, 0]}"#)
+            .unwrap_err()
+            .to_string();
+        assert!(e.contains("without quotes: 1"), "{e}");
+    }
 
     #[test]
     fn the_purpose_of_type_names_every_kind_of_each_table() {

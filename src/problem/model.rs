@@ -10,7 +10,9 @@ use crate::geometry::{Ray, Shape};
 /// A problem ready to solve.
 #[derive(Clone, Debug)]
 pub struct Problem<R: Real> {
+    /// The file's `title`, shown as the explanation's heading.
     pub title: Option<String>,
+    /// The file's `question`, as written.
     pub question: Option<String>,
     /// I_a and the point, directional and spot lights, as the core takes them.
     pub lights: LightSet<R>,
@@ -20,6 +22,7 @@ pub struct Problem<R: Real> {
     pub ambient_info: Vec<AmbientInfo<R>>,
     /// E, the viewer's position.
     pub viewer: Option<V3<R>>,
+    /// What is shaded: a point, the nearest hit of a ray, or a scene to render.
     pub target: Target<R>,
     /// The camera of a scene (`phong render`).
     pub camera: Option<Camera<R>>,
@@ -27,6 +30,9 @@ pub struct Problem<R: Real> {
     pub background: V3<R>,
     /// How rays are traced (Section 4.4).
     pub render: RenderSettings<R>,
+    /// Likely unit mistakes in the file (never errors): a 0–255 colour, a spot angle in
+    /// radians.
+    pub warnings: Vec<super::warnings::Warning>,
 }
 
 impl<R: Real> Problem<R> {
@@ -43,16 +49,21 @@ impl<R: Real> Problem<R> {
 /// the line of sight.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Camera<R: Real> {
+    /// The eye: E of every primary ray.
     pub eye: V3<R>,
+    /// The point the camera looks at, seen at the image's centre.
     pub look_at: V3<R>,
+    /// Which way is up in the image (any vector not along the line of sight).
     pub up: V3<R>,
     /// Vertical field of view in degrees, 0 < fov < 180.
     pub fov: R,
+    /// The image's width in pixels.
     pub width: u32,
+    /// The image's height in pixels.
     pub height: u32,
 }
 
-/// The tracer's settings (Section 4.4 and DESIGN.md).
+/// The tracer's settings (Section 4.4; docs/conventions.md, "Recursion level" and "Weight").
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct RenderSettings<R: Real> {
     /// Rays are traced while their level ≤ this; the primary ray has level 1.
@@ -79,7 +90,7 @@ impl<R: Real> Default for RenderSettings<R> {
 /// Settings given over a problem's own `render` (the command line's `--max-level`,
 /// `--min-weight`, `--samples`, `--shadows`); `None` keeps the problem's.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
-pub struct RenderOverrides {
+pub(crate) struct RenderOverrides {
     pub max_level: Option<u32>,
     pub min_weight: Option<f64>,
     pub samples: Option<u32>,
@@ -89,7 +100,7 @@ pub struct RenderOverrides {
 impl<R: Real> RenderSettings<R> {
     /// These settings with `overrides` over them, each checked by the rules of the file's
     /// `render`; a refused one is named by its field in [`RenderOverrides`] (`max_level`).
-    pub fn with(self, overrides: &RenderOverrides) -> Result<Self, Invalid> {
+    pub(crate) fn with(self, overrides: &RenderOverrides) -> Result<Self, Invalid> {
         let mut s = self;
         if let Some(level) = overrides.max_level {
             check_max_level(level).map_err(|e| e.at("max_level"))?;
@@ -111,19 +122,20 @@ impl<R: Real> RenderSettings<R> {
 }
 
 /// The default maximum recursion level.
-pub const DEFAULT_MAX_LEVEL: u32 = 5;
+pub(crate) const DEFAULT_MAX_LEVEL: u32 = 5;
 /// The default minimum weight, 1/255: a ray of lower weight cannot change an 8-bit pixel of a
 /// colour in [0, 1] by a whole step. POV-Ray's `adc_bailout` default is the same.
-pub const DEFAULT_MIN_WEIGHT: f64 = 1.0 / 255.0;
+pub(crate) const DEFAULT_MIN_WEIGHT: f64 = 1.0 / 255.0;
 /// The largest image side and the most samples per pixel accepted.
-pub const MAX_IMAGE_SIDE: u32 = 16384;
-pub const MAX_SAMPLES: u32 = 4096;
+pub(crate) const MAX_IMAGE_SIDE: u32 = 16384;
+pub(crate) const MAX_SAMPLES: u32 = 4096;
 
 /// Where a light came from in the file.
 #[derive(Clone, Debug)]
 pub struct LightInfo<R: Real> {
     /// Its index in the file's `lights` array.
     pub file_index: usize,
+    /// The light's `name` in the file.
     pub name: Option<String>,
     /// "point", "directional" or "spot".
     pub kind: &'static str,
@@ -134,16 +146,22 @@ pub struct LightInfo<R: Real> {
 /// An ambient light as given.
 #[derive(Clone, Debug)]
 pub struct AmbientInfo<R: Real> {
+    /// Its index in the file's `lights` array.
     pub file_index: usize,
+    /// Its `name` in the file.
     pub name: Option<String>,
+    /// Its colour, which adds to I_a (Eq. 4.5).
     pub color: V3<R>,
 }
 
 /// A vector as given, its length and the unit vector used.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct GivenVector<R: Real> {
+    /// The vector as written.
     pub given: V3<R>,
+    /// Its length, ‖given‖.
     pub length: R,
+    /// given/‖given‖, or `given` itself when its length is 1 within rounding.
     pub unit: V3<R>,
 }
 
@@ -151,6 +169,7 @@ pub struct GivenVector<R: Real> {
 #[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize)]
 #[serde(rename_all = "snake_case")]
 pub enum ReflectivitySource {
+    /// O_r given as a colour.
     Explicit,
     /// O_r = O_s, as the problem asked.
     Specular,
@@ -159,9 +178,13 @@ pub enum ReflectivitySource {
 /// A material with its name and how it was written.
 #[derive(Clone, Debug)]
 pub struct NamedMaterial<R: Real> {
+    /// Its name in the file's `materials`; `None` for a material written in place.
     pub name: Option<String>,
+    /// The material as written (to say how each colour was given).
     pub spec: MaterialSpec,
+    /// The material as the core takes it.
     pub material: Material<R>,
+    /// Where O_r came from; `None` without O_r.
     pub reflectivity: Option<ReflectivitySource>,
 }
 
@@ -170,24 +193,35 @@ pub struct NamedMaterial<R: Real> {
 pub enum Target<R: Real> {
     /// A given point: P, N and the material (P and N only where the question needs them).
     Point {
+        /// P; `None` when the question does not need it.
         position: Option<V3<R>>,
+        /// N as given; `None` when the question does not need it.
         normal: Option<GivenVector<R>>,
+        /// The material at P.
         material: NamedMaterial<R>,
     },
     /// The nearest hit (t > 0) of a ray with the surfaces.
     Ray {
+        /// The ray, with D of unit length.
         ray: Ray<R>,
+        /// D as given, its length and the unit vector used.
         direction: GivenVector<R>,
+        /// The surfaces it can hit.
         surfaces: Vec<Surface<R>>,
     },
     /// A scene to render: surfaces and a camera, nothing single to shade.
-    Scene { surfaces: Vec<Surface<R>> },
+    Scene {
+        /// The surfaces rays can hit (the camera is the problem's `camera`).
+        surfaces: Vec<Surface<R>>,
+    },
 }
 
 /// A surface of a ray problem.
 #[derive(Clone, Debug)]
 pub struct Surface<R: Real> {
+    /// The surface's geometry.
     pub shape: Shape<R>,
+    /// Its material.
     pub material: NamedMaterial<R>,
     /// A plane's normal as given.
     pub normal: Option<GivenVector<R>>,
@@ -199,6 +233,8 @@ pub struct Surface<R: Real> {
 /// Where a surface came from in the file.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct SurfaceSource {
+    /// Its index in the file's `surfaces`.
     pub index: usize,
+    /// For a mesh, the triangle's index in it; `None` for other surfaces.
     pub triangle: Option<usize>,
 }

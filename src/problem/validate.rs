@@ -180,6 +180,7 @@ pub fn validate_in<R: Real>(
             None => V3::<R>::ZERO,
         },
         render: render_settings::<R>(file.render.as_ref())?,
+        warnings: super::warnings::warnings(file),
     })
 }
 
@@ -276,7 +277,7 @@ fn render_settings<R: Real>(r: Option<&RenderSpec>) -> Result<RenderSettings<R>,
 
 /// Why a setting (given in a file or on the command line) is refused, and what would fix it.
 #[derive(Clone, Debug, PartialEq)]
-pub struct SettingError {
+pub(crate) struct SettingError {
     pub message: String,
     pub fix: String,
 }
@@ -291,13 +292,13 @@ impl SettingError {
 
     /// The error of the setting named `field` (`render.samples` in a file, `samples` among a
     /// command line's overrides).
-    pub fn at(self, field: impl Into<String>) -> Invalid {
+    pub(crate) fn at(self, field: impl Into<String>) -> Invalid {
         Invalid::new(field, self.message, self.fix)
     }
 }
 
 /// The maximum level must let at least the primary rays through.
-pub fn check_max_level(level: u32) -> Result<(), SettingError> {
+pub(crate) fn check_max_level(level: u32) -> Result<(), SettingError> {
     if level == 0 {
         return Err(SettingError::new(
             "0 traces nothing: the primary ray already has level 1",
@@ -308,7 +309,7 @@ pub fn check_max_level(level: u32) -> Result<(), SettingError> {
 }
 
 /// The minimum weight is a finite number ≥ 0.
-pub fn check_min_weight(w: f64) -> Result<(), SettingError> {
+pub(crate) fn check_min_weight(w: f64) -> Result<(), SettingError> {
     if !(w.is_finite() && w >= 0.0) {
         return Err(SettingError::new(
             format!("{} is not a weight", show(w)),
@@ -319,7 +320,7 @@ pub fn check_min_weight(w: f64) -> Result<(), SettingError> {
 }
 
 /// Samples per pixel: 1 to [`MAX_SAMPLES`].
-pub fn check_samples(n: u32) -> Result<(), SettingError> {
+pub(crate) fn check_samples(n: u32) -> Result<(), SettingError> {
     if n == 0 || n > MAX_SAMPLES {
         return Err(SettingError::new(
             format!("{n} samples per pixel is outside 1 to {MAX_SAMPLES}"),
@@ -377,7 +378,7 @@ impl<R: Real> MaterialCache<R> {
 }
 
 /// `lights[1] (point)`.
-pub fn light_label(file_index: usize, kind: &str) -> String {
+pub(crate) fn light_label(file_index: usize, kind: &str) -> String {
     format!("lights[{file_index}] ({kind})")
 }
 
@@ -570,7 +571,7 @@ fn quoted(fields: &[&str]) -> String {
 }
 
 /// A number as a person wrote it: `3`, `1.5`, `1e300` (never hundreds of digits).
-pub fn show(x: f64) -> String {
+pub(crate) fn show(x: f64) -> String {
     if x.fract() == 0.0 && x.abs() < 1e15 {
         format!("{x}")
     } else {

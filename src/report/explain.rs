@@ -43,9 +43,13 @@ pub enum Inline {
 /// the lights, or a section.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Ref {
+    /// An equation: "Eq. 4.10".
     Eq(&'static str),
+    /// A range of equations: "Eq. 4.5–4.6".
     Eqs(&'static str, &'static str),
+    /// An equation summed over the lights: "Σ Eq. 4.8".
     SumEq(&'static str),
+    /// A section: "Sec. 4.2".
     Sec(&'static str),
 }
 
@@ -68,19 +72,24 @@ impl Ref {
 pub struct Step {
     /// 0 for a step, 1 for a part of the step above, 2 for a note on that part.
     pub depth: usize,
+    /// What the step says, piece by piece.
     pub line: Vec<Inline>,
+    /// The chapter's equation (or section) the step applies, if any.
     pub eq: Option<Ref>,
 }
 
 /// The explanation of one solved problem.
 #[derive(Clone, Debug)]
 pub struct Explanation {
+    /// The language of its words.
     pub lang: Lang,
     /// The problem's title, or "Problem".
     pub title: String,
+    /// The problem file's path, as given.
     pub file: String,
     /// "f32" or "f64".
     pub precision: &'static str,
+    /// The problem's question, as written.
     pub question: Option<String>,
     /// The findings, as sentences.
     pub findings: Vec<String>,
@@ -88,6 +97,9 @@ pub struct Explanation {
     pub ray: Option<Vec<Step>>,
     /// The problem as written, then any other readings.
     pub parts: Vec<Part>,
+    /// Likely unit mistakes in the file, as sentences (`phong solve` prints them on standard
+    /// error; the layouts leave them out).
+    pub warnings: Vec<String>,
 }
 
 /// The problem as written, or another reading of it.
@@ -106,11 +118,16 @@ pub struct Part {
 /// The shading of the point, in three lists of steps.
 #[derive(Clone, Debug)]
 pub struct Shading {
+    /// The quantities as given and as used: P, N, the material and the lights.
     pub given: Vec<Step>,
+    /// V, the ambient term and the terms left out, then each light's arrival and terms.
     pub steps: Vec<Step>,
+    /// Each term summed over the lights, the total I (Eq. 4.16), the colour clamped and in 8
+    /// bits, and the literal value where it differs.
     pub total: Vec<Step>,
-    /// The colour clamped to [0, 1] and in 8 bits.
+    /// The colour clamped to [0, 1].
     pub clamped: [f64; 3],
+    /// The colour in 8 bits, round(255·c) of the clamped colour.
     pub rgb8: [u8; 3],
     /// One plane of incidence per light that has a direction at the point.
     pub diagrams: Vec<Diagram>,
@@ -119,11 +136,13 @@ pub struct Shading {
 /// What a diagram of the plane of incidence needs: the unit vectors at P for one light.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Diagram {
-    /// The light's label ("lights[0] (point) \"white light\"").
+    /// The light's label (`lights[0] (point) "white light"`).
     pub light: String,
     /// Its index in the file's `lights`.
     pub light_index: usize,
+    /// Whether the light is directional (L = D_l, the same at every point).
     pub directional: bool,
+    /// N, unit.
     pub n: [f64; 3],
     /// L, from the light to the point.
     pub l: [f64; 3],
@@ -131,6 +150,7 @@ pub struct Diagram {
     pub r: Option<[f64; 3]>,
     /// V, from the eye to the point, when there is a viewer.
     pub v: Option<[f64; 3]>,
+    /// Whether the light lights the point, and if not why.
     pub status: LightStatus,
 }
 
@@ -199,6 +219,11 @@ pub fn explain<R: Real>(
             .collect(),
         ray: s.intersection.as_ref().map(|x| intersection(x, lang)),
         parts,
+        warnings: problem
+            .warnings
+            .iter()
+            .map(|w| messages::warning(w, lang))
+            .collect(),
     }
 }
 
@@ -749,13 +774,13 @@ pub fn plain(line: &[Inline]) -> String {
 
 /// Steps as a tree: each step with the steps below it (deeper ones), for renderers that nest
 /// lists.
-pub struct Node<'a> {
+pub(crate) struct Node<'a> {
     pub step: &'a Step,
     pub children: Vec<Node<'a>>,
 }
 
 /// Nests a flat list of steps by depth.
-pub fn nest(steps: &[Step]) -> Vec<Node<'_>> {
+pub(crate) fn nest(steps: &[Step]) -> Vec<Node<'_>> {
     fn take<'a>(steps: &'a [Step], i: &mut usize, depth: usize) -> Vec<Node<'a>> {
         let mut out = Vec::new();
         while *i < steps.len() && steps[*i].depth >= depth {
@@ -772,14 +797,14 @@ pub fn nest(steps: &[Step]) -> Vec<Node<'_>> {
 }
 
 /// The language tag of a page or document.
-pub fn language_tag(lang: Lang) -> &'static str {
+pub(crate) fn language_tag(lang: Lang) -> &'static str {
     pick(lang, "en", "pt-BR")
 }
 
 /// A stretch of a line in one notation: words, or a run of math (formulas and the numbers
 /// they equal, with the spaces between them), or a swatch.
 #[derive(Debug, PartialEq)]
-pub enum Run<'a> {
+pub(crate) enum Run<'a> {
     Text(String),
     Math(Vec<&'a Inline>),
     Swatch([u8; 3]),
@@ -788,7 +813,7 @@ pub enum Run<'a> {
 /// Splits a line into runs of words and runs of math, so that LaTeX and Markdown put a whole
 /// formula with its value in one `$…$`. A piece of blank text between two math pieces stays
 /// inside the math.
-pub fn runs(line: &[Inline]) -> Vec<Run<'_>> {
+pub(crate) fn runs(line: &[Inline]) -> Vec<Run<'_>> {
     let is_math = |x: &Inline| {
         matches!(
             x,
@@ -828,10 +853,10 @@ pub fn runs(line: &[Inline]) -> Vec<Run<'_>> {
 }
 
 /// A colour clamped to [0, 1] in 8 bits, for a swatch (the solver's and the tracer's rounding).
-pub use crate::core::color::rgb8 as to_rgb8;
+pub(crate) use crate::core::color::rgb8 as to_rgb8;
 
 /// A number in LaTeX math: "1.5e9" becomes "1.5 \times 10^{9}".
-pub fn latex_number(x: f64) -> String {
+pub(crate) fn latex_number(x: f64) -> String {
     let s = super::number::num(x);
     match s.split_once('e') {
         Some((m, e)) => format!("{m} \\times 10^{{{e}}}"),
@@ -840,7 +865,7 @@ pub fn latex_number(x: f64) -> String {
 }
 
 /// A math run in LaTeX.
-pub fn latex_math(run: &[&Inline]) -> String {
+pub(crate) fn latex_math(run: &[&Inline]) -> String {
     let mut s = String::new();
     let vector = |x: &[f64; 3]| {
         format!(

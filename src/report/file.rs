@@ -35,14 +35,35 @@ pub fn explain_file(
 
 /// Solves one file and returns its stable JSON document.
 pub fn solve_json(path: &Path, precision: Precision) -> Result<serde_json::Value, ProblemError> {
-    fn go<R: Real>(path: &Path) -> Result<serde_json::Value, ProblemError> {
+    solve_json_warned(path, precision, Lang::En).map(|(doc, _)| doc)
+}
+
+/// [`solve_json`], with the file's likely unit mistakes as sentences in `lang` (for standard
+/// error; the document has them in English).
+pub(crate) fn solve_json_warned(
+    path: &Path,
+    precision: Precision,
+    lang: Lang,
+) -> Result<(serde_json::Value, Vec<String>), ProblemError> {
+    fn go<R: Real>(
+        path: &Path,
+        lang: Lang,
+    ) -> Result<(serde_json::Value, Vec<String>), ProblemError> {
         let (problem, solution) = solve_file::<R>(path)?;
         let doc = super::json::document(&path.display().to_string(), &problem, &solution);
-        Ok(serde_json::to_value(doc).expect("the solution serialises"))
+        let warnings = problem
+            .warnings
+            .iter()
+            .map(|w| super::messages::warning(w, lang))
+            .collect();
+        Ok((
+            serde_json::to_value(doc).expect("the solution serialises"),
+            warnings,
+        ))
     }
     match precision {
-        Precision::F32 => go::<f32>(path),
-        Precision::F64 => go::<f64>(path),
+        Precision::F32 => go::<f32>(path, lang),
+        Precision::F64 => go::<f64>(path, lang),
     }
 }
 
@@ -64,7 +85,7 @@ pub fn solve_text(path: &Path, precision: Precision) -> Result<String, ProblemEr
 
 /// The JSON document of a file that could not be solved: its kind, field and message, in
 /// place of the solution (`phong solve --format json` writes one per bad file).
-pub fn error_json(path: &Path, e: &ProblemError) -> serde_json::Value {
+pub(crate) fn error_json(path: &Path, e: &ProblemError) -> serde_json::Value {
     serde_json::json!({
         "format_version": super::json::FORMAT_VERSION,
         "file": path.display().to_string(),

@@ -22,14 +22,21 @@ pub enum Formula {
     T,
     /// O + tD.
     OPlusTD,
+    /// P, the point shaded.
     P,
+    /// N, the normal at P.
     N,
     /// The viewer's position E.
     E,
+    /// O_a, the ambient colour.
     OA,
+    /// O_d, the diffuse colour.
     OD,
+    /// O_s, the specular colour.
     OS,
+    /// n_s, the specular exponent.
     NS,
+    /// O_r, the reflectivity.
     OR,
     /// V = (P − E)/‖P − E‖.
     VFromViewer,
@@ -39,12 +46,15 @@ pub enum Formula {
     VIsMinusD,
     /// N·V.
     NDotV,
+    /// I_a, the ambient light.
     IA,
     /// O_a I_a.
     Ambient,
+    /// C_l, a light's colour.
     CL,
     /// D_l, a light's direction or a spot's axis.
     DL,
+    /// γ, a spot's cone angle.
     Gamma,
     /// e, a spot's exponent.
     SpotExponent,
@@ -60,6 +70,7 @@ pub enum Formula {
     LIsDl,
     /// cos ψ = D_l·L.
     CosPsi,
+    /// ψ, the angle between a spot's axis and L.
     Psi,
     /// (cos ψ)^e.
     SpotFactor,
@@ -195,7 +206,7 @@ impl Formula {
 
 /// Unicode math as HTML: `X_ab` becomes X<sub>ab</sub> and `x^e` (or `x^n_s`) a superscript;
 /// everything else is escaped.
-pub fn unicode_to_html(s: &str) -> String {
+pub(crate) fn unicode_to_html(s: &str) -> String {
     let mut out = String::new();
     let chars: Vec<char> = s.chars().collect();
     let mut i = 0;
@@ -232,7 +243,7 @@ pub fn unicode_to_html(s: &str) -> String {
 }
 
 /// Appends one character escaped for HTML text and attribute values.
-pub fn push_html_escaped(out: &mut String, c: char) {
+pub(crate) fn push_html_escaped(out: &mut String, c: char) {
     match c {
         '&' => out.push_str("&amp;"),
         '<' => out.push_str("&lt;"),

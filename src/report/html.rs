@@ -1,8 +1,8 @@
 //! The HTML explanation (`phong solve --format html`): one self-contained page (inline CSS and
 //! SVG, no scripts, no fonts or anything else fetched), with colour swatches beside every
 //! colour, the final colour as a large swatch, and a diagram of the plane of incidence for each
-//! light ([`super::diagram`]). It lays out an [`Explanation`]; `--fragment` gives the
-//! `<article>`s only, for embedding in a page that brings the same stylesheet ([`STYLE`]).
+//! light (`report::diagram`). It lays out an [`Explanation`]; `--fragment` gives the
+//! `<article>`s only, for embedding in a page that brings the same stylesheet (`STYLE`).
 
 use std::fmt::Write;
 
@@ -14,7 +14,7 @@ use super::messages::Phrase;
 use super::number::{num, vec3};
 
 /// The page's stylesheet.
-pub const STYLE: &str = "\
+pub(crate) const STYLE: &str = "\
 body{font-family:system-ui,-apple-system,'Segoe UI',Roboto,'DejaVu Sans',sans-serif;max-width:60rem;margin:1.5rem auto;padding:0 1rem;line-height:1.45;color:#1a1a1a;background:#fff}
 h1{font-size:1.5rem;margin-bottom:.2rem}h2{font-size:1.2rem;margin-top:1.6rem;border-bottom:1px solid #ddd}h3{font-size:1rem;margin:.9rem 0 .3rem}
 .source{color:#666;margin-top:0}
@@ -141,7 +141,7 @@ fn shading(out: &mut String, sh: &Shading, lang: Lang, id: &str) {
 }
 
 /// The `<article>` of one explanation; `index` makes its ids unique in the page.
-pub fn write_article(x: &Explanation, index: usize) -> String {
+pub(crate) fn write_article(x: &Explanation, index: usize) -> String {
     let lang = x.lang;
     let mut out = String::new();
     let _ = writeln!(out, "<article class=\"problem\" id=\"problem-{index}\">");

@@ -21,123 +21,210 @@ pub const FORMAT_VERSION: u32 = 1;
 /// One solved problem.
 #[derive(Serialize)]
 pub struct Document<'a, R: Real> {
+    /// The version of this format, [`FORMAT_VERSION`] (1).
     pub format_version: u32,
+    /// The problem file's path, as given.
     pub file: String,
     /// "f32" or "f64".
     pub precision: &'static str,
+    /// The problem's `title`, as written in the file.
     pub title: Option<&'a str>,
+    /// The problem's `question`, as written in the file.
     pub question: Option<&'a str>,
+    /// What the solver noticed that a student should know (a light behind the surface, a hit
+    /// behind the ray's origin, …), most important first.
     pub findings: Vec<FindingOut>,
+    /// Where the ray meets the surfaces; `null` for a point problem.
     pub intersection: Option<IntersectionOut<R>>,
     /// The problem as written; `null` when there is nothing to shade (the ray hits nothing).
     pub solution: Option<EvaluationOut<R>>,
     /// Other readings of a problem whose literal reading is surprising.
     pub readings: Vec<ReadingOut<R>>,
+    /// Likely unit mistakes in the file (never errors); absent when there are none.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub warnings: Vec<WarningOut>,
 }
 
+/// A likely unit mistake: its code and the value given, the field, and the sentence (English).
 #[derive(Serialize)]
-pub struct FindingOut {
+pub struct WarningOut {
+    /// Its code, the value given and the field.
     #[serde(flatten)]
-    pub finding: crate::solve::Finding,
+    pub warning: crate::problem::warnings::Warning,
+    /// The warning with its fix, in English.
     pub message: String,
 }
 
+/// The JSON form of a file's warnings.
+pub(crate) fn warnings_out(list: &[crate::problem::warnings::Warning]) -> Vec<WarningOut> {
+    list.iter()
+        .map(|w| WarningOut {
+            warning: w.clone(),
+            message: messages::warning(w, crate::report::lang::Lang::En),
+        })
+        .collect()
+}
+
+/// An entry of `findings`.
+#[derive(Serialize)]
+pub struct FindingOut {
+    /// The finding's `code`, the `light` it concerns (an index in the file's `lights`) and its
+    /// numbers as `values`, by name: flattened into this object.
+    #[serde(flatten)]
+    pub finding: crate::solve::Finding,
+    /// The finding as an English sentence.
+    pub message: String,
+}
+
+/// `intersection`: where a ray problem's ray meets its surfaces.
 #[derive(Serialize)]
 pub struct IntersectionOut<R: Real> {
+    /// O, the ray's origin.
     pub origin: V3<R>,
+    /// D as written in the file.
     pub direction_given: V3<R>,
+    /// D as used: unit length.
     pub direction: V3<R>,
     /// The surface's index in the file's `surfaces`.
     pub surface: Option<usize>,
     /// For a mesh, the triangle's index in it (absent otherwise).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub triangle: Option<usize>,
+    /// The kind of surface met ("plane", "sphere" or "triangle"); `null` when none is.
     pub surface_type: Option<&'static str>,
+    /// The parameter t of the nearest meeting along the ray's line (negative: behind the origin);
+    /// `null` when the line meets no surface.
     pub t: Option<R>,
+    /// The meeting point O + tD; `null` when the line meets no surface.
     pub point: Option<V3<R>>,
     /// t > 0.
     pub hit: bool,
 }
 
+/// An entry of `readings`: the problem read another way, solved by the same core.
 #[derive(Serialize)]
 pub struct ReadingOut<R: Real> {
+    /// Which reading: "light_reversed", "normal_reversed" or "line_behind_origin".
     pub code: ReadingCode,
+    /// The reading's label in English ("likely intended reading: …" or "another reading: …").
     pub label: &'static str,
+    /// What the reading changes, in English.
     pub explanation: &'static str,
+    /// The reading's own intersection (a ray problem's reversed ray); `null` otherwise.
     pub intersection: Option<IntersectionOut<R>>,
+    /// The shading of the point under this reading.
     pub solution: EvaluationOut<R>,
 }
 
+/// `solution` (and a reading's `solution`): the shading of one point, every intermediate.
 #[derive(Serialize)]
 pub struct EvaluationOut<R: Real> {
+    /// P, the point shaded; `null` when the problem does not need it.
     pub point: Option<V3<R>>,
+    /// N at P; `null` when the problem does not need it.
     pub normal: Option<NormalOut<R>>,
+    /// V and where it came from; `null` when the problem has no viewer.
     pub viewer: Option<ViewerOut<R>>,
+    /// The material at P.
     pub material: MaterialOut<R>,
+    /// The ambient term, Eq. 4.5–4.6.
     pub ambient: AmbientOut<R>,
+    /// Each point, directional and spot light's contribution, in file order.
     pub lights: Vec<LightOut<R>>,
+    /// The ambient, diffuse and specular terms summed over the lights.
     pub totals: TotalsOut<R>,
+    /// The colour at P, Eq. 4.16.
     pub color: ColorOut<R>,
+    /// The terms of Eq. 4.16 the problem does not let the solver compute, and why.
     pub omitted: Vec<OmissionOut>,
 }
 
+/// `normal`: the normal at the point.
 #[derive(Serialize)]
 pub struct NormalOut<R: Real> {
+    /// N as given, or the surface's own normal at P where the file gives none (a sphere, a
+    /// triangle).
     pub given: V3<R>,
+    /// ‖N‖ as given.
     pub length: R,
     /// N as used: unit, reversed where the solution says so.
     pub n: V3<R>,
+    /// Whether N was reversed (to face the incoming ray, or by a reading).
     pub reversed: bool,
 }
 
+/// `viewer`: the viewing direction at the point.
 #[derive(Serialize)]
 pub struct ViewerOut<R: Real> {
     /// E; `null` when V comes from the ray.
     pub position: Option<V3<R>>,
     /// "viewer", "ray" (V = D) or "reversed_ray" (V = −D).
     pub source: ViewSource,
+    /// V, unit, from the eye to the point.
     pub v: V3<R>,
     /// `null` when the problem gives no normal.
     pub n_dot_v: Option<R>,
+    /// Which side of the surface the viewer is on: "front", "back" or "in_plane"; `null`
+    /// without a normal.
     pub side: Option<Side>,
 }
 
+/// `material`: the material's colours and exponent.
 #[derive(Serialize)]
 pub struct MaterialOut<R: Real> {
+    /// The material's name in the file's `materials`; `null` for an inline material.
     pub name: Option<String>,
+    /// O_a, the ambient colour (Eq. 4.6); `null` when not given.
     pub o_a: Option<V3<R>>,
+    /// O_d, the diffuse colour (Eq. 4.8); `null` when not given.
     pub o_d: Option<V3<R>>,
+    /// O_s, the specular colour (Eq. 4.10); `null` when not given.
     pub o_s: Option<V3<R>>,
+    /// n_s, the specular exponent (Eq. 4.10); `null` when not given.
     pub n_s: Option<R>,
+    /// O_r, the reflectivity (Eq. 4.17); `null` when not given.
     pub o_r: Option<V3<R>>,
+    /// Where O_r came from: "explicit" or "specular" (O_r = O_s); `null` without O_r.
     pub o_r_source: Option<ReflectivitySource>,
 }
 
+/// `ambient`: the ambient term, Eq. 4.5–4.6.
 #[derive(Serialize)]
 pub struct AmbientOut<R: Real> {
     /// The ambient lights' colours, in file order, and their sum I_a.
     pub lights: Vec<V3<R>>,
+    /// I_a, the sum of the ambient lights; `null` when there is none.
     pub i_a: Option<V3<R>>,
+    /// O_a, the material's ambient colour; `null` when not given.
     pub o_a: Option<V3<R>>,
     /// O_a I_a, Eq. 4.6; `null` when left out.
     pub term: Option<V3<R>>,
 }
 
+/// `cone`: a spot light's cone test, ψ against γ (Eq. 4.4).
 #[derive(Serialize)]
 pub struct ConeOut<R: Real> {
+    /// D_l, the cone's unit axis, pointing away from the apex.
     pub axis: V3<R>,
+    /// γ_l in degrees, the angle between the axis and the cone's side.
     pub angle_deg: R,
+    /// e_l, the exponent of cos ψ.
     pub exponent: R,
+    /// cos ψ = D_l·L.
     pub cos_psi: R,
     /// ψ in degrees, the angle between the axis and L.
     pub psi_deg: R,
+    /// cos γ_l.
     pub cos_gamma: R,
+    /// ψ ≤ γ: P is inside the cone (a point on the edge counts as inside).
     pub inside: bool,
+    /// |ψ − γ| within rounding: P is on the cone's edge.
     pub on_edge: bool,
     /// (cos ψ)^e inside the cone, 0 outside.
     pub factor: R,
 }
 
+/// `diffuse`: one light's diffuse term, Eq. 4.7–4.8.
 #[derive(Serialize)]
 pub struct DiffuseOut<R: Real> {
     /// O_d I_l cos θ where the light is lit, else 0 (Eq. 4.8).
@@ -146,47 +233,78 @@ pub struct DiffuseOut<R: Real> {
     pub literal: Option<V3<R>>,
 }
 
+/// `specular`: one light's specular term, Eq. 4.9–4.15.
 #[derive(Serialize)]
 pub struct SpecularOut<R: Real> {
+    /// Why the term is what it is: "lit", "away_from_viewer", "light_not_lit", "no_viewer" or
+    /// "no_specular_color".
     pub status: SpecularStatus,
+    /// R = L − 2(N·L)N, Eq. 4.15; `null` where it was not needed.
     pub r: Option<V3<R>>,
+    /// cos φ = −R·V, Eq. 4.10; `null` where it was not computed.
     pub cos_phi: Option<R>,
+    /// (cos φ)^n_s where it was used (status "lit"); `null` otherwise.
     pub cos_phi_pow: Option<R>,
+    /// O_s I_l (cos φ)^n_s where the status is "lit", else 0.
     pub term: V3<R>,
+    /// O_s I_l (−R·V)^n_s without gating; `null` where undefined (a negative cos φ raised to a
+    /// non-integer n_s).
     pub literal: Option<V3<R>>,
 }
 
+/// An entry of `lights`: what one point, directional or spot light adds at P.
 #[derive(Serialize)]
 pub struct LightOut<R: Real> {
     /// The index in the file's `lights` array.
     pub index: usize,
+    /// The light's `name` in the file.
     pub name: Option<String>,
+    /// The light's `type`: "point", "directional" or "spot".
     #[serde(rename = "type")]
     pub kind: &'static str,
     /// C_l.
     pub color: V3<R>,
+    /// P_l, the light's position; `null` for a directional light.
     pub position: Option<V3<R>>,
+    /// Why the light does or does not add diffuse and specular light: "lit",
+    /// "behind_surface", "in_tangent_plane", "outside_cone", "at_light" or "in_shadow".
     pub status: LightStatus,
+    /// The status as an English sentence.
     pub status_message: &'static str,
+    /// L, unit, from the light to P (Eq. 4.1); for a directional light its direction of travel.
     pub l: V3<R>,
+    /// d = ‖P − P_l‖; `null` for a directional light.
     pub d: Option<R>,
+    /// The falloff exponent f (0, 1 or 2, Eq. 4.3); `null` for a directional light.
     pub falloff: Option<u8>,
+    /// 1/d^f (1 for a directional light).
     pub falloff_factor: R,
+    /// The spot cone test; `null` for other lights.
     pub cone: Option<ConeOut<R>>,
+    /// I_l, the light's colour at P (Eq. 4.2–4.4).
     pub i_l: V3<R>,
+    /// N·L.
     pub n_dot_l: R,
+    /// cos θ = −N·L, Eq. 4.7.
     pub cos_theta: R,
+    /// The diffuse term; `null` when the material has no O_d.
     pub diffuse: Option<DiffuseOut<R>>,
+    /// The specular term.
     pub specular: SpecularOut<R>,
 }
 
+/// `totals`: each term of Eq. 4.16 summed over the lights.
 #[derive(Serialize)]
 pub struct TotalsOut<R: Real> {
+    /// O_a I_a (0 when left out).
     pub ambient: V3<R>,
+    /// Σ of the lights' gated diffuse terms.
     pub diffuse: V3<R>,
+    /// Σ of the lights' gated specular terms.
     pub specular: V3<R>,
 }
 
+/// `color`: the colour at P, Eq. 4.16.
 #[derive(Serialize)]
 pub struct ColorOut<R: Real> {
     /// Eq. 4.16 with gating, unclamped.
@@ -199,10 +317,15 @@ pub struct ColorOut<R: Real> {
     pub literal: Option<V3<R>>,
 }
 
+/// An entry of `omitted`: a term of Eq. 4.16 left out, and why.
 #[derive(Serialize)]
 pub struct OmissionOut {
+    /// The term: "ambient", "diffuse" or "specular".
     pub term: Term,
+    /// Why: "no_ambient_light", "no_ambient_color", "no_direct_light", "no_diffuse_color",
+    /// "no_viewer" or "no_specular_color".
     pub reason: OmissionReason,
+    /// The omission as an English sentence.
     pub message: String,
 }
 
@@ -239,6 +362,7 @@ pub fn document<'a, R: Real>(
                 solution: evaluation(problem, &r.evaluation),
             })
             .collect(),
+        warnings: warnings_out(&problem.warnings),
     }
 }
 

@@ -5,7 +5,7 @@
 //! `amsmath` and `xcolor`. It lays out an [`Explanation`].
 //!
 //! Every string that reaches the output, including a user's title, question and light names,
-//! goes through [`escape`]: TeX's special characters are escaped, the Greek letters and math
+//! goes through `escape`: TeX's special characters are escaped, the Greek letters and math
 //! signs of the sentences become math, and a character the T1 fonts lack is written as its
 //! code point rather than breaking the build.
 
@@ -14,7 +14,7 @@ use super::lang::Lang;
 use super::messages::Phrase;
 
 /// Escapes text for LaTeX (outside math).
-pub fn escape(s: &str) -> String {
+pub(crate) fn escape(s: &str) -> String {
     let mut out = String::with_capacity(s.len());
     for c in s.chars() {
         let math = |m: &str| format!("\\ensuremath{{{m}}}");
@@ -124,7 +124,7 @@ fn shading(out: &mut String, sh: &Shading, lang: Lang) {
 }
 
 /// The LaTeX body of one explanation: a `\section*` with its subsections.
-pub fn write_body(x: &Explanation) -> String {
+pub(crate) fn write_body(x: &Explanation) -> String {
     let lang = x.lang;
     let mut out = String::new();
     out.push_str(&format!("\\section*{{{}}}\n", escape(&x.title)));

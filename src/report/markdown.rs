@@ -7,7 +7,7 @@ use super::lang::Lang;
 use super::messages::Phrase;
 
 /// Escapes text so that Markdown shows it as written.
-pub fn escape(s: &str) -> String {
+pub(crate) fn escape(s: &str) -> String {
     let mut out = String::with_capacity(s.len());
     for c in s.chars() {
         if matches!(

@@ -2,10 +2,10 @@
 //! Portuguese) or for scripts (stable, language-neutral JSON).
 //!
 //! [`explain`] walks a solution once and decides the steps; [`text`], [`markdown`], [`latex`]
-//! and [`html`] only lay them out. All wording lives in [`messages`], every formula in
+//! and [`html`] only lay them out. All wording lives in `messages`, every formula in
 //! [`formula`].
 
-pub mod diagram;
+pub(crate) mod diagram;
 pub mod explain;
 pub mod file;
 pub mod formula;
@@ -14,7 +14,7 @@ pub mod json;
 pub mod lang;
 pub mod latex;
 pub mod markdown;
-pub mod messages;
-pub mod number;
+pub(crate) mod messages;
+pub(crate) mod number;
 pub mod pixel;
 pub mod text;

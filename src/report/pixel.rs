@@ -23,7 +23,7 @@ fn n<R: Real>(x: R) -> String {
 }
 
 /// Why a path stopped, in words.
-pub fn stop_reason(stop: Stop) -> &'static str {
+pub(crate) fn stop_reason(stop: Stop) -> &'static str {
     match stop {
         Stop::Miss => "the ray hits nothing: its colour is the background",
         Stop::NotReflective => "the surface has no reflectivity O_r: no reflection ray",
@@ -165,58 +165,91 @@ fn ray_text<R: Real>(out: &mut String, file: &str, problem: &Problem<R>, ray: &R
 /// The JSON document.
 #[derive(Serialize)]
 pub struct PixelOut<'a, R: Real> {
+    /// The version of the format, the solver's [`json::FORMAT_VERSION`] (1).
     pub format_version: u32,
+    /// The scene file's path, as given.
     pub file: String,
+    /// "f32" or "f64".
     pub precision: &'static str,
+    /// The pixel explained, `[x, y]`, from the image's top-left corner.
     pub pixel: [u32; 2],
+    /// The tracer's settings the pixel was traced with.
     pub settings: SettingsOut<R>,
+    /// Each sample of the pixel, with its path.
     pub samples: Vec<SampleOut<'a, R>>,
+    /// The pixel's 8-bit colour, as in the image: round(255·c) of its samples' clamped mean.
     pub rgb8: [u8; 3],
+    /// How many rays of each kind the pixel's samples traced.
     pub rays: crate::tracer::Counts,
 }
 
+/// `settings`: how rays were traced (Section 4.4).
 #[derive(Serialize)]
 pub struct SettingsOut<R: Real> {
+    /// Rays are traced while their level ≤ this; the primary ray has level 1.
     pub max_level: u32,
+    /// A reflection ray is traced only while its weight exceeds this.
     pub min_weight: R,
+    /// Whether shadow rays were traced.
     pub shadows: bool,
+    /// Samples per pixel.
     pub samples: u32,
 }
 
+/// An entry of `samples`: one sample of the pixel and its path.
 #[derive(Serialize)]
 pub struct SampleOut<'a, R: Real> {
+    /// (sx, sy) in [0, 1)², from the pixel's top-left corner.
     pub position: [f64; 2],
+    /// The path's rays, primary first.
     pub rays: Vec<RayOut<'a, R>>,
+    /// The path's colour, unclamped: Σ factor·local over its rays.
     pub color: V3<R>,
 }
 
+/// An entry of a sample's `rays`: one ray of the path.
 #[derive(Serialize)]
 pub struct RayOut<'a, R: Real> {
+    /// The ray's level: 1 for the primary ray, its parent's + 1 for a reflection ray.
     pub level: u32,
+    /// w: 1 for the primary ray, w_p·max(O_r) for a reflection ray.
     pub weight: R,
+    /// The product of the O_r of the hits before this ray: its colour's factor in the pixel.
     pub factor: V3<R>,
+    /// The ray's origin.
     pub origin: V3<R>,
+    /// The ray's direction, unit.
     pub direction: V3<R>,
     /// For a reflection ray: the hit point it leaves, that point's error bound, the surface's
     /// own normal, and the offset origin.
     pub spawned_from: Option<SpawnOut<R>>,
+    /// Whether the ray hits a surface.
     pub hit: bool,
     /// The local colour (Eq. 4.16) at the hit, or the background.
     pub local: V3<R>,
+    /// O_r at the hit; `null` when the material has none (or the ray hits nothing).
     pub reflectivity: Option<V3<R>>,
+    /// The weight a reflection ray from this hit would have; `null` when there is none to
+    /// weigh.
     pub next_weight: Option<R>,
     /// Why the path ended at this ray; `null` when a reflection ray follows.
     pub stop: Option<Stop>,
+    /// The reason in `stop`, as an English sentence.
     pub stop_message: Option<&'static str>,
     /// The solver's document for the equivalent ray problem (as `phong solve --format json`).
     pub solve: Option<json::Document<'a, R>>,
 }
 
+/// `spawned_from`: where a reflection ray left from.
 #[derive(Serialize)]
 pub struct SpawnOut<R: Real> {
+    /// The hit point it leaves.
     pub point: V3<R>,
+    /// The bound on the error of each component of that point.
     pub point_error: V3<R>,
+    /// The surface's own normal there (not turned to face the ray).
     pub normal: V3<R>,
+    /// The ray's origin: the point offset along the normal by its error bound, rounded outward.
     pub origin: V3<R>,
 }
 

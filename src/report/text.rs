@@ -16,14 +16,6 @@ use crate::solve::Solution;
 /// Column at which equation references start.
 const EQ_COLUMN: usize = 64;
 
-/// How to write the text report.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub struct TextOptions {
-    pub lang: Lang,
-    /// ANSI colours and the swatch (for a terminal).
-    pub color: bool,
-}
-
 /// ANSI styles, or nothing when colour is off.
 struct Style {
     on: bool,
@@ -58,17 +50,7 @@ impl Style {
 
 /// The text report of one solved problem, in English without colour.
 pub fn render<R: Real>(file: &str, problem: &Problem<R>, s: &Solution<R>) -> String {
-    render_with(file, problem, s, TextOptions::default())
-}
-
-/// The text report of one solved problem.
-pub fn render_with<R: Real>(
-    file: &str,
-    problem: &Problem<R>,
-    s: &Solution<R>,
-    options: TextOptions,
-) -> String {
-    write_explanation(&explain(file, problem, s, options.lang), options.color)
+    write_explanation(&explain(file, problem, s, Lang::default()), false)
 }
 
 /// Lays out an explanation as text.
@@ -158,7 +140,7 @@ fn steps(out: &mut String, style: &Style, indent: usize, list: &[Step], lang: La
 }
 
 /// Word-wraps a paragraph to lines of at most `width` characters.
-pub fn wrap(text: &str, width: usize) -> Vec<String> {
+pub(crate) fn wrap(text: &str, width: usize) -> Vec<String> {
     let mut lines = Vec::new();
     let mut line = String::new();
     for word in text.split_whitespace() {

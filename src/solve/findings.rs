@@ -37,23 +37,35 @@ impl Finding {
 #[serde(rename_all = "snake_case", tag = "code", content = "values")]
 pub enum FindingData {
     /// The ray meets a surface only behind its origin (t ≤ 0): no hit.
-    HitBehindOrigin { t: f64 },
+    HitBehindOrigin {
+        /// The t of the meeting along the ray's line, ≤ 0.
+        t: f64,
+    },
     /// The ray's line meets no surface at all.
     NoIntersection,
     /// The ray starts on a surface (t = 0), which is not a hit (t > 0).
     RayStartsOnSurface,
     /// A light is on the back side of the surface (cos θ < 0).
-    LightBehindSurface { cos_theta: f64 },
+    LightBehindSurface {
+        /// cos θ = −N·L (Eq. 4.7), < 0.
+        cos_theta: f64,
+    },
     /// A light lies in the tangent plane (cos θ = 0).
     LightInTangentPlane,
     /// The point is outside a spot light's cone: cos ψ < cos γ.
-    LightOutsideCone { cos_gamma: f64, cos_psi: f64 },
+    LightOutsideCone {
+        /// cos γ, the cosine of the cone's angle.
+        cos_gamma: f64,
+        /// cos ψ = D_l·L, < cos γ.
+        cos_psi: f64,
+    },
     /// The point is on a spot light's cone edge to within the rounding of ψ and γ (lit).
     LightOnConeEdge(ConeEdge),
     /// |cos θ| is within the rounding error of its own computation (0 included, unless it is
     /// exactly 0 for the given numbers): the gate's decision, lit or not, is not reliable in
     /// this precision.
     GateUndecidable {
+        /// cos θ = −N·L as computed (Eq. 4.7).
         cos_theta: f64,
         /// How the core decided.
         decision: GateDecision,
@@ -64,7 +76,10 @@ pub enum FindingData {
     /// cone cannot be decided in this precision.
     ConeEdgeUndecidable(ConeEdge),
     /// The viewer sees the back side of the surface (N·V > 0).
-    ViewerBehindSurface { n_dot_v: f64 },
+    ViewerBehindSurface {
+        /// N·V, > 0.
+        n_dot_v: f64,
+    },
     /// The viewer lies in the surface's tangent plane.
     ViewerInTangentPlane,
     /// The viewer is not the ray's origin: V comes from the viewer, as the problem states.
@@ -72,9 +87,15 @@ pub enum FindingData {
     /// The normal in the hit was reversed to face the incoming ray.
     NormalTurnedToFaceRay,
     /// A given normal was not of unit length and was normalised.
-    NormalNormalized { length: f64 },
+    NormalNormalized {
+        /// ‖N‖ as given.
+        length: f64,
+    },
     /// A given direction (ray, light, spot axis) was not of unit length and was normalised.
-    DirectionNormalized { length: f64 },
+    DirectionNormalized {
+        /// The direction's length as given.
+        length: f64,
+    },
     /// Eq. 4.16 taken literally, without gating, gives another colour.
     LiteralDiffers,
     /// The colour exceeds 1 in some channel and is clamped for display.
@@ -86,7 +107,9 @@ pub enum FindingData {
 pub struct ConeEdge {
     /// The bound on the rounding of ψ − γ (a ray's hit point's error included).
     pub error_bound_deg: f64,
+    /// γ, the cone's angle.
     pub gamma_deg: f64,
+    /// ψ, the angle between the cone's axis D_l and L.
     pub psi_deg: f64,
 }
 
@@ -103,7 +126,7 @@ pub enum GateDecision {
 
 impl GateDecision {
     /// As the JSON writes it: 1 lit, 0 in the tangent plane, −1 behind.
-    pub fn value(self) -> f64 {
+    pub(crate) fn value(self) -> f64 {
         match self {
             GateDecision::Lit => 1.0,
             GateDecision::InTangentPlane => 0.0,

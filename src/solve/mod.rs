@@ -24,7 +24,9 @@ pub use findings::{ConeEdge, Finding, FindingData, GateDecision};
 /// Everything the solver found out about one problem.
 #[derive(Clone, Debug)]
 pub struct Solution<R: Real> {
+    /// The problem's title, as written.
     pub title: Option<String>,
+    /// The problem's question, as written.
     pub question: Option<String>,
     /// Surprising properties and notes, most important first.
     pub findings: Vec<Finding>,
@@ -39,6 +41,7 @@ pub struct Solution<R: Real> {
 /// Where a ray problem's ray meets its surfaces.
 #[derive(Clone, Copy, Debug)]
 pub struct Intersection<R: Real> {
+    /// O, the ray's origin.
     pub origin: V3<R>,
     /// D as given.
     pub direction_given: V3<R>,
@@ -49,9 +52,11 @@ pub struct Intersection<R: Real> {
     pub surface: Option<usize>,
     /// Where that surface is in the file (its index in `surfaces`, and a mesh's triangle).
     pub source: Option<SurfaceSource>,
+    /// The kind of surface met ("plane", "sphere" or "triangle"); `None` when none is.
     pub kind: Option<&'static str>,
     /// The parameter t of the hit along the line (negative: behind the origin).
     pub t: Option<R>,
+    /// The meeting point O + tD; `None` when the line meets no surface.
     pub point: Option<V3<R>>,
     /// t > 0: a hit of the ray itself.
     pub in_front: bool,
@@ -74,8 +79,11 @@ pub struct NormalUsed<R: Real> {
 #[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize)]
 #[serde(rename_all = "snake_case")]
 pub enum Side {
+    /// N·V < 0: the viewer is in front of the surface.
     Front,
+    /// N·V > 0: the viewer is behind the surface.
     Back,
+    /// N·V = 0: the viewer is in the surface's tangent plane.
     InPlane,
 }
 
@@ -96,11 +104,13 @@ pub enum ViewSource {
 pub struct ViewerUsed<R: Real> {
     /// E, when V comes from the viewer.
     pub position: Option<V3<R>>,
+    /// Where V comes from: the viewer, the ray, or the reversed ray.
     pub source: ViewSource,
     /// V, unit, from the eye to the point.
     pub v: V3<R>,
     /// N·V (negative when the viewer is in front of the surface); `None` without a normal.
     pub n_dot_v: Option<R>,
+    /// Which side of the surface the viewer is on; `None` without a normal.
     pub side: Option<Side>,
 }
 
@@ -108,8 +118,11 @@ pub struct ViewerUsed<R: Real> {
 #[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize)]
 #[serde(rename_all = "snake_case")]
 pub enum Term {
+    /// O_a I_a, Eq. 4.6.
     Ambient,
+    /// O_d I_l cos θ, Eq. 4.8.
     Diffuse,
+    /// O_s I_l (cos φ)^n_s, Eq. 4.10.
     Specular,
 }
 
@@ -117,32 +130,47 @@ pub enum Term {
 #[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize)]
 #[serde(rename_all = "snake_case")]
 pub enum OmissionReason {
+    /// The problem gives no ambient light.
     NoAmbientLight,
+    /// The material gives no ambient colour O_a.
     NoAmbientColor,
+    /// The problem gives no point, directional or spot light.
     NoDirectLight,
+    /// The material gives no diffuse colour O_d.
     NoDiffuseColor,
+    /// The problem gives no viewer, so V and cos φ are unknown.
     NoViewer,
+    /// The material gives no specular colour O_s.
     NoSpecularColor,
 }
 
+/// A term of Eq. 4.16 left out, and why.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Omission {
+    /// The term left out.
     pub term: Term,
+    /// Why it is left out.
     pub reason: OmissionReason,
 }
 
 /// The shading of one point, with every intermediate.
 #[derive(Clone, Debug)]
 pub struct Evaluation<R: Real> {
+    /// P; `None` when the problem does not need it.
     pub point: Option<V3<R>>,
+    /// N as given and as used; `None` when the problem does not need it.
     pub normal: Option<NormalUsed<R>>,
+    /// V and where it came from; `None` without a viewer.
     pub viewer: Option<ViewerUsed<R>>,
+    /// The material at P.
     pub material: NamedMaterial<R>,
     /// The lights as shaded, when a reading changed them (the problem's otherwise).
     pub light_set: Option<LightSet<R>>,
     /// The per-light record of the core.
     pub lights: Vec<LightTerm<R>>,
+    /// The core's result: each term summed over the lights, and the total (Eq. 4.16).
     pub shade: Shade<R>,
+    /// The terms the problem does not let the solver compute, and why.
     pub omitted: Vec<Omission>,
     /// The colour clamped to [0, 1] for display.
     pub clamped: V3<R>,
@@ -156,11 +184,16 @@ pub struct Evaluation<R: Real> {
 /// A reading of the problem other than the literal one.
 #[derive(Clone, Debug)]
 pub struct Reading<R: Real> {
+    /// Which reading.
     pub code: ReadingCode,
+    /// The reading's own intersection (the reversed ray of `line_behind_origin`); `None`
+    /// otherwise.
     pub intersection: Option<Intersection<R>>,
+    /// The shading of the point under this reading.
     pub evaluation: Evaluation<R>,
 }
 
+/// The ways of reading a problem other than the literal one.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize)]
 #[serde(rename_all = "snake_case")]
 pub enum ReadingCode {
@@ -179,7 +212,7 @@ pub enum ReadingCode {
 impl ReadingCode {
     /// Whether the reading is what the problem's author most likely meant (the report labels it
     /// "likely intended reading"), rather than another way to read it.
-    pub fn likely_intended(self) -> bool {
+    pub(crate) fn likely_intended(self) -> bool {
         match self {
             ReadingCode::LightReversed | ReadingCode::LineBehindOrigin => true,
             ReadingCode::NormalReversed => false,
@@ -203,7 +236,7 @@ impl<R: Real> Solution<R> {
 
 impl<R: Real> Evaluation<R> {
     /// The lights this evaluation shaded with.
-    pub fn lights_used<'a>(&'a self, problem: &'a Problem<R>) -> &'a LightSet<R> {
+    pub(crate) fn lights_used<'a>(&'a self, problem: &'a Problem<R>) -> &'a LightSet<R> {
         self.light_set.as_ref().unwrap_or(&problem.lights)
     }
 }
@@ -215,7 +248,7 @@ pub fn solve<R: Real>(problem: &Problem<R>) -> Result<Solution<R>, Invalid> {
 
 /// Solves a validated problem with the core's formulas switched as `formulas` says: the mistake
 /// diagnosis of `phong check` reproduces a slip inside a formula this way.
-pub fn solve_with<R: Real, F: Formulas>(
+pub(crate) fn solve_with<R: Real, F: Formulas>(
     problem: &Problem<R>,
     formulas: F,
 ) -> Result<Solution<R>, Invalid> {
@@ -299,7 +332,7 @@ pub fn solve_with<R: Real, F: Formulas>(
 }
 
 /// The surfaces of a problem as one [`Aggregate`], to find hits and cast shadow rays.
-pub fn aggregate<R: Real>(problem: &Problem<R>) -> Aggregate<R> {
+pub(crate) fn aggregate<R: Real>(problem: &Problem<R>) -> Aggregate<R> {
     Aggregate::new(problem.surfaces().iter().map(|s| s.shape).collect())
 }
 
@@ -308,7 +341,7 @@ pub fn aggregate<R: Real>(problem: &Problem<R>) -> Aggregate<R> {
 /// with the tracer's shadow rays (when `problem.render.shadows`). `viewer` is E, or `None` for
 /// V = D, the ray coming from the eye (as every ray of the tracer does); `direction` is D as
 /// given. This is what `phong render --explain-pixel` calls for every ray of a pixel.
-pub fn solve_ray<R: Real>(
+pub(crate) fn solve_ray<R: Real>(
     problem: &Problem<R>,
     viewer: Option<V3<R>>,
     ray: &Ray<R>,
@@ -319,7 +352,7 @@ pub fn solve_ray<R: Real>(
 }
 
 /// [`solve_ray`] with the core's formulas switched as `formulas` says (mistake diagnosis).
-pub fn solve_ray_with<R: Real, F: Formulas>(
+pub(crate) fn solve_ray_with<R: Real, F: Formulas>(
     problem: &Problem<R>,
     formulas: F,
     viewer: Option<V3<R>>,

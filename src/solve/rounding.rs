@@ -54,7 +54,7 @@ pub(super) struct HitError {
 }
 
 impl HitError {
-    pub fn new<R: Real>(p_error: V3<R>, sphere_radius: Option<R>) -> Self {
+    pub(crate) fn new<R: Real>(p_error: V3<R>, sphere_radius: Option<R>) -> Self {
         let a = p_error.to_array().map(|x| x.to_f64());
         HitError {
             e: (a[0] * a[0] + a[1] * a[1] + a[2] * a[2]).sqrt(),

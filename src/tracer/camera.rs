@@ -10,15 +10,21 @@ use crate::problem::Camera;
 /// The camera's frame, ready to make rays.
 #[derive(Clone, Copy, Debug)]
 pub struct CameraRays<R: Real> {
+    /// The eye, the origin of every primary ray.
     pub eye: V3<R>,
-    /// Unit vectors: forward (towards the look-at point), right and up in the image.
+    /// The unit vector from the eye towards the look-at point.
     pub forward: V3<R>,
+    /// The unit vector to the right in the image.
     pub right: V3<R>,
+    /// The unit vector up in the image (at right angles to `forward`).
     pub up: V3<R>,
-    /// Half the image plane's extent at distance 1.
+    /// Half the image plane's width at distance 1.
     pub half_width: R,
+    /// Half the image plane's height at distance 1: tan(fov/2).
     pub half_height: R,
+    /// The image's width in pixels.
     pub width: u32,
+    /// The image's height in pixels.
     pub height: u32,
 }
 

@@ -13,11 +13,15 @@ use crate::solve::{solve_ray, Solution};
 /// The derivation of one pixel.
 #[derive(Clone, Debug)]
 pub struct PixelExplanation<R: Real> {
+    /// The pixel's column, from 0 at the left.
     pub x: u32,
+    /// The pixel's row, from 0 at the top.
     pub y: u32,
+    /// Each sample of the pixel, with its path.
     pub samples: Vec<SampleExplanation<R>>,
     /// The pixel's 8-bit colour, as in the image.
     pub rgb8: [u8; 3],
+    /// How many rays of each kind the pixel's samples traced.
     pub counts: Counts,
 }
 
@@ -26,6 +30,7 @@ pub struct PixelExplanation<R: Real> {
 pub struct SampleExplanation<R: Real> {
     /// (sx, sy) in [0, 1)², from the pixel's top-left corner.
     pub position: (f64, f64),
+    /// The path's rays, primary first.
     pub rays: Vec<RayExplanation<R>>,
     /// The path's colour, unclamped: Σ factor·local.
     pub color: V3<R>,
@@ -34,6 +39,7 @@ pub struct SampleExplanation<R: Real> {
 /// One ray of a path and the solver's solution at its hit.
 #[derive(Clone, Debug)]
 pub struct RayExplanation<R: Real> {
+    /// The ray as the tracer traced it.
     pub record: RayRecord<R>,
     /// The equivalent ray problem solved by the solver (`None` for a miss).
     pub solution: Option<Solution<R>>,

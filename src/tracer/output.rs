@@ -4,14 +4,18 @@ use super::render::Image;
 
 /// The image file formats `phong render` writes.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+// Doc comments on the variants would become help text of `--format`: plain comments instead.
+#[allow(missing_docs)]
 pub enum ImageFormat {
+    // PNG, 8-bit RGB.
     Png,
+    // Binary PPM (P6), 8-bit RGB.
     Ppm,
 }
 
 impl ImageFormat {
     /// The format an output path's extension names, if any.
-    pub fn from_path(path: &std::path::Path) -> Option<Self> {
+    pub(crate) fn from_path(path: &std::path::Path) -> Option<Self> {
         let ext = path.extension()?.to_str()?.to_ascii_lowercase();
         match ext.as_str() {
             "png" => Some(ImageFormat::Png),

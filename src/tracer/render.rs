@@ -17,7 +17,9 @@ use crate::problem::{Camera, Problem};
 /// An 8-bit RGB image, rows top to bottom.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct Image {
+    /// Its width in pixels.
     pub width: u32,
+    /// Its height in pixels.
     pub height: u32,
     /// width × height × 3 bytes.
     pub rgb: Vec<u8>,
@@ -26,7 +28,7 @@ pub struct Image {
 /// A pixel's value: the mean of its samples, each clamped to [0, 1] (what the chapter would
 /// display for that ray), then round(255·c), as the solver's 8-bit colour.
 #[inline]
-pub fn to_rgb8(sum: [f64; 3], samples: u32) -> [u8; 3] {
+pub(crate) fn to_rgb8(sum: [f64; 3], samples: u32) -> [u8; 3] {
     rgb8(mean(sum, samples))
 }
 
@@ -38,13 +40,13 @@ pub(crate) fn mean(sum: [f64; 3], samples: u32) -> [f64; 3] {
 
 /// A colour clamped to [0, 1] and widened, to be summed over samples.
 #[inline]
-pub fn clamped<R: Real>(c: V3<R>) -> [f64; 3] {
+pub(crate) fn clamped<R: Real>(c: V3<R>) -> [f64; 3] {
     to_f64_array::<R>(clamp01::<R>(c))
 }
 
 /// The mean of pixel (x, y)'s samples, each clamped to [0, 1] (before rounding to 8 bits).
 #[inline]
-pub fn pixel_mean<R: Real>(
+pub(crate) fn pixel_mean<R: Real>(
     tracer: &Tracer<R>,
     camera: &CameraRays<R>,
     x: u32,
@@ -63,41 +65,14 @@ pub fn pixel_mean<R: Real>(
     mean(sum, n)
 }
 
-/// The colour of pixel (x, y): its samples traced and averaged, in 8 bits.
-#[inline]
-pub fn pixel<R: Real>(
-    tracer: &Tracer<R>,
-    camera: &CameraRays<R>,
-    x: u32,
-    y: u32,
-    counts: &mut Counts,
-) -> [u8; 3] {
-    rgb8(pixel_mean(tracer, camera, x, y, counts))
-}
-
 /// An image of pixel means in [0, 1] (before rounding to 8 bits), rows top to bottom: what
 /// `phong tradeoff` compares.
 #[derive(Clone, Debug, PartialEq)]
-pub struct LinearImage {
+pub(crate) struct LinearImage {
     pub width: u32,
     pub height: u32,
     /// width × height × 3 values.
     pub rgb: Vec<f64>,
-}
-
-impl LinearImage {
-    /// The image as written to a file.
-    pub fn to_rgb8(&self) -> Image {
-        Image {
-            width: self.width,
-            height: self.height,
-            rgb: self
-                .rgb
-                .chunks_exact(3)
-                .flat_map(|c| rgb8([c[0], c[1], c[2]]))
-                .collect(),
-        }
-    }
 }
 
 /// Every pixel mapped by `each` from its mean, rows in parallel and gathered by index; the
@@ -181,7 +156,7 @@ pub fn render_with<R: Real>(
 
 /// Renders the pixel means, before rounding to 8 bits (`render` is this, rounded), with the
 /// default [`Engine`].
-pub fn render_linear<R: Real>(
+pub(crate) fn render_linear<R: Real>(
     problem: &Problem<R>,
     camera: &Camera<R>,
     scene: &Scene<R>,
@@ -191,7 +166,7 @@ pub fn render_linear<R: Real>(
 }
 
 /// [`render_linear`] by the given engine (the same means by either).
-pub fn render_linear_with<R: Real>(
+pub(crate) fn render_linear_with<R: Real>(
     engine: Engine,
     problem: &Problem<R>,
     camera: &Camera<R>,

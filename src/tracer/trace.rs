@@ -15,6 +15,7 @@ use crate::problem::Problem;
 
 /// The geometry and materials of a scene, built once for a render.
 pub struct Scene<R: Real> {
+    /// Every surface, in a BVH (planes apart): what rays and shadow rays ask for hits.
     pub aggregate: Aggregate<R>,
     /// The material of each surface, by index (a mesh's triangles each have their mesh's).
     pub materials: Vec<Material<R>>,
@@ -51,12 +52,16 @@ pub enum Stop {
 /// How many rays of each kind were traced.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, serde::Serialize)]
 pub struct Counts {
+    /// Primary rays, one per sample.
     pub primary: u64,
+    /// Reflection rays (Eq. 4.17).
     pub reflection: u64,
+    /// Shadow rays, from hit points to lights.
     pub shadow: u64,
 }
 
 impl Counts {
+    /// Every ray traced, of all three kinds.
     pub fn total(&self) -> u64 {
         self.primary + self.reflection + self.shadow
     }
@@ -74,9 +79,13 @@ impl std::ops::AddAssign for Counts {
 /// and the offset origin (pbrt's `OffsetRayOrigin`).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Spawn<R: Real> {
+    /// The hit point it leaves.
     pub from: V3<R>,
+    /// The bound on the error of each component of that point.
     pub p_error: V3<R>,
+    /// The surface's own normal there (not turned to face the ray).
     pub normal: V3<R>,
+    /// The ray's origin: the point offset along the normal by its error bound, rounded outward.
     pub origin: V3<R>,
 }
 
@@ -89,9 +98,11 @@ pub struct RayRecord<R: Real> {
     pub weight: R,
     /// The product of the O_r of the hits before this ray: its colour's factor in the pixel.
     pub factor: V3<R>,
+    /// The ray itself (unit direction).
     pub ray: Ray<R>,
     /// For a reflection ray, where it left from.
     pub spawn: Option<Spawn<R>>,
+    /// The nearest hit with t > 0; `None` on a miss.
     pub hit: Option<AggregateHit<R>>,
     /// The local colour (Eq. 4.16) at the hit, or the background on a miss.
     pub local: V3<R>,
@@ -105,6 +116,7 @@ pub struct RayRecord<R: Real> {
 
 /// Receives each ray of a path; the hot path passes `()`, which records nothing.
 pub trait PathRecorder<R: Real> {
+    /// Receives one ray's record, in path order.
     fn ray(&mut self, record: &RayRecord<R>);
 }
 
@@ -121,7 +133,9 @@ impl<R: Real> PathRecorder<R> for Vec<RayRecord<R>> {
 
 /// Traces paths through a scene with a problem's lights and render settings.
 pub struct Tracer<'a, R: Real> {
+    /// The surfaces and their materials.
     pub scene: &'a Scene<R>,
+    /// The lights, the background and the render settings.
     pub problem: &'a Problem<R>,
 }
 
@@ -163,7 +177,7 @@ pub(crate) trait CountedVisibility<R: Real>: crate::core::Visibility<R> {
     fn traced(&self) -> u64;
 }
 
-impl<R: Real> CountedVisibility<R> for crate::geometry::ShadowRays<'_, R> {
+impl<R: Real> CountedVisibility<R> for crate::geometry::shadow::ShadowRays<'_, R> {
     #[inline]
     fn traced(&self) -> u64 {
         self.traced

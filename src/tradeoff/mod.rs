@@ -14,8 +14,8 @@
 //! - [`fastest_within`]: the answer to "what is the fastest setting within this error budget".
 //! - [`report`]: the table (text), JSON and CSV; [`plot`]: error against time as SVG.
 
-pub mod plot;
-pub mod report;
+pub(crate) mod plot;
+pub(crate) mod report;
 mod sweep;
 
 use std::time::Instant;

@@ -322,7 +322,7 @@ pub struct Gate {
     pub reference: String,
     pub phong: String,
     /// phong's cone test put the point on the edge, within its stated tolerance, and lit it
-    /// (DESIGN.md: the edge is lit).
+    /// (docs/conventions.md, "Spot cone": the edge is lit).
     pub edge_tolerance: bool,
 }
 

@@ -1,5 +1,6 @@
 //! An independent evaluation of the chapter's model at a point, in 256-bit binary floating point
-//! (astro-float), written from DESIGN.md's table and gating rules, not from phong's core:
+//! (astro-float), written from the table and the gating rules of docs/conventions.md, not from
+//! phong's core:
 //!
 //! - L = (P − P_l)/‖P − P_l‖ (D_l/‖D_l‖ for a directional light), d = ‖P − P_l‖, I_l = C_l/d^f;
 //! - a spot: cos ψ = D̂_l·L, I_l·(cos ψ)^e inside the cone ψ ≤ γ (the edge is lit), 0 outside;
@@ -185,7 +186,7 @@ pub fn ldexp(mut x: f64, mut k: i64) -> f64 {
     x * 2f64.powi(k as i32)
 }
 
-/// Whether a light lights the point, decided exactly (DESIGN.md's gating).
+/// Whether a light lights the point, decided exactly (docs/conventions.md, "Gating").
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Status {
     Lit,

@@ -8,7 +8,7 @@ use crate::cli::exit::Exit;
 use crate::cli::output;
 use crate::problem;
 
-pub fn run(args: &CheckArgs) -> Result<Exit, CliError> {
+pub(crate) fn run(args: &CheckArgs) -> Result<Exit, CliError> {
     if args.answer.is_some() && args.files.len() > 1 {
         return Err(CliError::Conflict {
             message: format!(
@@ -29,6 +29,10 @@ pub fn run(args: &CheckArgs) -> Result<Exit, CliError> {
     if args.slips {
         return slips(args);
     }
+    let steps = given_steps(args)?;
+    if !steps.is_empty() {
+        return with_steps(args, &steps);
+    }
     let options = check::CheckOptions {
         answer: args.answer.clone(),
         scale: args.scale,
@@ -40,7 +44,10 @@ pub fn run(args: &CheckArgs) -> Result<Exit, CliError> {
     let mut docs = Vec::new();
     for path in &args.files {
         let c = check::check_file(path, &options);
-        exit = exit.max(c.exit_code());
+        exit = exit.max(exit_of(c.status()));
+        for w in &c.warnings {
+            error::warn(&crate::report::messages::warning(w, args.lang));
+        }
         if let Err(f) = &c.outcome {
             error::print(&f.message);
         }
@@ -59,6 +66,133 @@ pub fn run(args: &CheckArgs) -> Result<Exit, CliError> {
         CheckFormat::Json => output::json_text(docs),
     };
     // Nothing could be checked: no empty output file.
+    if !out.is_empty() {
+        output::emit(args.output.as_deref(), &out)?;
+    }
+    Ok(exit)
+}
+
+/// A check's exit: 0 accepted, 1 refused, 2 not checked.
+fn exit_of(status: check::report::Status) -> Exit {
+    match status {
+        check::report::Status::Accepted => Exit::Success,
+        check::report::Status::Refused => Exit::Wrong,
+        check::report::Status::Unchecked => Exit::BadInput,
+    }
+}
+
+/// The steps of `--step` and `--steps`, read (an unreadable one is a usage error, exit 2).
+fn given_steps(args: &CheckArgs) -> Result<Vec<check::steps::GivenStep>, CliError> {
+    let by_flag = !args.step.is_empty() || args.steps.is_some();
+    if by_flag && args.files.len() > 1 {
+        return Err(CliError::Conflict {
+            message: format!(
+                "--step and --steps check one file, and {} were given",
+                args.files.len()
+            ),
+            fix: "check one file's steps at a time".into(),
+        });
+    }
+    let mut out = Vec::new();
+    for text in &args.step {
+        out.push(check::steps::parse_step(text).map_err(|e| {
+            step_usage(
+                "--step",
+                "",
+                e,
+                "write NAME=VALUE, such as --step cos_theta=0.98995 or --step R=0.6,0,0.8",
+            )
+        })?);
+    }
+    if let Some(path) = &args.steps {
+        let shown = path.display();
+        let text = std::fs::read_to_string(path).map_err(|e| CliError::Usage {
+            flag: "--steps".into(),
+            message: format!("{shown}: cannot read the file: {e}"),
+            fix: "check the path, and that the file exists and is UTF-8 text".into(),
+        })?;
+        let read = check::steps::parse_steps_json(&text).map_err(|e| {
+            step_usage(
+                "--steps",
+                &format!("{shown}: "),
+                e,
+                "one JSON object of names and values, such as {\"cos_theta\": 0.98995}",
+            )
+        })?;
+        out.extend(read);
+    }
+    Ok(out)
+}
+
+/// A step that cannot be read, as a usage error: its own fix where it gives one, else `fix`.
+fn step_usage(flag: &str, prefix: &str, e: check::steps::BadStep, fix: &str) -> CliError {
+    let (message, fix) = match e.message.split_once(". Fix: ") {
+        Some((m, f)) => (m.to_owned(), f.to_owned()),
+        None => (e.message, fix.to_owned()),
+    };
+    CliError::Usage {
+        flag: flag.into(),
+        message: format!("{prefix}{message}"),
+        fix,
+    }
+}
+
+/// `phong check FILE --step …`: the steps judged (and the answer, when one is given too).
+fn with_steps(args: &CheckArgs, steps: &[check::steps::GivenStep]) -> Result<Exit, CliError> {
+    let path = &args.files[0];
+    let checked = check::steps::check_steps(path, steps, args.strict);
+    let mut exit = exit_of(checked.status());
+    for w in &checked.warnings {
+        error::warn(&crate::report::messages::warning(w, args.lang));
+    }
+    let answer = args.answer.as_ref().map(|_| {
+        check::check_file(
+            path,
+            &check::CheckOptions {
+                answer: args.answer.clone(),
+                scale: args.scale,
+                tolerance: args.tolerance,
+                strict: args.strict,
+            },
+        )
+    });
+    if let Err(f) = &checked.outcome {
+        error::print(&f.message);
+    }
+    if let Some(c) = &answer {
+        exit = exit.max(exit_of(c.status()));
+        if let Err(f) = &c.outcome {
+            error::print(&f.message);
+        }
+    }
+    let out = match args.format {
+        CheckFormat::Text => {
+            let mut text = String::new();
+            if let Some(c) = answer.as_ref().filter(|c| c.outcome.is_ok()) {
+                text.push_str(&check::report::text(c, args.lang));
+            }
+            text.push_str(&check::steps::text(&checked, args.lang));
+            text
+        }
+        CheckFormat::Json => {
+            let doc = match &answer {
+                Some(c) => {
+                    let mut v =
+                        serde_json::to_value(check::report::json(c)).expect("a verdict serialises");
+                    let steps = checked.outcome.as_ref().ok().map(check::steps::steps_json);
+                    v["steps"] = serde_json::to_value(steps).expect("steps serialise");
+                    if let Err(f) = &checked.outcome {
+                        v["steps_error"] = serde_json::to_value(f).expect("an error serialises");
+                    }
+                    v
+                }
+                None => {
+                    serde_json::to_value(check::steps::document(&checked)).expect("steps serialise")
+                }
+            };
+            output::json_text(vec![doc])
+        }
+    };
     if !out.is_empty() {
         output::emit(args.output.as_deref(), &out)?;
     }

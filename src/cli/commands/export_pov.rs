@@ -7,7 +7,7 @@ use crate::cli::exit::Exit;
 use crate::cli::output;
 use crate::problem::{self, ProblemError};
 
-pub fn run(args: &ExportPovArgs) -> Result<Exit, CliError> {
+pub(crate) fn run(args: &ExportPovArgs) -> Result<Exit, CliError> {
     let path = &args.scene;
     let (_, mut problem) = problem::load::<f64>(path)?;
     problem.render = problem

@@ -7,7 +7,7 @@ use crate::cli::error::{self, CliError};
 use crate::cli::exit::Exit;
 use crate::cli::output;
 
-pub fn run(args: &GradeArgs) -> Result<Exit, CliError> {
+pub(crate) fn run(args: &GradeArgs) -> Result<Exit, CliError> {
     if let Some(t) = args.tolerance {
         check::answer::check_tolerance(t).map_err(|source| CliError::Value {
             flag: "--tolerance",

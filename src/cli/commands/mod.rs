@@ -3,14 +3,14 @@
 //! [`crate::cli::run`]). Also what the tracer's commands share: the settings given over a
 //! scene's, and the worker threads.
 
-pub mod check;
-pub mod export_pov;
-pub mod grade;
-pub mod new;
-pub mod render;
-pub mod schema;
-pub mod solve;
-pub mod tradeoff;
+pub(crate) mod check;
+pub(crate) mod export_pov;
+pub(crate) mod grade;
+pub(crate) mod new;
+pub(crate) mod render;
+pub(crate) mod schema;
+pub(crate) mod solve;
+pub(crate) mod tradeoff;
 
 use super::args::{Switch, TraceSettings};
 use super::error::CliError;

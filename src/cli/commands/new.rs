@@ -7,7 +7,7 @@ use crate::cli::exit::Exit;
 use crate::cli::output;
 use crate::generate;
 
-pub fn run(args: &NewArgs) -> Result<Exit, CliError> {
+pub(crate) fn run(args: &NewArgs) -> Result<Exit, CliError> {
     let problems = generate::generate(args.kind, args.count, args.seed);
     let Some(dir) = &args.output else {
         output::emit(None, &generate::text_of_all(&problems))?;

@@ -14,7 +14,7 @@ use crate::report;
 use crate::tracer::output::ImageFormat;
 use crate::tracer::{self, Scene};
 
-pub fn run(args: &RenderArgs) -> Result<Exit, CliError> {
+pub(crate) fn run(args: &RenderArgs) -> Result<Exit, CliError> {
     match args.precision {
         Precision::F32 => render::<f32>(args),
         Precision::F64 => render::<f64>(args),

@@ -6,7 +6,7 @@ use crate::cli::exit::Exit;
 use crate::cli::output;
 use crate::problem;
 
-pub fn run(args: &SchemaArgs) -> Result<Exit, CliError> {
+pub(crate) fn run(args: &SchemaArgs) -> Result<Exit, CliError> {
     let mut text = problem::schema_json();
     text.push('\n');
     output::emit(args.output.as_deref(), &text)?;

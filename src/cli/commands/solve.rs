@@ -6,9 +6,9 @@ use crate::cli::error::{self, CliError};
 use crate::cli::exit::Exit;
 use crate::cli::output;
 use crate::report;
-use crate::report::file::{error_json, explain_file, solve_json};
+use crate::report::file::{error_json, explain_file, solve_json_warned};
 
-pub fn run(args: &SolveArgs) -> Result<Exit, CliError> {
+pub(crate) fn run(args: &SolveArgs) -> Result<Exit, CliError> {
     if args.fragment && !matches!(args.format, Format::Latex | Format::Html) {
         return Err(CliError::Conflict {
             message: "--fragment applies to --format latex and html only".into(),
@@ -20,8 +20,16 @@ pub fn run(args: &SolveArgs) -> Result<Exit, CliError> {
     let mut explanations = Vec::new();
     for path in &args.files {
         let result = match args.format {
-            Format::Json => solve_json(path, args.precision).map(|v| docs.push(v)),
-            _ => explain_file(path, args.precision, args.lang).map(|x| explanations.push(x)),
+            Format::Json => {
+                solve_json_warned(path, args.precision, args.lang).map(|(v, warnings)| {
+                    warnings.iter().for_each(|w| error::warn(w));
+                    docs.push(v);
+                })
+            }
+            _ => explain_file(path, args.precision, args.lang).map(|x| {
+                x.warnings.iter().for_each(|w| error::warn(w));
+                explanations.push(x);
+            }),
         };
         if let Err(e) = result {
             failed = true;

@@ -11,7 +11,7 @@ use crate::core::{Precision, Real};
 use crate::problem::{self, Camera, Problem, ProblemError};
 use crate::tradeoff::{self, report, ReferenceSettings, Scenes, Sweep};
 
-pub fn run(args: &TradeoffArgs) -> Result<Exit, CliError> {
+pub(crate) fn run(args: &TradeoffArgs) -> Result<Exit, CliError> {
     let sweep = Sweep::new(
         &args.precisions,
         &args.levels,

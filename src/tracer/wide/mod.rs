@@ -12,7 +12,7 @@
 //! The shares of a sample are added in bounce order, as [`Tracer::trace`] adds them, and a
 //! pixel's samples in sample order, as [`super::render::pixel_mean`] does; the packet
 //! intersection is the aggregate's to the bit ([`FlatScene`]). So the image is the scalar
-//! tracer's, byte for byte, in both precisions (tests/wide.rs). Scenes the packets do not cover
+//! tracer's, byte for byte, in both precisions (src/tracer/wide/tests.rs). Scenes the packets do not cover
 //! (more than a handful of spheres, which the aggregate puts in a BVH, or triangles) take the
 //! same queues with the aggregate's scalar intersection.
 
@@ -22,8 +22,9 @@ use super::sampler::sample;
 use super::trace::{CountedVisibility, Counts, PathState, Tracer};
 use crate::core::lanes::Wide;
 use crate::core::{Arrival, Light, Real, Vector, Visibility, V3};
+use crate::geometry::shadow::ShadowRays;
 use crate::geometry::soa::FlatScene;
-use crate::geometry::{AggregateHit, ShadowRays, SurfaceHit};
+use crate::geometry::{AggregateHit, SurfaceHit};
 
 /// Samples traced together: a strip of a row (one sample per pixel: 64 pixels).
 pub const BLOCK: usize = 64;
@@ -191,3 +192,6 @@ pub(crate) fn row<R: Real, T: Copy>(
         }
     }
 }
+
+#[cfg(test)]
+mod tests;

@@ -1,16 +1,17 @@
-//! The wide tracer (packets of 8 × f32 or 4 × f64 lanes, queues per bounce) renders the scalar
-//! tracer's image bit for bit: every bundled scene, both precisions, the pixel means before
+//! The wide engine (packets of 8 × f32 or 4 × f64 lanes, queues per bounce) renders the scalar
+//! engine's image bit for bit: every bundled scene, both precisions, the pixel means before
 //! rounding compared by their bits, and the ray counts equal. No operation of the wide path is
 //! allowed to differ from the scalar one: the lanes do IEEE +, −, ×, ÷, √ in the scalar order,
 //! and everything else (hit points, shading, pow, the cone's atan2) is the scalar code itself.
 
 use std::path::{Path, PathBuf};
 
-use phong::core::Real;
-use phong::problem::{self, validate, Camera, Problem};
-use phong::tracer::{render_linear_with, Engine, Scene};
+use crate::core::Real;
+use crate::problem::{self, validate, Camera, Problem};
+use crate::tracer::render::render_linear_with;
+use crate::tracer::{Engine, Scene};
 
-#[path = "../scenes/many_spheres.rs"]
+#[path = "../../../scenes/many_spheres.rs"]
 mod many_spheres;
 
 fn scenes() -> Vec<PathBuf> {

@@ -1,0 +1,1077 @@
+//! Step checking (`phong check FILE --step cos_theta=0.98995 --step R=0.6,0,0.8`, or
+//! `--steps FILE.json`): a student's intermediate values, each judged against the same
+//! quantity of the solver's solution, in the order of the solution, with the first wrong step
+//! named with its equation.
+//!
+//! Every quantity `phong solve --format json` reports has a name ([`NAMES`]); a quantity of one
+//! light takes its index in the file's `lights` as `[i]` (`cos_theta[1]`), and a bare name means
+//! the first light that is not ambient. A step is judged against the problem as written, then
+//! against its likely intended reading (verdict `reading`: wrong as written, right in that
+//! reading), and a wrong one is explained where it can be: the sign, the ungated value, another
+//! reading, or the value a classic slip gives.
+//!
+//! Tolerance ([`STEP_RELATIVE`], [`STEP_ABSOLUTE`]): a value is right when each component is
+//! within 1 % of the quantity's size (its magnitude; a vector's largest component) or within
+//! 0.005, whichever is larger. A hand calculation keeps 3–4 significant digits per step, and
+//! its rounding grows step by step to a few parts in a thousand; 1 % accepts that, while the
+//! slips a step check is for change a value by far more (a sign, a reversed vector, 1/d for
+//! 1/d², a forgotten normalisation: 10 % and up). The absolute 0.005 is half a unit of the
+//! second decimal, the colour's own default, for values near 0 (a component of R that is 0,
+//! a term of 0.003).
+
+use std::fmt::Write;
+use std::path::Path;
+
+use serde::Serialize;
+
+use super::messages;
+use super::report::{Failure, FailureKind, CHECK_FORMAT_VERSION};
+use super::slips::{self, Slip};
+use crate::core::{LightKind, Vector};
+use crate::problem::Problem;
+use crate::report::lang::Lang;
+use crate::report::number::num;
+use crate::solve::{Evaluation, Intersection, ReadingCode, Solution};
+
+/// The relative tolerance of a step: 1 % of the quantity's size.
+pub const STEP_RELATIVE: f64 = 1e-2;
+/// The absolute tolerance of a step, for values near 0: half a unit of the second decimal.
+pub const STEP_ABSOLUTE: f64 = 5e-3;
+
+/// A step's value: a number or a vector (a colour is a vector too).
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+#[serde(untagged)]
+pub enum Value {
+    /// A number (cos θ, d, a falloff factor).
+    Scalar(f64),
+    /// Three numbers (L, R, V, I_l, a term).
+    Vector([f64; 3]),
+}
+
+impl Value {
+    fn parts(self) -> Vec<f64> {
+        match self {
+            Value::Scalar(x) => vec![x],
+            Value::Vector(v) => v.to_vec(),
+        }
+    }
+
+    fn negated(self) -> Value {
+        match self {
+            Value::Scalar(x) => Value::Scalar(-x),
+            Value::Vector(v) => Value::Vector(v.map(|x| -x)),
+        }
+    }
+
+    fn is_vector(self) -> bool {
+        matches!(self, Value::Vector(_))
+    }
+
+    /// The text of the value, as the reports write numbers.
+    pub fn text(self) -> String {
+        match self {
+            Value::Scalar(x) => num(x),
+            Value::Vector(v) => format!("({}, {}, {})", num(v[0]), num(v[1]), num(v[2])),
+        }
+    }
+}
+
+/// Whether `given` is `expected` to within the step tolerance (see the module's note).
+pub fn within(given: Value, expected: Value) -> bool {
+    let (g, e) = (given.parts(), expected.parts());
+    if g.len() != e.len() {
+        return false;
+    }
+    let size = e.iter().fold(0.0f64, |m, x| m.max(x.abs()));
+    let tolerance = STEP_ABSOLUTE.max(STEP_RELATIVE * size);
+    g.iter()
+        .zip(&e)
+        .all(|(a, b)| (a - b).abs() <= tolerance * (1.0 + 1e-9))
+}
+
+/// What a named quantity is: its name, what it is a value of, its equation and formula.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Name {
+    /// The name a student gives (`cos_theta`).
+    pub name: &'static str,
+    /// Per light (takes `[i]`), or of the point.
+    pub per_light: bool,
+    /// A vector, or a number.
+    pub vector: bool,
+    /// The chapter's equation, when it numbers one.
+    pub equation: Option<&'static str>,
+    /// The formula, in the chapter's symbols.
+    pub formula: &'static str,
+}
+
+const fn name(
+    name: &'static str,
+    per_light: bool,
+    vector: bool,
+    equation: Option<&'static str>,
+    formula: &'static str,
+) -> Name {
+    Name {
+        name,
+        per_light,
+        vector,
+        equation,
+        formula,
+    }
+}
+
+/// Every step that can be checked, in the order of the solution (as `phong solve` shows it).
+pub const NAMES: [Name; 22] = [
+    name("t", false, false, None, "O + tD on the surface"),
+    name("P", false, true, None, "P = O + tD"),
+    name("N", false, true, None, "N, of unit length"),
+    name("V", false, true, Some("4.10"), "V = (P − E)/‖P − E‖"),
+    name("I_a", false, true, None, "I_a = Σ ambient lights"),
+    name("ambient", false, true, Some("4.6"), "O_a I_a"),
+    name("L", true, true, Some("4.1"), "L = (P − P_l)/‖P − P_l‖"),
+    name("d", true, false, None, "d = ‖P − P_l‖"),
+    name("falloff_factor", true, false, Some("4.3"), "1/d^f"),
+    name("cos_psi", true, false, Some("4.4"), "cos ψ = D_l·L"),
+    name("spot_factor", true, false, Some("4.4"), "(cos ψ)^e"),
+    name("I_l", true, true, Some("4.2"), "I_l = C_l/d^f"),
+    name("n_dot_l", true, false, Some("4.7"), "N·L"),
+    name("cos_theta", true, false, Some("4.7"), "cos θ = −N·L"),
+    name("diffuse", true, true, Some("4.8"), "O_d I_l cos θ"),
+    name("R", true, true, Some("4.15"), "R = L − 2(N·L)N"),
+    name("cos_phi", true, false, Some("4.10"), "cos φ = −R·V"),
+    name("cos_phi_pow", true, false, Some("4.10"), "(cos φ)^n_s"),
+    name("specular", true, true, Some("4.10"), "O_s I_l (cos φ)^n_s"),
+    name("total_diffuse", false, true, Some("4.8"), "Σ O_d I_l cos θ"),
+    name(
+        "total_specular",
+        false,
+        true,
+        Some("4.10"),
+        "Σ O_s I_l (cos φ)^n_s",
+    ),
+    name(
+        "I",
+        false,
+        true,
+        Some("4.16"),
+        "I = O_a I_a + Σ (diffuse + specular)",
+    ),
+];
+
+/// Other ways of writing a name (compared without case, spaces or underscores).
+const ALIASES: [(&str, &str); 16] = [
+    ("costheta", "cos_theta"),
+    ("cosθ", "cos_theta"),
+    ("cosphi", "cos_phi"),
+    ("cosφ", "cos_phi"),
+    ("cospsi", "cos_psi"),
+    ("cosψ", "cos_psi"),
+    ("n·l", "n_dot_l"),
+    ("ndotl", "n_dot_l"),
+    ("nl", "n_dot_l"),
+    ("il", "I_l"),
+    ("ia", "I_a"),
+    ("falloff", "falloff_factor"),
+    ("attenuation", "falloff_factor"),
+    ("cosphipow", "cos_phi_pow"),
+    ("total", "I"),
+    ("color", "I"),
+];
+
+fn squash(s: &str) -> String {
+    s.chars()
+        .filter(|c| !c.is_whitespace() && *c != '_')
+        .flat_map(char::to_lowercase)
+        .collect()
+}
+
+/// The quantity a name means (without case, spaces or underscores; aliases such as `cosθ`).
+pub fn lookup(text: &str) -> Option<Name> {
+    let s = squash(text);
+    let canonical = ALIASES
+        .iter()
+        .find(|(a, _)| squash(a) == s)
+        .map_or(s.clone(), |(_, n)| squash(n));
+    NAMES.iter().copied().find(|n| squash(n.name) == canonical)
+}
+
+/// A step as the student gives it: a name, an optional light index, a value.
+#[derive(Clone, Debug, PartialEq)]
+pub struct GivenStep {
+    /// As written (`cos_theta[1]`), for the report.
+    pub text: String,
+    /// The quantity named.
+    pub name: Name,
+    /// The `[i]` given: an index in the file's `lights`.
+    pub light: Option<usize>,
+    /// The value given.
+    pub value: Value,
+}
+
+/// A step that cannot be read; the message says what was expected.
+#[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
+#[error("{message}")]
+pub struct BadStep {
+    /// What was expected instead.
+    pub message: String,
+}
+
+fn bad(message: impl Into<String>) -> BadStep {
+    BadStep {
+        message: message.into(),
+    }
+}
+
+fn known_names() -> String {
+    NAMES.iter().map(|n| n.name).collect::<Vec<_>>().join(", ")
+}
+
+/// Reads a name (with an optional `[i]`) and its value written as text.
+pub fn parse_named(name_text: &str, value_text: &str) -> Result<GivenStep, BadStep> {
+    let name_text = name_text.trim();
+    let (base, light) = match name_text.strip_suffix(']').and_then(|s| s.split_once('[')) {
+        Some((b, i)) => {
+            let i = i.trim().parse::<usize>().map_err(|_| {
+                bad(format!(
+                    "\"{name_text}\": [{i}] is not a light's index: write the index of the light \
+                     in the file's \"lights\", from 0, such as cos_theta[1]"
+                ))
+            })?;
+            (b, Some(i))
+        }
+        None => (name_text, None),
+    };
+    let name = lookup(base).ok_or_else(|| {
+        bad(format!(
+            "\"{base}\" is not the name of a step. Fix: use one of {} (a light's own with [i], \
+             such as cos_theta[1])",
+            known_names()
+        ))
+    })?;
+    if light.is_some() && !name.per_light {
+        return Err(bad(format!(
+            "\"{name_text}\": {} is not a quantity of one light. Fix: leave out the [i]",
+            name.name
+        )));
+    }
+    let value = parse_value(value_text).ok_or_else(|| {
+        bad(format!(
+            "\"{}\" is not a value for {}: write {}",
+            value_text.trim(),
+            name.name,
+            if name.vector {
+                "three numbers, such as 0.6,0,0.8 or \"(0.6, 0, 0.8)\""
+            } else {
+                "one number, such as 0.98995 or 3/5"
+            }
+        ))
+    })?;
+    if value.is_vector() != name.vector {
+        return Err(bad(format!(
+            "{} is {}, and \"{}\" is {}. Fix: give {}",
+            name.name,
+            if name.vector { "a vector" } else { "a number" },
+            value_text.trim(),
+            if value.is_vector() {
+                "three numbers"
+            } else {
+                "one number"
+            },
+            if name.vector {
+                "three numbers, such as 0.6,0,0.8"
+            } else {
+                "one number"
+            }
+        )));
+    }
+    Ok(GivenStep {
+        text: name_text.to_owned(),
+        name,
+        light,
+        value,
+    })
+}
+
+/// One number (a decimal comma is read as a point) or three.
+fn parse_value(text: &str) -> Option<Value> {
+    let t = text.trim();
+    let one = super::answer::number(t).or_else(|| {
+        (t.matches(',').count() == 1)
+            .then(|| super::answer::number(&t.replace(',', ".")))
+            .flatten()
+    });
+    if let Some(x) = one {
+        return Some(Value::Scalar(x));
+    }
+    super::answer::three(t).map(Value::Vector)
+}
+
+/// Reads `--step NAME=VALUE`.
+pub fn parse_step(text: &str) -> Result<GivenStep, BadStep> {
+    let (name, value) = text.split_once('=').ok_or_else(|| {
+        bad(format!(
+            "\"{text}\" is not NAME=VALUE. Fix: write the step's name, =, and its value, such as \
+             cos_theta=0.98995 or R=0.6,0,0.8"
+        ))
+    })?;
+    parse_named(name, value)
+}
+
+/// Reads a `--steps` file: one JSON object of names and values, a value a number, an array of
+/// three numbers, or a string as `--step` takes it: `{"cos_theta": 0.98995, "R": [0.6, 0,
+/// 0.8], "cos_theta[1]": "3/5"}`.
+pub fn parse_steps_json(text: &str) -> Result<Vec<GivenStep>, BadStep> {
+    let doc: serde_json::Value = serde_json::from_str(text).map_err(|e| {
+        bad(format!(
+            "not JSON: {e}. Fix: write one object of names and values, such as \
+             {{\"cos_theta\": 0.98995, \"R\": [0.6, 0, 0.8]}}"
+        ))
+    })?;
+    let obj = doc.as_object().ok_or_else(|| {
+        bad("the file is not one JSON object. Fix: write {\"cos_theta\": 0.98995, \"R\": [0.6, 0, 0.8]}")
+    })?;
+    let mut out = Vec::new();
+    for (k, v) in obj {
+        let value = match v {
+            serde_json::Value::Number(n) => n.to_string(),
+            serde_json::Value::String(s) => s.clone(),
+            serde_json::Value::Array(a) if a.iter().all(serde_json::Value::is_number) => a
+                .iter()
+                .map(ToString::to_string)
+                .collect::<Vec<_>>()
+                .join(" "),
+            other => {
+                return Err(bad(format!(
+                    "\"{k}\": {other} is not a value. Fix: give a number, [x, y, z], or a string \
+                     such as \"3/5\""
+                )))
+            }
+        };
+        out.push(parse_named(k, &value).map_err(|e| bad(format!("\"{k}\": {e}")))?);
+    }
+    if out.is_empty() {
+        return Err(bad(
+            "the file has no steps. Fix: write {\"cos_theta\": 0.98995, \"R\": [0.6, 0, 0.8]}",
+        ));
+    }
+    Ok(out)
+}
+
+/// One quantity of a solution.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Quantity {
+    /// The quantity.
+    pub name: Name,
+    /// The light's index in the file's `lights` (per-light quantities).
+    pub light: Option<usize>,
+    /// Its place in the order of the solution.
+    pub order: usize,
+    /// Its value.
+    pub value: Value,
+    /// The ungated value, where gating changed it (a diffuse or specular term).
+    pub literal: Option<Value>,
+    /// The equation, where it depends on the light (I_l of a spot is Eq. 4.4).
+    pub equation: Option<&'static str>,
+}
+
+fn order_of(n: &str) -> usize {
+    NAMES.iter().position(|x| x.name == n).unwrap_or(usize::MAX)
+}
+
+/// Every quantity of a solution (its intersection and its evaluation), in the order of the
+/// solution: the point's first, then each light's, then the totals.
+pub fn quantities(
+    problem: &Problem<f64>,
+    intersection: Option<&Intersection<f64>>,
+    e: Option<&Evaluation<f64>>,
+) -> Vec<Quantity> {
+    let mut out = Vec::new();
+    let mut push = |n: &str, light: Option<usize>, value: Value, literal: Option<Value>| {
+        let name = NAMES[order_of(n)];
+        out.push(Quantity {
+            name,
+            light,
+            order: 0,
+            value,
+            literal,
+            equation: name.equation,
+        });
+    };
+    let v3 = |v: crate::core::V3<f64>| Value::Vector(v.to_array());
+    if let Some(x) = intersection {
+        if let Some(t) = x.t {
+            push("t", None, Value::Scalar(t), None);
+        }
+        if let Some(p) = x.point {
+            push("P", None, v3(p), None);
+        }
+    }
+    if let Some(e) = e {
+        if intersection.is_none() {
+            if let Some(p) = e.point {
+                push("P", None, v3(p), None);
+            }
+        }
+        if let Some(n) = &e.normal {
+            push("N", None, v3(n.used), None);
+        }
+        if let Some(vw) = &e.viewer {
+            push("V", None, v3(vw.v), None);
+        }
+        let lights = e.lights_used(problem);
+        if let Some(i_a) = lights.ambient {
+            push("I_a", None, v3(i_a), None);
+        }
+        if let Some(a) = e.shade.ambient {
+            push("ambient", None, v3(a), None);
+        }
+        for term in &e.lights {
+            let i = problem.light_info.get(term.index).map(|l| l.file_index);
+            let a = &term.arrival;
+            push("L", i, v3(a.l), None);
+            if let Some(d) = a.distance {
+                push("d", i, Value::Scalar(d), None);
+                push("falloff_factor", i, Value::Scalar(a.falloff_factor), None);
+            }
+            if let Some(c) = &a.cone {
+                push("cos_psi", i, Value::Scalar(c.cos_psi), None);
+                push("spot_factor", i, Value::Scalar(c.factor), None);
+            }
+            push("I_l", i, v3(a.i_l), None);
+            push("n_dot_l", i, Value::Scalar(term.n_dot_l), None);
+            push("cos_theta", i, Value::Scalar(term.cos_theta), None);
+            if let Some(d) = term.diffuse {
+                let lit = term.diffuse_literal.filter(|l| *l != d).map(v3);
+                push("diffuse", i, v3(d), lit);
+            }
+            let s = &term.specular;
+            if let Some(r) = s.r {
+                push("R", i, v3(r), None);
+            }
+            if let Some(c) = s.cos_phi {
+                push("cos_phi", i, Value::Scalar(c), None);
+            }
+            if let Some(p) = s.cos_phi_pow {
+                push("cos_phi_pow", i, Value::Scalar(p), None);
+            }
+            if s.cos_phi.is_some() {
+                let lit = s.literal.filter(|l| *l != s.term).map(v3);
+                push("specular", i, v3(s.term), lit);
+            }
+        }
+        push("total_diffuse", None, v3(e.shade.diffuse), None);
+        push("total_specular", None, v3(e.shade.specular), None);
+        let lit = e.shade.literal.filter(|l| *l != e.shade.color).map(v3);
+        push("I", None, v3(e.shade.color), lit);
+    }
+    // A spot's I_l is Eq. 4.4; a directional light's has no falloff (Sec. 4.2).
+    for q in &mut out {
+        if q.name.name == "I_l" {
+            let kind = q
+                .light
+                .and_then(|i| light_kind(problem, i, e.map(|e| e.lights_used(problem))));
+            q.equation = match kind {
+                Some(LightKind::Spot { .. }) => Some("4.4"),
+                Some(LightKind::Directional { .. }) => None,
+                _ => Some("4.2"),
+            };
+        }
+    }
+    // The order of the solution: the point's quantities, each light's block in turn, totals.
+    for (k, q) in out.iter_mut().enumerate() {
+        q.order = k;
+    }
+    out
+}
+
+fn light_kind(
+    problem: &Problem<f64>,
+    file_index: usize,
+    set: Option<&crate::core::LightSet<f64>>,
+) -> Option<LightKind<f64>> {
+    let k = problem
+        .light_info
+        .iter()
+        .position(|l| l.file_index == file_index)?;
+    set.unwrap_or(&problem.lights).lights.get(k).map(|l| l.kind)
+}
+
+/// The quantities of one solution: the problem as written, a reading, or a slip.
+#[derive(Clone, Debug)]
+struct Source {
+    quantities: Vec<Quantity>,
+}
+
+impl Source {
+    fn of(problem: &Problem<f64>, s: &Solution<f64>) -> Self {
+        Source {
+            quantities: quantities(problem, s.intersection.as_ref(), s.evaluation.as_ref()),
+        }
+    }
+
+    fn find(&self, name: Name, light: Option<usize>) -> Option<&Quantity> {
+        self.quantities
+            .iter()
+            .find(|q| q.name == name && q.light == light)
+    }
+}
+
+/// Everything steps are judged against, solved once.
+pub struct StepsExpected {
+    written: Source,
+    readings: Vec<(ReadingCode, bool, Source)>,
+    slips: Vec<(Slip, Source)>,
+    /// The file index of the first light that is not ambient (a bare name's light).
+    first_light: Option<usize>,
+    /// The file indices of the ambient lights.
+    ambient_lights: Vec<usize>,
+    /// The number of lights in the file.
+    lights_in_file: usize,
+}
+
+impl StepsExpected {
+    /// Solves the problem, its readings and each single slip (f64).
+    pub fn of(problem: &Problem<f64>) -> Result<Self, crate::problem::Invalid> {
+        let solution = crate::solve::solve(problem)?;
+        let written = Source::of(problem, &solution);
+        let readings = solution
+            .readings
+            .iter()
+            .map(|r| {
+                (
+                    r.code,
+                    r.code.likely_intended(),
+                    Source {
+                        quantities: quantities(
+                            problem,
+                            r.intersection.as_ref(),
+                            Some(&r.evaluation),
+                        ),
+                    },
+                )
+            })
+            .collect();
+        let slips = slips::single_solutions(problem)
+            .into_iter()
+            .map(|(slip, s)| (slip, Source::of(problem, &s)))
+            .collect();
+        let ambient_lights: Vec<usize> =
+            problem.ambient_info.iter().map(|a| a.file_index).collect();
+        Ok(StepsExpected {
+            written,
+            readings,
+            slips,
+            first_light: problem.light_info.first().map(|l| l.file_index),
+            lights_in_file: problem.light_info.len() + ambient_lights.len(),
+            ambient_lights,
+        })
+    }
+
+    /// The light a step means (its `[i]`, or the first light that is not ambient), or why it
+    /// means none.
+    fn light_of(&self, step: &GivenStep) -> Result<Option<usize>, String> {
+        if !step.name.per_light {
+            return Ok(None);
+        }
+        match step.light {
+            None => self.first_light.map(Some).ok_or_else(|| {
+                format!(
+                    "{}: the problem has no light other than ambient light, so no {}",
+                    step.text, step.name.name
+                )
+            }),
+            Some(i) if self.ambient_lights.contains(&i) => Err(format!(
+                "{}: lights[{i}] is an ambient light, which has no {}. Fix: give the index of a \
+                 point, directional or spot light",
+                step.text, step.name.name
+            )),
+            Some(i) if i >= self.lights_in_file => Err(format!(
+                "{}: there is no lights[{i}]: the file has {} light{}, from lights[0]",
+                step.text,
+                self.lights_in_file,
+                if self.lights_in_file == 1 { "" } else { "s" }
+            )),
+            Some(i) => Ok(Some(i)),
+        }
+    }
+}
+
+/// The verdict on one step.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum StepVerdict {
+    /// Within the tolerance of the problem as written.
+    Right,
+    /// Wrong as written, and the value of the likely intended reading.
+    Reading,
+    /// Neither.
+    Wrong,
+}
+
+/// One step judged.
+#[derive(Clone, Debug, PartialEq)]
+pub struct JudgedStep {
+    /// The step as given.
+    pub given: GivenStep,
+    /// The light it was judged for (file index).
+    pub light: Option<usize>,
+    /// Right, the likely intended reading's, or wrong.
+    pub verdict: StepVerdict,
+    /// The quantity as written (or, when the problem as written has none, as the likely
+    /// intended reading has it), for the order and the expected value.
+    pub expected: Quantity,
+    /// Whether `expected` is the likely intended reading's (the problem as written has no such
+    /// quantity: 4.3's ray hits nothing).
+    pub expected_from_reading: Option<ReadingCode>,
+    /// The likely intended reading's value, when the step matched it (verdict `reading`).
+    pub reading: Option<ReadingCode>,
+    /// The given value is the expected one with its sign reversed.
+    pub sign: bool,
+    /// The given value is the ungated one (Eq. 4.16 taken literally).
+    pub literal: bool,
+    /// Another reading (not the likely intended one) whose value it is.
+    pub other_reading: Option<ReadingCode>,
+    /// Slips whose value it is.
+    pub slips: Vec<Slip>,
+}
+
+impl JudgedStep {
+    /// The step's name with its light (`cos_theta[0]`).
+    pub fn label(&self) -> String {
+        match self.light {
+            Some(i) => format!("{}[{i}]", self.given.name.name),
+            None => self.given.name.name.to_owned(),
+        }
+    }
+}
+
+/// The steps of one file, judged.
+#[derive(Clone, Debug, PartialEq)]
+pub struct StepsJudged {
+    /// In the order of the solution.
+    pub steps: Vec<JudgedStep>,
+    /// The first step (in the order of the solution) that is not right as written.
+    pub first_wrong: Option<usize>,
+    /// Exit 0: every step right, or right in the likely intended reading without `--strict`.
+    pub accepted: bool,
+}
+
+/// Judges the steps against a solved problem; a step that names a quantity this problem does
+/// not have is an error (the message says which it has).
+pub fn judge_steps(
+    x: &StepsExpected,
+    given: &[GivenStep],
+    strict: bool,
+) -> Result<StepsJudged, String> {
+    let mut steps = Vec::new();
+    for g in given {
+        let light = x.light_of(g)?;
+        let intended = x.readings.iter().find(|(_, likely, _)| *likely);
+        let written = x.written.find(g.name, light);
+        let in_reading = intended.and_then(|(c, _, s)| s.find(g.name, light).map(|q| (*c, q)));
+        let (expected, from_reading) = match (written, in_reading) {
+            (Some(q), _) => (*q, None),
+            (None, Some((c, q))) => (*q, Some(c)),
+            (None, None) => {
+                let has: Vec<&str> = {
+                    let mut v: Vec<&str> =
+                        x.written.quantities.iter().map(|q| q.name.name).collect();
+                    v.dedup();
+                    v
+                };
+                return Err(format!(
+                    "{}: this problem has no {} ({}). Fix: check a step it has: {}",
+                    g.text,
+                    g.name.name,
+                    g.name.formula,
+                    has.join(", ")
+                ));
+            }
+        };
+        let mut j = JudgedStep {
+            given: g.clone(),
+            light,
+            verdict: StepVerdict::Wrong,
+            expected,
+            expected_from_reading: from_reading,
+            reading: None,
+            sign: false,
+            literal: false,
+            other_reading: None,
+            slips: Vec::new(),
+        };
+        if written.is_some_and(|q| within(g.value, q.value)) {
+            j.verdict = StepVerdict::Right;
+        } else if let Some((c, q)) = in_reading.filter(|(_, q)| within(g.value, q.value)) {
+            let _ = q;
+            j.verdict = StepVerdict::Reading;
+            j.reading = Some(c);
+        }
+        if j.verdict != StepVerdict::Right {
+            if let Some(q) = written {
+                j.sign = within(g.value.negated(), q.value) && !within(g.value, q.value);
+                j.literal = q.literal.is_some_and(|l| within(g.value, l));
+            }
+            j.other_reading = x
+                .readings
+                .iter()
+                .filter(|(c, likely, _)| !likely && Some(*c) != j.reading)
+                .find(|(_, _, s)| {
+                    s.find(g.name, light)
+                        .is_some_and(|q| within(g.value, q.value))
+                })
+                .map(|(c, _, _)| *c);
+            if j.verdict == StepVerdict::Wrong {
+                j.slips = x
+                    .slips
+                    .iter()
+                    .filter(|(_, s)| {
+                        s.find(g.name, light)
+                            .is_some_and(|q| within(g.value, q.value))
+                    })
+                    .map(|(slip, _)| *slip)
+                    .collect();
+            }
+        }
+        steps.push(j);
+    }
+    steps.sort_by_key(|s| s.expected.order);
+    let first_wrong = steps.iter().position(|s| s.verdict != StepVerdict::Right);
+    let accepted = steps.iter().all(|s| match s.verdict {
+        StepVerdict::Right => true,
+        StepVerdict::Reading => !strict,
+        StepVerdict::Wrong => false,
+    });
+    Ok(StepsJudged {
+        steps,
+        first_wrong,
+        accepted,
+    })
+}
+
+/// The steps of one file checked, or why they could not be.
+#[derive(Clone, Debug)]
+pub struct StepsChecked {
+    /// The problem file, as given.
+    pub file: String,
+    /// The steps judged, or why they could not be.
+    pub outcome: Result<StepsJudged, Failure>,
+    /// Likely unit mistakes in the problem file (never errors).
+    pub warnings: Vec<crate::problem::warnings::Warning>,
+}
+
+impl StepsChecked {
+    /// Accepted (every step right, or right in the likely intended reading without `--strict`),
+    /// refused (a wrong step, or a reading's under `--strict`), or not checked.
+    pub fn status(&self) -> super::report::Status {
+        use super::report::Status;
+        match &self.outcome {
+            Ok(j) if j.accepted => Status::Accepted,
+            Ok(_) => Status::Refused,
+            Err(_) => Status::Unchecked,
+        }
+    }
+}
+
+/// Checks the steps of one problem file.
+pub fn check_steps(path: &Path, given: &[GivenStep], strict: bool) -> StepsChecked {
+    let file = path.display().to_string();
+    let mut warnings = Vec::new();
+    let outcome = crate::problem::load::<f64>(path)
+        .map_err(|e| Failure::problem(&e))
+        .and_then(|(_, p)| {
+            warnings.clone_from(&p.warnings);
+            StepsExpected::of(&p).map_err(|e| Failure::problem(&e.at(path)))
+        })
+        .and_then(|x| {
+            judge_steps(&x, given, strict).map_err(|m| Failure {
+                kind: FailureKind::Answer,
+                field: Some("--step".into()),
+                message: format!("{file}: --step: {m}"),
+            })
+        });
+    StepsChecked {
+        file,
+        outcome,
+        warnings,
+    }
+}
+
+/// "Eq. 4.7: cos θ = −N·L", or the formula alone.
+fn equation(q: &Quantity, lang: Lang) -> String {
+    let eq = match lang {
+        Lang::En => "Eq.",
+        Lang::Pt => "Eq.",
+    };
+    match q.equation {
+        Some(n) => format!("{eq} {n}: {}", q.name.formula),
+        None => q.name.formula.to_owned(),
+    }
+}
+
+/// The sentence on one step: its verdict, its equation, and what the value is when it is
+/// not right as written.
+pub fn step_message(s: &JudgedStep, lang: Lang) -> String {
+    let mut out = format!(
+        "{} ({})",
+        messages::step_verdict(s.verdict, lang),
+        equation(&s.expected, lang)
+    );
+    let exact = s.expected.value.text();
+    let mut parts = Vec::new();
+    match (s.verdict, s.expected_from_reading) {
+        (StepVerdict::Right, None) => {}
+        (StepVerdict::Right | StepVerdict::Reading, Some(c)) => {
+            parts.push(messages::step_no_hit(c, lang));
+        }
+        (_, from) => {
+            let mut p = messages::step_exact(&exact, from, lang);
+            if s.sign {
+                p.push_str(messages::step_sign(s.expected.value.is_vector(), lang));
+            }
+            parts.push(p);
+            if let Some(c) = s.reading {
+                parts.push(messages::step_reading(c, lang));
+            }
+        }
+    }
+    if s.verdict != StepVerdict::Right {
+        if s.literal {
+            parts.push(messages::step_literal(lang).to_owned());
+        }
+        if let Some(c) = s.other_reading {
+            parts.push(messages::step_other_reading(c, lang));
+        }
+        if !s.slips.is_empty() {
+            parts.push(messages::step_slips(&s.slips, lang));
+        }
+    }
+    if !parts.is_empty() {
+        out.push_str(": ");
+        out.push_str(&parts.join("; "));
+    }
+    out
+}
+
+/// The text report of one file's steps.
+pub fn text(c: &StepsChecked, lang: Lang) -> String {
+    let mut out = String::new();
+    let Ok(j) = &c.outcome else {
+        return out;
+    };
+    let _ = writeln!(out, "{}: {}", c.file, messages::steps_heading(lang));
+    let width = j
+        .steps
+        .iter()
+        .map(|s| s.label().chars().count())
+        .max()
+        .unwrap_or(0)
+        .max(8)
+        + 2;
+    for s in &j.steps {
+        let label = s.label();
+        let pad = width - label.chars().count();
+        let _ = writeln!(
+            out,
+            "  {label}{} = {}  {}",
+            " ".repeat(pad),
+            s.given.value.text(),
+            step_message(s, lang)
+        );
+    }
+    match j.first_wrong {
+        Some(k) => {
+            let s = &j.steps[k];
+            let _ = writeln!(
+                out,
+                "  {}",
+                messages::first_wrong(
+                    &s.label(),
+                    &equation(&s.expected, lang),
+                    s.verdict == StepVerdict::Reading,
+                    lang
+                )
+            );
+        }
+        None => {
+            let _ = writeln!(out, "  {}", messages::all_steps_right(lang));
+        }
+    }
+    let _ = writeln!(
+        out,
+        "  {}",
+        messages::step_tolerance(STEP_RELATIVE, STEP_ABSOLUTE, lang)
+    );
+    out
+}
+
+/// One step, for scripts.
+#[derive(Serialize)]
+pub struct StepOut {
+    /// The step's name (`cos_theta`).
+    pub name: &'static str,
+    /// The light's index in the file's `lights`, for a light's quantity.
+    pub light: Option<usize>,
+    /// As the student wrote it.
+    pub text: String,
+    /// The chapter's equation, when it numbers one.
+    pub equation: Option<&'static str>,
+    /// The formula, in the chapter's symbols.
+    pub formula: &'static str,
+    /// The value given.
+    pub given: Value,
+    /// The quantity as written (or in the likely intended reading, when the problem as written
+    /// has none: see `expected_source`).
+    pub expected: Value,
+    /// "solution" or "reading".
+    pub expected_source: &'static str,
+    /// "right", "reading" or "wrong".
+    pub verdict: StepVerdict,
+    /// The likely intended reading the value matches (verdict "reading").
+    pub reading: Option<ReadingCode>,
+    /// The value is the expected one with the sign reversed.
+    pub sign_reversed: bool,
+    /// The value is the ungated one.
+    pub literal: bool,
+    /// Another reading whose value it is.
+    pub other_reading: Option<ReadingCode>,
+    /// Slips whose value it is.
+    pub slips: Vec<Slip>,
+    /// In words (English).
+    pub message: String,
+}
+
+/// The first wrong step, for scripts.
+#[derive(Serialize)]
+pub struct FirstWrongOut {
+    /// The step's name.
+    pub name: &'static str,
+    /// The light's index in the file's `lights`, for a light's quantity.
+    pub light: Option<usize>,
+    /// The chapter's equation, when it numbers one.
+    pub equation: Option<&'static str>,
+    /// The formula, in the chapter's symbols.
+    pub formula: &'static str,
+}
+
+/// The tolerance of every step.
+#[derive(Serialize)]
+pub struct StepToleranceOut {
+    /// The fraction of the quantity's size accepted (0.01).
+    pub relative: f64,
+    /// The difference accepted near 0 (0.005).
+    pub absolute: f64,
+}
+
+/// A file's steps, for scripts.
+#[derive(Serialize)]
+pub struct StepsOut {
+    /// Every step right, or the likely intended reading's without `--strict` (exit 0).
+    pub accepted: bool,
+    /// The tolerance of every step.
+    pub tolerance: StepToleranceOut,
+    /// In the order of the solution.
+    pub steps: Vec<StepOut>,
+    /// The first step that is not right as written; `null` when all are.
+    pub first_wrong: Option<FirstWrongOut>,
+}
+
+/// The steps as JSON (`None` when they could not be checked: the error says why).
+pub fn steps_json(j: &StepsJudged) -> StepsOut {
+    StepsOut {
+        accepted: j.accepted,
+        tolerance: StepToleranceOut {
+            relative: STEP_RELATIVE,
+            absolute: STEP_ABSOLUTE,
+        },
+        steps: j
+            .steps
+            .iter()
+            .map(|s| StepOut {
+                name: s.given.name.name,
+                light: s.light,
+                text: s.given.text.clone(),
+                equation: s.expected.equation,
+                formula: s.given.name.formula,
+                given: s.given.value,
+                expected: s.expected.value,
+                expected_source: if s.expected_from_reading.is_some() {
+                    "reading"
+                } else {
+                    "solution"
+                },
+                verdict: s.verdict,
+                reading: s.reading,
+                sign_reversed: s.sign,
+                literal: s.literal,
+                other_reading: s.other_reading,
+                slips: s.slips.clone(),
+                message: step_message(s, Lang::En),
+            })
+            .collect(),
+        first_wrong: j.first_wrong.map(|k| {
+            let s = &j.steps[k];
+            FirstWrongOut {
+                name: s.given.name.name,
+                light: s.light,
+                equation: s.expected.equation,
+                formula: s.given.name.formula,
+            }
+        }),
+    }
+}
+
+/// The JSON document of a steps-only check (no `--answer`).
+#[derive(Serialize)]
+pub struct StepsDocument {
+    /// The version of the JSON of `phong check` and `phong grade`.
+    pub format_version: u32,
+    /// The problem file, as given.
+    pub file: String,
+    /// "right" (every step), "reading", "wrong" or "invalid".
+    pub verdict: &'static str,
+    /// Exit 0: every step right, or the likely intended reading's without `--strict`.
+    pub accepted: bool,
+    /// The steps; `null` when they could not be checked.
+    pub steps: Option<StepsOut>,
+    /// Why the steps could not be checked.
+    pub error: Option<Failure>,
+    /// Likely unit mistakes in the problem file; absent when there are none.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub warnings: Vec<crate::report::json::WarningOut>,
+}
+
+/// The verdict of a file's steps as a whole: the worst step's.
+pub fn overall(j: &StepsJudged) -> &'static str {
+    if j.steps.iter().any(|s| s.verdict == StepVerdict::Wrong) {
+        "wrong"
+    } else if j.steps.iter().any(|s| s.verdict == StepVerdict::Reading) {
+        "reading"
+    } else {
+        "right"
+    }
+}
+
+/// The steps-only JSON document.
+pub fn document(c: &StepsChecked) -> StepsDocument {
+    match &c.outcome {
+        Ok(j) => StepsDocument {
+            format_version: CHECK_FORMAT_VERSION,
+            file: c.file.clone(),
+            verdict: overall(j),
+            accepted: j.accepted,
+            steps: Some(steps_json(j)),
+            error: None,
+            warnings: crate::report::json::warnings_out(&c.warnings),
+        },
+        Err(f) => StepsDocument {
+            format_version: CHECK_FORMAT_VERSION,
+            file: c.file.clone(),
+            verdict: "invalid",
+            accepted: false,
+            steps: None,
+            error: Some(f.clone()),
+            warnings: Vec::new(),
+        },
+    }
+}
