@@ -34,7 +34,7 @@ pub trait Real:
     /// The three-component vector of this precision (also used for RGB colours).
     type Vec3: Vector<Self>;
     /// The lanes of this precision in one 256-bit register (8 × f32, 4 × f64), for the wide
-    /// tracer ([`super::lanes`]).
+    /// tracer ([`Wide`](super::Wide)).
     type Wide: super::lanes::Wide<Scalar = Self>;
     /// `"f32"` or `"f64"`, as the CLI and the JSON output name it.
     const NAME: &'static str;
