@@ -1,6 +1,7 @@
-//! The tracer on whole images: the classic scene and 100,000 spheres, f32 and f64, 1 and 2
-//! threads, 640×480, maximum level 5, one sample per pixel. Criterion reports rays per second
-//! (primary + reflection + shadow rays). Run with `cargo bench --bench render`.
+//! The tracer on whole images: the classic scene and 100,000 spheres, f32 and f64, the scalar
+//! and the wide engine, 1 and 2 threads, 640×480, maximum level 5, one sample per pixel.
+//! Criterion reports rays per second (primary + reflection + shadow rays), one id per
+//! `render/<scene>/<precision>-<engine>/<threads>`. Run with `cargo bench --bench render`.
 //!
 //! The BVH build is measured apart (`build/…`), so `render/…` is the trace alone.
 
@@ -11,7 +12,7 @@ use std::time::Duration;
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
 use phong::core::Real;
 use phong::problem::{self, validate, Problem};
-use phong::tracer::{render, Scene};
+use phong::tracer::{render_with, Engine, Scene};
 
 #[path = "../scenes/many_spheres.rs"]
 mod many_spheres;
@@ -32,7 +33,7 @@ fn bench_precision<R: Real>(c: &mut Criterion, scenes: &[(&str, String)]) {
         group.finish();
 
         let scene = Scene::new(&problem);
-        let (_, counts) = render(&problem, &camera, &scene, &|| {});
+        let (_, counts) = render_with(Engine::Scalar, &problem, &camera, &scene, &|| {});
         let mut group = c.benchmark_group(format!("render/{name}"));
         group.sample_size(10);
         group.warm_up_time(Duration::from_secs(1));
@@ -43,11 +44,21 @@ fn bench_precision<R: Real>(c: &mut Criterion, scenes: &[(&str, String)]) {
                 .num_threads(threads)
                 .build()
                 .expect("a thread pool");
-            group.bench_with_input(
-                BenchmarkId::new(R::NAME, format!("{threads} thread(s)")),
-                &threads,
-                |b, _| b.iter(|| pool.install(|| render(&problem, &camera, &scene, &|| {}))),
-            );
+            // The engines side by side, alternating, so a load on the machine hits both.
+            for engine in [Engine::Scalar, Engine::Wide] {
+                group.bench_with_input(
+                    BenchmarkId::new(
+                        format!("{}-{}", R::NAME, engine.name()),
+                        format!("{threads} thread(s)"),
+                    ),
+                    &threads,
+                    |b, _| {
+                        b.iter(|| {
+                            pool.install(|| render_with(engine, &problem, &camera, &scene, &|| {}))
+                        })
+                    },
+                );
+            }
         }
         group.finish();
     }

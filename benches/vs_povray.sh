@@ -35,17 +35,21 @@ command_for() {
 }
 
 echo "machine: $(nproc) cores, load average $(cut -d' ' -f1-3 /proc/loadavg); $(povray --version 2>&1 | grep -m1 '^POV-Ray')"
-echo "phong:   ${phong_cmd[*]} --precision f64|f32 --stats"
+echo "phong:   ${phong_cmd[*]} --precision f64|f32 [--engine scalar] --stats"
 echo "POV-Ray: ${pov_cmd[*]} (+ render statistics on stderr)"
 echo
 
 : >"$work/pov.txt"
 : >"$work/pov-cpu.txt"
-for p in f64 f32; do : >"$work/phong-$p.txt"; done
+# The default (wide) engine and the scalar one, side by side.
+engines="wide scalar"
+for e in $engines; do for p in f64 f32; do : >"$work/phong-$p-$e.txt"; done; done
 for ((i = 0; i < runs; i++)); do
-  for p in f64 f32; do
-    "${phong_cmd[@]}" --precision "$p" --stats 2>&1 |
-      sed -n 's/.* in \([0-9.]*\) s: .*/\1/p' >>"$work/phong-$p.txt"
+  for e in $engines; do
+    for p in f64 f32; do
+      "${phong_cmd[@]}" --precision "$p" --engine "$e" --stats 2>&1 |
+        sed -n 's/.* in \([0-9.]*\) s: .*/\1/p' >>"$work/phong-$p-$e.txt"
+    done
   done
   # POV-Ray: "Trace Time: 0 hours 0 minutes 0 seconds (0.688 seconds)", printed only with its
   # output streams on (-GA silences it), so this run drops -GA -V.
@@ -58,9 +62,11 @@ pov=$(median <"$work/pov.txt")
 pov_cpu=$(median <"$work/pov-cpu.txt")
 echo "trace time, median of $runs (seconds):"
 printf '  POV-Ray        %8.3f   (its CPU time for the trace: %.3f s)\n' "$pov" "$pov_cpu"
-for p in f64 f32; do
-  t=$(median <"$work/phong-$p.txt")
-  printf '  phong %s      %8.3f   POV-Ray / phong = %5.2f×   (target ≥ 4×)\n' "$p" "$t" "$(echo "$pov / $t" | bc -l)"
+for e in $engines; do
+  for p in f64 f32; do
+    t=$(median <"$work/phong-$p-$e.txt")
+    printf '  phong %s %-6s %8.3f   POV-Ray / phong = %5.2f×   (target ≥ 4×)\n' "$p" "$e" "$t" "$(echo "$pov / $t" | bc -l)"
+  done
 done
 echo
 

@@ -175,6 +175,10 @@ pub(crate) struct RenderArgs {
     /// Worker threads, 1 to 1024 (default: one per core). The image is the same for any number.
     #[arg(long, value_name = "N", value_parser = parse_threads)]
     pub(crate) threads: Option<usize>,
+    /// The tracer: packets of rays in SIMD lanes with queues per bounce (wide), or one ray at a
+    /// time (scalar). The image is the same bytes by either; --explain-pixel is always scalar.
+    #[arg(long, value_enum, default_value_t = crate::tracer::Engine::Wide)]
+    pub(crate) engine: crate::tracer::Engine,
     /// Explain pixel X,Y (from the top-left corner, 0-based) step by step instead of writing
     /// the image: its rays, each hit solved as `phong solve` solves a ray problem.
     #[arg(long, value_name = "X,Y", value_parser = parse_pixel)]

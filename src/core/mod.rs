@@ -19,6 +19,7 @@
 //! Everything is generic over [`Real`] (f32 or f64) from one source.
 
 pub(crate) mod color;
+pub(crate) mod lanes;
 pub(crate) mod light;
 pub(crate) mod material;
 pub mod real;
@@ -26,6 +27,7 @@ pub(crate) mod rounding;
 pub(crate) mod shade;
 pub(crate) mod vector;
 
+pub use lanes::Wide;
 pub use light::{Arrival, Cone, ConeTest, Falloff, Light, LightKind, LightSet, Reach};
 pub use material::Material;
 pub use real::{Precision, Real, Vector, V3};

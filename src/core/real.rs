@@ -33,6 +33,9 @@ pub trait Real:
 {
     /// The three-component vector of this precision (also used for RGB colours).
     type Vec3: Vector<Self>;
+    /// The lanes of this precision in one 256-bit register (8 × f32, 4 × f64), for the wide
+    /// tracer ([`Wide`](super::Wide)).
+    type Wide: super::lanes::Wide<Scalar = Self>;
     /// `"f32"` or `"f64"`, as the CLI and the JSON output name it.
     const NAME: &'static str;
     /// The number 0 in this precision.
@@ -149,9 +152,10 @@ pub trait Vector<R>:
 }
 
 macro_rules! impl_real {
-    ($t:ty, $v:ty, $name:literal) => {
+    ($t:ty, $v:ty, $w:ty, $name:literal) => {
         impl Real for $t {
             type Vec3 = $v;
+            type Wide = $w;
             const NAME: &'static str = $name;
             const ZERO: Self = 0.0;
             const ONE: Self = 1.0;
@@ -303,8 +307,8 @@ macro_rules! impl_real {
     };
 }
 
-impl_real!(f32, glam::Vec3, "f32");
-impl_real!(f64, glam::DVec3, "f64");
+impl_real!(f32, glam::Vec3, wide::f32x8, "f32");
+impl_real!(f64, glam::DVec3, wide::f64x4, "f64");
 
 /// Shorthand for the vector type of a precision.
 pub type V3<R> = <R as Real>::Vec3;

@@ -13,7 +13,7 @@ use super::{Ray, Shape};
 use crate::core::Real;
 
 /// Up to this many bounded shapes are tested in a plain loop rather than through the BVH.
-const FLAT: usize = 8;
+pub(crate) const FLAT: usize = 8;
 
 /// The surfaces of a scene, indexed in the order given.
 #[derive(Clone, Debug)]
@@ -61,6 +61,11 @@ impl<R: Real> Aggregate<R> {
             unbounded,
             bounded,
         }
+    }
+
+    /// The shapes, in the order given (the wide tracer's `FlatScene` lays them out in lanes).
+    pub(crate) fn shapes(&self) -> &[Shape<R>] {
+        &self.shapes
     }
 
     /// The nearest hit with 0 < t < `t_max`.

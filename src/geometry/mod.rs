@@ -14,6 +14,7 @@ pub(crate) mod hit;
 pub(crate) mod plane;
 pub(crate) mod ray;
 pub(crate) mod shadow;
+pub(crate) mod soa;
 pub(crate) mod sphere;
 pub(crate) mod triangle;
 

@@ -8,6 +8,7 @@
 //! - `sampler`: where in the pixel each sample goes (stratified, deterministic).
 //! - `trace`: one ray's path (the hot path, and the same path recorded for an explanation).
 //! - [`render`](mod@render): the image, rows in parallel, bytes independent of the thread count.
+//! - `wide`: the same paths traced in packets of lanes, queues per bounce (the default engine).
 //! - `explain`: one pixel's derivation, every ray solved by the solver.
 //! - [`output`]: PNG and PPM files.
 
@@ -17,9 +18,11 @@ pub mod output;
 pub mod render;
 pub(crate) mod sampler;
 pub(crate) mod trace;
+pub(crate) mod wide;
 
 pub use camera::CameraRays;
 pub use explain::{explain_pixel, PixelExplanation, RayExplanation, SampleExplanation};
-pub use render::{render, Image};
+pub use render::{render, render_with, Image};
 pub(crate) use render::{render_linear, LinearImage};
 pub use trace::{Counts, PathRecorder, RayRecord, Scene, Spawn, Stop, Tracer};
+pub use wide::Engine;

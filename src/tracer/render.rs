@@ -7,9 +7,11 @@ use rayon::prelude::*;
 use super::camera::CameraRays;
 use super::sampler::sample;
 use super::trace::{Counts, Scene, Tracer};
+use super::wide::{self, Engine};
 use crate::core::color::{clamp01, rgb8};
 use crate::core::real::to_f64_array;
 use crate::core::{Real, V3};
+use crate::geometry::soa::FlatScene;
 use crate::problem::{Camera, Problem};
 
 /// An 8-bit RGB image, rows top to bottom.
@@ -32,7 +34,7 @@ pub(crate) fn to_rgb8(sum: [f64; 3], samples: u32) -> [u8; 3] {
 
 /// The mean of `samples` summed values.
 #[inline]
-fn mean(sum: [f64; 3], samples: u32) -> [f64; 3] {
+pub(crate) fn mean(sum: [f64; 3], samples: u32) -> [f64; 3] {
     sum.map(|c| c / f64::from(samples))
 }
 
@@ -73,8 +75,10 @@ pub(crate) struct LinearImage {
     pub rgb: Vec<f64>,
 }
 
-/// Every pixel mapped by `each` from its mean, rows in parallel and gathered by index.
+/// Every pixel mapped by `each` from its mean, rows in parallel and gathered by index; the
+/// rows traced by `engine` (the same means either way).
 fn render_rows<R: Real, T: Copy + Send>(
+    engine: Engine,
     problem: &Problem<R>,
     camera: &Camera<R>,
     scene: &Scene<R>,
@@ -84,13 +88,30 @@ fn render_rows<R: Real, T: Copy + Send>(
     let rays = CameraRays::new(camera);
     let tracer = Tracer { scene, problem };
     let width = camera.width;
+    let flat = match engine {
+        Engine::Scalar => None,
+        Engine::Wide => Some(FlatScene::new(&scene.aggregate)),
+    };
     let rows: Vec<(Vec<T>, Counts)> = (0..camera.height)
         .into_par_iter()
         .map(|y| {
             let mut counts = Counts::default();
             let mut row = Vec::with_capacity(width as usize * 3);
-            for x in 0..width {
-                row.extend_from_slice(&each(pixel_mean(&tracer, &rays, x, y, &mut counts)));
+            match &flat {
+                None => {
+                    for x in 0..width {
+                        row.extend_from_slice(&each(pixel_mean(&tracer, &rays, x, y, &mut counts)));
+                    }
+                }
+                Some(flat) => wide::row(
+                    &tracer,
+                    flat.as_ref(),
+                    &rays,
+                    y,
+                    &mut counts,
+                    &each,
+                    &mut row,
+                ),
             }
             progress();
             (row, counts)
@@ -105,14 +126,26 @@ fn render_rows<R: Real, T: Copy + Send>(
     (all, counts)
 }
 
-/// Renders the image with the problem's render settings. `progress` is called once per finished row (from any thread).
+/// Renders the image with the problem's render settings and the default [`Engine`]. `progress`
+/// is called once per finished row (from any thread).
 pub fn render<R: Real>(
     problem: &Problem<R>,
     camera: &Camera<R>,
     scene: &Scene<R>,
     progress: &(dyn Fn() + Sync),
 ) -> (Image, Counts) {
-    let (rgb, counts) = render_rows(problem, camera, scene, progress, rgb8);
+    render_with(Engine::default(), problem, camera, scene, progress)
+}
+
+/// [`render`] by the given engine (the same image by either).
+pub fn render_with<R: Real>(
+    engine: Engine,
+    problem: &Problem<R>,
+    camera: &Camera<R>,
+    scene: &Scene<R>,
+    progress: &(dyn Fn() + Sync),
+) -> (Image, Counts) {
+    let (rgb, counts) = render_rows(engine, problem, camera, scene, progress, rgb8);
     let image = Image {
         width: camera.width,
         height: camera.height,
@@ -121,14 +154,26 @@ pub fn render<R: Real>(
     (image, counts)
 }
 
-/// Renders the pixel means, before rounding to 8 bits (`render` is this, rounded).
+/// Renders the pixel means, before rounding to 8 bits (`render` is this, rounded), with the
+/// default [`Engine`].
 pub(crate) fn render_linear<R: Real>(
     problem: &Problem<R>,
     camera: &Camera<R>,
     scene: &Scene<R>,
     progress: &(dyn Fn() + Sync),
 ) -> (LinearImage, Counts) {
-    let (rgb, counts) = render_rows(problem, camera, scene, progress, |m| m);
+    render_linear_with(Engine::default(), problem, camera, scene, progress)
+}
+
+/// [`render_linear`] by the given engine (the same means by either).
+pub(crate) fn render_linear_with<R: Real>(
+    engine: Engine,
+    problem: &Problem<R>,
+    camera: &Camera<R>,
+    scene: &Scene<R>,
+    progress: &(dyn Fn() + Sync),
+) -> (LinearImage, Counts) {
+    let (rgb, counts) = render_rows(engine, problem, camera, scene, progress, |m| m);
     let image = LinearImage {
         width: camera.width,
         height: camera.height,

@@ -10,7 +10,7 @@
 
 use crate::core::vector::normalize;
 use crate::core::{shade, Material, NoRecord, Real, ShadingPoint, Vector, V3};
-use crate::geometry::{Aggregate, AggregateHit, Ray};
+use crate::geometry::{Aggregate, AggregateHit, Ray, SurfaceHit};
 use crate::problem::Problem;
 
 /// The geometry and materials of a scene, built once for a render.
@@ -139,6 +139,51 @@ pub struct Tracer<'a, R: Real> {
     pub problem: &'a Problem<R>,
 }
 
+/// Where a path stands between two bounces: the ray to trace next and what it carries. The
+/// scalar [`Tracer::trace`] keeps one; the wide tracer keeps a queue of them per bounce
+/// (`tracer::wide`), both stepping them with [`Tracer::bounce`].
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) struct PathState<R: Real> {
+    /// The ray to trace next.
+    pub ray: Ray<R>,
+    /// The product of the O_r of the hits before this ray.
+    pub factor: V3<R>,
+    /// w: 1 for the primary ray, w_p·max(O_r) for a reflection ray.
+    pub weight: R,
+    /// 1 for the primary ray.
+    pub level: u32,
+    /// For a reflection ray, where it left from.
+    pub spawn: Option<Spawn<R>>,
+}
+
+impl<R: Real> PathState<R> {
+    /// A path at its primary ray.
+    #[inline]
+    pub(crate) fn primary(ray: Ray<R>) -> Self {
+        PathState {
+            ray,
+            factor: V3::<R>::splat(R::ONE),
+            weight: R::ONE,
+            level: 1,
+            spawn: None,
+        }
+    }
+}
+
+/// A hit's shadow rays as the core asks them ([`crate::core::Visibility`]), and how many were
+/// traced.
+pub(crate) trait CountedVisibility<R: Real>: crate::core::Visibility<R> {
+    /// The shadow rays traced so far.
+    fn traced(&self) -> u64;
+}
+
+impl<R: Real> CountedVisibility<R> for crate::geometry::shadow::ShadowRays<'_, R> {
+    #[inline]
+    fn traced(&self) -> u64 {
+        self.traced
+    }
+}
+
 impl<R: Real> Tracer<'_, R> {
     /// The colour seen along a primary ray, unclamped.
     #[inline]
@@ -149,92 +194,117 @@ impl<R: Real> Tracer<'_, R> {
         rec: &mut impl PathRecorder<R>,
     ) -> V3<R> {
         let infinity = R::from_f64(f64::INFINITY);
-        let lights = &self.problem.lights;
+        let aggregate = &self.scene.aggregate;
         let mut color = V3::<R>::ZERO;
-        let mut factor = V3::<R>::splat(R::ONE);
-        let mut weight = R::ONE;
-        let mut level = 1;
-        let mut ray = primary;
-        let mut spawn = None;
+        let mut path = PathState::primary(primary);
         counts.primary += 1;
         loop {
-            let mut record = RayRecord {
-                level,
-                weight,
-                factor,
-                ray,
-                spawn,
-                hit: None,
-                local: self.problem.background,
-                o_r: None,
-                next_weight: None,
-                stop: Some(Stop::Miss),
-            };
             // The nearest hit in front of the origin; a miss sees the background.
-            let Some(h) = self.scene.aggregate.nearest(&ray, infinity) else {
-                color += factor * self.problem.background;
-                rec.ray(&record);
-                return color;
-            };
-            record.hit = Some(h);
-            let m = &self.scene.materials[h.index];
-            // N turned to face the incoming ray; V is the ray's direction (Eq. 4.10).
-            let n = h.hit.facing(ray.direction).normal;
-            let at = ShadingPoint {
-                p: h.hit.p,
-                n,
-                v: Some(ray.direction),
-            };
-            // The local colour, Eq. 4.16, by the core.
-            let mut shadows = self
-                .problem
-                .render
-                .shadows
-                .then(|| h.hit.shadow_rays(&self.scene.aggregate));
-            let local = shade(&at, m, lights, &mut shadows, &mut NoRecord).color;
-            counts.shadow += shadows.map_or(0, |s| s.traced);
-            color += factor * local;
-            record.local = local;
-            record.o_r = m.o_r;
-            // A reflection ray only where O_r ≠ 0, its level ≤ the maximum and its weight
-            // w_s = w_p·max(O_r) above the minimum (docs/conventions.md, "Recursion level",
-            // "Weight").
-            record.stop = match m.o_r {
-                None => Some(Stop::NotReflective),
-                Some(o_r) if o_r == V3::<R>::ZERO => Some(Stop::NotReflective),
-                Some(o_r) => {
-                    let w_s = weight * o_r.max_element();
-                    record.next_weight = Some(w_s);
-                    if level >= self.problem.render.max_level {
-                        Some(Stop::MaxLevel)
-                    } else if w_s <= self.problem.render.min_weight {
-                        Some(Stop::MinWeight)
-                    } else {
-                        None
-                    }
-                }
-            };
-            rec.ray(&record);
-            if record.stop.is_some() {
+            let found = aggregate.nearest(&path.ray, infinity);
+            let (share, more) =
+                self.bounce(&mut path, found, |h| h.shadow_rays(aggregate), counts, rec);
+            color += share;
+            if !more {
                 return color;
             }
-            let o_r = m.o_r.expect("a reflection ray needs O_r");
-            // The reflection direction R_V = V − 2(N·V)N, Eq. 4.17.
-            let r_v = ray.direction - n * (R::TWO * n.dot(ray.direction));
-            let Some(r_v) = normalize::<R>(r_v) else {
-                return color;
-            };
-            ray = h.hit.spawn_ray(r_v.unit);
-            spawn = Some(Spawn {
+        }
+    }
+
+    /// One step of a path whose ray found `found` (its nearest hit, or a miss): the ray's share
+    /// of the pixel (the factor times the local colour, or times the background on a miss), and
+    /// whether a reflection ray follows, in which case `path` now holds it. `shadows` makes the
+    /// hit's shadow rays (asked only with shadows on).
+    #[inline]
+    pub(crate) fn bounce<V: CountedVisibility<R>>(
+        &self,
+        path: &mut PathState<R>,
+        found: Option<AggregateHit<R>>,
+        shadows: impl FnOnce(&SurfaceHit<R>) -> V,
+        counts: &mut Counts,
+        rec: &mut impl PathRecorder<R>,
+    ) -> (V3<R>, bool) {
+        let lights = &self.problem.lights;
+        let PathState {
+            ray,
+            factor,
+            weight,
+            level,
+            spawn,
+        } = *path;
+        let mut record = RayRecord {
+            level,
+            weight,
+            factor,
+            ray,
+            spawn,
+            hit: None,
+            local: self.problem.background,
+            o_r: None,
+            next_weight: None,
+            stop: Some(Stop::Miss),
+        };
+        let Some(h) = found else {
+            rec.ray(&record);
+            return (factor * self.problem.background, false);
+        };
+        record.hit = Some(h);
+        let m = &self.scene.materials[h.index];
+        // N turned to face the incoming ray; V is the ray's direction (Eq. 4.10).
+        let n = h.hit.facing(ray.direction).normal;
+        let at = ShadingPoint {
+            p: h.hit.p,
+            n,
+            v: Some(ray.direction),
+        };
+        // The local colour, Eq. 4.16, by the core.
+        let mut shadows = self.problem.render.shadows.then(|| shadows(&h.hit));
+        let local = shade(&at, m, lights, &mut shadows, &mut NoRecord).color;
+        counts.shadow += shadows.as_ref().map_or(0, |s| s.traced());
+        let share = factor * local;
+        record.local = local;
+        record.o_r = m.o_r;
+        // A reflection ray only where O_r ≠ 0, its level ≤ the maximum and its weight
+        // w_s = w_p·max(O_r) above the minimum (docs/conventions.md, "Recursion level",
+        // "Weight").
+        record.stop = match m.o_r {
+            None => Some(Stop::NotReflective),
+            Some(o_r) if o_r == V3::<R>::ZERO => Some(Stop::NotReflective),
+            Some(o_r) => {
+                let w_s = weight * o_r.max_element();
+                record.next_weight = Some(w_s);
+                if level >= self.problem.render.max_level {
+                    Some(Stop::MaxLevel)
+                } else if w_s <= self.problem.render.min_weight {
+                    Some(Stop::MinWeight)
+                } else {
+                    None
+                }
+            }
+        };
+        rec.ray(&record);
+        if record.stop.is_some() {
+            return (share, false);
+        }
+        let o_r = m.o_r.expect("a reflection ray needs O_r");
+        // The reflection direction R_V = V − 2(N·V)N, Eq. 4.17.
+        let r_v = ray.direction - n * (R::TWO * n.dot(ray.direction));
+        let Some(r_v) = normalize::<R>(r_v) else {
+            return (share, false);
+        };
+        let next = h.hit.spawn_ray(r_v.unit);
+        *path = PathState {
+            ray: next,
+            factor: factor * o_r,
+            weight: weight * o_r.max_element(),
+            level: level + 1,
+            spawn: Some(Spawn {
                 from: h.hit.p,
                 p_error: h.hit.p_error,
                 normal: h.hit.normal,
-                origin: ray.origin,
-            });
-            factor = factor * o_r;
-            weight = weight * o_r.max_element();
-            level += 1;
-            counts.reflection += 1;
-        }
+                origin: next.origin,
+            }),
+        };
+        counts.reflection += 1;
+        (share, true)
     }
 }

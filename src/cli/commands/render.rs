@@ -58,8 +58,8 @@ fn render<R: Real>(args: &RenderArgs) -> Result<Exit, CliError> {
     let estimate = (primary >= 100_000_000).then(|| format!("{primary:.1e} primary rays"));
     let bar = output::progress_bar(u64::from(camera.height), estimate.as_deref());
     let tracing = Instant::now();
-    let (image, counts) =
-        pool.install(|| tracer::render(&problem, &camera, &scene, &|| bar.inc(1)));
+    let (image, counts) = pool
+        .install(|| tracer::render_with(args.engine, &problem, &camera, &scene, &|| bar.inc(1)));
     bar.finish_and_clear();
     let traced = tracing.elapsed();
     let bytes = tracer::output::encode(&image, image_format.expect("known format"));
@@ -69,7 +69,7 @@ fn render<R: Real>(args: &RenderArgs) -> Result<Exit, CliError> {
         output::say(&format_args!(
             "{}×{}, {} sample(s)/pixel, {}, {} thread(s): read and validated in {:.3} s, BVH of \
              {} surfaces built in {:.3} s, traced {} rays ({} primary, {} reflection, {} shadow) \
-             in {:.3} s: {:.2} Mrays/s",
+             in {:.3} s: {:.2} Mrays/s ({} engine)",
             image.width,
             image.height,
             problem.render.samples,
@@ -83,7 +83,8 @@ fn render<R: Real>(args: &RenderArgs) -> Result<Exit, CliError> {
             counts.reflection,
             counts.shadow,
             secs,
-            counts.total() as f64 / secs / 1e6
+            counts.total() as f64 / secs / 1e6,
+            args.engine.name()
         ));
     }
     Ok(Exit::Success)

@@ -1,0 +1,107 @@
+//! The wide engine (packets of 8 × f32 or 4 × f64 lanes, queues per bounce) renders the scalar
+//! engine's image bit for bit: every bundled scene, both precisions, the pixel means before
+//! rounding compared by their bits, and the ray counts equal. No operation of the wide path is
+//! allowed to differ from the scalar one: the lanes do IEEE +, −, ×, ÷, √ in the scalar order,
+//! and everything else (hit points, shading, pow, the cone's atan2) is the scalar code itself.
+
+use std::path::{Path, PathBuf};
+
+use crate::core::Real;
+use crate::problem::{self, validate, Camera, Problem};
+use crate::tracer::render::render_linear_with;
+use crate::tracer::{Engine, Scene};
+
+#[path = "../../../scenes/many_spheres.rs"]
+mod many_spheres;
+
+fn scenes() -> Vec<PathBuf> {
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes");
+    let mut files: Vec<PathBuf> = std::fs::read_dir(&dir)
+        .expect("scenes/")
+        .map(|e| e.expect("an entry").path())
+        .filter(|p| p.extension().is_some_and(|e| e == "json"))
+        .collect();
+    files.sort();
+    files
+}
+
+/// Renders with both engines and compares every mean's bits and the counts.
+fn same_by_both_engines<R: Real>(name: &str, problem: &Problem<R>, camera: &Camera<R>) {
+    let scene = Scene::new(problem);
+    let (scalar, scalar_counts) =
+        render_linear_with(Engine::Scalar, problem, camera, &scene, &|| {});
+    let (wide, wide_counts) = render_linear_with(Engine::Wide, problem, camera, &scene, &|| {});
+    assert_eq!(
+        scalar_counts,
+        wide_counts,
+        "{name} ({}): ray counts",
+        R::NAME
+    );
+    assert_eq!(scalar.rgb.len(), wide.rgb.len());
+    let differing = scalar
+        .rgb
+        .iter()
+        .zip(&wide.rgb)
+        .position(|(a, b)| a.to_bits() != b.to_bits());
+    if let Some(i) = differing {
+        let (x, y) = ((i / 3) as u32 % camera.width, (i / 3) as u32 / camera.width);
+        panic!(
+            "{name} ({}): pixel ({x}, {y}) channel {}: scalar {} wide {}",
+            R::NAME,
+            i % 3,
+            scalar.rgb[i],
+            wide.rgb[i]
+        );
+    }
+    // The 8-bit image is these means rounded (render_with is render_linear_with, rounded).
+}
+
+fn bundled_scenes_in<R: Real>() {
+    let mut rendered = 0;
+    for path in scenes() {
+        let Ok((problem, camera)) = problem::load_scene::<R>(&path) else {
+            continue; // a ray or point problem, not a scene
+        };
+        same_by_both_engines::<R>(&path.display().to_string(), &problem, &camera);
+        rendered += 1;
+    }
+    assert!(rendered >= 4, "only {rendered} scenes rendered");
+}
+
+#[test]
+fn every_bundled_scene_renders_the_same_bits_by_both_engines_in_f32() {
+    bundled_scenes_in::<f32>();
+}
+
+#[test]
+fn every_bundled_scene_renders_the_same_bits_by_both_engines_in_f64() {
+    bundled_scenes_in::<f64>();
+}
+
+fn load<R: Real>(json: &str) -> Problem<R> {
+    let file = problem::parse_str(Path::new("many.json"), json).expect("a valid scene");
+    validate::validate_in::<R>(&file, None).expect("a valid scene")
+}
+
+/// A handful of spheres (packets) and enough for a BVH (the aggregate's own intersection in
+/// the same queues), with several samples per pixel, with and without shadows, small images.
+fn varied_scenes_in<R: Real>() {
+    for n in [5usize, 40] {
+        let mut problem = load::<R>(&many_spheres::scene(n).to_string());
+        let mut camera = problem.camera.expect("a camera");
+        camera.width = 61;
+        camera.height = 37;
+        for (samples, shadows) in [(1, true), (3, true), (4, false)] {
+            problem.render.samples = samples;
+            problem.render.shadows = shadows;
+            let name = format!("{n} spheres, {samples} samples, shadows {shadows}");
+            same_by_both_engines::<R>(&name, &problem, &camera);
+        }
+    }
+}
+
+#[test]
+fn packets_and_bvh_scenes_with_samples_render_the_same_bits_in_both_precisions() {
+    varied_scenes_in::<f32>();
+    varied_scenes_in::<f64>();
+}
