@@ -8,6 +8,7 @@ pub(crate) mod args;
 mod commands;
 pub(crate) mod error;
 pub(crate) mod exit;
+mod files;
 mod output;
 mod parse;
 
