@@ -368,6 +368,40 @@ fn xmllint(xml: &str, name: &str) {
     );
 }
 
+/// Standard base64 decoded (RFC 4648), for the embedded diagrams.
+fn unbase64(s: &str) -> Vec<u8> {
+    let value = |c: u8| match c {
+        b'A'..=b'Z' => c - b'A',
+        b'a'..=b'z' => c - b'a' + 26,
+        b'0'..=b'9' => c - b'0' + 52,
+        b'+' => 62,
+        b'/' => 63,
+        _ => panic!("not base64: {c}"),
+    };
+    let mut out = Vec::new();
+    for chunk in s.as_bytes().chunks(4) {
+        let n = chunk
+            .iter()
+            .filter(|&&c| c != b'=')
+            .enumerate()
+            .fold(0u32, |n, (i, &c)| n | u32::from(value(c)) << (18 - 6 * i));
+        let bytes = chunk.iter().filter(|&&c| c != b'=').count() - 1;
+        out.extend_from_slice(&n.to_be_bytes()[1..=bytes]);
+    }
+    out
+}
+
+#[test]
+fn the_embedded_diagrams_are_svg_files_of_their_own() {
+    let xml = moodle(&[root().join("exercises/4.2.json")], "pt", None);
+    let tag = "encoding=\"base64\">";
+    let data = between(&xml, tag, "</file>").expect("a diagram");
+    let svg = String::from_utf8(unbase64(data)).unwrap();
+    assert!(svg.starts_with("<svg ") && svg.contains("xmlns=\"http://www.w3.org/2000/svg\""));
+    assert!(svg.contains("<style>") && svg.trim_end().ends_with("</svg>"));
+    xmllint(&svg, "diagram.svg");
+}
+
 #[test]
 fn every_bundled_exercise_makes_a_well_formed_valid_quiz_in_both_languages() {
     for lang in ["en", "pt"] {

@@ -32,7 +32,7 @@ use crate::check::{messages as check_messages, Expected, Slip};
 use crate::problem::Problem;
 use crate::report::diagram;
 use crate::report::explain::{latex_math, nest, runs, Explanation, Node, Run, Shading, Step};
-use crate::report::html::{data_table, esc};
+use crate::report::html::{data_table, esc, STYLE};
 use crate::report::lang::Lang;
 
 /// The tolerance of a channel when the key gives none (the 0–1 scale's default).
@@ -70,7 +70,6 @@ fn words(lang: Lang) -> Words {
             no_hit_right: "Right: as written, the ray meets nothing.",
             no_hit_wrong: "Wrong: as written, the ray meets no surface in front of its origin.",
             solution: "Worked solution",
-            diagram: "Plane of incidence",
         },
         Lang::Pt => Words {
             right: "Correto.",
@@ -82,7 +81,6 @@ fn words(lang: Lang) -> Words {
             no_hit_right: "Correto: como escrito, o raio não atinge nada.",
             no_hit_wrong: "Incorreto: como escrito, o raio não atinge superfície alguma à frente da origem.",
             solution: "Solução comentada",
-            diagram: "Plano de incidência",
         },
     }
 }
@@ -97,7 +95,6 @@ struct Words {
     no_hit_right: &'static str,
     no_hit_wrong: &'static str,
     solution: &'static str,
-    diagram: &'static str,
 }
 
 /// The equation a slip's name gives, or the one it changes where its name gives none.
@@ -271,7 +268,7 @@ fn no_hit_part(lang: Lang) -> String {
 }
 
 /// A line of a solution in HTML with MathJax's inline delimiters.
-fn mathjax_line(step: &Step) -> String {
+fn mathjax_line(step: &Step, lang: Lang) -> String {
     let mut s = String::new();
     for run in runs(&step.line) {
         match run {
@@ -283,19 +280,19 @@ fn mathjax_line(step: &Step) -> String {
         }
     }
     if let Some(eq) = step.eq {
-        let _ = write!(s, " <small>({})</small>", esc(&eq.text(Lang::En)));
+        let _ = write!(s, " <small>({})</small>", esc(&eq.text(lang)));
     }
     s
 }
 
-fn mathjax_list(out: &mut String, nodes: &[Node]) {
+fn mathjax_list(out: &mut String, nodes: &[Node], lang: Lang) {
     if nodes.is_empty() {
         return;
     }
     out.push_str("<ul>");
     for node in nodes {
-        let _ = write!(out, "<li>{}", mathjax_line(node.step));
-        mathjax_list(out, &node.children);
+        let _ = write!(out, "<li>{}", mathjax_line(node.step, lang));
+        mathjax_list(out, &node.children, lang);
         out.push_str("</li>");
     }
     out.push_str("</ul>\n");
@@ -314,7 +311,7 @@ fn solution(x: &Explanation, q: usize, lang: Lang) -> (String, Vec<(String, Stri
         out.push_str("</ul>\n");
     }
     if let Some(ray) = &x.ray {
-        mathjax_list(&mut out, &nest(ray));
+        mathjax_list(&mut out, &nest(ray), lang);
     }
     for (i, part) in x.parts.iter().enumerate() {
         let _ = writeln!(out, "<h4>{}</h4>", esc(&part.heading));
@@ -322,12 +319,12 @@ fn solution(x: &Explanation, q: usize, lang: Lang) -> (String, Vec<(String, Stri
             let _ = writeln!(out, "<p><em>{}</em></p>", esc(e));
         }
         if let Some(ray) = &part.ray {
-            mathjax_list(&mut out, &nest(ray));
+            mathjax_list(&mut out, &nest(ray), lang);
         }
         let Some(sh) = &part.shading else {
             continue;
         };
-        shading(&mut out, &mut files, sh, q, i, &w, lang);
+        shading(&mut out, &mut files, sh, q, i, lang);
     }
     (out, files)
 }
@@ -338,21 +335,45 @@ fn shading(
     sh: &Shading,
     q: usize,
     i: usize,
-    w: &Words,
     lang: Lang,
 ) {
     for d in &sh.diagrams {
         let name = format!("diagrama-{q}-{i}-{}.svg", d.light_index);
-        let svg = diagram::svg(d, &format!("d{q}-{i}-{}", d.light_index), lang);
+        let id = format!("d{q}-{i}-{}", d.light_index);
+        let figure = diagram::figure(d, &id, lang);
         let _ = writeln!(
             out,
-            "<p><img src=\"@@PLUGINFILE@@/{name}\" alt=\"{}\"></p>",
-            esc(w.diagram)
+            "<p><img src=\"@@PLUGINFILE@@/{name}\" alt=\"{}\"><br><small>{}. {}</small></p>",
+            esc(&figure.title),
+            esc(&figure.title),
+            esc(&figure.caption)
         );
-        files.push((name, base64(svg.as_bytes())));
+        files.push((
+            name,
+            base64(standalone_svg(&diagram::svg(d, &id, lang)).as_bytes()),
+        ));
     }
     for steps in [&sh.given, &sh.steps, &sh.total] {
-        mathjax_list(out, &nest(steps));
+        mathjax_list(out, &nest(steps), lang);
+    }
+}
+
+/// The `<svg>` of a diagram's HTML figure as a file of its own: an `<img>` gets no page
+/// stylesheet, so the SVG rules of the HTML report's (`report::html::STYLE`) go inside it.
+fn standalone_svg(figure: &str) -> String {
+    let start = figure.find("<svg").unwrap_or(0);
+    let end = figure
+        .find("</svg>")
+        .map_or(figure.len(), |e| e + "</svg>".len());
+    let svg = &figure[start..end];
+    let rules: String = STYLE.lines().filter(|l| l.starts_with("svg ")).collect();
+    match svg.find('>') {
+        Some(open) => format!(
+            "{}<style>{rules}</style>{}\n",
+            &svg[..=open],
+            &svg[open + 1..]
+        ),
+        None => svg.to_owned(),
     }
 }
 
