@@ -324,15 +324,9 @@ fn moodle(files: &[PathBuf], lang: &str, stdin: Option<&[u8]>) -> String {
 
 fn new(kind: &str, count: u32, seed: u64, lang: Option<&str>) -> Vec<u8> {
     let mut c = phong();
-    c.args([
-        "new",
-        "--kind",
-        kind,
-        "--count",
-        &count.to_string(),
-        "--seed",
-        &seed.to_string(),
-    ]);
+    let (count, seed) = (count.to_string(), seed.to_string());
+    c.args(["new", "--kind", kind]);
+    c.args(["--count", &count, "--seed", &seed]);
     if let Some(l) = lang {
         c.args(["--lang", l]);
     }
@@ -434,6 +428,21 @@ fn every_bundled_exercise_makes_a_well_formed_valid_quiz_in_both_languages() {
             }
         }
         assert!(xml.contains("@@PLUGINFILE@@/") && xml.contains("\\("));
+        // The quiz's own words in the chosen language only.
+        let (ours, theirs) = if lang == "pt" {
+            (
+                ["Erro provável:", "Correto.", "Solução comentada"],
+                ["Likely slip:", "Right.", "Worked solution"],
+            )
+        } else {
+            (
+                ["Likely slip:", "Right.", "Worked solution"],
+                ["Erro provável:", "Correto.", "Solução comentada"],
+            )
+        };
+        for (a, b) in ours.iter().zip(theirs) {
+            assert!(xml.contains(a) && !xml.contains(b), "{lang}: {a} / {b}");
+        }
     }
 }
 
@@ -467,6 +476,16 @@ fn check(file: &Path, answer: [f64; 3]) -> Value {
         .output()
         .unwrap();
     serde_json::from_slice(&out.stdout).unwrap()
+}
+
+/// Each channel's first alternative after the first at `fraction`, else `fallback`'s.
+fn alternative_colour(subs: &[Sub], fraction: f64, fallback: [f64; 3]) -> [f64; 3] {
+    [0, 1, 2].map(|c| {
+        subs[c].alts[1..]
+            .iter()
+            .find(|a| a.fraction == fraction)
+            .map_or(fallback[c], |a| a.answer.parse().unwrap())
+    })
 }
 
 fn right_value(sub: &Sub) -> f64 {
@@ -522,36 +541,16 @@ fn every_answer_option_round_trips_through_phong_check() {
         }
         let right = [0, 1, 2].map(|c| right_value(&subs[c]));
         assert_eq!(check(file, right)["verdict"], "right", "{}", file.display());
-        // A second 100 % alternative is the value before the clamp: the unclamped colour.
-        let unclamped = [0, 1, 2].map(|c| {
-            subs[c].alts[1..]
-                .iter()
-                .find(|a| a.fraction == 100.0)
-                .map_or(right[c], |a| a.answer.parse().unwrap())
-        });
-        if unclamped != right {
-            assert_eq!(
-                check(file, unclamped)["verdict"],
-                "right",
-                "{}",
-                file.display()
-            );
+        // A second 100 % alternative is the value before the clamp: the unclamped colour; a
+        // 50 % one, the likely intended reading.
+        for (fraction, verdict) in [(100.0, "right"), (50.0, "reading")] {
+            let colour = alternative_colour(subs, fraction, right);
+            if colour != right {
+                let v = check(file, colour);
+                assert_eq!(v["verdict"], verdict, "{}", file.display());
+            }
         }
-        let reading = [0, 1, 2].map(|c| {
-            subs[c]
-                .alts
-                .iter()
-                .find(|a| a.fraction == 50.0)
-                .map_or(right[c], |a| a.answer.parse().unwrap())
-        });
-        if reading != right {
-            assert_eq!(
-                check(file, reading)["verdict"],
-                "reading",
-                "{}",
-                file.display()
-            );
-        }
+        let reading = alternative_colour(subs, 50.0, right);
         // Each slip's sentence, as the feedback says it.
         let mut sentences: Vec<String> = Vec::new();
         for sub in subs {
