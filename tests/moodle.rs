@@ -591,3 +591,29 @@ fn every_answer_option_round_trips_through_phong_check() {
     }
     assert!(slips_seen > 20, "only {slips_seen} slip options");
 }
+
+#[test]
+fn a_file_that_is_not_a_question_is_refused_by_name() {
+    let out = phong()
+        .args(["moodle", "scenes/classic.json"])
+        .assert()
+        .code(2)
+        .get_output()
+        .clone();
+    let err = String::from_utf8(out.stderr).unwrap();
+    assert!(
+        err.contains("scenes/classic.json") && err.contains("no point or ray"),
+        "{err}"
+    );
+    assert!(out.stdout.is_empty());
+    // An array whose second problem is broken names it.
+    let out = phong()
+        .args(["moodle", "-"])
+        .write_stdin(r#"[{"lights": [], "point": {"material": "M"}, "materials": {"M": {"ambient": [0.5, 0.5, 0.5]}}}, {"bogus": 1}]"#)
+        .assert()
+        .code(2)
+        .get_output()
+        .clone();
+    let err = String::from_utf8(out.stderr).unwrap();
+    assert!(err.contains("-[2]") && err.contains("bogus"), "{err}");
+}

@@ -417,7 +417,7 @@ pub(crate) fn quiz(
     sets: &[Set],
     parent: &str,
     lang: Lang,
-) -> Result<String, crate::problem::Invalid> {
+) -> Result<String, crate::problem::ProblemError> {
     let mut out = String::from("<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<quiz>\n");
     let mut q = 0;
     for set in sets {
@@ -429,7 +429,8 @@ pub(crate) fn quiz(
         );
         for entry in &set.entries {
             q += 1;
-            question(&mut out, entry, q, lang)?;
+            question(&mut out, entry, q, lang)
+                .map_err(|e| e.at(std::path::Path::new(&entry.label)))?;
         }
     }
     out.push_str("</quiz>\n");

@@ -19,8 +19,7 @@ pub(crate) fn run(args: &MoodleArgs) -> Result<Exit, CliError> {
         .iter()
         .map(|path| read_set(path, args.lang))
         .collect::<Result<Vec<Set>, ProblemError>>()?;
-    let text = quiz(&sets, &args.category, args.lang)
-        .map_err(|e| CliError::from(e.at(Path::new("quiz"))))?;
+    let text = quiz(&sets, &args.category, args.lang)?;
     output::emit(args.output.as_deref(), &text)?;
     Ok(Exit::Success)
 }
