@@ -371,7 +371,8 @@ fn spot_light(p: [i64; 3], n: Unit, inside: bool, r: &mut Draw) -> LightOut {
         num: light_dir.num.map(|x| -x),
         den: light_dir.den,
     };
-    let mut axis = to_point;
+    // Drawn from the table; should none fit, the axis straight at P (ψ = 0) or away (ψ = 180°).
+    let mut axis = if inside { to_point } else { light_dir };
     for _ in 0..10_000 {
         let a = r.unit();
         let psi = a.dot(to_point).clamp(-1.0, 1.0).acos().to_degrees();
