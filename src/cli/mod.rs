@@ -38,6 +38,7 @@ pub(crate) fn run(cli: &Cli) -> Exit {
         Command::Check(args) => commands::check::run(args),
         Command::Grade(args) => commands::grade::run(args),
         Command::New(args) => commands::new::run(args),
+        Command::Moodle(args) => commands::moodle::run(args),
     };
     result.unwrap_or_else(|e| error::fail_in(&e, cli.command.lang()))
 }
