@@ -574,7 +574,6 @@ pub(crate) struct RowFacts<'a> {
 /// One sentence of feedback for a graded row: the verdict, what the answer matches (a reading,
 /// the slips in words), how near it is to the nearest colour, the points.
 pub(crate) fn feedback(f: &RowFacts, lang: Lang) -> String {
-    use crate::report::number::num;
     let mut parts: Vec<String> = Vec::new();
     match f.verdict {
         None => {
@@ -608,8 +607,7 @@ pub(crate) fn feedback(f: &RowFacts, lang: Lang) -> String {
                         .map(|d| slips(&d.mistakes(), lang))
                         .collect::<Vec<_>>()
                         .join(or);
-                    let intro = diagnosis_intro(v.pairs, lang).trim_end_matches(':');
-                    parts.push(format!("{intro} {list}"));
+                    parts.push(format!("{} {list}", diagnosis_intro(v.pairs, lang)));
                 } else if v.has_colour.is_none() {
                     parts.push(no_diagnosis(lang).to_owned());
                 }
@@ -633,10 +631,7 @@ pub(crate) fn feedback(f: &RowFacts, lang: Lang) -> String {
         }
     }
     if let Some((p, max)) = f.points {
-        parts.push(match lang {
-            Lang::En => format!("{} of {} points", num(p), num(max)),
-            Lang::Pt => format!("{} de {} pontos", num(p), num(max)),
-        });
+        parts.push(total(p, max, lang));
     }
     let mut text = parts.join("; ");
     if let Some(first) = text.chars().next() {
@@ -695,9 +690,12 @@ pub(crate) fn exercise_name(exercise: &str, lang: Lang) -> String {
 /// A student's total, in words.
 pub(crate) fn total(points: f64, max: f64, lang: Lang) -> String {
     use crate::report::number::num;
-    match lang {
-        Lang::En => format!("{} of {} points", num(points), num(max)),
-        Lang::Pt => format!("{} de {} pontos", num(points), num(max)),
+    let one = max == 1.0;
+    match (lang, one) {
+        (Lang::En, true) => format!("{} of {} point", num(points), num(max)),
+        (Lang::En, false) => format!("{} of {} points", num(points), num(max)),
+        (Lang::Pt, true) => format!("{} de {} ponto", num(points), num(max)),
+        (Lang::Pt, false) => format!("{} de {} pontos", num(points), num(max)),
     }
 }
 
