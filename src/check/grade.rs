@@ -592,17 +592,7 @@ pub fn grade_bytes(bytes: &[u8], options: &Options) -> Report {
             Err(why) => {
                 let mut row = blank_row(1, 1);
                 row.counted = false;
-                row.feedback = messages::feedback(
-                    &messages::RowFacts {
-                        verdict: None,
-                        reason: Some(&why),
-                        tolerance: 0.0,
-                        read_as_8bit: false,
-                        points: None,
-                    },
-                    options.lang,
-                );
-                row.reason = Some(why);
+                mark_invalid(&mut row, why, options.lang);
                 let rows = vec![row];
                 return Report {
                     format_version: CHECK_FORMAT_VERSION,
@@ -649,17 +639,7 @@ pub fn grade_bytes(bytes: &[u8], options: &Options) -> Report {
             Err(e) => {
                 row.student = echo(content.split(|&b| b == d).next().unwrap_or_default());
                 let reason = format!("the row cannot be read as CSV: {e}");
-                row.feedback = messages::feedback(
-                    &messages::RowFacts {
-                        verdict: None,
-                        reason: Some(&reason),
-                        tolerance: 0.0,
-                        read_as_8bit: false,
-                        points: None,
-                    },
-                    options.lang,
-                );
-                row.reason = Some(reason);
+                mark_invalid(&mut row, reason, options.lang);
             }
         }
         rows.push(row);
@@ -752,6 +732,22 @@ fn count_duplicates(
     students
 }
 
+/// A row that cannot be judged: its reason, and feedback saying so (with its exercise's points
+/// when the exercise is known).
+fn mark_invalid(row: &mut RowOut, reason: String, lang: Lang) {
+    row.feedback = messages::feedback(
+        &messages::RowFacts {
+            verdict: None,
+            reason: Some(&reason),
+            tolerance: 0.0,
+            read_as_8bit: false,
+            points: row.max_points.map(|m| (0.0, m)),
+        },
+        lang,
+    );
+    row.reason = Some(reason);
+}
+
 /// A row not yet graded: invalid, no student, nothing compared.
 fn blank_row(row: usize, line: u64) -> RowOut {
     RowOut {
@@ -788,19 +784,7 @@ fn grade_row(
     row.exercise = fields.get(1).map_or_else(String::new, |f| echo(f));
     row.answer = fields.get(2).map_or_else(String::new, |f| echo(f));
     const COLUMNS: [&str; 3] = ["student", "exercise", "answer"];
-    let invalid = |row: &mut RowOut, reason: String| {
-        row.feedback = messages::feedback(
-            &messages::RowFacts {
-                verdict: None,
-                reason: Some(&reason),
-                tolerance: 0.0,
-                read_as_8bit: false,
-                points: row.max_points.map(|m| (0.0, m)),
-            },
-            options.lang,
-        );
-        row.reason = Some(reason);
-    };
+    let invalid = |row: &mut RowOut, reason: String| mark_invalid(row, reason, options.lang);
     if fields.len() != 3 {
         let name = |d: u8| match d {
             b'\t' => "a tab".to_owned(),
