@@ -176,7 +176,7 @@ fn a_class_of_30_gets_its_totals_and_43_no_hit_is_right() {
         a07[0]["feedback"]
             .as_str()
             .unwrap()
-            .contains(&format!("row {counting_row} counts")),
+            .contains(&format!("row {counting_row} counts (the row column")),
         "{}",
         a07[0]
     );

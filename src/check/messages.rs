@@ -654,11 +654,11 @@ pub(crate) fn not_counted(row: usize, rule: &str, lang: Lang) -> String {
     match lang {
         Lang::En => format!(
             "Not counted: the same student answered this exercise again, and row {row} counts \
-             (--duplicates {rule}). "
+             (the row column; --duplicates {rule}). "
         ),
         Lang::Pt => format!(
-            "Não conta: o mesmo aluno respondeu de novo a este exercício, e conta a linha {row} \
-             (--duplicates {rule}). "
+            "Não conta: o mesmo aluno respondeu de novo a este exercício, e conta a resposta \
+             {row} (coluna row; --duplicates {rule}). "
         ),
     }
 }
