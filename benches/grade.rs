@@ -41,6 +41,7 @@ fn bench(c: &mut Criterion) {
         tolerance: None,
         strict: false,
         delimiter: None,
+        ..Options::default()
     };
     let mut group = c.benchmark_group("grade");
     group.sample_size(10);

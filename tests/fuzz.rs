@@ -2625,6 +2625,7 @@ fn fuzz_grading_arbitrary_bytes_never_panics_and_keeps_every_line() {
         tolerance: None,
         strict: false,
         delimiter: None,
+        ..check::grade::Options::default()
     };
     let byte = prop_oneof![
         Just(b','),

@@ -23,6 +23,7 @@ fn options(delimiter: Option<u8>) -> Options {
         tolerance: None,
         strict: false,
         delimiter,
+        ..Options::default()
     }
 }
 

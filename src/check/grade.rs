@@ -18,6 +18,7 @@ use std::path::{Path, PathBuf};
 use serde::Serialize;
 
 use super::report::{scale_number, verdict_code, CHECK_FORMAT_VERSION};
+use super::rubric::{Duplicates, Rubric};
 use super::{answer, judge, messages, Expected, Scale, Slip, Verdict, VerdictKind};
 use crate::report::lang::Lang;
 use crate::solve::ReadingCode;
@@ -36,6 +37,75 @@ pub struct Options {
     pub strict: bool,
     /// The fields' separator (`b','`, `b';'` or `b'\t'`); `None` to detect it ([`delimiter`]).
     pub delimiter: Option<u8>,
+    /// Per-row scale detection: on the 0–1 scale, an answer of three whole numbers 0–255 (one of
+    /// them above 1) is read as 8-bit values, and its feedback says so. Off when the scale is
+    /// given (`--scale 1`).
+    pub detect_scale: bool,
+    /// The points of each exercise and the share a reading earns.
+    pub rubric: Rubric,
+    /// Which answer counts when a student answers an exercise more than once.
+    pub duplicates: Duplicates,
+    /// The language of the `feedback` column.
+    pub lang: Lang,
+    /// What the submissions file is.
+    pub input: Input,
+    /// A Moodle export's question slots: slot N is exercise `questions[N-1]` (empty: the
+    /// exercise files of the folder in name order).
+    pub questions: Vec<String>,
+}
+
+/// What the submissions file is.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, clap::ValueEnum)]
+pub enum Input {
+    /// Moodle's Responses export when its header has a "Response 1" column, else the plain CSV.
+    #[default]
+    Auto,
+    /// The plain CSV: student, exercise, answer.
+    Csv,
+    /// Moodle's quiz Responses report downloaded as CSV ([`super::moodle`]).
+    Moodle,
+}
+
+/// The exercises of a folder (its `*.json` files without `.json`), in name order with numbers
+/// compared as numbers (4.2 before 4.10).
+pub fn folder_exercises(dir: &Path) -> Vec<String> {
+    let mut names: Vec<String> = std::fs::read_dir(dir)
+        .map(|d| {
+            d.filter_map(|e| e.ok())
+                .filter_map(|e| {
+                    let name = e.file_name().to_string_lossy().into_owned();
+                    name.strip_suffix(".json").map(str::to_owned)
+                })
+                .collect()
+        })
+        .unwrap_or_default();
+    let parts = |s: &str| -> Vec<(u64, String)> {
+        s.split('.')
+            .map(|p| (p.parse().unwrap_or(u64::MAX), p.to_owned()))
+            .collect()
+    };
+    names.sort_by_key(|n| parts(n));
+    names
+}
+
+impl Default for Options {
+    /// No folder; the 0–1 scale with detection; each key's tolerance; 1 point per exercise, half
+    /// for a reading; the last answer counts; English.
+    fn default() -> Self {
+        Options {
+            exercises: PathBuf::new(),
+            scale: Scale::Unit,
+            tolerance: None,
+            strict: false,
+            delimiter: None,
+            detect_scale: true,
+            rubric: Rubric::default(),
+            duplicates: Duplicates::default(),
+            lang: Lang::En,
+            input: Input::Auto,
+            questions: Vec::new(),
+        }
+    }
 }
 
 /// One graded row.
@@ -71,6 +141,35 @@ pub struct RowOut {
     pub diagnosis: Vec<Vec<Slip>>,
     /// Why the row is invalid, or a note.
     pub reason: Option<String>,
+    /// The answer's whole numbers were read as 8-bit values (per-row scale detection).
+    pub scale_detected: bool,
+    /// The points the answer earns: the exercise's for `right`, the reading credit's share of
+    /// them for `reading` (nothing under `--strict`), 0 otherwise.
+    pub points: f64,
+    /// The exercise's points (`null` for an exercise that does not exist).
+    pub max_points: Option<f64>,
+    /// The row counts in its student's total: false for an answer another answer of the same
+    /// student to the same exercise replaces (`--duplicates`), and for a row without a student.
+    pub counted: bool,
+    /// One sentence for the student, in the chosen language: the verdict, the slips in words,
+    /// the near miss, the points.
+    pub feedback: String,
+}
+
+/// One student's points.
+#[derive(Clone, Debug, Serialize)]
+pub struct StudentOut {
+    /// The student, as written.
+    pub student: String,
+    /// The points of the rows that count.
+    pub points: f64,
+    /// The points of every exercise graded (the class's exercises, and those the rubric names).
+    pub max_points: f64,
+    /// Per exercise, the points of the row that counts (`null`: no answer).
+    pub exercises: BTreeMap<String, Option<f64>>,
+    /// The rows that count, by exercise (the row's number), for the platforms' reports.
+    #[serde(skip)]
+    pub rows: BTreeMap<String, usize>,
 }
 
 /// The rows of one exercise, counted.
@@ -110,6 +209,10 @@ pub struct Report {
     pub rows: Vec<RowOut>,
     /// One entry per exercise, in name order.
     pub summary: Vec<SummaryOut>,
+    /// The exercises graded, in name order, with their points.
+    pub exercises: BTreeMap<String, f64>,
+    /// Each student's total, in the order the students first appear.
+    pub students: Vec<StudentOut>,
 }
 
 /// The CSV cannot be read at all (a row that cannot be read is reported in its place instead).
@@ -470,8 +573,40 @@ fn visible(text: &str) -> String {
 /// line that holds data is one row of the report, in order, whatever is wrong with it; blank
 /// lines and a header are not rows.
 pub fn grade_bytes(bytes: &[u8], options: &Options) -> Report {
-    let text = decode(bytes);
-    let d = options.delimiter.unwrap_or_else(|| delimiter(&text));
+    let decoded = decode(bytes);
+    let moodle = match options.input {
+        Input::Moodle => true,
+        Input::Csv => false,
+        Input::Auto => super::moodle::is_responses(&decoded),
+    };
+    let mut forced = options.delimiter;
+    let text = if moodle {
+        let questions = if options.questions.is_empty() {
+            folder_exercises(&options.exercises)
+        } else {
+            options.questions.clone()
+        };
+        forced = Some(b',');
+        match super::moodle::to_rows(&decoded, &questions) {
+            Ok(rows) => std::borrow::Cow::Owned(rows),
+            Err(why) => {
+                let mut row = blank_row(1, 1);
+                row.counted = false;
+                mark_invalid(&mut row, why, options.lang);
+                let rows = vec![row];
+                return Report {
+                    format_version: CHECK_FORMAT_VERSION,
+                    summary: summarise(&rows),
+                    rows,
+                    exercises: BTreeMap::new(),
+                    students: Vec::new(),
+                };
+            }
+        }
+    } else {
+        decoded
+    };
+    let d = forced.unwrap_or_else(|| delimiter(&text));
     let mut cache = Cache {
         options,
         folder: std::fs::canonicalize(&options.exercises).ok(),
@@ -491,22 +626,7 @@ pub fn grade_bytes(bytes: &[u8], options: &Options) -> Report {
                 continue;
             }
         }
-        let mut row = RowOut {
-            row: rows.len() + 1,
-            line,
-            student: String::new(),
-            exercise: String::new(),
-            answer: String::new(),
-            verdict: "invalid",
-            accepted: false,
-            scale: None,
-            tolerance: None,
-            expected: None,
-            difference: None,
-            reading: None,
-            diagnosis: Vec::new(),
-            reason: None,
-        };
+        let mut row = blank_row(rows.len() + 1, line);
         match parsed {
             Ok(f) => {
                 let by_column: Vec<&[u8]> = if f.len() == 3 {
@@ -518,16 +638,138 @@ pub fn grade_bytes(bytes: &[u8], options: &Options) -> Report {
             }
             Err(e) => {
                 row.student = echo(content.split(|&b| b == d).next().unwrap_or_default());
-                row.reason = Some(format!("the row cannot be read as CSV: {e}"));
+                let reason = format!("the row cannot be read as CSV: {e}");
+                mark_invalid(&mut row, reason, options.lang);
             }
         }
         rows.push(row);
     }
     let summary = summarise(&rows);
+    let mut exercises: BTreeMap<String, f64> = cache
+        .solved
+        .iter()
+        .filter(|(_, e)| e.is_ok())
+        .map(|(k, _)| (k.clone(), options.rubric.points_of(k)))
+        .collect();
+    for (k, &p) in &options.rubric.points {
+        exercises.insert(k.clone(), p);
+    }
+    let students = count_duplicates(&mut rows, &exercises, options);
     Report {
         format_version: CHECK_FORMAT_VERSION,
         rows,
         summary,
+        exercises,
+        students,
+    }
+}
+
+/// Marks the rows that do not count (a student's other answers to an exercise, by
+/// `options.duplicates`; rows without a student) and sums each student's points.
+fn count_duplicates(
+    rows: &mut [RowOut],
+    exercises: &BTreeMap<String, f64>,
+    options: &Options,
+) -> Vec<StudentOut> {
+    let lang = options.lang;
+    // (student, exercise) → the indices of its rows, in order; students in order of appearance.
+    let mut groups: BTreeMap<(String, String), Vec<usize>> = BTreeMap::new();
+    let mut order: Vec<String> = Vec::new();
+    let mut seen: BTreeMap<String, usize> = BTreeMap::new();
+    for (i, r) in rows.iter_mut().enumerate() {
+        if r.student.is_empty() {
+            r.counted = false;
+            r.feedback.insert_str(0, messages::no_student(lang));
+            continue;
+        }
+        if !seen.contains_key(&r.student) {
+            seen.insert(r.student.clone(), order.len());
+            order.push(r.student.clone());
+        }
+        groups
+            .entry((r.student.clone(), exercise_key(&r.exercise).to_owned()))
+            .or_default()
+            .push(i);
+    }
+    let mut students: Vec<StudentOut> = order
+        .iter()
+        .map(|s| StudentOut {
+            student: s.clone(),
+            points: 0.0,
+            max_points: exercises.values().sum(),
+            exercises: exercises.keys().map(|k| (k.clone(), None)).collect(),
+            rows: BTreeMap::new(),
+        })
+        .collect();
+    for ((student, exercise), list) in groups {
+        let counts = match options.duplicates {
+            Duplicates::First => list[0],
+            Duplicates::Last => list[list.len() - 1],
+            // The most points; the first of those on a tie (`max_by` would keep the last).
+            Duplicates::Best => list.iter().copied().fold(list[0], |best, i| {
+                if rows[i].points > rows[best].points {
+                    i
+                } else {
+                    best
+                }
+            }),
+        };
+        for &i in &list {
+            if i != counts {
+                rows[i].counted = false;
+                let note = messages::not_counted(rows[counts].row, options.duplicates.word(), lang);
+                rows[i].feedback.insert_str(0, &note);
+            }
+        }
+        let s = &mut students[seen[&student]];
+        if exercises.contains_key(&exercise) {
+            s.points += rows[counts].points;
+            s.exercises
+                .insert(exercise.clone(), Some(rows[counts].points));
+            s.rows.insert(exercise, counts);
+        }
+    }
+    students
+}
+
+/// A row that cannot be judged: its reason, and feedback saying so (with its exercise's points
+/// when the exercise is known).
+fn mark_invalid(row: &mut RowOut, reason: String, lang: Lang) {
+    row.feedback = messages::feedback(
+        &messages::RowFacts {
+            verdict: None,
+            reason: Some(&reason),
+            tolerance: 0.0,
+            read_as_8bit: false,
+            points: row.max_points.map(|m| (0.0, m)),
+        },
+        lang,
+    );
+    row.reason = Some(reason);
+}
+
+/// A row not yet graded: invalid, no student, nothing compared.
+fn blank_row(row: usize, line: u64) -> RowOut {
+    RowOut {
+        row,
+        line,
+        student: String::new(),
+        exercise: String::new(),
+        answer: String::new(),
+        verdict: "invalid",
+        accepted: false,
+        scale: None,
+        tolerance: None,
+        expected: None,
+        difference: None,
+        reading: None,
+        diagnosis: Vec::new(),
+        reason: None,
+        scale_detected: false,
+        points: 0.0,
+        max_points: None,
+        counted: true,
+        feedback: String::new(),
     }
 }
 
@@ -542,7 +784,7 @@ fn grade_row(
     row.exercise = fields.get(1).map_or_else(String::new, |f| echo(f));
     row.answer = fields.get(2).map_or_else(String::new, |f| echo(f));
     const COLUMNS: [&str; 3] = ["student", "exercise", "answer"];
-    let invalid = |row: &mut RowOut, reason: String| row.reason = Some(reason);
+    let invalid = |row: &mut RowOut, reason: String| mark_invalid(row, reason, options.lang);
     if fields.len() != 3 {
         let name = |d: u8| match d {
             b'\t' => "a tab".to_owned(),
@@ -602,10 +844,17 @@ fn grade_row(
         Ok(e) => e,
         Err(e) => return invalid(row, e.clone()),
     };
-    let a = match answer::parse(&row.answer, options.scale) {
+    row.max_points = Some(options.rubric.points_of(&row.exercise));
+    let mut a = match answer::parse(&row.answer, options.scale) {
         Ok(a) => a,
         Err(e) => return invalid(row, format!("the answer cannot be read: {e}")),
     };
+    if options.detect_scale && a.scale == Scale::Unit && a.values.is_some_and(|v| looks_8bit(&v)) {
+        if let Ok(b) = answer::parse(&row.answer, Scale::Bits8) {
+            a = b;
+            row.scale_detected = true;
+        }
+    }
     let tolerance = options
         .tolerance
         .or_else(|| key.and_then(|k| k.tolerance_on(a.scale)))
@@ -624,12 +873,37 @@ fn grade_row(
     row.diagnosis = v.diagnosis.iter().map(|d| d.slips.clone()).collect();
     if v.looks_8bit {
         row.reason = Some(messages::looks_8bit(Lang::En).to_owned());
+    } else if row.scale_detected {
+        row.reason = Some(messages::read_as_8bit(Lang::En).to_owned());
     } else if v.kind == VerdictKind::Right
         && v.comparison
             .is_some_and(|c| c.against == super::Against::Unclamped)
     {
         row.reason = Some(messages::unclamped_note(Lang::En).to_owned());
     }
+    let max = options.rubric.points_of(&row.exercise);
+    row.points = match v.kind {
+        VerdictKind::Right => max,
+        VerdictKind::Reading if !options.strict => max * options.rubric.reading_credit,
+        _ => 0.0,
+    };
+    row.feedback = messages::feedback(
+        &messages::RowFacts {
+            verdict: Some(&v),
+            reason: None,
+            tolerance,
+            read_as_8bit: row.scale_detected,
+            points: Some((row.points, max)),
+        },
+        options.lang,
+    );
+}
+
+/// Three whole numbers 0–255, one of them above 1: 8-bit values rather than a 0–1 colour.
+fn looks_8bit(v: &[f64; 3]) -> bool {
+    v.iter()
+        .all(|x| x.fract() == 0.0 && (0.0..=255.0).contains(x))
+        && v.iter().any(|&x| x > 1.0)
 }
 
 /// One exercise's rows as they are counted: the summary, and how often each diagnosis occurs.
@@ -722,6 +996,10 @@ pub fn rows_csv(report: &Report) -> Vec<u8> {
         "reading",
         "diagnosis",
         "reason",
+        "points",
+        "max_points",
+        "counted",
+        "feedback",
     ];
     w.write_record(header).expect("writing to memory");
     for r in &report.rows {
@@ -763,6 +1041,10 @@ pub fn rows_csv(report: &Report) -> Vec<u8> {
             reading,
             diagnosis,
             r.reason.clone().unwrap_or_default(),
+            number(r.points),
+            r.max_points.map_or(String::new(), number),
+            r.counted.to_string(),
+            safe_cell(&r.feedback),
         ])
         .expect("writing to memory");
     }
@@ -793,6 +1075,30 @@ pub(crate) fn summary_csv(report: &Report) -> Vec<u8> {
             slips,
         ])
         .expect("writing to memory");
+    }
+    w.into_inner().expect("writing to memory")
+}
+
+/// Each student's total as CSV: `student, points, max_points`, then one column per exercise
+/// (the points of the answer that counts; empty: no answer), students in the order they first
+/// appear.
+pub fn students_csv(report: &Report) -> Vec<u8> {
+    let mut w = csv::Writer::from_writer(Vec::new());
+    let mut header = vec!["student".to_owned(), "points".into(), "max_points".into()];
+    header.extend(report.exercises.keys().map(|k| safe_cell(k)));
+    w.write_record(&header).expect("writing to memory");
+    for s in &report.students {
+        let mut line = vec![
+            safe_cell(&s.student),
+            number(s.points),
+            number(s.max_points),
+        ];
+        line.extend(
+            s.exercises
+                .values()
+                .map(|p| p.map_or(String::new(), number)),
+        );
+        w.write_record(&line).expect("writing to memory");
     }
     w.into_inner().expect("writing to memory")
 }

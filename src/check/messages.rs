@@ -557,6 +557,148 @@ pub fn step_tolerance(relative: f64, absolute: f64, lang: Lang) -> String {
     }
 }
 
+/// What `phong grade` knows about a row when it writes its feedback.
+pub(crate) struct RowFacts<'a> {
+    /// The verdict, `None` for a row that cannot be judged.
+    pub verdict: Option<&'a super::Verdict>,
+    /// Why the row cannot be judged (English; the reasons name files and fields).
+    pub reason: Option<&'a str>,
+    /// The tolerance the answer was judged with.
+    pub tolerance: f64,
+    /// A whole-number triple on the 0–1 scale read as 8-bit values.
+    pub read_as_8bit: bool,
+    /// The points earned and the exercise's points.
+    pub points: Option<(f64, f64)>,
+}
+
+/// One sentence of feedback for a graded row: the verdict, what the answer matches (a reading,
+/// the slips in words), how near it is to the nearest colour, the points.
+pub(crate) fn feedback(f: &RowFacts, lang: Lang) -> String {
+    let mut parts: Vec<String> = Vec::new();
+    match f.verdict {
+        None => {
+            parts.push(invalid(lang).to_owned());
+            if let Some(r) = f.reason {
+                parts.push(r.to_owned());
+            }
+        }
+        Some(v) => {
+            parts.push(verdict(v.kind, v.accepted, lang).to_owned());
+            if f.read_as_8bit {
+                parts.push(read_as_8bit(lang).to_owned());
+            }
+            if let Some(r) = &v.reading {
+                parts.push(matches_reading(r.code, r.likely_intended, lang));
+            }
+            if v.kind == VerdictKind::Wrong {
+                if let Some((_, ray)) = v.has_colour {
+                    parts.push(has_colour(ray, lang).to_owned());
+                } else if v.written.is_none() && v.comparison.is_some() {
+                    parts.push(nothing_to_shade(lang).to_owned());
+                }
+                if !v.diagnosis.is_empty() {
+                    let or = match lang {
+                        Lang::En => " or ",
+                        Lang::Pt => " ou ",
+                    };
+                    let list = v
+                        .diagnosis
+                        .iter()
+                        .map(|d| slips(&d.mistakes(), lang))
+                        .collect::<Vec<_>>()
+                        .join(or);
+                    parts.push(format!("{} {list}", diagnosis_intro(v.pairs, lang)));
+                } else if v.has_colour.is_none() {
+                    parts.push(no_diagnosis(lang).to_owned());
+                }
+                if v.looks_8bit {
+                    parts.push(looks_8bit(lang).to_owned());
+                }
+                if let Some(n) = &v.nearest {
+                    parts.push(nearest(
+                        &n.candidate,
+                        n.comparison.distance(),
+                        f.tolerance,
+                        lang,
+                    ));
+                }
+            } else if v
+                .comparison
+                .is_some_and(|c| c.against == Against::Unclamped)
+            {
+                parts.push(unclamped_note(lang).to_owned());
+            }
+        }
+    }
+    if let Some((p, max)) = f.points {
+        parts.push(total(p, max, lang));
+    }
+    let mut text = parts.join("; ");
+    if let Some(first) = text.chars().next() {
+        text.replace_range(..first.len_utf8(), &first.to_uppercase().to_string());
+    }
+    text.push('.');
+    text
+}
+
+/// A whole-number answer on the 0–1 scale that `phong grade` read as 8-bit values.
+pub(crate) fn read_as_8bit(lang: Lang) -> &'static str {
+    match lang {
+        Lang::En => "read as 8-bit values (0–255): the numbers are whole and one is above 1",
+        Lang::Pt => "lida como valores de 8 bits (0–255): os números são inteiros e um passa de 1",
+    }
+}
+
+/// A row that does not count: another answer of the student's to the exercise does.
+pub(crate) fn not_counted(row: usize, rule: &str, lang: Lang) -> String {
+    match lang {
+        Lang::En => format!(
+            "Not counted: the same student answered this exercise again, and row {row} counts \
+             (the row column; --duplicates {rule}). "
+        ),
+        Lang::Pt => format!(
+            "Não conta: o mesmo aluno respondeu de novo a este exercício, e conta a resposta \
+             {row} (coluna row; --duplicates {rule}). "
+        ),
+    }
+}
+
+/// A row without a student's name: it counts for nobody.
+pub(crate) fn no_student(lang: Lang) -> &'static str {
+    match lang {
+        Lang::En => "Not counted: the row has no student. ",
+        Lang::Pt => "Não conta: a linha não tem aluno. ",
+    }
+}
+
+/// An exercise a student did not answer.
+pub(crate) fn no_answer(lang: Lang) -> &'static str {
+    match lang {
+        Lang::En => "No answer.",
+        Lang::Pt => "Sem resposta.",
+    }
+}
+
+/// The name of an exercise in a platform's list of tests.
+pub(crate) fn exercise_name(exercise: &str, lang: Lang) -> String {
+    match lang {
+        Lang::En => format!("Exercise {exercise}"),
+        Lang::Pt => format!("Exercício {exercise}"),
+    }
+}
+
+/// A student's total, in words.
+pub(crate) fn total(points: f64, max: f64, lang: Lang) -> String {
+    use crate::report::number::num;
+    let one = max == 1.0;
+    match (lang, one) {
+        (Lang::En, true) => format!("{} of {} point", num(points), num(max)),
+        (Lang::En, false) => format!("{} of {} points", num(points), num(max)),
+        (Lang::Pt, true) => format!("{} de {} ponto", num(points), num(max)),
+        (Lang::Pt, false) => format!("{} de {} pontos", num(points), num(max)),
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::de;

@@ -16,9 +16,12 @@
 //!   reading it matches, if any (4.2's "normal reversed" is |cos θ|, a slip, not an intent).
 
 pub mod answer;
+pub mod export;
 pub mod grade;
 pub(crate) mod messages;
+pub mod moodle;
 pub mod report;
+pub mod rubric;
 pub(crate) mod slips;
 pub(crate) mod steps;
 

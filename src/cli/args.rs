@@ -264,12 +264,46 @@ pub(crate) struct GradeArgs {
     /// The folder of exercise files: exercise "4.2" is DIR/4.2.json.
     #[arg(long, value_name = "DIR")]
     pub(crate) exercises: PathBuf,
-    /// Report format: one CSV line per input row, or JSON with the rows and the summary.
+    /// Report format: one CSV line per input row; JSON with the rows, the summary and the
+    /// students' totals; Gradescope's results.json (one student: the file; several: an object
+    /// keyed by student, or one file per student with -o DIR/); JUnit XML (a testsuite per
+    /// student, a testcase per exercise).
     #[arg(long, value_enum, default_value_t = GradeFormat::Csv)]
     pub(crate) format: GradeFormat,
-    /// The scale of answers that are not "#RRGGBB".
-    #[arg(long, value_enum, default_value = "1")]
-    pub(crate) scale: check::Scale,
+    /// The scale of answers that are not "#RRGGBB" [default: 0–1, but a row of three whole
+    /// numbers 0–255, one above 1, is read as 8-bit, and its feedback says so].
+    #[arg(long, value_enum)]
+    pub(crate) scale: Option<check::Scale>,
+    /// Points per exercise, e.g. 4.1=1,4.2=2 (over a --rubric file's) [default: 1 each].
+    #[arg(long, value_name = "EX=P,...")]
+    pub(crate) points: Option<String>,
+    /// A rubric file: {"points": {"4.1": 1, "4.2": 2}, "default": 1, "reading_credit": 0.5}.
+    #[arg(long, value_name = "PATH")]
+    pub(crate) rubric: Option<PathBuf>,
+    /// The share of an exercise's points an answer in its likely intended reading earns, 0 to 1
+    /// (over the rubric's) [default: 0.5; nothing under --strict].
+    #[arg(long, value_name = "SHARE", value_parser = parse_fraction)]
+    pub(crate) reading_credit: Option<f64>,
+    /// Which answer counts when a student answers an exercise more than once (the others stay
+    /// in the report with counted false).
+    #[arg(long, value_enum, default_value_t = check::rubric::Duplicates::Last)]
+    pub(crate) duplicates: check::rubric::Duplicates,
+    /// Also write each student's total as CSV to this file (student, points, max_points, then
+    /// one column per exercise).
+    #[arg(long, value_name = "PATH")]
+    pub(crate) by_student: Option<PathBuf>,
+    /// Language of the feedback column and of the platforms' reports.
+    #[arg(long, value_enum, default_value_t = Lang::En)]
+    pub(crate) lang: Lang,
+    /// What the submissions are: the plain CSV, or Moodle's quiz Responses report downloaded
+    /// as CSV ("Response 1", …; Cloze parts "part 1: …; part 2: …; part 3: …") [default:
+    /// detected from the header].
+    #[arg(long, value_enum, default_value_t = check::grade::Input::Auto)]
+    pub(crate) input: check::grade::Input,
+    /// A Moodle export's question slots, in order: slot N is the N-th exercise [default: the
+    /// exercise files of --exercises in name order].
+    #[arg(long, value_name = "EX,...", value_delimiter = ',')]
+    pub(crate) questions: Vec<String>,
     /// The largest difference accepted per channel [default: each exercise key's own, else
     /// 0.005 on the 0–1 scale, 1 on the 255 scale].
     #[arg(long, value_name = "T", allow_hyphen_values = true, value_parser = parse_tolerance)]
@@ -336,6 +370,8 @@ pub(crate) enum CheckFormat {
 pub(crate) enum GradeFormat {
     Csv,
     Json,
+    Gradescope,
+    Junit,
 }
 
 #[derive(Debug, Args)]

@@ -1,6 +1,8 @@
 //! `phong grade`: a CSV of answers graded row by row against the exercise files, the report
 //! written (CSV or JSON) and, with `--summary`, the summary per exercise.
 
+use std::path::Path;
+
 use crate::check;
 use crate::cli::args::{GradeArgs, GradeFormat};
 use crate::cli::error::{self, CliError};
@@ -21,37 +23,89 @@ pub(crate) fn run(args: &GradeArgs) -> Result<Exit, CliError> {
             fix: "give the folder that holds the exercise files (exercise 4.2 is DIR/4.2.json)",
         });
     }
+    let mut inputs: Vec<&Path> = vec![&args.submissions];
+    if let Some(r) = &args.rubric {
+        inputs.push(r);
+    }
     output::distinct(
-        &[&args.submissions],
+        &inputs,
         &[
             ("--output", args.output.as_deref()),
             ("--summary", args.summary.as_deref()),
+            ("--by-student", args.by_student.as_deref()),
         ],
     )?;
+    let mut rubric = match &args.rubric {
+        None => check::rubric::Rubric::default(),
+        Some(path) => {
+            let bad = |why: String| CliError::Usage {
+                flag: format!("--rubric {}", path.display()),
+                message: why,
+                fix: "give a rubric file as the README's Grading section shows".into(),
+            };
+            let bytes = crate::problem::read_limited(path, 1 << 20, "a rubric file")
+                .map_err(|e| bad(format!("cannot read the file: {e}")))?;
+            check::rubric::Rubric::from_json(&String::from_utf8_lossy(&bytes)).map_err(bad)?
+        }
+    };
+    if let Some(p) = &args.points {
+        rubric.add_points(p).map_err(|why| CliError::Usage {
+            flag: "--points".into(),
+            message: why,
+            fix: "write --points 4.1=1,4.2=2".into(),
+        })?;
+    }
+    if let Some(c) = args.reading_credit {
+        rubric.reading_credit = check::rubric::check_credit(c).map_err(|why| CliError::Usage {
+            flag: "--reading-credit".into(),
+            message: why,
+            fix: "give a share from 0 to 1 (0.5 for half the points)".into(),
+        })?;
+    }
     let options = check::grade::Options {
         exercises: args.exercises.clone(),
-        scale: args.scale,
+        scale: args.scale.unwrap_or(check::Scale::Unit),
         tolerance: args.tolerance,
         strict: args.strict,
         delimiter: args.delimiter,
+        detect_scale: args.scale.is_none(),
+        rubric,
+        duplicates: args.duplicates,
+        lang: args.lang,
+        input: args.input,
+        questions: args.questions.clone(),
     };
     let report = check::grade::grade_file(&args.submissions, &options)?;
-    let body = match args.format {
-        GradeFormat::Csv => check::grade::rows_csv(&report),
-        GradeFormat::Json => output::json_pretty(&report).into_bytes(),
-    };
-    // The report first, then the summary, then the line on standard error: a message that
-    // cannot be shown never costs the report.
-    let written = output::emit_bytes(args.output.as_deref(), &body);
-    let exit = match &args.summary {
-        None => written.map(|()| Exit::Success)?,
-        // The summary is written even when the report could not be.
-        Some(summary) => {
-            let exit = error::carry_on(written);
-            output::emit_bytes(Some(summary), &check::grade::summary_csv(&report))?;
-            exit
+    // The report first, then the summary and the totals, then the line on standard error: a
+    // message that cannot be shown never costs the report.
+    let written = match args.format {
+        GradeFormat::Csv => {
+            output::emit_bytes(args.output.as_deref(), &check::grade::rows_csv(&report))
         }
+        GradeFormat::Json => output::emit_bytes(
+            args.output.as_deref(),
+            output::json_pretty(&report).as_bytes(),
+        ),
+        GradeFormat::Junit => output::emit_bytes(
+            args.output.as_deref(),
+            check::export::junit::class(&report, args.lang).as_bytes(),
+        ),
+        GradeFormat::Gradescope => gradescope(&report, args),
     };
+    let mut exit = error::carry_on(written);
+    // The summary and the totals are written even when the report could not be.
+    if let Some(summary) = &args.summary {
+        exit = exit.max(error::carry_on(output::emit_bytes(
+            Some(summary),
+            &check::grade::summary_csv(&report),
+        )));
+    }
+    if let Some(by) = &args.by_student {
+        exit = exit.max(error::carry_on(output::emit_bytes(
+            Some(by),
+            &check::grade::students_csv(&report),
+        )));
+    }
     let total =
         |f: fn(&check::grade::SummaryOut) -> usize| report.summary.iter().map(f).sum::<usize>();
     output::say(&format_args!(
@@ -63,4 +117,33 @@ pub(crate) fn run(args: &GradeArgs) -> Result<Exit, CliError> {
         total(|s| s.invalid)
     ));
     Ok(exit)
+}
+
+/// Gradescope's results.json: to `-o FILE` or standard output (one student: the file itself;
+/// several: an object keyed by student), or, with `-o DIR/` (a folder, or a path ending in
+/// `/`), one `DIR/STUDENT.json` per student.
+fn gradescope(report: &check::grade::Report, args: &GradeArgs) -> Result<(), CliError> {
+    let to_folder = args.output.as_deref().filter(|o| {
+        o.is_dir()
+            || o.as_os_str()
+                .to_string_lossy()
+                .ends_with(std::path::MAIN_SEPARATOR)
+    });
+    let Some(dir) = to_folder else {
+        let doc = check::export::gradescope::class(report, args.lang);
+        return output::emit_bytes(args.output.as_deref(), output::json_pretty(&doc).as_bytes());
+    };
+    std::fs::create_dir_all(dir).map_err(|source| CliError::CreateFolder {
+        path: dir.to_owned(),
+        source,
+    })?;
+    let names = check::export::file_names(report);
+    for (student, name) in report.students.iter().zip(names) {
+        let doc = check::export::gradescope::results(report, student, args.lang);
+        output::emit_bytes(
+            Some(&dir.join(format!("{name}.json"))),
+            output::json_pretty(&doc).as_bytes(),
+        )?;
+    }
+    Ok(())
 }
