@@ -1,0 +1,130 @@
+//! The arguments of the commands that judge answers: `phong check` and `phong grade`.
+
+use super::*;
+
+#[derive(Debug, Args)]
+pub(crate) struct CheckArgs {
+    /// Problem files (JSON). Without --answer, each file's answer key is checked.
+    #[arg(required = true, value_name = "FILE")]
+    pub(crate) files: Vec<PathBuf>,
+    /// The answer to check: "0.52 0.03 0", "(0.52, 0.03, 0)", "[0.52; 0.03; 0]", "#RRGGBB", or
+    /// three integers 0–255 with --scale 255. Only with one FILE.
+    #[arg(long, value_name = "ANSWER", allow_hyphen_values = true)]
+    pub(crate) answer: Option<String>,
+    /// The answer's scale: 1 (components on [0, 1]) or 255 (8-bit integers). "#RRGGBB" is 255.
+    #[arg(long, value_enum, default_value = "1")]
+    pub(crate) scale: check::Scale,
+    /// The largest difference accepted per channel, on the answer's scale [default: the key's
+    /// own, else 0.005 on the 0–1 scale, 1 on the 255 scale].
+    #[arg(long, value_name = "T", allow_hyphen_values = true, value_parser = parse_tolerance)]
+    pub(crate) tolerance: Option<f64>,
+    /// Accept only the problem as written, not its likely intended reading.
+    #[arg(long)]
+    pub(crate) strict: bool,
+    /// Check an intermediate step, NAME=VALUE (repeatable): cos_theta=0.98995, R=0.6,0,0.8,
+    /// cos_theta[1]=0.5 for lights[1]. Names: t, P, N, V, I_a, ambient, L, d, falloff_factor,
+    /// cos_psi, spot_factor, I_l, n_dot_l, cos_theta, diffuse, R, cos_phi, cos_phi_pow,
+    /// specular, total_diffuse, total_specular, I. Only with one FILE.
+    #[arg(long, value_name = "NAME=VALUE", allow_hyphen_values = true)]
+    pub(crate) step: Vec<String>,
+    /// Check the steps in a JSON file: {"cos_theta": 0.98995, "R": [0.6, 0, 0.8]}. Only with
+    /// one FILE.
+    #[arg(long, value_name = "STEPS.json")]
+    pub(crate) steps: Option<PathBuf>,
+    /// Instead of checking an answer, list what each applicable slip (and pair) gives.
+    #[arg(long, conflicts_with_all = ["answer", "format", "step", "steps"])]
+    pub(crate) slips: bool,
+    /// Output format: text for people, json for scripts (stable field names, format_version).
+    #[arg(long, value_enum, default_value_t = CheckFormat::Text)]
+    pub(crate) format: CheckFormat,
+    /// Language of the text output.
+    #[arg(long, value_enum, default_value_t = Lang::En)]
+    pub(crate) lang: Lang,
+    /// Write the output to this file (atomically) instead of standard output.
+    #[arg(short, long, value_name = "PATH")]
+    pub(crate) output: Option<PathBuf>,
+}
+
+#[derive(Debug, Args)]
+pub(crate) struct GradeArgs {
+    /// The submissions: a CSV file (or - for standard input) with the columns student,
+    /// exercise, answer, separated by commas, semicolons or tabs; a first row that names the
+    /// three columns (student|aluno|estudante, exercise|exercicio|questao, answer|resposta) is a
+    /// header.
+    #[arg(value_name = "SUBMISSIONS")]
+    pub(crate) submissions: PathBuf,
+    /// The separator of the submissions' fields: `,`, `;` or `tab` [default: detected from the
+    /// first rows].
+    #[arg(long, value_name = "SEP", value_parser = parse_delimiter)]
+    pub(crate) delimiter: Option<u8>,
+    /// The folder of exercise files: exercise "4.2" is DIR/4.2.json.
+    #[arg(long, value_name = "DIR")]
+    pub(crate) exercises: PathBuf,
+    /// Report format: one CSV line per input row; JSON with the rows, the summary and the
+    /// students' totals; Gradescope's results.json (one student: the file; several: an object
+    /// keyed by student, or one file per student with -o DIR/); JUnit XML (a testsuite per
+    /// student, a testcase per exercise).
+    #[arg(long, value_enum, default_value_t = GradeFormat::Csv)]
+    pub(crate) format: GradeFormat,
+    /// The scale of answers that are not "#RRGGBB" [default: 0–1, but a row of three whole
+    /// numbers 0–255, one above 1, is read as 8-bit, and its feedback says so].
+    #[arg(long, value_enum)]
+    pub(crate) scale: Option<check::Scale>,
+    /// Points per exercise, e.g. 4.1=1,4.2=2 (over a --rubric file's) [default: 1 each].
+    #[arg(long, value_name = "EX=P,...")]
+    pub(crate) points: Option<String>,
+    /// A rubric file: {"points": {"4.1": 1, "4.2": 2}, "default": 1, "reading_credit": 0.5}.
+    #[arg(long, value_name = "PATH")]
+    pub(crate) rubric: Option<PathBuf>,
+    /// The share of an exercise's points an answer in its likely intended reading earns, 0 to 1
+    /// (over the rubric's) [default: 0.5; nothing under --strict].
+    #[arg(long, value_name = "SHARE", value_parser = parse_fraction)]
+    pub(crate) reading_credit: Option<f64>,
+    /// Which answer counts when a student answers an exercise more than once (the others stay
+    /// in the report with counted false).
+    #[arg(long, value_enum, default_value_t = check::rubric::Duplicates::Last)]
+    pub(crate) duplicates: check::rubric::Duplicates,
+    /// Also write each student's total as CSV to this file (student, points, max_points, then
+    /// one column per exercise).
+    #[arg(long, value_name = "PATH")]
+    pub(crate) by_student: Option<PathBuf>,
+    /// Language of the feedback column and of the platforms' reports.
+    #[arg(long, value_enum, default_value_t = Lang::En)]
+    pub(crate) lang: Lang,
+    /// What the submissions are: the plain CSV, or Moodle's quiz Responses report downloaded
+    /// as CSV ("Response 1", …; Cloze parts "part 1: …; part 2: …; part 3: …") [default:
+    /// detected from the header].
+    #[arg(long, value_enum, default_value_t = check::grade::Input::Auto)]
+    pub(crate) input: check::grade::Input,
+    /// A Moodle export's question slots, in order: slot N is the N-th exercise [default: the
+    /// exercise files of --exercises in name order].
+    #[arg(long, value_name = "EX,...", value_delimiter = ',')]
+    pub(crate) questions: Vec<String>,
+    /// The largest difference accepted per channel [default: each exercise key's own, else
+    /// 0.005 on the 0–1 scale, 1 on the 255 scale].
+    #[arg(long, value_name = "T", allow_hyphen_values = true, value_parser = parse_tolerance)]
+    pub(crate) tolerance: Option<f64>,
+    /// Accept only the problem as written, not its likely intended reading.
+    #[arg(long)]
+    pub(crate) strict: bool,
+    /// Write the report to this file (atomically) instead of standard output.
+    #[arg(short, long, value_name = "PATH")]
+    pub(crate) output: Option<PathBuf>,
+    /// Also write the summary per exercise as CSV to this file (atomically).
+    #[arg(long, value_name = "PATH")]
+    pub(crate) summary: Option<PathBuf>,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub(crate) enum CheckFormat {
+    Text,
+    Json,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub(crate) enum GradeFormat {
+    Csv,
+    Json,
+    Gradescope,
+    Junit,
+}
