@@ -89,14 +89,9 @@ impl CliError {
     }
 }
 
-/// Prints an error on standard error as `error: …`; every error of `phong` is printed here (a
-/// closed standard error is ignored: [`super::output::say`]).
-pub(crate) fn print(error: &dyn Display) {
-    print_in(error, Lang::En);
-}
-
-/// Prints an error on standard error in `lang` (`erro: …` in Portuguese, through the catalogue
-/// of [`crate::report::messages::error_in`]); a closed standard error is ignored.
+/// Prints an error on standard error in `lang`, as `error: …` (`erro: …` in Portuguese, through
+/// the catalogue of [`crate::report::messages::error_in`]); every error of `phong` is printed
+/// here (a closed standard error is ignored: [`super::output::say`]).
 pub(crate) fn print_in(error: &dyn Display, lang: Lang) {
     super::output::say(&format_args!(
         "{}: {}",

@@ -159,12 +159,12 @@ fn with_steps(args: &CheckArgs, steps: &[check::steps::GivenStep]) -> Result<Exi
         )
     });
     if let Err(f) = &checked.outcome {
-        error::print(&f.message);
+        error::print_in(&f.message, args.lang);
     }
     if let Some(c) = &answer {
         exit = exit.max(exit_of(c.status()));
         if let Err(f) = &c.outcome {
-            error::print(&f.message);
+            error::print_in(&f.message, args.lang);
         }
     }
     let out = match args.format {
