@@ -275,7 +275,7 @@ fn prose(s: &str) -> String {
             || w.contains("lights")
             || w.contains("surfaces")
             || w.contains(".json")
-            || w.starts_with("--")
+            || w.trim_start_matches(['\'', '(']).starts_with("--")
             || (previous.contains(".json:") && w.ends_with(':'));
         if !identifier {
             kept.push(w);
@@ -722,6 +722,43 @@ fn the_rarer_errors_speak_portuguese_too() {
             .collect();
         let flags: Vec<&str> = flags.iter().map(String::as_str).collect();
         runs.push((name.into(), check(&flags)));
+    }
+    // Flag values that their parsers refuse (clap prints them; phong says them in Portuguese).
+    let render = |flags: &[&str]| {
+        let mut v: Vec<String> = ["render", "--lang", "pt", "scenes/4.3.json"]
+            .map(String::from)
+            .to_vec();
+        v.extend(flags.iter().map(|s| s.to_string()));
+        v
+    };
+    for (name, args) in [
+        (
+            "--tolerance abc",
+            check(&["--answer", "0 0 0", "--tolerance", "abc"]),
+        ),
+        (
+            "--tolerance 1e400",
+            check(&["--answer", "0 0 0", "--tolerance", "1e400"]),
+        ),
+        ("--samples 0", render(&["--samples", "0", "-o", "x.png"])),
+        ("--samples x", render(&["--samples", "x", "-o", "x.png"])),
+        (
+            "--max-level 5000",
+            render(&["--max-level", "5000", "-o", "x.png"]),
+        ),
+        (
+            "--min-weight -1",
+            render(&["--min-weight=-1", "-o", "x.png"]),
+        ),
+        ("--threads 0", render(&["--threads", "0", "-o", "x.png"])),
+        ("--explain-pixel 5", render(&["--explain-pixel", "5"])),
+        ("--explain-pixel a,b", render(&["--explain-pixel", "a,b"])),
+        (
+            "--explain-pixel outside",
+            render(&["--explain-pixel", "5000,5000"]),
+        ),
+    ] {
+        runs.push((name.into(), args));
     }
     // In parallel: a run is a process, and most of the time is its start.
     let results: Vec<(String, String)> = std::thread::scope(|s| {

@@ -691,6 +691,45 @@ pub fn reading_explanation_given(code: ReadingCode, lang: Lang, viewer: bool) ->
 const ERRORS_PT: &[(&str, &str)] = &[
     // The frame of every message.
     (". Fix: ", ". Correção: "),
+    // Flag values (cli/parse.rs), before the validation's phrases they share parts with.
+    (
+        "Correção: give a maximum level (1 = primary rays only) from 1 to ",
+        "Correção: dê um nível máximo (1 = só os raios primários) de 1 a ",
+    ),
+    ("Correção: give samples per pixel from 1 to ", "Correção: dê as amostras por pixel de 1 a "),
+    (
+        "Correção: give the renders per setting from 1 to ",
+        "Correção: dê as renderizações por configuração de 1 a ",
+    ),
+    ("Correção: give worker threads from 1 to ", "Correção: dê as threads de trabalho de 1 a "),
+    (" is not a whole number", " não é um número inteiro"),
+    (" is not a number ≥ 0", " não é um número ≥ 0"),
+    (
+        "write a decimal (0.05) or a fraction (1/255)",
+        "escreva um decimal (0.05) ou uma fração (1/255)",
+    ),
+    (
+        "give a number ≥ 0 (e.g. 0.005 on the 0–1 scale)",
+        "dê um número ≥ 0 (por exemplo 0.005 na escala 0–1)",
+    ),
+    (
+        " is not a tolerance. Correção: give the largest difference accepted per channel, a number ≥ 0 (e.g. 0.005 on the 0–1 scale, 1 on the 255 scale)",
+        " não é uma tolerância. Correção: dê a maior diferença aceita por canal, um número ≥ 0 (por exemplo 0.005 na escala 0–1, 1 na escala 255)",
+    ),
+    (" is not a separator: give , or ; or tab", " não é um separador: dê , ou ; ou tab"),
+    (
+        " is not a size; write WIDTHxHEIGHT, each 1 to ",
+        " não é um tamanho; escreva LARGURAxALTURA, cada um de 1 a ",
+    ),
+    (" (e.g. 320x240)", " (por exemplo 320x240)"),
+    (
+        " is not X,Y (two whole numbers and a comma, e.g. 320,240)",
+        " não é X,Y (dois números inteiros e uma vírgula, por exemplo 320,240)",
+    ),
+    (
+        " is not a pixel coordinate (a whole number ≥ 0)",
+        " não é uma coordenada de pixel (um número inteiro ≥ 0)",
+    ),
     // The rarer validation messages (problem/validate.rs), whole phrases before their parts.
     // A light's or a surface's kind, after its label.
     ("] (point)", "] (pontual)"),
