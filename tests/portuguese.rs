@@ -117,6 +117,7 @@ const ENGLISH: &[&str] = &[
     "number",
     "numbers",
     "gives",
+    "warning",
 ];
 
 /// The English words the output must not hold.
@@ -408,6 +409,18 @@ fn every_command_with_lang_pt_speaks_portuguese() {
         let p = path.to_str().unwrap();
         check(format!("solve {name}"), run(&["solve", "--lang", "pt", p]));
         check(format!("check {name}"), run(&["check", "--lang", "pt", p]));
+    }
+    let colour = dir.path().join("0-255.json");
+    std::fs::write(
+        &colour,
+        r#"{"lights": [{"type": "point", "color": [1, 1, 1], "position": [0, 0, 10], "falloff": 0}], "point": {"position": [0, 0, 0], "normal": [0, 0, 1], "material": {"diffuse": [200, 100, 50]}}}"#,
+    )
+    .unwrap();
+    let colour = colour.to_str().unwrap();
+    for command in ["solve", "check"] {
+        let (stdout, stderr) = run(&[command, "--lang", "pt", colour]);
+        assert!(stderr.starts_with("aviso: "), "{command}: {stderr}");
+        check(format!("{command} with a warning"), (stdout, stderr));
     }
     check(
         "solve of a missing file".into(),
@@ -760,6 +773,16 @@ fn the_rarer_errors_speak_portuguese_too() {
     ] {
         runs.push((name.into(), args));
     }
+    // The commands' own conflicts.
+    runs.push((
+        "--answer with two files".into(),
+        check(&["exercises/4.1.json", "--answer", "0 0 0"]),
+    ));
+    runs.push((
+        "--step with two files".into(),
+        check(&["exercises/4.1.json", "--step", "cos_theta=1"]),
+    ));
+    runs.push(("render to .jpg".into(), render(&["-o", "x.jpg"])));
     // In parallel: a run is a process, and most of the time is its start.
     let results: Vec<(String, String)> = std::thread::scope(|s| {
         let handles: Vec<_> = runs

@@ -133,9 +133,10 @@ pub(crate) fn refused(e: &clap::Error, args: &[std::ffi::OsString]) -> Option<Ex
     Some(Exit::BadInput)
 }
 
-/// Prints a warning (a likely mistake that is not an error) on standard error.
-pub(crate) fn warn(warning: &dyn Display) {
-    super::output::say(&format_args!("warning: {warning}"));
+/// Prints a warning (a likely mistake that is not an error), already in `lang`, on standard
+/// error after `warning:` (`aviso:` in Portuguese).
+pub(crate) fn warn_in(warning: &dyn Display, lang: Lang) {
+    super::output::say(&format_args!("{}: {warning}", messages::warning_word(lang)));
 }
 
 /// The exit of a step a command goes on after (one file of several): success, or bad input

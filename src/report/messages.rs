@@ -1230,6 +1230,19 @@ const ERRORS_PT: &[(&str, &str)] = &[
     ("check one file's steps at a time", "confira os passos de um arquivo por vez"),
     (" at line ", " na linha "),
     (" column ", " coluna "),
+    // The commands' own conflicts (cli/commands).
+    ("--answer checks one file, and ", "--answer confere um arquivo, e "),
+    ("--step and --steps check one file, and ", "--step e --steps conferem um arquivo, e "),
+    (" were given", " foram dados"),
+    (
+        "check one file at a time, or put each file's answer in its \"answer\" field and leave out --answer",
+        "confira um arquivo por vez, ou ponha a resposta de cada arquivo no seu campo \"answer\" e tire --answer",
+    ),
+    (" does not end in .png or .ppm", " não termina em .png ou .ppm"),
+    (
+        "name the image *.png or *.ppm, or give --image-format png|ppm",
+        "dê à imagem um nome *.png ou *.ppm, ou dê --image-format png|ppm",
+    ),
     // The command line (cli/error.rs).
     (": not a folder", ": não é uma pasta"),
     (": cannot create the folder: ", ": não é possível criar a pasta: "),
@@ -1407,6 +1420,11 @@ fn without_portuguese_aside(message: &str) -> String {
     }
     out.push_str(rest);
     out
+}
+
+/// "warning" or "aviso", before a warning on standard error.
+pub fn warning_word(lang: Lang) -> &'static str {
+    pick(lang, "warning", "aviso")
 }
 
 /// "error" or "erro", before a message on standard error.
