@@ -1,6 +1,8 @@
 //! With `--lang pt` every phrase the user can see is Portuguese: every command that takes
 //! `--lang` (solve in every format and part, check, check --slips, render --explain-pixel in
-//! every format) and their common errors, run on the bundled exercises and the 4.3 scene. The
+//! every format) and their common errors, run on the bundled exercises and scenes; and the rarer
+//! errors, each of its own template (lights, materials, points, rays, surfaces, meshes, the
+//! camera, settings, syntax, answers, steps, refused flag values), one bad input each. The
 //! test fails on any English word of a list: the English catalogue's words that its Portuguese
 //! does not use, and the distinctive words of the other English messages.
 //!
@@ -187,8 +189,9 @@ fn is_field_path(token: &str) -> bool {
 
 /// The prose of an output: identifiers, markup and file names taken out.
 fn prose(s: &str) -> String {
-    // Field paths, before the brackets in them are read as markup.
+    // Field paths, before the brackets in them are read as markup; a program's name.
     let s: String = s
+        .replace("POV-Ray", "POV")
         .lines()
         .map(|l| {
             l.split(' ')
@@ -363,6 +366,21 @@ fn every_command_with_lang_pt_speaks_portuguese() {
                 "pt",
                 "--format",
                 format,
+            ]),
+        );
+    }
+    // Every bundled scene: its title, question and light names.
+    for scene in ["classic", "mesh", "pov-lights", "pov-materials"] {
+        let file = format!("scenes/{scene}.json");
+        check(
+            format!("render {file} --explain-pixel"),
+            run(&[
+                "render",
+                &file,
+                "--explain-pixel",
+                "100,100",
+                "--lang",
+                "pt",
             ]),
         );
     }
