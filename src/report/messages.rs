@@ -841,7 +841,6 @@ const ERRORS_PT: &[(&str, &str)] = &[
         " amostras por pixel neste tamanho, ou uma imagem menor",
     ),
     ("give a smaller image", "dê uma imagem menor"),
-    ("give at most ", "dê no máximo "),
     ("give 1 to ", "dê de 1 a "),
     (" samples per pixel", " amostras por pixel"),
     (" is not a weight", " não é um peso"),
@@ -859,6 +858,7 @@ const ERRORS_PT: &[(&str, &str)] = &[
         "give at most 1,000,000 surfaces and triangles in all",
         "dê no máximo 1,000,000 superfícies e triângulos ao todo",
     ),
+    ("give at most ", "dê no máximo "),
     ("give a smaller mesh, or free memory", "dê uma malha menor, ou libere memória"),
     ("out of memory: this needs about ", "memória insuficiente: isto precisa de cerca de "),
     // The material's terms.
@@ -1097,6 +1097,7 @@ const ERRORS_PT: &[(&str, &str)] = &[
     ("give finite coordinates (or use --precision f64)", "dê coordenadas finitas (ou use --precision f64)"),
     (" is a line element, which has no surface to hit", " é um elemento de linha, que não tem superfície a atingir"),
     ("remove the `l` lines (faces are `f i j k`)", "remova as linhas `l` (as faces são `f i j k`)"),
+    ("a face refers to vertex ", "uma face se refere ao vértice "),
     ("the face ", "a face "),
     (" vertices, and a face needs at least 3", " vértices, e uma face precisa de pelo menos 3"),
     (
@@ -1111,7 +1112,6 @@ const ERRORS_PT: &[(&str, &str)] = &[
     ),
     ("correct the face's vertex indices", "corrija os índices de vértices da face"),
     ("the mesh has more than ", "a malha tem mais de "),
-    ("a face refers to vertex ", "uma face se refere ao vértice "),
     (" which does not exist", ", que não existe"),
     (" is not finite in ", " não é finito em "),
     (": the face's triangle ", ": o triângulo "),
@@ -1307,7 +1307,6 @@ const ERRORS_PT: &[(&str, &str)] = &[
         "f in I_l = C_l/d^f (Eq. 4.2, 4.3): 0 none, 1 linear, 2 quadratic",
         "f em I_l = C_l/d^f (Eq. 4.2, 4.3): 0 sem decaimento, 1 linear, 2 quadrático",
     ),
-    ("the cone's axis D_l (Eq. 4.4)", "o eixo D_l do cone (Eq. 4.4)"),
     ("the cone's half-angle γ in degrees (Eq. 4.4)", "o ângulo γ do cone, em graus (Eq. 4.4)"),
     (
         "the direction of travel (L for a directional light, D for a ray)",
@@ -1539,6 +1538,42 @@ mod tests {
                 "{p:?}: trailing space differs"
             );
         }
+    }
+
+    #[test]
+    fn no_error_fragment_is_hidden_by_an_earlier_one() {
+        // The fragments are replaced in order: one that holds an earlier one's English would
+        // never match, its words replaced already.
+        for (j, (later, _)) in ERRORS_PT.iter().enumerate() {
+            for (earlier, _) in &ERRORS_PT[..j] {
+                assert!(
+                    !later.contains(earlier),
+                    "{later:?} holds the earlier {earlier:?}: list it first"
+                );
+            }
+        }
+    }
+
+    #[test]
+    fn an_error_in_portuguese_keeps_its_numbers_and_fields() {
+        let en = "x.json: lights[1].falloff: 3 is not a falloff exponent. Fix: use 0 (no \
+                  falloff), 1 (linear) or 2 (quadratic), Eq. 4.3";
+        assert_eq!(
+            error_in(en, Lang::Pt),
+            "x.json: lights[1].falloff: 3 não é um expoente de decaimento. Correção: use 0 (sem \
+             decaimento), 1 (linear) ou 2 (quadrático), Eq. 4.3"
+        );
+        assert_eq!(error_in(en, Lang::En), en);
+        assert_eq!(
+            error_in(
+                "the falloff is the exponent f of d^f, a number: write 1 for \"linear\" (0 none, \
+                 1 linear, 2 quadratic) (Português: o decaimento é o expoente f de d^f (Eq. \
+                 4.3): escreva 1)",
+                Lang::Pt
+            ),
+            "o decaimento é o expoente f de d^f, um número: escreva 1 para \"linear\" (0 sem \
+             decaimento, 1 linear, 2 quadrático)"
+        );
     }
 
     #[test]
