@@ -801,6 +801,14 @@ fn the_rarer_errors_speak_portuguese_too() {
         check(&["exercises/4.1.json", "--step", "cos_theta=1"]),
     ));
     runs.push(("render to .jpg".into(), render(&["-o", "x.jpg"])));
+    std::fs::copy(root().join("exercises/4.1.json"), d.join("input.json")).unwrap();
+    let input = file("input.json");
+    runs.push((
+        "-o the input".into(),
+        ["solve", "--lang", "pt", &input, "-o", &input]
+            .map(String::from)
+            .to_vec(),
+    ));
     // In parallel: a run is a process, and most of the time is its start.
     let results: Vec<(String, String)> = std::thread::scope(|s| {
         let handles: Vec<_> = runs

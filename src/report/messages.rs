@@ -1230,6 +1230,27 @@ const ERRORS_PT: &[(&str, &str)] = &[
     ("check one file's steps at a time", "confira os passos de um arquivo por vez"),
     (" at line ", " na linha "),
     (" column ", " coluna "),
+    // Output files (cli/output.rs, cli/commands).
+    (" at path ", " no caminho "),
+    (
+        "it is a folder. Correção: give a file name in it (e.g. -o DIR/report.csv), or - for standard output",
+        "é uma pasta. Correção: dê um nome de arquivo nela (por exemplo -o DIR/report.csv), ou - para a saída padrão",
+    ),
+    ("too many levels of symbolic links (a loop?)", "níveis demais de links simbólicos (um ciclo?)"),
+    (": writing it would replace what is being read", ": escrever nele substituiria o que está sendo lido"),
+    (" is the input ", " é a entrada "),
+    (" are the same file, ", " são o mesmo arquivo, "),
+    (": one would replace the other", ": um substituiria o outro"),
+    (" another file", " outro arquivo"),
+    (
+        "give a smaller image (--size, or the camera's width and height)",
+        "dê uma imagem menor (--size, ou a largura e a altura da câmera)",
+    ),
+    ("0 threads cannot render", "0 threads não renderizam"),
+    (
+        "give --threads 1 or more (or leave it out: one per core)",
+        "dê --threads 1 ou mais (ou omita: uma por núcleo)",
+    ),
     // The commands' own conflicts (cli/commands).
     ("--answer checks one file, and ", "--answer confere um arquivo, e "),
     ("--step and --steps check one file, and ", "--step e --steps conferem um arquivo, e "),
