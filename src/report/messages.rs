@@ -840,6 +840,10 @@ const ERRORS_PT: &[(&str, &str)] = &[
         " samples per pixel at this size, or a smaller image",
         " amostras por pixel neste tamanho, ou uma imagem menor",
     ),
+    (
+        "give a smaller image (--size, or the camera's width and height)",
+        "dê uma imagem menor (--size, ou a largura e a altura da câmera)",
+    ),
     ("give a smaller image", "dê uma imagem menor"),
     ("give 1 to ", "dê de 1 a "),
     (" samples per pixel", " amostras por pixel"),
@@ -1242,10 +1246,6 @@ const ERRORS_PT: &[(&str, &str)] = &[
     (" are the same file, ", " são o mesmo arquivo, "),
     (": one would replace the other", ": um substituiria o outro"),
     (" another file", " outro arquivo"),
-    (
-        "give a smaller image (--size, or the camera's width and height)",
-        "dê uma imagem menor (--size, ou a largura e a altura da câmera)",
-    ),
     ("0 threads cannot render", "0 threads não renderizam"),
     (
         "give --threads 1 or more (or leave it out: one per core)",
