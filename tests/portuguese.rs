@@ -18,9 +18,10 @@ use assert_cmd::Command;
 use phong::report::catalogue;
 use phong::report::lang::Lang;
 
-/// Words that are rightly the same in both languages, or that are Portuguese too.
+/// Words that are rightly the same in both languages, or that are Portuguese too ("o que for
+/// maior").
 const SHARED: &[&str] = &[
-    "material", "total", "linear", "spot", "normal", "pixel", "vs", "round", "Eq", "eq",
+    "material", "total", "linear", "spot", "normal", "pixel", "vs", "round", "Eq", "eq", "for",
 ];
 
 /// The distinctive words of the English messages outside the phrase catalogue.
@@ -396,6 +397,23 @@ fn every_command_with_lang_pt_speaks_portuguese() {
             "exercises/4.2.json",
             "--answer",
             "0.5 0.5 0.5",
+        ]),
+    );
+    check(
+        "check --step".into(),
+        run(&[
+            "check",
+            "--lang",
+            "pt",
+            "exercises/4.3.json",
+            "--step",
+            "t=5",
+            "--step",
+            "N=1,0,0",
+            "--step",
+            "I_a=0,0,0",
+            "--step",
+            "diffuse=1,1,1",
         ]),
     );
     check(

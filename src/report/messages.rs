@@ -1172,6 +1172,10 @@ const ERRORS_PT: &[(&str, &str)] = &[
     ),
     ("\" in \"", "\" em \""),
     // Steps (check/steps.rs).
+    // The steps' formulas that hold words (step_formula), in an error.
+    ("O + tD on the surface", "O + tD sobre a superfície"),
+    ("N, of unit length", "N, de comprimento 1"),
+    ("I_a = Σ ambient lights", "I_a = Σ das luzes ambientes"),
     ("write {\"cos_theta\"", "escreva {\"cos_theta\""),
     (
         " is not a light's index: write the index of the light in the file's \"lights\", from 0, such as cos_theta[1]",
@@ -1440,6 +1444,18 @@ fn without_portuguese_aside(message: &str) -> String {
     }
     out.push_str(rest);
     out
+}
+
+/// The formulas of `phong check --step` that hold words (check/steps.rs's `NAMES`), in
+/// `lang`; the others are symbols only and the same in both languages.
+pub fn step_formula(formula: &'static str, lang: Lang) -> &'static str {
+    match (formula, lang) {
+        (_, Lang::En) => formula,
+        ("O + tD on the surface", Lang::Pt) => "O + tD sobre a superfície",
+        ("N, of unit length", Lang::Pt) => "N, de comprimento 1",
+        ("I_a = Σ ambient lights", Lang::Pt) => "I_a = Σ das luzes ambientes",
+        (other, Lang::Pt) => other,
+    }
 }
 
 /// "warning" or "aviso", before a warning on standard error.
