@@ -7,7 +7,15 @@ use std::path::{Path, PathBuf};
 use assert_cmd::Command;
 use serde_json::Value;
 
-const KINDS: [&str; 3] = ["ambient", "point", "ray-plane"];
+const KINDS: [&str; 7] = [
+    "ambient",
+    "point",
+    "ray-plane",
+    "directional",
+    "spot",
+    "several",
+    "sphere",
+];
 
 fn generate(kind: &str, count: u32, seed: u64, dir: &Path) -> Vec<PathBuf> {
     Command::cargo_bin("phong")
@@ -94,6 +102,7 @@ fn the_same_seed_gives_the_same_bytes_and_another_seed_other_problems() {
         let body = |p: &Path| {
             let mut v = read(p);
             v.as_object_mut().unwrap().remove("title");
+            v.as_object_mut().unwrap().remove("generated");
             v
         };
         assert!(
@@ -132,8 +141,17 @@ fn each_generated_problem_is_right_by_its_own_key() {
     }
 }
 
+fn norm(a: [f64; 3]) -> f64 {
+    dot(a, a).sqrt()
+}
+
+fn is_integer(x: f64) -> bool {
+    (x - x.round()).abs() < 1e-9
+}
+
 #[test]
 fn the_numbers_are_friendly_to_hand_calculation() {
+    let (mut inside, mut outside) = (0, 0);
     for kind in KINDS {
         let dir = tempfile::tempdir().unwrap();
         for f in generate(kind, 25, 11, dir.path()) {
@@ -141,15 +159,16 @@ fn the_numbers_are_friendly_to_hand_calculation() {
             let name = f.display().to_string();
             short_decimals(&p, &name);
             let lights = p["lights"].as_array().unwrap();
-            let point_light = lights.iter().find(|l| l["type"] == "point");
-            // The shaded point and its normal: given, or where the ray meets the plane.
+            // The shaded point and its normal: given, or where the ray meets the surface.
             let (at, n) = match kind {
                 "ambient" => {
-                    assert!(point_light.is_none());
+                    assert!(lights.iter().all(|l| l["type"] == "ambient"));
                     continue;
                 }
-                "point" => (v3(&p["point"]["position"]), v3(&p["point"]["normal"])),
-                _ => {
+                "point" | "directional" | "spot" | "several" => {
+                    (v3(&p["point"]["position"]), v3(&p["point"]["normal"]))
+                }
+                "ray-plane" => {
                     let o = v3(&p["ray"]["origin"]);
                     let d = v3(&p["ray"]["direction"]);
                     let q = v3(&p["surfaces"][0]["point"]);
@@ -157,34 +176,152 @@ fn the_numbers_are_friendly_to_hand_calculation() {
                     assert!((dot(d, d) - 1.0).abs() < 1e-12, "{name}: unit direction");
                     // t = N·(Q − O)/(N·D): an integer, in front of the origin.
                     let t = dot(n, sub(q, o)) / dot(n, d);
-                    assert!(t > 0.5 && (t - t.round()).abs() < 1e-9, "{name}: t = {t}");
+                    assert!(t > 0.5 && is_integer(t), "{name}: t = {t}");
                     assert!(dot(n, d) < 0.0, "{name}: the ray meets the front");
                     ([0, 1, 2].map(|i| o[i] + t * d[i]), n)
                 }
+                _ => {
+                    // |O + tD − C|² = r²: t² + 2t D·(O − C) + |O − C|² − r² = 0 (|D| = 1).
+                    let o = v3(&p["ray"]["origin"]);
+                    let d = v3(&p["ray"]["direction"]);
+                    let c = v3(&p["surfaces"][0]["center"]);
+                    let r = p["surfaces"][0]["radius"].as_f64().unwrap();
+                    assert!((dot(d, d) - 1.0).abs() < 1e-12, "{name}: unit direction");
+                    let oc = sub(o, c);
+                    let b = dot(d, oc);
+                    let disc = b * b - (dot(oc, oc) - r * r);
+                    assert!(disc > 0.0, "{name}: the ray meets the sphere");
+                    let t = -b - disc.sqrt();
+                    assert!(t > 0.5 && is_integer(t), "{name}: nearest t = {t}");
+                    let hit = [0, 1, 2].map(|i| o[i] + t * d[i]);
+                    (hit, sub(hit, c).map(|x| x / r))
+                }
             };
-            assert!((dot(n, n) - 1.0).abs() < 1e-12, "{name}: unit normal {n:?}");
-            // The light at an integer distance, in front (cos θ ≥ 0.2).
-            let l = v3(&point_light.unwrap()["position"]);
-            let to_light = sub(l, at);
-            let d = dot(to_light, to_light).sqrt();
-            assert!(
-                (d - d.round()).abs() < 1e-9 && d.round() >= 1.0,
-                "{name}: d = {d}"
-            );
-            assert!(
-                dot(to_light, n) / d >= 0.2 - 1e-12,
-                "{name}: the light in front"
-            );
+            assert!((dot(n, n) - 1.0).abs() < 1e-9, "{name}: unit normal {n:?}");
+            assert!(lights.iter().any(|l| l["type"] != "ambient"), "{name}");
+            if kind == "several" {
+                assert!(lights.len() >= 3, "{name}: several lights");
+            }
+            for l in lights {
+                match l["type"].as_str().unwrap() {
+                    "ambient" => {}
+                    "directional" => {
+                        // L = D_l, travelling towards the surface: −N·L ≥ 0.2.
+                        let dl = v3(&l["direction"]);
+                        assert!((norm(dl) - 1.0).abs() < 1e-12, "{name}");
+                        assert!(-dot(dl, n) >= 0.2 - 1e-12, "{name}: the sun in front");
+                    }
+                    kind_of_light => {
+                        // A point or spot light at an integer distance, in front (cos θ ≥ 0.2).
+                        let to_light = sub(v3(&l["position"]), at);
+                        let d = norm(to_light);
+                        assert!(is_integer(d) && d.round() >= 1.0, "{name}: d = {d}");
+                        assert!(
+                            dot(to_light, n) / d >= 0.2 - 1e-12,
+                            "{name}: light in front"
+                        );
+                        if kind_of_light == "spot" {
+                            let axis = v3(&l["axis"]);
+                            let psi = (-dot(axis, to_light) / d / norm(axis))
+                                .clamp(-1.0, 1.0)
+                                .acos()
+                                .to_degrees();
+                            let gamma = l["angle"].as_f64().unwrap();
+                            assert!((psi - gamma).abs() >= 5.0 - 1e-9, "{name}: ψ = {psi}");
+                            if psi < gamma {
+                                inside += 1;
+                            } else {
+                                outside += 1;
+                            }
+                        }
+                    }
+                }
+            }
             if let Some(e) = p.get("viewer").filter(|v| !v.is_null()) {
                 let to_eye = sub(v3(e), at);
-                let de = dot(to_eye, to_eye).sqrt();
-                assert!(
-                    (de - de.round()).abs() < 1e-9,
-                    "{name}: viewer distance {de}"
-                );
+                let de = norm(to_eye);
+                assert!(is_integer(de), "{name}: viewer distance {de}");
                 assert!(dot(to_eye, n) > 0.0, "{name}: the viewer in front");
             }
         }
+    }
+    assert!(
+        inside > 0 && outside > 0,
+        "spots: {inside} inside, {outside} outside"
+    );
+}
+
+/// A number as the statement writes it: as JSON does, with Portuguese's minus sign.
+fn written(x: &Value, pt: bool) -> String {
+    let s = x.to_string();
+    if pt {
+        s.replace('-', "\u{2212}")
+    } else {
+        s
+    }
+}
+
+fn written3(v: &Value, pt: bool) -> String {
+    let a = v.as_array().unwrap();
+    format!(
+        "({}, {}, {})",
+        written(&a[0], pt),
+        written(&a[1], pt),
+        written(&a[2], pt)
+    )
+}
+
+#[test]
+fn the_statements_give_the_data_and_the_seed_is_metadata() {
+    for kind in KINDS {
+        let out = Command::cargo_bin("phong")
+            .unwrap()
+            .args([
+                "new", "--kind", kind, "--count", "5", "--seed", "77", "--lang", "pt",
+            ])
+            .output()
+            .unwrap();
+        assert_eq!(out.status.code(), Some(0));
+        let docs: Value = serde_json::from_slice(&out.stdout).unwrap();
+        for (i, p) in docs.as_array().unwrap().iter().enumerate() {
+            let title = p["title"].as_str().unwrap();
+            assert!(!title.contains("77") && !title.contains("seed"), "{title}");
+            assert_eq!(p["generated"]["seed"], 77);
+            assert_eq!(p["generated"]["kind"], kind);
+            assert_eq!(p["generated"]["index"], i + 1);
+            assert!(p["title_pt"]
+                .as_str()
+                .unwrap()
+                .starts_with("Problema gerado"));
+            for (field, pt) in [("question", false), ("question_pt", true)] {
+                let q = p[field].as_str().unwrap();
+                assert!(q.ends_with('?'), "{q}");
+                for l in p["lights"].as_array().unwrap() {
+                    assert!(
+                        q.contains(&written3(&l["color"], pt)),
+                        "{kind} {field}: {q}"
+                    );
+                    if let Some(pos) = l.get("position") {
+                        assert!(q.contains(&written3(pos, pt)), "{kind} {field}: {q}");
+                    }
+                }
+                if let Some(v) = p.get("viewer") {
+                    assert!(q.contains(&written3(v, pt)), "{q}");
+                }
+                let m = &p["materials"]["M"];
+                assert!(q.contains(&written3(&m["ambient"], pt)), "{q}");
+            }
+            let pt = p["question_pt"].as_str().unwrap();
+            assert!(pt.contains("Qual") || pt.contains("Que cor"), "{pt}");
+        }
+        // Without --lang pt, English only.
+        let out = Command::cargo_bin("phong")
+            .unwrap()
+            .args(["new", "--kind", kind, "--seed", "77"])
+            .output()
+            .unwrap();
+        let doc: Value = serde_json::from_slice(&out.stdout).unwrap();
+        assert!(doc.get("question_pt").is_none() && doc.get("title_pt").is_none());
     }
 }
 

@@ -388,6 +388,18 @@ fn every_command_with_lang_pt_speaks_portuguese() {
     let mut args = vec!["check", "--lang", "pt"];
     args.extend(&files);
     check("check".into(), run(&args));
+    // The quiz: its categories are the files' names, and "none" and "no hit" are answers it
+    // accepts (as `phong check` does), not its prose.
+    let mut args = vec!["moodle", "--lang", "pt"];
+    args.extend(&files);
+    let (quiz, errors) = run(&args);
+    let quiz: String = quiz
+        .lines()
+        .filter(|l| !l.starts_with("<category>"))
+        .collect::<Vec<_>>()
+        .join("\n");
+    let quiz = quiz.replace("~=none#", "~").replace("~=no hit#", "~");
+    check("moodle".into(), (quiz, errors));
     check(
         "check --answer (wrong)".into(),
         run(&[

@@ -43,6 +43,9 @@ pub(crate) enum Command {
     Grade(GradeArgs),
     /// Write fresh problems with numbers friendly to hand calculation, each with its answer key.
     New(NewArgs),
+    /// Write problem files (or what `phong new` prints, `-` for standard input) as a Moodle XML
+    /// quiz: one Cloze question per problem, the slips as 0 % answers, the solution as feedback.
+    Moodle(MoodleArgs),
     /// Measure what each tracer setting (precision, level, minimum weight, samples) costs in
     /// time and buys in accuracy against a reference render; name the fastest within a budget.
     Tradeoff(TradeoffArgs),
@@ -56,6 +59,8 @@ impl Command {
             Command::Solve(a) => a.lang,
             Command::Render(a) => a.lang,
             Command::Check(a) => a.lang,
+            Command::Moodle(a) => a.lang,
+            Command::New(a) => a.lang,
             _ => Lang::En,
         }
     }
@@ -295,6 +300,30 @@ pub(crate) struct NewArgs {
     /// document, or an array for several).
     #[arg(short, long, value_name = "DIR")]
     pub(crate) output: Option<PathBuf>,
+    /// With pt, each problem has its title and question in Portuguese too (`title_pt`,
+    /// `question_pt`), for `--lang pt` in solve, check and moodle.
+    #[arg(long, value_enum, default_value_t = Lang::En)]
+    pub(crate) lang: Lang,
+}
+
+#[derive(Debug, Args)]
+pub(crate) struct MoodleArgs {
+    /// Problem files, each a problem or an array of problems; `-` is standard input.
+    #[arg(value_name = "FILE", required = true)]
+    pub(crate) files: Vec<PathBuf>,
+    /// Write the quiz to this file (atomically) instead of standard output.
+    #[arg(short, long, value_name = "PATH")]
+    pub(crate) output: Option<PathBuf>,
+    /// The question bank's category holding one sub-category per file.
+    #[arg(
+        long,
+        value_name = "NAME",
+        default_value = "Cap. 4 - Modelos de Iluminação"
+    )]
+    pub(crate) category: String,
+    /// Language of the questions, the feedback and the worked solutions.
+    #[arg(long, value_enum, default_value_t = Lang::En)]
+    pub(crate) lang: Lang,
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]

@@ -8,6 +8,7 @@ pub(crate) mod args;
 mod commands;
 pub(crate) mod error;
 pub(crate) mod exit;
+mod files;
 mod output;
 mod parse;
 
@@ -44,6 +45,7 @@ pub(crate) fn run(cli: &Cli) -> Exit {
         Command::Check(args) => commands::check::run(args),
         Command::Grade(args) => commands::grade::run(args),
         Command::New(args) => commands::new::run(args),
+        Command::Moodle(args) => commands::moodle::run(args),
     };
     result.unwrap_or_else(|e| error::fail_in(&e, cli.command.lang()))
 }

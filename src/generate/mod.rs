@@ -25,14 +25,29 @@ pub enum Kind {
     Point,
     /// A ray meeting a plane (in front of its origin), like exercise 4.3.
     RayPlane,
+    /// A directional light (the sun: no position, no falloff), a point, its normal and a viewer.
+    Directional,
+    /// A spot light (Eq. 4.4) whose cone holds the point, or does not: the angle ψ between the
+    /// cone's axis and the point is at least 5° from the edge γ, never within rounding of it.
+    Spot,
+    /// Several lights (two point lights, or a point and a directional light, and an ambient
+    /// light) at one point: the terms add up (Eq. 4.16).
+    Several,
+    /// A ray meeting a sphere (the nearest of its two hits, in front of the ray's origin).
+    Sphere,
 }
 
 impl Kind {
+    /// The kind's word, as `--kind` takes it and the file names begin.
     pub fn name(self) -> &'static str {
         match self {
             Kind::Ambient => "ambient",
             Kind::Point => "point",
             Kind::RayPlane => "ray-plane",
+            Kind::Directional => "directional",
+            Kind::Spot => "spot",
+            Kind::Several => "several",
+            Kind::Sphere => "sphere",
         }
     }
 }
@@ -67,7 +82,7 @@ pub fn text_of_all(problems: &[Generated]) -> String {
 }
 
 /// A number written as a person would: `4`, not `4.0`.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
 struct Num(f64);
 
 impl Serialize for Num {
@@ -175,12 +190,20 @@ fn f3(p: [i64; 3]) -> N3 {
     n3(p.map(|x| x as f64))
 }
 
-#[derive(Serialize)]
+#[derive(Serialize, Default)]
 struct LightOut {
     #[serde(rename = "type")]
     kind: &'static str,
     #[serde(skip_serializing_if = "Option::is_none")]
     position: Option<N3>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    direction: Option<N3>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    axis: Option<N3>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    angle: Option<u32>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    exponent: Option<u32>,
     color: N3,
     #[serde(skip_serializing_if = "Option::is_none")]
     falloff: Option<u8>,
@@ -213,18 +236,37 @@ struct RayOut {
 }
 
 #[derive(Serialize)]
-struct PlaneOut {
+struct SurfaceOut {
     #[serde(rename = "type")]
     kind: &'static str,
-    point: N3,
-    normal: N3,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    point: Option<N3>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    normal: Option<N3>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    center: Option<N3>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    radius: Option<Num>,
     material: &'static str,
+}
+
+/// Where the problem came from (the format's `generated`): metadata, not part of the question.
+#[derive(Serialize)]
+struct GeneratedOut {
+    kind: &'static str,
+    seed: u64,
+    index: u32,
 }
 
 #[derive(Serialize)]
 struct ProblemOut {
     title: String,
-    question: &'static str,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    title_pt: Option<String>,
+    question: String,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    question_pt: Option<String>,
+    generated: GeneratedOut,
     materials: std::collections::BTreeMap<&'static str, MaterialOut>,
     lights: Vec<LightOut>,
     #[serde(skip_serializing_if = "Option::is_none")]
@@ -234,19 +276,32 @@ struct ProblemOut {
     #[serde(skip_serializing_if = "Option::is_none")]
     ray: Option<RayOut>,
     #[serde(skip_serializing_if = "Vec::is_empty")]
-    surfaces: Vec<PlaneOut>,
+    surfaces: Vec<SurfaceOut>,
     #[serde(skip_serializing_if = "Option::is_none")]
     answer: Option<N3>,
 }
 
-/// Writes `count` problems of `kind` from `seed`.
-pub fn generate(kind: Kind, count: u32, seed: u64) -> Vec<Generated> {
+/// The languages a statement is written in.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Tongue {
+    En,
+    Pt,
+}
+
+/// Writes `count` problems of `kind` from `seed`; with `portuguese`, each has its title and
+/// question in Portuguese too (`title_pt`, `question_pt`).
+pub fn generate(kind: Kind, count: u32, seed: u64, portuguese: bool) -> Vec<Generated> {
     (1..=count)
         .map(|i| {
             // One stream per kind and problem: problem i is the same whatever the count.
             let mut rng = ChaCha8Rng::seed_from_u64(seed);
             rng.set_stream((kind as u64) << 32 | u64::from(i));
             let mut problem = draw(kind, &mut Draw(rng), i, seed);
+            problem.question = statement(&problem, Tongue::En);
+            if portuguese {
+                problem.title_pt = Some(title(kind, i, Tongue::Pt));
+                problem.question_pt = Some(statement(&problem, Tongue::Pt));
+            }
             problem.answer = Some(n3(answer_key(&problem)));
             Generated {
                 file_name: format!("{}-{seed}-{i:03}.json", kind.name()),
@@ -256,26 +311,127 @@ pub fn generate(kind: Kind, count: u32, seed: u64) -> Vec<Generated> {
         .collect()
 }
 
+fn title(kind: Kind, i: u32, t: Tongue) -> String {
+    let (en, pt) = match kind {
+        Kind::Ambient => ("ambient light", "luz ambiente"),
+        Kind::Point => ("point light", "luz pontual"),
+        Kind::RayPlane => ("ray and plane", "raio e plano"),
+        Kind::Directional => ("directional light", "luz direcional"),
+        Kind::Spot => ("spot light", "luz spot"),
+        Kind::Several => ("several lights", "várias luzes"),
+        Kind::Sphere => ("ray and sphere", "raio e esfera"),
+    };
+    match t {
+        Tongue::En => format!("Generated problem {i}: {en}"),
+        Tongue::Pt => format!("Problema gerado {i}: {pt}"),
+    }
+}
+
+fn ambient_light(r: &mut Draw, levels: &[f64]) -> LightOut {
+    LightOut {
+        kind: "ambient",
+        color: n3([0; 3].map(|_| r.pick(levels))),
+        ..LightOut::default()
+    }
+}
+
+fn point_light(p: [i64; 3], n: Unit, r: &mut Draw) -> LightOut {
+    let light_dir = r.unit_facing(n, 0.2);
+    let d = r.range(1, 5);
+    let falloff = r.below(3) as u8;
+    LightOut {
+        kind: "point",
+        position: Some(offset(p, d, light_dir)),
+        color: n3([0; 3].map(|_| r.pick(&[0.5, 1.0]))),
+        falloff: Some(falloff),
+        ..LightOut::default()
+    }
+}
+
+fn directional_light(n: Unit, r: &mut Draw) -> LightOut {
+    let toward = r.unit_facing(n, 0.2);
+    LightOut {
+        kind: "directional",
+        direction: Some(n3(toward.f().map(|x| -x))),
+        color: n3([0; 3].map(|_| r.pick(&[0.5, 1.0]))),
+        ..LightOut::default()
+    }
+}
+
+/// A spot light in front of the surface whose cone holds P (`inside`) or not, with
+/// |ψ − γ| ≥ 5°: the cone test is never decided by rounding.
+fn spot_light(p: [i64; 3], n: Unit, inside: bool, r: &mut Draw) -> LightOut {
+    let light_dir = r.unit_facing(n, 0.2);
+    let d = r.range(1, 5);
+    let falloff = r.below(3) as u8;
+    let angle = r.pick(&[30u32, 45, 60]);
+    let gamma = f64::from(angle);
+    // From the light to P is −light_dir; ψ is the angle between the axis and it.
+    let to_point = Unit {
+        num: light_dir.num.map(|x| -x),
+        den: light_dir.den,
+    };
+    // Drawn from the table; should none fit, the axis straight at P (ψ = 0) or away (ψ = 180°).
+    let mut axis = if inside { to_point } else { light_dir };
+    for _ in 0..10_000 {
+        let a = r.unit();
+        let psi = a.dot(to_point).clamp(-1.0, 1.0).acos().to_degrees();
+        if (inside && psi <= gamma - 5.0) || (!inside && psi >= gamma + 5.0) {
+            axis = a;
+            break;
+        }
+    }
+    LightOut {
+        kind: "spot",
+        position: Some(offset(p, d, light_dir)),
+        axis: Some(n3(axis.f())),
+        angle: Some(angle),
+        exponent: Some(r.range(1, 2) as u32),
+        color: n3([0; 3].map(|_| r.pick(&[0.5, 1.0]))),
+        falloff: Some(falloff),
+        ..LightOut::default()
+    }
+}
+
+fn phong_material(r: &mut Draw) -> MaterialOut {
+    MaterialOut {
+        ambient: r.color(1, 9),
+        diffuse: Some(r.color(1, 9)),
+        specular: Some(r.color(1, 5)),
+        shininess: Some(r.range(1, 3) as u32),
+    }
+}
+
+fn problem(kind: Kind, i: u32, seed: u64) -> ProblemOut {
+    ProblemOut {
+        title: title(kind, i, Tongue::En),
+        title_pt: None,
+        question: String::new(),
+        question_pt: None,
+        generated: GeneratedOut {
+            kind: kind.name(),
+            seed,
+            index: i,
+        },
+        materials: std::collections::BTreeMap::new(),
+        lights: Vec::new(),
+        viewer: None,
+        point: None,
+        ray: None,
+        surfaces: Vec::new(),
+        answer: None,
+    }
+}
+
 fn draw(kind: Kind, r: &mut Draw, i: u32, seed: u64) -> ProblemOut {
-    let title = format!("Generated {} problem {i} (seed {seed})", kind.name());
-    let mut materials = std::collections::BTreeMap::new();
+    let mut out = problem(kind, i, seed);
     match kind {
         Kind::Ambient => {
-            let mut lights = vec![LightOut {
-                kind: "ambient",
-                position: None,
-                color: n3([0; 3].map(|_| r.pick(&[0.5, 1.0]))),
-                falloff: None,
-            }];
+            out.lights.push(ambient_light(r, &[0.5, 1.0]));
             if r.below(2) == 1 {
-                lights.push(LightOut {
-                    kind: "ambient",
-                    position: None,
-                    color: n3([0; 3].map(|_| r.pick(&[0.0, 0.5]))),
-                    falloff: None,
-                });
+                out.lights.push(ambient_light(r, &[0.0, 0.5]));
             }
-            materials.insert(
+            out.materials.insert(
                 "M",
                 MaterialOut {
                     ambient: r.color(1, 9),
@@ -284,72 +440,40 @@ fn draw(kind: Kind, r: &mut Draw, i: u32, seed: u64) -> ProblemOut {
                     shininess: None,
                 },
             );
-            ProblemOut {
-                title,
-                question: "What is the colour of any point of the object (Eq. 4.6)?",
-                materials,
-                lights,
-                viewer: None,
-                point: Some(PointOut {
-                    position: None,
-                    normal: None,
-                    material: "M",
-                }),
-                ray: None,
-                surfaces: Vec::new(),
-                answer: None,
-            }
+            out.point = Some(PointOut {
+                position: None,
+                normal: None,
+                material: "M",
+            });
         }
         Kind::Point | Kind::RayPlane => {
+            // The draws in the order of earlier versions: the same seed, the same problem.
             let p = r.point(4);
             let n = r.unit();
             let light_dir = r.unit_facing(n, 0.2);
             let d = r.range(1, 5);
             let falloff = r.below(3) as u8;
-            let mut lights = Vec::new();
             if kind == Kind::RayPlane || r.below(2) == 1 {
-                lights.push(LightOut {
-                    kind: "ambient",
-                    position: None,
-                    color: n3([0; 3].map(|_| r.pick(&[0.0, 0.5, 1.0]))),
-                    falloff: None,
-                });
+                out.lights.push(ambient_light(r, &[0.0, 0.5, 1.0]));
             }
-            lights.push(LightOut {
+            out.lights.push(LightOut {
                 kind: "point",
                 position: Some(offset(p, d, light_dir)),
                 color: n3([0; 3].map(|_| r.pick(&[0.5, 1.0]))),
                 falloff: Some(falloff),
+                ..LightOut::default()
             });
-            materials.insert(
-                "M",
-                MaterialOut {
-                    ambient: r.color(1, 9),
-                    diffuse: Some(r.color(1, 9)),
-                    specular: Some(r.color(1, 5)),
-                    shininess: Some(r.range(1, 3) as u32),
-                },
-            );
+            out.materials.insert("M", phong_material(r));
             let viewer_dir = r.unit_facing(n, 0.2);
             let e = r.range(1, 5);
             let viewer = offset(p, e, viewer_dir);
             if kind == Kind::Point {
-                ProblemOut {
-                    title,
-                    question: "What is the colour of P seen by the viewer, by Phong's model \
-                               (Eq. 4.16)?",
-                    materials,
-                    lights,
-                    viewer: Some(viewer),
-                    point: Some(PointOut {
-                        position: Some(f3(p)),
-                        normal: Some(n3(n.f())),
-                        material: "M",
-                    }),
-                    ray: None,
-                    surfaces: Vec::new(),
-                    answer: None,
-                }
+                out.viewer = Some(viewer);
+                out.point = Some(PointOut {
+                    position: Some(f3(p)),
+                    normal: Some(n3(n.f())),
+                    material: "M",
+                });
             } else {
                 // The ray arrives from N's side: its origin is P + t·u with u·N > 0, D = −u.
                 let toward = r.unit_facing(n, 0.2);
@@ -360,29 +484,275 @@ fn draw(kind: Kind, r: &mut Draw, i: u32, seed: u64) -> ProblemOut {
                 let k = r.pick(&[-1, 1]);
                 let q = [0, 1, 2].map(|i| p[i] + k * tangent[i]);
                 let with_viewer = r.below(2) == 1;
-                ProblemOut {
-                    title,
-                    question: "What is the colour where the ray meets the plane, by Phong's model \
-                               (Eq. 4.16)? Without a viewer, the ray comes from the eye.",
-                    materials,
-                    lights,
-                    viewer: with_viewer.then_some(viewer),
-                    point: None,
-                    ray: Some(RayOut {
-                        origin: offset(p, t, toward),
-                        direction: n3(toward.f().map(|x| -x)),
-                    }),
-                    surfaces: vec![PlaneOut {
-                        kind: "plane",
-                        point: f3(q),
-                        normal: n3(n.f()),
-                        material: "M",
-                    }],
-                    answer: None,
-                }
+                out.viewer = with_viewer.then_some(viewer);
+                out.ray = Some(RayOut {
+                    origin: offset(p, t, toward),
+                    direction: n3(toward.f().map(|x| -x)),
+                });
+                out.surfaces.push(SurfaceOut {
+                    kind: "plane",
+                    point: Some(f3(q)),
+                    normal: Some(n3(n.f())),
+                    center: None,
+                    radius: None,
+                    material: "M",
+                });
             }
         }
+        Kind::Directional | Kind::Spot | Kind::Several => {
+            let p = r.point(4);
+            let n = r.unit();
+            if r.below(2) == 1 {
+                out.lights.push(ambient_light(r, &[0.0, 0.5, 1.0]));
+            }
+            match kind {
+                Kind::Directional => out.lights.push(directional_light(n, r)),
+                Kind::Spot => {
+                    let inside = r.below(2) == 1;
+                    out.lights.push(spot_light(p, n, inside, r));
+                }
+                _ => {
+                    if out.lights.is_empty() {
+                        out.lights.push(ambient_light(r, &[0.5, 1.0]));
+                    }
+                    out.lights.push(point_light(p, n, r));
+                    if r.below(2) == 1 {
+                        out.lights.push(point_light(p, n, r));
+                    } else {
+                        out.lights.push(directional_light(n, r));
+                    }
+                }
+            }
+            out.materials.insert("M", phong_material(r));
+            let viewer_dir = r.unit_facing(n, 0.2);
+            let e = r.range(1, 5);
+            out.viewer = Some(offset(p, e, viewer_dir));
+            out.point = Some(PointOut {
+                position: Some(f3(p)),
+                normal: Some(n3(n.f())),
+                material: "M",
+            });
+        }
+        Kind::Sphere => {
+            // P = C + ρ·n on the sphere; the ray from P + t·u (u·n ≥ 0.2) along −u meets it
+            // first at P (its second hit is 2ρ(u·n) further on).
+            let c = r.point(3);
+            let radius = r.range(1, 3);
+            let n = r.unit();
+            let toward = r.unit_facing(n, 0.2);
+            let t = r.range(2, 6);
+            if r.below(2) == 1 {
+                out.lights.push(ambient_light(r, &[0.0, 0.5, 1.0]));
+            }
+            let light_dir = r.unit_facing(n, 0.2);
+            let d = r.range(1, 5);
+            out.lights.push(LightOut {
+                kind: "point",
+                position: Some(offset2(c, radius, n, d, light_dir)),
+                color: n3([0; 3].map(|_| r.pick(&[0.5, 1.0]))),
+                falloff: Some(r.below(3) as u8),
+                ..LightOut::default()
+            });
+            out.materials.insert("M", phong_material(r));
+            out.ray = Some(RayOut {
+                origin: offset2(c, radius, n, t, toward),
+                direction: n3(toward.f().map(|x| -x)),
+            });
+            out.surfaces.push(SurfaceOut {
+                kind: "sphere",
+                point: None,
+                normal: None,
+                center: Some(f3(c)),
+                radius: Some(Num(radius as f64)),
+                material: "M",
+            });
+        }
     }
+    out
+}
+
+/// C + ρ·n + d·u, exactly.
+fn offset2(c: [i64; 3], rho: i64, n: Unit, d: i64, u: Unit) -> N3 {
+    let den = n.den * u.den;
+    n3([0, 1, 2]
+        .map(|i| (c[i] * den + rho * n.num[i] * u.den + d * u.num[i] * n.den) as f64 / den as f64))
+}
+
+/// A number in a statement: "4", "0.5", "−1" (Portuguese writes the minus sign).
+fn word_num(x: Num, t: Tongue) -> String {
+    let s = serde_json::to_string(&x).expect("a number serialises");
+    match (t, s.strip_prefix('-')) {
+        (Tongue::Pt, Some(rest)) => format!("\u{2212}{rest}"),
+        _ => s,
+    }
+}
+
+fn word_vec(v: &N3, t: Tongue) -> String {
+    format!(
+        "({}, {}, {})",
+        word_num(v[0], t),
+        word_num(v[1], t),
+        word_num(v[2], t)
+    )
+}
+
+fn falloff_words(f: u8, t: Tongue) -> &'static str {
+    match (t, f) {
+        (Tongue::En, 0) => "no falloff (f = 0)",
+        (Tongue::En, 1) => "linear falloff (f = 1)",
+        (Tongue::En, _) => "quadratic falloff (f = 2)",
+        (Tongue::Pt, 0) => "sem decaimento (f = 0)",
+        (Tongue::Pt, 1) => "com decaimento linear (f = 1)",
+        (Tongue::Pt, _) => "com decaimento quadrático (f = 2)",
+    }
+}
+
+/// The question with its data in full sentences, in the chapter's style.
+fn statement(p: &ProblemOut, t: Tongue) -> String {
+    let v = |x: &N3| word_vec(x, t);
+    let en = t == Tongue::En;
+    let mut s: Vec<String> = Vec::new();
+    for l in &p.lights {
+        let c = v(&l.color);
+        let at = l.position.as_ref().map(v).unwrap_or_default();
+        let f = falloff_words(l.falloff.unwrap_or(0), t);
+        s.push(match (l.kind, en) {
+            ("ambient", true) => format!("An ambient light I_a = {c} lights the scene."),
+            ("ambient", false) => format!("Uma luz ambiente I_a = {c} ilumina a cena."),
+            ("point", true) => {
+                format!("A point light of colour C_l = {c} is at P_l = {at}, with {f}.")
+            }
+            ("point", false) => {
+                format!("Uma luz pontual de cor C_l = {c} está em P_l = {at}, {f}.")
+            }
+            ("directional", true) => format!(
+                "A directional light of colour C_l = {c} travels along D_l = {}.",
+                v(l.direction.as_ref().expect("a direction"))
+            ),
+            ("directional", false) => format!(
+                "Uma luz direcional de cor C_l = {c} se propaga ao longo de D_l = {}.",
+                v(l.direction.as_ref().expect("a direction"))
+            ),
+            (_, true) => format!(
+                "A spot light of colour C_l = {c} is at P_l = {at} and points along D_l = {}, \
+                 with half-angle γ = {}°, exponent e = {} and {f}.",
+                v(l.axis.as_ref().expect("an axis")),
+                l.angle.unwrap_or(0),
+                l.exponent.unwrap_or(0)
+            ),
+            (_, false) => format!(
+                "Uma luz spot de cor C_l = {c} está em P_l = {at} e aponta ao longo de D_l = {}, \
+                 com ângulo γ = {}°, expoente e = {} e {f}.",
+                v(l.axis.as_ref().expect("an axis")),
+                l.angle.unwrap_or(0),
+                l.exponent.unwrap_or(0)
+            ),
+        });
+    }
+    if let Some(m) = p.materials.get("M") {
+        let mut terms = vec![format!("O_a = {}", v(&m.ambient))];
+        if let Some(d) = &m.diffuse {
+            terms.push(format!("O_d = {}", v(d)));
+        }
+        if let Some(sp) = &m.specular {
+            terms.push(format!("O_s = {}", v(sp)));
+        }
+        if let Some(n) = m.shininess {
+            terms.push(format!("n_s = {n}"));
+        }
+        let last = terms.pop().expect("O_a");
+        let list = if terms.is_empty() {
+            last
+        } else {
+            format!(
+                "{} {} {last}",
+                terms.join(", "),
+                if en { "and" } else { "e" }
+            )
+        };
+        s.push(if en {
+            format!("The material M has {list}.")
+        } else {
+            format!("O material M tem {list}.")
+        });
+    }
+    if let Some(pt) = &p.point {
+        if let (Some(at), Some(n)) = (&pt.position, &pt.normal) {
+            s.push(if en {
+                format!("The point P = {} has the normal N = {}.", v(at), v(n))
+            } else {
+                format!("O ponto P = {} tem normal N = {}.", v(at), v(n))
+            });
+        }
+    }
+    if let Some(ray) = &p.ray {
+        let (o, d) = (v(&ray.origin), v(&ray.direction));
+        let surface = &p.surfaces[0];
+        let what = match (surface.kind, en) {
+            ("plane", true) => format!(
+                "the plane through Q = {} with normal N = {}",
+                v(surface.point.as_ref().expect("a point")),
+                v(surface.normal.as_ref().expect("a normal"))
+            ),
+            ("plane", false) => format!(
+                "o plano que passa por Q = {} com normal N = {}",
+                v(surface.point.as_ref().expect("a point")),
+                v(surface.normal.as_ref().expect("a normal"))
+            ),
+            (_, true) => format!(
+                "the sphere of centre C = {} and radius r = {}",
+                v(surface.center.as_ref().expect("a centre")),
+                word_num(surface.radius.expect("a radius"), t)
+            ),
+            (_, false) => format!(
+                "a esfera de centro C = {} e raio r = {}",
+                v(surface.center.as_ref().expect("a centre")),
+                word_num(surface.radius.expect("a radius"), t)
+            ),
+        };
+        s.push(if en {
+            format!("A ray leaves O = {o} along D = {d} and meets {what}, of material M.")
+        } else {
+            format!("Um raio parte de O = {o} na direção D = {d} e atinge {what}, de material M.")
+        });
+    }
+    match (&p.viewer, &p.ray, en) {
+        (Some(e), _, true) => s.push(format!("The viewer is at E = {}.", v(e))),
+        (Some(e), _, false) => s.push(format!("O observador está em E = {}.", v(e))),
+        (None, Some(_), true) => {
+            s.push("No viewer is given: the ray comes from the eye (V = D).".into())
+        }
+        (None, Some(_), false) => {
+            s.push("Não é dado observador: o raio vem do olho (V = D).".into())
+        }
+        _ => {}
+    }
+    s.push(
+        match (
+            p.point.as_ref().is_some_and(|x| x.position.is_none()),
+            p.ray.is_some(),
+            en,
+        ) {
+            (true, _, true) => "What is the colour of any point of the object (Eq. 4.6)?",
+            (true, _, false) => "Qual é a cor de qualquer ponto do objeto (Eq. 4.6)?",
+            (_, true, true) => {
+                "What colour does the ray see where it meets the surface, by Phong's model \
+                 (Eq. 4.16)?"
+            }
+            (_, true, false) => {
+                "Que cor o raio vê no ponto em que atinge a superfície, pelo modelo de Phong \
+                 (Eq. 4.16)?"
+            }
+            (_, _, true) => {
+                "What is the colour of P seen by the viewer, by Phong's model (Eq. 4.16)?"
+            }
+            (_, _, false) => {
+                "Qual é a cor de P vista pelo observador, pelo modelo de Phong (Eq. 4.16)?"
+            }
+        }
+        .into(),
+    );
+    s.join(" ")
 }
 
 /// The shortest integer vector perpendicular to `n` among (b, −a, 0), (0, c, −b), (c, 0, −a),

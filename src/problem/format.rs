@@ -74,6 +74,23 @@ pub struct ProblemFile {
     /// against the solution; `phong solve` does not use it.
     #[serde(default)]
     pub answer: Option<AnswerSpec>,
+    /// Where a generated problem came from (`phong new`): its kind, seed and number. Metadata
+    /// only: no command reads it.
+    #[serde(default, deserialize_with = "optional_object")]
+    pub generated: Option<GeneratedSpec>,
+}
+
+/// Where a generated problem came from: `phong new --kind KIND --seed SEED` wrote it as its
+/// problem number `index`.
+#[derive(Debug, Clone, Deserialize, JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct GeneratedSpec {
+    /// The kind of problem (`--kind`).
+    pub kind: String,
+    /// The seed (`--seed`).
+    pub seed: u64,
+    /// Its number in the set, from 1.
+    pub index: u32,
 }
 
 /// A pinhole camera.
@@ -389,6 +406,10 @@ impl Described for CameraSpec {
 impl Described for RenderSpec {
     const WHAT: &'static str =
         "the render settings: an object {\"max_level\": 5, \"shadows\": true, …}";
+}
+impl Described for GeneratedSpec {
+    const WHAT: &'static str = "where a generated problem came from: an object {\"kind\": \
+                                \"point\", \"seed\": 1, \"index\": 1}";
 }
 impl Described for LightSpec {
     const WHAT: &'static str = "a light: an object {\"type\": \"point\", …}";

@@ -6,6 +6,7 @@
 pub(crate) mod check;
 pub(crate) mod export_pov;
 pub(crate) mod grade;
+pub(crate) mod moodle;
 pub(crate) mod new;
 pub(crate) mod render;
 pub(crate) mod schema;

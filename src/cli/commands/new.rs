@@ -8,7 +8,12 @@ use crate::cli::output;
 use crate::generate;
 
 pub(crate) fn run(args: &NewArgs) -> Result<Exit, CliError> {
-    let problems = generate::generate(args.kind, args.count, args.seed);
+    let problems = generate::generate(
+        args.kind,
+        args.count,
+        args.seed,
+        args.lang == crate::report::lang::Lang::Pt,
+    );
     let Some(dir) = &args.output else {
         output::emit(None, &generate::text_of_all(&problems))?;
         return Ok(Exit::Success);

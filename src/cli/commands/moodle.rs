@@ -1,0 +1,91 @@
+//! `phong moodle`: problem files (or what `phong new` prints, on standard input as `-`) as a
+//! Moodle XML quiz, one category per file (`export::moodle`).
+
+use std::path::Path;
+
+use crate::check::answer::from_key;
+use crate::check::Scale;
+use crate::cli::args::MoodleArgs;
+use crate::cli::error::CliError;
+use crate::cli::exit::Exit;
+use crate::cli::output;
+use crate::export::moodle::{quiz, Entry, Set, DEFAULT_TOLERANCE};
+use crate::problem::{self, ProblemError, MAX_PROBLEM_BYTES};
+use crate::report::lang::Lang;
+
+pub(crate) fn run(args: &MoodleArgs) -> Result<Exit, CliError> {
+    let sets = args
+        .files
+        .iter()
+        .map(|path| read_set(path, args.lang))
+        .collect::<Result<Vec<Set>, ProblemError>>()?;
+    let text = quiz(&sets, &args.category, args.lang)?;
+    output::emit(args.output.as_deref(), &text)?;
+    Ok(Exit::Success)
+}
+
+/// One file: a problem, or an array of problems (as `phong new --count N` prints them).
+fn read_set(path: &Path, lang: Lang) -> Result<Set, ProblemError> {
+    let bytes =
+        problem::read_limited(path, MAX_PROBLEM_BYTES, "a problem file").map_err(|source| {
+            ProblemError::Read {
+                path: path.to_owned(),
+                source,
+            }
+        })?;
+    let text = String::from_utf8_lossy(&bytes);
+    let text = text.strip_prefix('\u{feff}').unwrap_or(&text);
+    let stdin = output::is_dash(path);
+    let label = if stdin {
+        "-".to_owned()
+    } else {
+        path.display().to_string()
+    };
+    let sources: Vec<(String, String)> = if text.trim_start().starts_with('[') {
+        let items: Vec<serde_json::Value> =
+            serde_json::from_str(text).map_err(|e| ProblemError::Syntax {
+                path: path.to_owned(),
+                line: e.line(),
+                column: e.column(),
+                field: None,
+                message: e.to_string(),
+                fix: "give one problem, or an array of problems as `phong new --count N` prints"
+                    .into(),
+            })?;
+        items
+            .iter()
+            .enumerate()
+            .map(|(i, v)| (format!("{label}[{}]", i + 1), v.to_string()))
+            .collect()
+    } else {
+        vec![(label.clone(), text.to_owned())]
+    };
+    let mut entries = Vec::new();
+    for (label, source) in sources {
+        let at = Path::new(&label);
+        let file = problem::parse_str(at, &source)?;
+        let problem =
+            problem::validate::validate_in::<f64>(&file, path.parent()).map_err(|e| e.at(at))?;
+        let tolerance = file
+            .answer
+            .as_ref()
+            .and_then(|k| from_key(k).ok())
+            .and_then(|k| k.tolerance_on(Scale::Unit))
+            .unwrap_or(DEFAULT_TOLERANCE);
+        entries.push(Entry {
+            label,
+            problem,
+            tolerance,
+        });
+    }
+    let category = if stdin {
+        match lang {
+            Lang::En => "Generated problems".to_owned(),
+            Lang::Pt => "Problemas gerados".to_owned(),
+        }
+    } else {
+        path.file_stem()
+            .map_or_else(|| label.clone(), |s| s.to_string_lossy().into_owned())
+    };
+    Ok(Set { category, entries })
+}

@@ -1,0 +1,257 @@
+//! Output files written safely (README, "Limits and safety"): `-` is standard output; a
+//! symbolic link is followed and its target replaced; a target that is not a regular file (a
+//! device such as `/dev/null`, a FIFO, `/dev/stdout`) is written directly, never replaced; a
+//! folder is refused; a regular file is replaced atomically (a temporary file in the same folder,
+//! renamed into place, so a failure never leaves a half-written file); a new file gets the
+//! permissions the umask allows (0666 less the umask), an existing one keeps its own. The
+//! temporary file is removed on every error and, through [`guard_signals`], on SIGINT, SIGTERM
+//! and SIGHUP. An output that is an input of the same run, or another of its outputs, is refused
+//! before anything is written ([`distinct`]).
+
+use std::io::Write;
+use std::path::{Path, PathBuf};
+use std::sync::Mutex;
+
+use super::error::CliError;
+use super::output::is_dash;
+
+/// The file a path names once its symbolic links are followed (the link's target is what is
+/// replaced, the link stays); a dangling link names the file it would create.
+fn through_links(path: &Path) -> std::io::Result<PathBuf> {
+    let mut p = path.to_owned();
+    // As the kernel does (ELOOP after 40 links).
+    for _ in 0..40 {
+        match std::fs::symlink_metadata(&p) {
+            Ok(m) if m.file_type().is_symlink() => {
+                let to = std::fs::read_link(&p)?;
+                p = match p.parent() {
+                    Some(dir) if to.is_relative() => dir.join(to),
+                    _ => to,
+                };
+            }
+            _ => return Ok(p),
+        }
+    }
+    Err(std::io::Error::other(
+        "too many levels of symbolic links (a loop?)",
+    ))
+}
+
+/// `-o` names a folder.
+fn is_a_folder() -> std::io::Error {
+    std::io::Error::other(
+        "it is a folder. Fix: give a file name in it (e.g. -o DIR/report.csv), or - for \
+         standard output",
+    )
+}
+
+/// Writes `bytes` to `path`: a regular file (or a new one) atomically, anything else directly.
+pub(crate) fn write_target(path: &Path, bytes: &[u8]) -> std::io::Result<()> {
+    let target = through_links(path)?;
+    match std::fs::metadata(&target) {
+        Ok(m) if m.is_dir() => Err(is_a_folder()),
+        Ok(m) if m.is_file() => write_atomically(&target, bytes, Some(m.permissions())),
+        // A device, a FIFO, a terminal, /dev/stdout: written to, never replaced.
+        Ok(_) => {
+            let mut f = std::fs::OpenOptions::new().write(true).open(&target)?;
+            f.write_all(bytes)?;
+            f.flush()
+        }
+        Err(e) if e.kind() == std::io::ErrorKind::NotFound => {
+            if path.as_os_str().to_string_lossy().ends_with('/') {
+                return Err(is_a_folder());
+            }
+            write_atomically(&target, bytes, None)
+        }
+        Err(e) => Err(e),
+    }
+}
+
+/// The temporary files being written, removed by [`remove_pending`] when a signal stops the
+/// program.
+static PENDING: Mutex<Vec<PathBuf>> = Mutex::new(Vec::new());
+
+/// A temporary file listed in [`PENDING`] while it lives.
+struct Pending(PathBuf);
+
+impl Pending {
+    fn new(path: &Path) -> Pending {
+        if let Ok(mut list) = PENDING.lock() {
+            list.push(path.to_owned());
+        }
+        Pending(path.to_owned())
+    }
+}
+
+impl Drop for Pending {
+    fn drop(&mut self) {
+        if let Ok(mut list) = PENDING.lock() {
+            list.retain(|p| p != &self.0);
+        }
+    }
+}
+
+/// Removes every temporary file still being written (the signal handler's work).
+fn remove_pending() {
+    // A panicking writer poisons the lock; the list is still right.
+    let list = PENDING.lock().unwrap_or_else(|e| e.into_inner());
+    for p in list.iter() {
+        let _ = std::fs::remove_file(p);
+    }
+}
+
+/// On SIGINT, SIGTERM or SIGHUP, the temporary files being written are removed before the
+/// program ends by the signal as it would have; SIGXFSZ (a file over the size limit) becomes
+/// the write error EFBIG, so the temporary file is removed as on any other error. Call once.
+pub(crate) fn guard_signals() {
+    #[cfg(unix)]
+    {
+        use signal_hook::consts::{SIGHUP, SIGINT, SIGTERM, SIGXFSZ};
+        let flag = std::sync::Arc::new(std::sync::atomic::AtomicBool::new(false));
+        let _ = signal_hook::flag::register(SIGXFSZ, flag);
+        if let Ok(mut signals) = signal_hook::iterator::Signals::new([SIGINT, SIGTERM, SIGHUP]) {
+            let _ = std::thread::Builder::new()
+                .name("signals".into())
+                .spawn(move || {
+                    if let Some(signal) = signals.forever().next() {
+                        remove_pending();
+                        let _ = signal_hook::low_level::emulate_default_handler(signal);
+                        std::process::exit(128 + signal);
+                    }
+                });
+        }
+    }
+}
+
+/// Writes `bytes` to the regular file `path` through a temporary file in the same folder and a
+/// rename. `existing`: the permissions of the file replaced, kept; a new file is created with
+/// 0666 less the umask, as any program's.
+fn write_atomically(
+    path: &Path,
+    bytes: &[u8],
+    existing: Option<std::fs::Permissions>,
+) -> std::io::Result<()> {
+    let dir = match path.parent() {
+        Some(d) if !d.as_os_str().is_empty() => d,
+        _ => Path::new("."),
+    };
+    let mut builder = tempfile::Builder::new();
+    builder.prefix(".phong-").suffix(".tmp");
+    #[cfg(unix)]
+    if existing.is_none() {
+        use std::os::unix::fs::PermissionsExt;
+        // Passed to open(2), which takes the umask away.
+        builder.permissions(std::fs::Permissions::from_mode(0o666));
+    }
+    let mut tmp = builder.tempfile_in(dir)?;
+    let _pending = Pending::new(tmp.path());
+    tmp.write_all(bytes)?;
+    if let Some(p) = existing {
+        tmp.as_file().set_permissions(p)?;
+    }
+    tmp.as_file().sync_all()?;
+    // On failure the temporary file is dropped, hence removed.
+    tmp.persist(path).map_err(|e| e.error)?;
+    Ok(())
+}
+
+/// What identifies a file for [`distinct`]: its device and inode when it exists, else its
+/// absolute path (links followed).
+#[derive(PartialEq, Eq)]
+enum FileKey {
+    Inode(u64, u64),
+    Path(PathBuf),
+}
+
+/// The key of a file given as an input or an output; `None` for `-` and for what is not a
+/// regular file (`/dev/null` may be given twice).
+fn file_key(path: &Path) -> Option<FileKey> {
+    if is_dash(path) {
+        return None;
+    }
+    match std::fs::metadata(path) {
+        Ok(m) if !m.is_file() => None,
+        #[cfg(unix)]
+        Ok(m) => {
+            use std::os::unix::fs::MetadataExt;
+            Some(FileKey::Inode(m.dev(), m.ino()))
+        }
+        #[cfg(not(unix))]
+        Ok(_) => std::fs::canonicalize(path).ok().map(FileKey::Path),
+        Err(_) => {
+            let target = through_links(path).ok()?;
+            let name = target.file_name()?;
+            let dir = match target.parent() {
+                Some(d) if !d.as_os_str().is_empty() => d,
+                _ => Path::new("."),
+            };
+            Some(FileKey::Path(std::fs::canonicalize(dir).ok()?.join(name)))
+        }
+    }
+}
+
+/// Refuses, before anything is written, an output that is an input of the same run or another
+/// of its outputs (`phong grade subs.csv -o subs.csv` would replace the submissions). Each
+/// output is named by its flag.
+pub(crate) fn distinct(
+    inputs: &[&Path],
+    outputs: &[(&str, Option<&Path>)],
+) -> Result<(), CliError> {
+    let outs: Vec<(&str, &Path, FileKey)> = outputs
+        .iter()
+        .filter_map(|&(flag, p)| {
+            let p = p?;
+            Some((flag, p, file_key(p)?))
+        })
+        .collect();
+    for (i, (flag, out, key)) in outs.iter().enumerate() {
+        if let Some(input) = inputs.iter().find(|p| file_key(p).as_ref() == Some(key)) {
+            return Err(CliError::Conflict {
+                message: format!(
+                    "{flag} {} is the input {}: writing it would replace what is being read",
+                    out.display(),
+                    input.display()
+                ),
+                fix: format!("give {flag} another file"),
+            });
+        }
+        if let Some((other, _, _)) = outs[..i].iter().find(|(_, _, k)| k == key) {
+            return Err(CliError::Conflict {
+                message: format!(
+                    "{other} and {flag} are the same file, {}: one would replace the other",
+                    out.display()
+                ),
+                fix: format!("give {flag} another file"),
+            });
+        }
+    }
+    Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_pending_temporary_file_is_removed_by_the_signal_cleanup() {
+        let dir = tempfile::tempdir().unwrap();
+        let tmp = dir.path().join(".phong-x.tmp");
+        std::fs::write(&tmp, b"half").unwrap();
+        let pending = Pending::new(&tmp);
+        remove_pending();
+        assert!(!tmp.exists());
+        drop(pending);
+        assert!(PENDING.lock().unwrap().iter().all(|p| p != &tmp));
+    }
+
+    #[test]
+    fn a_link_is_followed_to_the_file_it_names() {
+        let dir = tempfile::tempdir().unwrap();
+        let link = dir.path().join("link");
+        #[cfg(unix)]
+        {
+            std::os::unix::fs::symlink("target.csv", &link).unwrap();
+            assert_eq!(through_links(&link).unwrap(), dir.path().join("target.csv"));
+        }
+    }
+}

@@ -1,0 +1,536 @@
+//! Problems as a Moodle XML quiz (`phong moodle`): one Cloze (`multianswer`) question per
+//! problem, in one category per problem set (a file, or what `phong new` printed).
+//!
+//! The rules followed are those of Moodle's own importer (`question/format/xml/format.php`) and
+//! Cloze parser (`question/type/multianswer/questiontype.php`), gathered in the course's
+//! platform notes:
+//!
+//! - each colour channel is a `NUMERICAL` part of weight 1 (integer weights only) whose first
+//!   alternative, `=` (100 %), is the answer key with an **absolute** tolerance (a relative one
+//!   would be zero-wide at a channel of 0); a channel above 1 also accepts its value before
+//!   the clamp to [0, 1], as `phong check` does;
+//! - the likely intended reading of a problem, where it has one, is a `%50%` alternative;
+//! - each classic slip's colour (the same machinery as `phong check`'s diagnosis, single slips
+//!   only) is a `%0%` alternative whose feedback names the slip and its equation; an
+//!   alternative that the right answer (or the reading) would shadow is left out, and slips
+//!   giving the same number share one alternative;
+//! - a `*` catch-all closes every part;
+//! - a problem whose ray hits nothing as written (exercise 4.3) asks one `SHORTANSWER` part of
+//!   weight 3 that accepts "nenhuma", "none" and "no hit" (case-insensitive in Moodle), since no
+//!   colour is right; the likely intended reading's colour is in the general feedback;
+//! - inside Cloze answers and feedback `}` and `#` are written `\}` and `\#` (the parser's only
+//!   escapes), and `~` and `\`, which have none, as the HTML references `&\#126;` and `&\#92;`
+//!   (the feedback is HTML): no raw `~`, `}` or `#` can end an alternative early;
+//! - fractions come from Moodle's fixed list only (100, 50, 0);
+//! - the worked solution is the general feedback, in HTML with MathJax's `\( … \)` (a single `$`
+//!   is no delimiter in Moodle), and each diagram an SVG `<file>` in base64 shown by
+//!   `<img src="@@PLUGINFILE@@/…">`.
+
+use std::fmt::Write;
+
+use crate::check::{messages as check_messages, Expected, Slip};
+use crate::problem::Problem;
+use crate::report::diagram;
+use crate::report::explain::{latex_math, nest, runs, Explanation, Node, Run, Shading, Step};
+use crate::report::html::{data_table, esc, STYLE};
+use crate::report::lang::Lang;
+
+/// The tolerance of a channel when the key gives none (the 0–1 scale's default).
+pub(crate) const DEFAULT_TOLERANCE: f64 = 0.005;
+
+/// One problem of a set: its label (file, or file and index), the validated problem and the
+/// tolerance of its key on the 0–1 scale.
+pub(crate) struct Entry {
+    /// Where it came from, for the explanation's source line ("4.2.json", "-[3]").
+    pub label: String,
+    /// The validated problem.
+    pub problem: Problem<f64>,
+    /// The absolute tolerance per channel.
+    pub tolerance: f64,
+}
+
+/// A problem set: one category of the question bank.
+pub(crate) struct Set {
+    /// The category's last name, under `top/<parent>`.
+    pub category: String,
+    /// Its problems, in order.
+    pub entries: Vec<Entry>,
+}
+
+/// The words of the quiz in `lang`.
+fn words(lang: Lang) -> Words {
+    match lang {
+        Lang::En => Words {
+            right: "Right.",
+            unclamped: "Right: this is the value before the clamp to [0, 1] (Eq. 4.16); the colour shown is clamped.",
+            reading: "Partly right: this is the likely intended reading",
+            slip: "Likely slip:",
+            other: "Wrong: compare with the worked solution.",
+            no_hit_question: "Colour of the point the ray meets (write \u{201c}none\u{201d} if it meets nothing):",
+            no_hit_right: "Right: as written, the ray meets nothing.",
+            no_hit_wrong: "Wrong: as written, the ray meets no surface in front of its origin.",
+            solution: "Worked solution",
+        },
+        Lang::Pt => Words {
+            right: "Correto.",
+            unclamped: "Correto: este é o valor antes do corte em [0, 1] (Eq. 4.16); a cor exibida é cortada.",
+            reading: "Parcialmente correto: esta é a leitura provavelmente pretendida",
+            slip: "Erro provável:",
+            other: "Incorreto: compare com a solução comentada.",
+            no_hit_question: "Cor do ponto atingido pelo raio (escreva \u{201c}nenhuma\u{201d} se ele não atinge nada):",
+            no_hit_right: "Correto: como escrito, o raio não atinge nada.",
+            no_hit_wrong: "Incorreto: como escrito, o raio não atinge superfície alguma à frente da origem.",
+            solution: "Solução comentada",
+        },
+    }
+}
+
+struct Words {
+    right: &'static str,
+    unclamped: &'static str,
+    reading: &'static str,
+    slip: &'static str,
+    other: &'static str,
+    no_hit_question: &'static str,
+    no_hit_right: &'static str,
+    no_hit_wrong: &'static str,
+    solution: &'static str,
+}
+
+/// The equation a slip's name gives, or the one it changes where its name gives none.
+fn slip_text(slip: Slip, lang: Lang) -> String {
+    let text = check_messages::slip(slip, lang);
+    if text.contains("Eq.") {
+        return text.to_owned();
+    }
+    let eq = match slip {
+        Slip::HitBehindOrigin => "4.17",
+        Slip::LightReversed => "4.1",
+        Slip::ViewerReversed => "4.10",
+        Slip::NormalReversed | Slip::NormalNotNormalized | Slip::AbsCosTheta => "4.7",
+        Slip::FalloffForgotten
+        | Slip::FalloffLinearNotQuadratic
+        | Slip::FalloffQuadraticNotLinear => "4.2",
+        Slip::AmbientForgotten | Slip::AmbientAssumed => "4.6",
+        Slip::HalfVector | Slip::CosPhiNotRaised => "4.10",
+        Slip::SpotConeIgnored => "4.4",
+        Slip::IntermediatesRounded | Slip::NoClamping | Slip::TruncatedDecimals => "4.16",
+        Slip::TruncatedRgb8 => "4.16",
+    };
+    format!("{text} (Eq. {eq})")
+}
+
+/// Escapes text for a Cloze answer or feedback (see the module's notes).
+pub(crate) fn cloze_escape(s: &str) -> String {
+    let mut out = String::with_capacity(s.len());
+    for c in s.chars() {
+        match c {
+            '}' => out.push_str("\\}"),
+            '#' => out.push_str("\\#"),
+            '~' => out.push_str("&\\#126;"),
+            '\\' => out.push_str("&\\#92;"),
+            c => out.push(c),
+        }
+    }
+    out
+}
+
+/// A number as a Cloze NUMERICAL answer: plain decimal, at most six decimals.
+fn number(x: f64) -> String {
+    let s = format!("{x:.6}");
+    let s = s.trim_end_matches('0').trim_end_matches('.');
+    if s == "-0" || s.is_empty() {
+        "0".into()
+    } else {
+        s.into()
+    }
+}
+
+/// A colour's value on the 0–1 scale: clamped where it is (the key's), else as computed.
+fn value(t: &crate::check::Target) -> [f64; 3] {
+    t.clamped.unwrap_or(t.unclamped)
+}
+
+/// One alternative of a part: its fraction, its answer and its feedback (HTML, unescaped).
+struct Alt {
+    fraction: &'static str,
+    answer: String,
+    tolerance: Option<f64>,
+    feedback: Vec<String>,
+}
+
+/// The NUMERICAL part of channel `c`.
+fn channel(c: usize, expected: &Expected, tolerance: f64, lang: Lang) -> Option<String> {
+    let w = words(lang);
+    let right = value(&expected.solution?)[c];
+    let mut alts = vec![Alt {
+        fraction: "=",
+        answer: number(right),
+        tolerance: Some(tolerance),
+        feedback: vec![w.right.to_owned()],
+    }];
+    // An alternative within the tolerance of an earlier one (inclusive, with slack for the
+    // rounding of the difference: 0.675 − 0.67 is 0.005000000000000004) would never be reached.
+    let shadowed = |v: f64, t: f64| (v - t).abs() <= tolerance * (1.0 + 1e-9) + 1e-12;
+    let mut taken = vec![right];
+    // `phong check` accepts the colour before the clamp to [0, 1] too (a channel above 1).
+    let unclamped = expected.solution?.unclamped[c];
+    if unclamped.is_finite() && !shadowed(unclamped, right) {
+        alts.push(Alt {
+            fraction: "=",
+            answer: number(unclamped),
+            tolerance: Some(tolerance),
+            feedback: vec![w.unclamped.to_owned()],
+        });
+        taken.push(unclamped);
+    }
+    if let Some(r) = expected.readings.iter().find(|r| r.likely_intended) {
+        let v = value(&r.target)[c];
+        if !shadowed(v, right) {
+            alts.push(Alt {
+                fraction: "%50%",
+                answer: number(v),
+                tolerance: Some(tolerance),
+                feedback: vec![format!(
+                    "{} ({}).",
+                    w.reading,
+                    check_messages::reading(r.code, lang)
+                )],
+            });
+            taken.push(v);
+        }
+    }
+    let first_slip = alts.len();
+    for o in expected.outcomes.iter().filter(|o| o.slips.len() == 1) {
+        let v = value(&o.target)[c];
+        if !v.is_finite() || taken.iter().any(|&t| shadowed(v, t)) {
+            continue;
+        }
+        let text = format!("{} {}.", w.slip, slip_text(o.slips[0], lang));
+        let answer = number(v);
+        match alts[first_slip..].iter_mut().find(|a| a.answer == answer) {
+            Some(a) => a.feedback.push(text),
+            None => alts.push(Alt {
+                fraction: "%0%",
+                answer,
+                tolerance: Some(tolerance),
+                feedback: vec![text],
+            }),
+        }
+    }
+    alts.push(Alt {
+        fraction: "",
+        answer: "*".into(),
+        tolerance: None,
+        feedback: vec![w.other.to_owned()],
+    });
+    Some(part(1, "NUMERICAL", &alts))
+}
+
+/// A Cloze sub-question.
+fn part(weight: u32, kind: &str, alts: &[Alt]) -> String {
+    let body: Vec<String> = alts
+        .iter()
+        .map(|a| {
+            let tol = a
+                .tolerance
+                .map_or(String::new(), |t| format!(":{}", number(t)));
+            format!(
+                "{}{}{tol}#{}",
+                a.fraction,
+                cloze_escape(&a.answer),
+                cloze_escape(&esc(&a.feedback.join(" ")))
+            )
+        })
+        .collect();
+    format!("{{{weight}:{kind}:{}}}", body.join("~"))
+}
+
+/// The SHORTANSWER part of a problem with nothing to shade.
+fn no_hit_part(lang: Lang) -> String {
+    let w = words(lang);
+    let mut alts: Vec<Alt> = ["nenhuma", "none", "no hit", "nenhum"]
+        .into_iter()
+        .map(|a| Alt {
+            fraction: "=",
+            answer: a.into(),
+            tolerance: None,
+            feedback: vec![w.no_hit_right.into()],
+        })
+        .collect();
+    alts.push(Alt {
+        fraction: "",
+        answer: "*".into(),
+        tolerance: None,
+        feedback: vec![w.no_hit_wrong.into()],
+    });
+    part(3, "SHORTANSWER", &alts)
+}
+
+/// A line of a solution in HTML with MathJax's inline delimiters.
+fn mathjax_line(step: &Step, lang: Lang) -> String {
+    let mut s = String::new();
+    for run in runs(&step.line) {
+        match run {
+            Run::Text(t) => s.push_str(&esc(&t)),
+            Run::Math(m) => {
+                let _ = write!(s, "\\({}\\)", esc(&latex_math(&m)));
+            }
+            Run::Swatch(_) => {}
+        }
+    }
+    if let Some(eq) = step.eq {
+        let _ = write!(s, " <small>({})</small>", esc(&eq.text(lang)));
+    }
+    s
+}
+
+fn mathjax_list(out: &mut String, nodes: &[Node], lang: Lang) {
+    if nodes.is_empty() {
+        return;
+    }
+    out.push_str("<ul>");
+    for node in nodes {
+        let _ = write!(out, "<li>{}", mathjax_line(node.step, lang));
+        mathjax_list(out, &node.children, lang);
+        out.push_str("</li>");
+    }
+    out.push_str("</ul>\n");
+}
+
+/// The general feedback (HTML) and the files it shows.
+fn solution(x: &Explanation, q: usize, lang: Lang) -> (String, Vec<(String, String)>) {
+    let w = words(lang);
+    let mut out = format!("<h3>{}</h3>\n", esc(w.solution));
+    let mut files = Vec::new();
+    if !x.findings.is_empty() {
+        out.push_str("<ul>");
+        for f in &x.findings {
+            let _ = write!(out, "<li>{}</li>", esc(f));
+        }
+        out.push_str("</ul>\n");
+    }
+    if let Some(ray) = &x.ray {
+        mathjax_list(&mut out, &nest(ray), lang);
+    }
+    for (i, part) in x.parts.iter().enumerate() {
+        let _ = writeln!(out, "<h4>{}</h4>", esc(&part.heading));
+        if let Some(e) = &part.explanation {
+            let _ = writeln!(out, "<p><em>{}</em></p>", esc(e));
+        }
+        if let Some(ray) = &part.ray {
+            mathjax_list(&mut out, &nest(ray), lang);
+        }
+        let Some(sh) = &part.shading else {
+            continue;
+        };
+        shading(&mut out, &mut files, sh, q, i, lang);
+    }
+    (out, files)
+}
+
+fn shading(
+    out: &mut String,
+    files: &mut Vec<(String, String)>,
+    sh: &Shading,
+    q: usize,
+    i: usize,
+    lang: Lang,
+) {
+    for d in &sh.diagrams {
+        let name = format!("diagrama-{q}-{i}-{}.svg", d.light_index);
+        let id = format!("d{q}-{i}-{}", d.light_index);
+        let figure = diagram::figure(d, &id, lang);
+        let _ = writeln!(
+            out,
+            "<p><img src=\"@@PLUGINFILE@@/{name}\" alt=\"{}\"><br><small>{}. {}</small></p>",
+            esc(&figure.title),
+            esc(&figure.title),
+            esc(&figure.caption)
+        );
+        files.push((
+            name,
+            base64(standalone_svg(&diagram::svg(d, &id, lang)).as_bytes()),
+        ));
+    }
+    for steps in [&sh.given, &sh.steps, &sh.total] {
+        mathjax_list(out, &nest(steps), lang);
+    }
+}
+
+/// The `<svg>` of a diagram's HTML figure as a file of its own: an `<img>` gets no page
+/// stylesheet, so the SVG rules of the HTML report's (`report::html::STYLE`) go inside it.
+fn standalone_svg(figure: &str) -> String {
+    let start = figure.find("<svg").unwrap_or(0);
+    let end = figure
+        .find("</svg>")
+        .map_or(figure.len(), |e| e + "</svg>".len());
+    let svg = &figure[start..end];
+    let rules: String = STYLE.lines().filter(|l| l.starts_with("svg ")).collect();
+    match svg.find('>') {
+        Some(open) => format!(
+            "{}<style>{rules}</style>{}\n",
+            &svg[..=open],
+            &svg[open + 1..]
+        ),
+        None => svg.to_owned(),
+    }
+}
+
+/// Standard base64 (RFC 4648, with padding).
+pub(crate) fn base64(bytes: &[u8]) -> String {
+    const A: &[u8; 64] = b"ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+    let mut out = String::with_capacity(bytes.len().div_ceil(3) * 4);
+    for chunk in bytes.chunks(3) {
+        let b = [
+            chunk[0],
+            *chunk.get(1).unwrap_or(&0),
+            *chunk.get(2).unwrap_or(&0),
+        ];
+        let n = u32::from(b[0]) << 16 | u32::from(b[1]) << 8 | u32::from(b[2]);
+        for k in 0..4 {
+            if k <= chunk.len() {
+                out.push(A[(n >> (18 - 6 * k) & 63) as usize] as char);
+            } else {
+                out.push('=');
+            }
+        }
+    }
+    out
+}
+
+/// Text for a CDATA section (a `]]>` inside is split across two sections).
+fn cdata(s: &str) -> String {
+    format!("<![CDATA[{}]]>", s.replace("]]>", "]]]]><![CDATA[>"))
+}
+
+/// Text escaped for an XML element.
+fn xml(s: &str) -> String {
+    s.replace('&', "&amp;")
+        .replace('<', "&lt;")
+        .replace('>', "&gt;")
+}
+
+/// The quiz: every set's category, then its questions. `parent` is the categories' parent
+/// under `top`.
+pub(crate) fn quiz(
+    sets: &[Set],
+    parent: &str,
+    lang: Lang,
+) -> Result<String, crate::problem::ProblemError> {
+    let mut out = String::from("<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<quiz>\n");
+    let mut q = 0;
+    for set in sets {
+        let path = format!("$course$/top/{parent}/{}", set.category.replace('/', "-"));
+        let _ = writeln!(
+            out,
+            "<question type=\"category\">\n<category><text>{}</text></category>\n</question>",
+            xml(&path)
+        );
+        for entry in &set.entries {
+            q += 1;
+            question(&mut out, entry, q, lang)
+                .map_err(|e| e.at(std::path::Path::new(&entry.label)))?;
+        }
+    }
+    out.push_str("</quiz>\n");
+    Ok(out)
+}
+
+fn question(
+    out: &mut String,
+    entry: &Entry,
+    q: usize,
+    lang: Lang,
+) -> Result<(), crate::problem::Invalid> {
+    let expected = Expected::of(&entry.problem)?;
+    let solved = crate::solve::solve(&entry.problem)?;
+    let x = crate::report::explain::explain(&entry.label, &entry.problem, &solved, lang);
+    let w = words(lang);
+    let mut text = String::new();
+    if let Some(question) = &x.question {
+        let _ = writeln!(text, "<p>{}</p>", esc(question));
+    }
+    text.push_str(&data_table(&x.data, lang));
+    match (0..3)
+        .map(|c| channel(c, &expected, entry.tolerance, lang))
+        .collect::<Option<Vec<String>>>()
+    {
+        Some(parts) => {
+            let _ = writeln!(
+                text,
+                "<p>R = {} &nbsp; G = {} &nbsp; B = {}</p>",
+                parts[0], parts[1], parts[2]
+            );
+        }
+        None => {
+            let _ = writeln!(
+                text,
+                "<p>{} {}</p>",
+                esc(w.no_hit_question),
+                no_hit_part(lang)
+            );
+        }
+    }
+    let (feedback, files) = solution(&x, q, lang);
+    let _ = writeln!(out, "<question type=\"cloze\">");
+    let _ = writeln!(
+        out,
+        "<name><text>{}</text></name>",
+        xml(&format!("{q:03}. {}", x.title))
+    );
+    let _ = writeln!(
+        out,
+        "<questiontext format=\"html\"><text>{}</text></questiontext>",
+        cdata(&text)
+    );
+    let _ = write!(
+        out,
+        "<generalfeedback format=\"html\"><text>{}</text>",
+        cdata(&feedback)
+    );
+    for (name, data) in &files {
+        let _ = write!(
+            out,
+            "\n<file name=\"{}\" path=\"/\" encoding=\"base64\">{data}</file>",
+            xml(name)
+        );
+    }
+    let _ = writeln!(out, "</generalfeedback>");
+    out.push_str("<penalty>0.3333333</penalty>\n<hidden>0</hidden>\n</question>\n");
+    Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn base64_matches_rfc_4648_examples() {
+        // RFC 4648, section 10.
+        for (plain, coded) in [
+            ("", ""),
+            ("f", "Zg=="),
+            ("fo", "Zm8="),
+            ("foo", "Zm9v"),
+            ("foob", "Zm9vYg=="),
+            ("fooba", "Zm9vYmE="),
+            ("foobar", "Zm9vYmFy"),
+        ] {
+            assert_eq!(base64(plain.as_bytes()), coded);
+        }
+    }
+
+    #[test]
+    fn cloze_specials_are_escaped() {
+        assert_eq!(cloze_escape("a}b#c~d\\e"), "a\\}b\\#c&\\#126;d&\\#92;e");
+    }
+
+    #[test]
+    fn numbers_are_plain_decimals() {
+        assert_eq!(number(0.52), "0.52");
+        assert_eq!(number(1.0), "1");
+        assert_eq!(number(-0.0), "0");
+        assert_eq!(number(0.1234567), "0.123457");
+    }
+}

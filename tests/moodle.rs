@@ -1,0 +1,619 @@
+//! `phong moodle`: the quiz is well formed XML (xmllint), every question passes a validator
+//! written here from the Cloze grammar and Moodle's import rules (the course's platform notes,
+//! read from `question/format/xml/format.php` and `question/type/multianswer/questiontype.php`),
+//! the validator rejects Moodle's own broken cases, and every answer option, checked with
+//! `phong check`, gets the verdict and the slip its feedback names.
+
+mod support;
+
+use std::path::{Path, PathBuf};
+
+use assert_cmd::Command;
+use serde_json::Value;
+
+/// The fractions Moodle's importer accepts (and their negatives).
+const GRADES: [f64; 21] = [
+    100.0, 90.0, 83.33333, 80.0, 75.0, 70.0, 66.66667, 60.0, 50.0, 40.0, 33.33333, 30.0, 25.0,
+    20.0, 16.66667, 14.28571, 12.5, 11.11111, 10.0, 5.0, 0.0,
+];
+
+const TYPES: [&str; 12] = [
+    "NUMERICAL",
+    "NM",
+    "MULTICHOICE",
+    "MC",
+    "MULTICHOICE_V",
+    "MCV",
+    "MULTICHOICE_H",
+    "MCH",
+    "SHORTANSWER",
+    "SA",
+    "SHORTANSWER_C",
+    "SAC",
+];
+
+/// One alternative of a sub-question, unescaped.
+#[derive(Debug, Clone)]
+struct Alt {
+    fraction: f64,
+    answer: String,
+    tolerance: Option<f64>,
+    feedback: String,
+}
+
+#[derive(Debug, Clone)]
+struct Sub {
+    kind: String,
+    alts: Vec<Alt>,
+}
+
+/// Splits `s` at `sep` not preceded by a backslash.
+fn split_unescaped(s: &str, sep: char) -> Vec<String> {
+    let mut parts = vec![String::new()];
+    let mut prev = '\0';
+    for c in s.chars() {
+        if c == sep && prev != '\\' {
+            parts.push(String::new());
+        } else {
+            parts.last_mut().unwrap().push(c);
+        }
+        prev = c;
+    }
+    parts
+}
+
+fn unescape(s: &str) -> String {
+    s.replace("\\}", "}").replace("\\#", "#")
+}
+
+fn html_text(s: &str) -> String {
+    s.replace("&lt;", "<")
+        .replace("&gt;", ">")
+        .replace("&quot;", "\"")
+        .replace("&#39;", "'")
+        .replace("&#126;", "~")
+        .replace("&#92;", "\\")
+        .replace("&amp;", "&")
+}
+
+/// The grammar's `number`: "-"? ( [0-9]+ [.,]? [0-9]* | [.,] [0-9]+ ) ( [eE] [-+]? [0-9]+ )?
+fn is_number(s: &str) -> bool {
+    let s = s.strip_prefix('-').unwrap_or(s);
+    let (mantissa, exponent) = match s.find(['e', 'E']) {
+        Some(i) => (&s[..i], Some(&s[i + 1..])),
+        None => (s, None),
+    };
+    let digits = |t: &str| !t.is_empty() && t.bytes().all(|b| b.is_ascii_digit());
+    let ok_mantissa = match mantissa.find(['.', ',']) {
+        Some(i) => {
+            let (a, b) = (&mantissa[..i], &mantissa[i + 1..]);
+            (digits(a) && (b.is_empty() || digits(b))) || (a.is_empty() && digits(b))
+        }
+        None => digits(mantissa),
+    };
+    let ok_exponent = exponent.is_none_or(|e| digits(e.strip_prefix(['-', '+']).unwrap_or(e)));
+    ok_mantissa && ok_exponent
+}
+
+/// One alternative: [fraction] answer [# feedback].
+fn alternative(text: &str, numerical: bool) -> Result<Alt, String> {
+    let (fraction, rest) = if let Some(r) = text.strip_prefix('=') {
+        (100.0, r)
+    } else if let Some(r) = text.strip_prefix('%') {
+        let end = r
+            .find('%')
+            .ok_or(format!("unclosed fraction in {text:?}"))?;
+        let f: f64 = r[..end]
+            .replace(',', ".")
+            .parse()
+            .map_err(|_| format!("fraction {:?} is not a number", &r[..end]))?;
+        if !GRADES.iter().any(|g| (g - f.abs()).abs() < 1e-9) {
+            return Err(format!("fraction {f} is not one of Moodle's grades"));
+        }
+        (f, &r[end + 1..])
+    } else {
+        (0.0, text)
+    };
+    let pieces = split_unescaped(rest, '#');
+    if pieces.len() > 2 {
+        return Err(format!("an unescaped # in the feedback of {text:?}"));
+    }
+    let (mut answer, feedback) = (
+        pieces[0].clone(),
+        pieces.get(1).cloned().unwrap_or_default(),
+    );
+    if answer.trim().is_empty() {
+        return Err(format!("an empty answer in {text:?}"));
+    }
+    let mut tolerance = None;
+    if numerical && answer != "*" {
+        if let Some((a, t)) = answer.clone().split_once(':') {
+            if !is_number(t) {
+                return Err(format!("tolerance {t:?} is not a number"));
+            }
+            tolerance = Some(t.replace(',', ".").parse().unwrap());
+            answer = a.to_owned();
+        }
+        if !is_number(&answer) {
+            return Err(format!("NUMERICAL answer {answer:?} is not a number"));
+        }
+    }
+    Ok(Alt {
+        fraction,
+        answer: unescape(&answer),
+        tolerance,
+        feedback: html_text(&unescape(&feedback)),
+    })
+}
+
+/// The sub-questions of a Cloze question text, or why Moodle would refuse it.
+fn cloze(text: &str) -> Result<Vec<Sub>, String> {
+    let mut subs = Vec::new();
+    let mut rest = text;
+    while let Some(start) = rest.find('{') {
+        let after = &rest[start + 1..];
+        // A sub-question is "{" weight ":" TYPE ":" …; other braces are text.
+        let Some((weight, tail)) = after.split_once(':') else {
+            rest = after;
+            continue;
+        };
+        let Some((kind, body_and_more)) = tail.split_once(':') else {
+            rest = after;
+            continue;
+        };
+        if !TYPES.contains(&kind) {
+            rest = after;
+            continue;
+        }
+        if !weight.bytes().all(|b| b.is_ascii_digit()) {
+            return Err(format!("weight {weight:?} is not an integer"));
+        }
+        // The body ends at the first "}" not preceded by "\".
+        let bytes = body_and_more.as_bytes();
+        let end = (0..bytes.len())
+            .find(|&i| bytes[i] == b'}' && (i == 0 || bytes[i - 1] != b'\\'))
+            .ok_or("an unclosed sub-question")?;
+        let body = &body_and_more[..end];
+        if body.trim().is_empty() {
+            return Err("an empty sub-question".into());
+        }
+        let numerical = kind == "NUMERICAL" || kind == "NM";
+        let alts = split_unescaped(body, '~')
+            .iter()
+            .map(|a| alternative(a, numerical))
+            .collect::<Result<Vec<_>, _>>()?;
+        if !alts.iter().any(|a| (a.fraction - 100.0).abs() < 1e-9) {
+            return Err("no 100 % answer".into());
+        }
+        subs.push(Sub {
+            kind: kind.to_owned(),
+            alts,
+        });
+        rest = &body_and_more[end + 1..];
+    }
+    if subs.is_empty() {
+        return Err("a Cloze question without sub-questions".into());
+    }
+    Ok(subs)
+}
+
+/// The text between `open` and `close` after `from`.
+fn between<'a>(s: &'a str, open: &str, close: &str) -> Option<&'a str> {
+    let a = s.find(open)? + open.len();
+    let b = s[a..].find(close)? + a;
+    Some(&s[a..b])
+}
+
+fn cdata(s: &str) -> &str {
+    s.strip_prefix("<![CDATA[")
+        .and_then(|t| t.strip_suffix("]]>"))
+        .unwrap_or(s)
+}
+
+/// A whole quiz against the import rules: the first line, the root, each question's name and
+/// text, each category's path, each picture's file; the Cloze questions' sub-questions.
+fn validate(xml: &str) -> Result<Vec<Vec<Sub>>, String> {
+    if !xml.starts_with("<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n") {
+        return Err("the XML declaration is not the very first line".into());
+    }
+    let body = between(xml, "<quiz>", "</quiz>").ok_or("no <quiz> root")?;
+    let mut questions = Vec::new();
+    let mut categories = 0;
+    for q in body.split("<question type=\"").skip(1) {
+        let (kind, q) = q.split_once('"').ok_or("a question without a type")?;
+        match kind {
+            "category" => {
+                let path = between(q, "<category><text>", "</text>").ok_or("a bare category")?;
+                if !path.starts_with("$course$/top/") {
+                    return Err(format!("category {path:?} is not under $course$/top"));
+                }
+                categories += 1;
+            }
+            "cloze" | "multianswer" => {
+                if categories == 0 {
+                    return Err("a question before any category".into());
+                }
+                let name = between(q, "<name><text>", "</text></name>").ok_or("no name")?;
+                if name.trim().is_empty() {
+                    return Err("an empty name".into());
+                }
+                let text = between(q, "<questiontext format=\"html\"><text>", "</text>")
+                    .ok_or("no question text")?;
+                questions.push(cloze(cdata(text)).map_err(|e| format!("{name}: {e}"))?);
+                let feedback =
+                    between(q, "<generalfeedback format=\"html\">", "</generalfeedback>")
+                        .ok_or("no general feedback")?;
+                let html = cdata(between(feedback, "<text>", "</text>").unwrap_or(""));
+                // MathJax: \( \) only; a lone $ would be shown as it is.
+                if html.contains('$') {
+                    return Err(format!("{name}: a $ in the feedback"));
+                }
+                for reference in html.split("@@PLUGINFILE@@/").skip(1) {
+                    let file = reference.split('"').next().unwrap();
+                    let tag = format!("<file name=\"{file}\" path=\"/\" encoding=\"base64\">");
+                    let data = between(feedback, &tag, "</file>")
+                        .ok_or(format!("{name}: {file} is shown but not embedded"))?;
+                    let b64 =
+                        |c: u8| c.is_ascii_alphanumeric() || c == b'+' || c == b'/' || c == b'=';
+                    if data.is_empty() || data.len() % 4 != 0 || !data.bytes().all(b64) {
+                        return Err(format!("{name}: {file} is not base64"));
+                    }
+                }
+            }
+            other => return Err(format!("an unexpected question type {other:?}")),
+        }
+    }
+    if questions.is_empty() {
+        return Err("no questions".into());
+    }
+    Ok(questions)
+}
+
+#[test]
+fn the_validator_rejects_moodles_broken_cloze_cases() {
+    let ok = "R = {1:NUMERICAL:=0.52:0.005#Correto~%0%0.65:0.005#Faltou o decaimento (Eq. 4.2)~*#Revise R}";
+    let subs = cloze(ok).unwrap();
+    assert_eq!(subs.len(), 1);
+    assert_eq!(subs[0].alts.len(), 3);
+    assert_eq!(subs[0].alts[1].answer, "0.65");
+    assert_eq!(subs[0].alts[1].tolerance, Some(0.005));
+    for (broken, why) in [
+        ("{1:NUMERICAL:}", "empty sub-question"),
+        ("{1:NUMERICAL:%50%0.5:0.01#half~*#no}", "no 100 %"),
+        ("{1:NUMERICAL:=abc:0.01}", "not a number"),
+        ("{1:NUMERICAL:=0.5:x}", "not a number"),
+        ("{0.5:NUMERICAL:=0.5:0.01}", "not an integer"),
+        (
+            "{1:NUMERICAL:=0.5:0.01~%33%0.4:0.01}",
+            "not one of Moodle's grades",
+        ),
+        ("{1:SHORTANSWER:=a#x#y}", "unescaped #"),
+        ("no sub-question at all", "without sub-questions"),
+    ] {
+        let e = cloze(broken).expect_err(broken);
+        assert!(e.contains(why), "{broken}: {e}");
+    }
+    // The grades Moodle lists are accepted, negatives too; escaped specials are text.
+    assert!(cloze("{2:NUMERICAL:=1:0~%33.33333%2:0~%-50%3:0~*}").is_ok());
+    let fb = &cloze("{:SA:=a\\}b#x \\} \\# y}").unwrap()[0].alts[0];
+    assert_eq!(
+        (fb.answer.as_str(), fb.feedback.as_str()),
+        ("a}b", "x } # y")
+    );
+}
+
+fn root() -> PathBuf {
+    PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+}
+
+fn phong() -> Command {
+    let mut c = Command::cargo_bin("phong").unwrap();
+    c.current_dir(root());
+    c
+}
+
+fn moodle(files: &[PathBuf], lang: &str, stdin: Option<&[u8]>) -> String {
+    let mut c = phong();
+    c.arg("moodle").args(files).args(["--lang", lang]);
+    if let Some(s) = stdin {
+        c.write_stdin(s.to_vec());
+    }
+    let out = c.assert().code(0).get_output().stdout.clone();
+    String::from_utf8(out).unwrap()
+}
+
+fn new(kind: &str, count: u32, seed: u64, lang: Option<&str>) -> Vec<u8> {
+    let mut c = phong();
+    let (count, seed) = (count.to_string(), seed.to_string());
+    c.args(["new", "--kind", kind]);
+    c.args(["--count", &count, "--seed", &seed]);
+    if let Some(l) = lang {
+        c.args(["--lang", l]);
+    }
+    c.assert().code(0).get_output().stdout.clone()
+}
+
+fn exercises() -> Vec<PathBuf> {
+    let mut files: Vec<PathBuf> = std::fs::read_dir(root().join("exercises"))
+        .unwrap()
+        .map(|e| e.unwrap().path())
+        .filter(|p| p.extension().is_some_and(|x| x == "json"))
+        .collect();
+    files.sort();
+    files
+}
+
+fn xmllint(xml: &str, name: &str) {
+    let Some(lint) = support::require("xmllint", "apt-get install libxml2-utils") else {
+        return;
+    };
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join(name);
+    std::fs::write(&path, xml).unwrap();
+    let out = std::process::Command::new(lint)
+        .arg("--noout")
+        .arg(&path)
+        .output()
+        .unwrap();
+    assert!(
+        out.status.success(),
+        "xmllint: {}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+}
+
+/// Standard base64 decoded (RFC 4648), for the embedded diagrams.
+fn unbase64(s: &str) -> Vec<u8> {
+    let value = |c: u8| match c {
+        b'A'..=b'Z' => c - b'A',
+        b'a'..=b'z' => c - b'a' + 26,
+        b'0'..=b'9' => c - b'0' + 52,
+        b'+' => 62,
+        b'/' => 63,
+        _ => panic!("not base64: {c}"),
+    };
+    let mut out = Vec::new();
+    for chunk in s.as_bytes().chunks(4) {
+        let n = chunk
+            .iter()
+            .filter(|&&c| c != b'=')
+            .enumerate()
+            .fold(0u32, |n, (i, &c)| n | u32::from(value(c)) << (18 - 6 * i));
+        let bytes = chunk.iter().filter(|&&c| c != b'=').count() - 1;
+        out.extend_from_slice(&n.to_be_bytes()[1..=bytes]);
+    }
+    out
+}
+
+#[test]
+fn the_embedded_diagrams_are_svg_files_of_their_own() {
+    let xml = moodle(&[root().join("exercises/4.2.json")], "pt", None);
+    let tag = "encoding=\"base64\">";
+    let data = between(&xml, tag, "</file>").expect("a diagram");
+    let svg = String::from_utf8(unbase64(data)).unwrap();
+    assert!(svg.starts_with("<svg ") && svg.contains("xmlns=\"http://www.w3.org/2000/svg\""));
+    assert!(svg.contains("<style>") && svg.trim_end().ends_with("</svg>"));
+    xmllint(&svg, "diagram.svg");
+}
+
+#[test]
+fn every_bundled_exercise_makes_a_well_formed_valid_quiz_in_both_languages() {
+    for lang in ["en", "pt"] {
+        let xml = moodle(&exercises(), lang, None);
+        xmllint(&xml, &format!("exercises-{lang}.xml"));
+        let questions = validate(&xml).unwrap_or_else(|e| panic!("{lang}: {e}"));
+        assert_eq!(questions.len(), exercises().len());
+        assert_eq!(
+            xml.matches("<question type=\"category\">").count(),
+            exercises().len()
+        );
+        // Colour problems: three NUMERICAL parts of weight 1 with absolute tolerances; the
+        // no-hit problem (4.3 as written): one SHORTANSWER part.
+        for subs in &questions {
+            match subs.len() {
+                3 => assert!(subs.iter().all(|s| s.kind == "NUMERICAL"
+                    && s.alts.last().unwrap().answer == "*"
+                    && s.alts[0].tolerance == Some(0.005))),
+                1 => {
+                    assert_eq!(subs[0].kind, "SHORTANSWER");
+                    let right: Vec<&str> = subs[0]
+                        .alts
+                        .iter()
+                        .filter(|a| a.fraction == 100.0)
+                        .map(|a| a.answer.as_str())
+                        .collect();
+                    assert!(right.contains(&"nenhuma") && right.contains(&"none"));
+                }
+                n => panic!("{n} sub-questions"),
+            }
+        }
+        assert!(xml.contains("@@PLUGINFILE@@/") && xml.contains("\\("));
+        // The quiz's own words in the chosen language only.
+        let (ours, theirs) = if lang == "pt" {
+            (
+                ["Erro provável:", "Correto.", "Solução comentada"],
+                ["Likely slip:", "Right.", "Worked solution"],
+            )
+        } else {
+            (
+                ["Likely slip:", "Right.", "Worked solution"],
+                ["Erro provável:", "Correto.", "Solução comentada"],
+            )
+        };
+        for (a, b) in ours.iter().zip(theirs) {
+            assert!(xml.contains(a) && !xml.contains(b), "{lang}: {a} / {b}");
+        }
+    }
+}
+
+#[test]
+fn generated_problems_piped_in_make_a_valid_quiz() {
+    // The issue's "done when": `phong new --kind spot --count 10 --seed 1 --lang pt` piped to
+    // `phong moodle`, and so for every kind.
+    for kind in [
+        "spot",
+        "ambient",
+        "point",
+        "ray-plane",
+        "directional",
+        "several",
+        "sphere",
+    ] {
+        let problems = new(kind, 10, 1, Some("pt"));
+        let xml = moodle(&[PathBuf::from("-")], "pt", Some(&problems));
+        xmllint(&xml, &format!("{kind}.xml"));
+        let questions = validate(&xml).unwrap_or_else(|e| panic!("{kind}: {e}"));
+        assert_eq!(questions.len(), 10, "{kind}");
+        assert!(xml.contains("Problemas gerados"));
+    }
+}
+
+fn check(file: &Path, answer: [f64; 3]) -> Value {
+    let a = format!("{} {} {}", answer[0], answer[1], answer[2]);
+    let out = phong()
+        .args(["check", "--format", "json", "--answer", &a])
+        .arg(file)
+        .output()
+        .unwrap();
+    serde_json::from_slice(&out.stdout).unwrap()
+}
+
+/// Each channel's first alternative after the first at `fraction`, else `fallback`'s.
+fn alternative_colour(subs: &[Sub], fraction: f64, fallback: [f64; 3]) -> [f64; 3] {
+    [0, 1, 2].map(|c| {
+        subs[c].alts[1..]
+            .iter()
+            .find(|a| a.fraction == fraction)
+            .map_or(fallback[c], |a| a.answer.parse().unwrap())
+    })
+}
+
+fn right_value(sub: &Sub) -> f64 {
+    sub.alts[0].answer.parse().unwrap()
+}
+
+/// Every option: the right answer is right, the reading's is a reading, and each slip's
+/// colour (its own number in each channel that has one, the right answer's or the reading's
+/// elsewhere, which the slip is within tolerance of) is wrong with that slip diagnosed.
+#[test]
+fn every_answer_option_round_trips_through_phong_check() {
+    let dir = tempfile::tempdir().unwrap();
+    let mut files = exercises();
+    for kind in [
+        "point",
+        "directional",
+        "spot",
+        "several",
+        "sphere",
+        "ray-plane",
+    ] {
+        phong()
+            .args(["new", "--kind", kind, "--count", "3", "--seed", "5", "-o"])
+            .arg(dir.path())
+            .assert()
+            .code(0);
+    }
+    let mut generated: Vec<PathBuf> = std::fs::read_dir(dir.path())
+        .unwrap()
+        .map(|e| e.unwrap().path())
+        .collect();
+    generated.sort();
+    files.extend(generated);
+    let xml = moodle(&files, "en", None);
+    let questions = validate(&xml).unwrap();
+    let mut slips_seen = 0;
+    for (file, subs) in files.iter().zip(&questions) {
+        if subs.len() != 3 {
+            let v = phong()
+                .args([
+                    "check",
+                    "--format",
+                    "json",
+                    "--answer",
+                    &subs[0].alts[0].answer,
+                ])
+                .arg(file)
+                .output()
+                .unwrap();
+            let v: Value = serde_json::from_slice(&v.stdout).unwrap();
+            assert_eq!(v["verdict"], "right", "{}", file.display());
+            continue;
+        }
+        let right = [0, 1, 2].map(|c| right_value(&subs[c]));
+        assert_eq!(check(file, right)["verdict"], "right", "{}", file.display());
+        // A second 100 % alternative is the value before the clamp: the unclamped colour; a
+        // 50 % one, the likely intended reading.
+        for (fraction, verdict) in [(100.0, "right"), (50.0, "reading")] {
+            let colour = alternative_colour(subs, fraction, right);
+            if colour != right {
+                let v = check(file, colour);
+                assert_eq!(v["verdict"], verdict, "{}", file.display());
+            }
+        }
+        let reading = alternative_colour(subs, 50.0, right);
+        // Each slip's sentence, as the feedback says it.
+        let mut sentences: Vec<String> = Vec::new();
+        for sub in subs {
+            for a in sub
+                .alts
+                .iter()
+                .filter(|a| a.fraction == 0.0 && a.answer != "*")
+            {
+                for s in a.feedback.split("Likely slip: ").skip(1) {
+                    let s = s.trim().to_owned();
+                    if !sentences.contains(&s) {
+                        sentences.push(s);
+                    }
+                }
+            }
+        }
+        for sentence in &sentences {
+            let own = |c: usize| {
+                subs[c]
+                    .alts
+                    .iter()
+                    .find(|a| a.fraction == 0.0 && a.feedback.contains(sentence.as_str()))
+                    .map(|a| a.answer.parse::<f64>().unwrap())
+            };
+            let fills = [right, reading];
+            let diagnosed = (0..8).any(|choice: usize| {
+                let colour = [0, 1, 2].map(|c| own(c).unwrap_or(fills[(choice >> c) & 1][c]));
+                let v = check(file, colour);
+                v["verdict"] == "wrong"
+                    && v["diagnosis"].as_array().unwrap().iter().any(|d| {
+                        d["slips"].as_array().unwrap().len() == 1
+                            && sentence.starts_with(d["description"].as_str().unwrap())
+                    })
+            });
+            assert!(diagnosed, "{}: {sentence}", file.display());
+            slips_seen += 1;
+        }
+    }
+    assert!(slips_seen > 20, "only {slips_seen} slip options");
+}
+
+#[test]
+fn a_file_that_is_not_a_question_is_refused_by_name() {
+    let out = phong()
+        .args(["moodle", "scenes/classic.json"])
+        .assert()
+        .code(2)
+        .get_output()
+        .clone();
+    let err = String::from_utf8(out.stderr).unwrap();
+    assert!(
+        err.contains("scenes/classic.json") && err.contains("no point or ray"),
+        "{err}"
+    );
+    assert!(out.stdout.is_empty());
+    // An array whose second problem is broken names it.
+    let out = phong()
+        .args(["moodle", "-"])
+        .write_stdin(r#"[{"lights": [], "point": {"material": "M"}, "materials": {"M": {"ambient": [0.5, 0.5, 0.5]}}}, {"bogus": 1}]"#)
+        .assert()
+        .code(2)
+        .get_output()
+        .clone();
+    let err = String::from_utf8(out.stderr).unwrap();
+    assert!(err.contains("-[2]") && err.contains("bogus"), "{err}");
+}
