@@ -803,9 +803,10 @@ fn equation(q: &Quantity, lang: Lang) -> String {
         Lang::En => "Eq.",
         Lang::Pt => "Eq.",
     };
+    let formula = crate::report::messages::step_formula(q.name.formula, lang);
     match q.equation {
-        Some(n) => format!("{eq} {n}: {}", q.name.formula),
-        None => q.name.formula.to_owned(),
+        Some(n) => format!("{eq} {n}: {formula}"),
+        None => formula.to_owned(),
     }
 }
 

@@ -89,14 +89,9 @@ impl CliError {
     }
 }
 
-/// Prints an error on standard error as `error: …`; every error of `phong` is printed here (a
-/// closed standard error is ignored: [`super::output::say`]).
-pub(crate) fn print(error: &dyn Display) {
-    print_in(error, Lang::En);
-}
-
-/// Prints an error on standard error in `lang` (`erro: …` in Portuguese, through the catalogue
-/// of [`crate::report::messages::error_in`]); a closed standard error is ignored.
+/// Prints an error on standard error in `lang`, as `error: …` (`erro: …` in Portuguese, through
+/// the catalogue of [`crate::report::messages::error_in`]); every error of `phong` is printed
+/// here (a closed standard error is ignored: [`super::output::say`]).
 pub(crate) fn print_in(error: &dyn Display, lang: Lang) {
     super::output::say(&format_args!(
         "{}: {}",
@@ -105,9 +100,43 @@ pub(crate) fn print_in(error: &dyn Display, lang: Lang) {
     ));
 }
 
-/// Prints a warning (a likely mistake that is not an error) on standard error.
-pub(crate) fn warn(warning: &dyn Display) {
-    super::output::say(&format_args!("warning: {warning}"));
+/// A command line that clap refuses. With `--lang pt`, a flag's value that its parser refuses
+/// (`--tolerance abc`, `--samples 0`, `--format foo`) is said in Portuguese, its parser's message
+/// through the catalogue of [`crate::report::messages::error_in`]; clap's other usage errors (an
+/// unknown flag, a missing argument) stay in clap's English, which has no localisation.
+pub(crate) fn refused(e: &clap::Error, args: &[std::ffi::OsString]) -> Option<Exit> {
+    use clap::error::ErrorKind;
+    let pt = args.windows(2).any(|w| w[0] == "--lang" && w[1] == "pt")
+        || args.iter().any(|a| a == "--lang=pt");
+    if !pt
+        || !matches!(
+            e.kind(),
+            ErrorKind::ValueValidation | ErrorKind::InvalidValue
+        )
+    {
+        return None;
+    }
+    let text = e.render().to_string();
+    let text = text
+        .replacen("error: invalid value '", "valor inválido '", 1)
+        .replacen("' for '", "' para '", 1)
+        .replace("[possible values: ", "[valores possíveis: ")
+        .replace(
+            "tip: a similar value exists: ",
+            "dica: há um valor parecido: ",
+        )
+        .replace(
+            "For more information, try '--help'.",
+            "Para mais informações, tente '--help'.",
+        );
+    print_in(&text.trim_end(), Lang::Pt);
+    Some(Exit::BadInput)
+}
+
+/// Prints a warning (a likely mistake that is not an error), already in `lang`, on standard
+/// error after `warning:` (`aviso:` in Portuguese).
+pub(crate) fn warn_in(warning: &dyn Display, lang: Lang) {
+    super::output::say(&format_args!("{}: {warning}", messages::warning_word(lang)));
 }
 
 /// The exit of a step a command goes on after (one file of several): success, or bad input

@@ -24,7 +24,14 @@ use args::Command;
 /// The program: parse the arguments and run.
 pub fn main() -> ExitCode {
     output::guard_signals();
-    run(&Cli::parse()).into()
+    let args: Vec<std::ffi::OsString> = std::env::args_os().collect();
+    match Cli::try_parse_from(&args) {
+        Ok(cli) => run(&cli).into(),
+        Err(e) => match error::refused(&e, &args) {
+            Some(exit) => exit.into(),
+            None => e.exit(),
+        },
+    }
 }
 
 /// Runs a parsed command line: how it ended, its error printed if it failed.

@@ -14,6 +14,8 @@
 use super::lang::Lang;
 use super::number::num;
 use crate::core::{LightStatus, Real, SpecularStatus};
+use crate::problem::mesh::MAX_TRIANGLES;
+use crate::problem::model::MAX_LIGHTS;
 use crate::problem::validate::show;
 use crate::problem::warnings::{Warning, WarningKind};
 use crate::problem::Problem;
@@ -689,6 +691,589 @@ pub fn reading_explanation_given(code: ReadingCode, lang: Lang, viewer: bool) ->
 const ERRORS_PT: &[(&str, &str)] = &[
     // The frame of every message.
     (". Fix: ", ". Correção: "),
+    // Flag values (cli/parse.rs), before the validation's phrases they share parts with.
+    (
+        "Correção: give a maximum level (1 = primary rays only) from 1 to ",
+        "Correção: dê um nível máximo (1 = só os raios primários) de 1 a ",
+    ),
+    ("Correção: give samples per pixel from 1 to ", "Correção: dê as amostras por pixel de 1 a "),
+    (
+        "Correção: give the renders per setting from 1 to ",
+        "Correção: dê as renderizações por configuração de 1 a ",
+    ),
+    ("Correção: give worker threads from 1 to ", "Correção: dê as threads de trabalho de 1 a "),
+    (" is not a whole number", " não é um número inteiro"),
+    (" is not a number ≥ 0", " não é um número ≥ 0"),
+    (
+        "write a decimal (0.05) or a fraction (1/255)",
+        "escreva um decimal (0.05) ou uma fração (1/255)",
+    ),
+    (
+        "give a number ≥ 0 (e.g. 0.005 on the 0–1 scale)",
+        "dê um número ≥ 0 (por exemplo 0.005 na escala 0–1)",
+    ),
+    (
+        " is not a tolerance. Correção: give the largest difference accepted per channel, a number ≥ 0 (e.g. 0.005 on the 0–1 scale, 1 on the 255 scale)",
+        " não é uma tolerância. Correção: dê a maior diferença aceita por canal, um número ≥ 0 (por exemplo 0.005 na escala 0–1, 1 na escala 255)",
+    ),
+    (" is not a separator: give , or ; or tab", " não é um separador: dê , ou ; ou tab"),
+    (
+        " is not a size; write WIDTHxHEIGHT, each 1 to ",
+        " não é um tamanho; escreva LARGURAxALTURA, cada um de 1 a ",
+    ),
+    (" (e.g. 320x240)", " (por exemplo 320x240)"),
+    (
+        " is not X,Y (two whole numbers and a comma, e.g. 320,240)",
+        " não é X,Y (dois números inteiros e uma vírgula, por exemplo 320,240)",
+    ),
+    (
+        " is not a pixel coordinate (a whole number ≥ 0)",
+        " não é uma coordenada de pixel (um número inteiro ≥ 0)",
+    ),
+    // The rarer validation messages (problem/validate.rs), whole phrases before their parts.
+    // A light's or a surface's kind, after its label.
+    ("] (point)", "] (pontual)"),
+    ("] (directional)", "] (direcional)"),
+    ("] (ambient)", "] (ambiente)"),
+    // Point or ray.
+    (
+        "the problem gives both \"point\" and \"ray\"",
+        "o problema dá \"point\" e \"ray\" ao mesmo tempo",
+    ),
+    (
+        "give either a point (with its normal) or a ray with surfaces, not both",
+        "dê um ponto (com sua normal) ou um raio com superfícies, não os dois",
+    ),
+    (
+        "a scene needs at least one surface for its rays to hit",
+        "uma cena precisa de pelo menos uma superfície para seus raios atingirem",
+    ),
+    (
+        "a scene needs surfaces for its rays to hit (this is a point problem)",
+        "uma cena precisa de superfícies para seus raios atingirem (este é um problema de ponto)",
+    ),
+    (
+        "add \"surfaces\" and a \"camera\", or solve it with `phong solve`",
+        "acrescente \"surfaces\" e uma \"camera\", ou resolva-o com `phong solve`",
+    ),
+    (
+        "add \"surfaces\": [{\"type\": \"sphere\", ...}], a plane, a triangle or a mesh",
+        "acrescente \"surfaces\": [{\"type\": \"sphere\", ...}], um plano, um triângulo ou uma malha",
+    ),
+    (
+        "a ray problem needs at least one surface for the ray to hit",
+        "um problema de raio precisa de pelo menos uma superfície para o raio atingir",
+    ),
+    (
+        "add \"surfaces\": [{\"type\": \"plane\", ...}] or a sphere",
+        "acrescente \"surfaces\": [{\"type\": \"plane\", ...}] ou uma esfera",
+    ),
+    (
+        "surfaces are only used by a ray problem, and this problem gives a point",
+        "as superfícies só são usadas num problema de raio, e este problema dá um ponto",
+    ),
+    (
+        "remove \"surfaces\", or replace \"point\" with a \"ray\"",
+        "remova \"surfaces\", ou troque \"point\" por um \"ray\"",
+    ),
+    (" needs P for L and d (Eq. 4.1)", " precisa de P para L e d (Eq. 4.1)"),
+    (
+        "the viewer needs P for V = (P − E)/‖P − E‖",
+        "o observador precisa de P para V = (P − E)/‖P − E‖",
+    ),
+    (" needs N for cos θ = −N·L (Eq. 4.7)", " precisa de N para cos θ = −N·L (Eq. 4.7)"),
+    (", or remove \"viewer\"", ", ou remova \"viewer\""),
+    (" to \"point\"", " a \"point\""),
+    // The camera.
+    (
+        "the camera looks at its own eye: no line of sight",
+        "a câmera olha para o próprio olho: não há linha de visada",
+    ),
+    ("give a look_at point different from eye", "dê um ponto `look_at` diferente de `eye`"),
+    (
+        "up is zero or along the line of sight, so the image has no up direction",
+        "`up` é nulo ou está na linha de visada, e a imagem fica sem direção para cima",
+    ),
+    (
+        "give an up vector not parallel to look_at − eye, such as [0, 1, 0] or [0, 0, 1]",
+        "dê um vetor `up` não paralelo a `look_at` − `eye`, como [0, 1, 0] ou [0, 0, 1]",
+    ),
+    (" degrees is not a field of view", " graus não é um campo de visão"),
+    (
+        "give the vertical field of view in degrees, 0 < fov < 180 (e.g. 45)",
+        "dê o campo de visão vertical em graus, 0 < fov < 180 (por exemplo 45)",
+    ),
+    (" degrees is too small for ", " graus é pequeno demais para "),
+    (" degrees is too close to 180 for ", " graus é próximo demais de 180 para "),
+    (
+        "give a larger field of view, or use --precision f64",
+        "dê um campo de visão maior, ou use --precision f64",
+    ),
+    (
+        "give a field of view of at most 179 degrees, or use --precision f64",
+        "dê um campo de visão de no máximo 179 graus, ou use --precision f64",
+    ),
+    (" pixels is outside 1 to ", " pixels está fora de 1 a "),
+    ("give the image width in pixels, 1 to ", "dê a largura da imagem em pixels, de 1 a "),
+    ("give the image height in pixels, 1 to ", "dê a altura da imagem em pixels, de 1 a "),
+    // The tracer's settings.
+    (
+        "0 traces nothing: the primary ray already has level 1",
+        "0 não traça nada: o raio primário já tem nível 1",
+    ),
+    ("give a maximum level from 1 to ", "dê um nível máximo de 1 a "),
+    (" (1 = primary rays only)", " (1 = só os raios primários)"),
+    (
+        " reflections a path cannot change an 8-bit pixel unless its surfaces reflect more than 99%",
+        " reflexões um caminho não muda um pixel de 8 bits, a menos que suas superfícies reflitam mais de 99%",
+    ),
+    (": past ", ": depois de "),
+    (" samples per pixel is outside 1 to ", " amostras por pixel está fora de 1 a "),
+    (" is outside 1 to ", " está fora de 1 a "),
+    (" samples is ", " amostras são "),
+    (" primary rays, more than the ", " raios primários, mais que os "),
+    (
+        " (2^30) a render may trace (hours of work)",
+        " (2^30) que uma renderização pode traçar (horas de trabalho)",
+    ),
+    (
+        " samples per pixel at this size, or a smaller image",
+        " amostras por pixel neste tamanho, ou uma imagem menor",
+    ),
+    (
+        "give a smaller image (--size, or the camera's width and height)",
+        "dê uma imagem menor (--size, ou a largura e a altura da câmera)",
+    ),
+    ("give a smaller image", "dê uma imagem menor"),
+    ("give 1 to ", "dê de 1 a "),
+    (" samples per pixel", " amostras por pixel"),
+    (" is not a weight", " não é um peso"),
+    (
+        "give a minimum weight ≥ 0 (0 traces every reflection up to the maximum level)",
+        "dê um peso mínimo ≥ 0 (0 traça todas as reflexões até o nível máximo)",
+    ),
+    // Surfaces and meshes.
+    ("the scene has more than ", "a cena tem mais de "),
+    (
+        " surfaces (a mesh's triangles each count)",
+        " superfícies (cada triângulo de uma malha conta)",
+    ),
+    (
+        "give at most 1,000,000 surfaces and triangles in all",
+        "dê no máximo 1,000,000 superfícies e triângulos ao todo",
+    ),
+    ("give at most ", "dê no máximo "),
+    ("give a smaller mesh, or free memory", "dê uma malha menor, ou libere memória"),
+    ("out of memory: this needs about ", "memória insuficiente: isto precisa de cerca de "),
+    // The material's terms.
+    (
+        "the ambient term O_a I_a (Eq. 4.6) needs it, since the problem has an ambient light",
+        "o termo de luz ambiente O_a I_a (Eq. 4.6) precisa dele, pois o problema tem uma luz ambiente",
+    ),
+    (
+        "; [0, 0, 0] if the surface reflects no ambient light",
+        "; [0, 0, 0] se a superfície não reflete luz ambiente",
+    ),
+    (
+        "the diffuse term O_d I_l cos θ (Eq. 4.8) of ",
+        "o termo de reflexão difusa O_d I_l cos θ (Eq. 4.8) de ",
+    ),
+    ("; [0, 0, 0] for no diffuse reflection", "; [0, 0, 0] para nenhuma reflexão difusa"),
+    (
+        "the specular term O_s I_l (cos φ)^n_s (Eq. 4.10) of ",
+        "o termo de reflexão especular O_s I_l (cos φ)^n_s (Eq. 4.10) de ",
+    ),
+    (
+        " needs it, since the problem has a viewer",
+        " precisa dele, pois o problema tem um observador",
+    ),
+    (" needs it", " precisa dele"),
+    ("; [0, 0, 0] for a matte surface", "; [0, 0, 0] para uma superfície fosca"),
+    ("the specular term (Eq. 4.10) of ", "o termo de reflexão especular (Eq. 4.10) de "),
+    (" needs the exponent n_s", " precisa do expoente n_s"),
+    ("add \"shininess\": n_s (a number ≥ 0)", "acrescente \"shininess\": n_s (um número ≥ 0)"),
+    (" (or {\"k\": k", " (ou {\"k\": k"),
+    // Lights.
+    (" lights are more than the ", " fontes de luz são mais que as "),
+    (" a problem may have", " que um problema pode ter"),
+    ("° is outside [0°, 90°]", "° está fora de [0°, 90°]"),
+    (
+        "γ is the angle between the cone's axis and its side, 0 ≤ γ ≤ 90 degrees (Eq. 4.4)",
+        "γ é o ângulo entre o eixo do cone e sua geratriz, 0 ≤ γ ≤ 90 graus (Eq. 4.4)",
+    ),
+    (
+        "the spot exponent e of cos(ψ)^e (Eq. 4.4) must be ≥ 0, e.g. 0, 1 or 2",
+        "o expoente e do spot em cos(ψ)^e (Eq. 4.4) deve ser ≥ 0, por exemplo 0, 1 ou 2",
+    ),
+    (" is negative", " é negativo"),
+    (" is not a falloff exponent", " não é um expoente de decaimento"),
+    (
+        "use 0 (no falloff), 1 (linear) or 2 (quadratic), Eq. 4.3",
+        "use 0 (sem decaimento), 1 (linear) ou 2 (quadrático), Eq. 4.3",
+    ),
+    // A field the light's or surface's type does not take, or needs.
+    ("remove it; a point light takes ", "remova-o; uma luz pontual aceita "),
+    ("remove it; a spot light takes ", "remova-o; uma luz spot aceita "),
+    ("remove it; a directional light takes ", "remova-o; uma luz direcional aceita "),
+    ("remove it; an ambient light takes ", "remova-o; uma luz ambiente aceita "),
+    ("remove it; a ambient light takes ", "remova-o; uma luz ambiente aceita "),
+    ("remove it; a plane takes ", "remova-o; um plano aceita "),
+    ("remove it; a sphere takes ", "remova-o; uma esfera aceita "),
+    ("remove it; a triangle takes ", "remova-o; um triângulo aceita "),
+    ("remove it; a mesh takes ", "remova-o; uma malha aceita "),
+    ("a point light has no ", "uma luz pontual não tem "),
+    ("a spot light has no ", "uma luz spot não tem "),
+    ("a directional light has no ", "uma luz direcional não tem "),
+    ("a ambient light has no ", "uma luz ambiente não tem "),
+    ("a ambient light needs ", "uma luz ambiente precisa de "),
+    ("a plane has no ", "um plano não tem "),
+    ("a sphere has no ", "uma esfera não tem "),
+    ("a triangle has no ", "um triângulo não tem "),
+    ("a mesh has no ", "uma malha não tem "),
+    ("a plane needs ", "um plano precisa de "),
+    ("a sphere needs ", "uma esfera precisa de "),
+    ("a triangle needs ", "um triângulo precisa de "),
+    ("a mesh needs ", "uma malha precisa de "),
+    // Spheres and triangles.
+    (": it rounds to 0", ": é arredondado para 0"),
+    (" is too small for ", " é pequeno demais para "),
+    ("use --precision f64, or scale the problem", "use --precision f64, ou mude a escala do problema"),
+    (" is not a radius", " não é um raio"),
+    ("give the sphere a radius > 0", "dê à esfera um raio > 0"),
+    ("the triangle is degenerate in ", "o triângulo é degenerado em "),
+    (
+        ": its corners lie on one line, so it has no area and no normal",
+        ": seus vértices estão numa reta, e ele não tem área nem normal",
+    ),
+    ("give three corners that are not on one line", "dê três vértices que não estejam numa reta"),
+    // Materials.
+    ("there is no material named ", "não há material chamado "),
+    (
+        "define it under \"materials\", or write the material in place",
+        "defina-o em \"materials\", ou escreva o material no lugar",
+    ),
+    (", or define it under \"materials\"", ", ou defina-o em \"materials\""),
+    ("use one of ", "use um de "),
+    (
+        "the specular exponent n_s (Eq. 4.9) must be ≥ 0",
+        "o expoente especular n_s (Eq. 4.9) deve ser ≥ 0",
+    ),
+    (
+        "is \"specular\" but the material has no specular colour",
+        "é \"specular\", mas o material não tem cor especular",
+    ),
+    (
+        "give \"specular\", or give the reflectivity as [r, g, b]",
+        "dê \"specular\", ou dê a refletividade como [r, g, b]",
+    ),
+    (" is outside [0, 1]", " está fora de [0, 1]"),
+    (
+        "the chapter's coefficients k_a, k_d, k_s lie in [0, 1] (Eq. 4.5, 4.7, 4.9); give the product as one colour [r, g, b] if you mean something else",
+        "os coeficientes k_a, k_d, k_s do capítulo estão em [0, 1] (Eq. 4.5, 4.7, 4.9); dê o produto como uma só cor [r, g, b] se quer outra coisa",
+    ),
+    ("a material colour has a negative component", "uma cor de material tem um componente negativo"),
+    // Numbers and directions.
+    (" is not a finite f64 number", " não é um número finito em f64"),
+    (" is not a finite f32 number", " não é um número finito em f32"),
+    (
+        "use a number within ±3.4e38, or --precision f64",
+        "use um número dentro de ±3.4e38, ou --precision f64",
+    ),
+    ("use a finite number", "use um número finito"),
+    ("the normal N ", "a normal N "),
+    ("the ray's direction ", "a direção do raio "),
+    ("the light's direction D_l ", "a direção D_l da fonte de luz "),
+    ("the cone's axis D_l ", "o eixo D_l do cone "),
+    ("the plane's normal ", "a normal do plano "),
+    (" is too long for ", " tem comprimento grande demais para "),
+    (": its length overflows", ": seu comprimento estoura"),
+    (
+        "give a shorter vector in the same direction (only the direction is used)",
+        "dê um vetor mais curto na mesma direção (só a direção é usada)",
+    ),
+    (" is the zero vector (in ", " é o vetor nulo (em "),
+    ("), which has no direction", "), que não tem direção"),
+    ("give a non-zero vector", "dê um vetor não nulo"),
+    // Reading and parsing (problem/mod.rs).
+    ("invalid number", "número inválido"),
+    ("key must be a string", "a chave deve ser um texto"),
+    // The parser's types (serde's words), and the fix of a word where a number belongs.
+    (", expected f64", ", esperado um número"),
+    (", expected u32", ", esperado um número inteiro"),
+    (", expected u8", ", esperado um número inteiro"),
+    (", expected a number", ", esperado um número"),
+    (" for \"", " para \""),
+    (
+        "save the file as UTF-8 (JSON is UTF-8 text); the byte may come from another encoding, such as Latin-1, or from a file that is not a problem file",
+        "salve o arquivo como UTF-8 (JSON é texto UTF-8); o byte pode vir de outra codificação, como Latin-1, ou de um arquivo que não é um arquivo de problema",
+    ),
+    ("it is larger than ", "é maior que "),
+    (" MiB, the most phong reads for a problem file", " MiB, o máximo que phong lê de um arquivo de problema"),
+    (" MiB, the most phong reads for a mesh", " MiB, o máximo que phong lê de uma malha"),
+    (
+        "give a smaller file (the limits are in README, \"Limits and safety\")",
+        "dê um arquivo menor (os limites estão no README, \"Limits and safety\")",
+    ),
+    (" is not UTF-8 text", " não é texto UTF-8"),
+    (
+        "too many elements: expected an array of length 3",
+        "elementos demais: esperada uma lista de comprimento 3",
+    ),
+    (
+        "give exactly three numbers [x, y, z] (a triangle: three vertices)",
+        "dê exatamente três números [x, y, z] (um triângulo: três vértices)",
+    ),
+    (": every number must be finite, such as 0 or 1e300", ": todo número deve ser finito, como 0 ou 1e300"),
+    ("JSON has no ", "JSON não tem "),
+    (", and a problem file is one JSON object { … }", ", e um arquivo de problema é um objeto JSON { … }"),
+    ("the file is an array [ … ]", "o arquivo é uma lista [ … ]"),
+    ("the file is a string", "o arquivo é um texto"),
+    ("the file is a number", "o arquivo é um número"),
+    ("the file is a boolean", "o arquivo é um booleano"),
+    ("the file is null", "o arquivo é null"),
+    (
+        "write the problem's fields in one object, ",
+        "escreva os campos do problema num só objeto, ",
+    ),
+    (
+        "; several problems go in several files (`phong schema` lists every field)",
+        "; vários problemas vão em vários arquivos (`phong schema` lista todos os campos)",
+    ),
+    (
+        "the falloff is the exponent f of d^f, a number: write ",
+        "o decaimento é o expoente f de d^f, um número: escreva ",
+    ),
+    (" (0 none, 1 linear, 2 quadratic)", " (0 sem decaimento, 1 linear, 2 quadrático)"),
+    ("a number is written without quotes: ", "um número se escreve sem aspas: "),
+    ("a number belongs here, not the word ", "aqui vai um número, não a palavra "),
+    (
+        ": the falloff is 0 (none), 1 (linear) or 2 (quadratic)",
+        ": o decaimento é 0 (sem decaimento), 1 (linear) ou 2 (quadrático)",
+    ),
+    ("the file ends too early: close every { and [", "o arquivo termina cedo demais: feche cada { e ["),
+    (
+        "the number is beyond the range of f64 (about ±1.8e308); every number must be finite",
+        "o número está além do alcance de f64 (cerca de ±1.8e308); todo número deve ser finito",
+    ),
+    ("number out of range", "número fora do alcance"),
+    (
+        "check the JSON just before this position (a missing comma, quote, bracket or brace, or a trailing comma)",
+        "confira o JSON logo antes desta posição (falta uma vírgula, aspa, colchete ou chave, ou sobra uma vírgula no fim)",
+    ),
+    (
+        "give the field once: remove one of the two (the parser does not pick one)",
+        "dê o campo uma vez só: remova um dos dois (a leitura não escolhe um)",
+    ),
+    ("duplicate field ", "campo repetido "),
+    ("duplicate material ", "material repetido "),
+    (
+        "give each material its own name, or remove one of the two",
+        "dê a cada material seu próprio nome, ou remova um dos dois",
+    ),
+    ("the ray's origin", "a origem do raio"),
+    ("the coefficient k of k·O", "o coeficiente k de k·O"),
+    ("the kind: ", "o tipo: "),
+    (" (lights); ", " (fontes de luz); "),
+    (" (surfaces)", " (superfícies)"),
+    ("the camera", "a câmera"),
+    // After the fixes that hold them.
+    ("trailing comma", "vírgula sobrando no fim"),
+    // OBJ files (problem/mesh.rs).
+    (": line ", ": linha "),
+    ("cannot be read: ", "não pode ser lido: "),
+    (
+        "check the path; it is relative to the scene file's folder",
+        "confira o caminho; ele é relativo à pasta do arquivo da cena",
+    ),
+    ("is not a valid Wavefront OBJ file: ", "não é um arquivo Wavefront OBJ válido: "),
+    (
+        "give an OBJ file with `v x y z` vertices and `f i j k` faces",
+        "dê um arquivo OBJ com vértices `v x y z` e faces `f i j k`",
+    ),
+    (
+        "give an OBJ file with at least one face (`f i j k`)",
+        "dê um arquivo OBJ com pelo menos uma face (`f i j k`)",
+    ),
+    ("has no faces", "não tem faces"),
+    ("the vertex ", "o vértice "),
+    (" is not `v x y z` (three numbers)", " não é `v x y z` (três números)"),
+    ("write each vertex as `v x y z`", "escreva cada vértice como `v x y z`"),
+    ("give finite coordinates (or use --precision f64)", "dê coordenadas finitas (ou use --precision f64)"),
+    (" is a line element, which has no surface to hit", " é um elemento de linha, que não tem superfície a atingir"),
+    ("remove the `l` lines (faces are `f i j k`)", "remova as linhas `l` (as faces são `f i j k`)"),
+    ("a face refers to vertex ", "uma face se refere ao vértice "),
+    ("the face ", "a face "),
+    (" vertices, and a face needs at least 3", " vértices, e uma face precisa de pelo menos 3"),
+    (
+        "give each face three or more vertices (`f i j k`)",
+        "dê a cada face três ou mais vértices (`f i j k`)",
+    ),
+    (" refers to vertex ", " se refere ao vértice "),
+    (" vertices come before it", " vértices vêm antes dele"),
+    (
+        "correct the face's vertex indices (1 is the first vertex)",
+        "corrija os índices de vértices da face (1 é o primeiro vértice)",
+    ),
+    ("correct the face's vertex indices", "corrija os índices de vértices da face"),
+    ("the mesh has more than ", "a malha tem mais de "),
+    (" which does not exist", ", que não existe"),
+    (" is not finite in ", " não é finito em "),
+    (": the face's triangle ", ": o triângulo "),
+    (
+        " is degenerate in ",
+        " é degenerado em ",
+    ),
+    (": its corners lie on one line", ": seus vértices estão numa reta"),
+    ("remove the degenerate face from the OBJ file", "remova a face degenerada do arquivo OBJ"),
+    (" (model ", " (modelo "),
+    // Answers (check/answer.rs).
+    ("the answer is empty: ", "a resposta está vazia: "),
+    (
+        "write three numbers such as \"0.52 0.03 0\", \"(0.52, 0.03, 0)\" or \"[0.52; 0.03; 0]\", ",
+        "escreva três números como \"0.52 0.03 0\", \"(0.52, 0.03, 0)\" ou \"[0.52; 0.03; 0]\", ",
+    ),
+    (" is not three numbers", " não são três números"),
+    (" (it has a Unicode minus", " (tem um sinal de menos Unicode"),
+    (
+        "has a Unicode minus or dash (−, –): write the minus as the ASCII hyphen-minus -",
+        "tem um sinal de menos ou travessão Unicode (−, –): escreva o menos como o hífen ASCII -",
+    ),
+    (" or dash (−, –): write the minus as the ASCII hyphen-minus -", " ou travessão (−, –): escreva o menos como o hífen ASCII -"),
+    (
+        "has full-width digits (０-９): write the digits 0-9 and the point . in ASCII",
+        "tem dígitos de largura dupla (０-９): escreva os dígitos 0-9 e o ponto . em ASCII",
+    ),
+    (
+        "is out of range: beyond ±1.8e308, the largest number f64 holds",
+        "está fora do alcance: além de ±1.8e308, o maior número de f64",
+    ),
+    (" (it ", " ("),
+    (" is not a number", " não é um número"),
+    (
+        " is not three integers 0–255, as --scale 255 expects: give 8-bit values, or leave out --scale for components on [0, 1]",
+        " não são três inteiros 0–255, como --scale 255 espera: dê valores de 8 bits, ou tire --scale para componentes em [0, 1]",
+    ),
+    (
+        " is not a scale: use 1 (components on [0, 1]) or 255 (8-bit)",
+        " não é uma escala: use 1 (componentes em [0, 1]) ou 255 (8 bits)",
+    ),
+    (" is not a colour: write \"#RRGGBB\" or [r, g, b], ", " não é uma cor: escreva \"#RRGGBB\" ou [r, g, b], "),
+    (
+        "a \"#RRGGBB\" colour has 8 bits per channel: remove \"scale\" or set it to 255",
+        "uma cor \"#RRGGBB\" tem 8 bits por canal: remova \"scale\" ou ponha 255",
+    ),
+    (
+        " is not a colour \"#RRGGBB\": six hexadecimal digits after #",
+        " não é uma cor \"#RRGGBB\": seis dígitos hexadecimais depois de #",
+    ),
+    (
+        " is not a tolerance: give the largest difference accepted per channel, a number ≥ 0 (e.g. 0.005 on the 0–1 scale, 1 on the 255 scale)",
+        " não é uma tolerância: dê a maior diferença aceita por canal, um número ≥ 0 (por exemplo 0.005 na escala 0–1, 1 na escala 255)",
+    ),
+    ("\" in \"", "\" em \""),
+    // Steps (check/steps.rs).
+    // The steps' formulas that hold words (step_formula), in an error.
+    ("O + tD on the surface", "O + tD sobre a superfície"),
+    ("N, of unit length", "N, de comprimento 1"),
+    ("I_a = Σ ambient lights", "I_a = Σ das luzes ambientes"),
+    ("write {\"cos_theta\"", "escreva {\"cos_theta\""),
+    (
+        " is not a light's index: write the index of the light in the file's \"lights\", from 0, such as cos_theta[1]",
+        " não é o índice de uma fonte de luz: escreva o índice da fonte de luz em \"lights\" do arquivo, a partir de 0, como cos_theta[1]",
+    ),
+    (" is not the name of a step", " não é o nome de um passo"),
+    (
+        " (a light's own with [i], such as cos_theta[1])",
+        " (o de uma fonte de luz com [i], como cos_theta[1])",
+    ),
+    (" is not a quantity of one light", " não é uma grandeza de uma só fonte de luz"),
+    ("leave out the [i]", "tire o [i]"),
+    (" is not a value for ", " não é um valor para "),
+    (": write three numbers, such as ", ": escreva três números, como "),
+    (": write one number, such as ", ": escreva um número, como "),
+    (" is a vector, and ", " é um vetor, e "),
+    (" is a number, and ", " é um número, e "),
+    (" is three numbers", " são três números"),
+    (" is one number", " é um número"),
+    ("give three numbers, such as ", "dê três números, como "),
+    ("give one number", "dê um número"),
+    (" is not NAME=VALUE", " não é NOME=VALOR"),
+    (
+        "write the step's name, =, and its value, such as ",
+        "escreva o nome do passo, =, e seu valor, como ",
+    ),
+    ("not JSON: ", "não é JSON: "),
+    ("write one object of names and values, such as ", "escreva um objeto de nomes e valores, como "),
+    ("the file is not one JSON object", "o arquivo não é um objeto JSON"),
+    ("the file has no steps", "o arquivo não tem passos"),
+    (
+        " is not a value. Correção: give a number, [x, y, z], or a string such as ",
+        " não é um valor. Correção: dê um número, [x, y, z], ou um texto como ",
+    ),
+    (
+        ": the problem has no light other than ambient light, so no ",
+        ": o problema não tem fonte de luz além da luz ambiente, e portanto não tem ",
+    ),
+    (" is an ambient light, which has no ", " é uma luz ambiente, que não tem "),
+    (
+        "give the index of a point, directional or spot light",
+        "dê o índice de uma luz pontual, direcional ou spot",
+    ),
+    (": there is no ", ": não há "),
+    ("]: the file has ", "]: o arquivo tem "),
+    (" lights, from ", " fontes de luz, a partir de "),
+    (" light, from ", " fonte de luz, a partir de "),
+    (": this problem has no ", ": este problema não tem "),
+    ("check a step it has: ", "confira um passo que ele tem: "),
+    // The check command's steps (cli/commands/check.rs).
+    (
+        "write NAME=VALUE, such as --step cos_theta=0.98995 or --step R=0.6,0,0.8",
+        "escreva NOME=VALOR, como --step cos_theta=0.98995 ou --step R=0.6,0,0.8",
+    ),
+    (
+        "check the path, and that the file exists and is UTF-8 text",
+        "confira o caminho, e que o arquivo existe e é texto UTF-8",
+    ),
+    ("one JSON object of names and values, such as ", "um objeto JSON de nomes e valores, como "),
+    ("check one file's steps at a time", "confira os passos de um arquivo por vez"),
+    (" at line ", " na linha "),
+    (" column ", " coluna "),
+    // Output files (cli/output.rs, cli/commands).
+    (" at path ", " no caminho "),
+    (
+        "it is a folder. Correção: give a file name in it (e.g. -o DIR/report.csv), or - for standard output",
+        "é uma pasta. Correção: dê um nome de arquivo nela (por exemplo -o DIR/report.csv), ou - para a saída padrão",
+    ),
+    ("too many levels of symbolic links (a loop?)", "níveis demais de links simbólicos (um ciclo?)"),
+    (": writing it would replace what is being read", ": escrever nele substituiria o que está sendo lido"),
+    (" is the input ", " é a entrada "),
+    (" are the same file, ", " são o mesmo arquivo, "),
+    (": one would replace the other", ": um substituiria o outro"),
+    (" another file", " outro arquivo"),
+    ("0 threads cannot render", "0 threads não renderizam"),
+    (
+        "give --threads 1 or more (or leave it out: one per core)",
+        "dê --threads 1 ou mais (ou omita: uma por núcleo)",
+    ),
+    // The commands' own conflicts (cli/commands).
+    ("--answer checks one file, and ", "--answer confere um arquivo, e "),
+    ("--step and --steps check one file, and ", "--step e --steps conferem um arquivo, e "),
+    (" were given", " foram dados"),
+    (
+        "check one file at a time, or put each file's answer in its \"answer\" field and leave out --answer",
+        "confira um arquivo por vez, ou ponha a resposta de cada arquivo no seu campo \"answer\" e tire --answer",
+    ),
+    (" does not end in .png or .ppm", " não termina em .png ou .ppm"),
+    (
+        "name the image *.png or *.ppm, or give --image-format png|ppm",
+        "dê à imagem um nome *.png ou *.ppm, ou dê --image-format png|ppm",
+    ),
+    // The command line (cli/error.rs).
+    (": not a folder", ": não é uma pasta"),
+    (": cannot create the folder: ", ": não é possível criar a pasta: "),
+    ("cannot start the worker threads: ", "não é possível iniciar as threads de trabalho: "),
+    ("give fewer --threads", "dê menos --threads"),
+    ("report this as a bug; ", "relate isto como um defeito; "),
     // Files.
     ("cannot read the file: ", "não é possível ler o arquivo: "),
     ("No such file or directory (os error 2)", "arquivo ou pasta inexistente (erro 2 do sistema)"),
@@ -747,7 +1332,6 @@ const ERRORS_PT: &[(&str, &str)] = &[
         "f in I_l = C_l/d^f (Eq. 4.2, 4.3): 0 none, 1 linear, 2 quadratic",
         "f em I_l = C_l/d^f (Eq. 4.2, 4.3): 0 sem decaimento, 1 linear, 2 quadrático",
     ),
-    ("the cone's axis D_l (Eq. 4.4)", "o eixo D_l do cone (Eq. 4.4)"),
     ("the cone's half-angle γ in degrees (Eq. 4.4)", "o ângulo γ do cone, em graus (Eq. 4.4)"),
     (
         "the direction of travel (L for a directional light, D for a ray)",
@@ -785,7 +1369,7 @@ const ERRORS_PT: &[(&str, &str)] = &[
         "tire --part, --course, --title, --date e --author, ou escolha --format text, markdown, latex ou html",
     ),
     ("is outside the ", "está fora da imagem "),
-    (" image", ""),
+    (" image. Correção: ", ". Correção: "),
     ("give X from 0 to ", "dê X de 0 a "),
     (" and Y from 0 to ", " e Y de 0 a "),
     // Last, the small words left between the fragments above.
@@ -793,6 +1377,13 @@ const ERRORS_PT: &[(&str, &str)] = &[
     ("ou add ", "ou acrescente "),
     (" with ", " com "),
     (" and ", " e "),
+    ("such as ", "como "),
+    ("e.g. ", "por exemplo "),
+    ("give ", "dê "),
+    ("vertex ", "vértice "),
+    (" triangles", " triângulos"),
+    (" has ", " tem "),
+    ("remove ", "remova "),
 ];
 
 /// An error message in `lang`: as it is in English; in Portuguese, its common parts translated
@@ -802,12 +1393,74 @@ pub fn error_in(message: &str, lang: Lang) -> String {
         Lang::En => message.to_owned(),
         Lang::Pt => {
             let mut s = message.to_owned();
+            // The phrases that hold a limit, first (a const table cannot format them).
+            let limits = [
+                (
+                    format!("give at most {MAX_LIGHTS} lights"),
+                    format!("dê no máximo {MAX_LIGHTS} fontes de luz"),
+                ),
+                (
+                    format!(" triangles take the scene past {MAX_TRIANGLES} surfaces"),
+                    format!(" triângulos levam a cena além de {MAX_TRIANGLES} superfícies"),
+                ),
+            ];
+            for (en, pt) in &limits {
+                s = s.replace(en.as_str(), pt);
+            }
             for (en, pt) in ERRORS_PT {
                 s = s.replace(en, pt);
             }
-            s
+            without_portuguese_aside(&s)
         }
     }
+}
+
+/// A message without its " (Português: …)" asides: the fixes that say themselves in both
+/// languages (a word where a number belongs) need them only in English.
+fn without_portuguese_aside(message: &str) -> String {
+    const ASIDE: &str = " (Português: ";
+    let mut out = String::with_capacity(message.len());
+    let mut rest = message;
+    while let Some(start) = rest.find(ASIDE) {
+        out.push_str(&rest[..start]);
+        let mut depth = 1;
+        let after = &rest[start + ASIDE.len()..];
+        let end = after.char_indices().find_map(|(i, c)| {
+            match c {
+                '(' => depth += 1,
+                ')' => depth -= 1,
+                _ => {}
+            }
+            (depth == 0).then_some(i + 1)
+        });
+        match end {
+            Some(e) => rest = &after[e..],
+            // Unbalanced: keep it as it is.
+            None => {
+                out.push_str(&rest[start..]);
+                rest = "";
+            }
+        }
+    }
+    out.push_str(rest);
+    out
+}
+
+/// The formulas of `phong check --step` that hold words (check/steps.rs's `NAMES`), in
+/// `lang`; the others are symbols only and the same in both languages.
+pub fn step_formula(formula: &'static str, lang: Lang) -> &'static str {
+    match (formula, lang) {
+        (_, Lang::En) => formula,
+        ("O + tD on the surface", Lang::Pt) => "O + tD sobre a superfície",
+        ("N, of unit length", Lang::Pt) => "N, de comprimento 1",
+        ("I_a = Σ ambient lights", Lang::Pt) => "I_a = Σ das luzes ambientes",
+        (other, Lang::Pt) => other,
+    }
+}
+
+/// "warning" or "aviso", before a warning on standard error.
+pub fn warning_word(lang: Lang) -> &'static str {
+    pick(lang, "warning", "aviso")
 }
 
 /// "error" or "erro", before a message on standard error.
@@ -922,6 +1575,42 @@ mod tests {
                 "{p:?}: trailing space differs"
             );
         }
+    }
+
+    #[test]
+    fn no_error_fragment_is_hidden_by_an_earlier_one() {
+        // The fragments are replaced in order: one that holds an earlier one's English would
+        // never match, its words replaced already.
+        for (j, (later, _)) in ERRORS_PT.iter().enumerate() {
+            for (earlier, _) in &ERRORS_PT[..j] {
+                assert!(
+                    !later.contains(earlier),
+                    "{later:?} holds the earlier {earlier:?}: list it first"
+                );
+            }
+        }
+    }
+
+    #[test]
+    fn an_error_in_portuguese_keeps_its_numbers_and_fields() {
+        let en = "x.json: lights[1].falloff: 3 is not a falloff exponent. Fix: use 0 (no \
+                  falloff), 1 (linear) or 2 (quadratic), Eq. 4.3";
+        assert_eq!(
+            error_in(en, Lang::Pt),
+            "x.json: lights[1].falloff: 3 não é um expoente de decaimento. Correção: use 0 (sem \
+             decaimento), 1 (linear) ou 2 (quadrático), Eq. 4.3"
+        );
+        assert_eq!(error_in(en, Lang::En), en);
+        assert_eq!(
+            error_in(
+                "the falloff is the exponent f of d^f, a number: write 1 for \"linear\" (0 none, \
+                 1 linear, 2 quadratic) (Português: o decaimento é o expoente f de d^f (Eq. \
+                 4.3): escreva 1)",
+                Lang::Pt
+            ),
+            "o decaimento é o expoente f de d^f, um número: escreva 1 para \"linear\" (0 sem \
+             decaimento, 1 linear, 2 quadrático)"
+        );
     }
 
     #[test]

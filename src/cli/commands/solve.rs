@@ -48,12 +48,12 @@ pub(crate) fn run(args: &SolveArgs) -> Result<Exit, CliError> {
         let result = match args.format {
             Format::Json => {
                 solve_json_warned(path, args.precision, args.lang).map(|(v, warnings)| {
-                    warnings.iter().for_each(|w| error::warn(w));
+                    warnings.iter().for_each(|w| error::warn_in(w, args.lang));
                     docs.push(v);
                 })
             }
             _ => explain_file(path, args.precision, args.lang).map(|x| {
-                x.warnings.iter().for_each(|w| error::warn(w));
+                x.warnings.iter().for_each(|w| error::warn_in(w, args.lang));
                 explanations.push(x);
             }),
         };
