@@ -14,6 +14,7 @@ pub mod html;
 pub mod json;
 pub mod lang;
 pub mod latex;
+pub mod layout;
 pub mod markdown;
 pub(crate) mod messages;
 pub(crate) mod number;

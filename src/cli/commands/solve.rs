@@ -13,6 +13,7 @@ use crate::report;
 use crate::report::document::{Contents, Document, Header};
 use crate::report::explain::Explanation;
 use crate::report::file::{error_json, explain_file, solve_json_warned};
+use crate::report::layout::{self, Layout};
 
 pub(crate) fn run(args: &SolveArgs) -> Result<Exit, CliError> {
     let inputs: Vec<&std::path::Path> = args.files.iter().map(|p| p.as_path()).collect();
@@ -80,7 +81,7 @@ pub(crate) fn run(args: &SolveArgs) -> Result<Exit, CliError> {
                 path: Some(dir.to_owned()),
                 source,
             })?;
-            let ext = extension(args.format);
+            let ext = extension(args);
             for (i, path) in solved.iter().enumerate() {
                 let file = dir.join(format!("{}.{ext}", stem(path)));
                 let out = match args.format {
@@ -122,14 +123,28 @@ fn stem(path: &Path) -> String {
     )
 }
 
+/// The layout of a document format (JSON is not a document layout: the caller writes it).
+fn layout(args: &SolveArgs) -> Box<dyn Layout> {
+    match args.format {
+        Format::Text => Box::new(layout::Text {
+            color: output::use_color(args.color, args.output.is_some()),
+        }),
+        Format::Markdown => Box::new(layout::Markdown),
+        Format::Latex => Box::new(layout::Latex(report::latex::LatexOptions {
+            fragment: args.fragment,
+        })),
+        Format::Html => Box::new(layout::Html(report::html::HtmlOptions {
+            fragment: args.fragment,
+        })),
+        Format::Json => unreachable!("JSON is written by the caller"),
+    }
+}
+
 /// The extension of a format's files.
-fn extension(format: Format) -> &'static str {
-    match format {
-        Format::Text => "txt",
-        Format::Markdown => "md",
-        Format::Latex => "tex",
-        Format::Html => "html",
+fn extension(args: &SolveArgs) -> &'static str {
+    match args.format {
         Format::Json => "json",
+        _ => layout(args).extension(),
     }
 }
 
@@ -142,33 +157,5 @@ fn write(args: &SolveArgs, header: &Header, explanations: &[Explanation], first:
         first_number: first,
         lang: args.lang,
     };
-    let plain = args.part == Contents::Solution && header.is_empty();
-    match args.format {
-        Format::Text => {
-            let color = output::use_color(args.color, args.output.is_some());
-            if plain {
-                explanations
-                    .iter()
-                    .map(|x| report::text::write_explanation(x, color))
-                    .collect::<Vec<_>>()
-                    .join("\n")
-            } else {
-                report::text::write_document(&doc, color)
-            }
-        }
-        Format::Markdown => report::markdown::write_document(&doc),
-        Format::Latex => report::latex::write_document(
-            &doc,
-            report::latex::LatexOptions {
-                fragment: args.fragment,
-            },
-        ),
-        Format::Html => report::html::write_document(
-            &doc,
-            report::html::HtmlOptions {
-                fragment: args.fragment,
-            },
-        ),
-        Format::Json => unreachable!("JSON is written by the caller"),
-    }
+    layout(args).write(&doc)
 }
