@@ -1,7 +1,10 @@
 //! All the surfaces of a scene behind one question, "what does this ray hit first?", and its
 //! cheaper sibling, "does anything block this shadow ray?". Bounded shapes (spheres, triangles)
 //! sit in a BVH, so the cost grows about logarithmically with their number; planes, which no box
-//! bounds, are tested one by one.
+//! bounds, are tested one by one. The BVH is built binary (binned SAH, leaves of up to
+//! [`Wide::LANES`] shapes) and searched in its wide form ([`WideBvh`]: a node's children's
+//! boxes in lanes, leaves' spheres and triangles in lanes), which gives the binary search's
+//! answer to the bit.
 //!
 //! The tracer and the solver's ray problems both ask here, so a pixel and the equivalent ray
 //! problem meet the same surface at the same point.
@@ -9,7 +12,9 @@
 use super::bounds::Aabb;
 use super::bvh::Bvh;
 use super::hit::SurfaceHit;
+use super::wbvh::WideBvh;
 use super::{Ray, Shape};
+use crate::core::lanes::{Wide, W};
 use crate::core::Real;
 
 /// Up to this many bounded shapes are tested in a plain loop rather than through the BVH.
@@ -23,7 +28,13 @@ pub struct Aggregate<R: Real> {
     unbounded: Vec<u32>,
     /// Indices of the bounded shapes; the BVH's primitive `k` is `bounded[k]`.
     bounded: Vec<u32>,
+    /// The binary tree over `bounded` (kept for the tests, which check the wide search
+    /// against its own).
+    #[cfg(test)]
     bvh: Bvh<R>,
+    /// `bvh` collapsed into wide nodes with SoA leaves: what the searches use (empty for
+    /// [`FLAT`] or fewer bounded shapes, which are looped over).
+    wide: WideBvh<R>,
 }
 
 /// The nearest hit of a ray: which shape, and where.
@@ -55,8 +66,17 @@ impl<R: Real> Aggregate<R> {
                 }
             }
         }
+        // One shape per lane in a leaf: a leaf is one test in lanes.
+        let bvh = Bvh::build_with_leaves(&boxes, W::<R>::LANES);
+        let wide = if bounded.len() > FLAT {
+            WideBvh::new(&bvh, &bounded, &shapes)
+        } else {
+            WideBvh::new(&Bvh::build(&[]), &[], &shapes)
+        };
         Aggregate {
-            bvh: Bvh::build(&boxes),
+            #[cfg(test)]
+            bvh,
+            wide,
             shapes,
             unbounded,
             bounded,
@@ -86,11 +106,10 @@ impl<R: Real> Aggregate<R> {
                     best = Some((i as usize, t));
                 }
             }
-        } else if let Some(h) = self.bvh.nearest(ray, t_max, |k, t_max| {
-            // The BVH shrinks its t_max to each hit it accepts, so every accepted hit is nearer.
-            self.shapes[self.bounded[k as usize] as usize].hit_t(ray, t_max)
-        }) {
-            best = Some((self.bounded[h.prim as usize] as usize, h.t));
+        } else if let Some((i, t)) = self.wide.nearest(&self.shapes, ray, t_max) {
+            // The search shrinks its t_max to each hit it accepts, so every accepted hit is
+            // nearer.
+            best = Some((i as usize, t));
         }
         // Only the nearest hit gets its point, error bound and normal.
         let (index, t) = best?;
@@ -109,10 +128,47 @@ impl<R: Real> Aggregate<R> {
         if self.bounded.len() <= FLAT {
             return self.bounded.iter().any(blocks);
         }
-        self.bvh.any(ray, t_max, |k, t_max| {
-            self.shapes[self.bounded[k as usize] as usize]
-                .hit_t(ray, t_max)
-                .is_some()
-        })
+        self.wide.occluded(&self.shapes, ray, t_max)
+    }
+
+    /// The nearest hit with 0 < t < ∞ of each ray of a packet (`out[k]` for `rays[k]`):
+    /// [`Aggregate::nearest`] of each, for the wide tracer's queues of rays.
+    pub(crate) fn nearest_packet(&self, rays: &[Ray<R>], out: &mut [Option<AggregateHit<R>>]) {
+        let infinity = R::from_f64(f64::INFINITY);
+        for (ray, hit) in rays.iter().zip(out.iter_mut()) {
+            *hit = self.nearest(ray, infinity);
+        }
+    }
+
+    /// [`Aggregate::nearest`] through the binary tree's own search (the reference of the wide
+    /// one): the shape's index and t.
+    #[cfg(test)]
+    pub(crate) fn nearest_binary(&self, ray: &Ray<R>, t_max: R) -> Option<(usize, R)> {
+        let mut best: Option<(usize, R)> = None;
+        let mut t_max = t_max;
+        for &i in &self.unbounded {
+            if let Some(t) = self.shapes[i as usize].hit_t(ray, t_max) {
+                t_max = t;
+                best = Some((i as usize, t));
+            }
+        }
+        if let Some(h) = self.bvh.nearest(ray, t_max, |k, t_max| {
+            self.shapes[self.bounded[k as usize] as usize].hit_t(ray, t_max)
+        }) {
+            best = Some((self.bounded[h.prim as usize] as usize, h.t));
+        }
+        best
+    }
+
+    /// [`Aggregate::occluded`] through the binary tree's own search.
+    #[cfg(test)]
+    pub(crate) fn occluded_binary(&self, ray: &Ray<R>, t_max: R) -> bool {
+        let blocks = |i: &u32| self.shapes[*i as usize].hit_t(ray, t_max).is_some();
+        self.unbounded.iter().any(blocks)
+            || self.bvh.any(ray, t_max, |k, t_max| {
+                self.shapes[self.bounded[k as usize] as usize]
+                    .hit_t(ray, t_max)
+                    .is_some()
+            })
     }
 }

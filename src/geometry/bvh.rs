@@ -34,7 +34,8 @@ pub(crate) struct BvhNode<R: Real> {
     pub bounds: Aabb<R>,
     /// A leaf's first entry in [`Bvh::prims`]; an interior node's second child.
     pub offset: u32,
-    /// The number of primitives of a leaf (1 to [`MAX_LEAF`]); 0 for an interior node.
+    /// The number of primitives of a leaf (1 to [`MAX_LEAF`], or the count the tree was built
+    /// with); 0 for an interior node.
     pub count: u16,
     /// An interior node's split axis (0 = x, 1 = y, 2 = z): its first child holds the
     /// primitives with the smaller centroids along it.
@@ -244,6 +245,8 @@ fn median<R: Real>(items: &mut [Item<R>], axis: usize) -> usize {
 /// The recursive build, writing nodes in depth-first order.
 struct Builder<R: Real> {
     nodes: Vec<BvhNode<R>>,
+    /// Nodes with this many primitives or fewer become leaves.
+    max_leaf: usize,
 }
 
 impl<R: Real> Builder<R> {
@@ -254,7 +257,7 @@ impl<R: Real> Builder<R> {
         let bounds = extent.bounds;
 
         // A leaf when the items fit in one
-        if n <= MAX_LEAF {
+        if n <= self.max_leaf {
             self.nodes.push(BvhNode {
                 bounds,
                 offset: first as u32,
@@ -304,6 +307,16 @@ impl<R: Real> Bvh<R> {
     /// # Panics
     /// With 2³² primitives or more (their indices are u32).
     pub fn build(bounds: &[Aabb<R>]) -> Self {
+        Self::build_with_leaves(bounds, MAX_LEAF)
+    }
+
+    /// [`Bvh::build`] with leaves of up to `max_leaf` primitives (1 to 255) instead of
+    /// [`MAX_LEAF`]: the wide BVH ([`super::wbvh`]) asks for one primitive per lane.
+    pub(crate) fn build_with_leaves(bounds: &[Aabb<R>], max_leaf: usize) -> Self {
+        assert!(
+            (1..=255).contains(&max_leaf),
+            "leaves of 1 to 255 primitives"
+        );
         let n = bounds.len();
         assert!(
             u32::try_from(n).is_ok(),
@@ -321,6 +334,7 @@ impl<R: Real> Bvh<R> {
         // At most 2n − 1 nodes; pages never written are never resident.
         let mut builder = Builder {
             nodes: Vec::with_capacity((2 * n).saturating_sub(1)),
+            max_leaf,
         };
         if n > 0 {
             let root = Bin::of(&items);
@@ -333,13 +347,11 @@ impl<R: Real> Bvh<R> {
     }
 
     /// The nodes in depth-first order (the root first); empty for no primitives.
-    #[cfg(test)]
     pub(crate) fn nodes(&self) -> &[BvhNode<R>] {
         &self.nodes
     }
 
     /// The primitive indices in leaf order.
-    #[cfg(test)]
     pub(crate) fn prims(&self) -> &[u32] {
         &self.prims
     }
@@ -441,7 +453,7 @@ impl<R: Real> Bvh<R> {
 
     /// Whether `test(prim, t_max)` holds for some primitive whose box the ray meets before
     /// `t_max` (shadow rays); stops at the first.
-    #[inline]
+    #[cfg(test)]
     pub(crate) fn any(&self, ray: &Ray<R>, t_max: R, mut test: impl FnMut(u32, R) -> bool) -> bool {
         let mut found = false;
         self.traverse(ray, t_max, |prim, t_max| {

@@ -17,6 +17,7 @@ pub(crate) mod shadow;
 pub(crate) mod soa;
 pub(crate) mod sphere;
 pub(crate) mod triangle;
+pub(crate) mod wbvh;
 
 pub use aggregate::{Aggregate, AggregateHit};
 pub use bounds::Aabb;

@@ -50,7 +50,13 @@ fn safe_square<L: Wide>(x: L) -> L {
 /// lanes): the mask of lanes with a hit at 0 < t < `t_max`, that t, and the mask of lanes the
 /// fast formula cannot decide (left to the scalar code).
 #[inline(always)]
-fn sphere_hit_t<L: Wide>(o: W3<L>, d: W3<L>, center: W3<L>, r2: L, t_max: L) -> (L, L, L) {
+pub(crate) fn sphere_hit_t<L: Wide>(
+    o: W3<L>,
+    d: W3<L>,
+    center: W3<L>,
+    r2: L,
+    t_max: L,
+) -> (L, L, L) {
     let zero = L::splat(<L::Scalar as Real>::ZERO);
     let f = o - center;
     let b = d.dot(f);
@@ -112,7 +118,7 @@ fn plane_hit_t<L: Wide>(o: W3<L>, d: W3<L>, plane: &Plane<L::Scalar>, t_max: L) 
 
 /// The set lanes of a mask, lowest first.
 #[inline(always)]
-fn lanes_of(mut bits: u32) -> impl Iterator<Item = usize> {
+pub(crate) fn lanes_of(mut bits: u32) -> impl Iterator<Item = usize> {
     std::iter::from_fn(move || {
         (bits != 0).then(|| {
             let k = bits.trailing_zeros() as usize;

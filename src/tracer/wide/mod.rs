@@ -115,7 +115,6 @@ pub(crate) fn row<R: Real, T: Copy>(
         hits: vec![None; lanes],
         rays: Vec::with_capacity(lanes),
     };
-    let infinity = R::from_f64(f64::INFINITY);
     let aggregate = &tracer.scene.aggregate;
     let mut sum = [0.0f64; 3];
     for start in (0..total).step_by(BLOCK) {
@@ -144,9 +143,9 @@ pub(crate) fn row<R: Real, T: Copy>(
                         flat.nearest(aggregate, &b.rays, &mut b.hits);
                     }
                     None => {
-                        for (k, e) in packet.iter().enumerate() {
-                            b.hits[k] = aggregate.nearest(&e.path.ray, infinity);
-                        }
+                        b.rays.clear();
+                        b.rays.extend(packet.iter().map(|e| e.path.ray));
+                        aggregate.nearest_packet(&b.rays, &mut b.hits);
                     }
                 }
                 for (k, e) in packet.iter().enumerate() {

@@ -105,3 +105,24 @@ fn packets_and_bvh_scenes_with_samples_render_the_same_bits_in_both_precisions()
     varied_scenes_in::<f32>();
     varied_scenes_in::<f64>();
 }
+
+/// Triangles (the torus mesh of scenes/mesh.json: SoA triangle leaves of the wide BVH) with
+/// several samples, small image, with and without shadows.
+fn mesh_scene_in<R: Real>() {
+    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/mesh.json");
+    let (mut problem, mut camera) = problem::load_scene::<R>(&path).expect("scenes/mesh.json");
+    camera.width = 53;
+    camera.height = 41;
+    for (samples, shadows) in [(3, true), (2, false)] {
+        problem.render.samples = samples;
+        problem.render.shadows = shadows;
+        let name = format!("mesh, {samples} samples, shadows {shadows}");
+        same_by_both_engines::<R>(&name, &problem, &camera);
+    }
+}
+
+#[test]
+fn the_mesh_scene_with_samples_renders_the_same_bits_in_both_precisions() {
+    mesh_scene_in::<f32>();
+    mesh_scene_in::<f64>();
+}

@@ -1,0 +1,970 @@
+//! The wide BVH: the binary SAH tree of [`Bvh`] collapsed so that each node holds up to
+//! [`Wide::LANES`] children (8 in f32, 4 in f64) whose boxes sit in lanes, tested against one
+//! ray by one slab test per node; its leaves hold up to [`Wide::LANES`] spheres or triangles in
+//! structure-of-arrays blocks, tested against the ray in lanes, with no dispatch on the kind.
+//! One ray at a time: the tracer's shadow rays (more than half of its rays) come one by one from
+//! the shading core, and reflection rays scatter, so a wide tree pays for every ray where a
+//! packet traversal would pay for coherent packets only (docs/benchmarks.md).
+//!
+//! **The binary tree's answer, to the bit.** The search visits the binary tree's leaves in the
+//! binary traversal's order with the same t_max at each, so the nearest (primitive, t), ties
+//! included, is [`Bvh::nearest`]'s:
+//! - a node's children are visited in the order the binary traversal would visit them (near
+//!   child first by the sign of D along each collapsed node's split axis), precomputed for
+//!   each of the 8 octants of D;
+//! - each child's slab test is [`Aabb::hit`]'s arithmetic in lanes, and the child's t₀ is kept
+//!   on the stack: when it is taken off, t₀ ≤ t_max (the current, perhaps lowered, t_max) is
+//!   exactly the binary test of that box at that moment (the far side was checked already and
+//!   does not depend on t_max). The collapsed binary nodes between a node and its children need
+//!   no test: their boxes contain the children's and were tested with a t_max no smaller, so a
+//!   child that passes implies they pass;
+//! - a leaf's primitives are taken in the binary leaf's order with the strict "nearer than the
+//!   best so far" rule; the lanes compute [`Shape::hit_t`]'s arithmetic at the t_max the leaf
+//!   was entered with, which is exact for the first hit a leaf accepts; a later lane is checked
+//!   against the lowered t_max (a sphere's t does not depend on t_max; a triangle is asked
+//!   again by the scalar code), and lanes the fast formulas cannot decide go to the scalar code,
+//!   as in [`super::soa`].
+//!
+//! Shadow rays ask [`WideBvh::occluded`]: whether some primitive in a leaf whose box the ray
+//! meets before t_max is hit. That set does not depend on the order of the visit, so it is
+//! [`Bvh::any`]'s answer too.
+
+use super::bounds::{inverse, Aabb};
+use super::bvh::Bvh;
+use super::soa::{lanes_of, sphere_hit_t};
+use super::{Ray, Shape};
+use crate::core::lanes::{Wide, W, W3};
+use crate::core::rounding::gamma;
+use crate::core::{Real, Vector, V3};
+
+/// The widest node: 8 children (f32 lanes).
+const MAX_WIDTH: usize = 8;
+/// Entries held on the traversal stack before it spills into a vector (a path holds at most
+/// LANES − 1 entries per level; the trees of real scenes are well within this).
+const STACK: usize = 64;
+
+/// A reference to a node or a leaf: the kind in the top two bits, the index below.
+type Ref = u32;
+const KIND: u32 = 30;
+const NODE: u32 = 0;
+const SPHERES: u32 = 1;
+const TRIANGLES: u32 = 2;
+const MIXED: u32 = 3;
+const INDEX: u32 = (1 << KIND) - 1;
+
+fn reference(kind: u32, index: usize) -> Ref {
+    let index = u32::try_from(index)
+        .ok()
+        .filter(|&i| i <= INDEX)
+        .expect("fewer than 2^30 nodes and leaves");
+    (kind << KIND) | index
+}
+
+/// A node: its children's boxes in lanes (empty lanes past `count`), their references, and the
+/// order in which the binary traversal would visit them for each octant of D.
+#[derive(Clone, Debug)]
+struct Node<R: Real> {
+    min: [W<R>; 3],
+    max: [W<R>; 3],
+    child: [Ref; MAX_WIDTH],
+    /// For octant o (bit a set where D's component a is negative, as 1/D's sign says), the
+    /// children in visiting order, 3 bits each, the first in the lowest bits.
+    order: [u32; 8],
+    /// The mask of the lanes that hold a child.
+    used: u32,
+    count: u8,
+}
+
+/// Up to [`Wide::LANES`] spheres of one binary leaf, in its order.
+#[derive(Clone, Debug)]
+struct SphereLeaf<R: Real> {
+    center: W3<W<R>>,
+    /// r², as the scalar code forms it.
+    r2: W<R>,
+    used: u32,
+    /// Each lane's shape index (in the aggregate's order).
+    shape: [u32; MAX_WIDTH],
+}
+
+/// Up to [`Wide::LANES`] triangles of one binary leaf, in its order: corner i, axis a.
+#[derive(Clone, Debug)]
+struct TriangleLeaf<R: Real> {
+    p: [[W<R>; 3]; 3],
+    /// The lanes that hold a triangle the scalar test can hit (not degenerate).
+    used: u32,
+    /// The lanes that hold a triangle (for the tests).
+    #[cfg_attr(not(test), allow(dead_code))]
+    held: u32,
+    shape: [u32; MAX_WIDTH],
+}
+
+/// A binary BVH collapsed into [`Wide::LANES`]-wide nodes with SoA leaves.
+#[derive(Clone, Debug)]
+pub(crate) struct WideBvh<R: Real> {
+    nodes: Vec<Node<R>>,
+    spheres: Vec<SphereLeaf<R>>,
+    triangles: Vec<TriangleLeaf<R>>,
+    /// Leaves that hold both kinds: ranges of `mixed_shapes`, tested by the scalar code.
+    mixed: Vec<(u32, u32)>,
+    mixed_shapes: Vec<u32>,
+    /// The root, and its box (tested when the root is a leaf).
+    root: Option<(Ref, Aabb<R>)>,
+}
+
+/// The ray in the triangle test's sheared frame ([`super::Triangle`]'s `ray_space`): the
+/// permutation putting D's largest component last, and the shear.
+#[derive(Clone, Copy)]
+struct Shear<R: Real> {
+    k: [usize; 3],
+    sx: R,
+    sy: R,
+    sz: R,
+}
+
+impl<R: Real> Shear<R> {
+    #[inline]
+    fn of(ray: &Ray<R>) -> Self {
+        let d = ray.direction.to_array();
+        let ad = [d[0].abs(), d[1].abs(), d[2].abs()];
+        let kz = if ad[0] > ad[1] {
+            if ad[0] > ad[2] {
+                0
+            } else {
+                2
+            }
+        } else if ad[1] > ad[2] {
+            1
+        } else {
+            2
+        };
+        let kx = (kz + 1) % 3;
+        let ky = (kx + 1) % 3;
+        Shear {
+            k: [kx, ky, kz],
+            sx: -d[kx] / d[kz],
+            sy: -d[ky] / d[kz],
+            sz: R::ONE / d[kz],
+        }
+    }
+}
+
+/// |x| per lane, +0 for ±0, as the scalar `abs` gives.
+#[inline(always)]
+fn abs<L: Wide>(x: L) -> L {
+    let zero = L::splat(<L::Scalar as Real>::ZERO);
+    x.gt(zero).select(x, zero - x)
+}
+
+/// max(a, b) per lane, the scalar `max` of numbers that are not NaN.
+#[inline(always)]
+fn max<L: Wide>(a: L, b: L) -> L {
+    a.lt(b).select(b, a)
+}
+
+/// a ≤ b per lane (false where either is NaN).
+#[inline(always)]
+fn le<L: Wide>(a: L, b: L) -> L {
+    a.lt(b).or(a.eq(b))
+}
+
+/// The ray as the traversal uses it: per-axis origin and 1/D in lanes, the octant, and the
+/// sphere and triangle tests' forms.
+struct Prepared<R: Real> {
+    o: [W<R>; 3],
+    inv: [W<R>; 3],
+    neg: [bool; 3],
+    octant: usize,
+    o3: W3<W<R>>,
+    d3: W3<W<R>>,
+    shear: Shear<R>,
+}
+
+impl<R: Real> Prepared<R> {
+    /// The ray's forms; the shear only when `triangles` (three divisions saved otherwise).
+    #[inline]
+    fn of(ray: &Ray<R>, triangles: bool) -> Self {
+        let inv = inverse::<R>(ray.direction).to_array();
+        let o = ray.origin.to_array();
+        let neg = inv.map(|x| x < R::ZERO);
+        Prepared {
+            o: o.map(W::<R>::splat),
+            inv: inv.map(W::<R>::splat),
+            neg,
+            octant: usize::from(neg[0]) | (usize::from(neg[1]) << 1) | (usize::from(neg[2]) << 2),
+            o3: W3::splat(ray.origin),
+            d3: W3::splat(ray.direction),
+            shear: if triangles {
+                Shear::of(ray)
+            } else {
+                Shear {
+                    k: [0, 1, 2],
+                    sx: R::ZERO,
+                    sy: R::ZERO,
+                    sz: R::ZERO,
+                }
+            },
+        }
+    }
+}
+
+/// [`Aabb::hit`] of each child box of a node: the mask of children met within [0, t_max] and
+/// each lane's t₀.
+#[inline(always)]
+fn slab<R: Real>(node: &Node<R>, r: &Prepared<R>, t_max: R) -> (u32, W<R>) {
+    let widen = W::<R>::splat(R::ONE + R::TWO * gamma::<R>(3));
+    let mut t0 = W::<R>::splat(R::ZERO);
+    let mut t1 = W::<R>::splat(t_max);
+    for a in 0..3 {
+        let (near, far) = if r.neg[a] {
+            (node.max[a], node.min[a])
+        } else {
+            (node.min[a], node.max[a])
+        };
+        let t_near = (near - r.o[a]) * r.inv[a];
+        let t_far = (far - r.o[a]) * r.inv[a] * widen;
+        // A NaN (0·∞) leaves the interval as it is, as the scalar comparisons do.
+        t0 = t_near.gt(t0).select(t_near, t0);
+        t1 = t_far.lt(t1).select(t_far, t1);
+    }
+    // t0 ≤ t1; neither can be NaN.
+    (t1.lt(t0).not().bits() & node.used, t0)
+}
+
+/// [`Shape::hit_t`] of each triangle of a leaf against one ray (the watertight test of
+/// [`super::Triangle::intersect`], operation for operation): the mask of hits with
+/// 0 < t < `t_max`, their t, and the lanes left to the scalar code (f32 edge functions of 0,
+/// which the scalar code recomputes in f64).
+#[inline(always)]
+fn triangle_hit_t<R: Real>(leaf: &TriangleLeaf<R>, r: &Prepared<R>, t_max: R) -> (u32, W<R>, u32) {
+    let zero = W::<R>::splat(R::ZERO);
+    let [kx, ky, kz] = r.shear.k;
+    let (sx, sy, sz) = (
+        W::<R>::splat(r.shear.sx),
+        W::<R>::splat(r.shear.sy),
+        W::<R>::splat(r.shear.sz),
+    );
+    // Translate to the origin, permute, shear
+    let q = leaf
+        .p
+        .map(|c| [c[0] - r.o[0], c[1] - r.o[1], c[2] - r.o[2]]);
+    let x = q.map(|c| c[kx] + sx * c[kz]);
+    let y = q.map(|c| c[ky] + sy * c[kz]);
+    let e = [
+        x[1] * y[2] - y[1] * x[2],
+        x[2] * y[0] - y[2] * x[0],
+        x[0] * y[1] - y[0] * x[1],
+    ];
+    let slow = if R::EPSILON.to_f64() > f64::EPSILON {
+        e[0].eq(zero).or(e[1].eq(zero)).or(e[2].eq(zero)).bits() & leaf.used
+    } else {
+        0
+    };
+    let any_neg = e[0].lt(zero).or(e[1].lt(zero)).or(e[2].lt(zero));
+    let any_pos = e[0].gt(zero).or(e[1].gt(zero)).or(e[2].gt(zero));
+    let det = e[0] + e[1] + e[2];
+    let z = q.map(|c| c[kz] * sz);
+    let t_scaled = e[0] * z[0] + e[1] * z[1] + e[2] * z[2];
+    // The scaled distance against the ray's range (NaN fails both branches)
+    let t_max_w = W::<R>::splat(t_max);
+    let limit = t_max_w * det;
+    let in_range = det.gt(zero).select(
+        t_scaled.gt(zero).and(le(t_scaled, limit)),
+        t_scaled.lt(zero).and(le(limit, t_scaled)),
+    );
+    let inv_det = W::<R>::splat(R::ONE) / det;
+    let t = t_scaled * inv_det;
+    // t conservatively greater than zero (§6.8.4), as the scalar code bounds it
+    let max_abs = |v: [W<R>; 3]| max(max(abs(v[0]), abs(v[1])), abs(v[2]));
+    let g = |n| W::<R>::splat(gamma::<R>(n));
+    let max_zt = max_abs(z);
+    let delta_z = g(3) * max_zt;
+    let (max_xt, max_yt) = (max_abs(x), max_abs(y));
+    let delta_x = g(5) * (max_xt + max_zt);
+    let delta_y = g(5) * (max_yt + max_zt);
+    let delta_e =
+        W::<R>::splat(R::TWO) * (g(2) * max_xt * max_yt + delta_y * max_xt + delta_x * max_yt);
+    let max_e = max_abs(e);
+    let delta_t = W::<R>::splat(R::from_f64(3.0))
+        * (g(3) * max_e * max_zt + delta_e * max_zt + delta_z * max_e)
+        * abs(inv_det);
+    let hit = any_neg
+        .and(any_pos)
+        .not()
+        .and(det.eq(zero).not())
+        .and(in_range)
+        .and(t.lt(t_max_w))
+        .and(t.gt(delta_t));
+    (hit.bits() & leaf.used & !slow, t, slow)
+}
+
+/// A node under construction: the binary nodes that become its children.
+struct Cut {
+    nodes: Vec<usize>,
+}
+
+impl<R: Real> WideBvh<R> {
+    /// The wide tree of `bvh`, whose primitive k is `shapes[shape_of[k]]` (a sphere or a
+    /// triangle). `bvh` should have leaves of at most [`Wide::LANES`] primitives
+    /// ([`Bvh::build_with_leaves`]); bigger leaves are tested by the scalar code.
+    pub(crate) fn new(bvh: &Bvh<R>, shape_of: &[u32], shapes: &[Shape<R>]) -> Self {
+        let mut w = WideBvh {
+            nodes: Vec::new(),
+            spheres: Vec::new(),
+            triangles: Vec::new(),
+            mixed: Vec::new(),
+            mixed_shapes: Vec::new(),
+            root: None,
+        };
+        if let Some(root) = bvh.nodes().first() {
+            let r = w.collapse(bvh, 0, shape_of, shapes);
+            w.root = Some((r, root.bounds));
+        }
+        w
+    }
+
+    /// The surface area of a binary node's box, in f64 (only compared).
+    fn area(bvh: &Bvh<R>, i: usize) -> f64 {
+        let b = &bvh.nodes()[i].bounds;
+        let (lo, hi) = (b.min.to_array(), b.max.to_array());
+        let d = [0, 1, 2].map(|a| hi[a].to_f64() - lo[a].to_f64());
+        d[0] * d[1] + d[1] * d[2] + d[2] * d[0]
+    }
+
+    /// The binary node `i` as a reference: a leaf as it is, an interior node collapsed with
+    /// its descendants into a wide node.
+    fn collapse(&mut self, bvh: &Bvh<R>, i: usize, shape_of: &[u32], shapes: &[Shape<R>]) -> Ref {
+        let lanes = W::<R>::LANES;
+        let node = bvh.nodes()[i];
+        if node.count > 0 {
+            let first = node.offset as usize;
+            let prims = &bvh.prims()[first..first + node.count as usize];
+            return self.leaf(prims.iter().map(|&p| shape_of[p as usize]), shapes);
+        }
+        // Open the interior node of largest area until the node is full (the first on a tie);
+        // the cut stays in depth-first order.
+        let mut cut = Cut {
+            nodes: vec![i + 1, node.offset as usize],
+        };
+        while cut.nodes.len() < lanes {
+            let mut best: Option<(usize, f64)> = None;
+            for (k, &n) in cut.nodes.iter().enumerate() {
+                if bvh.nodes()[n].count == 0 {
+                    let a = Self::area(bvh, n);
+                    if best.is_none_or(|(_, b)| a > b) {
+                        best = Some((k, a));
+                    }
+                }
+            }
+            let Some((k, _)) = best else { break };
+            let n = cut.nodes[k];
+            let second = bvh.nodes()[n].offset as usize;
+            cut.nodes.splice(k..=k, [n + 1, second]);
+        }
+        // The binary traversal's order of the cut, for each octant of D
+        let mut order = [0u32; 8];
+        for (octant, o) in order.iter_mut().enumerate() {
+            let mut seq = Vec::with_capacity(cut.nodes.len());
+            visit_order(bvh, i, &cut.nodes, octant, &mut seq);
+            *o = seq
+                .iter()
+                .enumerate()
+                .map(|(pos, &k)| (k as u32) << (3 * pos))
+                .sum();
+        }
+        let at = self.nodes.len();
+        let empty = Aabb::<R>::empty();
+        let mut min = [<W<R> as Wide>::Array::default(); 3];
+        let mut max = [<W<R> as Wide>::Array::default(); 3];
+        for k in 0..lanes {
+            let b = cut.nodes.get(k).map_or(empty, |&n| bvh.nodes()[n].bounds);
+            let (lo, hi) = (b.min.to_array(), b.max.to_array());
+            for a in 0..3 {
+                min[a].as_mut()[k] = lo[a];
+                max[a].as_mut()[k] = hi[a];
+            }
+        }
+        self.nodes.push(Node {
+            min: min.map(W::<R>::from_array),
+            max: max.map(W::<R>::from_array),
+            child: [0; MAX_WIDTH],
+            order,
+            used: (1u32 << cut.nodes.len()) - 1,
+            count: cut.nodes.len() as u8,
+        });
+        for (k, &n) in cut.nodes.iter().enumerate() {
+            let r = self.collapse(bvh, n, shape_of, shapes);
+            self.nodes[at].child[k] = r;
+        }
+        reference(NODE, at)
+    }
+
+    /// A leaf of the given shapes (in the binary leaf's order).
+    fn leaf(&mut self, ids: impl Iterator<Item = u32>, shapes: &[Shape<R>]) -> Ref {
+        let lanes = W::<R>::LANES;
+        let ids: Vec<u32> = ids.collect();
+        let all = |f: fn(&Shape<R>) -> bool| ids.iter().all(|&i| f(&shapes[i as usize]));
+        let mut shape = [0u32; MAX_WIDTH];
+        if ids.len() <= lanes && all(|s| matches!(s, Shape::Sphere(_))) {
+            let mut c = [<W<R> as Wide>::Array::default(); 3];
+            let mut r2 = <W<R> as Wide>::Array::default();
+            for (k, &i) in ids.iter().enumerate() {
+                let Shape::Sphere(s) = shapes[i as usize] else {
+                    unreachable!("all spheres")
+                };
+                let p = s.center.to_array();
+                for a in 0..3 {
+                    c[a].as_mut()[k] = p[a];
+                }
+                r2.as_mut()[k] = s.radius * s.radius;
+                shape[k] = i;
+            }
+            let [x, y, z] = c.map(W::<R>::from_array);
+            self.spheres.push(SphereLeaf {
+                center: W3 { x, y, z },
+                r2: W::<R>::from_array(r2),
+                used: (1u32 << ids.len()) - 1,
+                shape,
+            });
+            return reference(SPHERES, self.spheres.len() - 1);
+        }
+        if ids.len() <= lanes && all(|s| matches!(s, Shape::Triangle(_))) {
+            let mut p = [[<W<R> as Wide>::Array::default(); 3]; 3];
+            let mut used = 0;
+            for (k, &i) in ids.iter().enumerate() {
+                let Shape::Triangle(t) = shapes[i as usize] else {
+                    unreachable!("all triangles")
+                };
+                for (corner, v) in t.p.iter().enumerate() {
+                    let v = v.to_array();
+                    for a in 0..3 {
+                        p[corner][a].as_mut()[k] = v[a];
+                    }
+                }
+                // The scalar test's first step: a triangle with a zero cross product is never hit.
+                let [p0, p1, p2] = t.p;
+                if (p2 - p0).cross(p1 - p0) != V3::<R>::ZERO {
+                    used |= 1 << k;
+                }
+                shape[k] = i;
+            }
+            self.triangles.push(TriangleLeaf {
+                p: p.map(|c| c.map(W::<R>::from_array)),
+                used,
+                held: (1u32 << ids.len()) - 1,
+                shape,
+            });
+            return reference(TRIANGLES, self.triangles.len() - 1);
+        }
+        let first = self.mixed_shapes.len() as u32;
+        self.mixed_shapes.extend_from_slice(&ids);
+        self.mixed.push((first, ids.len() as u32));
+        reference(MIXED, self.mixed.len() - 1)
+    }
+
+    /// Visits the leaves the ray meets within [0, t_max] in the binary traversal's order until
+    /// `leaf` returns true; `leaf` may lower t_max, which prunes the rest.
+    #[inline(always)]
+    fn traverse(
+        &self,
+        r: &Prepared<R>,
+        ray: &Ray<R>,
+        t_max: R,
+        mut leaf: impl FnMut(Ref, &mut R) -> bool,
+    ) {
+        let Some((root, root_box)) = self.root else {
+            return;
+        };
+        let mut t_max = t_max;
+        if root >> KIND != NODE {
+            if root_box.hit(ray.origin, inverse::<R>(ray.direction), t_max) {
+                leaf(root, &mut t_max);
+            }
+            return;
+        }
+        let mut stack = Stack::<R>::new();
+        let mut cur = root;
+        loop {
+            if cur >> KIND == NODE {
+                let node = &self.nodes[(cur & INDEX) as usize];
+                let (hit, t0) = slab(node, r, t_max);
+                if hit != 0 {
+                    let t0 = t0.to_array();
+                    let order = node.order[r.octant];
+                    // Pushed last to first, so the first in the binary order comes off first
+                    for pos in (0..u32::from(node.count)).rev() {
+                        let k = ((order >> (3 * pos)) & 7) as usize;
+                        if hit & (1 << k) != 0 {
+                            stack.push(node.child[k], t0.as_ref()[k]);
+                        }
+                    }
+                }
+            } else if leaf(cur, &mut t_max) {
+                return;
+            }
+            // The next child whose box is still met before the (perhaps lowered) t_max
+            loop {
+                match stack.pop() {
+                    None => return,
+                    Some((next, t0)) if t0 <= t_max => {
+                        cur = next;
+                        break;
+                    }
+                    Some(_) => {}
+                }
+            }
+        }
+    }
+
+    /// The nearest hit with 0 < t < `t_max`, its shape index and t: [`Bvh::nearest`] over the
+    /// tree this one was collapsed from, with [`Shape::hit_t`] as the test, to the bit.
+    #[inline]
+    pub(crate) fn nearest(&self, shapes: &[Shape<R>], ray: &Ray<R>, t_max: R) -> Option<(u32, R)> {
+        let r = Prepared::of(ray, !self.triangles.is_empty());
+        let mut best = None;
+        self.traverse(&r, ray, t_max, |leaf, t_max| {
+            let index = (leaf & INDEX) as usize;
+            match leaf >> KIND {
+                SPHERES => {
+                    let l = &self.spheres[index];
+                    let (hit, t, slow) =
+                        sphere_hit_t(r.o3, r.d3, l.center, l.r2, W::<R>::splat(*t_max));
+                    let (hit, slow) = (hit.bits() & l.used, slow.bits() & l.used);
+                    if hit | slow != 0 {
+                        let t = t.to_array();
+                        for k in lanes_of(hit | slow) {
+                            let found = if slow & (1 << k) != 0 {
+                                shapes[l.shape[k] as usize].hit_t(ray, *t_max)
+                            } else {
+                                // A sphere's t does not depend on t_max: only whether it counts.
+                                Some(t.as_ref()[k]).filter(|&t| t < *t_max)
+                            };
+                            if let Some(t) = found {
+                                *t_max = t;
+                                best = Some((l.shape[k], t));
+                            }
+                        }
+                    }
+                }
+                TRIANGLES => {
+                    let l = &self.triangles[index];
+                    let (hit, t, slow) = triangle_hit_t(l, &r, *t_max);
+                    if hit | slow != 0 {
+                        let t = t.to_array();
+                        let mut lowered = false;
+                        for k in lanes_of(hit | slow) {
+                            let found = if lowered || slow & (1 << k) != 0 {
+                                shapes[l.shape[k] as usize].hit_t(ray, *t_max)
+                            } else {
+                                Some(t.as_ref()[k])
+                            };
+                            if let Some(t) = found {
+                                *t_max = t;
+                                lowered = true;
+                                best = Some((l.shape[k], t));
+                            }
+                        }
+                    }
+                }
+                _ => {
+                    let (first, count) = self.mixed[index];
+                    for &i in &self.mixed_shapes[first as usize..(first + count) as usize] {
+                        if let Some(t) = shapes[i as usize].hit_t(ray, *t_max) {
+                            *t_max = t;
+                            best = Some((i, t));
+                        }
+                    }
+                }
+            }
+            false
+        });
+        best
+    }
+
+    /// Whether some shape meets the ray with 0 < t < `t_max` (shadow rays), stopping at the
+    /// first: [`Bvh::any`]'s answer over the tree this one was collapsed from.
+    #[inline]
+    pub(crate) fn occluded(&self, shapes: &[Shape<R>], ray: &Ray<R>, t_max: R) -> bool {
+        let r = Prepared::of(ray, !self.triangles.is_empty());
+        let mut found = false;
+        self.traverse(&r, ray, t_max, |leaf, t_max| {
+            let t_max = *t_max;
+            let index = (leaf & INDEX) as usize;
+            let scalar = |i: u32| shapes[i as usize].hit_t(ray, t_max).is_some();
+            found = match leaf >> KIND {
+                SPHERES => {
+                    let l = &self.spheres[index];
+                    let (hit, _, slow) =
+                        sphere_hit_t(r.o3, r.d3, l.center, l.r2, W::<R>::splat(t_max));
+                    hit.bits() & l.used != 0
+                        || lanes_of(slow.bits() & l.used).any(|k| scalar(l.shape[k]))
+                }
+                TRIANGLES => {
+                    let l = &self.triangles[index];
+                    let (hit, _, slow) = triangle_hit_t(l, &r, t_max);
+                    hit != 0 || lanes_of(slow).any(|k| scalar(l.shape[k]))
+                }
+                _ => {
+                    let (first, count) = self.mixed[index];
+                    self.mixed_shapes[first as usize..(first + count) as usize]
+                        .iter()
+                        .any(|&i| scalar(i))
+                }
+            };
+            found
+        });
+        found
+    }
+}
+
+/// Appends to `seq` the positions in `cut` of the nodes under binary node `i`, in the order
+/// the binary traversal visits them for `octant`.
+fn visit_order<R: Real>(
+    bvh: &Bvh<R>,
+    i: usize,
+    cut: &[usize],
+    octant: usize,
+    seq: &mut Vec<usize>,
+) {
+    if let Some(k) = cut.iter().position(|&n| n == i) {
+        seq.push(k);
+        return;
+    }
+    let node = bvh.nodes()[i];
+    let (first, second) = (i + 1, node.offset as usize);
+    if octant >> node.axis & 1 == 1 {
+        visit_order(bvh, second, cut, octant, seq);
+        visit_order(bvh, first, cut, octant, seq);
+    } else {
+        visit_order(bvh, first, cut, octant, seq);
+        visit_order(bvh, second, cut, octant, seq);
+    }
+}
+
+/// The traversal stack: references with their box's t₀, [`STACK`] in place, more (never seen
+/// in practice) in a vector.
+struct Stack<R: Real> {
+    inline: [(Ref, R); STACK],
+    len: usize,
+    spill: Vec<(Ref, R)>,
+}
+
+impl<R: Real> Stack<R> {
+    #[inline(always)]
+    fn new() -> Self {
+        Stack {
+            inline: [(0, R::ZERO); STACK],
+            len: 0,
+            spill: Vec::new(),
+        }
+    }
+
+    #[inline(always)]
+    fn push(&mut self, r: Ref, t0: R) {
+        if self.len < STACK {
+            self.inline[self.len] = (r, t0);
+        } else {
+            self.spill.push((r, t0));
+        }
+        self.len += 1;
+    }
+
+    #[inline(always)]
+    fn pop(&mut self) -> Option<(Ref, R)> {
+        if self.len == 0 {
+            return None;
+        }
+        self.len -= 1;
+        if self.len < STACK {
+            Some(self.inline[self.len])
+        } else {
+            self.spill.pop()
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use proptest::prelude::*;
+    use proptest::test_runner::{Config, RngSeed, TestRunner};
+
+    use super::*;
+    use crate::core::real::v3;
+    use crate::geometry::aggregate::Aggregate;
+    use crate::geometry::bounds::test_rng::Rng;
+    use crate::geometry::{Plane, Sphere, Triangle};
+
+    /// What the soup is made of.
+    #[derive(Clone, Copy, Debug)]
+    enum Soup {
+        Spheres,
+        Triangles,
+        /// Both kinds scattered together (leaves of both kinds, tested by the scalar code).
+        Mixed,
+        /// Spheres and a triangle grid apart (leaves of one kind each), and a plane.
+        Apart,
+    }
+
+    fn sphere<R: Real>(rng: &mut Rng, scale: f64) -> Shape<R> {
+        Shape::Sphere(Sphere {
+            center: v3::<R>([0, 1, 2].map(|_| scale * rng.range(-10.0, 10.0))),
+            radius: R::from_f64(scale * rng.range(0.05, 1.5)),
+        })
+    }
+
+    fn triangle<R: Real>(rng: &mut Rng, scale: f64) -> Shape<R> {
+        let c = [0, 1, 2].map(|_| scale * rng.range(-10.0, 10.0));
+        let corner =
+            |rng: &mut Rng| v3::<R>([0, 1, 2].map(|a| c[a] + scale * rng.range(-2.0, 2.0)));
+        Shape::Triangle(Triangle::new(corner(rng), corner(rng), corner(rng)))
+    }
+
+    /// A grid of squares at y = 0, each two triangles sharing a diagonal: rays through the
+    /// shared edges and corners meet two or more triangles at the same t.
+    fn grid<R: Real>(n: usize, scale: f64) -> Vec<Shape<R>> {
+        let p = |i: usize, j: usize| v3::<R>([scale * i as f64, 0.0, scale * j as f64]);
+        let mut out = Vec::new();
+        for i in 0..n {
+            for j in 0..n {
+                out.push(Shape::Triangle(Triangle::new(
+                    p(i, j),
+                    p(i + 1, j),
+                    p(i + 1, j + 1),
+                )));
+                out.push(Shape::Triangle(Triangle::new(
+                    p(i, j),
+                    p(i + 1, j + 1),
+                    p(i, j + 1),
+                )));
+            }
+        }
+        out
+    }
+
+    fn soup<R: Real>(rng: &mut Rng, kind: Soup, n: usize, scale: f64) -> Vec<Shape<R>> {
+        let mut shapes: Vec<Shape<R>> = match kind {
+            Soup::Spheres => (0..n).map(|_| sphere(rng, scale)).collect(),
+            Soup::Triangles => (0..n).map(|_| triangle(rng, scale)).collect(),
+            Soup::Mixed => (0..n)
+                .map(|i| {
+                    if i % 2 == 0 {
+                        sphere(rng, scale)
+                    } else {
+                        triangle(rng, scale)
+                    }
+                })
+                .collect(),
+            Soup::Apart => {
+                let mut s: Vec<Shape<R>> = (0..n / 2).map(|_| sphere(rng, scale)).collect();
+                s.extend(grid((n / 4).max(3).isqrt() + 1, scale));
+                s.push(Shape::Plane(Plane {
+                    point: v3::<R>([0.0, -12.0 * scale, 0.0]),
+                    normal: v3::<R>([0.0, 1.0, 0.0]),
+                }));
+                s
+            }
+        };
+        // Exact duplicates, and a degenerate triangle: ties broken by the order of the visit.
+        for k in 0..shapes.len() / 10 {
+            shapes.push(shapes[k * 7 % shapes.len()]);
+        }
+        shapes.push(Shape::Triangle(Triangle::new(
+            v3::<R>([0.0, 0.0, 0.0]),
+            v3::<R>([scale, scale, 0.0]),
+            v3::<R>([2.0 * scale, 2.0 * scale, 0.0]),
+        )));
+        shapes
+    }
+
+    /// A ray of one of several awkward kinds.
+    fn ray<R: Real>(rng: &mut Rng, shapes: &[Shape<R>], scale: f64) -> Ray<R> {
+        let mut d = rng.direction();
+        let mut o = [0, 1, 2].map(|_| scale * rng.range(-14.0, 14.0));
+        match rng.next_u64() % 6 {
+            // Zero (and negative zero) components of D.
+            0 => {
+                let a = (rng.next_u64() % 3) as usize;
+                d[a] = if rng.unit() < 0.5 { 0.0 } else { -0.0 };
+                let l = (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt();
+                d = d.map(|x| x / l);
+            }
+            1 => {
+                let a = (rng.next_u64() % 3) as usize;
+                d = [0.0, 0.0, 0.0];
+                d[a] = if rng.unit() < 0.5 { 1.0 } else { -1.0 };
+                let b = (a + 1) % 3;
+                d[b] = -0.0;
+            }
+            // From inside a shape's box (its centre, a corner).
+            2 | 3 => {
+                let s = &shapes[(rng.next_u64() % shapes.len() as u64) as usize];
+                let c = match s {
+                    Shape::Sphere(s) => s.center,
+                    Shape::Triangle(t) => t.p[(rng.next_u64() % 3) as usize],
+                    Shape::Plane(p) => p.point,
+                };
+                o = c.to_array().map(|x| x.to_f64());
+            }
+            // Straight down onto the grid's edges and corners (y = 0, integer multiples).
+            4 => {
+                let step = |rng: &mut Rng| scale * ((rng.next_u64() % 8) as f64 * 0.5);
+                o = [step(rng), 5.0 * scale, step(rng)];
+                // ±0 across: the binary order of the grid's leaves depends on those signs.
+                let zero = |rng: &mut Rng| if rng.unit() < 0.5 { 0.0 } else { -0.0 };
+                d = [zero(rng), -1.0, zero(rng)];
+            }
+            _ => {}
+        }
+        Ray {
+            origin: v3::<R>(o),
+            direction: v3::<R>(d),
+        }
+    }
+
+    /// The wide search's nearest (shape, t) and occlusion against the binary search's, bit for
+    /// bit, over one soup.
+    fn agrees<R: Real>(seed: u64, kind: Soup, n: usize, scale: f64, rays: usize) {
+        let mut rng = Rng::new(seed);
+        let shapes = soup::<R>(&mut rng, kind, n, scale);
+        let agg = Aggregate::new(shapes.clone());
+        for k in 0..rays {
+            let ray = ray::<R>(&mut rng, &shapes, scale);
+            let t_max = match k % 3 {
+                0 => R::from_f64(f64::INFINITY),
+                1 => R::from_f64(scale * rng.range(0.0, 20.0)),
+                _ => R::from_f64(scale * rng.range(0.0, 1.0)),
+            };
+            let want = agg.nearest_binary(&ray, t_max);
+            let got = agg.nearest(&ray, t_max).map(|h| (h.index, h.hit.t));
+            let want_hit = want.and_then(|(i, t)| shapes[i].hit_at(&ray, t).map(|h| (i, h.t)));
+            let bits = |h: Option<(usize, R)>| h.map(|(i, t)| (i, t.to_f64().to_bits()));
+            assert_eq!(
+                bits(got),
+                bits(want_hit),
+                "{kind:?} n = {n} scale {scale} {} {ray:?} t_max {t_max}",
+                R::NAME
+            );
+            assert_eq!(
+                agg.occluded(&ray, t_max),
+                agg.occluded_binary(&ray, t_max),
+                "{kind:?} n = {n} {} {ray:?} t_max {t_max}",
+                R::NAME
+            );
+            // Nothing is missed: the brute-force nearest t, where the binary tree finds one.
+            if let Some((_, t)) = want {
+                let brute = shapes
+                    .iter()
+                    .filter_map(|s| s.hit_t(&ray, t_max))
+                    .fold(t_max, |a, b| if b < a { b } else { a });
+                assert_eq!(t, brute, "{kind:?} n = {n} {ray:?}");
+            }
+        }
+    }
+
+    #[test]
+    fn the_wide_search_is_the_binary_search_on_fixed_soups() {
+        for (i, kind) in [Soup::Spheres, Soup::Triangles, Soup::Mixed, Soup::Apart]
+            .into_iter()
+            .enumerate()
+        {
+            for n in [9, 40, 300, 2000] {
+                for scale in [1.0, 1e-3, 1e4] {
+                    agrees::<f32>(i as u64 * 100 + n as u64, kind, n, scale, 300);
+                    agrees::<f64>(i as u64 * 100 + n as u64 + 1, kind, n, scale, 300);
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn the_wide_search_is_the_binary_search_on_random_soups() {
+        let kinds = prop_oneof![
+            Just(Soup::Spheres),
+            Just(Soup::Triangles),
+            Just(Soup::Mixed),
+            Just(Soup::Apart)
+        ];
+        let scales = prop_oneof![Just(1.0), Just(1e-2), Just(1e5)];
+        TestRunner::new(Config {
+            cases: 48,
+            rng_seed: RngSeed::Fixed(17),
+            failure_persistence: None,
+            ..Config::default()
+        })
+        .run(
+            &(any::<u64>(), kinds, 9usize..400, scales),
+            |(seed, kind, n, scale)| {
+                agrees::<f32>(seed, kind, n, scale, 60);
+                agrees::<f64>(seed, kind, n, scale, 60);
+                Ok(())
+            },
+        )
+        .unwrap();
+    }
+
+    fn collapsed_nodes_are_full_and_cover_every_shape<R: Real>() {
+        let mut rng = Rng::new(9);
+        let shapes = soup::<R>(&mut rng, Soup::Apart, 3000, 1.0);
+        let boxes: Vec<Aabb<R>> = shapes
+            .iter()
+            .filter_map(|s| match s {
+                Shape::Sphere(s) => Some(Aabb::of_sphere(s.center, s.radius)),
+                Shape::Triangle(t) => Some(t.bounds()),
+                Shape::Plane(_) => None,
+            })
+            .collect();
+        let ids: Vec<u32> = (0..shapes.len() as u32)
+            .filter(|&i| !matches!(shapes[i as usize], Shape::Plane(_)))
+            .collect();
+        let bvh = Bvh::build_with_leaves(&boxes, W::<R>::LANES);
+        let w = WideBvh::new(&bvh, &ids, &shapes);
+        // Every shape in exactly one leaf.
+        let mut seen = vec![0; shapes.len()];
+        for l in &w.spheres {
+            for k in lanes_of(l.used) {
+                seen[l.shape[k] as usize] += 1;
+            }
+        }
+        for l in &w.triangles {
+            for k in lanes_of(l.held) {
+                seen[l.shape[k] as usize] += 1;
+            }
+        }
+        for &(first, count) in &w.mixed {
+            for &i in &w.mixed_shapes[first as usize..(first + count) as usize] {
+                seen[i as usize] += 1;
+            }
+        }
+        for (i, s) in shapes.iter().enumerate() {
+            let want = usize::from(!matches!(s, Shape::Plane(_)));
+            assert_eq!(seen[i], want, "shape {i}");
+        }
+        // A node with c children stands for c − 1 binary interior nodes, each exactly once.
+        let interior = bvh.nodes().iter().filter(|n| n.count == 0).count();
+        let absorbed: usize = w.nodes.iter().map(|n| n.count as usize - 1).sum();
+        assert_eq!(absorbed, interior);
+        assert!(w
+            .nodes
+            .iter()
+            .all(|n| (2..=W::<R>::LANES).contains(&(n.count as usize))));
+        // Nodes hold three children or more on average (the small ones sit at the bottom).
+        assert!(
+            absorbed >= 2 * w.nodes.len(),
+            "{absorbed} in {}",
+            w.nodes.len()
+        );
+        // Each octant's order is a permutation of the children.
+        for n in &w.nodes {
+            for o in n.order {
+                let mut s: Vec<u32> = (0..n.count as u32).map(|p| (o >> (3 * p)) & 7).collect();
+                s.sort_unstable();
+                assert_eq!(s, (0..n.count as u32).collect::<Vec<_>>());
+            }
+        }
+    }
+
+    #[test]
+    fn collapsed_nodes_cover_every_shape_once_in_both_precisions() {
+        collapsed_nodes_are_full_and_cover_every_shape::<f32>();
+        collapsed_nodes_are_full_and_cover_every_shape::<f64>();
+    }
+}
