@@ -48,7 +48,7 @@ pub struct AggregateHit<R: Real> {
 
 impl<R: Real> Aggregate<R> {
     /// Builds the BVH over the bounded shapes.
-    pub(crate) fn new(shapes: Vec<Shape<R>>) -> Self {
+    pub fn new(shapes: Vec<Shape<R>>) -> Self {
         let mut unbounded = Vec::new();
         let mut bounded = Vec::new();
         let mut boxes = Vec::new();
@@ -89,7 +89,7 @@ impl<R: Real> Aggregate<R> {
     }
 
     /// The nearest hit with 0 < t < `t_max`.
-    pub(crate) fn nearest(&self, ray: &Ray<R>, t_max: R) -> Option<AggregateHit<R>> {
+    pub fn nearest(&self, ray: &Ray<R>, t_max: R) -> Option<AggregateHit<R>> {
         let mut best: Option<(usize, R)> = None;
         let mut t_max = t_max;
         for &i in &self.unbounded {
@@ -119,8 +119,8 @@ impl<R: Real> Aggregate<R> {
         })
     }
 
-    /// Whether any surface meets the ray with 0 < t < `t_max`.
-    pub(crate) fn occluded(&self, ray: &Ray<R>, t_max: R) -> bool {
+    /// Whether any surface meets the ray with 0 < t < `t_max` (stopping at the first it finds).
+    pub fn occluded(&self, ray: &Ray<R>, t_max: R) -> bool {
         let blocks = |i: &u32| self.shapes[*i as usize].hit_t(ray, t_max).is_some();
         if self.unbounded.iter().any(blocks) {
             return true;
@@ -133,7 +133,7 @@ impl<R: Real> Aggregate<R> {
 
     /// The nearest hit with 0 < t < ∞ of each ray of a packet (`out[k]` for `rays[k]`):
     /// [`Aggregate::nearest`] of each, for the wide tracer's queues of rays.
-    pub(crate) fn nearest_packet(&self, rays: &[Ray<R>], out: &mut [Option<AggregateHit<R>>]) {
+    pub fn nearest_packet(&self, rays: &[Ray<R>], out: &mut [Option<AggregateHit<R>>]) {
         let infinity = R::from_f64(f64::INFINITY);
         for (ray, hit) in rays.iter().zip(out.iter_mut()) {
             *hit = self.nearest(ray, infinity);

@@ -41,7 +41,7 @@ use crate::core::{Real, Vector, V3};
 const MAX_WIDTH: usize = 8;
 /// Entries held on the traversal stack before it spills into a vector (a path holds at most
 /// LANES − 1 entries per level; the trees of real scenes are well within this).
-const STACK: usize = 64;
+const STACK: usize = 32;
 
 /// A reference to a node or a leaf: the kind in the top two bits, the index below.
 type Ref = u32;
@@ -64,11 +64,12 @@ fn reference(kind: u32, index: usize) -> Ref {
 /// order in which the binary traversal would visit them for each octant of D.
 #[derive(Clone, Debug)]
 struct Node<R: Real> {
-    min: [W<R>; 3],
-    max: [W<R>; 3],
+    /// The children's boxes: `bounds[0]` the minima, `bounds[1]` the maxima, by axis.
+    bounds: [[W<R>; 3]; 2],
     child: [Ref; MAX_WIDTH],
     /// For octant o (bit a set where D's component a is negative, as 1/D's sign says), the
-    /// children in visiting order, 3 bits each, the first in the lowest bits.
+    /// children in reverse visiting order (the order they are pushed in), 3 bits each, the
+    /// last visited in the lowest bits.
     order: [u32; 8],
     /// The mask of the lanes that hold a child.
     used: u32,
@@ -172,7 +173,8 @@ fn le<L: Wide>(a: L, b: L) -> L {
 struct Prepared<R: Real> {
     o: [W<R>; 3],
     inv: [W<R>; 3],
-    neg: [bool; 3],
+    /// Per axis, which of a node's `bounds` is the near side (1 where 1/D < 0).
+    near: [usize; 3],
     octant: usize,
     o3: W3<W<R>>,
     d3: W3<W<R>>,
@@ -186,12 +188,17 @@ impl<R: Real> Prepared<R> {
         let inv = inverse::<R>(ray.direction).to_array();
         let o = ray.origin.to_array();
         let neg = inv.map(|x| x < R::ZERO);
+        let o = o.map(W::<R>::splat);
         Prepared {
-            o: o.map(W::<R>::splat),
+            o,
             inv: inv.map(W::<R>::splat),
-            neg,
+            near: neg.map(usize::from),
             octant: usize::from(neg[0]) | (usize::from(neg[1]) << 1) | (usize::from(neg[2]) << 2),
-            o3: W3::splat(ray.origin),
+            o3: W3 {
+                x: o[0],
+                y: o[1],
+                z: o[2],
+            },
             d3: W3::splat(ray.direction),
             shear: if triangles {
                 Shear::of(ray)
@@ -215,11 +222,9 @@ fn slab<R: Real>(node: &Node<R>, r: &Prepared<R>, t_max: R) -> (u32, W<R>) {
     let mut t0 = W::<R>::splat(R::ZERO);
     let mut t1 = W::<R>::splat(t_max);
     for a in 0..3 {
-        let (near, far) = if r.neg[a] {
-            (node.max[a], node.min[a])
-        } else {
-            (node.min[a], node.max[a])
-        };
+        // Near and far planes by the sign of 1/D, as the scalar test picks them
+        let near = node.bounds[r.near[a] & 1][a];
+        let far = node.bounds[(r.near[a] & 1) ^ 1][a];
         let t_near = (near - r.o[a]) * r.inv[a];
         let t_far = (far - r.o[a]) * r.inv[a] * widen;
         // A NaN (0·∞) leaves the interval as it is, as the scalar comparisons do.
@@ -302,6 +307,29 @@ struct Cut {
     nodes: Vec<usize>,
 }
 
+/// A binary leaf's shapes, in its order.
+#[derive(Clone, Copy)]
+struct Ids<'a> {
+    prims: &'a [u32],
+    shape_of: &'a [u32],
+}
+
+impl Ids<'_> {
+    fn len(&self) -> usize {
+        self.prims.len()
+    }
+
+    fn iter(&self) -> impl Iterator<Item = u32> + '_ {
+        self.prims.iter().map(|&p| self.shape_of[p as usize])
+    }
+}
+
+/// Positions in a cut, in a visiting order.
+struct Seq {
+    at: [usize; MAX_WIDTH],
+    len: usize,
+}
+
 impl<R: Real> WideBvh<R> {
     /// The wide tree of `bvh`, whose primitive k is `shapes[shape_of[k]]` (a sphere or a
     /// triangle). `bvh` should have leaves of at most [`Wide::LANES`] primitives
@@ -338,7 +366,7 @@ impl<R: Real> WideBvh<R> {
         if node.count > 0 {
             let first = node.offset as usize;
             let prims = &bvh.prims()[first..first + node.count as usize];
-            return self.leaf(prims.iter().map(|&p| shape_of[p as usize]), shapes);
+            return self.leaf(prims, shape_of, shapes);
         }
         // Open the interior node of largest area until the node is full (the first on a tie);
         // the cut stays in depth-first order.
@@ -363,10 +391,14 @@ impl<R: Real> WideBvh<R> {
         // The binary traversal's order of the cut, for each octant of D
         let mut order = [0u32; 8];
         for (octant, o) in order.iter_mut().enumerate() {
-            let mut seq = Vec::with_capacity(cut.nodes.len());
+            let mut seq = Seq {
+                at: [0; MAX_WIDTH],
+                len: 0,
+            };
             visit_order(bvh, i, &cut.nodes, octant, &mut seq);
-            *o = seq
+            *o = seq.at[..seq.len]
                 .iter()
+                .rev()
                 .enumerate()
                 .map(|(pos, &k)| (k as u32) << (3 * pos))
                 .sum();
@@ -384,8 +416,7 @@ impl<R: Real> WideBvh<R> {
             }
         }
         self.nodes.push(Node {
-            min: min.map(W::<R>::from_array),
-            max: max.map(W::<R>::from_array),
+            bounds: [min.map(W::<R>::from_array), max.map(W::<R>::from_array)],
             child: [0; MAX_WIDTH],
             order,
             used: (1u32 << cut.nodes.len()) - 1,
@@ -398,16 +429,17 @@ impl<R: Real> WideBvh<R> {
         reference(NODE, at)
     }
 
-    /// A leaf of the given shapes (in the binary leaf's order).
-    fn leaf(&mut self, ids: impl Iterator<Item = u32>, shapes: &[Shape<R>]) -> Ref {
+    /// A leaf of the binary leaf's primitives `prims` (in its order), primitive k being
+    /// `shapes[shape_of[k]]`.
+    fn leaf(&mut self, prims: &[u32], shape_of: &[u32], shapes: &[Shape<R>]) -> Ref {
         let lanes = W::<R>::LANES;
-        let ids: Vec<u32> = ids.collect();
-        let all = |f: fn(&Shape<R>) -> bool| ids.iter().all(|&i| f(&shapes[i as usize]));
+        let ids = Ids { prims, shape_of };
+        let all = |f: fn(&Shape<R>) -> bool| ids.iter().all(|i| f(&shapes[i as usize]));
         let mut shape = [0u32; MAX_WIDTH];
         if ids.len() <= lanes && all(|s| matches!(s, Shape::Sphere(_))) {
             let mut c = [<W<R> as Wide>::Array::default(); 3];
             let mut r2 = <W<R> as Wide>::Array::default();
-            for (k, &i) in ids.iter().enumerate() {
+            for (k, i) in ids.iter().enumerate() {
                 let Shape::Sphere(s) = shapes[i as usize] else {
                     unreachable!("all spheres")
                 };
@@ -430,7 +462,7 @@ impl<R: Real> WideBvh<R> {
         if ids.len() <= lanes && all(|s| matches!(s, Shape::Triangle(_))) {
             let mut p = [[<W<R> as Wide>::Array::default(); 3]; 3];
             let mut used = 0;
-            for (k, &i) in ids.iter().enumerate() {
+            for (k, i) in ids.iter().enumerate() {
                 let Shape::Triangle(t) = shapes[i as usize] else {
                     unreachable!("all triangles")
                 };
@@ -456,7 +488,7 @@ impl<R: Real> WideBvh<R> {
             return reference(TRIANGLES, self.triangles.len() - 1);
         }
         let first = self.mixed_shapes.len() as u32;
-        self.mixed_shapes.extend_from_slice(&ids);
+        self.mixed_shapes.extend(ids.iter());
         self.mixed.push((first, ids.len() as u32));
         reference(MIXED, self.mixed.len() - 1)
     }
@@ -489,10 +521,11 @@ impl<R: Real> WideBvh<R> {
                 let (hit, t0) = slab(node, r, t_max);
                 if hit != 0 {
                     let t0 = t0.to_array();
-                    let order = node.order[r.octant];
                     // Pushed last to first, so the first in the binary order comes off first
-                    for pos in (0..u32::from(node.count)).rev() {
-                        let k = ((order >> (3 * pos)) & 7) as usize;
+                    let mut order = node.order[r.octant];
+                    for _ in 0..node.count {
+                        let k = (order & 7) as usize;
+                        order >>= 3;
                         if hit & (1 << k) != 0 {
                             stack.push(node.child[k], t0.as_ref()[k]);
                         }
@@ -618,15 +651,10 @@ impl<R: Real> WideBvh<R> {
 
 /// Appends to `seq` the positions in `cut` of the nodes under binary node `i`, in the order
 /// the binary traversal visits them for `octant`.
-fn visit_order<R: Real>(
-    bvh: &Bvh<R>,
-    i: usize,
-    cut: &[usize],
-    octant: usize,
-    seq: &mut Vec<usize>,
-) {
+fn visit_order<R: Real>(bvh: &Bvh<R>, i: usize, cut: &[usize], octant: usize, seq: &mut Seq) {
     if let Some(k) = cut.iter().position(|&n| n == i) {
-        seq.push(k);
+        seq.at[seq.len] = k;
+        seq.len += 1;
         return;
     }
     let node = bvh.nodes()[i];
@@ -643,7 +671,8 @@ fn visit_order<R: Real>(
 /// The traversal stack: references with their box's t₀, [`STACK`] in place, more (never seen
 /// in practice) in a vector.
 struct Stack<R: Real> {
-    inline: [(Ref, R); STACK],
+    refs: [Ref; STACK],
+    t0: [R; STACK],
     len: usize,
     spill: Vec<(Ref, R)>,
 }
@@ -652,7 +681,8 @@ impl<R: Real> Stack<R> {
     #[inline(always)]
     fn new() -> Self {
         Stack {
-            inline: [(0, R::ZERO); STACK],
+            refs: [0; STACK],
+            t0: [R::ZERO; STACK],
             len: 0,
             spill: Vec::new(),
         }
@@ -661,7 +691,8 @@ impl<R: Real> Stack<R> {
     #[inline(always)]
     fn push(&mut self, r: Ref, t0: R) {
         if self.len < STACK {
-            self.inline[self.len] = (r, t0);
+            self.refs[self.len] = r;
+            self.t0[self.len] = t0;
         } else {
             self.spill.push((r, t0));
         }
@@ -675,7 +706,7 @@ impl<R: Real> Stack<R> {
         }
         self.len -= 1;
         if self.len < STACK {
-            Some(self.inline[self.len])
+            Some((self.refs[self.len], self.t0[self.len]))
         } else {
             self.spill.pop()
         }
