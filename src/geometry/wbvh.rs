@@ -344,6 +344,10 @@ impl<R: Real> WideBvh<R> {
             root: None,
         };
         if let Some(root) = bvh.nodes().first() {
+            // About one node per LANES − 1 binary interior nodes, one leaf per binary leaf.
+            let leaves = bvh.nodes().iter().filter(|n| n.count > 0).count();
+            w.nodes.reserve(leaves / (W::<R>::LANES - 1) + 1);
+            w.spheres.reserve(leaves);
             let r = w.collapse(bvh, 0, shape_of, shapes);
             w.root = Some((r, root.bounds));
         }
@@ -519,6 +523,11 @@ impl<R: Real> WideBvh<R> {
             if cur >> KIND == NODE {
                 let node = &self.nodes[(cur & INDEX) as usize];
                 let (hit, t0) = slab(node, r, t_max);
+                if hit != 0 && hit & (hit - 1) == 0 {
+                    // One child met: straight into it (t_max has not changed since its test)
+                    cur = node.child[hit.trailing_zeros() as usize];
+                    continue;
+                }
                 if hit != 0 {
                     let t0 = t0.to_array();
                     // Pushed last to first, so the first in the binary order comes off first
