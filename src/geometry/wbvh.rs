@@ -267,6 +267,11 @@ fn triangle_hit_t<R: Real>(leaf: &TriangleLeaf<R>, r: &Prepared<R>, t_max: R) ->
     let any_neg = e[0].lt(zero).or(e[1].lt(zero)).or(e[2].lt(zero));
     let any_pos = e[0].gt(zero).or(e[1].gt(zero)).or(e[2].gt(zero));
     let det = e[0] + e[1] + e[2];
+    // Most lanes miss most triangles by the edge tests: where none is left, stop here.
+    let inside = any_neg.and(any_pos).not().and(det.eq(zero).not());
+    if inside.bits() & leaf.used & !slow == 0 {
+        return (0, zero, slow);
+    }
     let z = q.map(|c| c[kz] * sz);
     let t_scaled = e[0] * z[0] + e[1] * z[1] + e[2] * z[2];
     // The scaled distance against the ray's range (NaN fails both branches)
@@ -292,13 +297,7 @@ fn triangle_hit_t<R: Real>(leaf: &TriangleLeaf<R>, r: &Prepared<R>, t_max: R) ->
     let delta_t = W::<R>::splat(R::from_f64(3.0))
         * (g(3) * max_e * max_zt + delta_e * max_zt + delta_z * max_e)
         * abs(inv_det);
-    let hit = any_neg
-        .and(any_pos)
-        .not()
-        .and(det.eq(zero).not())
-        .and(in_range)
-        .and(t.lt(t_max_w))
-        .and(t.gt(delta_t));
+    let hit = inside.and(in_range).and(t.lt(t_max_w)).and(t.gt(delta_t));
     (hit.bits() & leaf.used & !slow, t, slow)
 }
 
