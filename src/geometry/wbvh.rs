@@ -27,7 +27,7 @@
 //!
 //! Shadow rays ask [`WideBvh::occluded`]: whether some primitive in a leaf whose box the ray
 //! meets before t_max is hit. That set does not depend on the order of the visit, so it is
-//! [`Bvh::any`]'s answer too.
+//! `Bvh::any`'s answer too.
 
 use super::bounds::{inverse, Aabb};
 use super::bvh::Bvh;
@@ -39,8 +39,9 @@ use crate::core::{Real, Vector, V3};
 
 /// The widest node: 8 children (f32 lanes).
 const MAX_WIDTH: usize = 8;
-/// Entries held on the traversal stack before it spills into a vector (a path holds at most
-/// LANES − 1 entries per level; the trees of real scenes are well within this).
+/// Entries held on the traversal stack before it spills into a vector. A level of the path
+/// leaves one entry per child met beyond the first (LANES − 1 at most), so a ray needs many
+/// levels each meeting most children to spill (then correct, only slower: it allocates).
 const STACK: usize = 32;
 
 /// A reference to a node or a leaf: the kind in the top two bits, the index below.
@@ -622,7 +623,7 @@ impl<R: Real> WideBvh<R> {
     }
 
     /// Whether some shape meets the ray with 0 < t < `t_max` (shadow rays), stopping at the
-    /// first: [`Bvh::any`]'s answer over the tree this one was collapsed from.
+    /// first: `Bvh::any`'s answer over the tree this one was collapsed from.
     #[inline]
     pub(crate) fn occluded(&self, shapes: &[Shape<R>], ray: &Ray<R>, t_max: R) -> bool {
         let r = Prepared::of(ray, !self.triangles.is_empty());
