@@ -1003,6 +1003,53 @@ mod tests {
     }
 
     #[test]
+    fn the_stack_spills_beyond_its_place_and_still_pops_in_order() {
+        let mut stack = Stack::<f64>::new();
+        for i in 0..3 * STACK as u32 {
+            stack.push(i, f64::from(i) / 2.0);
+        }
+        for i in (0..3 * STACK as u32).rev() {
+            assert_eq!(stack.pop(), Some((i, f64::from(i) / 2.0)));
+        }
+        assert_eq!(stack.pop(), None);
+    }
+
+    fn coincident<R: Real>() {
+        // 3000 equal spheres and 3000 equal triangles: every child met at every level (the
+        // stack at its deepest), every shape at the same t; the binary order picks the winner.
+        let s = Shape::Sphere(Sphere {
+            center: v3::<R>([1.0, 2.0, 3.0]),
+            radius: R::ONE,
+        });
+        let t = Shape::Triangle(Triangle::new(
+            v3::<R>([-1.0, -1.0, 9.0]),
+            v3::<R>([3.0, -1.0, 9.0]),
+            v3::<R>([1.0, 4.0, 9.0]),
+        ));
+        for shapes in [vec![s; 3000], vec![t; 3000]] {
+            let agg = Aggregate::new(shapes);
+            let mut rng = Rng::new(21);
+            for _ in 0..50 {
+                let d = rng.direction();
+                let ray = Ray {
+                    origin: v3::<R>([1.0, 1.0, -4.0]),
+                    direction: v3::<R>([d[0] * 0.1, d[1] * 0.1, 1.0]),
+                };
+                let inf = R::from_f64(f64::INFINITY);
+                let want = agg.nearest_binary(&ray, inf);
+                assert_eq!(agg.nearest(&ray, inf).map(|h| (h.index, h.hit.t)), want);
+                assert_eq!(agg.occluded(&ray, inf), agg.occluded_binary(&ray, inf));
+            }
+        }
+    }
+
+    #[test]
+    fn coincident_shapes_give_the_binary_searchs_winner() {
+        coincident::<f32>();
+        coincident::<f64>();
+    }
+
+    #[test]
     fn collapsed_nodes_cover_every_shape_once_in_both_precisions() {
         collapsed_nodes_are_full_and_cover_every_shape::<f32>();
         collapsed_nodes_are_full_and_cover_every_shape::<f64>();
