@@ -148,6 +148,14 @@ pub(crate) fn carry_on(step: Result<(), CliError>) -> Exit {
     }
 }
 
+/// The exit of a step a command goes on after, its error printed in `lang`.
+pub(crate) fn carry_on_in(step: Result<(), CliError>, lang: Lang) -> Exit {
+    match step {
+        Ok(()) => Exit::Success,
+        Err(e) => fail_in(&e, lang),
+    }
+}
+
 /// Prints an error and gives its exit.
 pub(crate) fn fail(e: &CliError) -> Exit {
     fail_in(e, Lang::En)
