@@ -1091,3 +1091,27 @@ fn grade_and_its_own_errors_speak_portuguese() {
         "distinct errors: {messages:#?}"
     );
 }
+
+#[test]
+fn new_reports_a_file_it_cannot_write_in_portuguese() {
+    let english = english_words();
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().to_str().unwrap().to_owned();
+    // The first run names the file; a folder of that name then stands in its way.
+    let (_, err) = run(&["new", "--kind", "ambient", "--seed", "1", "-o", &out]);
+    assert!(err.is_empty(), "{err}");
+    let name = std::fs::read_dir(dir.path())
+        .unwrap()
+        .next()
+        .unwrap()
+        .unwrap()
+        .path();
+    std::fs::remove_file(&name).unwrap();
+    std::fs::create_dir(&name).unwrap();
+    let (_, err) = run(&[
+        "new", "--kind", "ambient", "--seed", "1", "--lang", "pt", "-o", &out,
+    ]);
+    assert!(err.starts_with("erro:"), "{err}");
+    let leaked = english_in(&err, &english);
+    assert!(leaked.is_empty(), "English in {err:?}: {leaked:?}");
+}

@@ -558,14 +558,27 @@ pub(crate) fn graded(
     invalid: usize,
     lang: Lang,
 ) -> String {
+    // One row, one verdict: the singular (Portuguese agrees the adjective too).
+    let one = |n: usize, singular: &'static str, plural: &'static str| {
+        if n == 1 {
+            singular
+        } else {
+            plural
+        }
+    };
     match lang {
         Lang::En => format!(
-            "graded {rows} rows: {right} right, {reading} by the likely intended reading, \
-             {wrong} wrong, {invalid} invalid"
+            "graded {rows} {}: {right} right, {reading} by the likely intended reading, \
+             {wrong} wrong, {invalid} invalid",
+            one(rows, "row", "rows")
         ),
         Lang::Pt => format!(
-            "{rows} linhas avaliadas: {right} certas, {reading} pela leitura provavelmente \
-             pretendida, {wrong} erradas, {invalid} inválidas"
+            "{rows} {}: {right} {}, {reading} pela leitura provavelmente pretendida, \
+             {wrong} {}, {invalid} {}",
+            one(rows, "linha avaliada", "linhas avaliadas"),
+            one(right, "certa", "certas"),
+            one(wrong, "errada", "erradas"),
+            one(invalid, "inválida", "inválidas"),
         ),
     }
 }
