@@ -744,6 +744,7 @@ mod tests {
     //! Each test is written once and instantiated for f32 and f64. Expected values are worked
     //! out by hand in the comments.
     use super::*;
+    use crate::core::lanes::{lanes_of, mask_of, Wide, W, W3};
     use crate::core::light::{Cone, Falloff, LightKind, Reach};
     use crate::core::real::v3;
 
@@ -935,6 +936,200 @@ mod tests {
         assert_eq!(s.literal.map(|l| l.x()), Some(s.specular.x()));
     }
 
+    /// Blocks the shadow rays of point lights (not spots) to points with x > 0.5: a rule both
+    /// instantiations can ask.
+    fn blocked<R: Real>(p: V3<R>, light: &Light<R>) -> bool {
+        matches!(light.kind, LightKind::Point { .. }) && p.x() > R::from_f64(0.5)
+    }
+
+    struct Blocker(u64);
+
+    impl<R: Real> Visibility<R> for Blocker {
+        fn visible(&mut self, p: V3<R>, light: &Light<R>, _: &Arrival<R>) -> bool {
+            self.0 += 1;
+            !blocked(p, light)
+        }
+    }
+
+    struct LaneBlocker<R>(u64, std::marker::PhantomData<R>);
+
+    impl<R: Real> LaneSide<W<R>> for LaneBlocker<R> {
+        const DETAIL: bool = false;
+        fn visible(
+            &mut self,
+            need: W<R>,
+            p: W3<W<R>>,
+            light: &Light<R>,
+            _: &LaneArrival<W<R>>,
+        ) -> W<R> {
+            let mut bits = 0;
+            for k in lanes_of(need.bits()) {
+                self.0 += 1;
+                if blocked(p.at(k), light) {
+                    bits |= 1 << k;
+                }
+            }
+            need.and(mask_of::<W<R>>(bits).not())
+        }
+        fn light(&mut self, _: usize, _: &Light<R>, _: &LanePoint<W<R>>, _: &LaneTerm<W<R>>) {}
+    }
+
+    /// Points, normals and viewers that reach every gate of the model with the lights below:
+    /// lit, behind the surface, in the tangent plane, outside and on the edge of the spot's
+    /// cone, at a light, in shadow, R away from the viewer, and a light so far away that its
+    /// distance takes the robust branch of `between`.
+    fn gated_points<R: Real>() -> Vec<ShadingPoint<R>> {
+        let unit = |a: [f64; 3]| {
+            crate::core::vector::normalize::<R>(v3::<R>(a))
+                .unwrap()
+                .unit
+        };
+        let mut points = Vec::new();
+        for i in 0..7 {
+            for j in 0..5 {
+                let (x, y) = (f64::from(i) * 0.6 - 1.7, f64::from(j) * 0.7 - 1.3);
+                points.push(ShadingPoint {
+                    p: v3::<R>([x, y, 0.1 * x * y]),
+                    n: unit([0.1 * y, -0.2 * x, 1.0]),
+                    v: Some(unit([-x, -y + 0.3, -4.0])),
+                });
+            }
+        }
+        let up = v3::<R>([0.0, 0.0, 1.0]);
+        // Behind: N away from the lights; the viewer along the light (R away from it).
+        points.push(ShadingPoint {
+            p: v3::<R>([0.2, 0.1, 0.0]),
+            n: -up,
+            v: Some(up),
+        });
+        points.push(ShadingPoint {
+            p: v3::<R>([0.0; 3]),
+            n: up,
+            v: Some(unit([0.0, 0.0, 1.0])),
+        });
+        // At the point light; on the spot's edge (apex (0,0,4), axis −z, 45°: x = 4).
+        points.push(ShadingPoint {
+            p: v3::<R>([1.0, 2.0, 3.0]),
+            n: up,
+            v: Some(-up),
+        });
+        points.push(ShadingPoint {
+            p: v3::<R>([4.0, 0.0, 0.0]),
+            n: up,
+            v: Some(-up),
+        });
+        points.push(ShadingPoint {
+            p: v3::<R>([4.1, 0.0, 0.0]),
+            n: up,
+            v: Some(-up),
+        });
+        // The tangent plane of the light at (5, 0, 0): cos θ = 0 exactly.
+        points.push(ShadingPoint {
+            p: v3::<R>([0.0, 0.0, 0.0]),
+            n: up,
+            v: Some(unit([0.3, 0.0, -1.0])),
+        });
+        // The mirror direction of the light at (0, 0, 4), for the huge n_s.
+        points.push(ShadingPoint {
+            p: v3::<R>([0.0; 3]),
+            n: up,
+            v: Some(unit([1e-3, 0.0, -1.0])),
+        });
+        points
+    }
+
+    fn gated_lights<R: Real>() -> LightSet<R> {
+        let far = if R::NAME == "f32" { 3e20 } else { 1e160 };
+        let mut far_light = point_light::<R>([far, far, far], Falloff::Linear);
+        far_light.color = v3::<R>([far; 3]);
+        LightSet {
+            ambient: Some(v3::<R>([0.1, 0.2, 0.3])),
+            lights: vec![
+                point_light::<R>([1.0, 2.0, 3.0], Falloff::Quadratic),
+                point_light::<R>([0.0, 0.0, 4.0], Falloff::None),
+                point_light::<R>([5.0, 0.0, 0.0], Falloff::Linear),
+                Light {
+                    color: v3::<R>([0.3, 0.4, 0.5]),
+                    kind: LightKind::Directional {
+                        direction: v3::<R>([0.0, 0.6, -0.8]),
+                    },
+                },
+                Light {
+                    color: v3::<R>([0.9, 0.8, 0.7]),
+                    kind: LightKind::Spot {
+                        position: v3::<R>([0.0, 0.0, 4.0]),
+                        falloff: Falloff::Linear,
+                        cone: Cone::new(
+                            v3::<R>([0.0, 0.0, -1.0]),
+                            R::from_f64(45.0),
+                            R::from_f64(2.5),
+                        ),
+                    },
+                },
+                far_light,
+            ],
+        }
+    }
+
+    /// The lane instantiation of the core ([`shade_lanes`] over a register) gives every lane
+    /// the scalar [`shade`]'s bits and asks the same shadow rays, through every gate, for
+    /// whole and fractional n_s (repeated squaring, powf, and the huge n_s's ln_1p form).
+    fn lanes_shade_as_the_scalar_core<R: Real>() {
+        let lights = gated_lights::<R>();
+        let points = gated_points::<R>();
+        let lanes = W::<R>::LANES;
+        let mut statuses = Vec::new();
+        let mut speculars = Vec::new();
+        for n_s in [20.0, 2.5, 1e6 + 0.5] {
+            let mut m = matte_and_shiny::<R>();
+            m.n_s = R::from_f64(n_s);
+            let (mut scalar_rays, mut lane_rays) = (0, 0);
+            for group in points.chunks(lanes) {
+                let fill = group[0];
+                let at = LanePoint::<W<R>> {
+                    p: W3::gather(group.iter().map(|a| a.p), fill.p),
+                    n: W3::gather(group.iter().map(|a| a.n), fill.n),
+                    v: Some(W3::gather(
+                        group.iter().map(|a| a.v.unwrap()),
+                        fill.v.unwrap(),
+                    )),
+                };
+                let active = mask_of::<W<R>>((1 << group.len()) - 1);
+                let mut side = LaneBlocker::<R>(0, std::marker::PhantomData);
+                let wide =
+                    shade_lanes::<W<R>, Chapter, _>(Chapter, &at, active, &m, &lights, &mut side);
+                lane_rays += side.0;
+                for (k, a) in group.iter().enumerate() {
+                    let mut blocker = Blocker(0);
+                    let s = shade(a, &m, &lights, &mut blocker, &mut NoRecord);
+                    scalar_rays += blocker.0;
+                    let bits = |v: V3<R>| v.to_array().map(|c| c.to_f64().to_bits());
+                    assert_eq!(bits(wide.color.at(k)), bits(s.color), "{a:?} n_s {n_s}");
+                    assert_eq!(bits(wide.diffuse.at(k)), bits(s.diffuse), "{a:?}");
+                    assert_eq!(bits(wide.specular.at(k)), bits(s.specular), "{a:?}");
+                    let mut rec = Vec::new();
+                    shade(a, &m, &lights, &mut Blocker(0), &mut rec);
+                    statuses.extend(rec.iter().map(|t| t.status));
+                    speculars.extend(rec.iter().map(|t| t.specular.status));
+                }
+            }
+            assert_eq!(lane_rays, scalar_rays, "shadow rays asked");
+        }
+        for s in [
+            LightStatus::Lit,
+            LightStatus::BehindSurface,
+            LightStatus::InTangentPlane,
+            LightStatus::OutsideCone,
+            LightStatus::AtLight,
+            LightStatus::InShadow,
+        ] {
+            assert!(statuses.contains(&s), "no {s:?} among the cases");
+        }
+        for s in [SpecularStatus::Lit, SpecularStatus::AwayFromViewer] {
+            assert!(speculars.contains(&s), "no specular {s:?} among the cases");
+        }
+    }
+
     macro_rules! for_both_precisions {
         ($($name:ident),* $(,)?) => {
             mod f32_tests { $( #[test] fn $name() { super::$name::<f32>() } )* }
@@ -950,6 +1145,7 @@ mod tests {
         spot_cone_edge_is_lit_and_outside_is_dark,
         huge_shininess_with_cos_phi_rounded_above_one_stays_finite,
         huge_shininess_near_the_highlight_gives_no_spurious_one,
+        lanes_shade_as_the_scalar_core,
     );
 
     #[test]
