@@ -25,7 +25,7 @@ use crate::core::light::LaneArrival;
 use crate::core::shade::{shade_lanes, LanePoint, LaneSide, LaneTerm};
 use crate::core::{Chapter, Light, Material, Real, Vector, V3};
 use crate::geometry::soa::FlatScene;
-use crate::geometry::{Aggregate, AggregateHit, Ray, SurfaceHit};
+use crate::geometry::{Aggregate, AggregateHit, Ray};
 use crate::problem::Problem;
 
 /// Samples traced together: a strip of a row (one sample per pixel: 64 pixels).
@@ -147,8 +147,10 @@ impl<R: Real> Plan<R> {
 struct WideSide<'a, R: Real, const SHADOWS: bool> {
     aggregate: &'a Aggregate<R>,
     flat: Option<&'a FlatScene<R>>,
-    /// The hit of each lane (the lanes past the group's end repeat its first).
-    hits: [SurfaceHit<R>; 8],
+    /// The group being shaded: lane k holds the hit of queue entry `group[k].1`.
+    group: &'a [(u32, u32)],
+    /// The nearest hit of each queue entry.
+    found: &'a [Option<AggregateHit<R>>],
     /// The shadow rays traced.
     traced: u64,
 }
@@ -177,7 +179,10 @@ impl<R: Real, const SHADOWS: bool> LaneSide<W<R>> for WideSide<'_, R, SHADOWS> {
         let mut want = 0u32;
         for k in lanes_of(bits) {
             self.traced += 1;
-            let from = self.hits[k].shadow_rays(self.aggregate);
+            let Some(h) = &self.found[self.group[k].1 as usize] else {
+                unreachable!("a group holds hits")
+            };
+            let from = h.hit.shadow_rays(self.aggregate);
             if let Some(s) = from.ray(light, arrival.l.at(k)) {
                 rays[k] = s.ray;
                 t_max[k] = s.t_max;
@@ -367,19 +372,17 @@ fn shade_queue<R: Real, const SHADOWS: bool>(
         }
         let group = &b.groups[at..at + len];
         at += len;
-        let hit = |k: usize| {
-            let i = group[k.min(len - 1)].1 as usize;
-            let h = b.found[i].expect("a hit");
-            (h.hit, b.queue[i].path.ray.direction)
-        };
-        let mut hits = [hit(0).0; 8];
-        let (mut p, mut nrm, mut v) = ([V3::<R>::ZERO; 8], [V3::<R>::ZERO; 8], [V3::<R>::ZERO; 8]);
+        // Lanes past the group's end repeat its last hit (and are not active).
+        let mut nrm = [V3::<R>::ZERO; 8];
+        let (mut p, mut v) = ([V3::<R>::ZERO; 8], [V3::<R>::ZERO; 8]);
         for k in 0..lanes {
-            let (h, d) = hit(k);
-            hits[k] = h;
-            p[k] = h.p;
+            let i = group[k.min(len - 1)].1 as usize;
+            let (Some(h), d) = (&b.found[i], b.queue[i].path.ray.direction) else {
+                unreachable!("a group holds hits")
+            };
+            p[k] = h.hit.p;
             // N turned to face the incoming ray; V is the ray's direction (Eq. 4.10).
-            nrm[k] = h.facing(d).normal;
+            nrm[k] = h.hit.facing(d).normal;
             v[k] = d;
         }
         let fill = V3::<R>::ZERO;
@@ -391,7 +394,8 @@ fn shade_queue<R: Real, const SHADOWS: bool>(
         let mut side = WideSide::<R, SHADOWS> {
             aggregate: &tracer.scene.aggregate,
             flat: plan.flat.as_ref(),
-            hits,
+            group,
+            found: &b.found,
             traced: 0,
         };
         let active = mask_of::<W<R>>((1u32 << len) - 1);
