@@ -420,7 +420,7 @@ pub(crate) trait LaneSide<L: Lanes> {
         index: usize,
         light: &Light<L::Scalar>,
         at: &LanePoint<L>,
-        term: &LaneTerm<L>,
+        term: LaneTerm<L>,
     );
 }
 
@@ -574,7 +574,7 @@ pub(crate) fn shade_lanes<L: Lanes, F: Formulas, S: LaneSide<L>>(
             index,
             light,
             at,
-            &LaneTerm {
+            LaneTerm {
                 arrival,
                 n_dot_l,
                 cos_theta,
@@ -625,7 +625,7 @@ impl<R: Real, Vis: Visibility<R>, Rec: Recorder<R>, F: Formulas> LaneSide<R>
     }
 
     #[inline(always)]
-    fn light(&mut self, index: usize, light: &Light<R>, at: &LanePoint<R>, t: &LaneTerm<R>) {
+    fn light(&mut self, index: usize, light: &Light<R>, at: &LanePoint<R>, t: LaneTerm<R>) {
         let arrival = light.arrival_of(&t.arrival);
         let status = if t.arrival.at_light {
             LightStatus::AtLight
@@ -971,7 +971,7 @@ mod tests {
             }
             need.and(mask_of::<W<R>>(bits).not())
         }
-        fn light(&mut self, _: usize, _: &Light<R>, _: &LanePoint<W<R>>, _: &LaneTerm<W<R>>) {}
+        fn light(&mut self, _: usize, _: &Light<R>, _: &LanePoint<W<R>>, _: LaneTerm<W<R>>) {}
     }
 
     /// Points, normals and viewers that reach every gate of the model with the lights below:

@@ -208,7 +208,7 @@ impl<R: Real, const SHADOWS: bool> LaneSide<W<R>> for WideSide<'_, R, SHADOWS> {
     }
 
     #[inline(always)]
-    fn light(&mut self, _: usize, _: &Light<R>, _: &LanePoint<W<R>>, _: &LaneTerm<W<R>>) {}
+    fn light(&mut self, _: usize, _: &Light<R>, _: &LanePoint<W<R>>, _: LaneTerm<W<R>>) {}
 }
 
 /// The queues and buffers of one row, allocated once per row and reused by its blocks.
