@@ -105,3 +105,30 @@ fn packets_and_bvh_scenes_with_samples_render_the_same_bits_in_both_precisions()
     varied_scenes_in::<f32>();
     varied_scenes_in::<f64>();
 }
+
+/// Materials shaded together are equal in what shading reads, past the 16 the plan looks
+/// through before it keeps a map: 40 materials, 20 distinct (n_s 1 to 20), each twice, the
+/// second time with another O_r (which shading does not read).
+#[test]
+fn the_plan_groups_exactly_the_equal_materials() {
+    use crate::core::real::v3;
+    use crate::core::Material;
+    let m = |i: usize, o_r: f64| Material::<f64> {
+        o_a: Some(v3::<f64>([0.1; 3])),
+        o_d: Some(v3::<f64>([0.5, 0.4, 0.3])),
+        o_s: (i % 3 != 0).then(|| v3::<f64>([0.2; 3])),
+        n_s: (i + 1) as f64,
+        o_r: Some(v3::<f64>([o_r; 3])),
+    };
+    let all: Vec<Material<f64>> = (0..40).map(|i| m(i % 20, (i / 20) as f64 * 0.5)).collect();
+    let (of, distinct) = super::distinct_materials(&all);
+    assert_eq!(distinct.len(), 20);
+    for (i, id) in of.iter().enumerate() {
+        assert_eq!(*id as usize, i % 20, "material {i}");
+        let d = distinct[*id as usize];
+        assert_eq!(
+            (d.o_a, d.o_d, d.o_s, d.n_s),
+            (all[i].o_a, all[i].o_d, all[i].o_s, all[i].n_s)
+        );
+    }
+}
