@@ -3,18 +3,23 @@
 //! A row's samples are taken in blocks of [`BLOCK`] (a strip of neighbouring pixels, so the
 //! primary rays of a packet are coherent). Each block keeps a queue of live paths per bounce
 //! (a wavefront): the queue's rays are intersected [`Wide::LANES`] at a time against a
-//! [`FlatScene`] (8 rays per instruction in f32, 4 in f64), each hit is stepped by the scalar
-//! tracer's own [`Tracer::bounce`] (the core's [`crate::core::shade`] with the shadow rays, the
-//! stop rules, the reflection ray), and the rays it spawns form the next bounce's queue. A hit
-//! may push more than one child (refraction is planned): each queue entry carries the sample
-//! it adds to and its own factor, so a ray tree fits the same queues.
+//! [`FlatScene`] (8 rays per instruction in f32, 4 in f64); the hits are grouped by material
+//! and shaded a register at a time by the core's own arithmetic ([`shade_lanes`], of which the
+//! scalar [`crate::core::shade`] is the one-lane instance), their shadow rays built as
+//! `ShadowRays` builds them and tested as packets, any hit ([`FlatScene::occluded_packet`]);
+//! then each path is stepped by the scalar tracer's own [`Tracer::step`] (the stop rules, the
+//! reflection ray), and the rays it spawns form the next bounce's queue. The loop is one of four
+//! instances ([`Plan`]), chosen once per render by whether the scene has shadows and reflection.
+//! A hit may push more than one child (refraction is planned): each queue entry carries the
+//! sample it adds to and its own factor, so a ray tree fits the same queues.
 //!
 //! The shares of a sample are added in bounce order, as [`Tracer::trace`] adds them, and a
 //! pixel's samples in sample order, as [`super::render::pixel_mean`] does; the packet
 //! intersection is the aggregate's to the bit ([`FlatScene`]). So the image is the scalar
 //! tracer's, byte for byte, in both precisions (src/tracer/wide/tests.rs). Scenes the packets do not cover
 //! (more than a handful of spheres, which the aggregate puts in a BVH, or triangles) take the
-//! same queues with the aggregate's scalar intersection.
+//! same queues and the same shading in lanes with the aggregate's scalar intersection and
+//! occlusion, lane by lane.
 
 use super::camera::CameraRays;
 use super::render::{clamped, mean};

@@ -1,8 +1,9 @@
 //! The wide engine (packets of 8 × f32 or 4 × f64 lanes, queues per bounce) renders the scalar
 //! engine's image bit for bit: every bundled scene, both precisions, the pixel means before
 //! rounding compared by their bits, and the ray counts equal. No operation of the wide path is
-//! allowed to differ from the scalar one: the lanes do IEEE +, −, ×, ÷, √ in the scalar order,
-//! and everything else (hit points, shading, pow, the cone's atan2) is the scalar code itself.
+//! allowed to differ from the scalar one: the lanes do IEEE +, −, ×, ÷, √ in the scalar order
+//! (the shading is the core's one source in lanes), and everything else (hit points, pow, the
+//! cone's atan2, the shadow rays' origins) is the scalar code itself, lane by lane.
 
 use std::path::{Path, PathBuf};
 
