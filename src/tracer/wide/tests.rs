@@ -107,6 +107,40 @@ fn packets_and_bvh_scenes_with_samples_render_the_same_bits_in_both_precisions()
     varied_scenes_in::<f64>();
 }
 
+/// The instances of the bounce loop without reflection (shadows on and off): the many-spheres
+/// scene with every reflectivity taken out, so that nothing reflects.
+fn unreflective_scenes_in<R: Real>() {
+    let mut json = many_spheres::scene(5);
+    for m in json["materials"]
+        .as_object_mut()
+        .expect("materials")
+        .values_mut()
+    {
+        m.as_object_mut()
+            .expect("a material")
+            .remove("reflectivity");
+    }
+    let mut problem = load::<R>(&json.to_string());
+    assert!(problem
+        .surfaces()
+        .iter()
+        .all(|s| s.material.material.o_r.is_none()));
+    let mut camera = problem.camera.expect("a camera");
+    camera.width = 53;
+    camera.height = 29;
+    for shadows in [true, false] {
+        problem.render.shadows = shadows;
+        let name = format!("5 spheres, nothing reflects, shadows {shadows}");
+        same_by_both_engines::<R>(&name, &problem, &camera);
+    }
+}
+
+#[test]
+fn scenes_where_nothing_reflects_render_the_same_bits_in_both_precisions() {
+    unreflective_scenes_in::<f32>();
+    unreflective_scenes_in::<f64>();
+}
+
 /// Materials shaded together are equal in what shading reads, past the 16 the plan looks
 /// through before it keeps a map: 40 materials, 20 distinct (n_s 1 to 20), each twice, the
 /// second time with another O_r (which shading does not read).
