@@ -265,3 +265,265 @@ fn grade_honours_each_keys_tolerance_and_accepts_no_hit() {
     assert_eq!(rows[1]["verdict"], "right", "{}", rows[1]);
     assert_eq!(rows[2]["verdict"], "reading", "{}", rows[2]);
 }
+
+/// A report's CSV read by its header's names: one map per row.
+fn by_name(csv_text: &str) -> Vec<std::collections::BTreeMap<String, String>> {
+    let mut r = csv::Reader::from_reader(csv_text.as_bytes());
+    let header: Vec<String> = r.headers().unwrap().iter().map(str::to_owned).collect();
+    r.records()
+        .map(|rec| {
+            header
+                .iter()
+                .cloned()
+                .zip(rec.unwrap().iter().map(str::to_owned))
+                .collect()
+        })
+        .collect()
+}
+
+// Exercise 4.2 by hand (as in tests/check.rs): P = (3, 1, 3), P_l = (1, 1, 1), so P − P_l =
+// (2, 0, 2), d = 2√2 = 2.828427 and L = (0.707107, 0, 0.707107); N = (0.6, 0, 0.8), so
+// N·L = (1.2 + 1.6)/(2√2) = 0.989949 and cos θ = −N·L = −0.989949 (Eq. 4.7): as written the
+// light is behind the surface, and cos θ = +0.98995 is the likely intended reading's (L reversed).
+// I_l = 1/d = 0.353553 with linear falloff; 1/d² = 0.125 is the quadratic slip. R = L − 2(N·L)N
+// = (0.707107 − 1.187939, 0, 0.707107 − 1.583919) = (−0.480833, 0, −0.876812); with L reversed
+// R is reversed too, so (−0.48, 0, −0.88) is right only as written. The colour as written is
+// (0, 0, 0); the likely intended reading's (0.299, 0.361, 0.318).
+
+#[test]
+fn a_steps_column_in_a_comma_file_judges_each_rows_steps() {
+    let dir = exercises();
+    let csv = "student,exercise,answer,steps\n\
+               ana,4.2,0 0 0,n_dot_l=0.98995; cos_theta=-0.98995\n\
+               bia,4.2,0.299 0.361 0.318,cos_theta=0.98995\n\
+               caio,4.2,0 0 0,I_l=0.125 0.125 0.125; d=2.83\n\
+               davi,4.2,0 0 0,cos_thet=0.5\n\
+               eva,4.2,0 0 0,cos_theta=abc\n\
+               fabio,4.1,0.5 0.7 0.3,\n\
+               gil,4.2,0 0 0,\"R=-0.48,0,-0.88\"\n\
+               hugo,4.2,0 0 0,R=-0.48,0,-0.88\n\
+               ivo,4.1,0.5 0.7 0.3\n";
+    let (code, out) = grade(csv.as_bytes(), dir.path(), "csv");
+    assert_eq!(code, 0, "{out}");
+    let rows = by_name(&out);
+    // Every row once, in order: the bad step cells did not stop the batch.
+    let students: Vec<&str> = rows.iter().map(|r| r["student"].as_str()).collect();
+    assert_eq!(
+        students,
+        ["ana", "bia", "caio", "davi", "eva", "fabio", "gil", "hugo", "ivo"]
+    );
+    let col = |i: usize, c: &str| rows[i][c].clone();
+    // ana: both steps right as written (in the solution's order: N·L, then cos θ).
+    assert_eq!(col(0, "verdict"), "right");
+    assert_eq!(col(0, "steps_text"), "n_dot_l=0.98995; cos_theta=-0.98995");
+    assert_eq!(
+        col(0, "step_verdicts"),
+        "n_dot_l[0]=right; cos_theta[0]=right"
+    );
+    assert_eq!(col(0, "first_wrong_step"), "");
+    assert!(
+        col(0, "feedback").contains("Every step given is right."),
+        "{}",
+        col(0, "feedback")
+    );
+    // bia: +0.98995 is wrong as written, right in the likely intended reading (L reversed).
+    assert_eq!(col(1, "step_verdicts"), "cos_theta[0]=reading");
+    assert_eq!(col(1, "first_wrong_step"), "cos_theta[0]");
+    let f = col(1, "feedback");
+    assert!(
+        f.contains(
+            "Step cos_theta[0] = 0.98995: wrong as written, right in the likely intended reading"
+        ),
+        "{f}"
+    );
+    assert!(f.contains("-0.989949 (the sign differs)"), "{f}");
+    // caio: 1/d² for 1/d is the quadratic slip; the step does not cost the answer its points.
+    assert_eq!(
+        col(2, "step_verdicts"),
+        "d[0]=right; I_l[0]=wrong(falloff_quadratic_not_linear)"
+    );
+    assert_eq!(col(2, "first_wrong_step"), "I_l[0]");
+    assert_eq!(
+        (col(2, "verdict").as_str(), col(2, "points").as_str()),
+        ("right", "1")
+    );
+    assert!(
+        col(2, "feedback").contains("First wrong step: I_l[0]"),
+        "{}",
+        col(2, "feedback")
+    );
+    // davi and eva: the row's error names the row, the column, what was written and the fix.
+    assert_eq!(col(3, "verdict"), "invalid");
+    let r = col(3, "reason");
+    assert!(r.contains("row 4 (line 5"), "{r}");
+    assert!(r.contains("column \"steps\""), "{r}");
+    assert!(r.contains("\"cos_thet=0.5\""), "{r}");
+    assert!(
+        r.contains("is not the name of a step. Fix: use one of"),
+        "{r}"
+    );
+    assert!(r.contains("cos_theta"), "{r}");
+    assert_eq!(col(4, "verdict"), "invalid");
+    let r = col(4, "reason");
+    assert!(
+        r.contains("row 5 (line 6") && r.contains("\"abc\" is not a value for cos_theta"),
+        "{r}"
+    );
+    // fabio: an empty cell is no steps; ivo: a row without the last cell is one too.
+    for i in [5, 8] {
+        assert_eq!(col(i, "verdict"), "right");
+        assert_eq!(col(i, "step_verdicts"), "");
+    }
+    // gil (quoted) and hugo (not quoted: the fields after the answer are the steps cell): R is
+    // right as written.
+    assert_eq!(col(6, "step_verdicts"), "R[0]=right");
+    assert_eq!(col(7, "step_verdicts"), "R[0]=right", "{:?}", rows[7]);
+    assert_eq!(col(7, "steps_text"), "R=-0.48,0,-0.88");
+}
+
+#[test]
+fn a_steps_column_in_a_semicolon_file_with_decimal_commas() {
+    let dir = exercises();
+    let csv = "aluno;exercício;resposta;passos\n\
+               ana;4.2;0 0 0;n_dot_l=0,98995; cos_theta=-0,98995\n\
+               bia;4.2;0,299 0,361 0,318;\"cos_theta=0,98995; R=-0,48 0 -0,88\"\n\
+               caio;4.2;0 0 0;I_l=0,125 0,125 0,125\n\
+               davi;4.2;0 0 0;cos_teta=0,5\n\
+               eva;4.2;0 0 0;cos_theta=0,9,8\n\
+               fabio;4.1;0,5 0,7 0,3\n";
+    let (code, out) = grade(csv.as_bytes(), dir.path(), "json");
+    assert_eq!(code, 0, "{out}");
+    let json: Value = serde_json::from_str(&out).unwrap();
+    let rows = json["rows"].as_array().unwrap();
+    assert_eq!(rows.len(), 6);
+    let verdicts = |i: usize| -> Vec<(String, String)> {
+        rows[i]["steps"]["steps"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|s| {
+                (
+                    s["name"].as_str().unwrap().to_owned(),
+                    s["verdict"].as_str().unwrap().to_owned(),
+                )
+            })
+            .collect()
+    };
+    let pair = |n: &str, v: &str| (n.to_owned(), v.to_owned());
+    // ana: the `;` inside the unquoted cell separates steps, not fields.
+    assert_eq!(
+        verdicts(0),
+        [pair("n_dot_l", "right"), pair("cos_theta", "right")]
+    );
+    assert_eq!(rows[0]["steps"]["steps"][0]["given"], 0.98995);
+    assert_eq!(rows[0]["steps"]["first_wrong"], Value::Null);
+    // bia: cos θ of the likely intended reading, R right as written.
+    assert_eq!(
+        verdicts(1),
+        [pair("cos_theta", "reading"), pair("R", "right")]
+    );
+    let cos = &rows[1]["steps"]["steps"][0];
+    assert_eq!(cos["reading"], "light_reversed");
+    assert_eq!(cos["sign_reversed"], true);
+    assert_eq!(
+        rows[1]["steps"]["steps"][1]["given"],
+        serde_json::json!([-0.48, 0.0, -0.88])
+    );
+    assert_eq!(rows[1]["steps"]["first_wrong"]["name"], "cos_theta");
+    assert_eq!(rows[1]["steps"]["first_wrong"]["equation"], "4.7");
+    // The answer is the reading's: half of the point, whatever the steps.
+    assert_eq!(rows[1]["verdict"], "reading");
+    assert_eq!(rows[1]["points"], 0.5);
+    // caio: the slip, named.
+    assert_eq!(verdicts(2), [pair("I_l", "wrong")]);
+    assert_eq!(
+        rows[2]["steps"]["steps"][0]["slips"],
+        serde_json::json!(["falloff_quadratic_not_linear"])
+    );
+    assert_eq!(rows[2]["points"], 1.0);
+    // davi, eva: invalid, the batch goes on; fabio has no steps.
+    assert_eq!(rows[3]["verdict"], "invalid");
+    let r = rows[3]["reason"].as_str().unwrap();
+    assert!(
+        r.contains("column \"passos\"") && r.contains("\"cos_teta\""),
+        "{r}"
+    );
+    assert_eq!(rows[4]["verdict"], "invalid");
+    assert!(
+        rows[4]["reason"].as_str().unwrap().contains("\"0,9,8\""),
+        "{}",
+        rows[4]
+    );
+    assert_eq!(rows[5]["verdict"], "right");
+    assert_eq!(rows[5]["steps"], Value::Null);
+    assert_eq!(rows[5]["steps_text"], "");
+}
+
+#[test]
+fn step_feedback_in_portuguese() {
+    let dir = exercises();
+    let csv = "aluno;exercício;resposta;passos\nbia;4.2;0,299 0,361 0,318;cos_theta=0,98995\n";
+    let input = tempfile::NamedTempFile::new().unwrap();
+    std::fs::write(input.path(), csv).unwrap();
+    let out = phong()
+        .arg("grade")
+        .arg(input.path())
+        .arg("--exercises")
+        .arg(dir.path())
+        .args(["--format", "json", "--lang", "pt"])
+        .output()
+        .unwrap();
+    let json: Value = serde_json::from_slice(&out.stdout).unwrap();
+    let f = json["rows"][0]["feedback"].as_str().unwrap();
+    assert!(
+        f.contains(
+            "Passo cos_theta[0] = 0.98995: errado como enunciado, certo na leitura \
+             provavelmente pretendida"
+        ),
+        "{f}"
+    );
+    assert!(
+        f.contains("Primeiro passo errado como enunciado: cos_theta[0]"),
+        "{f}"
+    );
+}
+
+#[test]
+fn a_header_of_column_names_without_the_answer_is_a_row_saying_so() {
+    let dir = exercises();
+    // Before: "aluno;exercício;passos" was read as a row (exercise "exercício" unknown) and the
+    // steps column could not be named. Now it is an invalid line that counts for no one, saying
+    // which column is missing, and the rows after it are read as student, exercise, answer.
+    let csv = "aluno;exercício;passos\nana;4.1;0,5 0,7 0,3\n";
+    let (code, out) = grade(csv.as_bytes(), dir.path(), "json");
+    assert_eq!(code, 0);
+    let json: Value = serde_json::from_str(&out).unwrap();
+    let rows = json["rows"].as_array().unwrap();
+    assert_eq!(rows.len(), 2);
+    assert_eq!(rows[0]["verdict"], "invalid");
+    assert_eq!(rows[0]["counted"], false);
+    let r = rows[0]["reason"].as_str().unwrap();
+    assert!(
+        r.starts_with("the header names no answer column. Fix: name the columns"),
+        "{r}"
+    );
+    assert!(
+        !rows[0]["feedback"].as_str().unwrap().contains("no student"),
+        "{}",
+        rows[0]
+    );
+    assert_eq!(rows[1]["verdict"], "right");
+    assert_eq!(json["students"].as_array().unwrap().len(), 1);
+    // A column named twice.
+    let (_, out) = grade(
+        b"student,exercise,answer,answer\na,4.1,0.5 0.7 0.3\n",
+        dir.path(),
+        "json",
+    );
+    let json: Value = serde_json::from_str(&out).unwrap();
+    let r = json["rows"][0]["reason"].as_str().unwrap();
+    assert!(
+        r.starts_with("the header names the answer column twice"),
+        "{r}"
+    );
+}

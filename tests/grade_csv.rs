@@ -243,7 +243,34 @@ fn the_report_is_written_before_the_summary_line_and_a_semicolon_file_exits_0() 
         .stdout(predicates::str::contains(
             "1,2,ana,4.1,\"0,5 0,7 0,3\",right",
         ))
-        .stderr(predicates::str::contains("graded 1 rows: 1 right"));
+        .stderr(predicates::str::contains("graded 1 row: 1 right"));
+}
+
+#[test]
+fn the_summary_line_of_one_row_is_in_the_singular_in_both_languages() {
+    let dir = tempfile::tempdir().unwrap();
+    let input = dir.path().join("turma.csv");
+    std::fs::write(&input, "aluno;exercício;resposta\nana;4.1;0,5 0,7 0,3\n").unwrap();
+    for (lang, line) in [
+        (
+            "en",
+            "graded 1 row: 1 right, 0 by the likely intended reading, 0 wrong, 0 invalid",
+        ),
+        (
+            "pt",
+            "1 linha avaliada: 1 certa, 0 pela leitura provavelmente pretendida, 0 erradas, \
+             0 inválidas",
+        ),
+    ] {
+        Command::cargo_bin("phong")
+            .unwrap()
+            .args(["grade", "--lang", lang, "--exercises"])
+            .arg(folder())
+            .arg(&input)
+            .assert()
+            .code(0)
+            .stderr(predicates::str::contains(line));
+    }
 }
 
 // ---------------------------------------------------------------- the property

@@ -883,3 +883,235 @@ fn the_rarer_errors_speak_portuguese_too() {
         runs.len()
     );
 }
+
+/// `text` without the step names a fix lists (the names to type, not prose): from "use um de "
+/// to " (o de uma", and from "confira um passo que ele tem: " to the next ";".
+fn without_step_names(text: &str) -> String {
+    let mut out = String::new();
+    let mut rest = text;
+    while let (Some(a), Some(b)) = (rest.find("use um de "), rest.find(" (o de uma")) {
+        if b < a {
+            break;
+        }
+        out.push_str(&rest[..a]);
+        rest = &rest[b..];
+    }
+    out.push_str(rest);
+    const HAS: &str = "confira um passo que ele tem: ";
+    if let Some(a) = out.find(HAS) {
+        let end = out[a..].find(';').map_or(out.len(), |e| a + e);
+        out.replace_range(a + HAS.len()..end, "");
+    }
+    out
+}
+
+#[test]
+fn grade_and_its_own_errors_speak_portuguese() {
+    let english = english_words();
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let ex = d.join("exercicios");
+    std::fs::create_dir(&ex).unwrap();
+    for f in ["4.1.json", "4.2.json", "4.3.json"] {
+        std::fs::copy(root().join("exercises").join(f), ex.join(f)).unwrap();
+    }
+    std::fs::write(ex.join("quebrado.json"), "{ \"lights\": [").unwrap();
+    let ex = ex.to_str().unwrap().to_owned();
+    let write = |name: &str, bytes: &[u8]| {
+        let p = d.join(name);
+        std::fs::write(&p, bytes).unwrap();
+        p.to_str().unwrap().to_owned()
+    };
+    // Every kind of row `grade` cannot judge, and its notes (duplicates, no student, steps).
+    let mut rows = b"student,exercise,answer,steps\n\
+        a,4.1,0.5 0.7 0.3\n\
+        b,4.1,0.5,0.7,0.3\n\
+        c,4.1\n\
+        e,4.1,\"0 0 0\n\
+        f,4.1,\"0 0 0\"x\n\
+        g,,0 0 0\n\
+        h,4.9,0 0 0\n\
+        i,quebrado,0 0 0\n\
+        j,4.1,meio\n\
+        k,4.2,0 0 0,cos_thet=0.5\n\
+        l,4.2,0 0 0,cos_theta=abc\n\
+        m,4.2,0 0 0,cos_psi=0.5\n\
+        n,4.3,nenhuma,cos_theta[0]=0.5\n\
+        o,4.2,0 0 0,R=0.5\n\
+        q,4.1,0.5 0.7 0.3,0.5\n\
+        s;4.1;0 0 0\n\
+        ,4.1,0.5 0.7 0.3\n\
+        p,4.1,0.4 0.7 0.3\n\
+        p,4.1,0.5 0.7 0.3\n\
+        t,4.2,0.299 0.361 0.318,cos_theta=0.98995; I_l=0.125 0.125 0.125\n"
+        .to_vec();
+    rows.extend_from_slice(b"d\xff,4.1,0 0 0\nr,4.1,0\x00 0 0\n");
+    let rows = write("turma.csv", &rows);
+    let header = write(
+        "cabecalho.csv",
+        "aluno;exercício;passos\nana;4.1;0,5 0,7 0,3\n".as_bytes(),
+    );
+    let plain = write(
+        "simples.csv",
+        b"aluno,exercicio,resposta\nana,4.1,0.5 0.7 0.3\n",
+    );
+    let many = write("muitas.csv", &b"a\n".repeat(1_000_001));
+    let bad_json = write("rubrica-ruim.json", b"{\"points\": {\"4.1\": 1}");
+    let unknown = write("rubrica-campo.json", br#"{"pontos": {"4.1": 1}}"#);
+    let negative = write("rubrica-negativa.json", br#"{"points": {"4.1": -1}}"#);
+    let credit = write("rubrica-credito.json", br#"{"reading_credit": 2}"#);
+    let occupied = write("ocupado", b"x");
+    let missing_dir = d.join("pasta-inexistente").join("relatorio.csv");
+    let missing_dir = missing_dir.to_str().unwrap();
+    let missing_summary = d.join("pasta-inexistente").join("resumo.csv");
+    let missing_summary = missing_summary.to_str().unwrap();
+    let grade = |extra: &[&str]| -> Vec<String> {
+        let mut v: Vec<String> = ["grade", "--lang", "pt", "--exercises", &ex]
+            .iter()
+            .map(|s| (*s).to_owned())
+            .collect();
+        v.extend(extra.iter().map(|s| (*s).to_owned()));
+        v
+    };
+    // The runs whose errors stop `grade` (each its own template), and those that write reports.
+    let errors: Vec<(&str, Vec<String>)> = vec![
+        (
+            "not a folder",
+            vec![
+                "grade".into(),
+                "--lang".into(),
+                "pt".into(),
+                "--exercises".into(),
+                "sem-pasta".into(),
+                plain.clone(),
+            ],
+        ),
+        ("no such file", grade(&["arquivo-inexistente.csv"])),
+        ("too many rows", grade(&[&many])),
+        ("--points without =", grade(&[&plain, "--points", "4.1"])),
+        (
+            "--points not a number",
+            grade(&[&plain, "--points", "4.1=x"]),
+        ),
+        ("--points negative", grade(&[&plain, "--points", "4.1=-1"])),
+        (
+            "--reading-credit 2",
+            grade(&[&plain, "--reading-credit", "2"]),
+        ),
+        (
+            "--rubric missing",
+            grade(&[&plain, "--rubric", "rubrica-inexistente.json"]),
+        ),
+        ("--rubric syntax", grade(&[&plain, "--rubric", &bad_json])),
+        (
+            "--rubric unknown field",
+            grade(&[&plain, "--rubric", &unknown]),
+        ),
+        ("--rubric negative", grade(&[&plain, "--rubric", &negative])),
+        ("--rubric credit", grade(&[&plain, "--rubric", &credit])),
+        ("-o the input", grade(&[&plain, "-o", &plain])),
+        (
+            "-o in a missing folder",
+            grade(&[&plain, "-o", missing_dir]),
+        ),
+        (
+            "--summary in a missing folder",
+            grade(&[&plain, "--summary", missing_summary]),
+        ),
+        (
+            "gradescope -o a file as a folder",
+            grade(&[
+                &plain,
+                "--format",
+                "gradescope",
+                "-o",
+                &format!("{occupied}/"),
+            ]),
+        ),
+    ];
+    let reports: Vec<(&str, Vec<String>)> = vec![
+        ("bad rows", grade(&[&rows, "--format", "json"])),
+        (
+            "a header without the answer",
+            grade(&[&header, "--format", "json"]),
+        ),
+        (
+            "not a Moodle export",
+            grade(&[&plain, "--input", "moodle", "--format", "json"]),
+        ),
+    ];
+    let mut failures = Vec::new();
+    let mut messages = BTreeSet::new();
+    for (name, args) in &errors {
+        let args: Vec<&str> = args.iter().map(String::as_str).collect();
+        let (stdout, stderr) = run(&args);
+        if !stderr.starts_with("erro: ") {
+            failures.push(format!("{name}: no error in Portuguese: {stdout}{stderr}"));
+            continue;
+        }
+        let found = english_in(&stderr, &english);
+        if !found.is_empty() {
+            failures.push(format!("{name}: {found:?} in {stderr}"));
+        }
+        let template = stderr
+            .lines()
+            .next()
+            .unwrap_or("")
+            .replace(&*d.to_string_lossy(), "");
+        messages.insert(template);
+    }
+    for (name, args) in &reports {
+        let args: Vec<&str> = args.iter().map(String::as_str).collect();
+        let (stdout, stderr) = run(&args);
+        let found = english_in(&stderr, &english);
+        if !found.is_empty() {
+            failures.push(format!("{name} (stderr): {found:?} in {stderr}"));
+        }
+        let report: serde_json::Value = serde_json::from_str(&stdout)
+            .unwrap_or_else(|e| panic!("{name}: {e}: {stdout}{stderr}"));
+        for row in report["rows"].as_array().unwrap() {
+            let feedback = row["feedback"].as_str().unwrap();
+            let found = english_in(&without_step_names(feedback), &english);
+            if !found.is_empty() {
+                failures.push(format!(
+                    "{name}, row {}: {found:?} in {feedback}",
+                    row["row"]
+                ));
+            }
+        }
+    }
+    assert!(
+        failures.is_empty(),
+        "English with --lang pt:\n{}",
+        failures.join("\n")
+    );
+    assert_eq!(
+        messages.len(),
+        errors.len(),
+        "distinct errors: {messages:#?}"
+    );
+}
+
+#[test]
+fn new_reports_a_file_it_cannot_write_in_portuguese() {
+    let english = english_words();
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().to_str().unwrap().to_owned();
+    // The first run names the file; a folder of that name then stands in its way.
+    let (_, err) = run(&["new", "--kind", "ambient", "--seed", "1", "-o", &out]);
+    assert!(err.is_empty(), "{err}");
+    let name = std::fs::read_dir(dir.path())
+        .unwrap()
+        .next()
+        .unwrap()
+        .unwrap()
+        .path();
+    std::fs::remove_file(&name).unwrap();
+    std::fs::create_dir(&name).unwrap();
+    let (_, err) = run(&[
+        "new", "--kind", "ambient", "--seed", "1", "--lang", "pt", "-o", &out,
+    ]);
+    assert!(err.starts_with("erro:"), "{err}");
+    let leaked = english_in(&err, &english);
+    assert!(leaked.is_empty(), "English in {err:?}: {leaked:?}");
+}

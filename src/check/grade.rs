@@ -8,10 +8,15 @@
 //! line, text after a closing quote, a wrong number of fields, bad UTF-8, a NUL byte, an empty
 //! field), an unknown exercise, a bad exercise file or an unreadable answer gets the verdict
 //! `invalid` with the reason, and the batch goes on. A first line naming the three columns in
-//! English or Portuguese (`aluno;exercício;resposta`, in any order) is a header, not a row. Each
-//! exercise is solved once (with its slips) on first use; grading a row is then a few
-//! comparisons.
+//! English or Portuguese (`aluno;exercício;resposta`, in any order) is a header, not a row; it
+//! may name a fourth column, `steps` (`passos`), whose cell holds a row's step answers
+//! (`cos_theta=0.98995; n_dot_l=-0.98995`, read by [`super::steps::parse_cell`] and judged as
+//! `phong check --step` judges them; they change no points). Each exercise is solved once (with
+//! its slips) on first use, its steps' quantities when a row first gives steps; grading a row is
+//! then a few comparisons.
 
+use std::borrow::Cow;
+use std::cell::OnceCell;
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 
@@ -19,6 +24,7 @@ use serde::Serialize;
 
 use super::report::{scale_number, verdict_code, CHECK_FORMAT_VERSION};
 use super::rubric::{Duplicates, Rubric};
+use super::steps::{self, StepsExpected, StepsOut};
 use super::{answer, judge, messages, Expected, Scale, Slip, Verdict, VerdictKind};
 use crate::report::lang::Lang;
 use crate::solve::ReadingCode;
@@ -152,8 +158,14 @@ pub struct RowOut {
     /// student to the same exercise replaces (`--duplicates`), and for a row without a student.
     pub counted: bool,
     /// One sentence for the student, in the chosen language: the verdict, the slips in words,
-    /// the near miss, the points.
+    /// the near miss, the points; then, for a row with steps, a sentence per step and the first
+    /// wrong one.
     pub feedback: String,
+    /// The steps column, as written (empty: no steps, or no such column).
+    pub steps_text: String,
+    /// The row's steps judged as `phong check --step` judges them, in the order of the
+    /// solution (`null`: no steps). They change no points.
+    pub steps: Option<StepsOut>,
 }
 
 /// One student's points.
@@ -231,6 +243,20 @@ pub struct Unreadable {
 struct Exercise {
     expected: Expected,
     key: Option<answer::Key>,
+    /// The problem, for its steps' quantities.
+    problem: crate::problem::Problem<f64>,
+    /// The exercise file, for errors.
+    path: PathBuf,
+    /// The quantities steps are judged against, solved when a row first gives steps.
+    steps: OnceCell<Result<StepsExpected, String>>,
+}
+
+impl Exercise {
+    fn steps(&self) -> &Result<StepsExpected, String> {
+        self.steps.get_or_init(|| {
+            StepsExpected::of(&self.problem).map_err(|e| e.at(&self.path).to_string())
+        })
+    }
 }
 
 /// The largest submissions file read: 256 MiB (100,000 rows are about 3 MB).
@@ -273,8 +299,8 @@ impl Cache<'_> {
         let path = dir.join(&file);
         let unknown = || {
             format!(
-                "unknown exercise: there is no {} in {}. Fix: name an exercise by its file name \
-                 without .json (e.g. 4.2 for {}/4.2.json)",
+                "unknown exercise: there is no {} in the exercises folder {}. Fix: name an \
+                 exercise by its file name without .json (e.g. 4.2 for {}/4.2.json)",
                 file,
                 dir.display(),
                 dir.display()
@@ -309,7 +335,13 @@ impl Cache<'_> {
         let expected = Expected::of(&problem).map_err(|e| e.at(&path).to_string())?;
         // A key that cannot be read judges nothing here (`phong check` reports it).
         let key = file.answer.as_ref().and_then(|k| answer::from_key(k).ok());
-        Ok(Exercise { expected, key })
+        Ok(Exercise {
+            expected,
+            key,
+            problem,
+            path,
+            steps: OnceCell::new(),
+        })
     }
 }
 
@@ -346,8 +378,7 @@ pub const MAX_ROWS: u64 = 1_000_000;
 /// The submissions as UTF-8 bytes: a UTF-8 byte order mark removed, UTF-16 with its byte order
 /// mark (what spreadsheets save as "Unicode text") decoded. Anything else is taken as UTF-8; a
 /// line that is not is reported as such.
-pub fn decode(bytes: &[u8]) -> std::borrow::Cow<'_, [u8]> {
-    use std::borrow::Cow;
+pub fn decode(bytes: &[u8]) -> Cow<'_, [u8]> {
     if let Some(rest) = bytes.strip_prefix(b"\xEF\xBB\xBF") {
         return Cow::Borrowed(rest);
     }
@@ -483,37 +514,129 @@ fn is_blank(line: &[u8], delimiter: u8) -> bool {
         .all(|&b| b.is_ascii_whitespace() || b == delimiter)
 }
 
-/// The names a header gives each column, in English and Portuguese (compared lowercased).
-const HEADER_NAMES: [&[&str]; 3] = [
+/// The names a header gives each column, in English and Portuguese (compared lowercased): the
+/// three columns of every file, then the optional steps column.
+const HEADER_NAMES: [&[&str]; 4] = [
     &["student", "aluno", "estudante"],
     &["exercise", "exercicio", "exercício", "questao", "questão"],
     &["answer", "resposta"],
+    &["steps", "passos", "etapas"],
 ];
 
-/// The columns a header row names, in its order (`[0, 1, 2]` for student, exercise, answer):
-/// a header is a row of exactly three fields, each naming a different column. A row whose
-/// student is `Student` but whose other fields are data is a row.
-fn header(fields: &[Vec<u8>]) -> Option<[usize; 3]> {
-    if fields.len() != 3 {
-        return None;
+/// The columns, as the reports name them.
+const COLUMNS: [&str; 4] = ["student", "exercise", "answer", "steps"];
+
+/// The fix of a header that is not one.
+const HEADER_FIX: &str = "Fix: name the columns `student` (or `aluno`), `exercise` \
+                          (`exercício`) and `answer` (`resposta`), and, if the rows give steps, \
+                          `steps` (`passos`), each once, in any order";
+
+/// Where each column is in a row: student, exercise and answer, and the optional steps
+/// column with its name as the header writes it.
+#[derive(Clone, Debug, PartialEq)]
+struct Layout {
+    at: [usize; 3],
+    steps: Option<(usize, String)>,
+}
+
+impl Default for Layout {
+    /// student, exercise, answer: a file without a header.
+    fn default() -> Self {
+        Layout {
+            at: [0, 1, 2],
+            steps: None,
+        }
     }
-    let mut order = [usize::MAX; 3];
-    for (at, f) in fields.iter().enumerate() {
-        let name = std::str::from_utf8(f).ok()?.trim().to_lowercase();
-        let column = HEADER_NAMES
-            .iter()
-            .position(|names| names.contains(&name.as_str()))?;
-        if order.contains(&column) {
+}
+
+impl Layout {
+    /// The number of columns.
+    fn width(&self) -> usize {
+        3 + usize::from(self.steps.is_some())
+    }
+
+    /// A row's cells in column order (student, exercise, answer, and the steps when the file
+    /// has that column), or `None` when the row has another number of fields. With a steps
+    /// column, a row may leave out the last cell (a spreadsheet drops an empty last column); and
+    /// when the steps column is the last, fields beyond it whose first holds `=` are its cell
+    /// split at the separator (`ana;4.2;0 0 0;cos_theta=0,98995; n_dot_l=-0,98995` unquoted),
+    /// joined back.
+    fn cells<'a>(&self, fields: &'a [Vec<u8>], delimiter: u8) -> Option<Vec<Cow<'a, [u8]>>> {
+        let width = self.width();
+        let mut f: Vec<Cow<'a, [u8]>> = fields.iter().map(|x| Cow::Borrowed(&x[..])).collect();
+        if let Some((at, _)) = &self.steps {
+            if f.len() + 1 == width {
+                f.push(Cow::Borrowed(&[]));
+            } else if f.len() > width && *at + 1 == width && f[*at].contains(&b'=') {
+                let tail = fields[*at..].join(&[delimiter][..]);
+                f.truncate(*at);
+                f.push(Cow::Owned(tail));
+            }
+        }
+        if f.len() != width {
             return None;
         }
-        order[at] = column;
+        let mut out: Vec<Cow<'a, [u8]>> = self.at.iter().map(|&i| f[i].clone()).collect();
+        if let Some((at, _)) = &self.steps {
+            out.push(std::mem::take(&mut f[*at]));
+        }
+        Some(out)
     }
-    // order[at] is the column at position `at`; the position of each column:
-    let mut position = [0; 3];
-    for (at, &column) in order.iter().enumerate() {
-        position[column] = at;
+}
+
+/// What a first line is.
+#[derive(Debug, PartialEq)]
+enum First {
+    /// A header: the columns it names, in its order.
+    Header(Layout),
+    /// Column names only, but not a header phong can read (a column missing or twice): why.
+    BadHeader(String),
+    /// A row of data.
+    Row,
+}
+
+/// What the first line's fields are. A header is a row of three or four fields, each naming a
+/// different column, student, exercise and answer among them (steps is optional); a line of
+/// two or more fields that are all column names but not such a header is a header phong
+/// refuses, with the reason. A row whose student is `Student` but whose other fields are data
+/// is a row.
+fn header(fields: &[Vec<u8>]) -> First {
+    let mut columns = Vec::with_capacity(fields.len());
+    let mut names = Vec::with_capacity(fields.len());
+    for f in fields {
+        let Ok(text) = std::str::from_utf8(f) else {
+            return First::Row;
+        };
+        let name = text.trim().to_lowercase();
+        let Some(column) = HEADER_NAMES
+            .iter()
+            .position(|names| names.contains(&name.as_str()))
+        else {
+            return First::Row;
+        };
+        columns.push(column);
+        names.push(text.trim().to_owned());
     }
-    Some(position)
+    if columns.len() < 2 {
+        return First::Row;
+    }
+    if let Some(twice) = (0..4).find(|c| columns.iter().filter(|&x| x == c).count() > 1) {
+        return First::BadHeader(format!(
+            "the header names the {} column twice. {HEADER_FIX}",
+            COLUMNS[twice]
+        ));
+    }
+    if let Some(missing) = (0..3).find(|c| !columns.contains(c)) {
+        return First::BadHeader(format!(
+            "the header names no {} column. {HEADER_FIX}",
+            COLUMNS[missing]
+        ));
+    }
+    let position = |column: usize| columns.iter().position(|&c| c == column);
+    First::Header(Layout {
+        at: [0, 1, 2].map(|c| position(c).expect("checked above")),
+        steps: position(3).map(|at| (at, names[at].clone())),
+    })
 }
 
 /// The separator of the submissions: the one under which the first line that holds data is a
@@ -530,7 +653,7 @@ pub fn delimiter(text: &[u8]) -> u8 {
         return b',';
     };
     for d in CANDIDATES {
-        if fields(first, d).is_ok_and(|f| header(&f).is_some()) {
+        if fields(first, d).is_ok_and(|f| header(&f) != First::Row) {
             return d;
         }
     }
@@ -588,7 +711,7 @@ pub fn grade_bytes(bytes: &[u8], options: &Options) -> Report {
         };
         forced = Some(b',');
         match super::moodle::to_rows(&decoded, &questions) {
-            Ok(rows) => std::borrow::Cow::Owned(rows),
+            Ok(rows) => Cow::Owned(rows),
             Err(why) => {
                 let mut row = blank_row(1, 1);
                 row.counted = false;
@@ -613,7 +736,7 @@ pub fn grade_bytes(bytes: &[u8], options: &Options) -> Report {
         solved: BTreeMap::new(),
     };
     let mut rows = Vec::new();
-    let mut order = [0, 1, 2];
+    let mut layout = Layout::default();
     let mut first = true;
     for (line, content) in lines(&text) {
         if is_blank(content, d) {
@@ -621,21 +744,26 @@ pub fn grade_bytes(bytes: &[u8], options: &Options) -> Report {
         }
         let parsed = fields(content, d);
         if std::mem::take(&mut first) {
-            if let Some(o) = parsed.as_ref().ok().and_then(|f| header(f)) {
-                order = o;
-                continue;
+            match parsed.as_ref().map(|f| header(f)) {
+                Ok(First::Header(l)) => {
+                    layout = l;
+                    continue;
+                }
+                // Reported in the header's place (no line is dropped); the rows after it are
+                // read as student, exercise, answer. It is no student's.
+                Ok(First::BadHeader(why)) => {
+                    let mut row = blank_row(rows.len() + 1, line);
+                    row.counted = false;
+                    mark_invalid(&mut row, why, options.lang);
+                    rows.push(row);
+                    continue;
+                }
+                _ => {}
             }
         }
         let mut row = blank_row(rows.len() + 1, line);
         match parsed {
-            Ok(f) => {
-                let by_column: Vec<&[u8]> = if f.len() == 3 {
-                    order.iter().map(|&at| f[at].as_slice()).collect()
-                } else {
-                    f.iter().map(Vec::as_slice).collect()
-                };
-                grade_row(&mut row, &by_column, d, options, &mut cache);
-            }
+            Ok(f) => grade_row(&mut row, &f, &layout, d, options, &mut cache),
             Err(e) => {
                 row.student = echo(content.split(|&b| b == d).next().unwrap_or_default());
                 let reason = format!("the row cannot be read as CSV: {e}");
@@ -677,6 +805,10 @@ fn count_duplicates(
     let mut order: Vec<String> = Vec::new();
     let mut seen: BTreeMap<String, usize> = BTreeMap::new();
     for (i, r) in rows.iter_mut().enumerate() {
+        // A row that counts for no one from the start: a header phong refuses.
+        if !r.counted {
+            continue;
+        }
         if r.student.is_empty() {
             r.counted = false;
             r.feedback.insert_str(0, messages::no_student(lang));
@@ -770,31 +902,45 @@ fn blank_row(row: usize, line: u64) -> RowOut {
         max_points: None,
         counted: true,
         feedback: String::new(),
+        steps_text: String::new(),
+        steps: None,
     }
 }
 
 fn grade_row(
     row: &mut RowOut,
-    fields: &[&[u8]],
+    fields: &[Vec<u8>],
+    layout: &Layout,
     delimiter: u8,
     options: &Options,
     cache: &mut Cache,
 ) {
-    row.student = fields.first().map_or_else(String::new, |f| echo(f));
-    row.exercise = fields.get(1).map_or_else(String::new, |f| echo(f));
-    row.answer = fields.get(2).map_or_else(String::new, |f| echo(f));
-    const COLUMNS: [&str; 3] = ["student", "exercise", "answer"];
+    let cells = layout.cells(fields, delimiter);
+    // The cells by column; a row of another width, as its fields come.
+    let cell = |column: usize| -> &[u8] {
+        match &cells {
+            Some(c) => c.get(column).map_or(&[][..], |x| &x[..]),
+            None => fields.get(column).map_or(&[][..], |x| &x[..]),
+        }
+    };
+    row.student = echo(cell(0));
+    row.exercise = echo(cell(1));
+    row.answer = echo(cell(2));
+    if layout.steps.is_some() {
+        row.steps_text = echo(cell(3));
+    }
     let invalid = |row: &mut RowOut, reason: String| mark_invalid(row, reason, options.lang);
-    if fields.len() != 3 {
+    let width = layout.width();
+    let Some(cells) = &cells else {
         let name = |d: u8| match d {
-            b'\t' => "a tab".to_owned(),
+            b'\t' => "a tab character".to_owned(),
             d => format!("'{}'", d as char),
         };
         let other = [b',', b';', b'\t']
             .into_iter()
             .find(|&o| o != delimiter && fields.iter().any(|f| f.contains(&o)));
         let hint = match other {
-            Some(o) if fields.len() < 3 => format!(
+            Some(o) if fields.len() < width => format!(
                 "; the fields are read as separated by {}, and this row has {}: give \
                  --delimiter {}",
                 name(delimiter),
@@ -805,22 +951,31 @@ fn grade_row(
                     (o as char).to_string()
                 }
             ),
-            _ if fields.len() > 3 => format!(
+            _ if fields.len() > width && width == 3 => format!(
                 "; an answer written with {} must be quoted: \"0.52, 0.03, 0\"",
+                name(delimiter)
+            ),
+            _ if fields.len() > width => format!(
+                "; an answer or a steps cell written with {} must be quoted: \"0.52, 0.03, 0\"",
                 name(delimiter)
             ),
             _ => String::new(),
         };
+        let expected = if width == 3 {
+            "expected 3 (student, exercise, answer)"
+        } else {
+            "expected 4 (student, exercise, answer, steps)"
+        };
         return invalid(
             row,
             format!(
-                "the row has {} field{}, expected 3 (student, exercise, answer){hint}",
+                "the row has {} field{}, {expected}{hint}",
                 fields.len(),
                 if fields.len() == 1 { "" } else { "s" }
             ),
         );
-    }
-    for (name, f) in COLUMNS.iter().zip(fields) {
+    };
+    for (name, f) in COLUMNS.iter().zip(cells) {
         if std::str::from_utf8(f).is_err() {
             return invalid(row, format!("the {name} field is not valid UTF-8"));
         }
@@ -840,10 +995,11 @@ fn grade_row(
     if let Some(i) = empty {
         return invalid(row, format!("the {} field is empty", COLUMNS[i]));
     }
-    let Exercise { expected, key } = match cache.get(&row.exercise) {
+    let exercise = match cache.get(&row.exercise) {
         Ok(e) => e,
         Err(e) => return invalid(row, e.clone()),
     };
+    let Exercise { expected, key, .. } = exercise;
     row.max_points = Some(options.rubric.points_of(&row.exercise));
     let mut a = match answer::parse(&row.answer, options.scale) {
         Ok(a) => a,
@@ -855,6 +1011,36 @@ fn grade_row(
             row.scale_detected = true;
         }
     }
+    // The steps, read and judged against the exercise's quantities; a step that cannot be read
+    // or judged is the row's error, naming the row, the column, the step as written and the fix.
+    let judged = match &layout.steps {
+        Some((_, column)) if !row.steps_text.is_empty() => {
+            let at = |row: &RowOut, why: String| {
+                format!(
+                    "the steps of row {} (line {}, column \"{column}\"): {why}",
+                    row.row, row.line
+                )
+            };
+            let given = match steps::parse_cell(&row.steps_text) {
+                Ok(g) => g,
+                Err(e) => return invalid(row, at(row, e.message)),
+            };
+            if given.is_empty() {
+                // Separators only (`;`): no steps.
+                None
+            } else {
+                let x = match exercise.steps() {
+                    Ok(x) => x,
+                    Err(e) => return invalid(row, e.clone()),
+                };
+                match steps::judge_steps(x, &given, options.strict) {
+                    Ok(j) => Some(j),
+                    Err(e) => return invalid(row, at(row, e)),
+                }
+            }
+        }
+        _ => None,
+    };
     let tolerance = options
         .tolerance
         .or_else(|| key.and_then(|k| k.tolerance_on(a.scale)))
@@ -897,6 +1083,11 @@ fn grade_row(
         },
         options.lang,
     );
+    if let Some(j) = judged {
+        row.feedback.push(' ');
+        row.feedback.push_str(&steps::feedback(&j, options.lang));
+        row.steps = Some(steps::steps_json(&j));
+    }
 }
 
 /// Three whole numbers 0–255, one of them above 1: 8-bit values rather than a 0–1 colour.
@@ -1000,6 +1191,9 @@ pub fn rows_csv(report: &Report) -> Vec<u8> {
         "max_points",
         "counted",
         "feedback",
+        "steps_text",
+        "step_verdicts",
+        "first_wrong_step",
     ];
     w.write_record(header).expect("writing to memory");
     for r in &report.rows {
@@ -1045,10 +1239,48 @@ pub fn rows_csv(report: &Report) -> Vec<u8> {
             r.max_points.map_or(String::new(), number),
             r.counted.to_string(),
             safe_cell(&r.feedback),
+            safe_cell(&r.steps_text),
+            r.steps.as_ref().map_or(String::new(), step_verdicts),
+            r.steps
+                .as_ref()
+                .and_then(|s| s.first_wrong.as_ref())
+                .map_or(String::new(), |f| step_label(f.name, f.light)),
         ])
         .expect("writing to memory");
     }
     w.into_inner().expect("writing to memory")
+}
+
+/// A step's name with its light: `cos_theta[0]`.
+fn step_label(name: &str, light: Option<usize>) -> String {
+    match light {
+        Some(i) => format!("{name}[{i}]"),
+        None => name.to_owned(),
+    }
+}
+
+/// The `step_verdicts` cell: each step's name and verdict in the order of the solution, a wrong
+/// one's slips in brackets (`d[0]=right; I_l[0]=wrong(falloff_quadratic_not_linear)`).
+fn step_verdicts(s: &StepsOut) -> String {
+    s.steps
+        .iter()
+        .map(|x| {
+            let mut cell = format!("{}={}", step_label(x.name, x.light), x.verdict.code());
+            if !x.slips.is_empty() {
+                cell.push('(');
+                cell.push_str(
+                    &x.slips
+                        .iter()
+                        .map(|s| s.code())
+                        .collect::<Vec<_>>()
+                        .join("|"),
+                );
+                cell.push(')');
+            }
+            cell
+        })
+        .collect::<Vec<_>>()
+        .join("; ")
 }
 
 /// The summary per exercise as CSV.

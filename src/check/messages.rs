@@ -541,6 +541,48 @@ pub fn all_steps_right(lang: Lang) -> &'static str {
     }
 }
 
+/// One step of a row in `phong grade`'s feedback: "Step cos_theta[0] = 0.98995: right (…)".
+pub(crate) fn step_sentence(label: &str, value: &str, message: &str, lang: Lang) -> String {
+    match lang {
+        Lang::En => format!("Step {label} = {value}: {message}"),
+        Lang::Pt => format!("Passo {label} = {value}: {message}"),
+    }
+}
+
+/// The line `phong grade` ends with on standard error: how many rows, and of each verdict.
+pub(crate) fn graded(
+    rows: usize,
+    right: usize,
+    reading: usize,
+    wrong: usize,
+    invalid: usize,
+    lang: Lang,
+) -> String {
+    // One row, one verdict: the singular (Portuguese agrees the adjective too).
+    let one = |n: usize, singular: &'static str, plural: &'static str| {
+        if n == 1 {
+            singular
+        } else {
+            plural
+        }
+    };
+    match lang {
+        Lang::En => format!(
+            "graded {rows} {}: {right} right, {reading} by the likely intended reading, \
+             {wrong} wrong, {invalid} invalid",
+            one(rows, "row", "rows")
+        ),
+        Lang::Pt => format!(
+            "{rows} {}: {right} {}, {reading} pela leitura provavelmente pretendida, \
+             {wrong} {}, {invalid} {}",
+            one(rows, "linha avaliada", "linhas avaliadas"),
+            one(right, "certa", "certas"),
+            one(wrong, "errada", "erradas"),
+            one(invalid, "inválida", "inválidas"),
+        ),
+    }
+}
+
 /// The tolerance of steps.
 pub fn step_tolerance(relative: f64, absolute: f64, lang: Lang) -> String {
     use crate::report::number::num;
@@ -578,8 +620,10 @@ pub(crate) fn feedback(f: &RowFacts, lang: Lang) -> String {
     match f.verdict {
         None => {
             parts.push(invalid(lang).to_owned());
+            // The reason is English (the report's `reason` column); the feedback says it in
+            // `lang`, through the errors' catalogue.
             if let Some(r) = f.reason {
-                parts.push(r.to_owned());
+                parts.push(crate::report::messages::error_in(r, lang));
             }
         }
         Some(v) => {

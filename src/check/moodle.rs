@@ -59,6 +59,18 @@ fn quoted(text: &str) -> String {
     format!("\"{}\"", text.replace('"', "\"\""))
 }
 
+/// What the CSV reader found wrong, in words the errors' catalogue translates: text that is not
+/// UTF-8 (the reader's only error on text in memory read flexibly), else the reader's own words.
+fn csv_error(e: &csv::Error) -> String {
+    match e.kind() {
+        csv::ErrorKind::Utf8 { pos, .. } => format!(
+            "line {} is not UTF-8 text. Fix: save the export as UTF-8 (CSV UTF-8)",
+            pos.as_ref().map_or(0, csv::Position::line)
+        ),
+        _ => e.to_string(),
+    }
+}
+
 /// The export as `student,exercise,answer` CSV text (a header, then a row per answered
 /// question); `questions[N-1]` is the exercise of slot N. Errors say what is missing.
 pub fn to_rows(text: &[u8], questions: &[String]) -> Result<Vec<u8>, String> {
@@ -68,7 +80,12 @@ pub fn to_rows(text: &[u8], questions: &[String]) -> Result<Vec<u8>, String> {
         .from_reader(text);
     let header = reader
         .headers()
-        .map_err(|e| format!("the Moodle export's header cannot be read: {e}"))?
+        .map_err(|e| {
+            format!(
+                "the Moodle export's header cannot be read: {}",
+                csv_error(&e)
+            )
+        })?
         .clone();
     let find = |names: &[&str]| {
         header
@@ -89,11 +106,16 @@ pub fn to_rows(text: &[u8], questions: &[String]) -> Result<Vec<u8>, String> {
         .filter_map(|(at, h)| response_slot(h).map(|n| (at, n)))
         .collect();
     if slots.is_empty() {
-        return Err("the Moodle export has no \"Response 1\" column".into());
+        return Err(
+            "the Moodle export has no \"Response 1\" column. Fix: download the quiz's \
+                    Responses report as CSV, or give --input csv for a plain CSV"
+                .into(),
+        );
     }
     let mut out = String::from("student,exercise,answer\n");
     for record in reader.records() {
-        let record = record.map_err(|e| format!("the Moodle export cannot be read: {e}"))?;
+        let record =
+            record.map_err(|e| format!("the Moodle export cannot be read: {}", csv_error(&e)))?;
         let cell = |at: Option<usize>| at.and_then(|a| record.get(a)).unwrap_or("").trim();
         let name = format!("{} {}", cell(first), cell(surname));
         let student = match cell(email) {

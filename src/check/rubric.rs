@@ -47,7 +47,7 @@ fn check_points(name: &str, p: f64) -> Result<f64, String> {
         Ok(p)
     } else {
         Err(format!(
-            "the points of {name} are {p}: points must be a number 0 or more"
+            "the points of {name} ({p}) must be a number 0 or more"
         ))
     }
 }

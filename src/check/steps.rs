@@ -317,6 +317,60 @@ pub fn parse_step(text: &str) -> Result<GivenStep, BadStep> {
     parse_named(name, value)
 }
 
+/// Reads a cell of step answers, as `phong grade`'s steps column holds them: `NAME=VALUE`
+/// pairs separated by `;` (`cos_theta=0.98995; R=0.6 0 0.8`). A step begins with its name (no
+/// spaces in it) and `=`, so spaces or commas may separate steps too (`cos_theta=0,98995
+/// n_dot_l=-0,98995`, as a `,` file's cells joined back give): a value is everything up to the
+/// separator before the next step's name, one number (a decimal comma is read as a point) or
+/// three (spaces, commas, semicolons, brackets). An empty cell is no steps. An error quotes the
+/// step as written.
+pub fn parse_cell(text: &str) -> Result<Vec<GivenStep>, BadStep> {
+    let sep = |c: char| c == ';' || c == ',' || c.is_whitespace();
+    let cell = text.trim_matches(sep);
+    if cell.is_empty() {
+        return Ok(Vec::new());
+    }
+    let parts: Vec<&str> = cell.split('=').collect();
+    if parts.len() < 2 {
+        return Err(bad(format!(
+            "\"{cell}\" is not NAME=VALUE. Fix: write each step as its name, = and its value, \
+             separated by ;, such as cos_theta=0.98995; R=0.6 0 0.8"
+        )));
+    }
+    // parts[0] is the first name; every later part but the last is a value, a separator and
+    // the next name; the last is a value.
+    let mut names = vec![parts[0].trim()];
+    let mut values = Vec::new();
+    let last = parts.len() - 1;
+    for (i, part) in parts.iter().enumerate().skip(1) {
+        if i == last {
+            values.push(part.trim_matches(sep));
+            continue;
+        }
+        let part = part.trim_end();
+        match part.char_indices().rev().find(|&(_, c)| sep(c)) {
+            Some((k, c)) => {
+                values.push(part[..k].trim_matches(sep));
+                names.push(&part[k + c.len_utf8()..]);
+            }
+            None => {
+                return Err(bad(format!(
+                    "\"{}={part}=…\": a value runs into the next step's name. Fix: separate \
+                     the steps with ;, such as cos_theta=0.98995; n_dot_l=-0.98995",
+                    names[names.len() - 1]
+                )))
+            }
+        }
+    }
+    names
+        .iter()
+        .zip(&values)
+        .map(|(name, value)| {
+            parse_named(name, value).map_err(|e| bad(format!("\"{name}={value}\": {e}")))
+        })
+        .collect()
+}
+
 /// Reads a `--steps` file: one JSON object of names and values, a value a number, an array of
 /// three numbers, or a string as `--step` takes it: `{"cos_theta": 0.98995, "R": [0.6, 0,
 /// 0.8], "cos_theta[1]": "3/5"}`.
@@ -798,7 +852,7 @@ pub fn check_steps(path: &Path, given: &[GivenStep], strict: bool) -> StepsCheck
 }
 
 /// "Eq. 4.7: cos θ = −N·L", or the formula alone.
-fn equation(q: &Quantity, lang: Lang) -> String {
+pub(crate) fn equation(q: &Quantity, lang: Lang) -> String {
     let eq = match lang {
         Lang::En => "Eq.",
         Lang::Pt => "Eq.",
@@ -906,8 +960,64 @@ pub fn text(c: &StepsChecked, lang: Lang) -> String {
     out
 }
 
+/// The steps of one row of `phong grade`, as its feedback says them: a sentence per step (its
+/// name and light, the value given, its verdict with the equation and what the value is), then
+/// the first wrong step, or that every step is right.
+pub(crate) fn feedback(j: &StepsJudged, lang: Lang) -> String {
+    let mut sentences: Vec<String> = j
+        .steps
+        .iter()
+        .map(|s| {
+            messages::step_sentence(
+                &s.label(),
+                &s.given.value.text(),
+                &step_message(s, lang),
+                lang,
+            )
+        })
+        .collect();
+    let closing = match j.first_wrong {
+        Some(k) => {
+            let s = &j.steps[k];
+            messages::first_wrong(
+                &s.label(),
+                &equation(&s.expected, lang),
+                s.verdict == StepVerdict::Reading,
+                lang,
+            )
+        }
+        None => messages::all_steps_right(lang).to_owned(),
+    };
+    sentences.push(capitalised(&closing));
+    sentences
+        .iter()
+        .map(|s| format!("{s}."))
+        .collect::<Vec<_>>()
+        .join(" ")
+}
+
+/// `text` with its first letter in upper case.
+fn capitalised(text: &str) -> String {
+    let mut chars = text.chars();
+    match chars.next() {
+        Some(first) => first.to_uppercase().chain(chars).collect(),
+        None => String::new(),
+    }
+}
+
+impl StepVerdict {
+    /// The verdict's code, as the JSON writes it: `right`, `reading` or `wrong`.
+    pub fn code(self) -> &'static str {
+        match self {
+            StepVerdict::Right => "right",
+            StepVerdict::Reading => "reading",
+            StepVerdict::Wrong => "wrong",
+        }
+    }
+}
+
 /// One step, for scripts.
-#[derive(Serialize)]
+#[derive(Clone, Debug, Serialize)]
 pub struct StepOut {
     /// The step's name (`cos_theta`).
     pub name: &'static str,
@@ -943,7 +1053,7 @@ pub struct StepOut {
 }
 
 /// The first wrong step, for scripts.
-#[derive(Serialize)]
+#[derive(Clone, Debug, Serialize)]
 pub struct FirstWrongOut {
     /// The step's name.
     pub name: &'static str,
@@ -956,7 +1066,7 @@ pub struct FirstWrongOut {
 }
 
 /// The tolerance of every step.
-#[derive(Serialize)]
+#[derive(Clone, Debug, Serialize)]
 pub struct StepToleranceOut {
     /// The fraction of the quantity's size accepted (0.01).
     pub relative: f64,
@@ -965,7 +1075,7 @@ pub struct StepToleranceOut {
 }
 
 /// A file's steps, for scripts.
-#[derive(Serialize)]
+#[derive(Clone, Debug, Serialize)]
 pub struct StepsOut {
     /// Every step right, or the likely intended reading's without `--strict` (exit 0).
     pub accepted: bool,
@@ -1074,5 +1184,63 @@ pub fn document(c: &StepsChecked) -> StepsDocument {
             error: Some(f.clone()),
             warnings: Vec::new(),
         },
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn names(cell: &str) -> Vec<(String, Value)> {
+        parse_cell(cell)
+            .unwrap()
+            .into_iter()
+            .map(|g| (g.text, g.value))
+            .collect()
+    }
+
+    #[test]
+    fn a_cell_of_steps_reads_with_any_separator_and_decimal_commas() {
+        let two = vec![
+            ("cos_theta".to_owned(), Value::Scalar(0.98995)),
+            ("n_dot_l".to_owned(), Value::Scalar(-0.98995)),
+        ];
+        assert_eq!(names("cos_theta=0.98995; n_dot_l=-0.98995"), two);
+        assert_eq!(names("cos_theta=0,98995;n_dot_l=-0,98995;"), two);
+        assert_eq!(names("cos_theta = 0,98995  n_dot_l = -0,98995"), two);
+        assert_eq!(names("cos_theta=0.98995, n_dot_l=-0.98995"), two);
+        let r = Value::Vector([-0.48, 0.0, -0.88]);
+        for cell in [
+            "R=-0.48,0,-0.88",
+            "R=-0,48 0 -0,88",
+            "R=(-0.48, 0, -0.88)",
+            "R=-0.48;0;-0.88",
+        ] {
+            assert_eq!(names(cell), [("R".to_owned(), r)], "{cell}");
+        }
+        assert_eq!(
+            names("R=-0,48 0 -0,88; cos_theta[0]=3/5"),
+            [
+                ("R".to_owned(), r),
+                ("cos_theta[0]".to_owned(), Value::Scalar(0.6))
+            ]
+        );
+        assert!(names("").is_empty());
+        assert!(names(" ; ").is_empty());
+    }
+
+    #[test]
+    fn a_bad_cell_quotes_the_step_as_written() {
+        let e = |cell: &str| parse_cell(cell).unwrap_err().message;
+        let m = e("cos_theta=0.9; cos_thet=0.5");
+        assert!(
+            m.starts_with("\"cos_thet=0.5\": \"cos_thet\" is not the name"),
+            "{m}"
+        );
+        assert!(m.contains("Fix: use one of"), "{m}");
+        assert!(e("cos_theta=abc").starts_with("\"cos_theta=abc\": \"abc\" is not a value"));
+        assert!(e("0.98995").contains("is not NAME=VALUE"));
+        assert!(e("cos_theta=0.9n_dot_l=1").contains("runs into the next step's name"));
+        assert!(e("R=0.5").contains("R is a vector"));
     }
 }

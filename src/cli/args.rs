@@ -71,6 +71,7 @@ impl Command {
             Command::Check(a) => a.lang,
             Command::Moodle(a) => a.lang,
             Command::New(a) => a.lang,
+            Command::Grade(a) => a.lang,
             _ => Lang::En,
         }
     }

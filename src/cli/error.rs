@@ -140,17 +140,12 @@ pub(crate) fn warn_in(warning: &dyn Display, lang: Lang) {
 }
 
 /// The exit of a step a command goes on after (one file of several): success, or bad input
-/// once its error is printed.
-pub(crate) fn carry_on(step: Result<(), CliError>) -> Exit {
+/// once its error is printed in `lang`.
+pub(crate) fn carry_on_in(step: Result<(), CliError>, lang: Lang) -> Exit {
     match step {
         Ok(()) => Exit::Success,
-        Err(e) => fail(&e),
+        Err(e) => fail_in(&e, lang),
     }
-}
-
-/// Prints an error and gives its exit.
-pub(crate) fn fail(e: &CliError) -> Exit {
-    fail_in(e, Lang::En)
 }
 
 /// Prints an error in `lang` and gives its exit.

@@ -13,7 +13,7 @@
 use std::fmt::Debug;
 use std::ops::{Add, Div, Mul, Sub};
 
-use wide::{f32x8, f64x4, CmpEq, CmpGt, CmpLt};
+use wide::{f32x8, f64x4, CmpEq, CmpGt, CmpLe, CmpLt};
 
 use super::real::{Real, Vector, V3};
 
@@ -185,6 +185,13 @@ impl<L: Wide> W3<L> {
         }
     }
 
+    /// Lane k's vector.
+    #[inline(always)]
+    pub fn at(self, k: usize) -> V3<L::Scalar> {
+        let (x, y, z) = (self.x.to_array(), self.y.to_array(), self.z.to_array());
+        V3::<L::Scalar>::new(x.as_ref()[k], y.as_ref()[k], z.as_ref()[k])
+    }
+
     /// Each component times the lane's `s`.
     #[inline(always)]
     pub fn scale(self, s: L) -> Self {
@@ -232,6 +239,437 @@ impl<L: Wide> Add for W3<L> {
             z: self.z + o.z,
         }
     }
+}
+
+/// A mask over [`Lanes`]: `bool` for one number, a lane mask (all bits set where true) for a
+/// register. The core's gates are written with these, so one source serves both.
+pub trait Mask: Copy + Debug {
+    /// Both masks.
+    fn both(self, o: Self) -> Self;
+    /// Either mask.
+    fn either(self, o: Self) -> Self;
+    /// The complement.
+    fn invert(self) -> Self;
+    /// The set lanes as bits, lane 0 in bit 0.
+    fn lane_bits(self) -> u32;
+    /// Whether any lane is set: the scalar's own `if`, a register's "does any lane need it".
+    #[inline(always)]
+    fn any(self) -> bool {
+        self.lane_bits() != 0
+    }
+}
+
+impl Mask for bool {
+    #[inline(always)]
+    fn both(self, o: Self) -> Self {
+        self && o
+    }
+    #[inline(always)]
+    fn either(self, o: Self) -> Self {
+        self || o
+    }
+    #[inline(always)]
+    fn invert(self) -> Self {
+        !self
+    }
+    #[inline(always)]
+    fn lane_bits(self) -> u32 {
+        u32::from(self)
+    }
+    #[inline(always)]
+    fn any(self) -> bool {
+        self
+    }
+}
+
+/// The numbers the core's arithmetic is written over once ([`crate::core::shade`] and the
+/// lights' arrival): one [`Real`] (its masks `bool`, its vectors glam's) or a register of
+/// [`Wide`] lanes (its masks lane masks, its vectors [`W3`]). Every operation is the IEEE
+/// operation of each lane in the order written, so a lane computes the scalar's bits; a step the
+/// lanes cannot do to the bit (pow, atan2, the robust branches of a length) is done lane by lane
+/// with the scalar code itself ([`Lanes::map_lanes`]), only on the lanes that need it.
+pub trait Lanes:
+    Copy + Debug + Add<Output = Self> + Sub<Output = Self> + Mul<Output = Self> + Div<Output = Self>
+{
+    /// The precision of each lane.
+    type Scalar: Real;
+    /// The masks of the gates: `bool` or a lane mask.
+    type Mask: Mask;
+    /// A vector per lane: glam's `Vec3`/`DVec3` or [`W3`].
+    type V: LaneVec<Self>;
+    /// How many lanes (1 for a scalar).
+    const COUNT: usize;
+    /// Every lane `x`.
+    fn broadcast(x: Self::Scalar) -> Self;
+    /// −x (the sign bit flipped).
+    fn negated(self) -> Self;
+    /// |x|.
+    fn absolute(self) -> Self;
+    /// √x, correctly rounded.
+    fn root(self) -> Self;
+    /// The mask of lanes where `self < o`.
+    fn less(self, o: Self) -> Self::Mask;
+    /// The mask of lanes where `self > o`.
+    fn greater(self, o: Self) -> Self::Mask;
+    /// The mask of lanes where `self == o`.
+    fn equals(self, o: Self) -> Self::Mask;
+    /// The mask of lanes where `self <= o`.
+    fn at_most(self, o: Self) -> Self::Mask;
+    /// Per lane: `t` where `m` is set, `f` elsewhere.
+    fn pick(m: Self::Mask, t: Self, f: Self) -> Self;
+    /// Per lane: the mask `t` where `m` is set, `f` elsewhere.
+    fn pick_mask(m: Self::Mask, t: Self::Mask, f: Self::Mask) -> Self::Mask;
+    /// Every lane set.
+    fn all_lanes() -> Self::Mask;
+    /// Lane k (from 0).
+    fn lane(self, k: usize) -> Self::Scalar;
+    /// `f(k, lane k)` in each lane k set in `m`, the lane as it was elsewhere: the scalar code
+    /// run lane by lane where the lanes cannot compute its bits.
+    fn map_lanes(self, m: Self::Mask, f: impl FnMut(usize, Self::Scalar) -> Self::Scalar) -> Self;
+}
+
+/// A vector per lane of a [`Lanes`] type (glam's vector for a scalar, [`W3`] for a register):
+/// component-wise IEEE operations in glam's order.
+pub trait LaneVec<L: Lanes>: Copy + Debug {
+    /// Every lane `v`.
+    fn broadcast(v: V3<L::Scalar>) -> Self;
+    /// The vector of three components.
+    fn from_parts(x: L, y: L, z: L) -> Self;
+    /// The three components.
+    fn parts(self) -> (L, L, L);
+    /// Lane k's vector.
+    fn lane(self, k: usize) -> V3<L::Scalar>;
+    /// Component-wise sum.
+    #[inline(always)]
+    fn plus(self, o: Self) -> Self {
+        let ((a, b, c), (x, y, z)) = (self.parts(), o.parts());
+        Self::from_parts(a + x, b + y, c + z)
+    }
+    /// Component-wise difference.
+    #[inline(always)]
+    fn minus(self, o: Self) -> Self {
+        let ((a, b, c), (x, y, z)) = (self.parts(), o.parts());
+        Self::from_parts(a - x, b - y, c - z)
+    }
+    /// Component-wise product (the chapter's product of colours).
+    #[inline(always)]
+    fn times(self, o: Self) -> Self {
+        let ((a, b, c), (x, y, z)) = (self.parts(), o.parts());
+        Self::from_parts(a * x, b * y, c * z)
+    }
+    /// Each component times `s`.
+    #[inline(always)]
+    fn scaled(self, s: L) -> Self {
+        let (a, b, c) = self.parts();
+        Self::from_parts(a * s, b * s, c * s)
+    }
+    /// Each component divided by `s`.
+    #[inline(always)]
+    fn divided(self, s: L) -> Self {
+        let (a, b, c) = self.parts();
+        Self::from_parts(a / s, b / s, c / s)
+    }
+    /// Each component negated.
+    #[inline(always)]
+    fn negated(self) -> Self {
+        let (a, b, c) = self.parts();
+        Self::from_parts(a.negated(), b.negated(), c.negated())
+    }
+    /// The dot product, summed as glam sums it: (x·x′ + y·y′) + z·z′.
+    #[inline(always)]
+    fn dot3(self, o: Self) -> L {
+        let ((a, b, c), (x, y, z)) = (self.parts(), o.parts());
+        a * x + b * y + c * z
+    }
+    /// Per lane: `t` where `m` is set, `f` elsewhere.
+    #[inline(always)]
+    fn pick3(m: L::Mask, t: Self, f: Self) -> Self {
+        let ((a, b, c), (x, y, z)) = (t.parts(), f.parts());
+        Self::from_parts(L::pick(m, a, x), L::pick(m, b, y), L::pick(m, c, z))
+    }
+    /// The mask of lanes where every component is 0 (either sign).
+    #[inline(always)]
+    fn zero_mask(self) -> L::Mask {
+        let zero = L::broadcast(<L::Scalar as Real>::ZERO);
+        let (a, b, c) = self.parts();
+        a.equals(zero).both(b.equals(zero)).both(c.equals(zero))
+    }
+    /// `f(k, lane k's vector)` in each lane k set in `m`, the lane as it was elsewhere.
+    fn map_lanes(self, m: L::Mask, f: impl FnMut(usize, V3<L::Scalar>) -> V3<L::Scalar>) -> Self;
+}
+
+/// One number is one lane: the scalar instantiation of the core's arithmetic.
+impl<R: Real> Lanes for R {
+    type Scalar = R;
+    type Mask = bool;
+    type V = V3<R>;
+    const COUNT: usize = 1;
+    #[inline(always)]
+    fn broadcast(x: R) -> Self {
+        x
+    }
+    #[inline(always)]
+    fn negated(self) -> Self {
+        -self
+    }
+    #[inline(always)]
+    fn absolute(self) -> Self {
+        Real::abs(self)
+    }
+    #[inline(always)]
+    fn root(self) -> Self {
+        Real::sqrt(self)
+    }
+    #[inline(always)]
+    fn less(self, o: Self) -> bool {
+        self < o
+    }
+    #[inline(always)]
+    fn greater(self, o: Self) -> bool {
+        self > o
+    }
+    #[inline(always)]
+    fn equals(self, o: Self) -> bool {
+        self == o
+    }
+    #[inline(always)]
+    fn at_most(self, o: Self) -> bool {
+        self <= o
+    }
+    #[inline(always)]
+    fn pick(m: bool, t: Self, f: Self) -> Self {
+        if m {
+            t
+        } else {
+            f
+        }
+    }
+    #[inline(always)]
+    fn pick_mask(m: bool, t: bool, f: bool) -> bool {
+        if m {
+            t
+        } else {
+            f
+        }
+    }
+    #[inline(always)]
+    fn all_lanes() -> bool {
+        true
+    }
+    #[inline(always)]
+    fn lane(self, _: usize) -> R {
+        self
+    }
+    #[inline(always)]
+    fn map_lanes(self, m: bool, mut f: impl FnMut(usize, R) -> R) -> Self {
+        if m {
+            f(0, self)
+        } else {
+            self
+        }
+    }
+}
+
+macro_rules! impl_lane_vec_scalar {
+    ($v:ty, $s:ty) => {
+        impl LaneVec<$s> for $v {
+            #[inline(always)]
+            fn broadcast(v: $v) -> Self {
+                v
+            }
+            #[inline(always)]
+            fn from_parts(x: $s, y: $s, z: $s) -> Self {
+                <$v>::new(x, y, z)
+            }
+            #[inline(always)]
+            fn parts(self) -> ($s, $s, $s) {
+                (self.x, self.y, self.z)
+            }
+            #[inline(always)]
+            fn lane(self, _: usize) -> $v {
+                self
+            }
+            #[inline(always)]
+            fn pick3(m: bool, t: Self, f: Self) -> Self {
+                if m {
+                    t
+                } else {
+                    f
+                }
+            }
+            #[inline(always)]
+            fn map_lanes(self, m: bool, mut f: impl FnMut(usize, $v) -> $v) -> Self {
+                if m {
+                    f(0, self)
+                } else {
+                    self
+                }
+            }
+        }
+    };
+}
+
+impl_lane_vec_scalar!(glam::Vec3, f32);
+impl_lane_vec_scalar!(glam::DVec3, f64);
+
+macro_rules! impl_lanes_wide {
+    ($w:ty, $s:ty) => {
+        impl Mask for $w {
+            #[inline(always)]
+            fn both(self, o: Self) -> Self {
+                self & o
+            }
+            #[inline(always)]
+            fn either(self, o: Self) -> Self {
+                self | o
+            }
+            #[inline(always)]
+            fn invert(self) -> Self {
+                !self
+            }
+            #[inline(always)]
+            fn lane_bits(self) -> u32 {
+                self.move_mask() as u32
+            }
+        }
+
+        impl Lanes for $w {
+            type Scalar = $s;
+            type Mask = $w;
+            type V = W3<$w>;
+            const COUNT: usize = <$w as Wide>::LANES;
+            #[inline(always)]
+            fn broadcast(x: $s) -> Self {
+                <$w>::splat(x)
+            }
+            #[inline(always)]
+            fn negated(self) -> Self {
+                Wide::neg(self)
+            }
+            #[inline(always)]
+            fn absolute(self) -> Self {
+                <$w>::abs(self)
+            }
+            #[inline(always)]
+            fn root(self) -> Self {
+                Wide::sqrt(self)
+            }
+            #[inline(always)]
+            fn less(self, o: Self) -> Self {
+                Wide::lt(self, o)
+            }
+            #[inline(always)]
+            fn greater(self, o: Self) -> Self {
+                Wide::gt(self, o)
+            }
+            #[inline(always)]
+            fn equals(self, o: Self) -> Self {
+                Wide::eq(self, o)
+            }
+            #[inline(always)]
+            fn at_most(self, o: Self) -> Self {
+                self.cmp_le(o)
+            }
+            #[inline(always)]
+            fn pick(m: Self, t: Self, f: Self) -> Self {
+                m.blend(t, f)
+            }
+            #[inline(always)]
+            fn pick_mask(m: Self, t: Self, f: Self) -> Self {
+                m.blend(t, f)
+            }
+            #[inline(always)]
+            fn all_lanes() -> Self {
+                Wide::eq(<$w>::splat(0.0), <$w>::splat(0.0))
+            }
+            #[inline(always)]
+            fn lane(self, k: usize) -> $s {
+                self.to_array()[k]
+            }
+            #[inline(always)]
+            fn map_lanes(self, m: Self, mut f: impl FnMut(usize, $s) -> $s) -> Self {
+                let bits = m.lane_bits();
+                if bits == 0 {
+                    return self;
+                }
+                let mut a = self.to_array();
+                for k in lanes_of(bits) {
+                    a[k] = f(k, a[k]);
+                }
+                <$w>::new(a)
+            }
+        }
+
+        impl LaneVec<$w> for W3<$w> {
+            #[inline(always)]
+            fn broadcast(v: V3<$s>) -> Self {
+                W3::splat(v)
+            }
+            #[inline(always)]
+            fn from_parts(x: $w, y: $w, z: $w) -> Self {
+                W3 { x, y, z }
+            }
+            #[inline(always)]
+            fn parts(self) -> ($w, $w, $w) {
+                (self.x, self.y, self.z)
+            }
+            #[inline(always)]
+            fn lane(self, k: usize) -> V3<$s> {
+                V3::<$s>::new(
+                    self.x.to_array()[k],
+                    self.y.to_array()[k],
+                    self.z.to_array()[k],
+                )
+            }
+            #[inline(always)]
+            fn map_lanes(self, m: $w, mut f: impl FnMut(usize, V3<$s>) -> V3<$s>) -> Self {
+                let bits = m.lane_bits();
+                if bits == 0 {
+                    return self;
+                }
+                let (mut x, mut y, mut z) =
+                    (self.x.to_array(), self.y.to_array(), self.z.to_array());
+                for k in lanes_of(bits) {
+                    let v = f(k, V3::<$s>::new(x[k], y[k], z[k]));
+                    (x[k], y[k], z[k]) = (v.x, v.y, v.z);
+                }
+                W3 {
+                    x: <$w>::new(x),
+                    y: <$w>::new(y),
+                    z: <$w>::new(z),
+                }
+            }
+        }
+    };
+}
+
+impl_lanes_wide!(f32x8, f32);
+impl_lanes_wide!(f64x4, f64);
+
+/// The lane mask with lane k set where bit k of `bits` is.
+#[inline(always)]
+pub(crate) fn mask_of<L: Wide>(bits: u32) -> L {
+    let mut a = L::Array::default();
+    for (k, x) in a.as_mut().iter_mut().enumerate() {
+        *x = if bits & (1 << k) != 0 {
+            <L::Scalar as Real>::ONE
+        } else {
+            <L::Scalar as Real>::ZERO
+        };
+    }
+    L::from_array(a).gt(L::splat(<L::Scalar as Real>::ZERO))
+}
+
+/// The set lanes of a mask's bits, lowest first.
+#[inline(always)]
+pub(crate) fn lanes_of(mut bits: u32) -> impl Iterator<Item = usize> {
+    std::iter::from_fn(move || {
+        (bits != 0).then(|| {
+            let k = bits.trailing_zeros() as usize;
+            bits &= bits - 1;
+            k
+        })
+    })
 }
 
 #[cfg(test)]

@@ -2,8 +2,9 @@
 //! L, the distance d, the falloff factor 1/d^f, the spot cone test and the colour I_l
 //! (Eq. 4.1–4.4). Ambient light has no direction and is kept apart, as a sum I_a.
 
+use super::lanes::{LaneVec, Lanes, Mask};
 use super::real::{Real, Vector, V3};
-use super::vector::between;
+use super::vector::between_lanes;
 
 /// The falloff exponent f of Eq. 4.3.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize)]
@@ -39,23 +40,24 @@ impl Falloff {
 
     /// The factor 1/d^f, for the record, computed as repeated division so that d² is never
     /// formed: d = 1e160 gives 1e-320 in f64 rather than overflowing d² to infinity.
-    #[inline]
-    pub(crate) fn factor<R: Real>(self, d: R) -> R {
+    #[inline(always)]
+    pub(crate) fn factor<L: Lanes>(self, d: L) -> L {
+        let one = L::broadcast(<L::Scalar as Real>::ONE);
         match self {
-            Falloff::None => R::ONE,
-            Falloff::Linear => R::ONE / d,
-            Falloff::Quadratic => R::ONE / d / d,
+            Falloff::None => one,
+            Falloff::Linear => one / d,
+            Falloff::Quadratic => one / d / d,
         }
     }
 
     /// C_l / d^f, Eq. 4.2, dividing the colour itself so that neither d^f nor 1/d^f is formed:
     /// a tiny colour close to the light, or a huge one far from it, stays representable.
-    #[inline]
-    pub(crate) fn attenuate<R: Real, V: Vector<R>>(self, color: V, d: R) -> V {
+    #[inline(always)]
+    pub(crate) fn attenuate<L: Lanes>(self, color: L::V, d: L) -> L::V {
         match self {
             Falloff::None => color,
-            Falloff::Linear => color / d,
-            Falloff::Quadratic => color / d / d,
+            Falloff::Linear => color.divided(d),
+            Falloff::Quadratic => color.divided(d).divided(d),
         }
     }
 }
@@ -149,7 +151,7 @@ pub struct ConeTest<R: Real> {
     /// cos ψ = D_l · L.
     pub cos_psi: R,
     /// ψ in degrees, from atan2(‖D_l × L‖, D_l · L): accurate at every angle, where acos(cos ψ)
-    /// loses half the digits near 0°. Left at 0 by `Light::arrive_with` without detail where
+    /// loses half the digits near 0°. Left at 0 by `Light::arrive_lanes` without detail where
     /// cos ψ alone decided the test.
     pub psi_deg: R,
     /// cos γ_l, the cosine of the cone's angle.
@@ -207,110 +209,195 @@ const CONE_EDGE_ULPS: f64 = 20.0;
 /// ≤ 52ε, and cos ψ = D_l·L and cos γ are each rounded by a few ε more.
 const CONE_COS_MARGIN_ULPS: f64 = 128.0;
 
+/// What a light delivers at the points of some [`Lanes`] (one point, or one per lane), as the
+/// core's arithmetic computes it once for both: [`Light::arrive_with`] turns one lane of it into
+/// an [`Arrival`], the wide tracer shades with it directly.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct LaneArrival<L: Lanes> {
+    /// L (zero where P is at the light).
+    pub l: L::V,
+    /// d (0 for a directional light, and where P is at the light).
+    pub d: L,
+    /// 1/d^f (1 for a directional light, 0 where P is at the light).
+    pub falloff_factor: L,
+    /// I_l.
+    pub i_l: L::V,
+    /// The lanes where P coincides with the light.
+    pub at_light: L::Mask,
+    /// The lanes where the light's flux arrives (not at the light, inside the cone).
+    pub arrives: L::Mask,
+    /// A spot's cone test; `None` for other lights.
+    pub cone: Option<LaneCone<L>>,
+}
+
+/// A spot's cone test in lanes (see [`ConeTest`]).
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct LaneCone<L: Lanes> {
+    /// cos ψ = D_l · L.
+    pub cos_psi: L,
+    /// ψ in radians where it was formed (0 where cos ψ alone decided).
+    pub psi: L,
+    /// ψ ≤ γ.
+    pub inside: L::Mask,
+    /// |ψ − γ| within rounding.
+    pub on_edge: L::Mask,
+    /// (cos ψ)^e inside the cone, 0 outside.
+    pub factor: L,
+}
+
 impl<R: Real> Light<R> {
     /// What this light delivers at P (Eq. 4.1–4.4), with every intermediate.
     #[inline]
     #[cfg(test)]
     pub(crate) fn arrive(&self, p: V3<R>) -> Arrival<R> {
-        self.arrive_with(p, true)
+        self.arrival_of(&self.arrive_lanes::<R>(p, true))
     }
 
-    /// [`Light::arrive`]; without `detail`, a spot's ψ (degrees) is left at 0 where cos ψ alone
-    /// decides the cone test, to spare an atan2 on the tracer's hot path.
-    #[inline]
-    pub(crate) fn arrive_with(&self, p: V3<R>, detail: bool) -> Arrival<R> {
+    /// One lane's [`LaneArrival`] as the record shows it (the scalar instantiation is one lane).
+    #[inline(always)]
+    pub(crate) fn arrival_of(&self, a: &LaneArrival<R>) -> Arrival<R> {
+        let (distance, falloff, cone_of) = match self.kind {
+            LightKind::Directional { .. } => (None, None, None),
+            LightKind::Point { falloff, .. } => (Some(a.d), Some(falloff), None),
+            LightKind::Spot { falloff, cone, .. } => (Some(a.d), Some(falloff), Some(cone)),
+        };
+        let reach = if a.at_light {
+            Reach::AtLight
+        } else if a.arrives {
+            Reach::Arrives
+        } else {
+            Reach::OutsideCone
+        };
+        let cone = match (cone_of, a.cone) {
+            (Some(c), Some(t)) if !a.at_light => Some(ConeTest {
+                cos_psi: t.cos_psi,
+                psi_deg: t.psi.to_degrees(),
+                cos_gamma: c.cos_gamma,
+                inside: t.inside,
+                on_edge: t.on_edge,
+                factor: t.factor,
+            }),
+            _ => None,
+        };
+        Arrival {
+            l: a.l,
+            distance,
+            falloff,
+            falloff_factor: a.falloff_factor,
+            cone,
+            i_l: a.i_l,
+            reach,
+        }
+    }
+
+    /// What this light delivers at the points `p` of some [`Lanes`] (Eq. 4.1–4.4): the one
+    /// source of the arrival for the scalar core and the wide tracer alike. Without `detail`, a
+    /// spot's ψ is left at 0 where cos ψ alone decides the cone test, to spare an atan2 on the
+    /// tracer's hot path.
+    #[inline(always)]
+    pub(crate) fn arrive_lanes<L: Lanes<Scalar = R>>(
+        &self,
+        p: L::V,
+        detail: bool,
+    ) -> LaneArrival<L> {
         match self.kind {
-            LightKind::Directional { direction } => Arrival {
-                l: direction,
-                distance: None,
-                falloff: None,
-                falloff_factor: R::ONE,
+            LightKind::Directional { direction } => LaneArrival {
+                l: L::V::broadcast(direction),
+                d: L::broadcast(R::ZERO),
+                falloff_factor: L::broadcast(R::ONE),
+                i_l: L::V::broadcast(self.color),
+                at_light: L::all_lanes().invert(),
+                arrives: L::all_lanes(),
                 cone: None,
-                i_l: self.color,
-                reach: Reach::Arrives,
             },
             LightKind::Point { position, falloff } => {
-                self.positional(p, position, falloff, None, detail)
+                self.positional::<L>(p, position, falloff, None, detail)
             }
             LightKind::Spot {
                 position,
                 falloff,
                 cone,
-            } => self.positional(p, position, falloff, Some(cone), detail),
+            } => self.positional::<L>(p, position, falloff, Some(cone), detail),
         }
     }
 
-    fn positional(
+    #[inline(always)]
+    fn positional<L: Lanes<Scalar = R>>(
         &self,
-        p: V3<R>,
+        p: L::V,
         position: V3<R>,
         falloff: Falloff,
         cone: Option<Cone<R>>,
         detail: bool,
-    ) -> Arrival<R> {
-        // Compute the incidence vector and the distance, Eq. 4.1.
-        let Some(n) = between::<R>(position, p) else {
-            return Arrival {
-                l: V3::<R>::ZERO,
-                distance: Some(R::ZERO),
-                falloff: Some(falloff),
-                falloff_factor: R::ZERO,
-                cone: None,
-                i_l: V3::<R>::ZERO,
-                reach: Reach::AtLight,
-            };
-        };
+    ) -> LaneArrival<L> {
+        let zero = L::broadcast(R::ZERO);
+        // Compute the incidence vector and the distance, Eq. 4.1 (none where P is the light).
+        let n = between_lanes::<L>(L::V::broadcast(position), p);
+        let at_light = n.found.invert();
         let (l, d) = (n.unit, n.length);
         // Attenuate by the falloff, Eq. 4.2 and 4.3.
-        let falloff_factor = falloff.factor(d);
-        let mut i_l = falloff.attenuate(self.color, d);
-        let mut reach = Reach::Arrives;
+        let falloff_factor = L::pick(at_light, zero, falloff.factor(d));
+        let mut i_l = L::V::pick3(
+            at_light,
+            L::V::broadcast(V3::<R>::ZERO),
+            falloff.attenuate::<L>(L::V::broadcast(self.color), d),
+        );
+        let mut arrives = n.found;
         // Restrict to the cone and weight by cos(ψ)^e, Eq. 4.4. The test compares angles: ψ from
         // atan2 is accurate to a few ulps everywhere, so the decision is the same in f32 and
         // f64 except within rounding of the edge.
         let cone = cone.map(|c| {
-            let cos_psi = c.axis.dot(l);
+            let cos_psi = L::V::broadcast(c.axis).dot3(l);
             // Far from the edge (by many times the rounding of either side), cos ψ against
             // cos γ decides the same way and costs no atan2; ψ itself is then only formed
             // for a caller that records it.
-            let margin = R::from_f64(CONE_COS_MARGIN_ULPS) * R::EPSILON;
-            let clear = (cos_psi - c.cos_gamma).abs() > margin;
-            let (psi, inside, on_edge) = if clear && !detail {
-                (R::ZERO, cos_psi > c.cos_gamma, false)
+            let margin = L::broadcast(R::from_f64(CONE_COS_MARGIN_ULPS) * R::EPSILON);
+            let cos_gamma = L::broadcast(c.cos_gamma);
+            let clear = (cos_psi - cos_gamma).absolute().greater(margin);
+            let cheap = if detail {
+                L::all_lanes().invert()
             } else {
-                let psi = c.axis.cross(l).naive_length().atan2(cos_psi);
-                let tol = c.edge_tolerance();
-                (psi, psi <= c.gamma + tol, (psi - c.gamma).abs() <= tol)
+                clear
             };
-            // cos ψ may round a hair outside [0, 1] on the edge of a 90° cone or on the axis.
-            let factor = if inside {
-                cos_psi.max(R::ZERO).min(R::ONE).pow(c.exponent)
-            } else {
-                R::ZERO
-            };
-            ConeTest {
+            let near = cheap.invert().both(n.found);
+            // Near the edge, ψ = atan2(‖D_l × L‖, D_l · L), lane by lane (no lane atan2 gives
+            // the scalar's bits).
+            let psi = zero.map_lanes(near, |k, _| {
+                c.axis
+                    .cross(l.lane(k))
+                    .naive_length()
+                    .atan2(cos_psi.lane(k))
+            });
+            let tol = L::broadcast(c.edge_tolerance());
+            let gamma = L::broadcast(c.gamma);
+            let by_angle = psi.at_most(gamma + tol);
+            let inside = L::pick_mask(cheap, cos_psi.greater(cos_gamma), by_angle);
+            let on_edge = cheap.invert().both((psi - gamma).absolute().at_most(tol));
+            // cos ψ may round a hair outside [0, 1] on the edge of a 90° cone or on the axis;
+            // the power lane by lane (the scalar's pow).
+            let factor = zero.map_lanes(inside.both(n.found), |k, _| {
+                cos_psi.lane(k).max(R::ZERO).min(R::ONE).pow(c.exponent)
+            });
+            LaneCone {
                 cos_psi,
-                psi_deg: psi.to_degrees(),
-                cos_gamma: c.cos_gamma,
+                psi,
                 inside,
                 on_edge,
                 factor,
             }
         });
         if let Some(t) = cone {
-            i_l = i_l * t.factor;
-            if !t.inside {
-                reach = Reach::OutsideCone;
-            }
+            i_l = i_l.scaled(t.factor);
+            arrives = arrives.both(t.inside);
         }
-        Arrival {
+        LaneArrival {
             l,
-            distance: Some(d),
-            falloff: Some(falloff),
+            d: L::pick(at_light, zero, d),
             falloff_factor,
-            cone,
             i_l,
-            reach,
+            at_light,
+            arrives,
+            cone,
         }
     }
 

@@ -27,7 +27,7 @@ pub(crate) mod rounding;
 pub(crate) mod shade;
 pub(crate) mod vector;
 
-pub use lanes::Wide;
+pub use lanes::{LaneVec, Lanes, Mask, Wide};
 pub use light::{Arrival, Cone, ConeTest, Falloff, Light, LightKind, LightSet, Reach};
 pub use material::Material;
 pub use real::{Precision, Real, Vector, V3};

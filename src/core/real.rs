@@ -32,10 +32,11 @@ pub trait Real:
     + Neg<Output = Self>
 {
     /// The three-component vector of this precision (also used for RGB colours).
-    type Vec3: Vector<Self>;
+    type Vec3: Vector<Self> + super::lanes::LaneVec<Self>;
     /// The lanes of this precision in one 256-bit register (8 × f32, 4 × f64), for the wide
     /// tracer ([`Wide`](super::Wide)).
-    type Wide: super::lanes::Wide<Scalar = Self>;
+    type Wide: super::lanes::Wide<Scalar = Self>
+        + super::lanes::Lanes<Scalar = Self, Mask = Self::Wide, V = super::lanes::W3<Self::Wide>>;
     /// `"f32"` or `"f64"`, as the CLI and the JSON output name it.
     const NAME: &'static str;
     /// The number 0 in this precision.

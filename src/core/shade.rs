@@ -6,7 +6,8 @@
 //! literal values) or a `Vec<LightTerm>` (the solver's explanation). Shadowing is the caller's
 //! business, asked through a [`Visibility`]; the core itself does no I/O and knows no scene.
 
-use super::light::{Arrival, Light, LightSet, Reach};
+use super::lanes::{LaneVec, Lanes, Mask};
+use super::light::{Arrival, LaneArrival, Light, LightSet};
 use super::material::Material;
 use super::real::{Real, Vector, V3};
 use super::rounding::gamma;
@@ -237,7 +238,7 @@ pub(crate) trait Formulas: Copy {
     /// An intermediate as a hand calculation writes it down: [`Chapter`] keeps every digit;
     /// [`Slipped`] with `round_to: Some(k)` rounds N, V, L, d, 1/d^f, I_l, N·L, R, cos φ,
     /// (cos φ)^n_s and each term to k decimals before the next step uses it.
-    fn round<R: Real>(self, x: R) -> R;
+    fn round<L: Lanes>(self, x: L) -> L;
     /// Whether [`Formulas::round`] rounds (then (cos φ)^n_s is the plain power of the rounded
     /// cos φ, as by hand, not the accurate form near the highlight).
     fn rounds(self) -> bool;
@@ -245,8 +246,9 @@ pub(crate) trait Formulas: Copy {
 
 /// Every component of `v` as [`Formulas::round`] writes it down.
 #[inline(always)]
-fn round_v<R: Real, F: Formulas>(f: F, v: V3<R>) -> V3<R> {
-    V3::<R>::new(f.round(v.x()), f.round(v.y()), f.round(v.z()))
+fn round_v<L: Lanes, F: Formulas>(f: F, v: L::V) -> L::V {
+    let (x, y, z) = v.parts();
+    L::V::from_parts(f.round(x), f.round(y), f.round(z))
 }
 
 /// The chapter's formulas, unchanged: the tracer's and the solver's.
@@ -267,7 +269,7 @@ impl Formulas for Chapter {
         false
     }
     #[inline(always)]
-    fn round<R: Real>(self, x: R) -> R {
+    fn round<L: Lanes>(self, x: L) -> L {
         x
     }
     #[inline(always)]
@@ -300,11 +302,13 @@ impl Formulas for Slipped {
         self.raw_normal
     }
     #[inline]
-    fn round<R: Real>(self, x: R) -> R {
+    fn round<L: Lanes>(self, x: L) -> L {
         match self.round_to {
             Some(k) => {
                 let scale = 10f64.powi(i32::from(k));
-                R::from_f64((x.to_f64() * scale).round() / scale)
+                x.map_lanes(L::all_lanes(), |_, x| {
+                    <L::Scalar as Real>::from_f64((x.to_f64() * scale).round() / scale)
+                })
             }
             None => x,
         }
@@ -324,10 +328,11 @@ impl Formulas for Slipped {
 /// solver (`gate_undecidable`). Σ|N_i L_i|, not 1: with N along an axis the error of cos θ
 /// shrinks with cos θ itself, and such a grazing light is decided as the exact value says in
 /// any precision.
-#[inline]
-pub(crate) fn tangent_tolerance<R: Real>(n: V3<R>, l: V3<R>) -> R {
-    let sum = (n.x() * l.x()).abs() + (n.y() * l.y()).abs() + (n.z() * l.z()).abs();
-    gamma::<R>(40) * sum
+#[inline(always)]
+pub(crate) fn tangent_tolerance<L: Lanes>(n: L::V, l: L::V) -> L {
+    let ((nx, ny, nz), (lx, ly, lz)) = (n.parts(), l.parts());
+    let sum = (nx * lx).absolute() + (ny * ly).absolute() + (nz * lz).absolute();
+    L::broadcast(gamma::<L::Scalar>(40)) * sum
 }
 
 /// Shades P with Phong's model, Eq. 4.16, gated as docs/conventions.md ("Gating") reads the
@@ -344,8 +349,361 @@ pub fn shade<R: Real, Rec: Recorder<R>, Vis: Visibility<R>>(
     shade_with(Chapter, at, m, lights, visibility, rec)
 }
 
+/// The points of some [`Lanes`] being shaded (one point, or one per lane): P, a unit N, and V
+/// from the eye to P where there is a viewer (for every lane or none).
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct LanePoint<L: Lanes> {
+    /// P.
+    pub p: L::V,
+    /// N, unit length.
+    pub n: L::V,
+    /// V, unit, from the eye to the point.
+    pub v: Option<L::V>,
+}
+
+/// The specular part of one light in lanes, where it was formed (Eq. 4.9–4.15).
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct LaneSpecular<L: Lanes> {
+    /// R = L − 2(N·L)N.
+    pub r: L::V,
+    /// cos φ = −R·V.
+    pub cos_phi: L,
+    /// The lanes where the light is lit and cos φ > 0: the term is added there.
+    pub lit: L::Mask,
+    /// (cos φ)^n_s in the `lit` lanes.
+    pub pow: L,
+    /// O_s I_l (cos φ)^n_s in the `lit` lanes.
+    pub term: L::V,
+}
+
+/// One light at the points of some [`Lanes`], as [`shade_lanes`] formed it: for a [`LaneSide`]
+/// to record (the scalar core builds its [`LightTerm`] from it).
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct LaneTerm<L: Lanes> {
+    /// L, d, 1/d^f, the cone and I_l, as the formulas wrote them down.
+    pub arrival: LaneArrival<L>,
+    /// N·L.
+    pub n_dot_l: L,
+    /// cos θ = −N·L (or |N·L| under that slip).
+    pub cos_theta: L,
+    /// cos θ beyond its rounding error above 0.
+    pub front: L::Mask,
+    /// cos θ beyond its rounding error below 0.
+    pub behind: L::Mask,
+    /// Where the light would be lit but a shadow ray was blocked.
+    pub shadowed: L::Mask,
+    /// Where the light lights the point (arrives, in front, not shadowed).
+    pub lit: L::Mask,
+    /// O_d I_l cos θ before gating where formed (zero where not); `None` without O_d.
+    pub diffuse: Option<L::V>,
+    /// The specular part; `None` without O_s or viewer, or where no lane needed it.
+    pub specular: Option<LaneSpecular<L>>,
+}
+
+/// The caller's side of [`shade_lanes`]: the shadow rays, and what is recorded per light.
+pub(crate) trait LaneSide<L: Lanes> {
+    /// Whether the terms of lanes the light does not light are formed too, for the record
+    /// (as [`Recorder::DETAIL`]).
+    const DETAIL: bool;
+    /// Of the lanes `need` (lit from the front by a light that could add something), those
+    /// the light reaches unblocked.
+    fn visible(
+        &mut self,
+        need: L::Mask,
+        p: L::V,
+        light: &Light<L::Scalar>,
+        arrival: &LaneArrival<L>,
+    ) -> L::Mask;
+    /// One light's terms, in the order of the light set.
+    fn light(
+        &mut self,
+        index: usize,
+        light: &Light<L::Scalar>,
+        at: &LanePoint<L>,
+        term: LaneTerm<L>,
+    );
+}
+
+/// The result of [`shade_lanes`].
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct LaneShade<L: Lanes> {
+    /// O_a I_a, the same in every lane; `None` without ambient light or O_a.
+    pub ambient: Option<V3<L::Scalar>>,
+    /// Σ diffuse terms.
+    pub diffuse: L::V,
+    /// Σ specular terms.
+    pub specular: L::V,
+    /// The total, Eq. 4.16 with gating, unclamped.
+    pub color: L::V,
+}
+
+/// Phong's model at the points of some [`Lanes`]: the one source of the arithmetic of Eq.
+/// 4.5–4.16 and of the gating (docs/conventions.md, "Gating", "Tangent tolerance"), for the
+/// scalar core ([`shade_with`], L = the precision itself, masks `bool`) and the wide tracer (L a
+/// register of lanes sharing one material). Written in select form: a gate is a mask, a term is
+/// formed where any lane needs it (for one number: where it is needed, as a branch) and added
+/// where its mask is set, so each lane computes the scalar bits in the scalar order. The steps
+/// the lanes cannot compute to the bit ((cos φ)^n_s, a spot's atan2 and pow, the robust branch
+/// of a length) run lane by lane with the scalar code, on the lanes that need them. `active`:
+/// the lanes holding a point (no shadow ray is asked for the others).
+#[inline(always)]
+pub(crate) fn shade_lanes<L: Lanes, F: Formulas, S: LaneSide<L>>(
+    formulas: F,
+    at: &LanePoint<L>,
+    active: L::Mask,
+    m: &Material<L::Scalar>,
+    lights: &LightSet<L::Scalar>,
+    side: &mut S,
+) -> LaneShade<L> {
+    type Scalar<L> = <L as Lanes>::Scalar;
+    let zero = L::broadcast(<Scalar<L> as Real>::ZERO);
+    let zero_v = L::V::broadcast(V3::<Scalar<L>>::ZERO);
+    // N and V as the formulas write them down (the chapter: exactly as given).
+    let at = &LanePoint::<L> {
+        p: at.p,
+        n: round_v::<L, F>(formulas, at.n),
+        v: at.v.map(|v| round_v::<L, F>(formulas, v)),
+    };
+    // Ambient light, Eq. 4.6.
+    let ambient = match (m.o_a, lights.ambient) {
+        (Some(o_a), Some(i_a)) => Some(round_v::<Scalar<L>, F>(formulas, o_a * i_a)),
+        _ => None,
+    };
+    let mut diffuse = zero_v;
+    let mut specular = zero_v;
+    let contributes = m.o_d.is_some() || (m.o_s.is_some() && at.v.is_some());
+
+    for (index, light) in lights.lights.iter().enumerate() {
+        let mut arrival = light.arrive_lanes::<L>(at.p, S::DETAIL);
+        arrival.l = round_v::<L, F>(formulas, arrival.l);
+        arrival.d = formulas.round(arrival.d);
+        arrival.falloff_factor = formulas.round(arrival.falloff_factor);
+        arrival.i_l = round_v::<L, F>(formulas, arrival.i_l);
+        // Diffuse reflection, cos θ = −N·L, Eq. 4.7–4.8.
+        let n_dot_l = formulas.round::<L>(at.n.dot3(arrival.l));
+        let cos_theta = if formulas.abs_cos_theta() {
+            n_dot_l.absolute()
+        } else {
+            n_dot_l.negated()
+        };
+        // Within its own rounding error of 0, cos θ counts as 0: the light is in the tangent
+        // plane, as a point within rounding of a spot's edge is on the edge.
+        let tolerance = tangent_tolerance::<L>(at.n, arrival.l);
+        let front = cos_theta.greater(tolerance);
+        let behind = cos_theta.less(tolerance.negated());
+        let lit_front = arrival.arrives.both(front).both(active);
+        // Ask for a shadow ray only where the light could add something.
+        let mut shadowed = L::all_lanes().invert();
+        if contributes {
+            let need = lit_front.both(arrival.i_l.zero_mask().invert());
+            if need.any() {
+                let visible = side.visible(need, at.p, light, &arrival);
+                shadowed = need.both(visible.invert());
+            }
+        }
+        let lit = lit_front.both(shadowed.invert());
+
+        // O_d I_l cos θ, formed once: added where the light is lit, recorded on request.
+        let diffuse_term = m.o_d.map(|o_d| {
+            let want = if S::DETAIL { arrival.arrives } else { lit };
+            if !want.any() {
+                return zero_v;
+            }
+            let value = round_v::<L, F>(
+                formulas,
+                L::V::broadcast(o_d).times(arrival.i_l).scaled(cos_theta),
+            );
+            let value = if S::DETAIL {
+                L::V::pick3(want, value, zero_v)
+            } else {
+                value
+            };
+            diffuse = diffuse.plus(L::V::pick3(lit, value, zero_v));
+            value
+        });
+
+        // Specular reflection, R = L − 2(N·L)N and cos φ = −R·V, Eq. 4.10 and 4.15.
+        let spec = match (m.o_s, at.v) {
+            (Some(o_s), Some(v)) if S::DETAIL || lit.any() => {
+                let two = L::broadcast(<Scalar<L> as Real>::TWO);
+                let r = round_v::<L, F>(formulas, arrival.l.minus(at.n.scaled(two * n_dot_l)));
+                let cos_phi = if formulas.half_vector() {
+                    // Blinn: H halfway between the directions to the light and to the eye.
+                    zero.map_lanes(L::all_lanes(), |k, _| {
+                        let (l, v) = (arrival.l.lane(k), v.lane(k));
+                        crate::core::vector::normalize::<Scalar<L>>(-l - v)
+                            .map_or(<Scalar<L> as Real>::ZERO, |h| at.n.lane(k).dot(h.unit))
+                    })
+                } else {
+                    formulas.round(r.dot3(v).negated())
+                };
+                let spec_lit = lit.both(cos_phi.greater(zero));
+                let (mut pow, mut term) = (zero, zero_v);
+                if spec_lit.any() {
+                    // cos φ can round a hair above 1; a huge n_s must not turn that into inf,
+                    // nor a cos φ that rounds to 1 into a spurious 1 (see `cos_phi_pow`). Lane
+                    // by lane: no lane pow gives the scalar's bits.
+                    pow = cos_phi.map_lanes(spec_lit, |k, c| {
+                        if formulas.raw_normal() {
+                            c.pow(m.n_s)
+                        } else if formulas.half_vector() || formulas.rounds() {
+                            c.min(<Scalar<L> as Real>::ONE).pow(m.n_s)
+                        } else {
+                            cos_phi_pow(c, r.lane(k), v.lane(k), m.n_s)
+                        }
+                    });
+                    pow = formulas.round(pow);
+                    term = round_v::<L, F>(
+                        formulas,
+                        L::V::broadcast(o_s).times(arrival.i_l).scaled(pow),
+                    );
+                    specular = specular.plus(L::V::pick3(spec_lit, term, zero_v));
+                }
+                Some(LaneSpecular {
+                    r,
+                    cos_phi,
+                    lit: spec_lit,
+                    pow,
+                    term,
+                })
+            }
+            _ => None,
+        };
+
+        side.light(
+            index,
+            light,
+            at,
+            LaneTerm {
+                arrival,
+                n_dot_l,
+                cos_theta,
+                front,
+                behind,
+                shadowed,
+                lit,
+                diffuse: diffuse_term,
+                specular: spec,
+            },
+        );
+    }
+
+    // The total, Eq. 4.16.
+    let a = L::V::broadcast(ambient.unwrap_or(V3::<Scalar<L>>::ZERO));
+    LaneShade {
+        ambient,
+        diffuse,
+        specular,
+        color: a.plus(diffuse).plus(specular),
+    }
+}
+
+/// The scalar core's side of [`shade_lanes`] (one lane): the caller's [`Visibility`] and
+/// [`Recorder`], each light's [`LightTerm`] built from the lane's masks and values, and the
+/// literal (ungated) sums of Eq. 4.16 for a recorder that asks for detail.
+struct ScalarSide<'a, R: Real, Vis, Rec, F> {
+    visibility: &'a mut Vis,
+    rec: &'a mut Rec,
+    formulas: F,
+    m: &'a Material<R>,
+    /// The literal sums, formed in the same order as the gated ones, so that where nothing
+    /// was gated the two totals agree to the last bit.
+    literal_diffuse: V3<R>,
+    literal_specular: V3<R>,
+    literal_defined: bool,
+}
+
+impl<R: Real, Vis: Visibility<R>, Rec: Recorder<R>, F: Formulas> LaneSide<R>
+    for ScalarSide<'_, R, Vis, Rec, F>
+{
+    const DETAIL: bool = Rec::DETAIL;
+
+    #[inline(always)]
+    fn visible(&mut self, _: bool, p: V3<R>, light: &Light<R>, arrival: &LaneArrival<R>) -> bool {
+        self.visibility
+            .visible(p, light, &light.arrival_of(arrival))
+    }
+
+    #[inline(always)]
+    fn light(&mut self, index: usize, light: &Light<R>, at: &LanePoint<R>, t: LaneTerm<R>) {
+        let arrival = light.arrival_of(&t.arrival);
+        let status = if t.arrival.at_light {
+            LightStatus::AtLight
+        } else if !t.arrival.arrives {
+            LightStatus::OutsideCone
+        } else if t.shadowed {
+            LightStatus::InShadow
+        } else if t.front {
+            LightStatus::Lit
+        } else if t.behind {
+            LightStatus::BehindSurface
+        } else {
+            LightStatus::InTangentPlane
+        };
+        let lit = t.lit;
+        let (diffuse, diffuse_literal) = match t.diffuse {
+            None => (None, None),
+            Some(value) => (
+                Some(if lit { value } else { V3::<R>::ZERO }),
+                Rec::DETAIL.then_some(value),
+            ),
+        };
+        if let Some(d) = diffuse_literal {
+            self.literal_diffuse += d;
+        }
+        let f = self.formulas;
+        let specular = match (self.m.o_s, at.v, t.specular) {
+            (None, _, _) => SpecularTerm::skipped(SpecularStatus::NoSpecularColor),
+            (Some(_), None, _) => SpecularTerm::skipped(SpecularStatus::NoViewer),
+            (Some(o_s), Some(v), Some(s)) => {
+                let status = if !lit {
+                    SpecularStatus::LightNotLit
+                } else if s.lit {
+                    SpecularStatus::Lit
+                } else {
+                    SpecularStatus::AwayFromViewer
+                };
+                let literal = if !Rec::DETAIL {
+                    None
+                } else if !t.arrival.arrives {
+                    Some(V3::<R>::ZERO)
+                } else {
+                    let clamp = !f.raw_normal();
+                    let unit = (clamp && !f.half_vector() && !f.rounds()).then_some((s.r, v));
+                    literal_pow(s.cos_phi, self.m.n_s, clamp, unit).map(|p| o_s * arrival.i_l * p)
+                };
+                SpecularTerm {
+                    status,
+                    r: Some(s.r),
+                    cos_phi: Some(s.cos_phi),
+                    cos_phi_pow: s.lit.then_some(s.pow),
+                    term: if s.lit { s.term } else { V3::<R>::ZERO },
+                    literal,
+                }
+            }
+            (Some(_), Some(_), None) => SpecularTerm::skipped(SpecularStatus::LightNotLit),
+        };
+        if Rec::DETAIL && self.m.o_s.is_some() && at.v.is_some() {
+            match specular.literal {
+                Some(t) => self.literal_specular += t,
+                None => self.literal_defined = false,
+            }
+        }
+        self.rec.light(&LightTerm {
+            index,
+            arrival,
+            n_dot_l: t.n_dot_l,
+            cos_theta: t.cos_theta,
+            status,
+            diffuse,
+            diffuse_literal,
+            specular,
+        });
+    }
+}
+
 /// [`shade`] with a formula switched as `formulas` says (see [`Formulas`]); with [`Chapter`]
-/// it is [`shade`] itself.
+/// it is [`shade`] itself. The arithmetic is [`shade_lanes`] in one lane.
 #[inline]
 pub(crate) fn shade_with<R: Real, Rec: Recorder<R>, Vis: Visibility<R>, F: Formulas>(
     formulas: F,
@@ -355,171 +713,29 @@ pub(crate) fn shade_with<R: Real, Rec: Recorder<R>, Vis: Visibility<R>, F: Formu
     visibility: &mut Vis,
     rec: &mut Rec,
 ) -> Shade<R> {
-    // N and V as the formulas write them down (the chapter: exactly as given).
-    let at: &ShadingPoint<R> = &ShadingPoint {
+    let mut side = ScalarSide {
+        visibility,
+        rec,
+        formulas,
+        m,
+        literal_diffuse: V3::<R>::ZERO,
+        literal_specular: V3::<R>::ZERO,
+        literal_defined: true,
+    };
+    let point = LanePoint::<R> {
         p: at.p,
-        n: round_v::<R, F>(formulas, at.n),
-        v: at.v.map(|v| round_v::<R, F>(formulas, v)),
+        n: at.n,
+        v: at.v,
     };
-    // Ambient light, Eq. 4.6.
-    let ambient = match (m.o_a, lights.ambient) {
-        (Some(o_a), Some(i_a)) => Some(round_v::<R, F>(formulas, o_a * i_a)),
-        _ => None,
-    };
-    let mut diffuse = V3::<R>::ZERO;
-    let mut specular = V3::<R>::ZERO;
-    // The literal sums are formed in the same order as the gated ones, so that where nothing
-    // was gated the two totals agree to the last bit.
-    let mut literal_diffuse = V3::<R>::ZERO;
-    let mut literal_specular = V3::<R>::ZERO;
-    let mut literal_defined = true;
-    let contributes = m.o_d.is_some() || (m.o_s.is_some() && at.v.is_some());
-
-    for (index, light) in lights.lights.iter().enumerate() {
-        let mut arrival = light.arrive_with(at.p, Rec::DETAIL);
-        arrival.l = round_v::<R, F>(formulas, arrival.l);
-        arrival.distance = arrival.distance.map(|d| formulas.round(d));
-        arrival.falloff_factor = formulas.round(arrival.falloff_factor);
-        arrival.i_l = round_v::<R, F>(formulas, arrival.i_l);
-        // Diffuse reflection, cos θ = −N·L, Eq. 4.7–4.8.
-        let n_dot_l = formulas.round(at.n.dot(arrival.l));
-        let cos_theta = if formulas.abs_cos_theta() {
-            n_dot_l.abs()
-        } else {
-            -n_dot_l
-        };
-        let mut status = match arrival.reach {
-            Reach::AtLight => LightStatus::AtLight,
-            Reach::OutsideCone => LightStatus::OutsideCone,
-            Reach::Arrives => {
-                // Within its own rounding error of 0, cos θ counts as 0: the light is in the
-                // tangent plane, as a point within rounding of a spot's edge is on the edge.
-                let tolerance = tangent_tolerance(at.n, arrival.l);
-                if cos_theta > tolerance {
-                    LightStatus::Lit
-                } else if cos_theta < -tolerance {
-                    LightStatus::BehindSurface
-                } else {
-                    LightStatus::InTangentPlane
-                }
-            }
-        };
-        // Ask for a shadow ray only where the light could add something.
-        if status == LightStatus::Lit
-            && contributes
-            && arrival.i_l != V3::<R>::ZERO
-            && !visibility.visible(at.p, light, &arrival)
-        {
-            status = LightStatus::InShadow;
-        }
-        let lit = status == LightStatus::Lit;
-        let arrives = arrival.reach == Reach::Arrives;
-
-        // O_d I_l cos θ, formed once: used where the light is lit, recorded literally on request.
-        let (diffuse_term, diffuse_literal) = match m.o_d {
-            None => (None, None),
-            Some(o_d) => {
-                let value = if arrives && (lit || Rec::DETAIL) {
-                    round_v::<R, F>(formulas, o_d * arrival.i_l * cos_theta)
-                } else {
-                    V3::<R>::ZERO
-                };
-                let term = if lit { value } else { V3::<R>::ZERO };
-                (Some(term), Rec::DETAIL.then_some(value))
-            }
-        };
-        if let Some(t) = diffuse_term {
-            diffuse += t;
-        }
-        if let Some(t) = diffuse_literal {
-            literal_diffuse += t;
-        }
-
-        // Specular reflection, R = L − 2(N·L)N and cos φ = −R·V, Eq. 4.10 and 4.15.
-        let spec = match (m.o_s, at.v) {
-            (None, _) => SpecularTerm::skipped(SpecularStatus::NoSpecularColor),
-            (Some(_), None) => SpecularTerm::skipped(SpecularStatus::NoViewer),
-            (Some(_), Some(_)) if !lit && !Rec::DETAIL => {
-                SpecularTerm::skipped(SpecularStatus::LightNotLit)
-            }
-            (Some(o_s), Some(v)) => {
-                let r: V3<R> = round_v::<R, F>(formulas, arrival.l - at.n * (R::TWO * n_dot_l));
-                let cos_phi = if formulas.half_vector() {
-                    // Blinn: H halfway between the directions to the light and to the eye.
-                    crate::core::vector::normalize::<R>(-arrival.l - v)
-                        .map_or(R::ZERO, |h| at.n.dot(h.unit))
-                } else {
-                    formulas.round(-r.dot(v))
-                };
-                let (st, pow, term) = if !lit {
-                    (SpecularStatus::LightNotLit, None, V3::<R>::ZERO)
-                } else if cos_phi > R::ZERO {
-                    // cos φ can round a hair above 1; a huge n_s must not turn that into inf,
-                    // nor a cos φ that rounds to 1 into a spurious 1 (see `cos_phi_pow`).
-                    let pow = if formulas.raw_normal() {
-                        cos_phi.pow(m.n_s)
-                    } else if formulas.half_vector() || formulas.rounds() {
-                        cos_phi.min(R::ONE).pow(m.n_s)
-                    } else {
-                        cos_phi_pow(cos_phi, r, v, m.n_s)
-                    };
-                    let pow = formulas.round(pow);
-                    (
-                        SpecularStatus::Lit,
-                        Some(pow),
-                        round_v::<R, F>(formulas, o_s * arrival.i_l * pow),
-                    )
-                } else {
-                    (SpecularStatus::AwayFromViewer, None, V3::<R>::ZERO)
-                };
-                let lit_value = if !Rec::DETAIL {
-                    None
-                } else if !arrives {
-                    Some(V3::<R>::ZERO)
-                } else {
-                    let clamp = !formulas.raw_normal();
-                    let unit =
-                        (clamp && !formulas.half_vector() && !formulas.rounds()).then_some((r, v));
-                    literal_pow(cos_phi, m.n_s, clamp, unit).map(|p| o_s * arrival.i_l * p)
-                };
-                SpecularTerm {
-                    status: st,
-                    r: Some(r),
-                    cos_phi: Some(cos_phi),
-                    cos_phi_pow: pow,
-                    term,
-                    literal: lit_value,
-                }
-            }
-        };
-        specular += spec.term;
-        if Rec::DETAIL && m.o_s.is_some() && at.v.is_some() {
-            match spec.literal {
-                Some(t) => literal_specular += t,
-                None => literal_defined = false,
-            }
-        }
-
-        rec.light(&LightTerm {
-            index,
-            arrival,
-            n_dot_l,
-            cos_theta,
-            status,
-            diffuse: diffuse_term,
-            diffuse_literal,
-            specular: spec,
-        });
-    }
-
-    // The total, Eq. 4.16.
-    let a = ambient.unwrap_or(V3::<R>::ZERO);
+    let s = shade_lanes::<R, F, _>(formulas, &point, true, m, lights, &mut side);
+    let a = s.ambient.unwrap_or(V3::<R>::ZERO);
     Shade {
-        ambient,
-        diffuse,
-        specular,
-        color: a + diffuse + specular,
-        literal: (Rec::DETAIL && literal_defined).then(|| a + literal_diffuse + literal_specular),
+        ambient: s.ambient,
+        diffuse: s.diffuse,
+        specular: s.specular,
+        color: s.color,
+        literal: (Rec::DETAIL && side.literal_defined)
+            .then(|| a + side.literal_diffuse + side.literal_specular),
     }
 }
 
@@ -528,7 +744,8 @@ mod tests {
     //! Each test is written once and instantiated for f32 and f64. Expected values are worked
     //! out by hand in the comments.
     use super::*;
-    use crate::core::light::{Cone, Falloff, LightKind};
+    use crate::core::lanes::{lanes_of, mask_of, Wide, W, W3};
+    use crate::core::light::{Cone, Falloff, LightKind, Reach};
     use crate::core::real::v3;
 
     fn matte_and_shiny<R: Real>() -> Material<R> {
@@ -719,6 +936,200 @@ mod tests {
         assert_eq!(s.literal.map(|l| l.x()), Some(s.specular.x()));
     }
 
+    /// Blocks the shadow rays of point lights (not spots) to points with x > 0.5: a rule both
+    /// instantiations can ask.
+    fn blocked<R: Real>(p: V3<R>, light: &Light<R>) -> bool {
+        matches!(light.kind, LightKind::Point { .. }) && p.x() > R::from_f64(0.5)
+    }
+
+    struct Blocker(u64);
+
+    impl<R: Real> Visibility<R> for Blocker {
+        fn visible(&mut self, p: V3<R>, light: &Light<R>, _: &Arrival<R>) -> bool {
+            self.0 += 1;
+            !blocked(p, light)
+        }
+    }
+
+    struct LaneBlocker<R>(u64, std::marker::PhantomData<R>);
+
+    impl<R: Real> LaneSide<W<R>> for LaneBlocker<R> {
+        const DETAIL: bool = false;
+        fn visible(
+            &mut self,
+            need: W<R>,
+            p: W3<W<R>>,
+            light: &Light<R>,
+            _: &LaneArrival<W<R>>,
+        ) -> W<R> {
+            let mut bits = 0;
+            for k in lanes_of(need.bits()) {
+                self.0 += 1;
+                if blocked(p.at(k), light) {
+                    bits |= 1 << k;
+                }
+            }
+            need.and(mask_of::<W<R>>(bits).not())
+        }
+        fn light(&mut self, _: usize, _: &Light<R>, _: &LanePoint<W<R>>, _: LaneTerm<W<R>>) {}
+    }
+
+    /// Points, normals and viewers that reach every gate of the model with the lights below:
+    /// lit, behind the surface, in the tangent plane, outside and on the edge of the spot's
+    /// cone, at a light, in shadow, R away from the viewer, and a light so far away that its
+    /// distance takes the robust branch of `between`.
+    fn gated_points<R: Real>() -> Vec<ShadingPoint<R>> {
+        let unit = |a: [f64; 3]| {
+            crate::core::vector::normalize::<R>(v3::<R>(a))
+                .unwrap()
+                .unit
+        };
+        let mut points = Vec::new();
+        for i in 0..7 {
+            for j in 0..5 {
+                let (x, y) = (f64::from(i) * 0.6 - 1.7, f64::from(j) * 0.7 - 1.3);
+                points.push(ShadingPoint {
+                    p: v3::<R>([x, y, 0.1 * x * y]),
+                    n: unit([0.1 * y, -0.2 * x, 1.0]),
+                    v: Some(unit([-x, -y + 0.3, -4.0])),
+                });
+            }
+        }
+        let up = v3::<R>([0.0, 0.0, 1.0]);
+        // Behind: N away from the lights; the viewer along the light (R away from it).
+        points.push(ShadingPoint {
+            p: v3::<R>([0.2, 0.1, 0.0]),
+            n: -up,
+            v: Some(up),
+        });
+        points.push(ShadingPoint {
+            p: v3::<R>([0.0; 3]),
+            n: up,
+            v: Some(unit([0.0, 0.0, 1.0])),
+        });
+        // At the point light; on the spot's edge (apex (0,0,4), axis −z, 45°: x = 4).
+        points.push(ShadingPoint {
+            p: v3::<R>([1.0, 2.0, 3.0]),
+            n: up,
+            v: Some(-up),
+        });
+        points.push(ShadingPoint {
+            p: v3::<R>([4.0, 0.0, 0.0]),
+            n: up,
+            v: Some(-up),
+        });
+        points.push(ShadingPoint {
+            p: v3::<R>([4.1, 0.0, 0.0]),
+            n: up,
+            v: Some(-up),
+        });
+        // The tangent plane of the light at (5, 0, 0): cos θ = 0 exactly.
+        points.push(ShadingPoint {
+            p: v3::<R>([0.0, 0.0, 0.0]),
+            n: up,
+            v: Some(unit([0.3, 0.0, -1.0])),
+        });
+        // The mirror direction of the light at (0, 0, 4), for the huge n_s.
+        points.push(ShadingPoint {
+            p: v3::<R>([0.0; 3]),
+            n: up,
+            v: Some(unit([1e-3, 0.0, -1.0])),
+        });
+        points
+    }
+
+    fn gated_lights<R: Real>() -> LightSet<R> {
+        let far = if R::NAME == "f32" { 3e20 } else { 1e160 };
+        let mut far_light = point_light::<R>([far, far, far], Falloff::Linear);
+        far_light.color = v3::<R>([far; 3]);
+        LightSet {
+            ambient: Some(v3::<R>([0.1, 0.2, 0.3])),
+            lights: vec![
+                point_light::<R>([1.0, 2.0, 3.0], Falloff::Quadratic),
+                point_light::<R>([0.0, 0.0, 4.0], Falloff::None),
+                point_light::<R>([5.0, 0.0, 0.0], Falloff::Linear),
+                Light {
+                    color: v3::<R>([0.3, 0.4, 0.5]),
+                    kind: LightKind::Directional {
+                        direction: v3::<R>([0.0, 0.6, -0.8]),
+                    },
+                },
+                Light {
+                    color: v3::<R>([0.9, 0.8, 0.7]),
+                    kind: LightKind::Spot {
+                        position: v3::<R>([0.0, 0.0, 4.0]),
+                        falloff: Falloff::Linear,
+                        cone: Cone::new(
+                            v3::<R>([0.0, 0.0, -1.0]),
+                            R::from_f64(45.0),
+                            R::from_f64(2.5),
+                        ),
+                    },
+                },
+                far_light,
+            ],
+        }
+    }
+
+    /// The lane instantiation of the core ([`shade_lanes`] over a register) gives every lane
+    /// the scalar [`shade`]'s bits and asks the same shadow rays, through every gate, for
+    /// whole and fractional n_s (repeated squaring, powf, and the huge n_s's ln_1p form).
+    fn lanes_shade_as_the_scalar_core<R: Real>() {
+        let lights = gated_lights::<R>();
+        let points = gated_points::<R>();
+        let lanes = W::<R>::LANES;
+        let mut statuses = Vec::new();
+        let mut speculars = Vec::new();
+        for n_s in [20.0, 2.5, 1e6 + 0.5] {
+            let mut m = matte_and_shiny::<R>();
+            m.n_s = R::from_f64(n_s);
+            let (mut scalar_rays, mut lane_rays) = (0, 0);
+            for group in points.chunks(lanes) {
+                let fill = group[0];
+                let at = LanePoint::<W<R>> {
+                    p: W3::gather(group.iter().map(|a| a.p), fill.p),
+                    n: W3::gather(group.iter().map(|a| a.n), fill.n),
+                    v: Some(W3::gather(
+                        group.iter().map(|a| a.v.unwrap()),
+                        fill.v.unwrap(),
+                    )),
+                };
+                let active = mask_of::<W<R>>((1 << group.len()) - 1);
+                let mut side = LaneBlocker::<R>(0, std::marker::PhantomData);
+                let wide =
+                    shade_lanes::<W<R>, Chapter, _>(Chapter, &at, active, &m, &lights, &mut side);
+                lane_rays += side.0;
+                for (k, a) in group.iter().enumerate() {
+                    let mut blocker = Blocker(0);
+                    let s = shade(a, &m, &lights, &mut blocker, &mut NoRecord);
+                    scalar_rays += blocker.0;
+                    let bits = |v: V3<R>| v.to_array().map(|c| c.to_f64().to_bits());
+                    assert_eq!(bits(wide.color.at(k)), bits(s.color), "{a:?} n_s {n_s}");
+                    assert_eq!(bits(wide.diffuse.at(k)), bits(s.diffuse), "{a:?}");
+                    assert_eq!(bits(wide.specular.at(k)), bits(s.specular), "{a:?}");
+                    let mut rec = Vec::new();
+                    shade(a, &m, &lights, &mut Blocker(0), &mut rec);
+                    statuses.extend(rec.iter().map(|t| t.status));
+                    speculars.extend(rec.iter().map(|t| t.specular.status));
+                }
+            }
+            assert_eq!(lane_rays, scalar_rays, "shadow rays asked");
+        }
+        for s in [
+            LightStatus::Lit,
+            LightStatus::BehindSurface,
+            LightStatus::InTangentPlane,
+            LightStatus::OutsideCone,
+            LightStatus::AtLight,
+            LightStatus::InShadow,
+        ] {
+            assert!(statuses.contains(&s), "no {s:?} among the cases");
+        }
+        for s in [SpecularStatus::Lit, SpecularStatus::AwayFromViewer] {
+            assert!(speculars.contains(&s), "no specular {s:?} among the cases");
+        }
+    }
+
     macro_rules! for_both_precisions {
         ($($name:ident),* $(,)?) => {
             mod f32_tests { $( #[test] fn $name() { super::$name::<f32>() } )* }
@@ -734,6 +1145,7 @@ mod tests {
         spot_cone_edge_is_lit_and_outside_is_dark,
         huge_shininess_with_cos_phi_rounded_above_one_stays_finite,
         huge_shininess_near_the_highlight_gives_no_spurious_one,
+        lanes_shade_as_the_scalar_core,
     );
 
     #[test]

@@ -4,6 +4,7 @@
 //! f64 (1e-30 and 1e30 in f32). Scaling by the largest component first keeps every square in
 //! [0, 1], so [`normalize`] works for any finite non-zero vector.
 
+use super::lanes::{LaneVec, Lanes, Mask};
 use super::real::{Real, Vector, V3};
 
 /// A unit vector together with the length of the vector it came from.
@@ -61,6 +62,58 @@ pub fn between<R: Real>(a: V3<R>, b: V3<R>) -> Option<Normalized<R>> {
         unit: n.unit,
         length: n.length * R::TWO,
     })
+}
+
+/// [`between`] in [`Lanes`]: the unit vectors from `a` to `b` and the distances, `found` where
+/// [`between`] gives `Some` (elsewhere a zero vector and length 0).
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct LaneNormalized<L: Lanes> {
+    /// (b − a)/‖b − a‖.
+    pub unit: L::V,
+    /// ‖b − a‖.
+    pub length: L,
+    /// The lanes with a direction.
+    pub found: L::Mask,
+}
+
+/// [`between`] in every lane: the common case (b − a finite, its squared length in the safe
+/// range) in lanes with [`normalize`]'s own operations, every other lane by [`between`] itself.
+#[inline(always)]
+pub(crate) fn between_lanes<L: Lanes>(a: L::V, b: L::V) -> LaneNormalized<L> {
+    let one = L::broadcast(<L::Scalar as Real>::ONE);
+    let d = b.minus(a);
+    let sq = d.dot3(d);
+    let fast = sq
+        .greater(L::broadcast(<L::Scalar as Real>::SAFE_SQUARED_MIN))
+        .both(sq.less(L::broadcast(<L::Scalar as Real>::SAFE_SQUARED_MAX)));
+    let length = sq.root();
+    let unit = d.scaled(one / length);
+    let slow = fast.invert();
+    if !slow.any() {
+        return LaneNormalized {
+            unit,
+            length,
+            found: fast,
+        };
+    }
+    let mut robust: [Option<Normalized<L::Scalar>>; 8] = [None; 8];
+    let zero = <L::Scalar as Real>::ZERO;
+    let mut found = L::pick(fast, one, L::broadcast(zero));
+    found = found.map_lanes(slow, |k, _| {
+        robust[k] = between::<L::Scalar>(a.lane(k), b.lane(k));
+        if robust[k].is_some() {
+            <L::Scalar as Real>::ONE
+        } else {
+            zero
+        }
+    });
+    LaneNormalized {
+        unit: unit.map_lanes(slow, |k, _| {
+            robust[k].map_or(V3::<L::Scalar>::ZERO, |n| n.unit)
+        }),
+        length: length.map_lanes(slow, |k, _| robust[k].map_or(zero, |n| n.length)),
+        found: found.greater(L::broadcast(zero)),
+    }
 }
 
 /// The robust Euclidean length ‖v‖ (0 for the zero vector).

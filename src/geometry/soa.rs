@@ -1,7 +1,8 @@
 //! A flat scene (planes and at most [`FLAT`] spheres, no triangles: the size at which
 //! [`Aggregate`] itself loops instead of using its BVH) in lanes, for the wide tracer: every
 //! sphere and plane tested against several rays at once (a packet: [`FlatScene::nearest`]), or
-//! one shadow ray against several spheres at once ([`FlatScene::occluded`]), with no dispatch
+//! a packet of shadow rays against each shape, stopping at the first occluder
+//! ([`FlatScene::occluded_packet`]), with no dispatch
 //! on the shape's kind.
 //!
 //! The lanes compute exactly what the scalar [`Shape::hit_t`] computes, operation for operation
@@ -20,21 +21,6 @@ use crate::core::Real;
 pub struct FlatScene<R: Real> {
     planes: Vec<(u32, Plane<R>)>,
     spheres: Vec<(u32, Sphere<R>)>,
-    /// The spheres again, [`Wide::LANES`] to a block (the last one padded), for one ray
-    /// against many.
-    blocks: Vec<SphereBlock<R>>,
-}
-
-/// Up to [`Wide::LANES`] spheres in lanes.
-#[derive(Clone, Copy, Debug)]
-struct SphereBlock<R: Real> {
-    center: W3<W<R>>,
-    /// r², as the scalar code forms it.
-    r2: W<R>,
-    /// The mask of the lanes that hold a sphere.
-    used: W<R>,
-    /// Where the block starts in [`FlatScene::spheres`].
-    first: usize,
 }
 
 /// The lanes where `x` is 0 or a square the fast formula may use ([`Sphere::intersect_line`]).
@@ -146,33 +132,7 @@ impl<R: Real> FlatScene<R> {
                 Shape::Triangle(_) => return None,
             }
         }
-        let lanes = W::<R>::LANES;
-        let blocks = spheres
-            .chunks(lanes)
-            .enumerate()
-            .map(|(b, chunk)| {
-                // Padding lanes repeat the first sphere and are masked out.
-                let pad = chunk[0].1;
-                let at = |k: usize| chunk.get(k).map_or(pad, |s| s.1);
-                let mut r2 = <W<R> as Wide>::Array::default();
-                let mut used = <W<R> as Wide>::Array::default();
-                for k in 0..lanes {
-                    r2.as_mut()[k] = at(k).radius * at(k).radius;
-                    used.as_mut()[k] = if k < chunk.len() { R::ONE } else { R::ZERO };
-                }
-                SphereBlock {
-                    center: W3::gather((0..lanes).map(at).map(|s| s.center), pad.center),
-                    r2: W::<R>::from_array(r2),
-                    used: W::<R>::from_array(used).eq(W::<R>::splat(R::ZERO)).not(),
-                    first: b * lanes,
-                }
-            })
-            .collect();
-        Some(FlatScene {
-            planes,
-            spheres,
-            blocks,
-        })
+        Some(FlatScene { planes, spheres })
     }
 
     /// The nearest hit of each ray of a packet (at most [`Wide::LANES`] rays), with
@@ -250,30 +210,44 @@ impl<R: Real> FlatScene<R> {
         }
     }
 
-    /// Whether any surface meets the ray with 0 < t < `t_max`: [`Aggregate::occluded`], with
-    /// the spheres tested [`Wide::LANES`] at a time.
-    pub fn occluded(&self, ray: &Ray<R>, t_max: R) -> bool {
-        if self
-            .planes
-            .iter()
-            .any(|(_, p)| Shape::Plane(*p).hit_t(ray, t_max).is_some())
-        {
-            return true;
-        }
-        let o = W3::<W<R>>::splat(ray.origin);
-        let d = W3::<W<R>>::splat(ray.direction);
-        let t_max_w = W::<R>::splat(t_max);
-        self.blocks.iter().any(|block| {
-            let (hit, _, slow) = sphere_hit_t(o, d, block.center, block.r2, t_max_w);
-            if hit.and(block.used).bits() != 0 {
-                return true;
+    /// The shadow rays of a packet, any hit: bit k of the result is set where lane k of `want`
+    /// is and some surface meets `rays[k]` with 0 < t < `t_max[k]` ([`Aggregate::occluded`] of
+    /// that ray, to the bit). Every shape is tested against all the lanes at once, and the test
+    /// stops as soon as every wanted lane is blocked. `rays` and `t_max` hold [`Wide::LANES`]
+    /// entries; the lanes not wanted may hold any ray.
+    pub(crate) fn occluded_packet(&self, rays: &[Ray<R>], t_max: &[R], want: u32) -> u32 {
+        let lanes = W::<R>::LANES;
+        debug_assert!(rays.len() == lanes && t_max.len() == lanes);
+        let o = W3::<W<R>>::gather(rays.iter().map(|r| r.origin), rays[0].origin);
+        let d = W3::<W<R>>::gather(rays.iter().map(|r| r.direction), rays[0].direction);
+        let mut tm = <W<R> as Wide>::Array::default();
+        tm.as_mut().copy_from_slice(t_max);
+        let tm = W::<R>::from_array(tm);
+        let mut blocked = 0u32;
+        // Each shape's lanes, then the lanes its fast formula could not decide, by the scalar
+        // test; `true` once every wanted lane is blocked.
+        let mut take = |(hit, _, slow): (W<R>, W<R>, W<R>), shape: Shape<R>| {
+            blocked |= hit.bits() & want;
+            for k in lanes_of(slow.bits() & want & !blocked) {
+                if shape.hit_t(&rays[k], t_max[k]).is_some() {
+                    blocked |= 1 << k;
+                }
             }
-            lanes_of(slow.and(block.used).bits()).any(|k| {
-                Shape::Sphere(self.spheres[block.first + k].1)
-                    .hit_t(ray, t_max)
-                    .is_some()
-            })
-        })
+            blocked == want
+        };
+        for (_, plane) in &self.planes {
+            if take(plane_hit_t(o, d, plane, tm), Shape::Plane(*plane)) {
+                return want;
+            }
+        }
+        for (_, sphere) in &self.spheres {
+            let c = W3::<W<R>>::splat(sphere.center);
+            let r2 = W::<R>::splat(sphere.radius * sphere.radius);
+            if take(sphere_hit_t(o, d, c, r2, tm), Shape::Sphere(*sphere)) {
+                return want;
+            }
+        }
+        blocked
     }
 }
 
@@ -336,12 +310,22 @@ mod tests {
             flat.nearest(&aggregate, packet, &mut out);
             for (k, ray) in packet.iter().enumerate() {
                 assert_eq!(out[k], aggregate.nearest(ray, infinity), "{ray:?}");
-                for t_max in [R::from_f64(3.0), R::from_f64(9.0), infinity] {
-                    assert_eq!(
-                        flat.occluded(ray, t_max),
-                        aggregate.occluded(ray, t_max),
-                        "{ray:?} {t_max}"
-                    );
+            }
+            // The same rays as shadow packets, each lane its own t_max, every other lane wanted.
+            let lanes = W::<R>::LANES;
+            let mut rs = vec![packet[0]; lanes];
+            rs[..packet.len()].copy_from_slice(packet);
+            let t_max: Vec<R> = (0..lanes)
+                .map(|k| [R::from_f64(3.0), R::from_f64(9.0), infinity][k % 3])
+                .collect();
+            for want in [
+                (1u32 << packet.len()) - 1,
+                0b0101_0101 & ((1 << packet.len()) - 1),
+            ] {
+                let got = flat.occluded_packet(&rs, &t_max, want);
+                for k in 0..packet.len() {
+                    let expected = want & (1 << k) != 0 && aggregate.occluded(&rs[k], t_max[k]);
+                    assert_eq!(got & (1 << k) != 0, expected, "{:?} {}", rs[k], t_max[k]);
                 }
             }
         }

@@ -11,7 +11,6 @@ use super::wide::{self, Engine};
 use crate::core::color::{clamp01, rgb8};
 use crate::core::real::to_f64_array;
 use crate::core::{Real, V3};
-use crate::geometry::soa::FlatScene;
 use crate::problem::{Camera, Problem};
 
 /// An 8-bit RGB image, rows top to bottom.
@@ -88,30 +87,22 @@ fn render_rows<R: Real, T: Copy + Send>(
     let rays = CameraRays::new(camera);
     let tracer = Tracer { scene, problem };
     let width = camera.width;
-    let flat = match engine {
+    let plan = match engine {
         Engine::Scalar => None,
-        Engine::Wide => Some(FlatScene::new(&scene.aggregate)),
+        Engine::Wide => Some(wide::Plan::new(scene, problem)),
     };
     let rows: Vec<(Vec<T>, Counts)> = (0..camera.height)
         .into_par_iter()
         .map(|y| {
             let mut counts = Counts::default();
             let mut row = Vec::with_capacity(width as usize * 3);
-            match &flat {
+            match &plan {
                 None => {
                     for x in 0..width {
                         row.extend_from_slice(&each(pixel_mean(&tracer, &rays, x, y, &mut counts)));
                     }
                 }
-                Some(flat) => wide::row(
-                    &tracer,
-                    flat.as_ref(),
-                    &rays,
-                    y,
-                    &mut counts,
-                    &each,
-                    &mut row,
-                ),
+                Some(plan) => wide::row(&tracer, plan, &rays, y, &mut counts, &each, &mut row),
             }
             progress();
             (row, counts)

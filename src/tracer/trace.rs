@@ -223,7 +223,59 @@ impl<R: Real> Tracer<'_, R> {
         counts: &mut Counts,
         rec: &mut impl PathRecorder<R>,
     ) -> (V3<R>, bool) {
-        let lights = &self.problem.lights;
+        let Some(h) = found else {
+            return self.miss(path, rec);
+        };
+        let m = &self.scene.materials[h.index];
+        // N turned to face the incoming ray; V is the ray's direction (Eq. 4.10).
+        let n = h.hit.facing(path.ray.direction).normal;
+        let at = ShadingPoint {
+            p: h.hit.p,
+            n,
+            v: Some(path.ray.direction),
+        };
+        // The local colour, Eq. 4.16, by the core.
+        let mut shadows = self.problem.render.shadows.then(|| shadows(&h.hit));
+        let local = shade(&at, m, &self.problem.lights, &mut shadows, &mut NoRecord).color;
+        counts.shadow += shadows.as_ref().map_or(0, |s| s.traced());
+        self.step(path, &h, n, local, counts, rec)
+    }
+
+    /// The step of a path whose ray missed: its share is the factor times the background.
+    #[inline]
+    pub(crate) fn miss(
+        &self,
+        path: &PathState<R>,
+        rec: &mut impl PathRecorder<R>,
+    ) -> (V3<R>, bool) {
+        rec.ray(&RayRecord {
+            level: path.level,
+            weight: path.weight,
+            factor: path.factor,
+            ray: path.ray,
+            spawn: path.spawn,
+            hit: None,
+            local: self.problem.background,
+            o_r: None,
+            next_weight: None,
+            stop: Some(Stop::Miss),
+        });
+        (path.factor * self.problem.background, false)
+    }
+
+    /// The rest of [`Tracer::bounce`] once the hit `h` is shaded (`n`: the normal facing the
+    /// ray, `local`: the core's colour there), for both engines: the ray's share, the stop
+    /// rules and the reflection ray.
+    #[inline]
+    pub(crate) fn step(
+        &self,
+        path: &mut PathState<R>,
+        h: &AggregateHit<R>,
+        n: V3<R>,
+        local: V3<R>,
+        counts: &mut Counts,
+        rec: &mut impl PathRecorder<R>,
+    ) -> (V3<R>, bool) {
         let PathState {
             ray,
             factor,
@@ -231,38 +283,20 @@ impl<R: Real> Tracer<'_, R> {
             level,
             spawn,
         } = *path;
+        let m = &self.scene.materials[h.index];
+        let share = factor * local;
         let mut record = RayRecord {
             level,
             weight,
             factor,
             ray,
             spawn,
-            hit: None,
-            local: self.problem.background,
-            o_r: None,
+            hit: Some(*h),
+            local,
+            o_r: m.o_r,
             next_weight: None,
-            stop: Some(Stop::Miss),
+            stop: None,
         };
-        let Some(h) = found else {
-            rec.ray(&record);
-            return (factor * self.problem.background, false);
-        };
-        record.hit = Some(h);
-        let m = &self.scene.materials[h.index];
-        // N turned to face the incoming ray; V is the ray's direction (Eq. 4.10).
-        let n = h.hit.facing(ray.direction).normal;
-        let at = ShadingPoint {
-            p: h.hit.p,
-            n,
-            v: Some(ray.direction),
-        };
-        // The local colour, Eq. 4.16, by the core.
-        let mut shadows = self.problem.render.shadows.then(|| shadows(&h.hit));
-        let local = shade(&at, m, lights, &mut shadows, &mut NoRecord).color;
-        counts.shadow += shadows.as_ref().map_or(0, |s| s.traced());
-        let share = factor * local;
-        record.local = local;
-        record.o_r = m.o_r;
         // A reflection ray only where O_r ≠ 0, its level ≤ the maximum and its weight
         // w_s = w_p·max(O_r) above the minimum (docs/conventions.md, "Recursion level",
         // "Weight").

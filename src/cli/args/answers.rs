@@ -50,7 +50,8 @@ pub(crate) struct GradeArgs {
     /// The submissions: a CSV file (or - for standard input) with the columns student,
     /// exercise, answer, separated by commas, semicolons or tabs; a first row that names the
     /// three columns (student|aluno|estudante, exercise|exercicio|questao, answer|resposta) is a
-    /// header.
+    /// header, and may name a fourth, steps|passos, of step answers such as "cos_theta=0.98995;
+    /// n_dot_l=-0.98995" (judged as check --step judges them; they change no points).
     #[arg(value_name = "SUBMISSIONS")]
     pub(crate) submissions: PathBuf,
     /// The separator of the submissions' fields: `,`, `;` or `tab` [default: detected from the

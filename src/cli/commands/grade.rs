@@ -92,29 +92,30 @@ pub(crate) fn run(args: &GradeArgs) -> Result<Exit, CliError> {
         ),
         GradeFormat::Gradescope => gradescope(&report, args),
     };
-    let mut exit = error::carry_on(written);
+    let lang = args.lang;
+    let mut exit = error::carry_on_in(written, lang);
     // The summary and the totals are written even when the report could not be.
     if let Some(summary) = &args.summary {
-        exit = exit.max(error::carry_on(output::emit_bytes(
-            Some(summary),
-            &check::grade::summary_csv(&report),
-        )));
+        exit = exit.max(error::carry_on_in(
+            output::emit_bytes(Some(summary), &check::grade::summary_csv(&report)),
+            lang,
+        ));
     }
     if let Some(by) = &args.by_student {
-        exit = exit.max(error::carry_on(output::emit_bytes(
-            Some(by),
-            &check::grade::students_csv(&report),
-        )));
+        exit = exit.max(error::carry_on_in(
+            output::emit_bytes(Some(by), &check::grade::students_csv(&report)),
+            lang,
+        ));
     }
     let total =
         |f: fn(&check::grade::SummaryOut) -> usize| report.summary.iter().map(f).sum::<usize>();
-    output::say(&format_args!(
-        "graded {} rows: {} right, {} by the likely intended reading, {} wrong, {} invalid",
+    output::say(&check::messages::graded(
         report.rows.len(),
         total(|s| s.right),
         total(|s| s.reading),
         total(|s| s.wrong),
-        total(|s| s.invalid)
+        total(|s| s.invalid),
+        lang,
     ));
     Ok(exit)
 }

@@ -26,7 +26,7 @@ pub(crate) fn run(args: &NewArgs) -> Result<Exit, CliError> {
     let mut exit = Exit::Success;
     for p in problems {
         let written = output::emit(Some(&dir.join(&p.file_name)), &p.text());
-        exit = exit.max(error::carry_on(written));
+        exit = exit.max(error::carry_on_in(written, args.lang));
     }
     Ok(exit)
 }

@@ -3,28 +3,35 @@
 //! A row's samples are taken in blocks of [`BLOCK`] (a strip of neighbouring pixels, so the
 //! primary rays of a packet are coherent). Each block keeps a queue of live paths per bounce
 //! (a wavefront): the queue's rays are intersected [`Wide::LANES`] at a time against a
-//! [`FlatScene`] (8 rays per instruction in f32, 4 in f64), each hit is stepped by the scalar
-//! tracer's own [`Tracer::bounce`] (the core's [`crate::core::shade`] with the shadow rays, the
-//! stop rules, the reflection ray), and the rays it spawns form the next bounce's queue. A hit
-//! may push more than one child (refraction is planned): each queue entry carries the sample
-//! it adds to and its own factor, so a ray tree fits the same queues.
+//! [`FlatScene`] (8 rays per instruction in f32, 4 in f64); the hits are grouped by material
+//! and shaded a register at a time by the core's own arithmetic ([`shade_lanes`], of which the
+//! scalar [`crate::core::shade`] is the one-lane instance), their shadow rays built as
+//! `ShadowRays` builds them and tested as packets, any hit ([`FlatScene::occluded_packet`]);
+//! then each path is stepped by the scalar tracer's own [`Tracer::step`] (the stop rules, the
+//! reflection ray), and the rays it spawns form the next bounce's queue. The loop is one of four
+//! instances ([`Plan`]), chosen once per render by whether the scene has shadows and reflection.
+//! A hit may push more than one child (refraction is planned): each queue entry carries the
+//! sample it adds to and its own factor, so a ray tree fits the same queues.
 //!
 //! The shares of a sample are added in bounce order, as [`Tracer::trace`] adds them, and a
 //! pixel's samples in sample order, as [`super::render::pixel_mean`] does; the packet
 //! intersection is the aggregate's to the bit ([`FlatScene`]). So the image is the scalar
 //! tracer's, byte for byte, in both precisions (src/tracer/wide/tests.rs). Scenes the packets do not cover
 //! (more than a handful of spheres, which the aggregate puts in a BVH, or triangles) take the
-//! same queues with the aggregate's scalar intersection.
+//! same queues and the same shading in lanes with the aggregate's scalar intersection and
+//! occlusion, lane by lane.
 
 use super::camera::CameraRays;
 use super::render::{clamped, mean};
 use super::sampler::sample;
-use super::trace::{CountedVisibility, Counts, PathState, Tracer};
-use crate::core::lanes::Wide;
-use crate::core::{Arrival, Light, Real, Vector, Visibility, V3};
-use crate::geometry::shadow::ShadowRays;
+use super::trace::{Counts, PathState, Scene, Tracer};
+use crate::core::lanes::{lanes_of, mask_of, Wide, W, W3};
+use crate::core::light::LaneArrival;
+use crate::core::shade::{shade_lanes, LanePoint, LaneSide, LaneTerm};
+use crate::core::{Chapter, Light, Material, Real, Vector, V3};
 use crate::geometry::soa::FlatScene;
-use crate::geometry::{AggregateHit, SurfaceHit};
+use crate::geometry::{Aggregate, AggregateHit, Ray};
+use crate::problem::Problem;
 
 /// Samples traced together: a strip of a row (one sample per pixel: 64 pixels).
 pub const BLOCK: usize = 64;
@@ -58,30 +65,184 @@ struct Entry<R: Real> {
     path: PathState<R>,
 }
 
-/// Shadow rays from a hit as [`ShadowRays`] makes them, each tested against the flat scene's
-/// spheres in lanes ([`FlatScene::occluded`]: the aggregate's answer).
-pub(crate) struct FlatShadowRays<'a, R: Real> {
-    rays: ShadowRays<'a, R>,
-    flat: &'a FlatScene<R>,
+/// What the wide engine decides once per render: the flat scene in lanes (when the scene is
+/// flat), each surface's material as an index into the distinct materials (the hits of a bounce
+/// are shaded together by material), and which instance of the bounce loop the scene needs.
+pub(crate) struct Plan<R: Real> {
+    flat: Option<FlatScene<R>>,
+    /// The material of surface i is `materials[material_of[i]]`.
+    material_of: Vec<u32>,
+    materials: Vec<Material<R>>,
+    /// The instance of the bounce loop the scene needs.
+    model: Model,
 }
 
-impl<R: Real> Visibility<R> for FlatShadowRays<'_, R> {
-    #[inline]
-    fn visible(&mut self, p: V3<R>, light: &Light<R>, arrival: &Arrival<R>) -> bool {
-        debug_assert!(p == self.rays.from.p);
-        self.rays.traced += 1;
-        match self.rays.ray(light, arrival.l) {
-            Some(s) => !self.flat.occluded(&s.ray, s.t_max),
-            None => true,
+/// The monomorphised instances of the bounce loop, chosen once per render by what the scene
+/// contains: shadow rays only with shadows on, the reflection step only where some surface
+/// reflects. (The spot cone and the specular term are decided by the core per light and per
+/// material, once for a register of hits, never per ray.)
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Model {
+    /// Shadows on, some surface reflects (the classic scene).
+    ShadowsReflections,
+    /// Shadows on, nothing reflects: one bounce.
+    Shadows,
+    /// Shadows off, some surface reflects.
+    Reflections,
+    /// Shadows off, nothing reflects.
+    Local,
+}
+
+impl<R: Real> Plan<R> {
+    /// The plan for rendering `scene` with `problem`'s settings.
+    pub(crate) fn new(scene: &Scene<R>, problem: &Problem<R>) -> Self {
+        let (material_of, materials) = distinct_materials(&scene.materials);
+        let reflects = scene
+            .materials
+            .iter()
+            .any(|m| m.o_r.is_some_and(|o| o != V3::<R>::ZERO));
+        let model = match (problem.render.shadows, reflects) {
+            (true, true) => Model::ShadowsReflections,
+            (true, false) => Model::Shadows,
+            (false, true) => Model::Reflections,
+            (false, false) => Model::Local,
+        };
+        Plan {
+            flat: FlatScene::new(&scene.aggregate),
+            material_of,
+            materials,
+            model,
         }
     }
 }
 
-impl<R: Real> CountedVisibility<R> for FlatShadowRays<'_, R> {
+/// Each material as an index into the distinct ones (equal in what shading reads: O_a, O_d,
+/// O_s, n_s, compared by their bits), and the distinct ones in order of first appearance.
+fn distinct_materials<R: Real>(all: &[Material<R>]) -> (Vec<u32>, Vec<Material<R>>) {
+    let mut materials: Vec<Material<R>> = Vec::new();
+    let mut index: std::collections::HashMap<[u64; 13], u32> = std::collections::HashMap::new();
+    // What shading reads of a material (O_r is the step's, read from the surface itself).
+    let key = |m: &Material<R>| {
+        let mut k = [0u64; 13];
+        let mut put = |i: usize, v: Option<V3<R>>| {
+            if let Some(v) = v {
+                k[i] = 1;
+                for (j, c) in v.to_array().iter().enumerate() {
+                    k[i + 1 + j] = c.to_f64().to_bits();
+                }
+            }
+        };
+        put(0, m.o_a);
+        put(4, m.o_d);
+        put(8, m.o_s);
+        k[12] = m.n_s.to_f64().to_bits();
+        k
+    };
+    // A scene has a handful of distinct materials (a mesh's triangles repeat its own): the
+    // previous surface's first, then a look along the few found, the map past 16 of them.
+    let mut keys: Vec<[u64; 13]> = Vec::new();
+    let mut last: Option<([u64; 13], u32)> = None;
+    let material_of: Vec<u32> = all
+        .iter()
+        .map(|m| {
+            let k = key(m);
+            if let Some((lk, li)) = last {
+                if lk == k {
+                    return li;
+                }
+            }
+            let i = if keys.len() <= 16 {
+                keys.iter().position(|x| *x == k).map(|i| i as u32)
+            } else {
+                index.get(&k).copied()
+            };
+            let i = i.unwrap_or_else(|| {
+                materials.push(*m);
+                keys.push(k);
+                let i = (materials.len() - 1) as u32;
+                if keys.len() == 17 {
+                    index.extend(keys.iter().enumerate().map(|(j, x)| (*x, j as u32)));
+                } else if keys.len() > 17 {
+                    index.insert(k, i);
+                }
+                i
+            });
+            last = Some((k, i));
+            i
+        })
+        .collect();
+    (material_of, materials)
+}
+
+/// The wide engine's side of the core's [`shade_lanes`]: the shadow rays of a register of hits
+/// on one material, built as [`crate::geometry::shadow::ShadowRays`] builds them and tested as a
+/// packet ([`FlatScene::occluded_packet`], or the aggregate's `occluded` lane by lane for scenes
+/// in a BVH), counted as the scalar engine counts them.
+struct WideSide<'a, R: Real, const SHADOWS: bool> {
+    aggregate: &'a Aggregate<R>,
+    flat: Option<&'a FlatScene<R>>,
+    /// The group being shaded: lane k holds the hit of queue entry `group[k].1`.
+    group: &'a [(u32, u32)],
+    /// The nearest hit of each queue entry.
+    found: &'a [Option<AggregateHit<R>>],
+    /// The shadow rays traced.
+    traced: u64,
+}
+
+impl<R: Real, const SHADOWS: bool> LaneSide<W<R>> for WideSide<'_, R, SHADOWS> {
+    const DETAIL: bool = false;
+
     #[inline]
-    fn traced(&self) -> u64 {
-        self.rays.traced
+    fn visible(
+        &mut self,
+        need: W<R>,
+        _: W3<W<R>>,
+        light: &Light<R>,
+        arrival: &LaneArrival<W<R>>,
+    ) -> W<R> {
+        if !SHADOWS {
+            return need;
+        }
+        let bits = need.bits();
+        let lanes = W::<R>::LANES;
+        let mut rays = [Ray {
+            origin: V3::<R>::ZERO,
+            direction: V3::<R>::ZERO,
+        }; 8];
+        let mut t_max = [R::ZERO; 8];
+        let mut want = 0u32;
+        for k in lanes_of(bits) {
+            self.traced += 1;
+            let Some(h) = &self.found[self.group[k].1 as usize] else {
+                unreachable!("a group holds hits")
+            };
+            let from = h.hit.shadow_rays(self.aggregate);
+            if let Some(s) = from.ray(light, arrival.l.at(k)) {
+                rays[k] = s.ray;
+                t_max[k] = s.t_max;
+                want |= 1 << k;
+            }
+        }
+        if want == 0 {
+            return need;
+        }
+        let first = want.trailing_zeros() as usize;
+        for k in 0..lanes {
+            if want & (1 << k) == 0 {
+                rays[k] = rays[first];
+            }
+        }
+        let blocked = match self.flat {
+            Some(flat) => flat.occluded_packet(&rays[..lanes], &t_max[..lanes], want),
+            None => lanes_of(want)
+                .filter(|&k| self.aggregate.occluded(&rays[k], t_max[k]))
+                .fold(0, |b, k| b | 1 << k),
+        };
+        need.and(mask_of::<W<R>>(blocked).not())
     }
+
+    #[inline(always)]
+    fn light(&mut self, _: usize, _: &Light<R>, _: &LanePoint<W<R>>, _: LaneTerm<W<R>>) {}
 }
 
 /// The queues and buffers of one row, allocated once per row and reused by its blocks.
@@ -89,15 +250,44 @@ struct Buffers<R: Real> {
     queue: Vec<Entry<R>>,
     next: Vec<Entry<R>>,
     colors: Vec<V3<R>>,
+    /// The nearest hit of each queue entry.
+    found: Vec<Option<AggregateHit<R>>>,
+    /// The normal facing the ray and the local colour of each queue entry with a hit.
+    shaded: Vec<(V3<R>, V3<R>)>,
+    /// (material, entry) of the entries with a hit, sorted: the groups shaded together.
+    groups: Vec<(u32, u32)>,
     hits: Vec<Option<AggregateHit<R>>>,
-    rays: Vec<crate::geometry::Ray<R>>,
+    rays: Vec<Ray<R>>,
 }
 
 /// Pixel means of row `y`, each mapped by `each` and appended to `out`: the row
 /// [`super::render::pixel_mean`] gives pixel by pixel, traced in packets.
 pub(crate) fn row<R: Real, T: Copy>(
     tracer: &Tracer<R>,
-    flat: Option<&FlatScene<R>>,
+    plan: &Plan<R>,
+    camera: &CameraRays<R>,
+    y: u32,
+    counts: &mut Counts,
+    each: &impl Fn([f64; 3]) -> [T; 3],
+    out: &mut Vec<T>,
+) {
+    match plan.model {
+        Model::ShadowsReflections => {
+            row_in::<R, T, true, true>(tracer, plan, camera, y, counts, each, out)
+        }
+        Model::Shadows => row_in::<R, T, true, false>(tracer, plan, camera, y, counts, each, out),
+        Model::Reflections => {
+            row_in::<R, T, false, true>(tracer, plan, camera, y, counts, each, out)
+        }
+        Model::Local => row_in::<R, T, false, false>(tracer, plan, camera, y, counts, each, out),
+    }
+}
+
+/// [`row`] in the instance the scene needs: `SHADOWS` (shadow rays), `REFLECT` (some surface
+/// reflects: the stop rules and the reflection queue).
+fn row_in<R: Real, T: Copy, const SHADOWS: bool, const REFLECT: bool>(
+    tracer: &Tracer<R>,
+    plan: &Plan<R>,
     camera: &CameraRays<R>,
     y: u32,
     counts: &mut Counts,
@@ -112,10 +302,14 @@ pub(crate) fn row<R: Real, T: Copy>(
         queue: Vec::with_capacity(BLOCK),
         next: Vec::with_capacity(BLOCK),
         colors: vec![V3::<R>::ZERO; BLOCK],
+        found: Vec::with_capacity(BLOCK),
+        shaded: vec![(V3::<R>::ZERO, V3::<R>::ZERO); BLOCK],
+        groups: Vec::with_capacity(BLOCK),
         hits: vec![None; lanes],
         rays: Vec::with_capacity(lanes),
     };
     let aggregate = &tracer.scene.aggregate;
+    let flat = plan.flat.as_ref();
     let mut sum = [0.0f64; 3];
     for start in (0..total).step_by(BLOCK) {
         let end = (start + BLOCK).min(total);
@@ -131,10 +325,11 @@ pub(crate) fn row<R: Real, T: Copy>(
             b.colors[s - start] = V3::<R>::ZERO;
         }
         counts.primary += (end - start) as u64;
-        // One bounce per pass: the queue's nearest hits a packet at a time, then each hit
-        // shaded and its children queued for the next pass.
+        // One bounce per pass: the queue's nearest hits a packet at a time; the hits shaded
+        // by material, a register at a time; then each path stepped and its child queued.
         while !b.queue.is_empty() {
             b.next.clear();
+            b.found.clear();
             for packet in b.queue.chunks(lanes) {
                 match flat {
                     Some(flat) => {
@@ -148,32 +343,22 @@ pub(crate) fn row<R: Real, T: Copy>(
                         aggregate.nearest_packet(&b.rays, &mut b.hits);
                     }
                 }
-                for (k, e) in packet.iter().enumerate() {
-                    let mut path = e.path;
-                    let found = b.hits[k];
-                    let (share, more) = match flat {
-                        Some(flat) => tracer.bounce(
-                            &mut path,
-                            found,
-                            |h: &SurfaceHit<R>| FlatShadowRays {
-                                rays: h.shadow_rays(aggregate),
-                                flat,
-                            },
-                            counts,
-                            &mut (),
-                        ),
-                        None => tracer.bounce(
-                            &mut path,
-                            found,
-                            |h: &SurfaceHit<R>| h.shadow_rays(aggregate),
-                            counts,
-                            &mut (),
-                        ),
-                    };
-                    b.colors[e.slot as usize] += share;
-                    if more {
-                        b.next.push(Entry { slot: e.slot, path });
+                b.found.extend_from_slice(&b.hits[..packet.len()]);
+            }
+            shade_queue::<R, SHADOWS>(tracer, plan, &mut b, counts);
+            for (i, e) in b.queue.iter().enumerate() {
+                let mut path = e.path;
+                let (share, more) = match &b.found[i] {
+                    None => tracer.miss(&path, &mut ()),
+                    Some(h) if REFLECT => {
+                        let (n, local) = b.shaded[i];
+                        tracer.step(&mut path, h, n, local, counts, &mut ())
                     }
+                    Some(_) => (path.factor * b.shaded[i].1, false),
+                };
+                b.colors[e.slot as usize] += share;
+                if more {
+                    b.next.push(Entry { slot: e.slot, path });
                 }
             }
             std::mem::swap(&mut b.queue, &mut b.next);
@@ -188,6 +373,71 @@ pub(crate) fn row<R: Real, T: Copy>(
                 out.extend_from_slice(&each(mean(sum, n)));
                 sum = [0.0; 3];
             }
+        }
+    }
+}
+
+/// The local colour of every queue entry with a hit, by the core's [`shade_lanes`]: the hits
+/// grouped by material (in queue order within a material), each group a register of lanes at a
+/// time; the normal facing each ray and the colour go to `b.shaded`.
+#[inline]
+fn shade_queue<R: Real, const SHADOWS: bool>(
+    tracer: &Tracer<R>,
+    plan: &Plan<R>,
+    b: &mut Buffers<R>,
+    counts: &mut Counts,
+) {
+    let lanes = W::<R>::LANES;
+    b.groups.clear();
+    for (i, h) in b.found.iter().enumerate() {
+        if let Some(h) = h {
+            b.groups.push((plan.material_of[h.index], i as u32));
+        }
+    }
+    b.groups.sort_unstable();
+    let lights = &tracer.problem.lights;
+    let mut at = 0;
+    while at < b.groups.len() {
+        let material = b.groups[at].0;
+        let mut len = 1;
+        while len < lanes && at + len < b.groups.len() && b.groups[at + len].0 == material {
+            len += 1;
+        }
+        let group = &b.groups[at..at + len];
+        at += len;
+        // Lanes past the group's end repeat its last hit (and are not active).
+        let mut nrm = [V3::<R>::ZERO; 8];
+        let (mut p, mut v) = ([V3::<R>::ZERO; 8], [V3::<R>::ZERO; 8]);
+        for k in 0..lanes {
+            let i = group[k.min(len - 1)].1 as usize;
+            let (Some(h), d) = (&b.found[i], b.queue[i].path.ray.direction) else {
+                unreachable!("a group holds hits")
+            };
+            p[k] = h.hit.p;
+            // N turned to face the incoming ray; V is the ray's direction (Eq. 4.10).
+            nrm[k] = h.hit.facing(d).normal;
+            v[k] = d;
+        }
+        let fill = V3::<R>::ZERO;
+        let point = LanePoint::<W<R>> {
+            p: W3::gather(p[..lanes].iter().copied(), fill),
+            n: W3::gather(nrm[..lanes].iter().copied(), fill),
+            v: Some(W3::gather(v[..lanes].iter().copied(), fill)),
+        };
+        let mut side = WideSide::<R, SHADOWS> {
+            aggregate: &tracer.scene.aggregate,
+            flat: plan.flat.as_ref(),
+            group,
+            found: &b.found,
+            traced: 0,
+        };
+        let active = mask_of::<W<R>>((1u32 << len) - 1);
+        let m = &plan.materials[material as usize];
+        // The local colour, Eq. 4.16, by the core, in lanes.
+        let s = shade_lanes::<W<R>, Chapter, _>(Chapter, &point, active, m, lights, &mut side);
+        counts.shadow += side.traced;
+        for (k, &(_, i)) in group.iter().enumerate() {
+            b.shaded[i as usize] = (nrm[k], s.color.at(k));
         }
     }
 }

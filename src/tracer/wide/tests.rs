@@ -1,8 +1,9 @@
 //! The wide engine (packets of 8 × f32 or 4 × f64 lanes, queues per bounce) renders the scalar
 //! engine's image bit for bit: every bundled scene, both precisions, the pixel means before
 //! rounding compared by their bits, and the ray counts equal. No operation of the wide path is
-//! allowed to differ from the scalar one: the lanes do IEEE +, −, ×, ÷, √ in the scalar order,
-//! and everything else (hit points, shading, pow, the cone's atan2) is the scalar code itself.
+//! allowed to differ from the scalar one: the lanes do IEEE +, −, ×, ÷, √ in the scalar order
+//! (the shading is the core's one source in lanes), and everything else (hit points, pow, the
+//! cone's atan2, the shadow rays' origins) is the scalar code itself, lane by lane.
 
 use std::path::{Path, PathBuf};
 
@@ -104,6 +105,67 @@ fn varied_scenes_in<R: Real>() {
 fn packets_and_bvh_scenes_with_samples_render_the_same_bits_in_both_precisions() {
     varied_scenes_in::<f32>();
     varied_scenes_in::<f64>();
+}
+
+/// The instances of the bounce loop without reflection (shadows on and off): the many-spheres
+/// scene with every reflectivity taken out, so that nothing reflects.
+fn unreflective_scenes_in<R: Real>() {
+    let mut json = many_spheres::scene(5);
+    for m in json["materials"]
+        .as_object_mut()
+        .expect("materials")
+        .values_mut()
+    {
+        m.as_object_mut()
+            .expect("a material")
+            .remove("reflectivity");
+    }
+    let mut problem = load::<R>(&json.to_string());
+    assert!(problem
+        .surfaces()
+        .iter()
+        .all(|s| s.material.material.o_r.is_none()));
+    let mut camera = problem.camera.expect("a camera");
+    camera.width = 53;
+    camera.height = 29;
+    for shadows in [true, false] {
+        problem.render.shadows = shadows;
+        let name = format!("5 spheres, nothing reflects, shadows {shadows}");
+        same_by_both_engines::<R>(&name, &problem, &camera);
+    }
+}
+
+#[test]
+fn scenes_where_nothing_reflects_render_the_same_bits_in_both_precisions() {
+    unreflective_scenes_in::<f32>();
+    unreflective_scenes_in::<f64>();
+}
+
+/// Materials shaded together are equal in what shading reads, past the 16 the plan looks
+/// through before it keeps a map: 40 materials, 20 distinct (n_s 1 to 20), each twice, the
+/// second time with another O_r (which shading does not read).
+#[test]
+fn the_plan_groups_exactly_the_equal_materials() {
+    use crate::core::real::v3;
+    use crate::core::Material;
+    let m = |i: usize, o_r: f64| Material::<f64> {
+        o_a: Some(v3::<f64>([0.1; 3])),
+        o_d: Some(v3::<f64>([0.5, 0.4, 0.3])),
+        o_s: (i % 3 != 0).then(|| v3::<f64>([0.2; 3])),
+        n_s: (i + 1) as f64,
+        o_r: Some(v3::<f64>([o_r; 3])),
+    };
+    let all: Vec<Material<f64>> = (0..40).map(|i| m(i % 20, (i / 20) as f64 * 0.5)).collect();
+    let (of, distinct) = super::distinct_materials(&all);
+    assert_eq!(distinct.len(), 20);
+    for (i, id) in of.iter().enumerate() {
+        assert_eq!(*id as usize, i % 20, "material {i}");
+        let d = distinct[*id as usize];
+        assert_eq!(
+            (d.o_a, d.o_d, d.o_s, d.n_s),
+            (all[i].o_a, all[i].o_d, all[i].o_s, all[i].n_s)
+        );
+    }
 }
 
 /// Triangles (the torus mesh of scenes/mesh.json: SoA triangle leaves of the wide BVH) with
