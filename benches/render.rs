@@ -123,8 +123,7 @@ fn bench_trace<R: Real>(c: &mut Criterion, scenes: &[SceneFile]) {
 fn whole<R: Real>(path: &Path, out: &Path, pool: &rayon::ThreadPool) -> usize {
     let (problem, camera) = load::<R>(path);
     let scene = pool.install(|| Scene::new(&problem));
-    let (image, _) =
-        pool.install(|| render_with(Engine::Wide, &problem, &camera, &scene, &|| {}));
+    let (image, _) = pool.install(|| render_with(Engine::Wide, &problem, &camera, &scene, &|| {}));
     let bytes = encode(&image, ImageFormat::Ppm);
     std::fs::write(out, &bytes).expect("the image is written");
     bytes.len()
@@ -213,9 +212,10 @@ mod targets {
                     serde_json::from_str(&std::fs::read_to_string(p).ok()?).ok()
                 };
                 if let (Some(b), Some(e)) = (read(&bench), read(&estimates)) {
-                    if let (Some(id), Some(ns)) =
-                        (b["full_id"].as_str(), e["median"]["point_estimate"].as_f64())
-                    {
+                    if let (Some(id), Some(ns)) = (
+                        b["full_id"].as_str(),
+                        e["median"]["point_estimate"].as_f64(),
+                    ) {
                         out.insert(id.to_owned(), ns * 1e-9);
                     }
                 }
@@ -321,7 +321,10 @@ mod targets {
         let load = std::fs::read_to_string("/proc/loadavg").unwrap_or_default();
         let text = format!(
             "Issue 17's targets, from this run's medians (load average {}):\n\n{}\n",
-            load.split_whitespace().take(3).collect::<Vec<_>>().join(" "),
+            load.split_whitespace()
+                .take(3)
+                .collect::<Vec<_>>()
+                .join(" "),
             lines.join("\n")
         );
         println!("\n{text}");

@@ -367,8 +367,15 @@ fn both_engines_give_the_same_errors_and_rays() {
     // Something was traced past the primary rays (reflections and shadows), in both precisions.
     let rows = wide["settings"].as_array().unwrap();
     assert_eq!(rows.len(), 2 * 2 * 3 * 2, "{wide}");
-    assert!(rows.iter().any(|r| r["rays"]["reflection"].as_u64() > Some(0)), "{wide}");
-    assert!(rows.iter().any(|r| r["rays"]["shadow"].as_u64() > Some(0)), "{wide}");
+    assert!(
+        rows.iter()
+            .any(|r| r["rays"]["reflection"].as_u64() > Some(0)),
+        "{wide}"
+    );
+    assert!(
+        rows.iter().any(|r| r["rays"]["shadow"].as_u64() > Some(0)),
+        "{wide}"
+    );
     let wide = without_times(wide);
     assert_eq!(wide, without_times(scalar));
     assert_eq!(wide, without_times(default));

@@ -65,12 +65,18 @@ mod tests {
         let surfaces = Field::Name("surfaces");
         let s = surfaces.index(12);
         let m = s.key("material");
-        assert_eq!(m.key("diffuse").to_string(), "surfaces[12].material.diffuse");
+        assert_eq!(
+            m.key("diffuse").to_string(),
+            "surfaces[12].material.diffuse"
+        );
         let v = s.key("vertices");
         assert_eq!(String::from(v.index(2)), "surfaces[12].vertices[2]");
         // A material's name is written as given, dots and all.
         let materials = Field::Name("materials");
         assert_eq!(materials.key("a.b").key("k").to_string(), "materials.a.b.k");
-        assert_eq!(Field::Name("camera.eye").index(0).to_string(), "camera.eye[0]");
+        assert_eq!(
+            Field::Name("camera.eye").index(0).to_string(),
+            "camera.eye[0]"
+        );
     }
 }

@@ -25,8 +25,8 @@ pub use model::{
 pub use warnings::{Warning, WarningKind};
 
 use crate::core::Real;
-use serde::Deserialize;
 use format::{LightSpec, LightType, SurfaceSpec, SurfaceType};
+use serde::Deserialize;
 
 /// The largest problem file read: 64 MiB (a scene of a million spheres is about 100 MB; a
 /// chapter's exercise is 1 kB).

@@ -38,7 +38,10 @@ pub fn validate_in<R: Real>(
         light_info,
         ambient_info,
     } = lights::<R>(&file.lights)?;
-    let viewer = file.viewer.map(|v| vector::<R>(v, Field::Name("viewer"))).transpose()?;
+    let viewer = file
+        .viewer
+        .map(|v| vector::<R>(v, Field::Name("viewer")))
+        .transpose()?;
     let first_light = light_info
         .first()
         .map(|i| light_label(i.file_index, i.kind));
@@ -907,7 +910,7 @@ fn material<R: Real>(spec: &MaterialSpec, field: Field<'_>) -> Result<NamedMater
     };
     Ok(NamedMaterial {
         name: None,
-        spec: spec.clone(),
+        spec: std::sync::Arc::new(spec.clone()),
         material: Material {
             o_a,
             o_d,
@@ -979,11 +982,7 @@ fn vector<R: Real>(a: Triple, field: Field<'_>) -> Result<V3<R>, Invalid> {
     Ok(V3::<R>::new(x, y, z))
 }
 
-fn direction<R: Real>(
-    a: Triple,
-    field: Field<'_>,
-    what: &str,
-) -> Result<GivenVector<R>, Invalid> {
+fn direction<R: Real>(a: Triple, field: Field<'_>, what: &str) -> Result<GivenVector<R>, Invalid> {
     let v = vector::<R>(a, field)?;
     match normalize::<R>(v) {
         // Its length is reported (and a length beyond the precision's range would be infinity).

@@ -25,7 +25,7 @@ use serde::Serialize;
 use crate::core::{Precision, Real};
 use crate::problem::{Camera, Problem};
 use crate::tracer::render::render_linear_with;
-use crate::tracer::{Counts, Engine, LinearImage, Scene};
+use crate::tracer::{render_linear, Counts, Engine, LinearImage, Scene};
 
 pub use sweep::{ReferenceSettings, Setting, Sweep, MAX_RUNS, MAX_SWEEP_RAYS};
 
@@ -184,8 +184,13 @@ impl<R: Real> Prepared<R> {
         r.min_weight = R::from_f64(setting.min_weight);
         r.samples = setting.samples;
         let t = Instant::now();
-        let (image, counts) =
-            render_linear_with(engine, &self.problem, &self.camera, &self.scene, &|| {});
+        let (p, c, s) = (&self.problem, &self.camera, &self.scene);
+        // `render_linear` is the tracer's entry for its default engine.
+        let (image, counts) = if engine == Engine::default() {
+            render_linear(p, c, s, &|| {})
+        } else {
+            render_linear_with(engine, p, c, s, &|| {})
+        };
         (image, counts, t.elapsed().as_secs_f64())
     }
 }
@@ -204,15 +209,10 @@ impl Scenes {
 }
 
 /// Renders the reference, then every setting `sweep.runs` times round-robin, on the current
-/// rayon pool (its thread count is reported), by the default engine. `progress` is told each
+/// rayon pool (its thread count is reported), every render (the reference too) by `engine`: the
+/// engines give the same images and rays, so only the times differ. `progress` is told each
 /// render as it starts.
-pub fn measure(scenes: Scenes, sweep: &Sweep, progress: &dyn Fn(&Setting)) -> Outcome {
-    measure_with(Engine::default(), scenes, sweep, progress)
-}
-
-/// [`measure`] with every render (the reference too) by `engine`: the engines give the same
-/// images and rays, so only the times differ.
-pub fn measure_with(
+pub fn measure(
     engine: Engine,
     scenes: Scenes,
     sweep: &Sweep,

@@ -77,7 +77,7 @@ pub(crate) fn run(args: &TradeoffArgs) -> Result<Exit, CliError> {
     let estimate = (work >= 100_000_000).then(|| format!("{work:.1e} primary rays"));
     let bar = output::progress_bar(total, estimate.as_deref());
     let outcome = pool.install(|| {
-        tradeoff::measure_with(
+        tradeoff::measure(
             args.engine,
             Scenes::new(f64_scene, f32_scene),
             &sweep,
