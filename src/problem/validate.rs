@@ -711,10 +711,13 @@ fn surface<R: Real>(
     }
     let (shape, normal) = match s.kind {
         SurfaceType::Plane => {
-            let n = required(s.normal, base, "normal", &what)?;
+            let n = required(s.normal.as_deref().copied(), base, "normal", &what)?;
             let n = direction::<R>(n, f("normal"), "the plane's normal")?;
             let plane = Plane {
-                point: vector::<R>(required(s.point, base, "point", &what)?, f("point"))?,
+                point: vector::<R>(
+                    required(s.point.as_deref().copied(), base, "point", &what)?,
+                    f("point"),
+                )?,
                 normal: n.unit,
             };
             (Shape::Plane(plane), Some(n))
