@@ -66,7 +66,7 @@ done
 pov=$(median <"$work/pov.txt")
 pov_cpu=$(median <"$work/pov-cpu.txt")
 echo "trace time, median of $runs (seconds):"
-printf '  POV-Ray        %8.3f   (its CPU time for the trace: %.3f s)\n' "$pov" "$pov_cpu"
+printf '  %-16s %8.3f   (its CPU time for the trace: %.3f s)\n' POV-Ray "$pov" "$pov_cpu"
 for e in $engines; do
   for p in f64 f32; do
     t=$(median <"$work/phong-$p-$e.txt")
@@ -90,7 +90,7 @@ r = {x["command"]: x for x in json.load(open(sys.argv[1]))["results"]}
 pov = r["povray"]["median"]
 sd = r["povray"]["stddev"]  # null with a single run
 spread = f" ± {sd:.3f}" if sd is not None else ""
-print(f"  POV-Ray        {pov:8.3f} s (median; mean {r['povray']['mean']:.3f}{spread})")
+print(f"  {'POV-Ray':<16} {pov:8.3f} s (median; mean {r['povray']['mean']:.3f}{spread})")
 for p in ("phong-f64-wide", "phong-f32-wide", "phong-f64-scalar", "phong-f32-scalar"):
     t = r[p]["median"]
     print(f"  {p:<16} {t:8.3f} s   POV-Ray / phong = {pov / t:5.2f}×   (target ≥ 8×)")
@@ -108,7 +108,7 @@ else
     done
   done
   pw=$(median <"$work/wall-povray.txt")
-  printf '  POV-Ray          %8.3f s (median)\n' "$pw"
+  printf '  %-16s %8.3f s (median)\n' POV-Ray "$pw"
   for name in $phongs; do
     t=$(median <"$work/wall-$name.txt")
     printf '  %-16s %8.3f s   POV-Ray / phong = %5.2f×   (target ≥ 8×)\n' "$name" "$t" "$(echo "$pw / $t" | bc -l)"
@@ -129,7 +129,7 @@ if [ -x /usr/bin/time ]; then
     done
   done
   pc=$(median <"$work/cpu-povray.txt")
-  printf '  POV-Ray          %8.3f s\n' "$pc"
+  printf '  %-16s %8.3f s\n' POV-Ray "$pc"
   for name in $phongs; do
     t=$(median <"$work/cpu-$name.txt")
     printf '  %-16s %8.3f s   POV-Ray / phong = %5.2f×\n' "$name" "$t" "$(echo "$pc / $t" | bc -l)"
