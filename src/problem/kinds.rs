@@ -7,8 +7,10 @@
 //!   field; unknown fields are rejected, and serde lists the known ones in the table's order;
 //! - the `type` enum (`LightType`): its words (`name`, `WORDS`), the fields each kind requires
 //!   (`fields`), and its reader (a string only: `type_word`);
-//! - `present` (the fields given in a file) and `purpose` (what a field gives, for the message
-//!   when it is missing);
+//! - `present` (the fields given in a file), `present_mask` and the kind's `fields_mask` (the
+//!   same as bits, computed at compile time, so that validation asks every object whether it
+//!   gives a field its kind does not take without comparing names) and `purpose` (what a field
+//!   gives, for the message when it is missing);
 //! - the schema twin for `phong schema`: one object per kind, with `type` as its constant, its
 //!   fields required and the optional ones not, each field with the schema type, description and
 //!   bounds of the table.
