@@ -24,8 +24,7 @@ use serde::Serialize;
 
 use crate::core::{Precision, Real};
 use crate::problem::{Camera, Problem};
-use crate::tracer::render::render_linear_with;
-use crate::tracer::{render_linear, Counts, Engine, LinearImage, Scene};
+use crate::tracer::{render_linear_with, Counts, Engine, LinearImage, Scene};
 
 pub use sweep::{ReferenceSettings, Setting, Sweep, MAX_RUNS, MAX_SWEEP_RAYS};
 
@@ -185,12 +184,7 @@ impl<R: Real> Prepared<R> {
         r.samples = setting.samples;
         let t = Instant::now();
         let (p, c, s) = (&self.problem, &self.camera, &self.scene);
-        // `render_linear` is the tracer's entry for its default engine.
-        let (image, counts) = if engine == Engine::default() {
-            render_linear(p, c, s, &|| {})
-        } else {
-            render_linear_with(engine, p, c, s, &|| {})
-        };
+        let (image, counts) = render_linear_with(engine, p, c, s, &|| {});
         (image, counts, t.elapsed().as_secs_f64())
     }
 }
