@@ -5,7 +5,8 @@
 #   1. trace time: phong's own (`--stats`, "traced … in S s") against POV-Ray's own ("Trace Time"
 #      in its render statistics), the median of RUNS alternating runs of each;
 #   2. whole-process wall time of both commands (hyperfine when installed, else a loop timed
-#      with `date`), the PPM written to /tmp in both cases.
+#      with `date`), the PPM written to /tmp in both cases, and their CPU time (user + sys);
+# each for phong in f64 and f32, by the wide (default) and the scalar engine.
 #
 # Targets: phong's trace time ≥ 4× faster than POV-Ray's, whole process ≥ 8× faster.
 # Usage: benches/vs_povray.sh [RUNS]   (default 7; needs `povray`, optionally `hyperfine`)
@@ -25,12 +26,16 @@ phong_cmd=("$phong" render "$scene" -o "$work/phong.ppm" --max-level 5 --samples
 pov_cmd=(povray -D -A +Q9 File_Gamma=1.0 -GA -V +WT1 "+W$width" "+H$height" +FP "+O$work/povray.ppm" "$work/classic.pov")
 
 median() { sort -g | awk '{a[NR]=$1} END {print (NR % 2) ? a[(NR+1)/2] : (a[NR/2] + a[NR/2+1]) / 2}'; }
-# Sets cmd to the command line of one contender: povray, phong-f64 or phong-f32.
+# The phong contenders of the whole-process runs: phong-PRECISION-ENGINE.
+phongs="phong-f64-wide phong-f32-wide phong-f64-scalar phong-f32-scalar"
+# Sets cmd to the command line of one contender: povray or one of $phongs.
 command_for() {
   case $1 in
     povray) cmd=("${pov_cmd[@]}") ;;
-    phong-f64) cmd=("${phong_cmd[@]}" --precision f64) ;;
-    phong-f32) cmd=("${phong_cmd[@]}" --precision f32) ;;
+    phong-*-*)
+      local rest=${1#phong-}
+      cmd=("${phong_cmd[@]}" --precision "${rest%-*}" --engine "${rest#*-}")
+      ;;
   esac
 }
 
@@ -61,7 +66,7 @@ done
 pov=$(median <"$work/pov.txt")
 pov_cpu=$(median <"$work/pov-cpu.txt")
 echo "trace time, median of $runs (seconds):"
-printf '  POV-Ray        %8.3f   (its CPU time for the trace: %.3f s)\n' "$pov" "$pov_cpu"
+printf '  %-16s %8.3f   (its CPU time for the trace: %.3f s)\n' POV-Ray "$pov" "$pov_cpu"
 for e in $engines; do
   for p in f64 f32; do
     t=$(median <"$work/phong-$p-$e.txt")
@@ -72,28 +77,30 @@ echo
 
 echo "whole process, wall time:"
 if command -v hyperfine >/dev/null; then
+  named=(-n povray "${pov_cmd[*]}")
+  for name in $phongs; do
+    command_for "$name"
+    named+=(-n "$name" "${cmd[*]}")
+  done
   hyperfine --style basic --warmup 1 --runs "$runs" \
-    --export-json "$work/wall.json" \
-    -n povray "${pov_cmd[*]}" \
-    -n phong-f64 "${phong_cmd[*]} --precision f64" \
-    -n phong-f32 "${phong_cmd[*]} --precision f32" >/dev/null
+    --export-json "$work/wall.json" "${named[@]}" >/dev/null
   python3 - "$work/wall.json" <<'EOF'
 import json, sys
 r = {x["command"]: x for x in json.load(open(sys.argv[1]))["results"]}
 pov = r["povray"]["median"]
 sd = r["povray"]["stddev"]  # null with a single run
 spread = f" ± {sd:.3f}" if sd is not None else ""
-print(f"  POV-Ray        {pov:8.3f} s (median; mean {r['povray']['mean']:.3f}{spread})")
-for p in ("phong-f64", "phong-f32"):
+print(f"  {'POV-Ray':<16} {pov:8.3f} s (median; mean {r['povray']['mean']:.3f}{spread})")
+for p in ("phong-f64-wide", "phong-f32-wide", "phong-f64-scalar", "phong-f32-scalar"):
     t = r[p]["median"]
-    print(f"  {p:<14} {t:8.3f} s   POV-Ray / phong = {pov / t:5.2f}×   (target ≥ 8×)")
+    print(f"  {p:<16} {t:8.3f} s   POV-Ray / phong = {pov / t:5.2f}×   (target ≥ 8×)")
 EOF
 else
-  for name in povray phong-f64 phong-f32; do
+  for name in povray $phongs; do
     : >"$work/wall-$name.txt"
   done
   for ((i = 0; i < runs; i++)); do
-    for name in povray phong-f64 phong-f32; do
+    for name in povray $phongs; do
       command_for "$name"
       start=$(date +%s.%N)
       "${cmd[@]}" >/dev/null 2>&1
@@ -101,10 +108,10 @@ else
     done
   done
   pw=$(median <"$work/wall-povray.txt")
-  printf '  POV-Ray        %8.3f s (median)\n' "$pw"
-  for name in phong-f64 phong-f32; do
+  printf '  %-16s %8.3f s (median)\n' POV-Ray "$pw"
+  for name in $phongs; do
     t=$(median <"$work/wall-$name.txt")
-    printf '  %-14s %8.3f s   POV-Ray / phong = %5.2f×   (target ≥ 8×)\n' "$name" "$t" "$(echo "$pw / $t" | bc -l)"
+    printf '  %-16s %8.3f s   POV-Ray / phong = %5.2f×   (target ≥ 8×)\n' "$name" "$t" "$(echo "$pw / $t" | bc -l)"
   done
 fi
 
@@ -113,18 +120,18 @@ fi
 if [ -x /usr/bin/time ]; then
   echo
   echo "whole process, CPU time (user + sys), median of $runs:"
-  for name in povray phong-f64 phong-f32; do : >"$work/cpu-$name.txt"; done
+  for name in povray $phongs; do : >"$work/cpu-$name.txt"; done
   for ((i = 0; i < runs; i++)); do
-    for name in povray phong-f64 phong-f32; do
+    for name in povray $phongs; do
       command_for "$name"
       /usr/bin/time -f '%U %S' -o "$work/t" "${cmd[@]}" >/dev/null 2>&1
       awk '{print $1 + $2}' "$work/t" >>"$work/cpu-$name.txt"
     done
   done
   pc=$(median <"$work/cpu-povray.txt")
-  printf '  POV-Ray        %8.3f s\n' "$pc"
-  for name in phong-f64 phong-f32; do
+  printf '  %-16s %8.3f s\n' POV-Ray "$pc"
+  for name in $phongs; do
     t=$(median <"$work/cpu-$name.txt")
-    printf '  %-14s %8.3f s   POV-Ray / phong = %5.2f×\n' "$name" "$t" "$(echo "$pc / $t" | bc -l)"
+    printf '  %-16s %8.3f s   POV-Ray / phong = %5.2f×\n' "$name" "$t" "$(echo "$pc / $t" | bc -l)"
   done
 fi

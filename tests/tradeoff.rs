@@ -337,6 +337,61 @@ fn errors_and_rays_are_the_same_for_any_thread_count() {
 }
 
 #[test]
+fn both_engines_give_the_same_errors_and_rays() {
+    let dir = TempDir::new().unwrap();
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let mut classic: Value =
+        serde_json::from_str(&fs::read_to_string(root.join("scenes/classic.json")).unwrap())
+            .unwrap();
+    classic["camera"]["width"] = json!(24);
+    classic["camera"]["height"] = json!(18);
+    let scene = write(&dir, "classic.json", &classic);
+    let args = [
+        "--levels",
+        "1,5",
+        "--samples",
+        "1,4",
+        "--runs",
+        "1",
+        "--reference-samples",
+        "4",
+        "--reference-level",
+        "10",
+        "--threads",
+        "2",
+    ];
+    let wide = tradeoff_json(&scene, &[&args[..], &["--engine", "wide"]].concat());
+    let scalar = tradeoff_json(&scene, &[&args[..], &["--engine", "scalar"]].concat());
+    // The default is the wide engine, as for `phong render`.
+    let default = tradeoff_json(&scene, &args);
+    // Something was traced past the primary rays (reflections and shadows), in both precisions.
+    let rows = wide["settings"].as_array().unwrap();
+    assert_eq!(rows.len(), 2 * 2 * 3 * 2, "{wide}");
+    assert!(
+        rows.iter()
+            .any(|r| r["rays"]["reflection"].as_u64() > Some(0)),
+        "{wide}"
+    );
+    assert!(
+        rows.iter().any(|r| r["rays"]["shadow"].as_u64() > Some(0)),
+        "{wide}"
+    );
+    let wide = without_times(wide);
+    assert_eq!(wide, without_times(scalar));
+    assert_eq!(wide, without_times(default));
+
+    let out = phong()
+        .arg("tradeoff")
+        .arg(&scene)
+        .args(["--engine", "simd"])
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(2));
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(err.contains("--engine") && err.contains("scalar"), "{err}");
+}
+
+#[test]
 fn the_table_csv_and_plot_are_written() {
     let dir = TempDir::new().unwrap();
     let scene = mirrors(&dir);

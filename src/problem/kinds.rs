@@ -7,8 +7,10 @@
 //!   field; unknown fields are rejected, and serde lists the known ones in the table's order;
 //! - the `type` enum (`LightType`): its words (`name`, `WORDS`), the fields each kind requires
 //!   (`fields`), and its reader (a string only: `type_word`);
-//! - `present` (the fields given in a file) and `purpose` (what a field gives, for the message
-//!   when it is missing);
+//! - `present` (the fields given in a file), `present_mask` and the kind's `fields_mask` (the
+//!   same as bits, computed at compile time, so that validation asks every object whether it
+//!   gives a field its kind does not take without comparing names) and `purpose` (what a field
+//!   gives, for the message when it is missing);
 //! - the schema twin for `phong schema`: one object per kind, with `type` as its constant, its
 //!   fields required and the optional ones not, each field with the schema type, description and
 //!   bounds of the table.
@@ -102,6 +104,17 @@ macro_rules! kinds {
                     $($Kind::$Variant => &[$(stringify!($takes)),*],)*
                 }
             }
+
+            /// [`Self::fields`] as bits of the table's fields (see `present_mask`).
+            pub(crate) fn fields_mask(self) -> u32 {
+                match self {
+                    $(
+                        $Kind::$Variant => const {
+                            0 $(| $crate::problem::kinds::bit($Spec::FIELDS, stringify!($takes)))*
+                        },
+                    )*
+                }
+            }
         }
 
         impl<'de> ::serde::Deserialize<'de> for $Kind {
@@ -175,16 +188,28 @@ macro_rules! kinds {
         }
 
         impl $Spec {
-            /// The names of the fields present in the file (besides `type` and the optional
-            /// ones).
-            pub fn present(&self) -> Vec<&'static str> {
-                let mut present = Vec::new();
+            /// The table's fields, in its order (bit `i` of a mask is `FIELDS[i]`).
+            const FIELDS: &'static [&'static str] = &[$(stringify!($field)),*];
+
+            /// The fields present in the file as bits of [`Self::FIELDS`]: validation asks every
+            /// object whether it gives a field its kind does not take, and a mask answers without
+            /// comparing names.
+            pub(crate) fn present_mask(&self) -> u32 {
+                let mut mask = 0;
                 $(
                     if self.$field.is_some() {
-                        present.push(stringify!($field));
+                        mask |= const { $crate::problem::kinds::bit(Self::FIELDS, stringify!($field)) };
                     }
                 )*
-                present
+                mask
+            }
+
+            /// The names of the fields present in the file (besides `type` and the optional
+            /// ones), in the table's order. Allocates nothing: validation asks every object.
+            pub fn present(&self) -> impl Iterator<Item = &'static str> {
+                [$(self.$field.is_some().then_some(stringify!($field))),*]
+                    .into_iter()
+                    .flatten()
             }
 
             /// What a field of the table gives, to say why it is needed.
@@ -222,6 +247,27 @@ macro_rules! kinds {
 }
 
 pub(crate) use kinds;
+
+/// The bit of the field `name` in a mask over `fields` (at most 32); evaluated at compile time by
+/// `kinds!`, where a name that is not in the table does not compile.
+pub(crate) const fn bit(fields: &[&str], name: &str) -> u32 {
+    assert!(fields.len() <= 32, "a mask has 32 bits");
+    let mut i = 0;
+    while i < fields.len() {
+        let (a, b) = (fields[i].as_bytes(), name.as_bytes());
+        if a.len() == b.len() {
+            let mut k = 0;
+            while k < a.len() && a[k] == b[k] {
+                k += 1;
+            }
+            if k == a.len() {
+                return 1 << i;
+            }
+        }
+        i += 1;
+    }
+    panic!("a field that is not in the table")
+}
 
 /// A `type` word, read only from a string. serde_json reads an enum from a string or an object
 /// and answers any other value (`"type": 5`) with a syntax error, "expected value", although

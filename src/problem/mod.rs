@@ -5,6 +5,7 @@
 //! its inputs.
 
 pub(crate) mod error;
+pub(crate) mod field;
 pub mod format;
 pub(crate) mod kinds;
 pub(crate) mod mesh;
@@ -25,6 +26,7 @@ pub use warnings::{Warning, WarningKind};
 
 use crate::core::Real;
 use format::{LightSpec, LightType, SurfaceSpec, SurfaceType};
+use serde::Deserialize;
 
 /// The largest problem file read: 64 MiB (a scene of a million spheres is about 100 MB; a
 /// chapter's exercise is 1 kB).
@@ -74,9 +76,14 @@ pub fn read_limited(path: &Path, limit: u64, what: &'static str) -> std::io::Res
             .take(limit + 1)
             .read_to_end(&mut bytes)?;
     } else {
-        std::fs::File::open(path)?
-            .take(limit + 1)
-            .read_to_end(&mut bytes)?;
+        let file = std::fs::File::open(path)?;
+        // Read in one piece: `take` hides the file's size from `read_to_end`, which would grow
+        // the buffer by doubling (copying a large scene several times over). A size the
+        // metadata gets wrong (0 for /proc files and devices) only costs that growth.
+        if let Ok(meta) = file.metadata() {
+            let _ = bytes.try_reserve_exact(meta.len().min(limit) as usize + 1);
+        }
+        file.take(limit + 1).read_to_end(&mut bytes)?;
     }
     if bytes.len() as u64 > limit {
         return Err(std::io::Error::new(
@@ -132,8 +139,23 @@ fn not_utf8(path: &Path, bytes: &[u8], e: std::str::Utf8Error) -> ProblemError {
 }
 
 /// Parses the text of a problem file; `path` is only used in error messages.
+///
+/// A valid file is read once by plain serde_json, which keeps no path: tracking where the
+/// parser is (serde_path_to_error records every key and index it passes) cost more than the
+/// parse itself on a large scene. Only a file that fails is read again with the path tracked,
+/// and that second reading gives the error, so the message names the same field, line and
+/// column as before.
 pub fn parse_str(path: &Path, source: &str) -> Result<ProblemFile, ProblemError> {
     not_an_object(path, source)?;
+    let mut de = serde_json::Deserializer::from_str(source);
+    if let Ok(file) = ProblemFile::deserialize(&mut de).and_then(|f| de.end().map(|()| f)) {
+        return Ok(file);
+    }
+    parse_tracked(path, source)
+}
+
+/// [`parse_str`] with the field path tracked, for the error of a file that failed.
+fn parse_tracked(path: &Path, source: &str) -> Result<ProblemFile, ProblemError> {
     let mut de = serde_json::Deserializer::from_str(source);
     let result = serde_path_to_error::deserialize(&mut de)
         .map_err(|e| (field_path(e.path()), e.into_inner()))

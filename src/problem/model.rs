@@ -198,8 +198,9 @@ pub enum ReflectivitySource {
 pub struct NamedMaterial<R: Real> {
     /// Its name in the file's `materials`; `None` for a material written in place.
     pub name: Option<String>,
-    /// The material as written (to say how each colour was given).
-    pub spec: MaterialSpec,
+    /// The material as written (to say how each colour was given); shared by every surface of
+    /// a named material (a scene of 100,000 spheres holds one copy per material, not per sphere).
+    pub spec: std::sync::Arc<MaterialSpec>,
     /// The material as the core takes it.
     pub material: Material<R>,
     /// Where O_r came from; `None` without O_r.

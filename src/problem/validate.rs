@@ -2,9 +2,11 @@
 //! field is wrong and how to fix it. Every number is checked to be finite in `R`; every vector
 //! that is used as a direction to be non-zero; every term the question needs to have its inputs.
 
+use std::fmt;
 use std::path::{Path, PathBuf};
 
 use super::error::Invalid;
+use super::field::Field;
 use super::format::{
     CameraSpec, ColorSpec, LightSpec, LightType, MaterialRef, MaterialSpec, ProblemFile,
     ReflectivitySpec, RenderSpec, ScaledColor, SurfaceSpec, SurfaceType, Triple,
@@ -36,7 +38,10 @@ pub fn validate_in<R: Real>(
         light_info,
         ambient_info,
     } = lights::<R>(&file.lights)?;
-    let viewer = file.viewer.map(|v| vector::<R>(v, "viewer")).transpose()?;
+    let viewer = file
+        .viewer
+        .map(|v| vector::<R>(v, Field::Name("viewer")))
+        .transpose()?;
     let first_light = light_info
         .first()
         .map(|i| light_label(i.file_index, i.kind));
@@ -86,20 +91,20 @@ pub fn validate_in<R: Real>(
                 }
                 let position = point
                     .position
-                    .map(|p| vector::<R>(p, "point.position"))
+                    .map(|p| vector::<R>(p, Field::Name("point.position")))
                     .transpose()?;
                 let normal = point
                     .normal
-                    .map(|n| direction::<R>(n, "point.normal", "the normal N"))
+                    .map(|n| direction::<R>(n, Field::Name("point.normal"), "the normal N"))
                     .transpose()?;
                 let (mat_field, material) =
-                    resolve_material::<R>(file, &point.material, "point.material")?;
+                    resolve_material::<R>(file, &point.material, Field::Name("point.material"))?;
                 let needs = Needs {
                     ambient: has_ambient,
                     diffuse: first_light.clone(),
                     specular: viewer.and(first_light.clone()),
                 };
-                needs.check(&material.spec, &mat_field)?;
+                needs.check(&material.spec, mat_field)?;
                 // Point and normal: only where the question needs them.
                 let positional = light_info
                     .iter()
@@ -140,8 +145,12 @@ pub fn validate_in<R: Real>(
                 }
             }
             (None, Some(ray)) => {
-                let origin = vector::<R>(ray.origin, "ray.origin")?;
-                let dir = direction::<R>(ray.direction, "ray.direction", "the ray's direction")?;
+                let origin = vector::<R>(ray.origin, Field::Name("ray.origin"))?;
+                let dir = direction::<R>(
+                    ray.direction,
+                    Field::Name("ray.direction"),
+                    "the ray's direction",
+                )?;
                 if file.surfaces.is_empty() {
                     return Err(Invalid::new(
                         "surfaces",
@@ -184,7 +193,7 @@ pub fn validate_in<R: Real>(
         target,
         camera,
         background: match file.background {
-            Some(c) => color::<R>(c, "background", ColorRange::Light)?,
+            Some(c) => color::<R>(c, Field::Name("background"), ColorRange::Light)?,
             None => V3::<R>::ZERO,
         },
         render,
@@ -195,9 +204,9 @@ pub fn validate_in<R: Real>(
 /// The camera: E ≠ the look-at point, `up` not along the line of sight, 0 < fov < 180, and an
 /// image size the tracer accepts.
 fn camera<R: Real>(c: &CameraSpec) -> Result<Camera<R>, Invalid> {
-    let eye = vector::<R>(c.eye, "camera.eye")?;
-    let look_at = vector::<R>(c.look_at, "camera.look_at")?;
-    let up = vector::<R>(c.up.unwrap_or([0.0, 1.0, 0.0]), "camera.up")?;
+    let eye = vector::<R>(c.eye, Field::Name("camera.eye"))?;
+    let look_at = vector::<R>(c.look_at, Field::Name("camera.look_at"))?;
+    let up = vector::<R>(c.up.unwrap_or([0.0, 1.0, 0.0]), Field::Name("camera.up"))?;
     let Some(forward) = between::<R>(eye, look_at) else {
         return Err(Invalid::new(
             "camera.look_at",
@@ -222,7 +231,7 @@ fn camera<R: Real>(c: &CameraSpec) -> Result<Camera<R>, Invalid> {
     // The image plane's half-height tan(fov/2), as the tracer computes it: in f32,
     // 179.999999999 rounds to 180 and the tangent of the rounded half-angle is negative (the
     // image would be upside down); 1e-46 rounds to 0.
-    let fov = number::<R>(c.fov, "camera.fov")?;
+    let fov = number::<R>(c.fov, Field::Name("camera.fov"))?;
     let half_height = (fov.to_radians() / R::TWO).tan();
     if !(half_height > R::ZERO && half_height.is_finite()) {
         let (what, fix) = if c.fov < 90.0 {
@@ -271,7 +280,7 @@ fn render_settings<R: Real>(r: Option<&RenderSpec>) -> Result<RenderSettings<R>,
     }
     if let Some(w) = r.min_weight {
         check_min_weight(w).map_err(|e| e.at("render.min_weight"))?;
-        s.min_weight = number::<R>(w, "render.min_weight")?;
+        s.min_weight = number::<R>(w, Field::Name("render.min_weight"))?;
     }
     if let Some(n) = r.samples {
         check_samples(n).map_err(|e| e.at("render.samples"))?;
@@ -394,7 +403,7 @@ fn surfaces<R: Real>(
 /// Named materials validated once, however many surfaces use them (a scene of 100,000
 /// spheres names a handful of materials).
 struct MaterialCache<R: Real> {
-    named: std::collections::BTreeMap<String, (String, NamedMaterial<R>)>,
+    named: std::collections::BTreeMap<String, NamedMaterial<R>>,
 }
 
 impl<R: Real> Default for MaterialCache<R> {
@@ -406,23 +415,33 @@ impl<R: Real> Default for MaterialCache<R> {
 }
 
 impl<R: Real> MaterialCache<R> {
-    fn resolve(
+    /// As [`resolve_material`], a named material validated only the first time.
+    fn resolve<'a>(
         &mut self,
-        file: &ProblemFile,
-        r: &MaterialRef,
-        field: &str,
-    ) -> Result<(String, NamedMaterial<R>), Invalid> {
+        file: &'a ProblemFile,
+        r: &'a MaterialRef,
+        field: Field<'a>,
+    ) -> Result<(Field<'a>, NamedMaterial<R>), Invalid> {
         if let MaterialRef::Name(name) = r {
-            if let Some(hit) = self.named.get(name) {
-                return Ok(hit.clone());
+            if let Some(hit) = self.named.get(name.as_str()) {
+                return Ok((MATERIALS.key(name), hit.clone()));
             }
-            let resolved = resolve_material::<R>(file, r, field)?;
-            self.named.insert(name.clone(), resolved.clone());
-            return Ok(resolved);
+            let (at, m) = resolve_material::<R>(file, r, field)?;
+            self.named.insert(name.clone(), m.clone());
+            return Ok((at, m));
         }
         resolve_material::<R>(file, r, field)
     }
 }
+
+/// `materials`, the field a named material's own fields are under.
+static MATERIALS: Field<'static> = Field::Name("materials");
+
+/// `surfaces`.
+static SURFACES: Field<'static> = Field::Name("surfaces");
+
+/// `lights`.
+static LIGHTS: Field<'static> = Field::Name("lights");
 
 /// `lights[1] (point)`.
 pub(crate) fn light_label(file_index: usize, kind: &str) -> String {
@@ -439,11 +458,11 @@ struct Needs {
 }
 
 impl Needs {
-    fn check(&self, m: &MaterialSpec, field: &str) -> Result<(), Invalid> {
+    fn check(&self, m: &MaterialSpec, field: Field<'_>) -> Result<(), Invalid> {
         const COLOR_FORM: &str = "[r, g, b] (or {\"k\": k, \"color\": [r, g, b]})";
         if self.ambient && m.ambient.is_none() {
             return Err(Invalid::new(
-                format!("{field}.ambient"),
+                field.key("ambient"),
                 "missing: the ambient term O_a I_a (Eq. 4.6) needs it, since the problem has an \
                  ambient light",
                 format!("add \"ambient\": {COLOR_FORM}; [0, 0, 0] if the surface reflects no ambient light"),
@@ -452,7 +471,7 @@ impl Needs {
         if let Some(l) = &self.diffuse {
             if m.diffuse.is_none() {
                 return Err(Invalid::new(
-                    format!("{field}.diffuse"),
+                    field.key("diffuse"),
                     format!("missing: the diffuse term O_d I_l cos θ (Eq. 4.8) of {l} needs it"),
                     format!("add \"diffuse\": {COLOR_FORM}; [0, 0, 0] for no diffuse reflection"),
                 ));
@@ -461,7 +480,7 @@ impl Needs {
         if let Some(l) = &self.specular {
             if m.specular.is_none() {
                 return Err(Invalid::new(
-                    format!("{field}.specular"),
+                    field.key("specular"),
                     format!(
                         "missing: the specular term O_s I_l (cos φ)^n_s (Eq. 4.10) of {l} needs it, \
                          since the problem has a viewer"
@@ -471,7 +490,7 @@ impl Needs {
             }
             if m.shininess.is_none() {
                 return Err(Invalid::new(
-                    format!("{field}.shininess"),
+                    field.key("shininess"),
                     format!("missing: the specular term (Eq. 4.10) of {l} needs the exponent n_s"),
                     "add \"shininess\": n_s (a number ≥ 0)",
                 ));
@@ -507,14 +526,16 @@ fn lights<R: Real>(specs: &[LightSpec]) -> Result<Lights<R>, Invalid> {
     let mut info = Vec::new();
     let mut ambient_info = Vec::new();
     for (i, spec) in specs.iter().enumerate() {
-        let base = format!("lights[{i}]");
-        let f = |name: &str| format!("{base}.{name}");
-        let what = format!("{} light", spec.kind.name());
-        check_fields(&base, &what, spec.kind.fields(), &spec.present())?;
+        let base = LIGHTS.index(i);
+        let f = |name: &'static str| Field::Key(&base, name);
+        let what = LightWhat(spec.kind);
+        if spec.present_mask() & !spec.kind.fields_mask() != 0 {
+            check_fields(base, &what, spec.kind.fields(), spec.present())?;
+        }
         let name = spec.name.clone();
         let c = color::<R>(
-            required(spec.color, &base, "color", &what)?,
-            &f("color"),
+            required(spec.color, base, "color", &what)?,
+            f("color"),
             ColorRange::Light,
         )?;
         let mut direction_length = None;
@@ -530,20 +551,20 @@ fn lights<R: Real>(specs: &[LightSpec]) -> Result<Lights<R>, Invalid> {
                 continue;
             }
             LightType::Point => {
-                let (position, falloff) = position_and_falloff::<R>(spec, &base, &what)?;
+                let (position, falloff) = position_and_falloff::<R>(spec, base, &what)?;
                 LightKind::Point { position, falloff }
             }
             LightType::Directional => {
-                let d = required(spec.direction, &base, "direction", &what)?;
-                let d = direction::<R>(d, &f("direction"), "the light's direction D_l")?;
+                let d = required(spec.direction, base, "direction", &what)?;
+                let d = direction::<R>(d, f("direction"), "the light's direction D_l")?;
                 direction_length = (!is_unit_length(d.length)).then_some(d.length);
                 LightKind::Directional { direction: d.unit }
             }
             LightType::Spot => {
-                let axis = required(spec.axis, &base, "axis", &what)?;
-                let axis = direction::<R>(axis, &f("axis"), "the cone's axis D_l")?;
+                let axis = required(spec.axis, base, "axis", &what)?;
+                let axis = direction::<R>(axis, f("axis"), "the cone's axis D_l")?;
                 direction_length = (!is_unit_length(axis.length)).then_some(axis.length);
-                let angle = required(spec.angle, &base, "angle", &what)?;
+                let angle = required(spec.angle, base, "angle", &what)?;
                 if !(0.0..=90.0).contains(&angle) {
                     return Err(Invalid::new(
                         f("angle"),
@@ -552,8 +573,8 @@ fn lights<R: Real>(specs: &[LightSpec]) -> Result<Lights<R>, Invalid> {
                          (Eq. 4.4)",
                     ));
                 }
-                let exponent = required(spec.exponent, &base, "exponent", &what)?;
-                let e = number::<R>(exponent, &f("exponent"))?;
+                let exponent = required(spec.exponent, base, "exponent", &what)?;
+                let e = number::<R>(exponent, f("exponent"))?;
                 if e < R::ZERO {
                     return Err(Invalid::new(
                         f("exponent"),
@@ -561,11 +582,11 @@ fn lights<R: Real>(specs: &[LightSpec]) -> Result<Lights<R>, Invalid> {
                         "the spot exponent e of cos(ψ)^e (Eq. 4.4) must be ≥ 0, e.g. 0, 1 or 2",
                     ));
                 }
-                let (position, falloff) = position_and_falloff::<R>(spec, &base, &what)?;
+                let (position, falloff) = position_and_falloff::<R>(spec, base, &what)?;
                 LightKind::Spot {
                     position,
                     falloff,
-                    cone: Cone::new(axis.unit, number::<R>(angle, &f("angle"))?, e),
+                    cone: Cone::new(axis.unit, number::<R>(angle, f("angle"))?, e),
                 }
             }
         };
@@ -585,25 +606,40 @@ fn lights<R: Real>(specs: &[LightSpec]) -> Result<Lights<R>, Invalid> {
     })
 }
 
+/// A light's kind as messages write it, `point light`, written out only for an error.
+struct LightWhat(LightType);
+
+impl fmt::Display for LightWhat {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "{} light", self.0.name())
+    }
+}
+
 /// P_l and f of a point or spot light.
 fn position_and_falloff<R: Real>(
     spec: &LightSpec,
-    base: &str,
-    what: &str,
+    base: Field<'_>,
+    what: &dyn fmt::Display,
 ) -> Result<(V3<R>, Falloff), Invalid> {
     let position = required(spec.position, base, "position", what)?;
     let f = required(spec.falloff, base, "falloff", what)?;
     Ok((
-        vector::<R>(position, &format!("{base}.position"))?,
-        falloff(f, &format!("{base}.falloff"))?,
+        vector::<R>(position, base.key("position"))?,
+        falloff(f, base.key("falloff"))?,
     ))
 }
 
-/// Rejects a field that the light's or surface's type does not take.
-fn check_fields(base: &str, what: &str, takes: &[&str], present: &[&str]) -> Result<(), Invalid> {
-    match present.iter().find(|f| !takes.contains(f)) {
+/// Rejects a field that the light's or surface's type does not take (`present`: the fields the
+/// file gives, in the table's order).
+fn check_fields(
+    base: Field<'_>,
+    what: &dyn fmt::Display,
+    takes: &[&str],
+    mut present: impl Iterator<Item = &'static str>,
+) -> Result<(), Invalid> {
+    match present.find(|f| !takes.contains(f)) {
         Some(extra) => Err(Invalid::new(
-            format!("{base}.{extra}"),
+            base.key(extra),
             format!("a {what} has no \"{extra}\""),
             format!("remove it; a {what} takes {}", quoted(takes)),
         )),
@@ -612,12 +648,17 @@ fn check_fields(base: &str, what: &str, takes: &[&str], present: &[&str]) -> Res
 }
 
 /// A field the type requires: its value, or an error naming it and what it is for.
-fn required<T>(value: Option<T>, base: &str, name: &str, what: &str) -> Result<T, Invalid> {
+fn required<T>(
+    value: Option<T>,
+    base: Field<'_>,
+    name: &str,
+    what: &dyn fmt::Display,
+) -> Result<T, Invalid> {
     value.ok_or_else(|| {
         let purpose =
             super::field_purpose(name).map_or(String::new(), |p| format!(": it gives {p}"));
         Invalid::new(
-            format!("{base}.{name}"),
+            base.key(name),
             format!("missing: a {what} needs \"{name}\"{purpose}"),
             format!("add \"{name}\""),
         )
@@ -638,7 +679,7 @@ pub(crate) fn show(x: f64) -> String {
     }
 }
 
-fn falloff(x: f64, field: &str) -> Result<Falloff, Invalid> {
+fn falloff(x: f64, field: Field<'_>) -> Result<Falloff, Invalid> {
     let f = if x == 0.0 || x == 1.0 || x == 2.0 {
         Falloff::from_exponent(x as u8)
     } else {
@@ -662,23 +703,28 @@ fn surface<R: Real>(
     materials: &mut MaterialCache<R>,
     out: &mut Vec<Surface<R>>,
 ) -> Result<(), Invalid> {
-    let base = format!("surfaces[{i}]");
-    let f = |name: &str| format!("{base}.{name}");
+    let base = SURFACES.index(i);
+    let f = |name: &'static str| Field::Key(&base, name);
     let what = s.kind.name();
-    check_fields(&base, what, s.kind.fields(), &s.present())?;
+    if s.present_mask() & !s.kind.fields_mask() != 0 {
+        check_fields(base, &what, s.kind.fields(), s.present())?;
+    }
     let (shape, normal) = match s.kind {
         SurfaceType::Plane => {
-            let n = required(s.normal, &base, "normal", what)?;
-            let n = direction::<R>(n, &f("normal"), "the plane's normal")?;
+            let n = required(s.normal.as_deref().copied(), base, "normal", &what)?;
+            let n = direction::<R>(n, f("normal"), "the plane's normal")?;
             let plane = Plane {
-                point: vector::<R>(required(s.point, &base, "point", what)?, &f("point"))?,
+                point: vector::<R>(
+                    required(s.point.as_deref().copied(), base, "point", &what)?,
+                    f("point"),
+                )?,
                 normal: n.unit,
             };
             (Shape::Plane(plane), Some(n))
         }
         SurfaceType::Sphere => {
-            let radius = required(s.radius, &base, "radius", what)?;
-            let r = number::<R>(radius, &f("radius"))?;
+            let radius = required(s.radius, base, "radius", &what)?;
+            let r = number::<R>(radius, f("radius"))?;
             if radius > 0.0 && r == R::ZERO {
                 return Err(Invalid::new(
                     f("radius"),
@@ -698,16 +744,17 @@ fn surface<R: Real>(
                 ));
             }
             let sphere = Sphere {
-                center: vector::<R>(required(s.center, &base, "center", what)?, &f("center"))?,
+                center: vector::<R>(required(s.center, base, "center", &what)?, f("center"))?,
                 radius: r,
             };
             (Shape::Sphere(sphere), None)
         }
         SurfaceType::Triangle => {
-            let v = required(s.vertices, &base, "vertices", what)?;
+            let v = required(s.vertices.as_deref(), base, "vertices", &what)?;
+            let vertices = f("vertices");
             let mut p = [V3::<R>::ZERO; 3];
             for (k, corner) in v.iter().enumerate() {
-                p[k] = vector::<R>(*corner, &format!("{base}.vertices[{k}]"))?;
+                p[k] = vector::<R>(*corner, vertices.index(k))?;
             }
             let t = Triangle { p };
             if t.normal().is_none() {
@@ -724,10 +771,10 @@ fn surface<R: Real>(
             (Shape::Triangle(t), None)
         }
         SurfaceType::Mesh => {
-            let name = required(s.file.as_ref(), &base, "file", what)?;
-            let mref = required(s.material.as_ref(), &base, "material", what)?;
-            let (mat_field, material) = materials.resolve(file, mref, &f("material"))?;
-            needs.check(&material.spec, &mat_field)?;
+            let name = required(s.file.as_ref(), base, "file", &what)?;
+            let mref = required(s.material.as_ref(), base, "material", &what)?;
+            let (mat_field, material) = materials.resolve(file, mref, f("material"))?;
+            needs.check(&material.spec, mat_field)?;
             let path = match folder {
                 Some(dir) => dir.join(name),
                 None => PathBuf::from(name),
@@ -774,9 +821,9 @@ fn surface<R: Real>(
             return Ok(());
         }
     };
-    let mref = required(s.material.as_ref(), &base, "material", what)?;
-    let (mat_field, material) = materials.resolve(file, mref, &f("material"))?;
-    needs.check(&material.spec, &mat_field)?;
+    let mref = required(s.material.as_ref(), base, "material", &what)?;
+    let (mat_field, material) = materials.resolve(file, mref, f("material"))?;
+    needs.check(&material.spec, mat_field)?;
     out.push(Surface {
         shape,
         material,
@@ -791,15 +838,15 @@ fn surface<R: Real>(
 
 /// Looks a material up by name, or takes it in place; returns the field path to report
 /// errors in it under, and the material.
-fn resolve_material<R: Real>(
-    file: &ProblemFile,
-    r: &MaterialRef,
-    field: &str,
-) -> Result<(String, NamedMaterial<R>), Invalid> {
+fn resolve_material<'a, R: Real>(
+    file: &'a ProblemFile,
+    r: &'a MaterialRef,
+    field: Field<'a>,
+) -> Result<(Field<'a>, NamedMaterial<R>), Invalid> {
     let (path, name, spec) = match r {
-        MaterialRef::Inline(spec) => (field.to_owned(), None, spec),
+        MaterialRef::Inline(spec) => (field, None, &**spec),
         MaterialRef::Name(name) => match file.materials.get(name) {
-            Some(spec) => (format!("materials.{name}"), Some(name.clone()), spec),
+            Some(spec) => (MATERIALS.key(name), Some(name.clone()), spec),
             None => {
                 let known: Vec<_> = file.materials.keys().map(|k| format!("\"{k}\"")).collect();
                 let fix = if known.is_empty() {
@@ -818,16 +865,16 @@ fn resolve_material<R: Real>(
             }
         },
     };
-    let mut m = material::<R>(spec, &path)?;
+    let mut m = material::<R>(spec, path)?;
     m.name = name;
     Ok((path, m))
 }
 
-fn material<R: Real>(spec: &MaterialSpec, field: &str) -> Result<NamedMaterial<R>, Invalid> {
-    let f = |name: &str| format!("{field}.{name}");
-    let col = |c: &Option<ColorSpec>, name: &str| -> Result<Option<V3<R>>, Invalid> {
+fn material<R: Real>(spec: &MaterialSpec, field: Field<'_>) -> Result<NamedMaterial<R>, Invalid> {
+    let f = |name: &'static str| Field::Key(&field, name);
+    let col = |c: &Option<ColorSpec>, name: &'static str| -> Result<Option<V3<R>>, Invalid> {
         c.as_ref()
-            .map(|c| material_color::<R>(c, &f(name)))
+            .map(|c| material_color::<R>(c, f(name)))
             .transpose()
     };
     let o_a = col(&spec.ambient, "ambient")?;
@@ -835,7 +882,7 @@ fn material<R: Real>(spec: &MaterialSpec, field: &str) -> Result<NamedMaterial<R
     let o_s = col(&spec.specular, "specular")?;
     let n_s = match spec.shininess {
         Some(x) => {
-            let n = number::<R>(x, &f("shininess"))?;
+            let n = number::<R>(x, f("shininess"))?;
             if n < R::ZERO {
                 return Err(Invalid::new(
                     f("shininess"),
@@ -850,7 +897,7 @@ fn material<R: Real>(spec: &MaterialSpec, field: &str) -> Result<NamedMaterial<R
     let (o_r, source) = match &spec.reflectivity {
         None => (None, None),
         Some(ReflectivitySpec::Rgb(c)) => (
-            Some(color::<R>(*c, &f("reflectivity"), ColorRange::Material)?),
+            Some(color::<R>(*c, f("reflectivity"), ColorRange::Material)?),
             Some(ReflectivitySource::Explicit),
         ),
         Some(ReflectivitySpec::Same(_)) => match o_s {
@@ -866,7 +913,7 @@ fn material<R: Real>(spec: &MaterialSpec, field: &str) -> Result<NamedMaterial<R
     };
     Ok(NamedMaterial {
         name: None,
-        spec: spec.clone(),
+        spec: std::sync::Arc::new(spec.clone()),
         material: Material {
             o_a,
             o_d,
@@ -878,17 +925,17 @@ fn material<R: Real>(spec: &MaterialSpec, field: &str) -> Result<NamedMaterial<R
     })
 }
 
-fn material_color<R: Real>(c: &ColorSpec, field: &str) -> Result<V3<R>, Invalid> {
+fn material_color<R: Real>(c: &ColorSpec, field: Field<'_>) -> Result<V3<R>, Invalid> {
     if let ColorSpec::Scaled(ScaledColor { k, color: o }) = c {
         if !(0.0..=1.0).contains(k) {
             return Err(Invalid::new(
-                format!("{field}.k"),
+                field.key("k"),
                 format!("{} is outside [0, 1]", show(*k)),
                 "the chapter's coefficients k_a, k_d, k_s lie in [0, 1] (Eq. 4.5, 4.7, 4.9); \
                  give the product as one colour [r, g, b] if you mean something else",
             ));
         }
-        color::<R>(*o, &format!("{field}.color"), ColorRange::Material)?;
+        color::<R>(*o, field.key("color"), ColorRange::Material)?;
     }
     color::<R>(c.product(), field, ColorRange::Material)
 }
@@ -899,7 +946,7 @@ enum ColorRange {
     Material,
 }
 
-fn color<R: Real>(c: Triple, field: &str, range: ColorRange) -> Result<V3<R>, Invalid> {
+fn color<R: Real>(c: Triple, field: Field<'_>, range: ColorRange) -> Result<V3<R>, Invalid> {
     let v = vector::<R>(c, field)?;
     if c.iter().any(|&x| x < 0.0) {
         let what = match range {
@@ -915,7 +962,7 @@ fn color<R: Real>(c: Triple, field: &str, range: ColorRange) -> Result<V3<R>, In
     Ok(v)
 }
 
-fn number<R: Real>(x: f64, field: &str) -> Result<R, Invalid> {
+fn number<R: Real>(x: f64, field: Field<'_>) -> Result<R, Invalid> {
     let r = R::from_f64(x);
     if !x.is_finite() || !r.is_finite() {
         return Err(Invalid::new(
@@ -931,14 +978,14 @@ fn number<R: Real>(x: f64, field: &str) -> Result<R, Invalid> {
     Ok(r)
 }
 
-fn vector<R: Real>(a: Triple, field: &str) -> Result<V3<R>, Invalid> {
-    let x = number::<R>(a[0], &format!("{field}[0]"))?;
-    let y = number::<R>(a[1], &format!("{field}[1]"))?;
-    let z = number::<R>(a[2], &format!("{field}[2]"))?;
+fn vector<R: Real>(a: Triple, field: Field<'_>) -> Result<V3<R>, Invalid> {
+    let x = number::<R>(a[0], field.index(0))?;
+    let y = number::<R>(a[1], field.index(1))?;
+    let z = number::<R>(a[2], field.index(2))?;
     Ok(V3::<R>::new(x, y, z))
 }
 
-fn direction<R: Real>(a: Triple, field: &str, what: &str) -> Result<GivenVector<R>, Invalid> {
+fn direction<R: Real>(a: Triple, field: Field<'_>, what: &str) -> Result<GivenVector<R>, Invalid> {
     let v = vector::<R>(a, field)?;
     match normalize::<R>(v) {
         // Its length is reported (and a length beyond the precision's range would be infinity).

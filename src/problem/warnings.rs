@@ -17,6 +17,7 @@
 
 use serde::Serialize;
 
+use super::field::Field;
 use super::format::{ColorSpec, LightType, MaterialRef, MaterialSpec, ProblemFile};
 
 /// What a warning is about.
@@ -59,7 +60,8 @@ fn looks_8bit(c: [f64; 3]) -> bool {
         && c.iter().any(|&x| x >= 2.0)
 }
 
-fn material(out: &mut Vec<Warning>, base: &str, m: &MaterialSpec) {
+/// The warnings of a material at `base` (its field name is written only for a warning).
+fn material(out: &mut Vec<Warning>, base: Field<'_>, m: &MaterialSpec) {
     let colours = [
         ("ambient", m.ambient),
         ("diffuse", m.diffuse),
@@ -67,14 +69,15 @@ fn material(out: &mut Vec<Warning>, base: &str, m: &MaterialSpec) {
     ];
     for (name, c) in colours {
         let Some(c) = c else { continue };
-        let (field, given) = match c {
-            ColorSpec::Rgb(v) => (format!("{base}.{name}"), v),
-            ColorSpec::Scaled(s) => (format!("{base}.{name}.color"), s.color),
+        let (scaled, given) = match c {
+            ColorSpec::Rgb(v) => (false, v),
+            ColorSpec::Scaled(s) => (true, s.color),
         };
         if looks_8bit(given) {
+            let at = base.key(name);
             out.push(Warning {
                 kind: WarningKind::MaterialColor0To255 { given },
-                field,
+                field: if scaled { at.key("color") } else { at }.to_string(),
             });
         }
     }
@@ -82,7 +85,7 @@ fn material(out: &mut Vec<Warning>, base: &str, m: &MaterialSpec) {
         if looks_8bit(given) {
             out.push(Warning {
                 kind: WarningKind::MaterialColor0To255 { given },
-                field: format!("{base}.reflectivity"),
+                field: base.key("reflectivity").to_string(),
             });
         }
     }
@@ -91,17 +94,20 @@ fn material(out: &mut Vec<Warning>, base: &str, m: &MaterialSpec) {
 /// The likely unit mistakes of a parsed file, in the order of its fields.
 pub(crate) fn warnings(file: &ProblemFile) -> Vec<Warning> {
     let mut out = Vec::new();
+    let materials = Field::Name("materials");
     for (name, m) in &file.materials {
-        material(&mut out, &format!("materials.{name}"), m);
+        material(&mut out, materials.key(name), m);
     }
     if let Some(p) = &file.point {
         if let MaterialRef::Inline(m) = &p.material {
-            material(&mut out, "point.material", m);
+            material(&mut out, Field::Name("point.material"), m);
         }
     }
+    let surfaces = Field::Name("surfaces");
     for (i, s) in file.surfaces.iter().enumerate() {
         if let Some(MaterialRef::Inline(m)) = &s.material {
-            material(&mut out, &format!("surfaces[{i}].material"), m);
+            let at = surfaces.index(i);
+            material(&mut out, at.key("material"), m);
         }
     }
     for (i, l) in file.lights.iter().enumerate() {

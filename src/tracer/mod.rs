@@ -23,6 +23,6 @@ pub(crate) mod wide;
 pub use camera::CameraRays;
 pub use explain::{explain_pixel, PixelExplanation, RayExplanation, SampleExplanation};
 pub use render::{render, render_with, Image};
-pub(crate) use render::{render_linear, LinearImage};
+pub(crate) use render::{render_linear_with, LinearImage};
 pub use trace::{Counts, PathRecorder, RayRecord, Scene, Spawn, Stop, Tracer};
 pub use wide::Engine;

@@ -145,18 +145,8 @@ pub fn render_with<R: Real>(
     (image, counts)
 }
 
-/// Renders the pixel means, before rounding to 8 bits (`render` is this, rounded), with the
-/// default [`Engine`].
-pub(crate) fn render_linear<R: Real>(
-    problem: &Problem<R>,
-    camera: &Camera<R>,
-    scene: &Scene<R>,
-    progress: &(dyn Fn() + Sync),
-) -> (LinearImage, Counts) {
-    render_linear_with(Engine::default(), problem, camera, scene, progress)
-}
-
-/// [`render_linear`] by the given engine (the same means by either).
+/// Renders the pixel means, before rounding to 8 bits (`render` is this, rounded), by the given
+/// engine (the same means by either).
 pub(crate) fn render_linear_with<R: Real>(
     engine: Engine,
     problem: &Problem<R>,

@@ -24,7 +24,7 @@ use serde::Serialize;
 
 use crate::core::{Precision, Real};
 use crate::problem::{Camera, Problem};
-use crate::tracer::{render_linear, Counts, LinearImage, Scene};
+use crate::tracer::{render_linear_with, Counts, Engine, LinearImage, Scene};
 
 pub use sweep::{ReferenceSettings, Setting, Sweep, MAX_RUNS, MAX_SWEEP_RAYS};
 
@@ -175,14 +175,16 @@ impl<R: Real> Prepared<R> {
         (prepared, built)
     }
 
-    /// Renders under `setting` (its precision is this one's): the image, the rays, the seconds.
-    fn render(&mut self, setting: &Setting) -> (LinearImage, Counts, f64) {
+    /// Renders under `setting` (its precision is this one's) by `engine`: the image, the rays,
+    /// the seconds.
+    fn render(&mut self, engine: Engine, setting: &Setting) -> (LinearImage, Counts, f64) {
         let r = &mut self.problem.render;
         r.max_level = setting.max_level;
         r.min_weight = R::from_f64(setting.min_weight);
         r.samples = setting.samples;
         let t = Instant::now();
-        let (image, counts) = render_linear(&self.problem, &self.camera, &self.scene, &|| {});
+        let (p, c, s) = (&self.problem, &self.camera, &self.scene);
+        let (image, counts) = render_linear_with(engine, p, c, s, &|| {});
         (image, counts, t.elapsed().as_secs_f64())
     }
 }
@@ -201,8 +203,15 @@ impl Scenes {
 }
 
 /// Renders the reference, then every setting `sweep.runs` times round-robin, on the current
-/// rayon pool (its thread count is reported). `progress` is told each render as it starts.
-pub fn measure(scenes: Scenes, sweep: &Sweep, progress: &dyn Fn(&Setting)) -> Outcome {
+/// rayon pool (its thread count is reported), every render (the reference too) by `engine`: the
+/// engines give the same images and rays, so only the times differ. `progress` is told each
+/// render as it starts.
+pub fn measure(
+    engine: Engine,
+    scenes: Scenes,
+    sweep: &Sweep,
+    progress: &dyn Fn(&Setting),
+) -> Outcome {
     let (problem, camera) = scenes.f64;
     let (width, height) = (camera.width, camera.height);
     let (mut p64, built64) = Prepared::new(problem, camera);
@@ -216,7 +225,7 @@ pub fn measure(scenes: Scenes, sweep: &Sweep, progress: &dyn Fn(&Setting)) -> Ou
 
     let ref_setting = sweep.reference.setting();
     progress(&ref_setting);
-    let (ref_image, ref_rays, ref_time) = p64.render(&ref_setting);
+    let (ref_image, ref_rays, ref_time) = p64.render(engine, &ref_setting);
 
     let settings = sweep.settings();
     // Renders go twin by twin: the f64 setting, then the f32 one with the same level, weight
@@ -237,11 +246,11 @@ pub fn measure(scenes: Scenes, sweep: &Sweep, progress: &dyn Fn(&Setting)) -> Ou
             let setting = &settings[i];
             progress(setting);
             let (image, rays, secs) = match setting.precision {
-                Precision::F64 => p64.render(setting),
+                Precision::F64 => p64.render(engine, setting),
                 Precision::F32 => p32
                     .as_mut()
                     .expect("the f32 scene is loaded when the sweep has f32")
-                    .render(setting),
+                    .render(engine, setting),
             };
             times[i].push(secs);
             if first[i].is_some() {

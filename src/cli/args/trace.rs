@@ -44,6 +44,11 @@ pub(crate) struct TradeoffArgs {
     /// Worker threads, 1 to 1024 (default: one per core).
     #[arg(long, value_name = "N", value_parser = parse_threads)]
     pub(crate) threads: Option<usize>,
+    /// The tracer of every render (the reference too), as `phong render --engine`: packets of
+    /// rays in SIMD lanes (wide) or one ray at a time (scalar). Both give the same images,
+    /// errors and rays; only the times differ.
+    #[arg(long, value_enum, default_value_t = crate::tracer::Engine::Wide)]
+    pub(crate) engine: crate::tracer::Engine,
     /// Format of the table.
     #[arg(long, value_enum, default_value_t = TradeoffFormat::Text)]
     pub(crate) format: TradeoffFormat,

@@ -76,8 +76,14 @@ pub(crate) fn run(args: &TradeoffArgs) -> Result<Exit, CliError> {
     let total = 1 + sweep.settings().len() as u64 * u64::from(sweep.runs);
     let estimate = (work >= 100_000_000).then(|| format!("{work:.1e} primary rays"));
     let bar = output::progress_bar(total, estimate.as_deref());
-    let outcome = pool
-        .install(|| tradeoff::measure(Scenes::new(f64_scene, f32_scene), &sweep, &|_| bar.inc(1)));
+    let outcome = pool.install(|| {
+        tradeoff::measure(
+            args.engine,
+            Scenes::new(f64_scene, f32_scene),
+            &sweep,
+            &|_| bar.inc(1),
+        )
+    });
     bar.finish_and_clear();
     let file = args.scene.display().to_string();
     let summary = report::Summary::new(&file, &outcome, args.metric, args.budget);

@@ -40,9 +40,9 @@ pub const BLOCK: usize = 64;
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, clap::ValueEnum, serde::Serialize)]
 #[serde(rename_all = "lowercase")]
 pub enum Engine {
-    /// One ray at a time ([`Tracer::trace`]).
+    /// One ray at a time: each path traced to its end before the next.
     Scalar,
-    /// Packets of rays in lanes, queues per bounce (this module); the default.
+    /// Packets of rays in SIMD lanes, a queue of rays per bounce; the default.
     #[default]
     Wide,
 }
