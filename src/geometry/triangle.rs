@@ -57,6 +57,47 @@ fn max_abs<R: Real>(v: [R; 3]) -> R {
     v[0].abs().max(v[1].abs()).max(v[2].abs())
 }
 
+/// The ray in the triangle test's sheared frame (`Triangle::ray_space`, and the wide BVH's triangle leaves): the
+/// permutation putting D's largest component last, and the shear.
+#[derive(Clone, Copy)]
+pub(crate) struct Shear<R: Real> {
+    /// The axes (x, y, z) of the sheared frame: D's largest component is `k[2]`.
+    pub(crate) k: [usize; 3],
+    /// −D_x/D_z, −D_y/D_z and 1/D_z in that frame.
+    pub(crate) sx: R,
+    /// See `sx`.
+    pub(crate) sy: R,
+    /// See `sx`.
+    pub(crate) sz: R,
+}
+
+impl<R: Real> Shear<R> {
+    #[inline]
+    pub(crate) fn of(ray: &Ray<R>) -> Self {
+        let d = ray.direction.to_array();
+        let ad = [d[0].abs(), d[1].abs(), d[2].abs()];
+        let kz = if ad[0] > ad[1] {
+            if ad[0] > ad[2] {
+                0
+            } else {
+                2
+            }
+        } else if ad[1] > ad[2] {
+            1
+        } else {
+            2
+        };
+        let kx = (kz + 1) % 3;
+        let ky = (kx + 1) % 3;
+        Shear {
+            k: [kx, ky, kz],
+            sx: -d[kx] / d[kz],
+            sy: -d[ky] / d[kz],
+            sz: R::ONE / d[kz],
+        }
+    }
+}
+
 impl<R: Real> Triangle<R> {
     /// The triangle with corners `p0`, `p1`, `p2`.
     #[inline]
@@ -112,27 +153,14 @@ impl<R: Real> Triangle<R> {
             (p2 - o).to_array(),
         ];
 
-        // Permute components of triangle vertices and ray direction (largest |d| to z)
-        let d = ray.direction.to_array();
-        let ad = [d[0].abs(), d[1].abs(), d[2].abs()];
-        let kz = if ad[0] > ad[1] {
-            if ad[0] > ad[2] {
-                0
-            } else {
-                2
-            }
-        } else if ad[1] > ad[2] {
-            1
-        } else {
-            2
-        };
-        let kx = (kz + 1) % 3;
-        let ky = (kx + 1) % 3;
-
-        // Apply shear transformation to translated vertex positions
-        let sx = -d[kx] / d[kz];
-        let sy = -d[ky] / d[kz];
-        let sz = R::ONE / d[kz];
+        // Permute components of triangle vertices and ray direction (largest |d| to z), and
+        // apply the shear transformation to translated vertex positions
+        let Shear {
+            k: [kx, ky, kz],
+            sx,
+            sy,
+            sz,
+        } = Shear::of(ray);
         let x = [0, 1, 2].map(|i| q[i][kx] + sx * q[i][kz]);
         let y = [0, 1, 2].map(|i| q[i][ky] + sy * q[i][kz]);
 

@@ -32,6 +32,7 @@
 use super::bounds::{inverse, Aabb};
 use super::bvh::Bvh;
 use super::soa::{lanes_of, sphere_hit_t};
+use super::triangle::Shear;
 use super::{Ray, Shape};
 use crate::core::lanes::{Wide, W, W3};
 use crate::core::rounding::gamma;
@@ -111,43 +112,6 @@ pub(crate) struct WideBvh<R: Real> {
     mixed_shapes: Vec<u32>,
     /// The root, and its box (tested when the root is a leaf).
     root: Option<(Ref, Aabb<R>)>,
-}
-
-/// The ray in the triangle test's sheared frame ([`super::Triangle`]'s `ray_space`): the
-/// permutation putting D's largest component last, and the shear.
-#[derive(Clone, Copy)]
-struct Shear<R: Real> {
-    k: [usize; 3],
-    sx: R,
-    sy: R,
-    sz: R,
-}
-
-impl<R: Real> Shear<R> {
-    #[inline]
-    fn of(ray: &Ray<R>) -> Self {
-        let d = ray.direction.to_array();
-        let ad = [d[0].abs(), d[1].abs(), d[2].abs()];
-        let kz = if ad[0] > ad[1] {
-            if ad[0] > ad[2] {
-                0
-            } else {
-                2
-            }
-        } else if ad[1] > ad[2] {
-            1
-        } else {
-            2
-        };
-        let kx = (kz + 1) % 3;
-        let ky = (kx + 1) % 3;
-        Shear {
-            k: [kx, ky, kz],
-            sx: -d[kx] / d[kz],
-            sy: -d[ky] / d[kz],
-            sz: R::ONE / d[kz],
-        }
-    }
 }
 
 /// |x| per lane, +0 for ±0, as the scalar `abs` gives.
