@@ -13,7 +13,7 @@
 
 use super::aggregate::{Aggregate, AggregateHit, FLAT};
 use super::{Plane, Ray, Shape, Sphere};
-use crate::core::lanes::{Wide, W, W3};
+use crate::core::lanes::{lanes_of, Wide, W, W3};
 use crate::core::Real;
 
 /// The surfaces of a flat scene by kind, each with its index in the scene's order.
@@ -100,18 +100,6 @@ fn plane_hit_t<L: Wide>(o: W3<L>, d: W3<L>, plane: &Plane<L::Scalar>, t_max: L) 
         .and(t.gt(zero))
         .and(t.lt(t_max));
     (hit, t, fast.not())
-}
-
-/// The set lanes of a mask, lowest first.
-#[inline(always)]
-pub(crate) fn lanes_of(mut bits: u32) -> impl Iterator<Item = usize> {
-    std::iter::from_fn(move || {
-        (bits != 0).then(|| {
-            let k = bits.trailing_zeros() as usize;
-            bits &= bits - 1;
-            k
-        })
-    })
 }
 
 impl<R: Real> FlatScene<R> {

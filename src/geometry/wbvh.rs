@@ -31,10 +31,10 @@
 
 use super::bounds::{inverse, Aabb};
 use super::bvh::Bvh;
-use super::soa::{lanes_of, sphere_hit_t};
+use super::soa::sphere_hit_t;
 use super::triangle::Shear;
 use super::{Ray, Shape};
-use crate::core::lanes::{Wide, W, W3};
+use crate::core::lanes::{lanes_of, Wide, W, W3};
 use crate::core::rounding::gamma;
 use crate::core::{Real, Vector, V3};
 
