@@ -65,6 +65,17 @@ fn path_length(n: u32, w: f64) -> u32 {
         .count() as u32
 }
 
+/// The bundled classic scene at `width`×`height`, written into `dir`.
+fn classic_at(dir: &TempDir, width: u32, height: u32) -> PathBuf {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let mut classic: Value =
+        serde_json::from_str(&fs::read_to_string(root.join("scenes/classic.json")).unwrap())
+            .unwrap();
+    classic["camera"]["width"] = json!(width);
+    classic["camera"]["height"] = json!(height);
+    write(dir, "classic.json", &classic)
+}
+
 #[test]
 fn errors_rays_and_the_budget_match_the_closed_form_of_two_mirrors() {
     let dir = TempDir::new().unwrap();
@@ -203,13 +214,7 @@ fn the_8_bit_share_equals_the_share_of_pixels_phong_render_writes_differently() 
     // The classic scene at 48×36: the sweep's 8-bit share must be what comparing the images of
     // `phong render` (the other path to the same pixels) gives.
     let dir = TempDir::new().unwrap();
-    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
-    let mut classic: Value =
-        serde_json::from_str(&fs::read_to_string(root.join("scenes/classic.json")).unwrap())
-            .unwrap();
-    classic["camera"]["width"] = json!(48);
-    classic["camera"]["height"] = json!(36);
-    let scene = write(&dir, "classic.json", &classic);
+    let scene = classic_at(&dir, 48, 36);
     let doc = tradeoff_json(
         &scene,
         &[
@@ -310,13 +315,7 @@ fn without_times(mut doc: Value) -> Value {
 #[test]
 fn errors_and_rays_are_the_same_for_any_thread_count() {
     let dir = TempDir::new().unwrap();
-    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
-    let mut classic: Value =
-        serde_json::from_str(&fs::read_to_string(root.join("scenes/classic.json")).unwrap())
-            .unwrap();
-    classic["camera"]["width"] = json!(40);
-    classic["camera"]["height"] = json!(30);
-    let scene = write(&dir, "classic.json", &classic);
+    let scene = classic_at(&dir, 40, 30);
     let args = [
         "--levels",
         "2,5",
@@ -339,13 +338,7 @@ fn errors_and_rays_are_the_same_for_any_thread_count() {
 #[test]
 fn both_engines_give_the_same_errors_and_rays() {
     let dir = TempDir::new().unwrap();
-    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
-    let mut classic: Value =
-        serde_json::from_str(&fs::read_to_string(root.join("scenes/classic.json")).unwrap())
-            .unwrap();
-    classic["camera"]["width"] = json!(24);
-    classic["camera"]["height"] = json!(18);
-    let scene = write(&dir, "classic.json", &classic);
+    let scene = classic_at(&dir, 24, 18);
     let args = [
         "--levels",
         "1,5",

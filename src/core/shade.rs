@@ -42,6 +42,19 @@ pub enum LightStatus {
     InShadow,
 }
 
+impl LightStatus {
+    /// Every status, in the order of the enum (for tests that must meet each one, and for
+    /// tables of their wording).
+    pub const ALL: [LightStatus; 6] = [
+        LightStatus::Lit,
+        LightStatus::BehindSurface,
+        LightStatus::InTangentPlane,
+        LightStatus::OutsideCone,
+        LightStatus::AtLight,
+        LightStatus::InShadow,
+    ];
+}
+
 /// Why the specular term is what it is.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize)]
 #[serde(rename_all = "snake_case")]
@@ -1115,14 +1128,7 @@ mod tests {
             }
             assert_eq!(lane_rays, scalar_rays, "shadow rays asked");
         }
-        for s in [
-            LightStatus::Lit,
-            LightStatus::BehindSurface,
-            LightStatus::InTangentPlane,
-            LightStatus::OutsideCone,
-            LightStatus::AtLight,
-            LightStatus::InShadow,
-        ] {
+        for s in LightStatus::ALL {
             assert!(statuses.contains(&s), "no {s:?} among the cases");
         }
         for s in [SpecularStatus::Lit, SpecularStatus::AwayFromViewer] {

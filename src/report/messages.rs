@@ -1711,15 +1711,7 @@ mod tests {
 
     #[test]
     fn every_status_and_reading_has_a_distinct_portuguese_sentence() {
-        let statuses = [
-            LightStatus::Lit,
-            LightStatus::BehindSurface,
-            LightStatus::InTangentPlane,
-            LightStatus::OutsideCone,
-            LightStatus::AtLight,
-            LightStatus::InShadow,
-        ];
-        for s in statuses {
+        for s in LightStatus::ALL {
             assert_ne!(light_status_in(s, Lang::En), light_status_in(s, Lang::Pt));
         }
         let readings = [
