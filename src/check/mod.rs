@@ -27,7 +27,7 @@ pub(crate) mod steps;
 
 use std::path::Path;
 
-use crate::problem::{Problem, ProblemError, ProblemFile};
+use crate::problem::{Problem, ProblemError, ProblemFile, Source};
 use crate::solve::{Evaluation, ReadingCode};
 use report::{AnswerSource, Checked, Failure, FailureKind, Judged};
 
@@ -498,6 +498,12 @@ pub struct CheckOptions {
 /// Checks one problem file's answer (given, or its key). Never fails: a bad file or answer is
 /// reported in the result, which names the file, the field and the fix.
 pub fn check_file(path: &Path, options: &CheckOptions) -> report::Checked {
+    check_source(Source::File(path), options)
+}
+
+/// [`check_file`] for a problem from any [`Source`] (text held in memory, for `phong serve`).
+pub fn check_source(problem: Source<'_>, options: &CheckOptions) -> report::Checked {
+    let path = problem.name();
     let file = path.display().to_string();
     let source = if options.answer.is_some() {
         AnswerSource::Argument
@@ -511,7 +517,7 @@ pub fn check_file(path: &Path, options: &CheckOptions) -> report::Checked {
         outcome,
         warnings,
     };
-    let loaded = match Loaded::read(path) {
+    let loaded = match Loaded::read(problem) {
         Ok(l) => l,
         Err(e) => {
             return checked(
@@ -543,8 +549,8 @@ struct Loaded {
 }
 
 impl Loaded {
-    fn read(path: &Path) -> Result<Loaded, ProblemError> {
-        match crate::problem::load::<f64>(path) {
+    fn read(source: Source<'_>) -> Result<Loaded, ProblemError> {
+        match source.load::<f64>() {
             Ok((file, problem)) => Ok(Loaded {
                 file,
                 problem: Ok(problem),
@@ -552,7 +558,7 @@ impl Loaded {
             // The file parsed, but its problem is invalid. `load` keeps no parsed file then:
             // parse it again (only on this path) for its key, which is reported first.
             Err(invalid @ ProblemError::Invalid { .. }) => Ok(Loaded {
-                file: crate::problem::parse_file(path)?,
+                file: source.parse()?,
                 problem: Err(invalid),
             }),
             Err(e) => Err(e),

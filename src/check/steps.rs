@@ -28,7 +28,7 @@ use super::messages;
 use super::report::{Failure, FailureKind, CHECK_FORMAT_VERSION};
 use super::slips::{self, Slip};
 use crate::core::{LightKind, Vector};
-use crate::problem::Problem;
+use crate::problem::{self, Problem};
 use crate::report::lang::Lang;
 use crate::report::number::num;
 use crate::solve::{Evaluation, Intersection, ReadingCode, Solution};
@@ -829,9 +829,20 @@ impl StepsChecked {
 
 /// Checks the steps of one problem file.
 pub fn check_steps(path: &Path, given: &[GivenStep], strict: bool) -> StepsChecked {
+    check_steps_source(problem::Source::File(path), given, strict)
+}
+
+/// [`check_steps`] for a problem from any [`problem::Source`] (text held in memory, for `phong serve`).
+pub fn check_steps_source(
+    source: problem::Source<'_>,
+    given: &[GivenStep],
+    strict: bool,
+) -> StepsChecked {
+    let path = source.name();
     let file = path.display().to_string();
     let mut warnings = Vec::new();
-    let outcome = crate::problem::load::<f64>(path)
+    let outcome = source
+        .load::<f64>()
         .map_err(|e| Failure::problem(&e))
         .and_then(|(_, p)| {
             warnings.clone_from(&p.warnings);

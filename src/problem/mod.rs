@@ -418,11 +418,81 @@ fn or_list(words: &[&str]) -> String {
     }
 }
 
+/// Where a problem comes from: a file, or text held in memory.
+#[derive(Clone, Copy, Debug)]
+pub enum Source<'a> {
+    /// A file (`-` is standard input); a mesh's OBJ file is read from beside it.
+    File(&'a Path),
+    /// The text of a problem, named `name` in messages (a request to `phong serve`). It may not
+    /// name a mesh: reading one would read the file system for whoever sent the text.
+    Text {
+        /// The name messages give it, in place of a file's path.
+        name: &'a Path,
+        /// The JSON text.
+        text: &'a str,
+    },
+}
+
+impl<'a> Source<'a> {
+    /// The name messages give the problem: the file's path, or the text's name.
+    pub fn name(&self) -> &'a Path {
+        match *self {
+            Source::File(path) => path,
+            Source::Text { name, .. } => name,
+        }
+    }
+
+    /// Reads and parses the problem (no validation).
+    pub fn parse(&self) -> Result<ProblemFile, ProblemError> {
+        match *self {
+            Source::File(path) => parse_file(path),
+            Source::Text { name, text } => {
+                parse_str(name, text.strip_prefix('\u{feff}').unwrap_or(text))
+            }
+        }
+    }
+
+    /// Reads, parses and validates the problem in precision `R`.
+    pub fn load<R: Real>(&self) -> Result<(ProblemFile, Problem<R>), ProblemError> {
+        let file = self.parse()?;
+        let problem = self.validate::<R>(&file)?;
+        Ok((file, problem))
+    }
+
+    /// Validates the parsed problem in precision `R`: a file's meshes are read from beside it;
+    /// text that names a mesh is refused.
+    pub fn validate<R: Real>(&self, file: &ProblemFile) -> Result<Problem<R>, ProblemError> {
+        let name = self.name();
+        match *self {
+            Source::File(path) => validate::validate_in::<R>(file, path.parent()),
+            Source::Text { .. } => {
+                no_mesh(file).and_then(|()| validate::validate_in::<R>(file, None))
+            }
+        }
+        .map_err(|e| e.at(name))
+    }
+}
+
+/// Refuses a problem given as text that names a mesh file.
+fn no_mesh(file: &ProblemFile) -> Result<(), Invalid> {
+    match file
+        .surfaces
+        .iter()
+        .position(|s| s.kind == SurfaceType::Mesh)
+    {
+        Some(i) => Err(Invalid::new(
+            format!("surfaces[{i}].file"),
+            "a problem sent as text cannot name a mesh file: no file is read on its behalf",
+            "give the mesh's triangles as surfaces of \"type\": \"triangle\", or solve the \
+             file with the phong command, which reads a mesh beside the problem file",
+        )),
+        None => Ok(()),
+    }
+}
+
 /// Reads, parses and validates a problem file in precision `R`.
 pub fn load<R: Real>(path: &Path) -> Result<(ProblemFile, Problem<R>), ProblemError> {
-    let file = parse_file(path)?;
-    let problem = validate::validate_in::<R>(&file, path.parent()).map_err(|e| e.at(path))?;
-    Ok((file, problem))
+    Source::File(path).load::<R>()
 }
 
 /// Reads a scene: a problem file with a camera and surfaces (what the tracer needs).

@@ -5,8 +5,8 @@
 use std::path::Path;
 
 use crate::core::{Precision, Real};
-use crate::problem::ProblemError;
-use crate::solve::solve_file;
+use crate::problem::{ProblemError, Source};
+use crate::solve::solve_source;
 
 use super::explain::Explanation;
 use super::lang::Lang;
@@ -18,39 +18,56 @@ pub fn explain_file(
     precision: Precision,
     lang: Lang,
 ) -> Result<Explanation, ProblemError> {
-    fn go<R: Real>(path: &Path, lang: Lang) -> Result<Explanation, ProblemError> {
-        let (problem, solution) = solve_file::<R>(path)?;
+    explain_source(Source::File(path), precision, lang)
+}
+
+/// [`explain_file`] for a problem from any [`Source`] (text held in memory, for `phong serve`).
+pub fn explain_source(
+    source: Source<'_>,
+    precision: Precision,
+    lang: Lang,
+) -> Result<Explanation, ProblemError> {
+    fn go<R: Real>(source: Source<'_>, lang: Lang) -> Result<Explanation, ProblemError> {
+        let (problem, solution) = solve_source::<R>(source)?;
         Ok(super::explain::explain(
-            &path.display().to_string(),
+            &source.name().display().to_string(),
             &problem,
             &solution,
             lang,
         ))
     }
     match precision {
-        Precision::F32 => go::<f32>(path, lang),
-        Precision::F64 => go::<f64>(path, lang),
+        Precision::F32 => go::<f32>(source, lang),
+        Precision::F64 => go::<f64>(source, lang),
     }
 }
 
 /// Solves one file and returns its stable JSON document.
 pub fn solve_json(path: &Path, precision: Precision) -> Result<serde_json::Value, ProblemError> {
-    solve_json_warned(path, precision, Lang::En).map(|(doc, _)| doc)
+    solve_json_source(Source::File(path), precision)
+}
+
+/// [`solve_json`] for a problem from any [`Source`] (text held in memory, for `phong serve`).
+pub fn solve_json_source(
+    source: Source<'_>,
+    precision: Precision,
+) -> Result<serde_json::Value, ProblemError> {
+    solve_json_warned(source, precision, Lang::En).map(|(doc, _)| doc)
 }
 
 /// [`solve_json`], with the file's likely unit mistakes as sentences in `lang` (for standard
 /// error; the document has them in English).
 pub(crate) fn solve_json_warned(
-    path: &Path,
+    source: Source<'_>,
     precision: Precision,
     lang: Lang,
 ) -> Result<(serde_json::Value, Vec<String>), ProblemError> {
     fn go<R: Real>(
-        path: &Path,
+        source: Source<'_>,
         lang: Lang,
     ) -> Result<(serde_json::Value, Vec<String>), ProblemError> {
-        let (problem, solution) = solve_file::<R>(path)?;
-        let doc = super::json::document(&path.display().to_string(), &problem, &solution);
+        let (problem, solution) = solve_source::<R>(source)?;
+        let doc = super::json::document(&source.name().display().to_string(), &problem, &solution);
         let warnings = problem
             .warnings
             .iter()
@@ -62,15 +79,15 @@ pub(crate) fn solve_json_warned(
         ))
     }
     match precision {
-        Precision::F32 => go::<f32>(path, lang),
-        Precision::F64 => go::<f64>(path, lang),
+        Precision::F32 => go::<f32>(source, lang),
+        Precision::F64 => go::<f64>(source, lang),
     }
 }
 
 /// Solves one file and returns its text report.
 pub fn solve_text(path: &Path, precision: Precision) -> Result<String, ProblemError> {
     fn go<R: Real>(path: &Path) -> Result<String, ProblemError> {
-        let (problem, solution) = solve_file::<R>(path)?;
+        let (problem, solution) = solve_source::<R>(Source::File(path))?;
         Ok(super::text::render(
             &path.display().to_string(),
             &problem,

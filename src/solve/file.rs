@@ -4,13 +4,20 @@
 use std::path::Path;
 
 use crate::core::Real;
-use crate::problem::{self, Problem, ProblemError};
+use crate::problem::{Problem, ProblemError, Source};
 
 use super::{solve, Solution};
 
 /// Loads, validates and solves one file in precision `R`.
 pub fn solve_file<R: Real>(path: &Path) -> Result<(Problem<R>, Solution<R>), ProblemError> {
-    let (_, problem) = problem::load::<R>(path)?;
-    let solution = solve(&problem).map_err(|e| e.at(path))?;
+    solve_source::<R>(Source::File(path))
+}
+
+/// [`solve_file`] for a problem from any [`Source`] (text held in memory, for `phong serve`).
+pub fn solve_source<R: Real>(
+    source: Source<'_>,
+) -> Result<(Problem<R>, Solution<R>), ProblemError> {
+    let (_, problem) = source.load::<R>()?;
+    let solution = solve(&problem).map_err(|e| e.at(source.name()))?;
     Ok((problem, solution))
 }

@@ -18,7 +18,7 @@ use crate::geometry::{Aggregate, Ray, SurfaceHit};
 use crate::problem::validate::{light_label, show};
 use crate::problem::{GivenVector, Invalid, NamedMaterial, Problem, SurfaceSource, Target};
 
-pub use file::solve_file;
+pub use file::{solve_file, solve_source};
 pub use findings::{ConeEdge, Finding, FindingData, GateDecision};
 
 /// Everything the solver found out about one problem.

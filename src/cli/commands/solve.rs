@@ -47,12 +47,15 @@ pub(crate) fn run(args: &SolveArgs) -> Result<Exit, CliError> {
     let mut solved: Vec<&Path> = Vec::new();
     for path in &args.files {
         let result = match args.format {
-            Format::Json => {
-                solve_json_warned(path, args.precision, args.lang).map(|(v, warnings)| {
-                    warnings.iter().for_each(|w| error::warn_in(w, args.lang));
-                    docs.push(v);
-                })
-            }
+            Format::Json => solve_json_warned(
+                crate::problem::Source::File(path),
+                args.precision,
+                args.lang,
+            )
+            .map(|(v, warnings)| {
+                warnings.iter().for_each(|w| error::warn_in(w, args.lang));
+                docs.push(v);
+            }),
             _ => explain_file(path, args.precision, args.lang).map(|x| {
                 x.warnings.iter().for_each(|w| error::warn_in(w, args.lang));
                 explanations.push(x);
