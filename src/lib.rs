@@ -13,7 +13,8 @@
 //!
 //! The binary's own modules are not part of the library's interface: `generate` (fresh problems
 //! friendly to hand calculation, `phong new`), `tradeoff` (what each tracer setting costs in time
-//! and buys in accuracy, `phong tradeoff`) and `cli` (the `phong` command line; public only so
+//! and buys in accuracy, `phong tradeoff`), `serve` (the checker as a web application, `phong
+//! serve`, with the default feature `serve`) and `cli` (the `phong` command line; public only so
 //! that `src/main.rs` can call `cli::main`, and hidden from the documentation).
 
 #![forbid(unsafe_code)]
@@ -28,6 +29,8 @@ pub(crate) mod generate;
 pub mod geometry;
 pub mod problem;
 pub mod report;
+#[cfg(feature = "serve")]
+pub(crate) mod serve;
 pub mod solve;
 pub mod tracer;
 pub(crate) mod tradeoff;

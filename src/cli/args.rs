@@ -19,12 +19,16 @@ use crate::tracer::output::ImageFormat;
 
 mod answers;
 mod documents;
+#[cfg(feature = "serve")]
+mod serve;
 #[cfg(test)]
 mod tests;
 mod trace;
 
 pub(crate) use answers::*;
 pub(crate) use documents::*;
+#[cfg(feature = "serve")]
+pub(crate) use serve::*;
 pub(crate) use trace::*;
 
 /// Solve and explain the illumination exercises of Chapter 4 (Phong's model).
@@ -59,6 +63,11 @@ pub(crate) enum Command {
     /// Measure what each tracer setting (precision, level, minimum weight, samples) costs in
     /// time and buys in accuracy against a reference render; name the fastest within a budget.
     Tradeoff(TradeoffArgs),
+    /// Serve the exercises as a web application: a student checks an answer (and its steps) in
+    /// a browser, Portuguese or English, with nothing installed; a JSON API mirrors
+    /// `solve --format json` and `check --format json`.
+    #[cfg(feature = "serve")]
+    Serve(ServeArgs),
 }
 
 impl Command {

@@ -21,6 +21,10 @@ pub(crate) enum CliError {
     /// The submissions of `phong grade` cannot be read.
     #[error(transparent)]
     Submissions(#[from] Unreadable),
+    /// `phong serve` could not start (its exercises, its address).
+    #[cfg(feature = "serve")]
+    #[error(transparent)]
+    Serve(#[from] crate::serve::StartError),
     /// A flag's value refused after parsing: out of range, or not what the command can do.
     #[error("{flag}: {message}. Fix: {fix}")]
     Usage {

@@ -46,6 +46,8 @@ pub(crate) fn run(cli: &Cli) -> Exit {
         Command::Grade(args) => commands::grade::run(args),
         Command::New(args) => commands::new::run(args),
         Command::Moodle(args) => commands::moodle::run(args),
+        #[cfg(feature = "serve")]
+        Command::Serve(args) => commands::serve::run(args),
     };
     result.unwrap_or_else(|e| error::fail_in(&e, cli.command.lang()))
 }

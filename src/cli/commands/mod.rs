@@ -10,6 +10,8 @@ pub(crate) mod moodle;
 pub(crate) mod new;
 pub(crate) mod render;
 pub(crate) mod schema;
+#[cfg(feature = "serve")]
+pub(crate) mod serve;
 pub(crate) mod solve;
 pub(crate) mod tradeoff;
 

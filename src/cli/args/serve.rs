@@ -1,0 +1,22 @@
+//! The arguments of `phong serve`.
+
+use super::*;
+
+#[derive(Debug, Args)]
+pub(crate) struct ServeArgs {
+    /// The address to listen on; port 0 picks a free port (printed at start-up). Behind a
+    /// reverse proxy, keep the loopback address.
+    #[arg(long, value_name = "IP:PORT", default_value = "127.0.0.1:8080")]
+    pub(crate) addr: std::net::SocketAddr,
+    /// Serve every *.json problem of this folder (each checked at start-up) instead of the
+    /// bundled exercises.
+    #[arg(long, value_name = "DIR")]
+    pub(crate) exercises: Option<PathBuf>,
+    /// Append each checked answer to this file, one JSON line each; without it, no answer is
+    /// kept.
+    #[arg(long, value_name = "PATH")]
+    pub(crate) log_answers: Option<PathBuf>,
+    /// The most requests handled at once; more are refused with 503 at once.
+    #[arg(long, value_name = "N", default_value_t = 256, value_parser = clap::value_parser!(u32).range(1..=65536))]
+    pub(crate) max_concurrent: u32,
+}

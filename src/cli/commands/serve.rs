@@ -1,0 +1,21 @@
+//! `phong serve`: the checker as a web application (see [`crate::serve`]).
+
+use crate::cli::args::ServeArgs;
+use crate::cli::error::CliError;
+use crate::cli::exit::Exit;
+use crate::serve::{self, Config};
+
+pub(crate) fn run(args: &ServeArgs) -> Result<Exit, CliError> {
+    let limits = serve::limits::Limits {
+        concurrency: args.max_concurrent as usize,
+        ..Default::default()
+    };
+    let config = Config {
+        addr: args.addr,
+        exercises: args.exercises.clone(),
+        log_answers: args.log_answers.clone(),
+        limits,
+    };
+    serve::run(&config)?;
+    Ok(Exit::Success)
+}
