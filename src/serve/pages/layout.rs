@@ -1,0 +1,82 @@
+//! The shell of every page: the language on `<html>`, the stylesheet (a file: the CSP allows no
+//! inline style), a skip link, the header with the site's name, its navigation and the language
+//! switch, and the page's `<main>`.
+
+use axum::http::{header, StatusCode};
+use axum::response::{IntoResponse, Response};
+
+use super::lang::{self, Text};
+use crate::report::explain::language_tag;
+use crate::report::html::esc;
+use crate::report::lang::Lang;
+
+/// The stylesheet's URL (its name changes with its content, so it may be cached for a year).
+pub(crate) const CSS_URL: &str = "/static/phong.css?v=1";
+
+/// `path` with the page's language kept (`/exercise/4.2?lang=pt`); `path` may hold a query.
+pub(crate) fn href(path: &str, lang: Lang) -> String {
+    let sep = if path.contains('?') { '&' } else { '?' };
+    format!("{path}{sep}lang={}", lang::code(lang))
+}
+
+/// A page: `title` (text, escaped here), `path` (this page, for the switch), `main` (HTML).
+pub(crate) fn page(
+    status: StatusCode,
+    lang: Lang,
+    title: &str,
+    path: &str,
+    main: &str,
+) -> Response {
+    let t = |x: Text| x.get(lang);
+    let other = lang::other(lang);
+    let body = format!(
+        "<!DOCTYPE html>\n<html lang=\"{tag}\">\n<head>\n<meta charset=\"utf-8\">\n\
+         <meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n\
+         <title>{title} — {site}</title>\n<link rel=\"stylesheet\" href=\"{CSS_URL}\">\n</head>\n\
+         <body>\n<a class=\"skip\" href=\"#main\">{skip}</a>\n\
+         <header class=\"site\">\n<p class=\"site-name\"><a href=\"{home}\">{site}</a></p>\n\
+         <nav aria-label=\"{site}\">\n<ul>\n<li><a href=\"{home}\">{home_t}</a></li>\n\
+         <li><a href=\"{own}\">{own_t}</a></li>\n</ul>\n</nav>\n\
+         <nav aria-label=\"{lang_t}\" class=\"lang\">\n<a href=\"{switch}\" hreflang=\"{other_tag}\" \
+         lang=\"{other_tag}\">{switch_t}</a>\n</nav>\n</header>\n\
+         <main id=\"main\">\n{main}</main>\n</body>\n</html>\n",
+        tag = language_tag(lang),
+        title = esc(title),
+        site = t(Text::SiteName),
+        skip = t(Text::Skip),
+        home = href("/", lang),
+        home_t = t(Text::Home),
+        own = href("/own", lang),
+        own_t = t(Text::Own),
+        lang_t = t(Text::LanguageNav),
+        switch = esc(&href(path, other)),
+        other_tag = language_tag(other),
+        switch_t = t(Text::SwitchTo),
+    );
+    (
+        status,
+        [
+            (header::CONTENT_TYPE, "text/html; charset=utf-8"),
+            (header::CONTENT_LANGUAGE, language_tag(lang)),
+            (header::VARY, "Accept-Language"),
+        ],
+        body,
+    )
+        .into_response()
+}
+
+/// The stylesheet: the command line's HTML explanation's own (`report::html::STYLE`, so a
+/// worked solution looks as `phong solve --format html` writes it), then the pages'.
+pub(crate) const PAGES_CSS: &str = include_str!("static/phong.css");
+
+/// `GET /static/phong.css`, cached for a year (its URL changes with it: [`CSS_URL`]).
+pub(crate) async fn css() -> Response {
+    (
+        [
+            (header::CONTENT_TYPE, "text/css; charset=utf-8"),
+            (header::CACHE_CONTROL, "public, max-age=31536000, immutable"),
+        ],
+        format!("{}{PAGES_CSS}", crate::report::html::STYLE),
+    )
+        .into_response()
+}
