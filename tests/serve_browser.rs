@@ -394,4 +394,13 @@ fn a_browser_fills_the_4_2_form_and_reads_the_slip_and_a_step() {
         .unwrap()
         .trim();
     assert!(steps.contains(said), "the steps lack {said:?}:\n{steps}");
+
+    // The keyboard alone: Enter in the answer box submits the form (a decimal comma too).
+    s.type_into("input[name=\"step:cos_theta\"]", "");
+    s.type_into("#answer", "0,245 0,28 0,21\u{E007}");
+    s.wait_for("#verdict pre.report");
+    assert!(
+        s.text("#verdict").contains(slip),
+        "Enter did not check the answer"
+    );
 }

@@ -187,7 +187,13 @@ fn every_page_has_strict_headers_and_the_stylesheet_is_a_cached_file() {
             "{path}"
         );
     }
-    for path in ["/", "/exercise/4.2", "/exercise/4.3?solution=1", "/own"] {
+    for path in [
+        "/",
+        "/exercise/4.2",
+        "/exercise/4.2?solution=1",
+        "/exercise/4.3?solution=1",
+        "/own",
+    ] {
         let r = get(&server, path, &[]);
         assert_eq!(r.status, 200, "{path}");
         assert_eq!(r.header("content-type"), Some("text/html; charset=utf-8"));
@@ -653,4 +659,69 @@ fn bad_numbers_in_ones_own_problem_are_refused_naming_the_field() {
         let error = &error[..error.find("</p>").unwrap()];
         assert!(error.contains(named), "{field}={value}: {error}");
     }
+}
+
+#[test]
+fn an_instructors_folder_is_served_with_a_box_per_light() {
+    let dir = tempfile::tempdir().unwrap();
+    for name in ["several-lights", "sphere-hit"] {
+        std::fs::copy(
+            format!("exercises/{name}.json"),
+            dir.path().join(format!("{name}.json")),
+        )
+        .unwrap();
+    }
+    let server = Server::start(&["--exercises", dir.path().to_str().unwrap()]);
+    let list = get(&server, "/", &[]);
+    assert!(list
+        .body
+        .contains("href=\"/exercise/several-lights?lang=en\""));
+    assert!(list.body.contains("href=\"/exercise/sphere-hit?lang=en\""));
+    assert!(!list.body.contains("/exercise/4.2"));
+    // Four lights that are not ambient (lights[1]–[4]): each light's quantities by index,
+    // a spot's cone only for the spot (lights[3]), a directional light's no distance.
+    let r = get(&server, "/exercise/several-lights", &[]);
+    for name in [
+        "cos_theta[1]",
+        "cos_theta[4]",
+        "cos_psi[3]",
+        "d[1]",
+        "I_a",
+        "I",
+    ] {
+        assert!(
+            r.body.contains(&format!("name=\"step:{name}\"")),
+            "no {name}"
+        );
+    }
+    for name in ["cos_theta", "cos_theta[0]", "cos_psi[1]", "d[2]", "t"] {
+        assert!(
+            !r.body.contains(&format!("name=\"step:{name}\"")),
+            "a box {name}"
+        );
+    }
+    // A step of the second light, judged as phong check judges it.
+    let r = post(
+        &server,
+        "/exercise/several-lights",
+        &[("step:cos_theta[2]", "0.5")],
+        &[],
+    );
+    let path = dir.path().join("several-lights.json");
+    let cli: serde_json::Value = serde_json::from_str(&check(&[
+        path.to_str().unwrap(),
+        "--step",
+        "cos_theta[2]=0.5",
+        "--format",
+        "json",
+    ]))
+    .unwrap();
+    assert_eq!(
+        attr(&r.body, "data-step=\"cos_theta[2]\"", "data-verdict"),
+        cli["steps"]["steps"][0]["verdict"].as_str().unwrap()
+    );
+    // A ray problem of the folder: t is a step.
+    let r = get(&server, "/exercise/sphere-hit?lang=pt", &[]);
+    assert!(r.body.contains("<h1>Raio e esfera</h1>"));
+    assert!(r.body.contains("name=\"step:t\""));
 }
