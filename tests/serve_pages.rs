@@ -376,6 +376,21 @@ fn the_4_2_answer_names_the_normal_slip_as_phong_check_does() {
     // The same request gives the same bytes.
     let again = post(&server, "/exercise/4.2?lang=pt", &[("answer", answer)], &[]);
     assert_eq!(again.body, r.body);
+    // The likely intended reading (the light taken the other way, worked out above with the
+    // specular term): accepted as that reading, as phong check says.
+    let reading = "0.299 0.361 0.318";
+    let r = post(&server, "/exercise/4.2", &[("answer", reading)], &[]);
+    let cli: serde_json::Value = serde_json::from_str(&check(&[
+        "exercises/4.2.json",
+        "--answer",
+        reading,
+        "--format",
+        "json",
+    ]))
+    .unwrap();
+    assert_eq!(cli["verdict"], "reading");
+    assert_eq!(attr(&r.body, "class=\"verdict ", "data-verdict"), "reading");
+    assert!(r.body.contains("class=\"verdict reading\""));
     // The answer key's colour is right.
     let right = post(&server, "/exercise/4.2", &[("answer", "0 0 0")], &[]);
     assert_eq!(

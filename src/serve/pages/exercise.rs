@@ -528,14 +528,15 @@ fn steps_verdict(ex: &Exercise, given: &[GivenStep], lang: Lang) -> (StatusCode,
 }
 
 /// The worked solution: the parts of the explanation as `phong solve --format html` writes
-/// them (its diagrams inline SVG), under this page's heading.
+/// them (its diagrams inline SVG), byte for byte. Their own `<h2>`s ("Solution (the problem
+/// as written)", a reading's) are the page's second level, beside the verdict's, so the
+/// section is named by a label, not by a heading above them.
 pub(crate) fn solution(
     explanation: &Result<crate::report::explain::Explanation, crate::problem::ProblemError>,
     lang: Lang,
 ) -> String {
     let mut out = format!(
-        "<section class=\"solution\" id=\"solution\" aria-labelledby=\"solution-h\">\n\
-         <h2 id=\"solution-h\">{}</h2>\n",
+        "<section class=\"solution\" id=\"solution\" aria-label=\"{}\">\n",
         Text::SolutionHeading.get(lang)
     );
     match explanation {
@@ -545,7 +546,12 @@ pub(crate) fn solution(
             out.push_str(&html::write_parts(x, 0));
         }
         Err(e) => {
-            let _ = writeln!(out, "<p>{}</p>", esc(&error_in(&e.to_string(), lang)));
+            let _ = writeln!(
+                out,
+                "<h2>{}</h2>\n<p>{}</p>",
+                Text::SolutionHeading.get(lang),
+                esc(&error_in(&e.to_string(), lang))
+            );
         }
     }
     out.push_str("</section>\n");
