@@ -11,6 +11,9 @@
 //! `serde_json` (a client crate would bring a second HTTP stack into the tests for six calls).
 //! `.ci/run` installs chromium and chromium-driver; under `CI=true` a missing one fails.
 
+// `phong serve` exists only with the `serve` feature (on by default).
+#![cfg(feature = "serve")]
+
 mod support;
 // Shared with the other tests of phong serve; not every test uses every helper.
 #[allow(dead_code)]

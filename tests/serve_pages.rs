@@ -13,6 +13,9 @@
 //! (−2, −3, −3)/√22, so cos φ = −R·V = −0.76585 < 0: no specular. The answer
 //! "0.245 0.28 0.21" is the normal-reversed slip.
 
+// `phong serve` exists only with the `serve` feature (on by default).
+#![cfg(feature = "serve")]
+
 // Shared with the other tests of phong serve; not every test uses every helper.
 #[allow(dead_code)]
 #[path = "support/server.rs"]
