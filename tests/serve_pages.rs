@@ -394,6 +394,16 @@ fn the_4_2_answer_names_the_normal_slip_as_phong_check_does() {
     assert_eq!(cli["verdict"], "reading");
     assert_eq!(attr(&r.body, "class=\"verdict ", "data-verdict"), "reading");
     assert!(r.body.contains("class=\"verdict reading\""));
+    // In 8 bits: round(255·(0.245, 0.28, 0.21)) = (62, 71, 54), the same slip.
+    let r = post(
+        &server,
+        "/exercise/4.2",
+        &[("answer", "62 71 54"), ("scale", "255")],
+        &[],
+    );
+    assert_eq!(attr(&r.body, "class=\"verdict ", "data-verdict"), "wrong");
+    assert!(attr(&r.body, "class=\"verdict ", "data-slips").contains("normal_reversed"));
+    assert!(r.body.contains("value=\"255\" id=\"scale-255\" checked"));
     // The answer key's colour is right.
     let right = post(&server, "/exercise/4.2", &[("answer", "0 0 0")], &[]);
     assert_eq!(

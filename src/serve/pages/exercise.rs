@@ -36,6 +36,8 @@ struct Input {
     steps: Vec<(String, String)>,
     /// The worked solution asked for.
     solution: bool,
+    /// The answer is in 8 bits (0–255), not on [0, 1].
+    bits8: bool,
 }
 
 /// A step box: the label a student writes (`cos_theta`, or `cos_theta[1]` with several lights)
@@ -86,6 +88,7 @@ pub(crate) async fn post(
     for (k, v) in fields {
         match k.as_str() {
             "answer" => input.answer = v,
+            "scale" => input.bits8 = v == "255",
             "kind" => input.no_hit = v == "none",
             "solution" => input.solution = v == "1",
             _ => {
@@ -281,11 +284,25 @@ fn form(ex: &Exercise, lang: Lang, input: &Input) -> String {
         f,
         "<div class=\"field\">\n<label for=\"answer\">{}</label>\n\
          <input type=\"text\" id=\"answer\" name=\"answer\" value=\"{}\" autocomplete=\"off\" \
-         spellcheck=\"false\" inputmode=\"decimal\" aria-describedby=\"answer-help\">\n\
+         spellcheck=\"false\" aria-describedby=\"answer-help\">\n\
          <p class=\"help\" id=\"answer-help\">{}</p>\n</div>",
         t(Text::ColourLabel),
         esc(&input.answer),
         t(Text::ColourHelp)
+    );
+    let on = |b: bool| if b { " checked" } else { "" };
+    let _ = writeln!(
+        f,
+        "<fieldset class=\"choice\">\n<legend>{}</legend>\n\
+         <input type=\"radio\" name=\"scale\" value=\"1\" id=\"scale-1\"{}> \
+         <label for=\"scale-1\">{}</label>\n\
+         <input type=\"radio\" name=\"scale\" value=\"255\" id=\"scale-255\"{}> \
+         <label for=\"scale-255\">{}</label>\n</fieldset>",
+        t(Text::Scale),
+        on(!input.bits8),
+        t(Text::ScaleUnit),
+        on(input.bits8),
+        t(Text::Scale255)
     );
     let boxes = step_boxes(ex);
     if !boxes.is_empty() {
@@ -372,7 +389,11 @@ fn verdict(ex: &Exercise, lang: Lang, input: &Input) -> (StatusCode, String) {
             ex.source(),
             &CheckOptions {
                 answer: Some(a),
-                scale: Scale::Unit,
+                scale: if input.bits8 {
+                    Scale::Bits8
+                } else {
+                    Scale::Unit
+                },
                 tolerance: None,
                 strict: false,
             },

@@ -154,7 +154,10 @@ texts! {
     AColour => "A colour", "Uma cor";
     NoHit => "The ray hits nothing", "O raio não atinge nada";
     ColourLabel => "Colour I = (R, G, B)", "Cor I = (R, G, B)";
-    ColourHelp => "Three numbers from 0 to 1, such as 0.245 0.28 0.21 (a decimal comma is fine: 0,245 0,28 0,21), or #RRGGBB.", "Três números de 0 a 1, como 0,245 0,28 0,21 (vírgula ou ponto decimal), ou #RRGGBB.";
+    ColourHelp => "Three numbers, such as 0.245 0.28 0.21 (a decimal comma is fine: 0,245 0,28 0,21), or #RRGGBB.", "Três números, como 0,245 0,28 0,21 (vírgula ou ponto decimal), ou #RRGGBB.";
+    Scale => "Scale of the colour", "Escala da cor";
+    ScaleUnit => "0 to 1", "de 0 a 1";
+    Scale255 => "0 to 255 (8 bits)", "de 0 a 255 (8 bits)";
     StepsHeading => "Intermediate steps (optional)", "Passos intermediários (opcional)";
     StepsHelp => "Fill in only the quantities you computed; empty boxes are ignored. A vector is three numbers.", "Preencha só as grandezas que calculou; as caixas vazias são ignoradas. Um vetor são três números.";
     ShowSolution => "Show the worked solution", "Mostrar a solução resolvida";
