@@ -653,6 +653,43 @@ fn ones_own_problem_is_solved_and_its_file_shown_and_downloaded() {
 }
 
 #[test]
+fn ones_own_spot_light_is_the_spot_exercise() {
+    // spot-inside.json as a form: a white spot at (0, 0, 4) along (0, 0, −1), γ = 30°, e = 2,
+    // no falloff; P(1, 0, 0), N = (0, 0, 1), seen from (0, 2, 4). By hand: L = (1, 0, −4)/√17,
+    // cos ψ = 4/√17 = 0.97014 (ψ = 14.04° < 30°), spot factor 0.94118, cos θ = 0.97014, so
+    // the diffuse term is O_d·0.91309 = (0.63916, 0.73047, 0.54785).
+    let server = Server::start(&[]);
+    let r = post(
+        &server,
+        "/own",
+        &[
+            ("kind", "point"),
+            ("p_position", "1 0 0"),
+            ("p_normal", "0 0 1"),
+            ("viewer", "0 2 4"),
+            ("l1_kind", "spot"),
+            ("l1_position", "0 0 4"),
+            ("l1_axis", "0 0 -1"),
+            ("l1_angle", "30"),
+            ("l1_exponent", "2"),
+            ("l1_color", "1 1 1"),
+            ("l1_falloff", "0"),
+            ("m_ambient", "0.5 0.4 0.6"),
+            ("m_diffuse", "0.7 0.8 0.6"),
+            ("m_specular", "0.2 0.3 0.4"),
+            ("m_shininess", "1"),
+        ],
+        &[],
+    );
+    assert_eq!(r.status, 200, "{}", r.body);
+    assert!(r.body.contains("&quot;type&quot;: &quot;spot&quot;"));
+    assert!(r.body.contains("(0.639"), "no diffuse (0.639, 0.73, 0.548)");
+    assert!(r
+        .body
+        .contains("value=\"spot\" id=\"l1_kind-spot\" checked"));
+}
+
+#[test]
 fn bad_numbers_in_ones_own_problem_are_refused_naming_the_field() {
     let server = Server::start(&[]);
     for (field, value, named) in [

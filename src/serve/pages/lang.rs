@@ -196,7 +196,11 @@ texts! {
     LightKind => "Kind", "Tipo";
     PointLight => "point", "pontual";
     Directional => "directional", "direcional";
-    LightPosition => "Position (a point light)", "Posição (luz pontual)";
+    SpotLight => "spot", "spot";
+    LightPosition => "Position (a point or spot light)", "Posição (luz pontual ou spot)";
+    SpotAxis => "Axis of the spot (the direction it points)", "Eixo do spot (a direção para onde aponta)";
+    SpotAngle => "Half-angle of the spot's cone γ, in degrees", "Ângulo γ do cone do spot, em graus";
+    SpotExponent => "Spot exponent e", "Expoente e do spot";
     LightDirection => "Direction of travel (a directional light)", "Direção de propagação (luz direcional)";
     LightColour => "Colour C_l", "Cor C_l";
     Falloff => "Falloff exponent f (0 none, 1 linear, 2 quadratic)", "Expoente de decaimento f (0 nenhum, 1 linear, 2 quadrático)";

@@ -1,6 +1,6 @@
 //! `GET /own` and `POST /own`: one's own problem written as a form (a point with its normal, or
-//! a ray and a plane or a sphere; a viewer; an ambient light and up to two point or directional
-//! lights; a material), turned into a problem file (the format of `phong solve`), solved and
+//! a ray and a plane or a sphere; a viewer; an ambient light and up to two point, directional
+//! or spot lights; a material), turned into a problem file (the format of `phong solve`), solved and
 //! explained as `phong solve --format html` explains it; the file is shown, and
 //! `POST /own/problem.json` (the form's second button) downloads it.
 //!
@@ -41,10 +41,16 @@ const FIELDS: &[(&str, Text, &str)] = &[
     ("l1_direction", Text::LightDirection, ""),
     ("l1_color", Text::LightColour, "1 1 1"),
     ("l1_falloff", Text::Falloff, "1"),
+    ("l1_axis", Text::SpotAxis, ""),
+    ("l1_angle", Text::SpotAngle, ""),
+    ("l1_exponent", Text::SpotExponent, ""),
     ("l2_position", Text::LightPosition, ""),
     ("l2_direction", Text::LightDirection, ""),
     ("l2_color", Text::LightColour, ""),
     ("l2_falloff", Text::Falloff, "0"),
+    ("l2_axis", Text::SpotAxis, ""),
+    ("l2_angle", Text::SpotAngle, ""),
+    ("l2_exponent", Text::SpotExponent, ""),
     ("m_ambient", Text::MatAmbient, "0.5 0.4 0.6"),
     ("m_diffuse", Text::MatDiffuse, "0.7 0.8 0.6"),
     ("m_specular", Text::MatSpecular, "0.2 0.3 0.4"),
@@ -55,8 +61,8 @@ const FIELDS: &[(&str, Text, &str)] = &[
 const CHOICES: &[(&str, &[&str])] = &[
     ("kind", &["point", "ray"]),
     ("s_kind", &["plane", "sphere"]),
-    ("l1_kind", &["point", "directional"]),
-    ("l2_kind", &["point", "directional"]),
+    ("l1_kind", &["point", "directional", "spot"]),
+    ("l2_kind", &["point", "directional", "spot"]),
 ];
 
 /// What the form holds: every field and choice, by name.
@@ -159,8 +165,14 @@ fn problem_file(input: &Input, lang: Lang) -> String {
             put(&mut light, "direction", triple(v("direction")));
             put(&mut light, "color", triple(v("color")));
         } else {
-            light.insert("type".into(), json!("point"));
+            let spot = v("kind") == "spot";
+            light.insert("type".into(), json!(if spot { "spot" } else { "point" }));
             put(&mut light, "position", triple(v("position")));
+            if spot {
+                put(&mut light, "axis", triple(v("axis")));
+                put(&mut light, "angle", scalar(v("angle")));
+                put(&mut light, "exponent", scalar(v("exponent")));
+            }
             put(&mut light, "color", triple(v("color")));
             put(&mut light, "falloff", scalar(v("falloff")));
         }
@@ -377,6 +389,7 @@ fn form(input: &Input, lang: Lang) -> String {
             &[
                 ("point", Text::PointLight),
                 ("directional", Text::Directional),
+                ("spot", Text::SpotLight),
             ],
             lang,
         ));
@@ -389,6 +402,15 @@ fn form(input: &Input, lang: Lang) -> String {
             lang,
             " class=\"short\"",
         ));
+        f.push_str(&text_box(input, &format!("{l}_axis"), lang, ""));
+        for n in ["angle", "exponent"] {
+            f.push_str(&text_box(
+                input,
+                &format!("{l}_{n}"),
+                lang,
+                " class=\"short\"",
+            ));
+        }
         f.push_str("</fieldset>\n");
     }
     f.push_str("</fieldset>\n");
