@@ -136,13 +136,13 @@ fn put(obj: &mut Map<String, Value>, key: &str, value: Option<Value>) {
     }
 }
 
-/// The problem file the form describes (deterministic: the same form gives the same bytes).
-fn problem_file(input: &Input, lang: Lang) -> String {
+/// The problem file the form describes, titled in both languages (deterministic: the same
+/// form gives the same bytes).
+fn problem_file(input: &Input) -> String {
     let g = |n: &str| input.get(n);
     let mut doc = Map::new();
     doc.insert("title".into(), json!(Text::OwnTitle.get(Lang::En)));
     doc.insert("title_pt".into(), json!(Text::OwnTitle.get(Lang::Pt)));
-    let _ = lang;
     let mut material = Map::new();
     put(&mut material, "ambient", triple(g("m_ambient")));
     put(&mut material, "diffuse", triple(g("m_diffuse")));
@@ -231,7 +231,7 @@ pub(crate) async fn post(
     let lang = lang::of(&uri, &headers);
     let t = |x: Text| x.get(lang);
     let input = Input::from(fields);
-    let text = problem_file(&input, lang);
+    let text = problem_file(&input);
     let name = std::path::Path::new("problem.json");
     let explained = crate::report::file::explain_source(
         Source::Text { name, text: &text },
@@ -280,12 +280,7 @@ pub(crate) async fn post(
 }
 
 /// `POST /own/problem.json`: the file the form describes, as a download.
-pub(crate) async fn download(
-    uri: Uri,
-    headers: HeaderMap,
-    Form(fields): Form<Vec<(String, String)>>,
-) -> Response {
-    let lang = lang::of(&uri, &headers);
+pub(crate) async fn download(Form(fields): Form<Vec<(String, String)>>) -> Response {
     (
         [
             (header::CONTENT_TYPE, "application/json"),
@@ -294,7 +289,7 @@ pub(crate) async fn download(
                 "attachment; filename=\"problem.json\"",
             ),
         ],
-        problem_file(&Input::from(fields), lang),
+        problem_file(&Input::from(fields)),
     )
         .into_response()
 }
