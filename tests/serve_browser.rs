@@ -378,7 +378,7 @@ fn a_browser_fills_the_4_2_form_and_reads_the_slip_and_a_step() {
     // A step: the box is in the closed "steps" section, opened by a click on its summary.
     s.type_into("#answer", "");
     s.click("details.steps summary");
-    s.type_into("input[name=\"step:cos_theta\"]", "0,98995");
+    s.type_into("form.answer input[name=\"step:cos_theta\"]", "0,98995");
     s.click("form.answer button[type=submit]");
     s.wait_for("#verdict table.judged");
     let steps = s.text("#verdict table.judged");
@@ -399,11 +399,23 @@ fn a_browser_fills_the_4_2_form_and_reads_the_slip_and_a_step() {
     assert!(steps.contains(said), "the steps lack {said:?}:\n{steps}");
 
     // The keyboard alone: Enter in the answer box submits the form (a decimal comma too).
-    s.type_into("input[name=\"step:cos_theta\"]", "");
+    s.type_into("form.answer input[name=\"step:cos_theta\"]", "");
     s.type_into("#answer", "0,245 0,28 0,21\u{E007}");
     s.wait_for("#verdict pre.report");
     assert!(
         s.text("#verdict").contains(slip),
         "Enter did not check the answer"
     );
+
+    // The switch to English keeps the answer: the verdict again, in phong check's English.
+    s.click("nav.lang button");
+    s.wait_for("html[lang=\"en\"] #verdict pre.report");
+    let cli = check(&["exercises/4.2.json", "--answer", "0.245 0.28 0.21"]);
+    let slip = cli
+        .lines()
+        .find(|l| l.trim_start().starts_with("- "))
+        .expect("phong check names a slip");
+    let slip = slip.trim_start().trim_start_matches("- ");
+    let slip = &slip[..slip.find(':').unwrap()];
+    assert!(s.text("#verdict").contains(slip), "no {slip:?} in English");
 }

@@ -376,6 +376,17 @@ fn the_4_2_answer_names_the_normal_slip_as_phong_check_does() {
         attr(&comma.body, "class=\"verdict ", "data-slips"),
         codes.join(" ")
     );
+    // The switch to English sends the same answer again.
+    assert!(b.contains("<form method=\"post\" action=\"/exercise/4.2?lang=en\""));
+    assert!(b.contains(&format!(
+        "<input type=\"hidden\" name=\"answer\" value=\"{answer}\">"
+    )));
+    let en = post(&server, "/exercise/4.2?lang=en", &[("answer", answer)], &[]);
+    assert!(en.body.contains("<html lang=\"en\">"));
+    assert_eq!(
+        attr(&en.body, "class=\"verdict ", "data-slips"),
+        codes.join(" ")
+    );
     // The same request gives the same bytes.
     let again = post(&server, "/exercise/4.2?lang=pt", &[("answer", answer)], &[]);
     assert_eq!(again.body, r.body);

@@ -14,7 +14,7 @@ use axum::response::Response;
 use axum::Form;
 
 use super::lang::{self, Text};
-use super::layout::{href, page};
+use super::layout::{href, page, posted};
 use super::list::{exercise_path, title};
 use crate::check::steps::{self, GivenStep, Name, StepVerdict, NAMES};
 use crate::check::{self, messages as said, CheckOptions, Scale, VerdictKind};
@@ -85,6 +85,7 @@ pub(crate) async fn post(
         return not_found(lang);
     };
     let mut input = Input::default();
+    let kept = fields.clone();
     for (k, v) in fields {
         match k.as_str() {
             "answer" => input.answer = v,
@@ -99,16 +100,17 @@ pub(crate) async fn post(
         }
     }
     let (status, main) = render(ex, lang, &input, true);
-    page(
+    posted(
         status,
         lang,
         &title(&ex.file, &ex.id, lang),
-        &path_of(ex, &input),
+        &exercise_path(&ex.id),
+        &kept,
         &main,
     )
 }
 
-/// This page's path for the language switch (a GET: the answer is not carried over).
+/// This page's path for the language switch of a GET.
 fn path_of(ex: &Exercise, input: &Input) -> String {
     let mut p = exercise_path(&ex.id);
     if input.solution {

@@ -2,6 +2,8 @@
 //! inline style), a skip link, the header with the site's name, its navigation and the language
 //! switch, and the page's `<main>`.
 
+use std::fmt::Write;
+
 use axum::http::{header, StatusCode};
 use axum::response::{IntoResponse, Response};
 
@@ -27,8 +29,52 @@ pub(crate) fn page(
     path: &str,
     main: &str,
 ) -> Response {
-    let t = |x: Text| x.get(lang);
     let other = lang::other(lang);
+    let switch = format!(
+        "<a href=\"{}\" hreflang=\"{tag}\" lang=\"{tag}\">{}</a>",
+        esc(&href(path, other)),
+        Text::SwitchTo.get(lang),
+        tag = language_tag(other),
+    );
+    shell(status, lang, title, &switch, main)
+}
+
+/// A page that answers a form: its language switch sends the same form again to `path` in the
+/// other language (a button, styled as the link it replaces), so that the answer and its
+/// verdict are kept across the switch.
+pub(crate) fn posted(
+    status: StatusCode,
+    lang: Lang,
+    title: &str,
+    path: &str,
+    fields: &[(String, String)],
+    main: &str,
+) -> Response {
+    let other = lang::other(lang);
+    let mut switch = format!(
+        "<form method=\"post\" action=\"{}\" enctype=\"application/x-www-form-urlencoded\">\n",
+        esc(&href(path, other))
+    );
+    for (k, v) in fields {
+        let _ = writeln!(
+            switch,
+            "<input type=\"hidden\" name=\"{}\" value=\"{}\">",
+            esc(k),
+            esc(v)
+        );
+    }
+    let _ = write!(
+        switch,
+        "<button type=\"submit\" class=\"link\" lang=\"{}\">{}</button>\n</form>",
+        language_tag(other),
+        Text::SwitchTo.get(lang)
+    );
+    shell(status, lang, title, &switch, main)
+}
+
+/// The shell around `main`, with `switch` (HTML) as the language switch.
+fn shell(status: StatusCode, lang: Lang, title: &str, switch: &str, main: &str) -> Response {
+    let t = |x: Text| x.get(lang);
     let body = format!(
         "<!DOCTYPE html>\n<html lang=\"{tag}\">\n<head>\n<meta charset=\"utf-8\">\n\
          <meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n\
@@ -37,8 +83,7 @@ pub(crate) fn page(
          <header class=\"site\">\n<p class=\"site-name\"><a href=\"{home}\">{site}</a></p>\n\
          <nav aria-label=\"{site}\">\n<ul>\n<li><a href=\"{home}\">{home_t}</a></li>\n\
          <li><a href=\"{own}\">{own_t}</a></li>\n</ul>\n</nav>\n\
-         <nav aria-label=\"{lang_t}\" class=\"lang\">\n<a href=\"{switch}\" hreflang=\"{other_tag}\" \
-         lang=\"{other_tag}\">{switch_t}</a>\n</nav>\n</header>\n\
+         <nav aria-label=\"{lang_t}\" class=\"lang\">\n{switch}\n</nav>\n</header>\n\
          <main id=\"main\">\n{main}</main>\n</body>\n</html>\n",
         tag = language_tag(lang),
         title = esc(title),
@@ -49,9 +94,6 @@ pub(crate) fn page(
         own = href("/own", lang),
         own_t = t(Text::Own),
         lang_t = t(Text::LanguageNav),
-        switch = esc(&href(path, other)),
-        other_tag = language_tag(other),
-        switch_t = t(Text::SwitchTo),
     );
     (
         status,

@@ -17,7 +17,7 @@ use serde_json::{json, Map, Value};
 
 use super::exercise::solution;
 use super::lang::{self, Text};
-use super::layout::{href, page};
+use super::layout::{href, page, posted};
 use crate::check::answer::{number, three};
 use crate::core::Precision;
 use crate::problem::Source;
@@ -230,6 +230,7 @@ pub(crate) async fn post(
 ) -> Response {
     let lang = lang::of(&uri, &headers);
     let t = |x: Text| x.get(lang);
+    let kept = fields.clone();
     let input = Input::from(fields);
     let text = problem_file(&input);
     let name = std::path::Path::new("problem.json");
@@ -276,7 +277,7 @@ pub(crate) async fn post(
         t(Text::JsonHelp),
         esc(&text)
     );
-    page(status, lang, t(Text::Own), "/own", &main)
+    posted(status, lang, t(Text::Own), "/own", &kept, &main)
 }
 
 /// `POST /own/problem.json`: the file the form describes, as a download.
