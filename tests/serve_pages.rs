@@ -219,7 +219,11 @@ fn every_page_has_strict_headers_and_the_stylesheet_is_a_cached_file() {
             .body
             .contains("<link rel=\"stylesheet\" href=\"/static/phong.css"));
     }
-    let css = get(&server, "/static/phong.css?v=1", &[]);
+    let page = get(&server, "/", &[]).body;
+    let at = page.find("href=\"/static/phong.css?v=").unwrap() + 6;
+    let url = &page[at..at + page[at..].find('"').unwrap()];
+    assert_eq!(url.len(), "/static/phong.css?v=".len() + 16, "{url}");
+    let css = get(&server, url, &[]);
     assert_eq!(css.status, 200);
     assert_eq!(css.header("content-type"), Some("text/css; charset=utf-8"));
     assert!(css

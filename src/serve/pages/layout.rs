@@ -12,8 +12,24 @@ use crate::report::explain::language_tag;
 use crate::report::html::esc;
 use crate::report::lang::Lang;
 
-/// The stylesheet's URL (its name changes with its content, so it may be cached for a year).
-pub(crate) const CSS_URL: &str = "/static/phong.css?v=1";
+/// The stylesheet's version in its URL (`/static/phong.css?v=…`): a hash of its text, computed
+/// at compile time, so that the URL changes with the content and the file may be cached for a
+/// year.
+pub(crate) const CSS_VERSION: u64 = fnv1a(
+    PAGES_CSS.as_bytes(),
+    fnv1a(crate::report::html::STYLE.as_bytes(), 0xcbf2_9ce4_8422_2325),
+);
+
+/// FNV-1a over `bytes`, from `hash`.
+const fn fnv1a(bytes: &[u8], mut hash: u64) -> u64 {
+    let mut i = 0;
+    while i < bytes.len() {
+        hash ^= bytes[i] as u64;
+        hash = hash.wrapping_mul(0x0100_0000_01b3);
+        i += 1;
+    }
+    hash
+}
 
 /// `path` with the page's language kept (`/exercise/4.2?lang=pt`); `path` may hold a query.
 pub(crate) fn href(path: &str, lang: Lang) -> String {
@@ -78,7 +94,7 @@ fn shell(status: StatusCode, lang: Lang, title: &str, switch: &str, main: &str) 
     let body = format!(
         "<!DOCTYPE html>\n<html lang=\"{tag}\">\n<head>\n<meta charset=\"utf-8\">\n\
          <meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n\
-         <title>{title} — {site}</title>\n<link rel=\"stylesheet\" href=\"{CSS_URL}\">\n</head>\n\
+         <title>{title} — {site}</title>\n<link rel=\"stylesheet\" href=\"/static/phong.css?v={CSS_VERSION:016x}\">\n</head>\n\
          <body>\n<a class=\"skip\" href=\"#main\">{skip}</a>\n\
          <header class=\"site\">\n<p class=\"site-name\"><a href=\"{home}\">{site}</a></p>\n\
          <nav aria-label=\"{site}\">\n<ul>\n<li><a href=\"{home}\">{home_t}</a></li>\n\
@@ -111,7 +127,7 @@ fn shell(status: StatusCode, lang: Lang, title: &str, switch: &str, main: &str) 
 /// worked solution looks as `phong solve --format html` writes it), then the pages'.
 pub(crate) const PAGES_CSS: &str = include_str!("static/phong.css");
 
-/// `GET /static/phong.css`, cached for a year (its URL changes with it: [`CSS_URL`]).
+/// `GET /static/phong.css`, cached for a year (its URL changes with it: [`CSS_VERSION`]).
 pub(crate) async fn css() -> Response {
     (
         [
