@@ -46,11 +46,24 @@ pub(crate) fn esc(s: &str) -> String {
     out
 }
 
+/// A colour's swatch: a square SVG filled by a presentation attribute (`fill`), not a `style`
+/// attribute, so that a page served under a Content-Security-Policy without `'unsafe-inline'`
+/// styles (`phong serve`) shows it too; named for screen readers by `title`, hidden without one.
+/// Its size in pixels is also given as attributes, for a page without the stylesheet (a Moodle
+/// question's text), where it would otherwise be an SVG's default 300 × 150.
 fn swatch(rgb: [u8; 3], class: &str, title: &str) -> String {
     let [r, g, b] = rgb;
+    let size = if class == "big" { 64 } else { 14 };
+    let named = if title.is_empty() {
+        " aria-hidden=\"true\">".to_owned()
+    } else {
+        let t = esc(title);
+        format!(" role=\"img\" aria-label=\"{t}\"><title>{t}</title>")
+    };
     format!(
-        "<span class=\"{class}\" style=\"background:rgb({r},{g},{b})\" title=\"{}\"></span>",
-        esc(title)
+        "<svg class=\"{class}\" width=\"{size}\" height=\"{size}\" viewBox=\"0 0 1 1\" \
+         preserveAspectRatio=\"none\"{named}\
+         <rect width=\"1\" height=\"1\" fill=\"rgb({r},{g},{b})\"/></svg>"
     )
 }
 
