@@ -433,13 +433,49 @@ fn envelope<'a, T: Deserialize<'a>>(
             format!("the request is not the API's JSON: {message}. Fix: send {shape}"),
         )
     };
+    if !text.trim_start().starts_with('{') {
+        return Err(error(
+            StatusCode::BAD_REQUEST,
+            "syntax",
+            None,
+            format!("the request body must be one JSON object, such as {shape}"),
+        ));
+    }
     let mut de = serde_json::Deserializer::from_str(text);
     let value: T = serde_path_to_error::deserialize(&mut de).map_err(|e| {
         let field = e.path().to_string();
-        refused((field != ".").then_some(field), e.inner())
+        if field == "problem" || field.starts_with("problem.") || field.starts_with("problem[") {
+            if let Some(refusal) = broken_problem(text) {
+                return refusal;
+            }
+        }
+        refused((field != "." && field != "?").then_some(field), e.inner())
     })?;
     de.end().map_err(|e| refused(None, &e))?;
     Ok(value)
+}
+
+/// A request whose `problem` is not JSON (`NaN`, a missing comma): the problem's text from its
+/// first character on, read as the CLI reads a file, for the CLI's message and fix (`JSON has
+/// no NaN`), its line and column counted from the problem's first line (a file's lines, when
+/// the file was sent as it is). `None` when the problem reads well (the envelope is what is
+/// broken, after it).
+fn broken_problem(text: &str) -> Option<Response> {
+    let key = text.find("\"problem\"")?;
+    let rest = text[key + "\"problem\"".len()..].trim_start();
+    let rest = rest.strip_prefix(':')?.trim_start();
+    let name = Path::new(PROBLEM_NAME);
+    match crate::problem::parse_str(name, rest) {
+        Err(e @ ProblemError::Syntax { .. }) if !is_trailing(&e) => {
+            Some(problem_error(&e, name, Lang::En))
+        }
+        _ => None,
+    }
+}
+
+/// Whether a syntax error is only the rest of the envelope after the problem.
+fn is_trailing(e: &ProblemError) -> bool {
+    matches!(e, ProblemError::Syntax { message, field: None, .. } if message.starts_with("trailing characters"))
 }
 
 /// The `lang` of a request: English unless `"pt"`.
