@@ -74,7 +74,11 @@ impl Client {
         head.push_str("\r\n");
         let mut bytes = head.into_bytes();
         bytes.extend_from_slice(body);
-        self.reader.get_mut().write_all(&bytes)?;
+        if let Err(e) = self.reader.get_mut().write_all(&bytes) {
+            // The server may answer before the whole body is sent (413 for a body declared
+            // too large) and close: its answer, when it is still there to read.
+            return read_response(&mut self.reader).map_err(|_| e);
+        }
         read_response(&mut self.reader)
     }
 
