@@ -428,3 +428,50 @@ fn log_answers_appends_one_line_per_check_from_concurrent_requests() {
         .all(|l| l["problem"].as_str().unwrap().len() == 16 && l["verdict"] == "right"));
     assert!(!text.contains("materials"));
 }
+
+#[cfg(unix)]
+#[test]
+fn sigterm_stops_accepting_lets_the_request_in_flight_finish_and_exits_0() {
+    use std::io::Write;
+    let mut server = Server::start(&["--timeout", "3"]);
+    let addr = server.addr;
+    let body = "{\"exercise\": \"4.2\", \"answer\": \"0 0 0\"}";
+    // A request whose body is still arriving when the signal comes.
+    let mut busy = http::Client::connect(addr).unwrap();
+    busy.stream()
+        .write_all(
+            format!(
+                "POST /api/check HTTP/1.1\r\nHost: x\r\nContent-Type: application/json\r\n\
+                 Content-Length: {}\r\n\r\n{}",
+                body.len(),
+                &body[..10]
+            )
+            .as_bytes(),
+        )
+        .unwrap();
+    // An idle keep-alive connection.
+    let mut idle = http::Client::connect(addr).unwrap();
+    assert_eq!(idle.post_json("/api/check", body).unwrap().status, 200);
+    let killed = std::process::Command::new("kill")
+        .args(["-TERM", &server.pid().to_string()])
+        .status()
+        .unwrap();
+    assert!(killed.success());
+    std::thread::sleep(std::time::Duration::from_millis(300));
+    // Still running: a request is in flight. The idle connection is closed, and no new one is
+    // accepted.
+    assert!(server.alive());
+    assert!(idle.post_json("/api/check", body).is_err());
+    assert!(http::Client::connect(addr)
+        .and_then(|mut c| c.post_json("/api/check", body))
+        .is_err());
+    // The request in flight is answered, then the server exits 0.
+    busy.stream().write_all(&body.as_bytes()[10..]).unwrap();
+    let r = busy.read().unwrap();
+    assert_eq!(r.status, 200);
+    assert_eq!(r.json()["verdict"], "right");
+    let status = server
+        .exited_within(std::time::Duration::from_secs(2))
+        .expect("the server exits once the request is answered");
+    assert!(status.success(), "{status:?}");
+}
