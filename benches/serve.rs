@@ -1,7 +1,8 @@
 //! `phong serve` under load, side by side in one run: the check of exercise 4.2 called in
-//! process (the work of one request), then `POST /api/check` on 4.2 over HTTP from 64
-//! keep-alive clients on loopback (the speed goal: ≥ 5,000 requests/s with p99 ≤ 20 ms on two
-//! cores), then the mixed requests of the load test.
+//! process (the work of one request: solved for the request, or prepared once), then `POST
+//! /api/check` on 4.2 over HTTP from 64 keep-alive clients on loopback (the speed goal: ≥ 5,000
+//! requests/s with p99 ≤ 20 ms on two cores), the problem sent with each request and named as
+//! the server's exercise, then the mixed requests of the load test.
 //!
 //! `cargo bench --bench serve` (release). `PHONG_BENCH_REQUESTS=N` sets the HTTP requests per
 //! run (default 50,000); `PHONG_BENCH_CLIENTS=N` the clients (default 64).
@@ -49,7 +50,18 @@ fn main() {
     }
     let per = t.elapsed().as_secs_f64() / f64::from(n);
     println!(
-        "in process   check_source(4.2)       {:>8.1} µs/call  ({:.0} calls/s on one core)",
+        "in process   check_source(4.2)         {:>8.1} µs/call  ({:.0} calls/s on one core)",
+        per * 1e6,
+        1.0 / per
+    );
+    let prepared = phong::check::Prepared::of(source);
+    let t = Instant::now();
+    for _ in 0..n {
+        std::hint::black_box(phong::check::check_prepared(&prepared, &options));
+    }
+    let per = t.elapsed().as_secs_f64() / f64::from(n);
+    println!(
+        "in process   check_prepared(4.2)       {:>8.1} µs/call  ({:.0} calls/s on one core)",
         per * 1e6,
         1.0 / per
     );
@@ -58,12 +70,13 @@ fn main() {
     // Warm-up: connections, allocator, caches.
     load::run(server.addr, &load::check_42(&e42), 2_000, clients);
     for (name, mix) in [
-        ("/api/check 4.2", load::check_42(&e42)),
+        ("/api/check 4.2 sent", load::check_42(&e42)),
+        ("/api/check \"4.2\" named", load::check_42_named()),
         ("mixed", load::mixed(&e42)),
     ] {
         let run = load::run(server.addr, &mix, requests, clients);
         assert_eq!(run.answered, run.sent, "{:?}", run.wrong_examples);
         assert_eq!(run.wrong, 0, "{:?}", run.wrong_examples);
-        println!("over HTTP    {name:<24}{}", run.summary(clients));
+        println!("over HTTP    {name:<26}{}", run.summary(clients));
     }
 }

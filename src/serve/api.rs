@@ -200,15 +200,17 @@ async fn check(State(state): State<Shared>, headers: HeaderMap, body: Bytes) -> 
         tolerance: request.tolerance,
         strict: request.strict,
     };
+    // One of the server's exercises was solved once, at start-up; a problem sent is solved now.
+    let check_answer = || match problem {
+        Problem::Exercise(e) => check::check_prepared(&e.prepared, &options),
+        Problem::Sent(_) => check::check_source(source, &options),
+    };
     // As `phong check`: with steps, the answer is checked only when one is given.
     let (answer, steps) = if steps.is_empty() {
-        (Some(check::check_source(source, &options)), None)
+        (Some(check_answer()), None)
     } else {
         let judged = check::steps::check_steps_source(source, &steps, request.strict);
-        let answer = options
-            .answer
-            .is_some()
-            .then(|| check::check_source(source, &options));
+        let answer = options.answer.is_some().then(check_answer);
         (answer, Some(judged))
     };
     let unchecked = answer
