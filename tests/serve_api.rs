@@ -475,3 +475,41 @@ fn sigterm_stops_accepting_lets_the_request_in_flight_finish_and_exits_0() {
         .expect("the server exits once the request is answered");
     assert!(status.success(), "{status:?}");
 }
+
+#[test]
+fn the_request_log_has_one_line_per_request_and_no_answer() {
+    let server = Server::start(&[]);
+    let secret = "0.123456 0.654321 0.111111";
+    let r = http::post_json(
+        server.addr,
+        "/api/check",
+        &format!("{{\"exercise\": \"4.2\", \"answer\": \"{secret}\"}}"),
+    );
+    assert_eq!(r.status, 200);
+    let r = http::once(
+        server.addr,
+        "GET",
+        "/nope?answer=0.5%200.5%200.5",
+        None,
+        b"",
+    );
+    assert_eq!(r.status, 404);
+    // The lines arrive through a pipe: wait for both.
+    let start = std::time::Instant::now();
+    let mut log = server.log();
+    while log.len() < 2 && start.elapsed() < std::time::Duration::from_secs(5) {
+        std::thread::sleep(std::time::Duration::from_millis(20));
+        log = server.log();
+    }
+    assert_eq!(log.len(), 2, "{log:?}");
+    assert!(
+        log[0].starts_with("POST /api/check 200 ") && log[0].ends_with("µs"),
+        "{log:?}"
+    );
+    assert!(log[1].starts_with("GET /nope 404 "), "{log:?}");
+    let all = log.join("\n");
+    assert!(
+        !all.contains("0.123456") && !all.contains("answer"),
+        "{all}"
+    );
+}
