@@ -1787,6 +1787,9 @@ const CASES_ARBITRARY: u32 = 2000;
 const CASES_ALMOST: u32 = 2000;
 const CASES_MUTATED: u32 = 1000;
 const CASES_BINARY: u32 = 128;
+// `phong serve`'s API (a debug server on loopback): each case is sent to /api/check and
+// /api/solve; about 350 cases/s, so `.ci/run`'s 40 rounds take about 35 s.
+const CASES_SERVE: u32 = 300;
 
 fn env_number(name: &str) -> Option<u64> {
     let v = std::env::var(name).ok()?;
@@ -2657,4 +2660,96 @@ fn fuzz_grading_arbitrary_bytes_never_panics_and_keeps_every_line() {
             Ok(())
         })
         .unwrap_or_else(|e| panic!("{e}"));
+}
+
+// ---------------------------------------------------------------------------------------------
+// phong serve's API (issue 19)
+// ---------------------------------------------------------------------------------------------
+
+#[path = "support/http.rs"]
+mod http;
+#[path = "support/server.rs"]
+#[allow(dead_code)]
+mod server;
+
+/// The generators of the file's other fuzz tests, sent to a running `phong serve` as the
+/// `problem` of `POST /api/check` and `POST /api/solve` (raw bytes that are not UTF-8 or not
+/// JSON as the whole body): every answer is a 200 or a 4xx with a JSON `error` and a message of
+/// bounded size, never a 5xx or a dropped connection; a 200 from /api/check is byte for byte
+/// the library's check of the same text ([`check::report::document`]); the server is alive at
+/// the end.
+#[test]
+fn serve_api_answers_every_generated_problem_with_json_and_never_a_5xx() {
+    let mut server = server::Server::start(&[]);
+    let addr = server.addr;
+    let client = std::sync::Mutex::new(http::Client::connect(addr).expect("a connection"));
+    let strategy = prop_oneof![
+        2 => mutated_file(),
+        1 => arbitrary_json(),
+        1 => almost_json(),
+    ];
+    let options = CheckOptions {
+        answer: Some("0.245 0.28 0.21".into()),
+        scale: Scale::Unit,
+        tolerance: None,
+        strict: false,
+    };
+    fuzz("serve", strategy, CASES_SERVE, |input| {
+        let mut c = client.lock().unwrap_or_else(|p| p.into_inner());
+        let text = std::str::from_utf8(&input.bytes).ok();
+        for path in ["/api/check", "/api/solve"] {
+            let body = match text {
+                Some(t) if path == "/api/check" => {
+                    format!("{{\"problem\": {t}, \"answer\": \"0.245 0.28 0.21\"}}").into_bytes()
+                }
+                Some(t) => format!("{{\"problem\": {t}}}").into_bytes(),
+                None => input.bytes.clone(),
+            };
+            let r = match c.send("POST", path, Some("application/json"), &body) {
+                Ok(r) => r,
+                Err(e) => {
+                    *c = http::Client::connect(addr).map_err(|e| e.to_string())?;
+                    // A body over the 64 kB limit: answered 413 and closed before all of it
+                    // was written, its answer lost with the connection's reset.
+                    if body.len() > 64 * 1024 {
+                        continue;
+                    }
+                    return Err(format!("{path}: no response: {e}"));
+                }
+            };
+            if !matches!(r.status, 200 | 400 | 413 | 422) {
+                return Err(format!("{path}: status {}: {}", r.status, r.text()));
+            }
+            let doc: Value = serde_json::from_slice(&r.body)
+                .map_err(|e| format!("{path}: {} is not JSON ({e}): {}", r.status, r.text()))?;
+            if r.status != 200 {
+                let e = if doc["error"].is_object() {
+                    &doc["error"]
+                } else {
+                    &doc["steps_error"]
+                };
+                let m = e["message"].as_str().unwrap_or("");
+                if m.is_empty() || m.len() > body.len() + 2000 {
+                    return Err(format!("{path}: {}: unclear error: {doc}", r.status));
+                }
+            }
+            if r.status == 200 && path == "/api/check" {
+                let t = text.unwrap_or_default();
+                let source = problem::Source::Text {
+                    name: Path::new("problem"),
+                    text: t,
+                };
+                let checked = check::check_source(source, &options);
+                let expected = check::report::document(Some(&checked), None)
+                    .map(|v| format!("{}\n", serde_json::to_string_pretty(&v).unwrap_or_default()));
+                if expected.as_deref() != Some(r.text().as_str()) {
+                    return Err(format!("/api/check differs from the library: {}", r.text()));
+                }
+            }
+        }
+        Ok(())
+    });
+    assert!(server.alive(), "the server is still running");
+    let r = http::post_json(addr, "/api/check", "{\"exercise\": \"4.2\"}");
+    assert_eq!(r.status, 200);
 }

@@ -503,8 +503,61 @@ pub fn check_file(path: &Path, options: &CheckOptions) -> report::Checked {
 
 /// [`check_file`] for a problem from any [`Source`] (text held in memory, for `phong serve`).
 pub fn check_source(problem: Source<'_>, options: &CheckOptions) -> report::Checked {
-    let path = problem.name();
-    let file = path.display().to_string();
+    check_prepared(&Prepared::of(problem), options)
+}
+
+/// One problem read, and everything its answers are judged against solved once ([`Expected`]):
+/// `phong serve` prepares each of its exercises at start-up and checks every answer to it with
+/// [`check_prepared`], which gives what [`check_source`] gives, without solving again.
+#[derive(Clone, Debug)]
+pub struct Prepared {
+    /// The name in messages.
+    file: String,
+    /// The parsed file, its warnings, and what an answer is judged against (or why the problem
+    /// is invalid: reported only after the answer is read); or why the file cannot be read or
+    /// parsed, reported before the answer.
+    loaded: Result<PreparedFile, Failure>,
+}
+
+#[derive(Clone, Debug)]
+struct PreparedFile {
+    file: ProblemFile,
+    warnings: Vec<crate::problem::warnings::Warning>,
+    expected: Result<Expected, Failure>,
+}
+
+impl Prepared {
+    /// Reads, validates and solves the problem of `source` (its readings and slips too).
+    pub fn of(source: Source<'_>) -> Prepared {
+        let path = source.name();
+        let loaded = Loaded::read(source)
+            .map_err(|e| Failure::problem(&e))
+            .map(|loaded| {
+                let warnings = loaded
+                    .problem
+                    .as_ref()
+                    .map_or_else(|_| Vec::new(), |p| p.warnings.clone());
+                let expected = loaded
+                    .problem
+                    .map_err(|e| Failure::problem(&e))
+                    .and_then(|p| Expected::of(&p).map_err(|e| Failure::problem(&e.at(path))));
+                PreparedFile {
+                    file: loaded.file,
+                    warnings,
+                    expected,
+                }
+            });
+        Prepared {
+            file: path.display().to_string(),
+            loaded,
+        }
+    }
+}
+
+/// Checks an answer (given, or the key) against a [`Prepared`] problem: what [`check_source`]
+/// gives for the same source.
+pub fn check_prepared(prepared: &Prepared, options: &CheckOptions) -> report::Checked {
+    let file = &prepared.file;
     let source = if options.answer.is_some() {
         AnswerSource::Argument
     } else {
@@ -517,26 +570,20 @@ pub fn check_source(problem: Source<'_>, options: &CheckOptions) -> report::Chec
         outcome,
         warnings,
     };
-    let loaded = match Loaded::read(problem) {
+    let loaded = match &prepared.loaded {
         Ok(l) => l,
-        Err(e) => {
-            return checked(
-                options.answer.clone(),
-                Err(Failure::problem(&e)),
-                Vec::new(),
-            )
-        }
+        Err(f) => return checked(options.answer.clone(), Err(f.clone()), Vec::new()),
     };
-    let warnings = loaded
-        .problem
-        .as_ref()
-        .map_or_else(|_| Vec::new(), |p| p.warnings.clone());
     let key = loaded.file.answer.as_ref();
     let text = options
         .answer
         .clone()
         .or_else(|| key.map(|k| serde_json::to_string(&key_json(k)).unwrap_or_default()));
-    checked(text, judge_loaded(path, &file, loaded, options), warnings)
+    checked(
+        text,
+        judge_loaded(file, loaded, options),
+        loaded.warnings.clone(),
+    )
 }
 
 /// A problem file loaded as `solve` and `grade` load it ([`crate::problem::load`], which finds
@@ -566,11 +613,10 @@ impl Loaded {
     }
 }
 
-/// The answer (`--answer`, or the file's key) judged against the loaded problem.
+/// The answer (`--answer`, or the file's key) judged against the prepared problem.
 fn judge_loaded(
-    path: &Path,
     file: &str,
-    loaded: Loaded,
+    loaded: &PreparedFile,
     options: &CheckOptions,
 ) -> Result<Judged, Failure> {
     let answer_failure = |field: &str, message| Failure {
@@ -604,13 +650,12 @@ fn judge_loaded(
             })
         }
     };
-    let problem = loaded.problem.map_err(|e| Failure::problem(&e))?;
-    let expected = Expected::of(&problem).map_err(|e| Failure::problem(&e.at(path)))?;
+    let expected = loaded.expected.as_ref().map_err(Clone::clone)?;
     let tolerance = options
         .tolerance
         .or(key.tolerance)
         .unwrap_or_else(|| key.answer.scale.default_tolerance());
-    let verdict = judge(&expected, &key.answer, tolerance, options.strict);
+    let verdict = judge(expected, &key.answer, tolerance, options.strict);
     Ok(Judged {
         answer: key.answer,
         tolerance,

@@ -566,3 +566,33 @@ pub(crate) fn slips_text(file: &str, x: &super::Expected, lang: Lang) -> String 
     }
     out
 }
+
+/// The JSON document `phong check --format json` writes for one problem (and `POST /api/check`
+/// answers): the answer's verdict ([`json`]) with, when steps were given too, the steps judged
+/// under `steps` (and why they could not be, under `steps_error`); with steps and no answer,
+/// the steps' own document ([`super::steps::document`]). `None` when there is neither.
+pub fn document(
+    answer: Option<&Checked>,
+    steps: Option<&super::steps::StepsChecked>,
+) -> Option<serde_json::Value> {
+    match (answer, steps) {
+        (Some(c), steps) => {
+            let mut v = value(&json(c));
+            if let Some(s) = steps {
+                v["steps"] = value(&s.outcome.as_ref().ok().map(super::steps::steps_json));
+                if let Err(f) = &s.outcome {
+                    v["steps_error"] = value(f);
+                }
+            }
+            Some(v)
+        }
+        (None, Some(s)) => Some(value(&super::steps::document(s))),
+        (None, None) => None,
+    }
+}
+
+/// `v` as a JSON value. These types cannot fail to serialise (their maps have string keys, and
+/// serde_json writes a non-finite number as null); `null` would stand in, never a panic.
+fn value<T: Serialize>(v: &T) -> serde_json::Value {
+    serde_json::to_value(v).unwrap_or(serde_json::Value::Null)
+}

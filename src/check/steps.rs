@@ -817,7 +817,7 @@ pub struct StepsChecked {
 impl StepsChecked {
     /// Accepted (every step right, or right in the likely intended reading without `--strict`),
     /// refused (a wrong step, or a reading's under `--strict`), or not checked.
-    pub fn status(&self) -> super::report::Status {
+    pub(crate) fn status(&self) -> super::report::Status {
         use super::report::Status;
         match &self.outcome {
             Ok(j) if j.accepted => Status::Accepted,

@@ -23,10 +23,20 @@ use args::Command;
 
 /// The program: parse the arguments and run.
 pub fn main() -> ExitCode {
-    output::guard_signals();
     let args: Vec<std::ffi::OsString> = std::env::args_os().collect();
     match Cli::try_parse_from(&args) {
-        Ok(cli) => run(&cli).into(),
+        Ok(cli) => {
+            // `phong serve` writes no output file, and stops on SIGINT and SIGTERM itself: it
+            // finishes the requests being answered and exits 0 (serve::run).
+            #[cfg(feature = "serve")]
+            let guarded = !matches!(cli.command, Command::Serve(_));
+            #[cfg(not(feature = "serve"))]
+            let guarded = true;
+            if guarded {
+                output::guard_signals();
+            }
+            run(&cli).into()
+        }
         Err(e) => match error::refused(&e, &args) {
             Some(exit) => exit.into(),
             None => e.exit(),

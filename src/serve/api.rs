@@ -1,11 +1,545 @@
 //! The JSON API: `POST /api/solve` and `POST /api/check`, answering what `phong solve --format
-//! json` and `phong check --format json` print.
+//! json` and `phong check --format json` print, and `GET /api/exercises`, the exercises served.
+//!
+//! A request names its problem either as the JSON of a problem file (`"problem": {…}`, kept as
+//! the text it was sent, so that an error names the line and column of that text) or as one of
+//! the server's exercises (`"exercise": "4.2"`). Statuses:
+//! - 200: solved, or checked (right, a reading, or wrong);
+//! - 400: the request is not the API's JSON (its own fields, not the problem's);
+//! - 404: no such exercise;
+//! - 413: the body is larger than [`Limits::body_bytes`](super::limits::Limits);
+//! - 415: the body is not `application/json`;
+//! - 422: the problem, the answer or the steps are invalid, or the problem is larger than this
+//!   server solves (lights, surfaces): the CLI's own error document (`{"error": {"kind",
+//!   "field", "message"}}`), its message in Portuguese with `"lang": "pt"` where the CLI has one.
 
+// A refusal is the response itself, built once per refused request and returned at once:
+// boxing it would buy nothing.
+#![allow(clippy::result_large_err)]
+
+use std::path::Path;
+
+use axum::body::Bytes;
+use axum::extract::State;
+use axum::http::{header, HeaderMap, StatusCode};
+use axum::response::{IntoResponse, Response};
+use axum::routing::{get, post};
 use axum::Router;
+use serde::Deserialize;
+use serde_json::value::RawValue;
 
+use super::log::{problem_hash, AnswerEntry};
 use super::Shared;
+use crate::check;
+use crate::core::Precision;
+use crate::problem::{ProblemError, Source};
+use crate::report::lang::Lang;
+
+/// The name a problem sent with a request has in messages and in the `file` field.
+pub(crate) const PROBLEM_NAME: &str = "problem";
 
 /// The API's routes.
 pub(crate) fn routes() -> Router<Shared> {
     Router::new()
+        .route("/api/solve", post(solve))
+        .route("/api/check", post(check))
+        .route("/api/exercises", get(exercises))
+}
+
+/// `POST /api/solve`.
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct SolveRequest<'a> {
+    #[serde(borrow)]
+    problem: Option<&'a RawValue>,
+    exercise: Option<String>,
+    lang: Option<String>,
+    precision: Option<String>,
+}
+
+/// `POST /api/check`.
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct CheckRequest<'a> {
+    #[serde(borrow)]
+    problem: Option<&'a RawValue>,
+    exercise: Option<String>,
+    answer: Option<String>,
+    #[serde(borrow)]
+    steps: Option<&'a RawValue>,
+    scale: Option<ScaleField>,
+    tolerance: Option<f64>,
+    #[serde(default)]
+    strict: bool,
+    lang: Option<String>,
+}
+
+/// `"scale": 255` or `"scale": "255"`.
+#[derive(Deserialize)]
+#[serde(untagged)]
+enum ScaleField {
+    Number(u32),
+    Text(String),
+}
+
+/// `GET /api/exercises`: each exercise's id and titles.
+async fn exercises(State(state): State<Shared>) -> Response {
+    let list: Vec<serde_json::Value> = state
+        .catalogue
+        .exercises
+        .iter()
+        .map(|e| {
+            serde_json::json!({
+                "id": e.id,
+                "title": e.file.title,
+                "title_pt": e.file.title_pt,
+            })
+        })
+        .collect();
+    json_response(StatusCode::OK, &list)
+}
+
+/// `POST /api/solve`: what `phong solve --format json` prints for the problem.
+async fn solve(State(state): State<Shared>, headers: HeaderMap, body: Bytes) -> Response {
+    let request: SolveRequest<'_> = match envelope(&headers, &body, SOLVE_SHAPE) {
+        Ok(r) => r,
+        Err(refused) => return refused,
+    };
+    let lang = match lang(request.lang.as_deref()) {
+        Ok(l) => l,
+        Err(refused) => return refused,
+    };
+    let precision = match request.precision.as_deref() {
+        None | Some("f64") => Precision::F64,
+        Some("f32") => Precision::F32,
+        Some(other) => {
+            return error(
+                StatusCode::BAD_REQUEST,
+                "usage",
+                Some("precision"),
+                format!(
+                    "precision: \"{}\" is not a precision: give \"f64\" (the default) or \"f32\"",
+                    check::answer::shorten(other, 40)
+                ),
+            )
+        }
+    };
+    let problem = match Problem::of(&state, request.problem, request.exercise.as_deref()) {
+        Ok(p) => p,
+        Err(refused) => return refused,
+    };
+    let source = problem.source();
+    if let Err(e) = problem.admit(&state) {
+        return problem_error(&e, source.name(), lang);
+    }
+    match crate::report::file::solve_json_warned(source, precision, lang) {
+        Ok((doc, _warnings)) => json_response(StatusCode::OK, &doc),
+        Err(e) => problem_error(&e, source.name(), lang),
+    }
+}
+
+/// `POST /api/check`: what `phong check --format json` prints for the problem and the answer
+/// (and the steps, merged in as `phong check --step` merges them).
+async fn check(State(state): State<Shared>, headers: HeaderMap, body: Bytes) -> Response {
+    let request: CheckRequest<'_> = match envelope(&headers, &body, CHECK_SHAPE) {
+        Ok(r) => r,
+        Err(refused) => return refused,
+    };
+    let lang = match lang(request.lang.as_deref()) {
+        Ok(l) => l,
+        Err(refused) => return refused,
+    };
+    let scale = match &request.scale {
+        None => check::Scale::Unit,
+        Some(ScaleField::Number(1)) => check::Scale::Unit,
+        Some(ScaleField::Number(255)) => check::Scale::Bits8,
+        Some(ScaleField::Text(t)) if t == "1" => check::Scale::Unit,
+        Some(ScaleField::Text(t)) if t == "255" => check::Scale::Bits8,
+        Some(_) => {
+            return error(
+                StatusCode::BAD_REQUEST,
+                "usage",
+                Some("scale"),
+                "scale: give 1 (components on [0, 1], the default) or 255 (8-bit integers)".into(),
+            )
+        }
+    };
+    if let Some(t) = request.tolerance {
+        if let Err(e) = check::answer::check_tolerance(t) {
+            return error(
+                StatusCode::UNPROCESSABLE_ENTITY,
+                "usage",
+                Some("tolerance"),
+                translated(&format!("tolerance: {e}"), lang),
+            );
+        }
+    }
+    let steps = match request.steps.map(|raw| given_steps(raw.get())) {
+        None => Vec::new(),
+        Some(Ok(s)) => s,
+        Some(Err(e)) => {
+            return error(
+                StatusCode::UNPROCESSABLE_ENTITY,
+                "usage",
+                Some("steps"),
+                translated(&format!("steps: {e}"), lang),
+            )
+        }
+    };
+    let problem = match Problem::of(&state, request.problem, request.exercise.as_deref()) {
+        Ok(p) => p,
+        Err(refused) => return refused,
+    };
+    let source = problem.source();
+    if let Err(e) = problem.admit(&state) {
+        return problem_error(&e, source.name(), lang);
+    }
+    let options = check::CheckOptions {
+        answer: request.answer.clone(),
+        scale,
+        tolerance: request.tolerance,
+        strict: request.strict,
+    };
+    // One of the server's exercises was solved once, at start-up; a problem sent is solved now.
+    let check_answer = || match problem {
+        Problem::Exercise(e) => check::check_prepared(&e.prepared, &options),
+        Problem::Sent(_) => check::check_source(source, &options),
+    };
+    // As `phong check`: with steps, the answer is checked only when one is given.
+    let (answer, steps) = if steps.is_empty() {
+        (Some(check_answer()), None)
+    } else {
+        let judged = check::steps::check_steps_source(source, &steps, request.strict);
+        let answer = options.answer.is_some().then(check_answer);
+        (answer, Some(judged))
+    };
+    let unchecked = answer
+        .iter()
+        .map(check::report::Checked::status)
+        .chain(steps.iter().map(check::steps::StepsChecked::status))
+        .any(|s| s == check::report::Status::Unchecked);
+    let Some(mut doc) = check::report::document(answer.as_ref(), steps.as_ref()) else {
+        // Not reached: without steps there is always an answer's verdict.
+        return error(
+            StatusCode::INTERNAL_SERVER_ERROR,
+            "internal",
+            None,
+            "nothing was checked".into(),
+        );
+    };
+    if let Some(log) = &state.answers {
+        log.record(&AnswerEntry {
+            time: super::log::now(),
+            exercise: problem.exercise_id(),
+            problem: problem.text().map(problem_hash),
+            answer: request.answer.as_deref(),
+            steps: request.steps,
+            verdict: doc["verdict"].as_str().unwrap_or("invalid"),
+        });
+    }
+    if unchecked {
+        for key in ["error", "steps_error"] {
+            if let Some(e) = doc.get_mut(key) {
+                translate_error(e, lang);
+            }
+        }
+        if doc["verdict"] == "invalid" {
+            // An invalid verdict's message is the error's own sentence.
+            translate_error(&mut doc, lang);
+        }
+        json_response(StatusCode::UNPROCESSABLE_ENTITY, &doc)
+    } else {
+        json_response(StatusCode::OK, &doc)
+    }
+}
+
+/// The steps of a request, read as `phong check --steps FILE` reads its file; `{}` is no step.
+fn given_steps(text: &str) -> Result<Vec<check::steps::GivenStep>, check::steps::BadStep> {
+    if serde_json::from_str::<serde_json::Map<String, serde_json::Value>>(text)
+        .is_ok_and(|m| m.is_empty())
+    {
+        return Ok(Vec::new());
+    }
+    check::steps::parse_steps_json(text)
+}
+
+/// The problem a request names: sent with it, or one of the server's exercises.
+enum Problem<'a> {
+    /// The JSON of a problem file, as sent.
+    Sent(&'a str),
+    /// One of the server's exercises.
+    Exercise(&'a super::catalogue::Exercise),
+}
+
+impl<'a> Problem<'a> {
+    /// The problem of `problem` or `exercise` (exactly one of them).
+    fn of(
+        state: &'a super::State,
+        problem: Option<&'a RawValue>,
+        exercise: Option<&str>,
+    ) -> Result<Problem<'a>, Response> {
+        match (problem, exercise) {
+            (Some(p), None) => Ok(Problem::Sent(p.get())),
+            (None, Some(id)) => state
+                .catalogue
+                .get(id)
+                .map(Problem::Exercise)
+                .ok_or_else(|| {
+                    let ids: Vec<&str> = state
+                        .catalogue
+                        .exercises
+                        .iter()
+                        .map(|e| e.id.as_str())
+                        .collect();
+                    error(
+                        StatusCode::NOT_FOUND,
+                        "usage",
+                        Some("exercise"),
+                        format!(
+                            "exercise: this server has no exercise \"{}\"; it has {} (GET \
+                             /api/exercises lists them)",
+                            check::answer::shorten(id, 40),
+                            ids.join(", ")
+                        ),
+                    )
+                }),
+            (Some(_), Some(_)) => Err(error(
+                StatusCode::BAD_REQUEST,
+                "usage",
+                Some("exercise"),
+                "give either \"problem\" (a problem file's JSON) or \"exercise\" (the id of one \
+                 of this server's exercises), not both"
+                    .into(),
+            )),
+            (None, None) => Err(error(
+                StatusCode::BAD_REQUEST,
+                "usage",
+                Some("problem"),
+                "the request names no problem: give \"problem\" (a problem file's JSON, such as \
+                 {\"problem\": {\"lights\": […], …}}) or \"exercise\" (such as \"4.2\")"
+                    .into(),
+            )),
+        }
+    }
+
+    fn source(&self) -> Source<'a> {
+        match *self {
+            Problem::Sent(text) => Source::Text {
+                name: Path::new(PROBLEM_NAME),
+                text,
+            },
+            Problem::Exercise(e) => e.source(),
+        }
+    }
+
+    fn exercise_id(&self) -> Option<&'a str> {
+        match *self {
+            Problem::Sent(_) => None,
+            Problem::Exercise(e) => Some(&e.id),
+        }
+    }
+
+    fn text(&self) -> Option<&'a str> {
+        match *self {
+            Problem::Sent(text) => Some(text),
+            Problem::Exercise(_) => None,
+        }
+    }
+
+    /// Refuses a sent problem with more lights or surfaces than the server solves for one
+    /// request. A problem that does not parse is let through: solving it reports its error as
+    /// the CLI does. The server's own exercises are the instructor's, and always admitted.
+    fn admit(&self, state: &super::State) -> Result<(), ProblemError> {
+        let Problem::Sent(_) = self else {
+            return Ok(());
+        };
+        let source = self.source();
+        let Ok(file) = source.parse() else {
+            return Ok(());
+        };
+        let limits = &state.limits;
+        let over = |what: &str, n: usize, max: usize| {
+            crate::problem::Invalid::new(
+                what.to_owned(),
+                format!("{n} {what} are more than the {max} this server solves in one request"),
+                format!(
+                    "give at most {max} {what}, or solve the problem with the phong command, \
+                     which has no such limit"
+                ),
+            )
+            .at(source.name())
+        };
+        if file.lights.len() > limits.lights {
+            return Err(over("lights", file.lights.len(), limits.lights));
+        }
+        if file.surfaces.len() > limits.surfaces {
+            return Err(over("surfaces", file.surfaces.len(), limits.surfaces));
+        }
+        Ok(())
+    }
+}
+
+/// What the body of a solve request looks like, for the messages.
+const SOLVE_SHAPE: &str =
+    "{\"problem\": {…a problem file…}, \"lang\": \"pt\"} or {\"exercise\": \"4.2\"}";
+/// What the body of a check request looks like, for the messages.
+const CHECK_SHAPE: &str = "{\"problem\": {…a problem file…}, \"answer\": \"0.245 0.28 0.21\", \
+                           \"steps\": {\"cos_theta\": \"0.98995\"}} or {\"exercise\": \"4.2\", …}";
+
+/// The request's JSON body read into `T`: 415 when it is not JSON's content type, 400 when it
+/// is not the API's JSON (the message names the line, the column and what was expected).
+fn envelope<'a, T: Deserialize<'a>>(
+    headers: &HeaderMap,
+    body: &'a [u8],
+    shape: &str,
+) -> Result<T, Response> {
+    let json = headers
+        .get(header::CONTENT_TYPE)
+        .and_then(|v| v.to_str().ok())
+        .and_then(|v| v.split(';').next())
+        .is_some_and(|v| {
+            let v = v.trim();
+            v.eq_ignore_ascii_case("application/json")
+        });
+    if !json {
+        return Err(error(
+            StatusCode::UNSUPPORTED_MEDIA_TYPE,
+            "usage",
+            None,
+            format!(
+                "the request body must be JSON, sent with the header Content-Type: \
+                 application/json, such as {shape}"
+            ),
+        ));
+    }
+    let text = std::str::from_utf8(body).map_err(|e| {
+        error(
+            StatusCode::BAD_REQUEST,
+            "syntax",
+            None,
+            format!(
+                "the request body is not UTF-8 text (byte {} is not): JSON is UTF-8 text",
+                e.valid_up_to()
+            ),
+        )
+    })?;
+    let refused = |field: Option<String>, inner: &serde_json::Error| {
+        let message = match &field {
+            Some(f) => format!("{f}: {inner}"),
+            None => inner.to_string(),
+        };
+        error(
+            StatusCode::BAD_REQUEST,
+            "syntax",
+            field.as_deref(),
+            format!("the request is not the API's JSON: {message}. Fix: send {shape}"),
+        )
+    };
+    if !text.trim_start().starts_with('{') {
+        return Err(error(
+            StatusCode::BAD_REQUEST,
+            "syntax",
+            None,
+            format!("the request body must be one JSON object, such as {shape}"),
+        ));
+    }
+    let mut de = serde_json::Deserializer::from_str(text);
+    let value: T = serde_path_to_error::deserialize(&mut de).map_err(|e| {
+        let field = e.path().to_string();
+        if field == "problem" || field.starts_with("problem.") || field.starts_with("problem[") {
+            if let Some(refusal) = broken_problem(text) {
+                return refusal;
+            }
+        }
+        refused((field != "." && field != "?").then_some(field), e.inner())
+    })?;
+    de.end().map_err(|e| refused(None, &e))?;
+    Ok(value)
+}
+
+/// A request whose `problem` is not JSON (`NaN`, a missing comma): the problem's text from its
+/// first character on, read as the CLI reads a file, for the CLI's message and fix (`JSON has
+/// no NaN`), its line and column counted from the problem's first line (a file's lines, when
+/// the file was sent as it is). `None` when the problem reads well (the envelope is what is
+/// broken, after it).
+fn broken_problem(text: &str) -> Option<Response> {
+    let key = text.find("\"problem\"")?;
+    let rest = text[key + "\"problem\"".len()..].trim_start();
+    let rest = rest.strip_prefix(':')?.trim_start();
+    let name = Path::new(PROBLEM_NAME);
+    match crate::problem::parse_str(name, rest) {
+        Err(e @ ProblemError::Syntax { .. }) if !is_trailing(&e) => {
+            Some(problem_error(&e, name, Lang::En))
+        }
+        _ => None,
+    }
+}
+
+/// Whether a syntax error is only the rest of the envelope after the problem.
+fn is_trailing(e: &ProblemError) -> bool {
+    matches!(e, ProblemError::Syntax { message, field: None, .. } if message.starts_with("trailing characters"))
+}
+
+/// The `lang` of a request: English unless `"pt"`.
+fn lang(text: Option<&str>) -> Result<Lang, Response> {
+    match text {
+        None | Some("en") => Ok(Lang::En),
+        Some("pt") => Ok(Lang::Pt),
+        Some(other) => Err(error(
+            StatusCode::BAD_REQUEST,
+            "usage",
+            Some("lang"),
+            format!(
+                "lang: \"{}\" is not a language: give \"en\" (the default) or \"pt\"",
+                check::answer::shorten(other, 40)
+            ),
+        )),
+    }
+}
+
+/// A problem that cannot be solved, as `phong solve --format json` writes it (422).
+fn problem_error(e: &ProblemError, name: &Path, lang: Lang) -> Response {
+    let mut doc = crate::report::file::error_json(name, e);
+    translate_error(&mut doc["error"], lang);
+    json_response(StatusCode::UNPROCESSABLE_ENTITY, &doc)
+}
+
+/// An error object's message in `lang`, where the CLI has the sentence in it.
+fn translate_error(error: &mut serde_json::Value, lang: Lang) {
+    if let Some(m) = error.get_mut("message") {
+        if let Some(text) = m.as_str() {
+            *m = serde_json::Value::String(translated(text, lang));
+        }
+    }
+}
+
+fn translated(message: &str, lang: Lang) -> String {
+    crate::report::messages::error_in(message, lang)
+}
+
+/// An error of the API: `{"error": {"kind", "field", "message"}}` with `status`.
+pub(crate) fn error(
+    status: StatusCode,
+    kind: &str,
+    field: Option<&str>,
+    message: String,
+) -> Response {
+    json_response(
+        status,
+        &serde_json::json!({
+            "error": { "kind": kind, "field": field, "message": message }
+        }),
+    )
+}
+
+/// `value` as the CLI prints JSON: pretty, keys in order, a final newline.
+fn json_response(status: StatusCode, value: &impl serde::Serialize) -> Response {
+    let mut text = serde_json::to_string_pretty(value).unwrap_or_else(|_| "null".into());
+    text.push('\n');
+    (
+        status,
+        [(header::CONTENT_TYPE, "application/json; charset=utf-8")],
+        text,
+    )
+        .into_response()
 }

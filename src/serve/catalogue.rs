@@ -17,6 +17,9 @@ pub(crate) struct Exercise {
     pub(crate) text: String,
     /// The parsed file (title, question, answer key).
     pub(crate) file: ProblemFile,
+    /// The problem solved once, with its readings and slips, for every answer checked against
+    /// it (read-only: no request changes it).
+    pub(crate) prepared: crate::check::Prepared,
 }
 
 impl Exercise {
@@ -49,14 +52,17 @@ impl Catalogue {
             .iter()
             .map(|(id, text)| {
                 let name = PathBuf::from(format!("exercises/{id}.json"));
-                let file = Source::Text { name: &name, text }
+                let source = Source::Text { name: &name, text };
+                let file = source
                     .parse()
-                    .expect("a bundled exercise parses (tests/serve.rs)");
+                    .expect("a bundled exercise parses (tests/serve_api.rs)");
+                let prepared = crate::check::Prepared::of(source);
                 Exercise {
                     id: (*id).to_owned(),
                     name,
                     text: (*text).to_owned(),
                     file,
+                    prepared,
                 }
             })
             .collect();
@@ -96,11 +102,13 @@ impl Catalogue {
             // Validated now (a mesh refused, as in a request), so that a bad file stops the
             // server before it starts, not a student's request.
             source.validate::<f64>(&file)?;
+            let prepared = crate::check::Prepared::of(source);
             exercises.push(Exercise {
                 id,
                 name: path,
                 text,
                 file,
+                prepared,
             });
         }
         Ok(Catalogue { exercises })

@@ -22,6 +22,15 @@ pub(crate) struct Limits {
     pub(crate) time: Duration,
     /// The most requests handled at once.
     pub(crate) concurrency: usize,
+    /// The most connections open at once (idle keep-alive ones included); a connection beyond
+    /// them is closed as soon as it is accepted.
+    pub(crate) connections: usize,
+    /// The longest a client may take to send a request's headers (slowloris), or leave a
+    /// keep-alive connection idle.
+    pub(crate) header_time: Duration,
+    /// The largest request head (request line and headers), in bytes; a larger one is refused
+    /// with 431.
+    pub(crate) head_bytes: usize,
 }
 
 impl Default for Limits {
@@ -32,6 +41,9 @@ impl Default for Limits {
             surfaces: 64,
             time: Duration::from_secs(10),
             concurrency: 256,
+            connections: 1024,
+            header_time: Duration::from_secs(10),
+            head_bytes: 16 * 1024,
         }
     }
 }
@@ -67,7 +79,9 @@ pub(crate) fn layers(routes: Router, limits: &Limits) -> Router {
             HeaderValue::from_static("no-store"),
         ));
     routes
-        .layer(tower_http::limit::RequestBodyLimitLayer::new(limits.body_bytes))
+        .layer(tower_http::limit::RequestBodyLimitLayer::new(
+            limits.body_bytes,
+        ))
         .layer(tower_http::timeout::TimeoutLayer::with_status_code(
             StatusCode::REQUEST_TIMEOUT,
             limits.time,
@@ -79,7 +93,57 @@ pub(crate) fn layers(routes: Router, limits: &Limits) -> Router {
                 .concurrency_limit(limits.concurrency),
         )
         .layer(tower_http::catch_panic::CatchPanicLayer::custom(panicked))
+        .layer(axum::middleware::map_response_with_state(
+            Explained {
+                body_bytes: limits.body_bytes,
+                time: limits.time,
+            },
+            explain,
+        ))
         .layer(headers)
+}
+
+/// The limits [`explain`] names.
+#[derive(Clone, Copy)]
+struct Explained {
+    body_bytes: usize,
+    time: Duration,
+}
+
+/// A refusal by a layer (a body too large, a request too slow), whose own body says little
+/// ("length limit exceeded", or nothing), given a sentence that names the limit and the fix:
+/// as JSON (`{"error": {…}}`) under `/api/`, else as plain text. A route's own answers are
+/// left as they are (they carry their content type).
+async fn explain(
+    axum::extract::State(limits): axum::extract::State<Explained>,
+    uri: axum::http::Uri,
+    response: Response,
+) -> Response {
+    let status = response.status();
+    let own = response.headers().contains_key(header::CONTENT_TYPE)
+        && !response
+            .headers()
+            .get(header::CONTENT_TYPE)
+            .is_some_and(|v| v.as_bytes().starts_with(b"text/plain"));
+    let message = match status {
+        StatusCode::PAYLOAD_TOO_LARGE if !own => format!(
+            "the request body is larger than the {} bytes ({} kB) this server takes; send one \
+             problem at a time, without images or meshes",
+            limits.body_bytes,
+            limits.body_bytes / 1024
+        ),
+        StatusCode::REQUEST_TIMEOUT if !own => format!(
+            "the request took longer than the {} s this server gives one (its body arrived too \
+             slowly); send it again in one go",
+            limits.time.as_secs_f64()
+        ),
+        _ => return response,
+    };
+    if uri.path().starts_with("/api/") {
+        super::api::error(status, "usage", None, message)
+    } else {
+        (status, format!("{message}\n")).into_response()
+    }
 }
 
 /// A request refused because the server is handling as many as it may.

@@ -16,11 +16,14 @@
 pub(crate) mod api;
 pub(crate) mod catalogue;
 pub(crate) mod limits;
+pub(crate) mod log;
 pub(crate) mod pages;
 
 use std::net::SocketAddr;
 use std::path::PathBuf;
+use std::sync::atomic::{AtomicUsize, Ordering};
 use std::sync::Arc;
+use std::time::Duration;
 
 use axum::Router;
 
@@ -47,6 +50,8 @@ pub(crate) struct State {
     pub(crate) catalogue: Catalogue,
     /// What one request may ask.
     pub(crate) limits: Limits,
+    /// Where checked answers are appended (`--log-answers`); `None`: none is kept.
+    pub(crate) answers: Option<log::AnswerLog>,
 }
 
 /// Shared by the handlers.
@@ -58,8 +63,46 @@ pub(crate) fn router(state: Shared) -> Router {
     let routes = Router::new()
         .merge(api::routes())
         .merge(pages::routes())
+        .fallback(not_found)
+        .method_not_allowed_fallback(method_not_allowed)
         .with_state(state);
-    limits::layers(routes, &limits)
+    limits::layers(routes, &limits).layer(axum::middleware::from_fn(log::request))
+}
+
+/// No route has this path: a plain 404 that says where to start.
+async fn not_found(uri: axum::http::Uri) -> axum::response::Response {
+    use axum::response::IntoResponse;
+    (
+        axum::http::StatusCode::NOT_FOUND,
+        format!(
+            "{}: no such page; the exercises are listed at /, and the API is POST /api/solve, \
+             POST /api/check and GET /api/exercises\n",
+            shown_path(uri.path())
+        ),
+    )
+        .into_response()
+}
+
+/// A route exists at this path, but not for this method.
+async fn method_not_allowed(
+    method: axum::http::Method,
+    uri: axum::http::Uri,
+) -> axum::response::Response {
+    use axum::response::IntoResponse;
+    (
+        axum::http::StatusCode::METHOD_NOT_ALLOWED,
+        format!(
+            "{method} {}: this method is not served here; the API takes POST (GET for \
+             /api/exercises), the pages GET\n",
+            shown_path(uri.path())
+        ),
+    )
+        .into_response()
+}
+
+/// A request's path as a message may quote it: at most 100 characters.
+fn shown_path(path: &str) -> String {
+    crate::check::answer::shorten(path, 100)
 }
 
 /// Why the server could not start.
@@ -75,6 +118,13 @@ pub(crate) enum StartError {
         #[source]
         source: std::io::Error,
     },
+    /// The answers' log cannot be opened for appending.
+    #[error("--log-answers: cannot open {} for appending: {source}", path.display())]
+    Log {
+        path: PathBuf,
+        #[source]
+        source: std::io::Error,
+    },
     /// The async runtime or the connection loop failed.
     #[error("the server stopped: {0}")]
     Runtime(#[source] std::io::Error),
@@ -87,9 +137,19 @@ pub(crate) fn run(config: &Config) -> Result<(), StartError> {
         Some(dir) => Catalogue::folder(dir)?,
         None => Catalogue::bundled(),
     };
+    let answers = match &config.log_answers {
+        Some(path) => Some(
+            log::AnswerLog::open(path).map_err(|source| StartError::Log {
+                path: path.clone(),
+                source,
+            })?,
+        ),
+        None => None,
+    };
     let state = Arc::new(State {
         catalogue,
         limits: config.limits.clone(),
+        answers,
     });
     let runtime = tokio::runtime::Builder::new_multi_thread()
         .enable_all()
@@ -104,11 +164,85 @@ pub(crate) fn run(config: &Config) -> Result<(), StartError> {
             })?;
         let local = listener.local_addr().map_err(StartError::Runtime)?;
         eprintln!("listening on http://{local}");
-        axum::serve(listener, router(state))
-            .with_graceful_shutdown(shutdown())
-            .await
-            .map_err(StartError::Runtime)
+        accept(listener, router(state), &config.limits).await;
+        Ok(())
     })
+}
+
+/// Accepts connections until SIGINT or SIGTERM, each served by hyper's HTTP/1 with the limits
+/// `axum::serve` does not expose: the time a client may take to send its headers (or leave a
+/// keep-alive connection idle), the size of a request head, and the number of connections open
+/// at once. Then stops accepting, lets each open connection finish its request (at most the
+/// request time limit), and returns.
+async fn accept(listener: tokio::net::TcpListener, app: Router, limits: &Limits) {
+    use hyper_util::rt::{TokioIo, TokioTimer};
+    let graceful = hyper_util::server::graceful::GracefulShutdown::new();
+    let open = Arc::new(AtomicUsize::new(0));
+    let mut stop = std::pin::pin!(shutdown());
+    loop {
+        let stream = tokio::select! {
+            accepted = listener.accept() => match accepted {
+                Ok((stream, _)) => stream,
+                // Out of file descriptors, or a connection reset before it was accepted: wait a
+                // little (other connections close meanwhile) rather than spin.
+                Err(e) => {
+                    eprintln!("accept: {e}");
+                    tokio::time::sleep(Duration::from_millis(50)).await;
+                    continue;
+                }
+            },
+            () = &mut stop => break,
+        };
+        let Some(slot) = Slot::take(&open, limits.connections) else {
+            // As many connections as the server keeps: this one is closed at once.
+            drop(stream);
+            continue;
+        };
+        let _ = stream.set_nodelay(true);
+        let app = app.clone();
+        let service = hyper::service::service_fn(move |request| {
+            tower::ServiceExt::<hyper::Request<hyper::body::Incoming>>::oneshot(
+                app.clone(),
+                request,
+            )
+        });
+        let mut http = hyper::server::conn::http1::Builder::new();
+        http.timer(TokioTimer::new())
+            .header_read_timeout(limits.header_time)
+            .max_buf_size(limits.head_bytes.max(8192));
+        let connection = graceful.watch(http.serve_connection(TokioIo::new(stream), service));
+        tokio::spawn(async move {
+            // A connection's errors (a client gone, a head too slow or too large) end that
+            // connection only; hyper has answered what could be answered.
+            let _ = connection.await;
+            drop(slot);
+        });
+    }
+    drop(listener);
+    tokio::select! {
+        () = graceful.shutdown() => {},
+        () = tokio::time::sleep(limits.time) => {},
+    }
+}
+
+/// One of the open connections the server allows, given back when dropped.
+struct Slot(Arc<AtomicUsize>);
+
+impl Slot {
+    /// A slot, unless `max` are taken.
+    fn take(open: &Arc<AtomicUsize>, max: usize) -> Option<Slot> {
+        open.fetch_update(Ordering::AcqRel, Ordering::Acquire, |n| {
+            (n < max).then_some(n + 1)
+        })
+        .ok()
+        .map(|_| Slot(Arc::clone(open)))
+    }
+}
+
+impl Drop for Slot {
+    fn drop(&mut self) {
+        self.0.fetch_sub(1, Ordering::AcqRel);
+    }
 }
 
 /// Resolves on SIGINT (Ctrl-C) or SIGTERM (systemd's stop).

@@ -11,6 +11,8 @@ pub struct Server {
     child: Child,
     /// Where it listens.
     pub addr: SocketAddr,
+    /// Its standard error after the first line, as it arrives.
+    log: std::sync::Arc<std::sync::Mutex<Vec<String>>>,
 }
 
 impl Server {
@@ -26,6 +28,8 @@ impl Server {
             .expect("phong serve starts");
         let stderr = child.stderr.take().expect("stderr is piped");
         let (tx, rx) = std::sync::mpsc::channel();
+        let log = std::sync::Arc::new(std::sync::Mutex::new(Vec::new()));
+        let kept = std::sync::Arc::clone(&log);
         // The first line is the address; the rest of standard error is drained (and shown, so a
         // failing test shows the server's log) so that the server never blocks on a full pipe.
         std::thread::spawn(move || {
@@ -35,6 +39,7 @@ impl Server {
             }
             for line in lines.map_while(Result::ok) {
                 eprintln!("server: {line}");
+                kept.lock().unwrap_or_else(|e| e.into_inner()).push(line);
             }
         });
         let deadline = Instant::now() + Duration::from_secs(60);
@@ -46,12 +51,34 @@ impl Server {
             .unwrap_or_else(|| panic!("phong serve's first line is its address: {first:?}"))
             .parse()
             .expect("an address");
-        Server { child, addr }
+        Server { child, addr, log }
     }
 
     /// `http://ADDR/PATH`.
     pub fn url(&self, path: &str) -> String {
         format!("http://{}{path}", self.addr)
+    }
+
+    /// The lines of standard error so far, after the address.
+    pub fn log(&self) -> Vec<String> {
+        self.log.lock().unwrap_or_else(|e| e.into_inner()).clone()
+    }
+
+    /// The process id (to send it a signal).
+    pub fn pid(&self) -> u32 {
+        self.child.id()
+    }
+
+    /// The exit status, once the process has exited (at most `within`).
+    pub fn exited_within(&mut self, within: Duration) -> Option<std::process::ExitStatus> {
+        let deadline = Instant::now() + within;
+        while Instant::now() < deadline {
+            if let Ok(Some(status)) = self.child.try_wait() {
+                return Some(status);
+            }
+            std::thread::sleep(Duration::from_millis(20));
+        }
+        None
     }
 
     /// Whether the process is still running (it never exits on a bad request).

@@ -19,4 +19,12 @@ pub(crate) struct ServeArgs {
     /// The most requests handled at once; more are refused with 503 at once.
     #[arg(long, value_name = "N", default_value_t = 256, value_parser = clap::value_parser!(u32).range(1..=65536))]
     pub(crate) max_concurrent: u32,
+    /// The most connections open at once (idle keep-alive ones included); more are closed as
+    /// soon as they are accepted.
+    #[arg(long, value_name = "N", default_value_t = 1024, value_parser = clap::value_parser!(u32).range(1..=1_000_000))]
+    pub(crate) max_connections: u32,
+    /// The most seconds a request may take (its body's arrival included), and a client may take
+    /// to send its headers or leave a connection idle.
+    #[arg(long, value_name = "SECONDS", default_value_t = 10, value_parser = clap::value_parser!(u32).range(1..=3600))]
+    pub(crate) timeout: u32,
 }

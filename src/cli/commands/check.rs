@@ -59,8 +59,7 @@ pub(crate) fn run(args: &CheckArgs) -> Result<Exit, CliError> {
                     text.push_str(&check::report::text(&c, args.lang));
                 }
             }
-            CheckFormat::Json => docs
-                .push(serde_json::to_value(check::report::json(&c)).expect("a verdict serialises")),
+            CheckFormat::Json => docs.extend(check::report::document(Some(&c), None)),
         }
     }
     let out = match args.format {
@@ -176,24 +175,11 @@ fn with_steps(args: &CheckArgs, steps: &[check::steps::GivenStep]) -> Result<Exi
             text.push_str(&check::steps::text(&checked, args.lang));
             text
         }
-        CheckFormat::Json => {
-            let doc = match &answer {
-                Some(c) => {
-                    let mut v =
-                        serde_json::to_value(check::report::json(c)).expect("a verdict serialises");
-                    let steps = checked.outcome.as_ref().ok().map(check::steps::steps_json);
-                    v["steps"] = serde_json::to_value(steps).expect("steps serialise");
-                    if let Err(f) = &checked.outcome {
-                        v["steps_error"] = serde_json::to_value(f).expect("an error serialises");
-                    }
-                    v
-                }
-                None => {
-                    serde_json::to_value(check::steps::document(&checked)).expect("steps serialise")
-                }
-            };
-            output::json_text(vec![doc])
-        }
+        CheckFormat::Json => output::json_text(
+            check::report::document(answer.as_ref(), Some(&checked))
+                .into_iter()
+                .collect(),
+        ),
     };
     if !out.is_empty() {
         output::emit(args.output.as_deref(), &out)?;

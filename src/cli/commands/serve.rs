@@ -6,8 +6,12 @@ use crate::cli::exit::Exit;
 use crate::serve::{self, Config};
 
 pub(crate) fn run(args: &ServeArgs) -> Result<Exit, CliError> {
+    let time = std::time::Duration::from_secs(u64::from(args.timeout));
     let limits = serve::limits::Limits {
         concurrency: args.max_concurrent as usize,
+        connections: args.max_connections as usize,
+        time,
+        header_time: time,
         ..Default::default()
     };
     let config = Config {
