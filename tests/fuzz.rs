@@ -1789,6 +1789,7 @@ const CASES_MUTATED: u32 = 1000;
 const CASES_BINARY: u32 = 128;
 // `phong serve`'s API (a debug server on loopback): each case is sent to /api/check and
 // /api/solve; about 350 cases/s, so `.ci/run`'s 40 rounds take about 35 s.
+#[cfg(feature = "serve")]
 const CASES_SERVE: u32 = 300;
 
 fn env_number(name: &str) -> Option<u64> {
@@ -2666,8 +2667,11 @@ fn fuzz_grading_arbitrary_bytes_never_panics_and_keeps_every_line() {
 // phong serve's API (issue 19)
 // ---------------------------------------------------------------------------------------------
 
+// Without the `serve` feature (on by default) there is no server to fuzz.
+#[cfg(feature = "serve")]
 #[path = "support/http.rs"]
 mod http;
+#[cfg(feature = "serve")]
 #[path = "support/server.rs"]
 #[allow(dead_code)]
 mod server;
@@ -2678,6 +2682,7 @@ mod server;
 /// bounded size, never a 5xx or a dropped connection; a 200 from /api/check is byte for byte
 /// the library's check of the same text ([`check::report::document`]); the server is alive at
 /// the end.
+#[cfg(feature = "serve")]
 #[test]
 fn serve_api_answers_every_generated_problem_with_json_and_never_a_5xx() {
     let mut server = server::Server::start(&[]);

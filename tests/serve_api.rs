@@ -3,6 +3,8 @@
 //! CLI is run beside the server and the two outputs compared byte for byte, the `file` name
 //! apart), errors are 4xx with the CLI's message, and `--log-answers` keeps one line per check.
 
+#![cfg(feature = "serve")]
+
 #[path = "support/http.rs"]
 mod http;
 #[path = "support/server.rs"]

@@ -1,6 +1,8 @@
 //! Hostile requests to `phong serve`: each gets a 4xx (or its connection closed) with a clear
 //! message, and the server is still alive and answers a good request afterwards.
 
+#![cfg(feature = "serve")]
+
 #[path = "support/http.rs"]
 mod http;
 #[path = "support/server.rs"]

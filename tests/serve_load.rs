@@ -5,6 +5,8 @@
 //!
 //! `PHONG_LOAD_REQUESTS=N` changes the count (at least one per client).
 
+#![cfg(feature = "serve")]
+
 #[path = "support/http.rs"]
 mod http;
 #[path = "support/load.rs"]

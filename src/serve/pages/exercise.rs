@@ -387,8 +387,8 @@ fn verdict(ex: &Exercise, lang: Lang, input: &Input) -> (StatusCode, String) {
         return (StatusCode::UNPROCESSABLE_ENTITY, out);
     }
     if let Some(a) = answer {
-        let c = check::check_source(
-            ex.source(),
+        let c = check::check_prepared(
+            &ex.prepared,
             &CheckOptions {
                 answer: Some(a),
                 scale: if input.bits8 {
