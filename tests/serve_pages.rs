@@ -805,3 +805,34 @@ fn an_instructors_folder_is_served_with_a_box_per_light() {
     assert!(r.body.contains("<h1>Raio e esfera</h1>"));
     assert!(r.body.contains("name=\"step:t\""));
 }
+
+/// `--log-answers` keeps the answers sent through the pages too, one line each, with the
+/// verdict `phong check` gives (4.2's normal-reversed answer is wrong); showing the same answer
+/// in the other language (the header's switch re-posts the form) is not a second answer.
+#[test]
+fn answers_sent_through_the_form_are_logged_once() {
+    let dir = tempfile::tempdir().expect("a temporary folder");
+    let log = dir.path().join("answers.jsonl");
+    let server = Server::start(&["--log-answers", log.to_str().expect("a UTF-8 path")]);
+    let fields = [
+        ("answer", "0.245 0.28 0.21"),
+        ("scale", "1"),
+        ("step:cos_theta", "-0.98995"),
+    ];
+    let r = post(&server, "/exercise/4.2?lang=pt", &fields, &[]);
+    assert_eq!(r.status, 200);
+    // The switch to English carries the same fields and `relang`.
+    let mut switched: Vec<(&str, &str)> = fields.to_vec();
+    switched.push(("relang", "1"));
+    let r = post(&server, "/exercise/4.2?lang=en", &switched, &[]);
+    assert_eq!(r.status, 200);
+    assert!(r.body.contains("relang"), "the switch form carries relang");
+    let text = std::fs::read_to_string(&log).expect("the log is written");
+    let lines: Vec<&str> = text.lines().collect();
+    assert_eq!(lines.len(), 1, "{text}");
+    let entry: serde_json::Value = serde_json::from_str(lines[0]).expect("a JSON line");
+    assert_eq!(entry["exercise"], "4.2");
+    assert_eq!(entry["answer"], "0.245 0.28 0.21");
+    assert_eq!(entry["verdict"], "wrong");
+    assert_eq!(entry["steps"]["cos_theta"], "-0.98995");
+}

@@ -85,9 +85,15 @@ pub(crate) async fn post(
         return not_found(lang);
     };
     let mut input = Input::default();
-    let kept = fields.clone();
+    let kept: Vec<(String, String)> = fields
+        .iter()
+        .filter(|(k, _)| k != "relang")
+        .cloned()
+        .collect();
+    let mut relang = false;
     for (k, v) in fields {
         match k.as_str() {
+            "relang" => relang = true,
             "answer" => input.answer = v,
             "scale" => input.bits8 = v == "255",
             "kind" => input.no_hit = v == "none",
@@ -100,6 +106,9 @@ pub(crate) async fn post(
         }
     }
     let (status, main) = render(ex, lang, &input, true);
+    if let (Some(log), false) = (&state.answers, relang) {
+        record(log, ex, &input);
+    }
     posted(
         status,
         lang,
@@ -111,6 +120,57 @@ pub(crate) async fn post(
 }
 
 /// This page's path for the language switch of a GET.
+/// The answer and steps of a form sent, as a line of `--log-answers` (as `/api/check` writes
+/// one): the answer checked again against the prepared exercise (microseconds), the steps as a
+/// JSON object of the boxes filled in.
+fn record(log: &crate::serve::log::AnswerLog, ex: &Exercise, input: &Input) {
+    use crate::serve::log::{now, AnswerEntry};
+    let answer = if input.no_hit {
+        Some("none".to_owned())
+    } else {
+        Some(input.answer.trim().to_owned()).filter(|a| !a.is_empty())
+    };
+    let filled: serde_json::Map<String, serde_json::Value> = input
+        .steps
+        .iter()
+        .filter(|(_, v)| !v.trim().is_empty())
+        .map(|(k, v)| (k.clone(), serde_json::Value::String(v.clone())))
+        .collect();
+    if answer.is_none() && filled.is_empty() {
+        return;
+    }
+    let verdict = answer.as_ref().map(|a| {
+        let c = check::check_prepared(
+            &ex.prepared,
+            &CheckOptions {
+                answer: Some(a.clone()),
+                scale: if input.bits8 {
+                    Scale::Bits8
+                } else {
+                    Scale::Unit
+                },
+                tolerance: None,
+                strict: false,
+            },
+        );
+        check::report::json(&c).verdict
+    });
+    let steps = (!filled.is_empty())
+        .then(|| {
+            serde_json::value::RawValue::from_string(serde_json::Value::Object(filled).to_string())
+                .ok()
+        })
+        .flatten();
+    log.record(&AnswerEntry {
+        time: now(),
+        exercise: Some(&ex.id),
+        problem: None,
+        answer: answer.as_deref(),
+        steps: steps.as_deref(),
+        verdict: verdict.unwrap_or("steps"),
+    });
+}
+
 fn path_of(ex: &Exercise, input: &Input) -> String {
     let mut p = exercise_path(&ex.id);
     if input.solution {

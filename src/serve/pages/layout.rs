@@ -79,6 +79,8 @@ pub(crate) fn posted(
             esc(v)
         );
     }
+    // The same answer shown in the other language: not a new answer (`--log-answers`).
+    switch.push_str("<input type=\"hidden\" name=\"relang\" value=\"1\">\n");
     let _ = write!(
         switch,
         "<button type=\"submit\" class=\"link\" lang=\"{}\">{}</button>\n</form>",
