@@ -424,7 +424,8 @@ pub enum Source<'a> {
     /// A file (`-` is standard input); a mesh's OBJ file is read from beside it.
     File(&'a Path),
     /// The text of a problem, named `name` in messages (a request to `phong serve`). It may not
-    /// name a mesh: reading one would read the file system for whoever sent the text.
+    /// name a mesh: reading one would read the file system for whoever sent the text
+    /// (docs/conventions.md, "Checking on the server").
     Text {
         /// The name messages give it, in place of a file's path.
         name: &'a Path,
