@@ -11,7 +11,8 @@
 //!   the response headers every page carries.
 //!
 //! Nothing is kept between requests, and no request reads the file system: a problem arrives as
-//! text ([`crate::problem::Source::Text`]), which may not name a mesh file.
+//! text ([`crate::problem::Source::Text`]), which may not name a mesh file (docs/conventions.md,
+//! "Checking on the server").
 
 pub(crate) mod api;
 pub(crate) mod catalogue;
