@@ -234,9 +234,9 @@ impl<R: Real, const SHADOWS: bool> LaneSide<W<R>> for WideSide<'_, R, SHADOWS> {
         }
         let blocked = match self.flat {
             Some(flat) => flat.occluded_packet(&rays[..lanes], &t_max[..lanes], want),
-            None => lanes_of(want)
-                .filter(|&k| self.aggregate.occluded(&rays[k], t_max[k]))
-                .fold(0, |b, k| b | 1 << k),
+            None => self
+                .aggregate
+                .occluded_packet(&rays[..lanes], &t_max[..lanes], want),
         };
         need.and(mask_of::<W<R>>(blocked).not())
     }
