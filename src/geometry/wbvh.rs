@@ -2,9 +2,10 @@
 //! [`Wide::LANES`] children (8 in f32, 4 in f64) whose boxes sit in lanes, tested against one
 //! ray by one slab test per node; its leaves hold up to [`Wide::LANES`] spheres or triangles in
 //! structure-of-arrays blocks, tested against the ray in lanes, with no dispatch on the kind.
-//! One ray at a time: the tracer's shadow rays (more than half of its rays) come one by one from
-//! the shading core, and reflection rays scatter, so a wide tree pays for every ray where a
-//! packet traversal would pay for coherent packets only (docs/benchmarks.md).
+//! One ray at a time (the scalar engine, the solver), or a packet of up to [`Wide::LANES`] rays
+//! (the wide engine's queues and shadow rays: see "Packets" below); a wide tree pays for every
+//! ray, a packet only for coherent rays, so a packet's rays go on alone once few are left
+//! (docs/benchmarks.md).
 //!
 //! **The binary tree's answer, to the bit.** The search visits the binary tree's leaves in the
 //! binary traversal's order with the same t_max at each, so the nearest (primitive, t), ties
@@ -735,10 +736,16 @@ fn slab_rays<R: Real>(near: [R; 3], far: [R; 3], p: &Packet<R>, t_max: W<R>) -> 
     (t1.lt(t0).not().bits(), t0)
 }
 
-/// Rays the packet traversal takes on together: with fewer, each ray goes on by itself (the
-/// lanes of the rays that left would be computed for nothing).
+/// Rays the packet traversal takes on together: with this many or fewer, each ray goes on by
+/// itself (the lanes of the rays that left would be computed for nothing). Measured on 100,000
+/// spheres (callgrind): f64 packets pay only with all 4 lanes, f32 ones with 5 of 8 or more.
 fn few<R: Real>() -> usize {
-    W::<R>::LANES / 2
+    let lanes = W::<R>::LANES;
+    if lanes <= 4 {
+        lanes - 1
+    } else {
+        lanes / 2
+    }
 }
 
 /// The packet traversal's stack: references with the mask of the rays that met the box and
