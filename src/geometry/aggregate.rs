@@ -133,7 +133,7 @@ impl<R: Real> Aggregate<R> {
 
     /// The nearest hit with 0 < t < ∞ of each ray of a packet (`out[k]` for `rays[k]`):
     /// [`Aggregate::nearest`] of each, to the bit, for the wide tracer's queues of rays. Rays
-    /// go through the wide BVH [`Wide::LANES`] at a time ([`WideBvh::nearest_packet`]).
+    /// go through the wide BVH [`Wide::LANES`] at a time (`WideBvh::nearest_packet`).
     pub fn nearest_packet(&self, rays: &[Ray<R>], out: &mut [Option<AggregateHit<R>>]) {
         let infinity = [R::from_f64(f64::INFINITY); 8];
         let lanes = W::<R>::LANES;
@@ -186,7 +186,7 @@ impl<R: Real> Aggregate<R> {
 
     /// Which rays of a packet (at most [`Wide::LANES`]) something blocks, ray k of `want` to
     /// `t_max[k]`: the mask of the rays [`Aggregate::occluded`] says are blocked, to the bit.
-    /// Rays go through the wide BVH together ([`WideBvh::occluded_packet`]).
+    /// Rays go through the wide BVH together (`WideBvh::occluded_packet`).
     pub fn occluded_packet(&self, rays: &[Ray<R>], t_max: &[R], want: u32) -> u32 {
         debug_assert!(rays.len() <= W::<R>::LANES && t_max.len() >= rays.len());
         if self.bounded.len() <= FLAT {
