@@ -14,7 +14,7 @@ use super::bvh::Bvh;
 use super::hit::SurfaceHit;
 use super::wbvh::WideBvh;
 use super::{Ray, Shape};
-use crate::core::lanes::{Wide, W};
+use crate::core::lanes::{lanes_of, Wide, W};
 use crate::core::Real;
 
 /// Up to this many bounded shapes are tested in a plain loop rather than through the BVH.
@@ -132,12 +132,79 @@ impl<R: Real> Aggregate<R> {
     }
 
     /// The nearest hit with 0 < t < ∞ of each ray of a packet (`out[k]` for `rays[k]`):
-    /// [`Aggregate::nearest`] of each, for the wide tracer's queues of rays.
+    /// [`Aggregate::nearest`] of each, to the bit, for the wide tracer's queues of rays. Rays
+    /// go through the wide BVH [`Wide::LANES`] at a time (`WideBvh::nearest_packet`).
     pub fn nearest_packet(&self, rays: &[Ray<R>], out: &mut [Option<AggregateHit<R>>]) {
-        let infinity = R::from_f64(f64::INFINITY);
-        for (ray, hit) in rays.iter().zip(out.iter_mut()) {
-            *hit = self.nearest(ray, infinity);
+        let infinity = [R::from_f64(f64::INFINITY); 8];
+        let lanes = W::<R>::LANES;
+        for (rays, out) in rays.chunks(lanes).zip(out.chunks_mut(lanes)) {
+            self.nearest_packet_within(rays, &infinity[..rays.len()], out);
         }
+    }
+
+    /// [`Aggregate::nearest`] of each ray of a packet of at most [`Wide::LANES`] rays, ray k
+    /// within `limit[k]`.
+    pub(crate) fn nearest_packet_within(
+        &self,
+        rays: &[Ray<R>],
+        limit: &[R],
+        out: &mut [Option<AggregateHit<R>>],
+    ) {
+        debug_assert!(rays.len() <= W::<R>::LANES && limit.len() >= rays.len());
+        if self.bounded.len() <= FLAT {
+            for ((ray, hit), &t_max) in rays.iter().zip(out.iter_mut()).zip(limit) {
+                *hit = self.nearest(ray, t_max);
+            }
+            return;
+        }
+        let mut t_max = [R::ZERO; 8];
+        t_max[..rays.len()].copy_from_slice(&limit[..rays.len()]);
+        let mut best: [Option<u32>; 8] = [None; 8];
+        // Planes first, one by one, as `nearest` takes them
+        for (k, ray) in rays.iter().enumerate() {
+            for &i in &self.unbounded {
+                if let Some(t) = self.shapes[i as usize].hit_t(ray, t_max[k]) {
+                    t_max[k] = t;
+                    best[k] = Some(i);
+                }
+            }
+        }
+        let n = rays.len();
+        let live = (1u32 << n) - 1;
+        self.wide
+            .nearest_packet(&self.shapes, rays, live, &mut t_max[..n], &mut best[..n]);
+        for (k, (ray, hit)) in rays.iter().zip(out.iter_mut()).enumerate() {
+            *hit = best[k].and_then(|i| {
+                let index = i as usize;
+                Some(AggregateHit {
+                    index,
+                    hit: self.shapes[index].hit_at(ray, t_max[k])?,
+                })
+            });
+        }
+    }
+
+    /// Which rays of a packet (at most [`Wide::LANES`]) something blocks, ray k of `want` to
+    /// `t_max[k]`: the mask of the rays [`Aggregate::occluded`] says are blocked, to the bit.
+    /// Rays go through the wide BVH together (`WideBvh::occluded_packet`).
+    pub fn occluded_packet(&self, rays: &[Ray<R>], t_max: &[R], want: u32) -> u32 {
+        debug_assert!(rays.len() <= W::<R>::LANES && t_max.len() >= rays.len());
+        if self.bounded.len() <= FLAT {
+            return lanes_of(want)
+                .filter(|&k| self.occluded(&rays[k], t_max[k]))
+                .fold(0, |m, k| m | 1 << k);
+        }
+        let mut blocked = 0;
+        for k in lanes_of(want) {
+            let blocks = |i: &u32| self.shapes[*i as usize].hit_t(&rays[k], t_max[k]).is_some();
+            if self.unbounded.iter().any(blocks) {
+                blocked |= 1 << k;
+            }
+        }
+        blocked
+            | self
+                .wide
+                .occluded_packet(&self.shapes, rays, t_max, want & !blocked)
     }
 
     /// [`Aggregate::nearest`] through the binary tree's own search (the reference of the wide

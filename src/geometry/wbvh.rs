@@ -2,9 +2,10 @@
 //! [`Wide::LANES`] children (8 in f32, 4 in f64) whose boxes sit in lanes, tested against one
 //! ray by one slab test per node; its leaves hold up to [`Wide::LANES`] spheres or triangles in
 //! structure-of-arrays blocks, tested against the ray in lanes, with no dispatch on the kind.
-//! One ray at a time: the tracer's shadow rays (more than half of its rays) come one by one from
-//! the shading core, and reflection rays scatter, so a wide tree pays for every ray where a
-//! packet traversal would pay for coherent packets only (docs/benchmarks.md).
+//! One ray at a time (the scalar engine, the solver), or a packet of up to [`Wide::LANES`] rays
+//! (the wide engine's queues and shadow rays: see "Packets" below); a wide tree pays for every
+//! ray, a packet only for coherent rays, so a packet's rays go on alone once few are left
+//! (docs/benchmarks.md).
 //!
 //! **The binary tree's answer, to the bit.** The search visits the binary tree's leaves in the
 //! binary traversal's order with the same t_max at each, so the nearest (primitive, t), ties
@@ -34,7 +35,7 @@ use super::bvh::Bvh;
 use super::soa::sphere_hit_t;
 use super::triangle::Shear;
 use super::{Ray, Shape};
-use crate::core::lanes::{lanes_of, Wide, W, W3};
+use crate::core::lanes::{lanes_of, mask_of, Wide, W, W3};
 use crate::core::rounding::gamma;
 use crate::core::{Real, Vector, V3};
 
@@ -481,8 +482,22 @@ impl<R: Real> WideBvh<R> {
             }
             return;
         }
+        self.traverse_from(r, root, t_max, leaf);
+    }
+
+    /// [`WideBvh::traverse`] of the subtree under `start` (a node or a leaf the ray has
+    /// reached with this t_max), as the whole search would visit it.
+    #[inline(always)]
+    fn traverse_from(
+        &self,
+        r: &Prepared<R>,
+        start: Ref,
+        t_max: R,
+        mut leaf: impl FnMut(Ref, &mut R) -> bool,
+    ) {
+        let mut t_max = t_max;
         let mut stack = Stack::<R>::new();
-        let mut cur = root;
+        let mut cur = start;
         loop {
             if cur >> KIND == NODE {
                 let node = &self.nodes[(cur & INDEX) as usize];
@@ -528,61 +543,79 @@ impl<R: Real> WideBvh<R> {
         let r = Prepared::of(ray, !self.triangles.is_empty());
         let mut best = None;
         self.traverse(&r, ray, t_max, |leaf, t_max| {
-            let index = (leaf & INDEX) as usize;
-            match leaf >> KIND {
-                SPHERES => {
-                    let l = &self.spheres[index];
-                    let (hit, t, slow) =
-                        sphere_hit_t(r.o3, r.d3, l.center, l.r2, W::<R>::splat(*t_max));
-                    let (hit, slow) = (hit.bits() & l.used, slow.bits() & l.used);
-                    if hit | slow != 0 {
-                        let t = t.to_array();
-                        for k in lanes_of(hit | slow) {
-                            let found = if slow & (1 << k) != 0 {
-                                shapes[l.shape[k] as usize].hit_t(ray, *t_max)
-                            } else {
-                                // A sphere's t does not depend on t_max: only whether it counts.
-                                Some(t.as_ref()[k]).filter(|&t| t < *t_max)
-                            };
-                            if let Some(t) = found {
-                                *t_max = t;
-                                best = Some((l.shape[k], t));
-                            }
-                        }
-                    }
-                }
-                TRIANGLES => {
-                    let l = &self.triangles[index];
-                    let (hit, t, slow) = triangle_hit_t(l, &r, *t_max);
-                    if hit | slow != 0 {
-                        let t = t.to_array();
-                        let mut lowered = false;
-                        for k in lanes_of(hit | slow) {
-                            let found = if lowered || slow & (1 << k) != 0 {
-                                shapes[l.shape[k] as usize].hit_t(ray, *t_max)
-                            } else {
-                                Some(t.as_ref()[k])
-                            };
-                            if let Some(t) = found {
-                                *t_max = t;
-                                lowered = true;
-                                best = Some((l.shape[k], t));
-                            }
-                        }
-                    }
-                }
-                _ => {
-                    let (first, count) = self.mixed[index];
-                    for &i in &self.mixed_shapes[first as usize..(first + count) as usize] {
-                        if let Some(t) = shapes[i as usize].hit_t(ray, *t_max) {
+            if let Some(i) = self.nearest_leaf(shapes, &r, ray, leaf, t_max) {
+                best = Some((i, *t_max));
+            }
+            false
+        });
+        best
+    }
+
+    /// The shapes of `leaf` against one ray, in the binary leaf's order, each hit nearer than
+    /// `t_max` lowering it: the last shape accepted (its t is then `t_max`), if any.
+    #[inline(always)]
+    fn nearest_leaf(
+        &self,
+        shapes: &[Shape<R>],
+        r: &Prepared<R>,
+        ray: &Ray<R>,
+        leaf: Ref,
+        t_max: &mut R,
+    ) -> Option<u32> {
+        let index = (leaf & INDEX) as usize;
+        let mut best = None;
+        match leaf >> KIND {
+            SPHERES => {
+                let l = &self.spheres[index];
+                let (hit, t, slow) =
+                    sphere_hit_t(r.o3, r.d3, l.center, l.r2, W::<R>::splat(*t_max));
+                let (hit, slow) = (hit.bits() & l.used, slow.bits() & l.used);
+                if hit | slow != 0 {
+                    let t = t.to_array();
+                    for k in lanes_of(hit | slow) {
+                        let found = if slow & (1 << k) != 0 {
+                            shapes[l.shape[k] as usize].hit_t(ray, *t_max)
+                        } else {
+                            // A sphere's t does not depend on t_max: only whether it counts.
+                            Some(t.as_ref()[k]).filter(|&t| t < *t_max)
+                        };
+                        if let Some(t) = found {
                             *t_max = t;
-                            best = Some((i, t));
+                            best = Some(l.shape[k]);
                         }
                     }
                 }
             }
-            false
-        });
+            TRIANGLES => {
+                let l = &self.triangles[index];
+                let (hit, t, slow) = triangle_hit_t(l, r, *t_max);
+                if hit | slow != 0 {
+                    let t = t.to_array();
+                    let mut lowered = false;
+                    for k in lanes_of(hit | slow) {
+                        let found = if lowered || slow & (1 << k) != 0 {
+                            shapes[l.shape[k] as usize].hit_t(ray, *t_max)
+                        } else {
+                            Some(t.as_ref()[k])
+                        };
+                        if let Some(t) = found {
+                            *t_max = t;
+                            lowered = true;
+                            best = Some(l.shape[k]);
+                        }
+                    }
+                }
+            }
+            _ => {
+                let (first, count) = self.mixed[index];
+                for &i in &self.mixed_shapes[first as usize..(first + count) as usize] {
+                    if let Some(t) = shapes[i as usize].hit_t(ray, *t_max) {
+                        *t_max = t;
+                        best = Some(i);
+                    }
+                }
+            }
+        }
         best
     }
 
@@ -593,32 +626,591 @@ impl<R: Real> WideBvh<R> {
         let r = Prepared::of(ray, !self.triangles.is_empty());
         let mut found = false;
         self.traverse(&r, ray, t_max, |leaf, t_max| {
-            let t_max = *t_max;
-            let index = (leaf & INDEX) as usize;
-            let scalar = |i: u32| shapes[i as usize].hit_t(ray, t_max).is_some();
-            found = match leaf >> KIND {
-                SPHERES => {
-                    let l = &self.spheres[index];
-                    let (hit, _, slow) =
-                        sphere_hit_t(r.o3, r.d3, l.center, l.r2, W::<R>::splat(t_max));
-                    hit.bits() & l.used != 0
-                        || lanes_of(slow.bits() & l.used).any(|k| scalar(l.shape[k]))
-                }
-                TRIANGLES => {
-                    let l = &self.triangles[index];
-                    let (hit, _, slow) = triangle_hit_t(l, &r, t_max);
-                    hit != 0 || lanes_of(slow).any(|k| scalar(l.shape[k]))
-                }
-                _ => {
-                    let (first, count) = self.mixed[index];
-                    self.mixed_shapes[first as usize..(first + count) as usize]
-                        .iter()
-                        .any(|&i| scalar(i))
-                }
-            };
+            found = self.occluded_leaf(shapes, &r, ray, leaf, *t_max);
             found
         });
         found
+    }
+
+    /// Whether some shape of `leaf` meets the ray with 0 < t < `t_max`.
+    #[inline(always)]
+    fn occluded_leaf(
+        &self,
+        shapes: &[Shape<R>],
+        r: &Prepared<R>,
+        ray: &Ray<R>,
+        leaf: Ref,
+        t_max: R,
+    ) -> bool {
+        let index = (leaf & INDEX) as usize;
+        let scalar = |i: u32| shapes[i as usize].hit_t(ray, t_max).is_some();
+        match leaf >> KIND {
+            SPHERES => {
+                let l = &self.spheres[index];
+                let (hit, _, slow) = sphere_hit_t(r.o3, r.d3, l.center, l.r2, W::<R>::splat(t_max));
+                hit.bits() & l.used != 0
+                    || lanes_of(slow.bits() & l.used).any(|k| scalar(l.shape[k]))
+            }
+            TRIANGLES => {
+                let l = &self.triangles[index];
+                let (hit, _, slow) = triangle_hit_t(l, r, t_max);
+                hit != 0 || lanes_of(slow).any(|k| scalar(l.shape[k]))
+            }
+            _ => {
+                let (first, count) = self.mixed[index];
+                self.mixed_shapes[first as usize..(first + count) as usize]
+                    .iter()
+                    .any(|&i| scalar(i))
+            }
+        }
+    }
+}
+
+/// A packet of rays in lanes (lane k the packet's ray k): origins, 1/D and directions, for the
+/// slab tests of one child box against every ray and the sphere tests of one sphere against
+/// every ray. Lanes past the packet's end repeat its first ray and are never active.
+struct Packet<R: Real> {
+    o: [W<R>; 3],
+    inv: [W<R>; 3],
+    o3: W3<W<R>>,
+    d3: W3<W<R>>,
+    /// Each ray's octant of D (by the sign of 1/D), as [`Prepared`] has it.
+    octant: [u8; MAX_WIDTH],
+}
+
+impl<R: Real> Packet<R> {
+    fn of(rays: &[Ray<R>]) -> Self {
+        debug_assert!(!rays.is_empty() && rays.len() <= W::<R>::LANES);
+        let mut o = [<W<R> as Wide>::Array::default(); 3];
+        let mut inv = [<W<R> as Wide>::Array::default(); 3];
+        let mut octant = [0u8; MAX_WIDTH];
+        for (k, octant) in octant.iter_mut().enumerate().take(W::<R>::LANES) {
+            let ray = rays.get(k).unwrap_or(&rays[0]);
+            let (ok, ik) = (
+                ray.origin.to_array(),
+                inverse::<R>(ray.direction).to_array(),
+            );
+            for a in 0..3 {
+                o[a].as_mut()[k] = ok[a];
+                inv[a].as_mut()[k] = ik[a];
+                *octant |= u8::from(ik[a] < R::ZERO) << a;
+            }
+        }
+        let o = o.map(W::<R>::from_array);
+        let first = rays[0];
+        Packet {
+            o,
+            inv: inv.map(W::<R>::from_array),
+            o3: W3 {
+                x: o[0],
+                y: o[1],
+                z: o[2],
+            },
+            d3: W3::gather(rays.iter().map(|r| r.direction), first.direction),
+            octant,
+        }
+    }
+
+    /// The lanes of `live` whose ray has octant `o`.
+    fn lanes_in(&self, o: u8, live: u32) -> u32 {
+        lanes_of(live)
+            .filter(|&k| self.octant[k] == o)
+            .fold(0, |m, k| m | 1 << k)
+    }
+}
+
+/// [`Aabb::hit`] of one box against every ray of a packet whose rays share the octant whose
+/// near sides are `near` (the box's near and far planes by axis): the mask of the rays that
+/// meet it within [0, t_max] and each ray's t₀. Lane for lane, the arithmetic of [`slab`].
+#[inline(always)]
+fn slab_rays<R: Real>(near: [R; 3], far: [R; 3], p: &Packet<R>, t_max: W<R>) -> (u32, W<R>) {
+    let widen = W::<R>::splat(R::ONE + R::TWO * gamma::<R>(3));
+    let mut t0 = W::<R>::splat(R::ZERO);
+    let mut t1 = t_max;
+    for a in 0..3 {
+        let t_near = (W::<R>::splat(near[a]) - p.o[a]) * p.inv[a];
+        let t_far = (W::<R>::splat(far[a]) - p.o[a]) * p.inv[a] * widen;
+        t0 = t_near.gt(t0).select(t_near, t0);
+        t1 = t_far.lt(t1).select(t_far, t1);
+    }
+    (t1.lt(t0).not().bits(), t0)
+}
+
+/// Rays the packet traversal takes on together: with this many or fewer, each ray goes on by
+/// itself (the lanes of the rays that left would be computed for nothing). Measured on 100,000
+/// spheres (callgrind): f64 packets pay only with all 4 lanes, f32 ones with 5 of 8 or more.
+fn few<R: Real>() -> usize {
+    let lanes = W::<R>::LANES;
+    if lanes <= 4 {
+        lanes - 1
+    } else {
+        lanes / 2
+    }
+}
+
+/// The packet traversal's stack: references with the mask of the rays that met the box and
+/// each ray's t₀ of it.
+struct PacketStack<R: Real> {
+    refs: [Ref; STACK],
+    masks: [u32; STACK],
+    t0: [W<R>; STACK],
+    len: usize,
+    spill: Vec<(Ref, u32, W<R>)>,
+}
+
+impl<R: Real> PacketStack<R> {
+    #[inline(always)]
+    fn new() -> Self {
+        PacketStack {
+            refs: [0; STACK],
+            masks: [0; STACK],
+            t0: [W::<R>::splat(R::ZERO); STACK],
+            len: 0,
+            spill: Vec::new(),
+        }
+    }
+
+    #[inline(always)]
+    fn push(&mut self, r: Ref, mask: u32, t0: W<R>) {
+        if self.len < STACK {
+            self.refs[self.len] = r;
+            self.masks[self.len] = mask;
+            self.t0[self.len] = t0;
+        } else {
+            self.spill.push((r, mask, t0));
+        }
+        self.len += 1;
+    }
+
+    #[inline(always)]
+    fn pop(&mut self) -> Option<(Ref, u32, W<R>)> {
+        if self.len == 0 {
+            return None;
+        }
+        self.len -= 1;
+        if self.len < STACK {
+            Some((self.refs[self.len], self.masks[self.len], self.t0[self.len]))
+        } else {
+            self.spill.pop()
+        }
+    }
+}
+
+/// Each ray's one-ray form, made when a leaf of triangles (or of both kinds) first needs it.
+struct Lazy<R: Real> {
+    prepared: [Option<Prepared<R>>; MAX_WIDTH],
+}
+
+impl<R: Real> Lazy<R> {
+    fn new() -> Self {
+        Lazy {
+            prepared: std::array::from_fn(|_| None),
+        }
+    }
+
+    #[inline]
+    fn get(&mut self, k: usize, ray: &Ray<R>, triangles: bool) -> &Prepared<R> {
+        self.prepared[k].get_or_insert_with(|| Prepared::of(ray, triangles))
+    }
+}
+
+/// **Packets.** A packet of up to [`Wide::LANES`] rays goes down the tree together, one octant
+/// of D at a time (the rays of other octants wait for their own pass): each child box is
+/// tested against every ray of the packet in lanes, and each ray goes on only into the boxes
+/// its own test passed. For one octant the binary traversal's order of a node's children is
+/// the same for every ray, so each ray meets its leaves in its own one-ray order with its own
+/// t_max at each (the rays' searches only interleave), and its answer is the one-ray search's,
+/// to the bit: the nearest (shape, t), ties included, and the same occlusion.
+impl<R: Real> WideBvh<R> {
+    /// [`WideBvh::nearest`] of each ray of `rays` (at most [`Wide::LANES`]) in `live`, from its
+    /// `t_max[k]`: where the search accepts a hit, `t_max[k]` becomes its t and `best[k]` its
+    /// shape.
+    pub(crate) fn nearest_packet(
+        &self,
+        shapes: &[Shape<R>],
+        rays: &[Ray<R>],
+        live: u32,
+        t_max: &mut [R],
+        best: &mut [Option<u32>],
+    ) {
+        let Some((root, _)) = self.root else {
+            return;
+        };
+        if root >> KIND != NODE || live.count_ones() < 2 {
+            for k in lanes_of(live) {
+                if let Some((i, t)) = self.nearest(shapes, &rays[k], t_max[k]) {
+                    (t_max[k], best[k]) = (t, Some(i));
+                }
+            }
+            return;
+        }
+        let p = Packet::of(rays);
+        let mut tm = <W<R> as Wide>::Array::default();
+        tm.as_mut()[..rays.len()].copy_from_slice(&t_max[..rays.len()]);
+        let mut tm = W::<R>::from_array(tm);
+        let mut lazy = Lazy::new();
+        let mut left = live;
+        while left != 0 {
+            let octant = p.octant[left.trailing_zeros() as usize];
+            let group = p.lanes_in(octant, left);
+            left &= !group;
+            self.nearest_group(shapes, rays, &p, &mut lazy, octant, group, &mut tm, best);
+        }
+        let tm = tm.to_array();
+        for k in lanes_of(live) {
+            t_max[k] = tm.as_ref()[k];
+        }
+    }
+
+    /// One octant's pass of [`WideBvh::nearest_packet`]: the rays of `group`, with their t_max
+    /// in `tm`.
+    #[allow(clippy::too_many_arguments)]
+    #[inline(always)]
+    fn nearest_group(
+        &self,
+        shapes: &[Shape<R>],
+        rays: &[Ray<R>],
+        p: &Packet<R>,
+        lazy: &mut Lazy<R>,
+        octant: u8,
+        group: u32,
+        tm: &mut W<R>,
+        best: &mut [Option<u32>],
+    ) {
+        let Some((root, _)) = self.root else {
+            return;
+        };
+        let mut stack = PacketStack::<R>::new();
+        let (mut cur, mut active) = (root, group);
+        let mut masks = [0u32; MAX_WIDTH];
+        let mut t0 = [W::<R>::splat(R::ZERO); MAX_WIDTH];
+        loop {
+            if active.count_ones() as usize <= few::<R>() {
+                // Too few rays left for lanes to pay: each finishes this subtree alone.
+                let mut a = tm.to_array();
+                for k in lanes_of(active) {
+                    let r = lazy.get(k, &rays[k], !self.triangles.is_empty());
+                    let ray = &rays[k];
+                    let mut t_k = a.as_ref()[k];
+                    self.traverse_from(r, cur, t_k, |leaf, t_max| {
+                        if let Some(i) = self.nearest_leaf(shapes, r, ray, leaf, t_max) {
+                            best[k] = Some(i);
+                            t_k = *t_max;
+                        }
+                        false
+                    });
+                    a.as_mut()[k] = t_k;
+                }
+                *tm = W::<R>::from_array(a);
+            } else if cur >> KIND == NODE {
+                let node = &self.nodes[(cur & INDEX) as usize];
+                let met = self.children(node, p, octant, active, *tm, &mut masks, &mut t0);
+                if met != 0 && met & (met - 1) == 0 {
+                    // One child met by any ray: straight into it with the rays that met it.
+                    let k = met.trailing_zeros() as usize;
+                    (cur, active) = (node.child[k], masks[k]);
+                    continue;
+                }
+                if met != 0 {
+                    let mut order = node.order[octant as usize];
+                    for _ in 0..node.count {
+                        let k = (order & 7) as usize;
+                        order >>= 3;
+                        if met & (1 << k) != 0 {
+                            stack.push(node.child[k], masks[k], t0[k]);
+                        }
+                    }
+                }
+            } else {
+                self.nearest_leaf_packet(shapes, rays, p, lazy, cur, active, tm, best);
+            }
+            // The next entry with a ray whose box is still met before its (perhaps lowered)
+            // t_max
+            loop {
+                match stack.pop() {
+                    None => return,
+                    Some((next, mask, t0)) => {
+                        let still = mask & le(t0, *tm).bits();
+                        if still != 0 {
+                            (cur, active) = (next, still);
+                            break;
+                        }
+                    }
+                }
+            }
+        }
+    }
+
+    /// Each child box of `node` against the rays of `active` (of one octant): per child, the
+    /// rays that meet it (`masks`) and their t₀; the mask of the children some ray meets.
+    #[allow(clippy::too_many_arguments)]
+    #[inline(always)]
+    fn children(
+        &self,
+        node: &Node<R>,
+        p: &Packet<R>,
+        octant: u8,
+        active: u32,
+        tm: W<R>,
+        masks: &mut [u32; MAX_WIDTH],
+        t0: &mut [W<R>; MAX_WIDTH],
+    ) -> u32 {
+        let side = [0, 1, 2].map(|a| usize::from(octant >> a & 1));
+        let near = [0, 1, 2].map(|a| node.bounds[side[a]][a].to_array());
+        let far = [0, 1, 2].map(|a| node.bounds[side[a] ^ 1][a].to_array());
+        let mut met = 0;
+        for c in 0..node.count as usize {
+            let (m, t) = slab_rays(
+                [
+                    near[0].as_ref()[c],
+                    near[1].as_ref()[c],
+                    near[2].as_ref()[c],
+                ],
+                [far[0].as_ref()[c], far[1].as_ref()[c], far[2].as_ref()[c]],
+                p,
+                tm,
+            );
+            masks[c] = m & active;
+            t0[c] = t;
+            met |= u32::from(masks[c] != 0) << c;
+        }
+        met
+    }
+
+    /// The shapes of `leaf` against the rays of `active`: a leaf of spheres one sphere at a
+    /// time against the packet in lanes (each ray's hits in the leaf's order, as the one-ray
+    /// test takes them), other leaves by the one-ray test, ray by ray.
+    #[allow(clippy::too_many_arguments)]
+    #[inline(always)]
+    fn nearest_leaf_packet(
+        &self,
+        shapes: &[Shape<R>],
+        rays: &[Ray<R>],
+        p: &Packet<R>,
+        lazy: &mut Lazy<R>,
+        leaf: Ref,
+        active: u32,
+        tm: &mut W<R>,
+        best: &mut [Option<u32>],
+    ) {
+        if leaf >> KIND == SPHERES {
+            let l = &self.spheres[(leaf & INDEX) as usize];
+            let (cx, cy, cz) = (
+                l.center.x.to_array(),
+                l.center.y.to_array(),
+                l.center.z.to_array(),
+            );
+            let r2 = l.r2.to_array();
+            let lanes = mask_of::<W<R>>(active);
+            for s in lanes_of(l.used) {
+                let c = W3 {
+                    x: W::<R>::splat(cx.as_ref()[s]),
+                    y: W::<R>::splat(cy.as_ref()[s]),
+                    z: W::<R>::splat(cz.as_ref()[s]),
+                };
+                let (hit, t, slow) =
+                    sphere_hit_t(p.o3, p.d3, c, W::<R>::splat(r2.as_ref()[s]), *tm);
+                let (hit_bits, slow) = (hit.bits() & active, slow.bits() & active);
+                if hit_bits | slow == 0 {
+                    continue;
+                }
+                let shape = l.shape[s];
+                if hit_bits != 0 {
+                    let take = hit.and(lanes);
+                    *tm = take.select(t, *tm);
+                    for k in lanes_of(hit_bits) {
+                        best[k] = Some(shape);
+                    }
+                }
+                if slow != 0 {
+                    let mut a = tm.to_array();
+                    for k in lanes_of(slow) {
+                        if let Some(t) = shapes[shape as usize].hit_t(&rays[k], a.as_ref()[k]) {
+                            a.as_mut()[k] = t;
+                            best[k] = Some(shape);
+                        }
+                    }
+                    *tm = W::<R>::from_array(a);
+                }
+            }
+            return;
+        }
+        let mut a = tm.to_array();
+        for k in lanes_of(active) {
+            let r = lazy.get(k, &rays[k], !self.triangles.is_empty());
+            if let Some(i) = self.nearest_leaf(shapes, r, &rays[k], leaf, &mut a.as_mut()[k]) {
+                best[k] = Some(i);
+            }
+        }
+        *tm = W::<R>::from_array(a);
+    }
+
+    /// [`WideBvh::occluded`] of each ray of `rays` (at most [`Wide::LANES`]) in `live`, ray k
+    /// to `t_max[k]`: the mask of the rays something blocks. A ray leaves the packet at the
+    /// first shape that blocks it.
+    pub(crate) fn occluded_packet(
+        &self,
+        shapes: &[Shape<R>],
+        rays: &[Ray<R>],
+        t_max: &[R],
+        live: u32,
+    ) -> u32 {
+        let Some((root, _)) = self.root else {
+            return 0;
+        };
+        if root >> KIND != NODE || live.count_ones() < 2 {
+            return lanes_of(live)
+                .filter(|&k| self.occluded(shapes, &rays[k], t_max[k]))
+                .fold(0, |m, k| m | 1 << k);
+        }
+        let p = Packet::of(rays);
+        let mut tm = <W<R> as Wide>::Array::default();
+        tm.as_mut()[..rays.len()].copy_from_slice(&t_max[..rays.len()]);
+        let tm = W::<R>::from_array(tm);
+        let mut lazy = Lazy::new();
+        let mut blocked = 0;
+        let mut left = live;
+        while left != 0 {
+            let octant = p.octant[left.trailing_zeros() as usize];
+            let group = p.lanes_in(octant, left);
+            left &= !group;
+            blocked |= self.occluded_group(shapes, rays, &p, &mut lazy, octant, group, tm);
+        }
+        blocked
+    }
+
+    /// One octant's pass of [`WideBvh::occluded_packet`]: the mask of the rays of `group`
+    /// something blocks. (The answer does not depend on the order of the visit; the octant's
+    /// is taken for its near and far sides.)
+    #[allow(clippy::too_many_arguments)]
+    #[inline(always)]
+    fn occluded_group(
+        &self,
+        shapes: &[Shape<R>],
+        rays: &[Ray<R>],
+        p: &Packet<R>,
+        lazy: &mut Lazy<R>,
+        octant: u8,
+        group: u32,
+        tm: W<R>,
+    ) -> u32 {
+        let Some((root, _)) = self.root else {
+            return 0;
+        };
+        let mut stack = PacketStack::<R>::new();
+        let (mut cur, mut active) = (root, group);
+        let mut blocked = 0u32;
+        let t_max = tm.to_array();
+        let mut masks = [0u32; MAX_WIDTH];
+        let mut t0 = [W::<R>::splat(R::ZERO); MAX_WIDTH];
+        loop {
+            if active.count_ones() as usize <= few::<R>() {
+                // Too few rays left for lanes to pay: each searches this subtree alone.
+                for k in lanes_of(active) {
+                    let r = lazy.get(k, &rays[k], !self.triangles.is_empty());
+                    let (ray, t_k) = (&rays[k], t_max.as_ref()[k]);
+                    let mut found = false;
+                    self.traverse_from(r, cur, t_k, |leaf, t_max| {
+                        found = self.occluded_leaf(shapes, r, ray, leaf, *t_max);
+                        found
+                    });
+                    blocked |= u32::from(found) << k;
+                }
+                if group & !blocked == 0 {
+                    return blocked;
+                }
+            } else if cur >> KIND == NODE {
+                let node = &self.nodes[(cur & INDEX) as usize];
+                let met = self.children(node, p, octant, active, tm, &mut masks, &mut t0);
+                if met != 0 && met & (met - 1) == 0 {
+                    let k = met.trailing_zeros() as usize;
+                    (cur, active) = (node.child[k], masks[k]);
+                    continue;
+                }
+                let mut order = node.order[octant as usize];
+                for _ in 0..node.count {
+                    let k = (order & 7) as usize;
+                    order >>= 3;
+                    if met & (1 << k) != 0 {
+                        stack.push(node.child[k], masks[k], t0[k]);
+                    }
+                }
+            } else {
+                let b = self.occluded_leaf_packet(shapes, rays, p, lazy, cur, active, tm, &t_max);
+                blocked |= b;
+                if group & !blocked == 0 {
+                    return blocked;
+                }
+            }
+            // The rays not yet blocked whose box is met before t_max (which does not change)
+            loop {
+                match stack.pop() {
+                    None => return blocked,
+                    Some((next, mask, t0)) => {
+                        let still = mask & le(t0, tm).bits() & !blocked;
+                        if still != 0 {
+                            (cur, active) = (next, still);
+                            break;
+                        }
+                    }
+                }
+            }
+        }
+    }
+
+    /// The rays of `active` some shape of `leaf` blocks.
+    #[allow(clippy::too_many_arguments)]
+    #[inline(always)]
+    fn occluded_leaf_packet(
+        &self,
+        shapes: &[Shape<R>],
+        rays: &[Ray<R>],
+        p: &Packet<R>,
+        lazy: &mut Lazy<R>,
+        leaf: Ref,
+        active: u32,
+        tm: W<R>,
+        t_max: &<W<R> as Wide>::Array,
+    ) -> u32 {
+        let mut blocked = 0;
+        if leaf >> KIND == SPHERES {
+            let l = &self.spheres[(leaf & INDEX) as usize];
+            let (cx, cy, cz) = (
+                l.center.x.to_array(),
+                l.center.y.to_array(),
+                l.center.z.to_array(),
+            );
+            let r2 = l.r2.to_array();
+            for s in lanes_of(l.used) {
+                let c = W3 {
+                    x: W::<R>::splat(cx.as_ref()[s]),
+                    y: W::<R>::splat(cy.as_ref()[s]),
+                    z: W::<R>::splat(cz.as_ref()[s]),
+                };
+                let (hit, _, slow) = sphere_hit_t(p.o3, p.d3, c, W::<R>::splat(r2.as_ref()[s]), tm);
+                let open = active & !blocked;
+                blocked |= hit.bits() & open;
+                for k in lanes_of(slow.bits() & open) {
+                    if shapes[l.shape[s] as usize]
+                        .hit_t(&rays[k], t_max.as_ref()[k])
+                        .is_some()
+                    {
+                        blocked |= 1 << k;
+                    }
+                }
+                if active & !blocked == 0 {
+                    break;
+                }
+            }
+            return blocked;
+        }
+        for k in lanes_of(active) {
+            let r = lazy.get(k, &rays[k], !self.triangles.is_empty());
+            if self.occluded_leaf(shapes, r, &rays[k], leaf, t_max.as_ref()[k]) {
+                blocked |= 1 << k;
+            }
+        }
+        blocked
     }
 }
 
@@ -862,6 +1454,97 @@ mod tests {
                 assert_eq!(t, brute, "{kind:?} n = {n} {ray:?}");
             }
         }
+        packets_agree::<R>(&mut rng, &agg, &shapes, kind, n, scale, rays / 4 + 1);
+    }
+
+    /// A packet of `lanes` rays: awkward ones of every kind mixed (octants, ±0 components,
+    /// origins inside boxes), or a coherent bundle from one point (a tile of primary rays),
+    /// perhaps with a lane or two of another kind.
+    fn packet<R: Real>(
+        rng: &mut Rng,
+        shapes: &[Shape<R>],
+        scale: f64,
+        lanes: usize,
+    ) -> Vec<Ray<R>> {
+        let mut rays: Vec<Ray<R>> = match rng.next_u64() % 3 {
+            0 => (0..lanes).map(|_| ray::<R>(rng, shapes, scale)).collect(),
+            _ => {
+                let o = ray::<R>(rng, shapes, scale).origin;
+                let d = rng.direction();
+                (0..lanes)
+                    .map(|_| {
+                        let e = rng.direction();
+                        let d = [0, 1, 2].map(|a| d[a] + 0.05 * e[a]);
+                        let l = (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt();
+                        Ray {
+                            origin: o,
+                            direction: v3::<R>(d.map(|x| x / l)),
+                        }
+                    })
+                    .collect()
+            }
+        };
+        if rng.unit() < 0.3 {
+            let k = (rng.next_u64() % lanes as u64) as usize;
+            rays[k] = ray::<R>(rng, shapes, scale);
+        }
+        rays
+    }
+
+    /// The packet searches against the one-ray searches (and so the binary ones), ray for ray:
+    /// the nearest (shape, t) and the hit's point bit for bit, and occlusion, with t_max
+    /// limits, over packets of every size.
+    fn packets_agree<R: Real>(
+        rng: &mut Rng,
+        agg: &Aggregate<R>,
+        shapes: &[Shape<R>],
+        kind: Soup,
+        n: usize,
+        scale: f64,
+        packets: usize,
+    ) {
+        let lanes = W::<R>::LANES;
+        for p in 0..packets {
+            let len = 1 + p % lanes;
+            let rays = packet::<R>(rng, shapes, scale, len);
+            let t_max: Vec<R> = (0..len)
+                .map(|k| match (p + k) % 4 {
+                    0 | 1 => R::from_f64(f64::INFINITY),
+                    2 => R::from_f64(scale * rng.range(0.0, 20.0)),
+                    _ => R::from_f64(scale * rng.range(0.0, 1.0)),
+                })
+                .collect();
+            let mut got = vec![None; len];
+            agg.nearest_packet_within(&rays, &t_max, &mut got);
+            let want = (1u32 << len) - 1;
+            let blocked = agg.occluded_packet(&rays, &t_max, want);
+            let bits = |h: &Option<crate::geometry::AggregateHit<R>>| {
+                h.map(|h| {
+                    let p = h.hit.p.to_array().map(|x| x.to_f64().to_bits());
+                    (h.index, h.hit.t.to_f64().to_bits(), p)
+                })
+            };
+            for (k, ray) in rays.iter().enumerate() {
+                let one = agg.nearest(ray, t_max[k]);
+                assert_eq!(
+                    bits(&got[k]),
+                    bits(&one),
+                    "{kind:?} n = {n} scale {scale} {}: lane {k} of {len}, {ray:?} t_max {}",
+                    R::NAME,
+                    t_max[k]
+                );
+                assert_eq!(
+                    blocked & (1 << k) != 0,
+                    agg.occluded(ray, t_max[k]),
+                    "{kind:?} n = {n} {}: lane {k} of {len}, {ray:?} t_max {}",
+                    R::NAME,
+                    t_max[k]
+                );
+            }
+            // Only the lanes asked about are answered.
+            let some = want & 0b1011_0101;
+            assert_eq!(agg.occluded_packet(&rays, &t_max, some), blocked & some);
+        }
     }
 
     #[test]
@@ -993,7 +1676,8 @@ mod tests {
         for shapes in [vec![s; 3000], vec![t; 3000]] {
             let agg = Aggregate::new(shapes);
             let mut rng = Rng::new(21);
-            for _ in 0..50 {
+            let mut rays = Vec::new();
+            for _ in 0..64 {
                 let d = rng.direction();
                 let ray = Ray {
                     origin: v3::<R>([1.0, 1.0, -4.0]),
@@ -1003,6 +1687,25 @@ mod tests {
                 let want = agg.nearest_binary(&ray, inf);
                 assert_eq!(agg.nearest(&ray, inf).map(|h| (h.index, h.hit.t)), want);
                 assert_eq!(agg.occluded(&ray, inf), agg.occluded_binary(&ray, inf));
+                // Packets of one octant (the lanes go down together), each octant in turn.
+                let (dx, dy) = ((d[0] * 0.1).abs(), (d[1] * 0.1).abs());
+                let octant = rays.len() / W::<R>::LANES % 4;
+                let sx = if octant & 1 == 0 { dx } else { -dx };
+                let sy = if octant & 2 == 0 { dy } else { -dy };
+                rays.push(Ray {
+                    origin: ray.origin,
+                    direction: v3::<R>([sx, sy, 1.0]),
+                });
+            }
+            // In packets too: every ray meets every shape at the same t, and each lane's
+            // winner is its own binary search's.
+            for packet in rays.chunks(W::<R>::LANES) {
+                let mut got = vec![None; packet.len()];
+                agg.nearest_packet(packet, &mut got);
+                for (ray, got) in packet.iter().zip(&got) {
+                    let want = agg.nearest_binary(ray, R::from_f64(f64::INFINITY));
+                    assert_eq!(got.map(|h| (h.index, h.hit.t)), want);
+                }
             }
         }
     }

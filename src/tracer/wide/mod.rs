@@ -18,8 +18,9 @@
 //! intersection is the aggregate's to the bit ([`FlatScene`]). So the image is the scalar
 //! tracer's, byte for byte, in both precisions (src/tracer/wide/tests.rs). Scenes the packets do not cover
 //! (more than a handful of spheres, which the aggregate puts in a BVH, or triangles) take the
-//! same queues and the same shading in lanes with the aggregate's scalar intersection and
-//! occlusion, lane by lane.
+//! same queues and the same shading in lanes with the aggregate's packet searches of its wide
+//! BVH ([`Aggregate::nearest_packet`], [`Aggregate::occluded_packet`]), each ray's answer the
+//! one-ray search's to the bit.
 
 use super::camera::CameraRays;
 use super::render::{clamped, mean};
@@ -176,8 +177,8 @@ fn distinct_materials<R: Real>(all: &[Material<R>]) -> (Vec<u32>, Vec<Material<R
 
 /// The wide engine's side of the core's [`shade_lanes`]: the shadow rays of a register of hits
 /// on one material, built as [`crate::geometry::shadow::ShadowRays`] builds them and tested as a
-/// packet ([`FlatScene::occluded_packet`], or the aggregate's `occluded` lane by lane for scenes
-/// in a BVH), counted as the scalar engine counts them.
+/// packet ([`FlatScene::occluded_packet`], or [`Aggregate::occluded_packet`] through the wide
+/// BVH for scenes in a BVH), counted as the scalar engine counts them.
 struct WideSide<'a, R: Real, const SHADOWS: bool> {
     aggregate: &'a Aggregate<R>,
     flat: Option<&'a FlatScene<R>>,
@@ -234,9 +235,9 @@ impl<R: Real, const SHADOWS: bool> LaneSide<W<R>> for WideSide<'_, R, SHADOWS> {
         }
         let blocked = match self.flat {
             Some(flat) => flat.occluded_packet(&rays[..lanes], &t_max[..lanes], want),
-            None => lanes_of(want)
-                .filter(|&k| self.aggregate.occluded(&rays[k], t_max[k]))
-                .fold(0, |b, k| b | 1 << k),
+            None => self
+                .aggregate
+                .occluded_packet(&rays[..lanes], &t_max[..lanes], want),
         };
         need.and(mask_of::<W<R>>(blocked).not())
     }
