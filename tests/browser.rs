@@ -11,7 +11,10 @@
 //! `.ci/run` installs chromium. Under `CI=true` a missing chromium is a failure; elsewhere the
 //! test says it was skipped and why.
 
+#[path = "support/screenshot.rs"]
+mod screenshot;
 mod support;
+use screenshot::pixels_of;
 
 use std::path::{Path, PathBuf};
 use std::time::Duration;
@@ -119,28 +122,6 @@ fn the_rendered_page_holds_the_diagram_of_each_light_with_its_labels() {
     }
 }
 
-/// The number of pixels of exactly this colour in an RGB or RGBA PNG.
-fn pixels_of(png_path: &Path, rgb: [u8; 3]) -> (usize, usize) {
-    let decoder = png::Decoder::new(std::io::BufReader::new(
-        std::fs::File::open(png_path).unwrap(),
-    ));
-    let mut reader = decoder.read_info().unwrap();
-    let mut buf = vec![0; reader.output_buffer_size().unwrap()];
-    let info = reader.next_frame(&mut buf).unwrap();
-    let channels = match info.color_type {
-        png::ColorType::Rgb => 3,
-        png::ColorType::Rgba => 4,
-        other => panic!("unexpected PNG colour type {other:?}"),
-    };
-    let data = &buf[..info.buffer_size()];
-    let total = data.len() / channels;
-    let hits = data
-        .chunks_exact(channels)
-        .filter(|p| p[..3] == rgb)
-        .count();
-    (hits, total)
-}
-
 #[test]
 fn a_screenshot_shows_the_colour_swatch_and_the_diagram() {
     let Some(browser) = support::require("chromium", INSTALL) else {
@@ -164,17 +145,17 @@ fn a_screenshot_shows_the_colour_swatch_and_the_diagram() {
     };
     // 4.1: the colour (0.5, 0.7, 0.3) is (128, 179, 77) in 8 bits (0.7·255 = 178.5 rounds up
     // in f64); the large swatch is 4rem square, at least 60×60 pixels.
-    let png = shot("4.1");
-    let (white, total) = pixels_of(&png, [255, 255, 255]);
+    let png_bytes = std::fs::read(shot("4.1")).expect("the screenshot is written");
+    let (white, total) = pixels_of(&png_bytes, [255, 255, 255]);
     assert!(white < total * 97 / 100, "the screenshot is blank");
-    let (swatch, _) = pixels_of(&png, [128, 179, 77]);
+    let (swatch, _) = pixels_of(&png_bytes, [128, 179, 77]);
     assert!(
         swatch >= 60 * 60,
         "only {swatch} pixels of the colour swatch"
     );
     // 4.2: the diagram is drawn: the light's marker is filled with #ffd633.
-    let png = shot("4.2");
-    let (marker, _) = pixels_of(&png, [0xff, 0xd6, 0x33]);
+    let png_bytes = std::fs::read(shot("4.2")).expect("the screenshot is written");
+    let (marker, _) = pixels_of(&png_bytes, [0xff, 0xd6, 0x33]);
     assert!(marker >= 100, "only {marker} pixels of the light's marker");
 }
 

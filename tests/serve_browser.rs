@@ -14,6 +14,8 @@
 // `phong serve` exists only with the `serve` feature (on by default).
 #![cfg(feature = "serve")]
 
+#[path = "support/screenshot.rs"]
+mod screenshot;
 mod support;
 // Shared with the other tests of phong serve; not every test uses every helper.
 #[allow(dead_code)]
@@ -293,21 +295,7 @@ fn base64(s: &str) -> Vec<u8> {
 
 /// The share of pixels that are white, in a PNG.
 fn white_share(png_bytes: &[u8]) -> f64 {
-    let decoder = png::Decoder::new(std::io::Cursor::new(png_bytes));
-    let mut reader = decoder.read_info().unwrap();
-    let mut buf = vec![0; reader.output_buffer_size().unwrap()];
-    let info = reader.next_frame(&mut buf).unwrap();
-    let channels = match info.color_type {
-        png::ColorType::Rgb => 3,
-        png::ColorType::Rgba => 4,
-        other => panic!("unexpected PNG colour type {other:?}"),
-    };
-    let data = &buf[..info.buffer_size()];
-    let total = data.len() / channels;
-    let white = data
-        .chunks_exact(channels)
-        .filter(|p| p[..3] == [255, 255, 255])
-        .count();
+    let (white, total) = screenshot::pixels_of(png_bytes, [255, 255, 255]);
     white as f64 / total as f64
 }
 
