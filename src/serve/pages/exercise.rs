@@ -40,6 +40,34 @@ struct Input {
     bits8: bool,
 }
 
+impl Input {
+    /// The answer given: `none` for "the ray hits nothing", else the colour as written, if any.
+    fn given_answer(&self) -> Option<String> {
+        if self.no_hit {
+            Some("none".to_owned())
+        } else {
+            Some(self.answer.trim().to_owned()).filter(|a| !a.is_empty())
+        }
+    }
+
+    /// `answer` checked as `phong check` checks it, against the exercise solved at start-up.
+    fn check(&self, ex: &Exercise, answer: &str) -> check::report::Checked {
+        check::check_prepared(
+            &ex.prepared,
+            &CheckOptions {
+                answer: Some(answer.to_owned()),
+                scale: if self.bits8 {
+                    Scale::Bits8
+                } else {
+                    Scale::Unit
+                },
+                tolerance: None,
+                strict: false,
+            },
+        )
+    }
+}
+
 /// A step box: the label a student writes (`cos_theta`, or `cos_theta[1]` with several lights)
 /// and the quantity.
 struct StepBox {
@@ -125,11 +153,7 @@ pub(crate) async fn post(
 /// JSON object of the boxes filled in.
 fn record(log: &crate::serve::log::AnswerLog, ex: &Exercise, input: &Input) {
     use crate::serve::log::{now, AnswerEntry};
-    let answer = if input.no_hit {
-        Some("none".to_owned())
-    } else {
-        Some(input.answer.trim().to_owned()).filter(|a| !a.is_empty())
-    };
+    let answer = input.given_answer();
     let filled: serde_json::Map<String, serde_json::Value> = input
         .steps
         .iter()
@@ -139,22 +163,9 @@ fn record(log: &crate::serve::log::AnswerLog, ex: &Exercise, input: &Input) {
     if answer.is_none() && filled.is_empty() {
         return;
     }
-    let verdict = answer.as_ref().map(|a| {
-        let c = check::check_prepared(
-            &ex.prepared,
-            &CheckOptions {
-                answer: Some(a.clone()),
-                scale: if input.bits8 {
-                    Scale::Bits8
-                } else {
-                    Scale::Unit
-                },
-                tolerance: None,
-                strict: false,
-            },
-        );
-        check::report::json(&c).verdict
-    });
+    let verdict = answer
+        .as_deref()
+        .map(|a| check::report::json(&input.check(ex, a)).verdict);
     let steps = (!filled.is_empty())
         .then(|| {
             serde_json::value::RawValue::from_string(serde_json::Value::Object(filled).to_string())
@@ -425,11 +436,7 @@ fn verdict(ex: &Exercise, lang: Lang, input: &Input) -> (StatusCode, String) {
          <h2 id=\"verdict-h\">{}</h2>\n",
         t(Text::VerdictHeading)
     );
-    let answer = if input.no_hit {
-        Some("none".to_owned())
-    } else {
-        Some(input.answer.trim().to_owned()).filter(|a| !a.is_empty())
-    };
+    let answer = input.given_answer();
     let mut given = Vec::new();
     let mut bad = Vec::new();
     for (label, value) in &input.steps {
@@ -447,19 +454,7 @@ fn verdict(ex: &Exercise, lang: Lang, input: &Input) -> (StatusCode, String) {
         return (StatusCode::UNPROCESSABLE_ENTITY, out);
     }
     if let Some(a) = answer {
-        let c = check::check_prepared(
-            &ex.prepared,
-            &CheckOptions {
-                answer: Some(a),
-                scale: if input.bits8 {
-                    Scale::Bits8
-                } else {
-                    Scale::Unit
-                },
-                tolerance: None,
-                strict: false,
-            },
-        );
+        let c = input.check(ex, &a);
         match &c.outcome {
             Ok(j) => out.push_str(&judged(&c, j, lang)),
             Err(f) => {
