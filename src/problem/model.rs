@@ -1,6 +1,8 @@
 //! A validated problem, in the precision it will be solved in: the core's types plus what the
 //! explanation needs to say about how each quantity was given.
 
+use std::sync::Arc;
+
 use super::error::Invalid;
 use super::format::MaterialSpec;
 use super::validate::{check_max_level, check_min_weight, check_samples};
@@ -11,13 +13,13 @@ use crate::geometry::{Ray, Shape};
 #[derive(Clone, Debug)]
 pub struct Problem<R: Real> {
     /// The file's `title`, shown as the explanation's heading.
-    pub title: Option<String>,
+    pub title: Option<Arc<str>>,
     /// The title in Portuguese, when the file gives one.
-    pub title_pt: Option<String>,
+    pub title_pt: Option<Arc<str>>,
     /// The file's `question`, as written.
-    pub question: Option<String>,
+    pub question: Option<Arc<str>>,
     /// The question in Portuguese, when the file gives one.
-    pub question_pt: Option<String>,
+    pub question_pt: Option<Arc<str>>,
     /// I_a and the point, directional and spot lights, as the core takes them.
     pub lights: LightSet<R>,
     /// For each light in `lights.lights`, where it came from.
@@ -150,9 +152,9 @@ pub struct LightInfo<R: Real> {
     /// Its index in the file's `lights` array.
     pub file_index: usize,
     /// The light's `name` in the file.
-    pub name: Option<String>,
+    pub name: Option<Arc<str>>,
     /// The name in Portuguese, when the file gives one.
-    pub name_pt: Option<String>,
+    pub name_pt: Option<Arc<str>>,
     /// "point", "directional" or "spot".
     pub kind: &'static str,
     /// The length of the given direction or axis, when it was not 1 (it was normalised).
@@ -165,9 +167,9 @@ pub struct AmbientInfo<R: Real> {
     /// Its index in the file's `lights` array.
     pub file_index: usize,
     /// Its `name` in the file.
-    pub name: Option<String>,
+    pub name: Option<Arc<str>>,
     /// The name in Portuguese, when the file gives one.
-    pub name_pt: Option<String>,
+    pub name_pt: Option<Arc<str>>,
     /// Its colour, which adds to I_a (Eq. 4.5).
     pub color: V3<R>,
 }
@@ -197,7 +199,7 @@ pub enum ReflectivitySource {
 #[derive(Clone, Debug)]
 pub struct NamedMaterial<R: Real> {
     /// Its name in the file's `materials`; `None` for a material written in place.
-    pub name: Option<String>,
+    pub name: Option<Arc<str>>,
     /// The material as written (to say how each colour was given); shared by every surface of
     /// a named material (a scene of 100,000 spheres holds one copy per material, not per sphere).
     pub spec: std::sync::Arc<MaterialSpec>,

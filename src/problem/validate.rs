@@ -4,6 +4,7 @@
 
 use std::fmt;
 use std::path::{Path, PathBuf};
+use std::sync::Arc;
 
 use super::error::Invalid;
 use super::field::Field;
@@ -182,10 +183,10 @@ pub fn validate_in<R: Real>(
         check_work(c.width, c.height, render.samples).map_err(|e| e.at("render.samples"))?;
     }
     Ok(Problem {
-        title: file.title.clone(),
-        title_pt: file.title_pt.clone(),
-        question: file.question.clone(),
-        question_pt: file.question_pt.clone(),
+        title: file.title.as_deref().map(Arc::from),
+        title_pt: file.title_pt.as_deref().map(Arc::from),
+        question: file.question.as_deref().map(Arc::from),
+        question_pt: file.question_pt.as_deref().map(Arc::from),
         lights,
         light_info,
         ambient_info,
@@ -544,8 +545,8 @@ fn lights<R: Real>(specs: &[LightSpec]) -> Result<Lights<R>, Invalid> {
                 set.ambient = Some(set.ambient.map_or(c, |a| a + c));
                 ambient_info.push(AmbientInfo {
                     file_index: i,
-                    name,
-                    name_pt: spec.name_pt.clone(),
+                    name: name.map(Arc::from),
+                    name_pt: spec.name_pt.as_deref().map(Arc::from),
                     color: c,
                 });
                 continue;
@@ -593,8 +594,8 @@ fn lights<R: Real>(specs: &[LightSpec]) -> Result<Lights<R>, Invalid> {
         set.lights.push(Light { color: c, kind });
         info.push(LightInfo {
             file_index: i,
-            name,
-            name_pt: spec.name_pt.clone(),
+            name: name.map(Arc::from),
+            name_pt: spec.name_pt.as_deref().map(Arc::from),
             kind: spec.kind.name(),
             direction_length,
         });
@@ -866,7 +867,7 @@ fn resolve_material<'a, R: Real>(
         },
     };
     let mut m = material::<R>(spec, path)?;
-    m.name = name;
+    m.name = name.map(Arc::from);
     Ok((path, m))
 }
 

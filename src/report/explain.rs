@@ -228,18 +228,19 @@ pub fn explain<R: Real>(
     }))
     .collect();
     let title = match lang {
-        Lang::Pt => problem.title_pt.clone().or_else(|| s.title.clone()),
-        Lang::En => s.title.clone(),
+        Lang::Pt => problem.title_pt.as_deref().or(s.title.as_deref()),
+        Lang::En => s.title.as_deref(),
     };
     Explanation {
         lang,
-        title: title.unwrap_or_else(|| Phrase::Problem.get(lang).to_owned()),
+        title: title.map_or_else(|| Phrase::Problem.get(lang).to_owned(), str::to_owned),
         file: file_name(file),
         precision: R::NAME,
         question: match lang {
-            Lang::Pt => problem.question_pt.clone().or_else(|| s.question.clone()),
-            Lang::En => s.question.clone(),
-        },
+            Lang::Pt => problem.question_pt.as_deref().or(s.question.as_deref()),
+            Lang::En => s.question.as_deref(),
+        }
+        .map(str::to_owned),
         data: data(problem, lang),
         findings: s
             .findings
@@ -330,7 +331,7 @@ fn data<R: Real>(problem: &Problem<R>, lang: Lang) -> Vec<DataRow> {
         Some(n) => format!("{base} {}", quoted(n)),
         None => base,
     };
-    let local = |en: &Option<String>, pt: &Option<String>| match lang {
+    let local = |en: &Option<std::sync::Arc<str>>, pt: &Option<std::sync::Arc<str>>| match lang {
         Lang::Pt => pt.clone().or_else(|| en.clone()),
         Lang::En => en.clone(),
     };

@@ -399,7 +399,7 @@ fn evaluation<R: Real>(problem: &Problem<R>, e: &Evaluation<R>) -> EvaluationOut
             side: v.side,
         }),
         material: MaterialOut {
-            name: e.material.name.clone(),
+            name: e.material.name.as_deref().map(str::to_owned),
             o_a: m.o_a,
             o_d: m.o_d,
             o_s: m.o_s,
@@ -461,7 +461,7 @@ fn light<R: Real>(problem: &Problem<R>, set: &LightSet<R>, t: &LightTerm<R>) -> 
     };
     LightOut {
         index: info.file_index,
-        name: info.name.clone(),
+        name: info.name.as_deref().map(str::to_owned),
         kind: info.kind,
         color: light.color,
         position: light.position(),

@@ -224,8 +224,8 @@ impl<R: Real> Solution<R> {
     /// The problem's title and question, nothing found or shaded yet.
     fn empty(problem: &Problem<R>) -> Self {
         Solution {
-            title: problem.title.clone(),
-            question: problem.question.clone(),
+            title: problem.title.as_deref().map(str::to_owned),
+            question: problem.question.as_deref().map(str::to_owned),
             findings: Vec::new(),
             intersection: None,
             evaluation: None,
@@ -654,22 +654,25 @@ fn check_finite<R: Real>(
     };
     for (t, info) in lights.iter().zip(&problem.light_info) {
         let a = &t.arrival;
-        let name = light_label(info.file_index, info.kind);
-        let distance = a
-            .distance
-            .map_or(String::new(), |d| format!(" (d = {})", show(d.to_f64())));
+        // Named and formatted only for a light that fails: the diagnosis of `phong check`
+        // solves a problem once per slip and pair, and names cost more than the checks.
+        let name = || light_label(info.file_index, info.kind);
+        let distance = || {
+            a.distance
+                .map_or(String::new(), |d| format!(" (d = {})", show(d.to_f64())))
+        };
         let what = if !a.distance.is_none_or(|d| d.is_finite()) {
-            Some(format!("the distance from {name} to the point"))
+            Some(format!("the distance from {} to the point", name()))
         } else if !a.falloff_factor.is_finite() {
-            Some(format!("the falloff factor 1/d^f of {name}{distance}"))
+            Some(format!("the falloff factor 1/d^f of {}{}", name(), distance()))
         } else if !a.i_l.is_finite() {
-            Some(format!("the light I_l arriving from {name}{distance}"))
+            Some(format!("the light I_l arriving from {}{}", name(), distance()))
         } else if !(t.diffuse.is_none_or(|d| d.is_finite())
             && t.diffuse_literal.is_none_or(|d| d.is_finite())
             && t.specular.term.is_finite()
             && t.specular.literal.is_none_or(|d| d.is_finite()))
         {
-            Some(format!("the diffuse or specular term of {name}"))
+            Some(format!("the diffuse or specular term of {}", name()))
         } else {
             None
         };
