@@ -315,6 +315,13 @@ pub trait Lanes:
     fn equals(self, o: Self) -> Self::Mask;
     /// The mask of lanes where `self <= o`.
     fn at_most(self, o: Self) -> Self::Mask;
+    /// The smaller of the two in each lane, as [`Real::min`] where neither is NaN nor are
+    /// they two zeros (such a lane may give either).
+    fn minimum(self, o: Self) -> Self;
+    /// Per lane: the next number after `self` towards +∞ where `o > 0` ([`Real::next_up`]),
+    /// towards −∞ where `o < 0` ([`Real::next_down`]), `self` where `o` is 0 or NaN: a
+    /// coordinate rounded one step further the way its offset went.
+    fn next_away(self, o: Self) -> Self;
     /// Per lane: `t` where `m` is set, `f` elsewhere.
     fn pick(m: Self::Mask, t: Self, f: Self) -> Self;
     /// Per lane: the mask `t` where `m` is set, `f` elsewhere.
@@ -387,6 +394,12 @@ pub trait LaneVec<L: Lanes>: Copy + Debug {
         let ((a, b, c), (x, y, z)) = (t.parts(), f.parts());
         Self::from_parts(L::pick(m, a, x), L::pick(m, b, y), L::pick(m, c, z))
     }
+    /// Each component's absolute value.
+    #[inline(always)]
+    fn absolute(self) -> Self {
+        let (a, b, c) = self.parts();
+        Self::from_parts(a.absolute(), b.absolute(), c.absolute())
+    }
     /// The mask of lanes where every component is 0 (either sign).
     #[inline(always)]
     fn zero_mask(self) -> L::Mask {
@@ -435,6 +448,20 @@ impl<R: Real> Lanes for R {
     #[inline(always)]
     fn at_most(self, o: Self) -> bool {
         self <= o
+    }
+    #[inline(always)]
+    fn minimum(self, o: Self) -> Self {
+        Real::min(self, o)
+    }
+    #[inline(always)]
+    fn next_away(self, o: Self) -> Self {
+        if o > R::ZERO {
+            self.next_up()
+        } else if o < R::ZERO {
+            self.next_down()
+        } else {
+            self
+        }
     }
     #[inline(always)]
     fn pick(m: bool, t: Self, f: Self) -> Self {
@@ -497,6 +524,7 @@ macro_rules! impl_lane_vec_scalar {
                     f
                 }
             }
+
             #[inline(always)]
             fn map_lanes(self, m: bool, mut f: impl FnMut(usize, $v) -> $v) -> Self {
                 if m {
@@ -513,7 +541,7 @@ impl_lane_vec_scalar!(glam::Vec3, f32);
 impl_lane_vec_scalar!(glam::DVec3, f64);
 
 macro_rules! impl_lanes_wide {
-    ($w:ty, $s:ty) => {
+    ($w:ty, $s:ty, $i:ty) => {
         impl Mask for $w {
             #[inline(always)]
             fn both(self, o: Self) -> Self {
@@ -569,6 +597,36 @@ macro_rules! impl_lanes_wide {
             #[inline(always)]
             fn at_most(self, o: Self) -> Self {
                 self.cmp_le(o)
+            }
+            #[inline(always)]
+            fn minimum(self, o: Self) -> Self {
+                <$w>::fast_min(self, o)
+            }
+            #[inline(always)]
+            fn next_away(self, o: Self) -> Self {
+                // On the bits: a finite non-zero number one step further from 0 is its bits + 1,
+                // one step nearer 0 its bits − 1 (−TINY → −0, MAX → ∞, as next_up and next_down
+                // give); a mask lane is all ones, −1 as an integer. Zeros (whose next number
+                // has the other sign's bits) and infinities or NaNs, where a step is asked, take
+                // the scalar's next_up/next_down lane by lane.
+                let zero = <$w>::splat(0.0);
+                let (up, down) = (Wide::gt(o, zero), Wide::lt(o, zero));
+                let (pos, neg) = (Wide::gt(self, zero), Wide::lt(self, zero));
+                let away = (up & pos) | (down & neg);
+                let nearer = (up & neg) | (down & pos);
+                let bits: $i = bytemuck::cast(self);
+                let stepped: $w = bytemuck::cast(
+                    bits - bytemuck::cast::<$w, $i>(away) + bytemuck::cast::<$w, $i>(nearer),
+                );
+                let odd = (up | down) & !(Wide::finite(self) & (pos | neg));
+                let stepped = odd.blend(self, stepped);
+                stepped.map_lanes(odd, |k, x| {
+                    if o.to_array()[k] > 0.0 {
+                        x.next_up()
+                    } else {
+                        x.next_down()
+                    }
+                })
             }
             #[inline(always)]
             fn pick(m: Self, t: Self, f: Self) -> Self {
@@ -643,8 +701,8 @@ macro_rules! impl_lanes_wide {
     };
 }
 
-impl_lanes_wide!(f32x8, f32);
-impl_lanes_wide!(f64x4, f64);
+impl_lanes_wide!(f32x8, f32, wide::i32x8);
+impl_lanes_wide!(f64x4, f64, wide::i64x4);
 
 /// The lane mask with lane k set where bit k of `bits` is.
 #[inline(always)]
@@ -727,5 +785,123 @@ mod tests {
     fn lanes_compute_the_scalar_bits_in_both_precisions() {
         lanes_compute_the_scalar_bits::<f32>();
         lanes_compute_the_scalar_bits::<f64>();
+    }
+
+    /// Numbers where a step on the bits goes wrong if done naively: zeros of both signs, the
+    /// smallest subnormals, the largest finite numbers, infinities, NaN, and ordinary ones.
+    fn awkward<R: Real>() -> Vec<R> {
+        let tiny = R::from_f64(f64::from(f32::from_bits(1)));
+        let tiny = if R::NAME == "f64" {
+            R::from_f64(f64::from_bits(1))
+        } else {
+            tiny
+        };
+        let max = if R::NAME == "f64" {
+            R::from_f64(f64::MAX)
+        } else {
+            R::from_f64(f64::from(f32::MAX))
+        };
+        let mut xs = vec![
+            R::ZERO,
+            -R::ZERO,
+            tiny,
+            -tiny,
+            max,
+            -max,
+            R::from_f64(f64::INFINITY),
+            R::from_f64(f64::NEG_INFINITY),
+            R::from_f64(f64::NAN),
+            R::ONE,
+            -R::ONE,
+            R::EPSILON,
+        ];
+        xs.extend(
+            (0..40).map(|i| R::from_f64((f64::from(i) - 19.5) * 0.37e-3 * 10f64.powi(i % 7))),
+        );
+        xs
+    }
+
+    /// `next_away` in lanes is the scalar's next_up / next_down / identity to the bit, for
+    /// every pairing of an awkward number and an offset's sign (0, ±0, NaN included).
+    fn next_away_in_lanes_is_the_scalar_step<R: Real>() {
+        let xs = awkward::<R>();
+        let offsets = [
+            R::ONE,
+            -R::ONE,
+            R::ZERO,
+            -R::ZERO,
+            R::from_f64(f64::NAN),
+            R::from_f64(1e-30),
+        ];
+        let lanes = W::<R>::LANES;
+        let bits = |x: R| x.to_f64().to_bits();
+        let mut stepped = 0;
+        for o in offsets {
+            for group in xs.chunks(lanes) {
+                let mut a = <W<R> as Wide>::Array::default();
+                for (k, x) in group.iter().enumerate() {
+                    a.as_mut()[k] = *x;
+                }
+                let got = Lanes::next_away(W::<R>::from_array(a), W::<R>::splat(o)).to_array();
+                for (k, &x) in group.iter().enumerate() {
+                    let want = if o > R::ZERO {
+                        x.next_up()
+                    } else if o < R::ZERO {
+                        x.next_down()
+                    } else {
+                        x
+                    };
+                    let g = got.as_ref()[k];
+                    if want.to_f64().is_nan() {
+                        assert!(g.to_f64().is_nan(), "{x:?} by {o:?}");
+                    } else {
+                        assert_eq!(bits(g), bits(want), "{x:?} by {o:?}: {g:?}, not {want:?}");
+                    }
+                    stepped += usize::from(bits(want) != bits(x));
+                }
+            }
+        }
+        assert!(stepped > xs.len(), "the cases step: {stepped}");
+    }
+
+    /// Repeated squaring over lanes gives each lane the scalar `Real::powi`'s bits, and the
+    /// scalar one gives the platform's `powi` (compiler-rt's `__powi?f2`, the same algorithm).
+    fn powi_in_lanes_is_the_scalar_powi<R: Real>() {
+        let xs = awkward::<R>();
+        let lanes = W::<R>::LANES;
+        let bits = |x: R| x.to_f64().to_bits();
+        for n in (-40..=40).chain([-1024, -1000, 255, 256, 511, 1000, 1024]) {
+            for group in xs.chunks(lanes) {
+                let mut a = <W<R> as Wide>::Array::default();
+                for (k, x) in group.iter().enumerate() {
+                    a.as_mut()[k] = *x;
+                }
+                let one = W::<R>::splat(R::ONE);
+                let got = crate::core::real::powi_by_squaring(W::<R>::from_array(a), one, n);
+                for (k, &x) in group.iter().enumerate() {
+                    let want = x.powi(n);
+                    let g = got.to_array().as_ref()[k];
+                    let platform = if R::NAME == "f64" {
+                        x.to_f64().powi(n)
+                    } else {
+                        f64::from((x.to_f64() as f32).powi(n))
+                    };
+                    if want.to_f64().is_nan() {
+                        assert!(g.to_f64().is_nan() && platform.is_nan(), "{x:?}^{n}");
+                    } else {
+                        assert_eq!(bits(g), bits(want), "{x:?}^{n} in lanes");
+                        assert_eq!(bits(want), platform.to_bits(), "{x:?}^{n} against powi");
+                    }
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn next_away_and_powi_in_lanes_in_both_precisions() {
+        next_away_in_lanes_is_the_scalar_step::<f32>();
+        next_away_in_lanes_is_the_scalar_step::<f64>();
+        powi_in_lanes_is_the_scalar_powi::<f32>();
+        powi_in_lanes_is_the_scalar_powi::<f64>();
     }
 }

@@ -3,7 +3,7 @@
 //! (Eq. 4.1–4.4). Ambient light has no direction and is kept apart, as a sum I_a.
 
 use super::lanes::{LaneVec, Lanes, Mask};
-use super::real::{Real, Vector, V3};
+use super::real::{powi_by_squaring, Real, Vector, V3};
 use super::vector::between_lanes;
 
 /// The falloff exponent f of Eq. 4.3.
@@ -373,9 +373,24 @@ impl<R: Real> Light<R> {
             let by_angle = psi.at_most(gamma + tol);
             let inside = L::pick_mask(cheap, cos_psi.greater(cos_gamma), by_angle);
             let on_edge = cheap.invert().both((psi - gamma).absolute().at_most(tol));
-            // cos ψ may round a hair outside [0, 1] on the edge of a 90° cone or on the axis;
-            // the power lane by lane (the scalar's pow).
-            let factor = zero.map_lanes(inside.both(n.found), |k, _| {
+            // cos ψ may round a hair outside [0, 1] on the edge of a 90° cone or on the axis.
+            // A whole exponent (up to 1024) raises min(cos ψ, 1) by repeated squaring in the
+            // lanes where cos ψ > 0 (there max(cos ψ, 0) is cos ψ itself); any other power,
+            // and cos ψ ≤ 0 or NaN, lane by lane with the scalar's pow.
+            let lit = inside.both(n.found);
+            let (factor, by_hand) = match super::shade::whole_exponent(c.exponent) {
+                Some(e) => {
+                    let positive = lit.both(cos_psi.greater(zero));
+                    let one = L::broadcast(R::ONE);
+                    let base = cos_psi.minimum(one);
+                    (
+                        L::pick(positive, powi_by_squaring(base, one, e), zero),
+                        lit.both(positive.invert()),
+                    )
+                }
+                None => (zero, lit),
+            };
+            let factor = factor.map_lanes(by_hand, |k, _| {
                 cos_psi.lane(k).max(R::ZERO).min(R::ONE).pow(c.exponent)
             });
             LaneCone {

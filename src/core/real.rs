@@ -82,7 +82,7 @@ pub trait Real:
     fn next_up(self) -> Self;
     /// The next representable number towards −∞ (see [`Real::next_up`]).
     fn next_down(self) -> Self;
-    /// Raises to an integer power by repeated multiplication.
+    /// Raises to an integer power by repeated multiplication ([`powi_by_squaring`]).
     fn powi(self, n: i32) -> Self;
     /// e^x.
     fn exp(self) -> Self;
@@ -150,6 +150,38 @@ pub trait Vector<R>:
     fn y(self) -> R;
     /// The third component (z, or blue).
     fn z(self) -> R;
+}
+
+/// x^n by repeated squaring, written out: the algorithm of compiler-rt's `__powisf2` and
+/// `__powidf2` (what `f32::powi` and `f64::powi` call for an exponent known only at run time):
+/// r = 1; for each bit of |n| from the lowest, r ·= x where the bit is set, x ·= x before the
+/// next; 1/r for a negative n. Written here it is inlined (no call, whose saved registers cost
+/// more than the few multiplications), the same bits on every platform, and, over
+/// [`crate::core::lanes::Lanes`], the same operations in every lane: the wide tracer raises a
+/// register of cosines at once to the material's shared n_s with the scalar's bits.
+#[inline(always)]
+pub(crate) fn powi_by_squaring<T>(x: T, one: T, n: i32) -> T
+where
+    T: Copy + std::ops::Mul<Output = T> + std::ops::Div<Output = T>,
+{
+    let mut base = x;
+    let mut bits = n.unsigned_abs();
+    let mut r = one;
+    loop {
+        if bits & 1 != 0 {
+            r = r * base;
+        }
+        bits >>= 1;
+        if bits == 0 {
+            break;
+        }
+        base = base * base;
+    }
+    if n < 0 {
+        one / r
+    } else {
+        r
+    }
 }
 
 macro_rules! impl_real {
@@ -242,7 +274,7 @@ macro_rules! impl_real {
             }
             #[inline]
             fn powi(self, n: i32) -> Self {
-                <$t>::powi(self, n)
+                powi_by_squaring(self, 1.0, n)
             }
             #[inline]
             fn exp(self) -> Self {

@@ -9,7 +9,7 @@
 use super::lanes::{LaneVec, Lanes, Mask};
 use super::light::{Arrival, LaneArrival, Light, LightSet};
 use super::material::Material;
-use super::real::{Real, Vector, V3};
+use super::real::{powi_by_squaring, Real, Vector, V3};
 use super::rounding::gamma;
 
 /// The point being shaded.
@@ -217,6 +217,13 @@ fn cos_phi_pow<R: Real>(cos_phi: R, r: V3<R>, v: V3<R>, n_s: R) -> R {
     (n_s * (-one_minus_cos).ln_1p()).exp()
 }
 
+/// `e` as the exponent [`Real::pow`] raises by repeated squaring (a whole number up to 1024 in
+/// magnitude), or `None` where it takes `powf`.
+#[inline]
+pub(crate) fn whole_exponent<R: Real>(e: R) -> Option<i32> {
+    (e.trunc() == e && e.abs() <= R::from_f64(1024.0)).then(|| e.to_f64() as i32)
+}
+
 /// x^n_s where it is defined: a negative base has a real power only for an integer exponent.
 /// x is a cosine: it is clamped to [−1, 1] first, so that a value rounded a hair beyond ±1
 /// cannot grow without bound under a huge n_s. `unit` carries R and V where x is −R·V of unit
@@ -385,6 +392,9 @@ pub(crate) struct LaneSpecular<L: Lanes> {
     pub lit: L::Mask,
     /// (cos φ)^n_s in the `lit` lanes.
     pub pow: L,
+    /// (cos φ)^n_s in the `lit` lanes before [`Formulas::round`]: the literal term's power
+    /// there (the same formula, so the record need not raise cos φ a second time).
+    pub raw_pow: L,
     /// O_s I_l (cos φ)^n_s in the `lit` lanes.
     pub term: L::V,
 }
@@ -455,9 +465,11 @@ pub(crate) struct LaneShade<L: Lanes> {
 /// scalar core ([`shade_with`], L = the precision itself, masks `bool`) and the wide tracer (L a
 /// register of lanes sharing one material). Written in select form: a gate is a mask, a term is
 /// formed where any lane needs it (for one number: where it is needed, as a branch) and added
-/// where its mask is set, so each lane computes the scalar bits in the scalar order. The steps
-/// the lanes cannot compute to the bit ((cos φ)^n_s, a spot's atan2 and pow, the robust branch
-/// of a length) run lane by lane with the scalar code, on the lanes that need them. `active`:
+/// where its mask is set, so each lane computes the scalar bits in the scalar order. A whole
+/// n_s or spot exponent (up to 1024) is raised by repeated squaring in every lane at once (the
+/// scalar's own `powi`); the steps the lanes cannot compute to the bit (powf, the ln_1p form of
+/// `cos_phi_pow`, a spot's atan2, the robust branch of a length) run lane by lane with the
+/// scalar code, on the lanes that need them. `active`:
 /// the lanes holding a point (no shadow ray is asked for the others).
 #[inline(always)]
 pub(crate) fn shade_lanes<L: Lanes, F: Formulas, S: LaneSide<L>>(
@@ -485,6 +497,9 @@ pub(crate) fn shade_lanes<L: Lanes, F: Formulas, S: LaneSide<L>>(
     let mut diffuse = zero_v;
     let mut specular = zero_v;
     let contributes = m.o_d.is_some() || (m.o_s.is_some() && at.v.is_some());
+    // n_s as the exponent of the repeated squaring where `Real::pow` takes it (and then so does
+    // `cos_phi_pow`, whose own rule, a whole n_s up to 1024, includes every such n_s ≥ 0).
+    let whole_n_s = whole_exponent(m.n_s);
 
     for (index, light) in lights.lights.iter().enumerate() {
         let mut arrival = light.arrive_lanes::<L>(at.p, S::DETAIL);
@@ -551,21 +566,36 @@ pub(crate) fn shade_lanes<L: Lanes, F: Formulas, S: LaneSide<L>>(
                     formulas.round(r.dot3(v).negated())
                 };
                 let spec_lit = lit.both(cos_phi.greater(zero));
-                let (mut pow, mut term) = (zero, zero_v);
+                let (mut pow, mut raw_pow, mut term) = (zero, zero, zero_v);
                 if spec_lit.any() {
                     // cos φ can round a hair above 1; a huge n_s must not turn that into inf,
-                    // nor a cos φ that rounds to 1 into a spurious 1 (see `cos_phi_pow`). Lane
-                    // by lane: no lane pow gives the scalar's bits.
-                    pow = cos_phi.map_lanes(spec_lit, |k, c| {
-                        if formulas.raw_normal() {
-                            c.pow(m.n_s)
-                        } else if formulas.half_vector() || formulas.rounds() {
-                            c.min(<Scalar<L> as Real>::ONE).pow(m.n_s)
-                        } else {
-                            cos_phi_pow(c, r.lane(k), v.lane(k), m.n_s)
+                    // nor a cos φ that rounds to 1 into a spurious 1 (see `cos_phi_pow`).
+                    raw_pow = match whole_n_s {
+                        // A whole n_s up to 1024: every branch of `cos_phi_pow` and
+                        // `Real::pow` is the repeated squaring of min(cos φ, 1) (of cos φ
+                        // itself with N used raw), the same multiplications in every lane.
+                        Some(n) => {
+                            let base = if formulas.raw_normal() {
+                                cos_phi
+                            } else {
+                                cos_phi.minimum(L::broadcast(<Scalar<L> as Real>::ONE))
+                            };
+                            let one = L::broadcast(<Scalar<L> as Real>::ONE);
+                            L::pick(spec_lit, powi_by_squaring(base, one, n), zero)
                         }
-                    });
-                    pow = formulas.round(pow);
+                        // Otherwise powf or the ln_1p form, lane by lane: no lane pow gives
+                        // the scalar's bits.
+                        None => cos_phi.map_lanes(spec_lit, |k, c| {
+                            if formulas.raw_normal() {
+                                c.pow(m.n_s)
+                            } else if formulas.half_vector() || formulas.rounds() {
+                                c.min(<Scalar<L> as Real>::ONE).pow(m.n_s)
+                            } else {
+                                cos_phi_pow(c, r.lane(k), v.lane(k), m.n_s)
+                            }
+                        }),
+                    };
+                    pow = formulas.round(raw_pow);
                     term = round_v::<L, F>(
                         formulas,
                         L::V::broadcast(o_s).times(arrival.i_l).scaled(pow),
@@ -577,6 +607,7 @@ pub(crate) fn shade_lanes<L: Lanes, F: Formulas, S: LaneSide<L>>(
                     cos_phi,
                     lit: spec_lit,
                     pow,
+                    raw_pow,
                     term,
                 })
             }
@@ -680,6 +711,10 @@ impl<R: Real, Vis: Visibility<R>, Rec: Recorder<R>, F: Formulas> LaneSide<R>
                     None
                 } else if !t.arrival.arrives {
                     Some(V3::<R>::ZERO)
+                } else if s.lit {
+                    // cos φ > 0: `literal_pow` would raise it exactly as the gated term did
+                    // (clamped, or raw with N raw), so its power before rounding is reused.
+                    Some(o_s * arrival.i_l * s.raw_pow)
                 } else {
                     let clamp = !f.raw_normal();
                     let unit = (clamp && !f.half_vector() && !f.rounds()).then_some((s.r, v));

@@ -9,6 +9,7 @@
 use super::aggregate::Aggregate;
 use super::shadow::ShadowRays;
 use super::{Ray, Shape};
+use crate::core::lanes::{LaneVec, Lanes};
 use crate::core::rounding::gamma;
 use crate::core::{Real, Vector, V3};
 
@@ -96,24 +97,21 @@ impl<R: Real> SurfaceHit<R> {
 /// component then rounded one step further away.
 #[inline]
 pub fn offset_origin<R: Real>(p: V3<R>, p_error: V3<R>, n: V3<R>, w: V3<R>) -> V3<R> {
-    let d = n.abs().dot(p_error);
-    let mut offset = n * d;
-    if w.dot(n) < R::ZERO {
-        offset = -offset;
-    }
-    let po = p + offset;
+    offset_origin_lanes::<R>(p, p_error, n, w)
+}
+
+/// [`offset_origin`] in [`Lanes`]: one ray's origin (L a precision, the scalar code) or one per
+/// lane (L a register: the wide tracer's shadow rays), the same operations in the same order.
+#[inline(always)]
+pub(crate) fn offset_origin_lanes<L: Lanes>(p: L::V, p_error: L::V, n: L::V, w: L::V) -> L::V {
+    let zero = L::broadcast(<L::Scalar as Real>::ZERO);
+    let d = n.absolute().dot3(p_error);
+    let offset = n.scaled(d);
+    let offset = L::V::pick3(w.dot3(n).less(zero), offset.negated(), offset);
+    let po = p.plus(offset);
     // Round away from p so that the rounding of the sum cannot undo the offset.
-    let away = |x: R, o: R| {
-        if o > R::ZERO {
-            x.next_up()
-        } else if o < R::ZERO {
-            x.next_down()
-        } else {
-            x
-        }
-    };
-    let (o, q) = (offset.to_array(), po.to_array());
-    V3::<R>::new(away(q[0], o[0]), away(q[1], o[1]), away(q[2], o[2]))
+    let ((ox, oy, oz), (qx, qy, qz)) = (offset.parts(), po.parts());
+    L::V::from_parts(qx.next_away(ox), qy.next_away(oy), qz.next_away(oz))
 }
 
 #[cfg(test)]

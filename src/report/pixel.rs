@@ -210,7 +210,10 @@ pub fn report<R: Real>(
         title,
         source: scene_x.1,
         question: match lang {
-            Lang::Pt => problem.question_pt.as_deref().or(problem.question.as_deref()),
+            Lang::Pt => problem
+                .question_pt
+                .as_deref()
+                .or(problem.question.as_deref()),
             Lang::En => problem.question.as_deref(),
         }
         .map(str::to_owned),

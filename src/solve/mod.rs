@@ -664,9 +664,17 @@ fn check_finite<R: Real>(
         let what = if !a.distance.is_none_or(|d| d.is_finite()) {
             Some(format!("the distance from {} to the point", name()))
         } else if !a.falloff_factor.is_finite() {
-            Some(format!("the falloff factor 1/d^f of {}{}", name(), distance()))
+            Some(format!(
+                "the falloff factor 1/d^f of {}{}",
+                name(),
+                distance()
+            ))
         } else if !a.i_l.is_finite() {
-            Some(format!("the light I_l arriving from {}{}", name(), distance()))
+            Some(format!(
+                "the light I_l arriving from {}{}",
+                name(),
+                distance()
+            ))
         } else if !(t.diffuse.is_none_or(|d| d.is_finite())
             && t.diffuse_literal.is_none_or(|d| d.is_finite())
             && t.specular.term.is_finite()

@@ -26,10 +26,13 @@ use super::camera::CameraRays;
 use super::render::{clamped, mean};
 use super::sampler::sample;
 use super::trace::{Counts, PathState, Scene, Tracer};
-use crate::core::lanes::{lanes_of, mask_of, Wide, W, W3};
+use crate::core::lanes::{mask_of, Wide, W, W3};
 use crate::core::light::LaneArrival;
+use crate::core::rounding::gamma;
 use crate::core::shade::{shade_lanes, LanePoint, LaneSide, LaneTerm};
+use crate::core::vector::between_lanes;
 use crate::core::{Chapter, Light, Material, Real, Vector, V3};
+use crate::geometry::hit::offset_origin_lanes;
 use crate::geometry::soa::FlatScene;
 use crate::geometry::{Aggregate, AggregateHit, Ray};
 use crate::problem::Problem;
@@ -176,16 +179,18 @@ fn distinct_materials<R: Real>(all: &[Material<R>]) -> (Vec<u32>, Vec<Material<R
 }
 
 /// The wide engine's side of the core's [`shade_lanes`]: the shadow rays of a register of hits
-/// on one material, built as [`crate::geometry::shadow::ShadowRays`] builds them and tested as a
-/// packet ([`FlatScene::occluded_packet`], or [`Aggregate::occluded_packet`] through the wide
-/// BVH for scenes in a BVH), counted as the scalar engine counts them.
+/// on one material, built in lanes as [`crate::geometry::shadow::ShadowRays::ray`] builds each
+/// one (the origin by [`offset_origin_lanes`], the direction and length to a light by
+/// [`between_lanes`]: the same operations, so every lane holds the scalar ray's bits) and tested
+/// as a packet ([`FlatScene::occluded_packet`], or [`Aggregate::occluded_packet`] through the
+/// wide BVH for scenes in a BVH), counted as the scalar engine counts them.
 struct WideSide<'a, R: Real, const SHADOWS: bool> {
     aggregate: &'a Aggregate<R>,
     flat: Option<&'a FlatScene<R>>,
-    /// The group being shaded: lane k holds the hit of queue entry `group[k].1`.
-    group: &'a [(u32, u32)],
-    /// The nearest hit of each queue entry.
-    found: &'a [Option<AggregateHit<R>>],
+    /// The hits' error bounds on P, per lane.
+    p_error: W3<W<R>>,
+    /// The hits' own normals (not turned to the ray), per lane.
+    normal: W3<W<R>>,
     /// The shadow rays traced.
     traced: u64,
 }
@@ -197,47 +202,70 @@ impl<R: Real, const SHADOWS: bool> LaneSide<W<R>> for WideSide<'_, R, SHADOWS> {
     fn visible(
         &mut self,
         need: W<R>,
-        _: W3<W<R>>,
+        p: W3<W<R>>,
         light: &Light<R>,
         arrival: &LaneArrival<W<R>>,
     ) -> W<R> {
         if !SHADOWS {
             return need;
         }
-        let bits = need.bits();
         let lanes = W::<R>::LANES;
+        self.traced += u64::from(need.bits().count_ones());
+        // ShadowRays::ray in lanes: from the offset origin towards the light, to a hair short
+        // of a positioned light, for ever to a directional one.
+        let l = arrival.l;
+        let towards = W3 {
+            x: l.x.neg(),
+            y: l.y.neg(),
+            z: l.z.neg(),
+        };
+        let origin = offset_origin_lanes::<W<R>>(p, self.p_error, self.normal, towards);
+        let (direction, t_max, want) = match light.position() {
+            None => (towards, W::<R>::splat(R::from_f64(f64::INFINITY)), need),
+            Some(pos) => {
+                let to_light = between_lanes::<W<R>>(origin, W3::splat(pos));
+                let short = W::<R>::splat(R::ONE - gamma::<R>(64));
+                (
+                    to_light.unit,
+                    to_light.length * short,
+                    need.and(to_light.found),
+                )
+            }
+        };
+        let want: u32 = Wide::bits(want);
+        if want == 0 {
+            return need;
+        }
+        // Lanes without a ray repeat the first one (and are not asked).
+        let first = want.trailing_zeros() as usize;
+        let (ox, oy, oz) = (
+            origin.x.to_array(),
+            origin.y.to_array(),
+            origin.z.to_array(),
+        );
+        let (dx, dy, dz) = (
+            direction.x.to_array(),
+            direction.y.to_array(),
+            direction.z.to_array(),
+        );
+        let mut tm = t_max.to_array();
         let mut rays = [Ray {
             origin: V3::<R>::ZERO,
             direction: V3::<R>::ZERO,
         }; 8];
-        let mut t_max = [R::ZERO; 8];
-        let mut want = 0u32;
-        for k in lanes_of(bits) {
-            self.traced += 1;
-            let Some(h) = &self.found[self.group[k].1 as usize] else {
-                unreachable!("a group holds hits")
+        for (k, ray) in rays.iter_mut().enumerate().take(lanes) {
+            let j = if want & (1 << k) != 0 { k } else { first };
+            *ray = Ray {
+                origin: V3::<R>::new(ox.as_ref()[j], oy.as_ref()[j], oz.as_ref()[j]),
+                direction: V3::<R>::new(dx.as_ref()[j], dy.as_ref()[j], dz.as_ref()[j]),
             };
-            let from = h.hit.shadow_rays(self.aggregate);
-            if let Some(s) = from.ray(light, arrival.l.at(k)) {
-                rays[k] = s.ray;
-                t_max[k] = s.t_max;
-                want |= 1 << k;
-            }
-        }
-        if want == 0 {
-            return need;
-        }
-        let first = want.trailing_zeros() as usize;
-        for k in 0..lanes {
-            if want & (1 << k) == 0 {
-                rays[k] = rays[first];
-            }
+            tm.as_mut()[k] = tm.as_ref()[j];
         }
         let blocked = match self.flat {
-            Some(flat) => flat.occluded_packet(&rays[..lanes], &t_max[..lanes], want),
+            Some(flat) => flat.occluded_packet(&rays[..lanes], tm.as_ref(), want),
             None => self
                 .aggregate
-                .occluded_packet(&rays[..lanes], &t_max[..lanes], want),
+                .occluded_packet(&rays[..lanes], tm.as_ref(), want),
         };
         need.and(mask_of::<W<R>>(blocked).not())
     }
@@ -347,19 +375,20 @@ fn row_in<R: Real, T: Copy, const SHADOWS: bool, const REFLECT: bool>(
                 b.found.extend_from_slice(&b.hits[..packet.len()]);
             }
             shade_queue::<R, SHADOWS>(tracer, plan, &mut b, counts);
-            for (i, e) in b.queue.iter().enumerate() {
-                let mut path = e.path;
+            // Each path stepped where it stands in the queue (the queue is refilled next
+            // pass), and copied once into the next queue if it goes on.
+            for (i, e) in b.queue.iter_mut().enumerate() {
                 let (share, more) = match &b.found[i] {
-                    None => tracer.miss(&path, &mut ()),
+                    None => tracer.miss(&e.path, &mut ()),
                     Some(h) if REFLECT => {
                         let (n, local) = b.shaded[i];
-                        tracer.step(&mut path, h, n, local, counts, &mut ())
+                        tracer.step(&mut e.path, h, n, local, counts, &mut ())
                     }
-                    Some(_) => (path.factor * b.shaded[i].1, false),
+                    Some(_) => (e.path.factor * b.shaded[i].1, false),
                 };
                 b.colors[e.slot as usize] += share;
                 if more {
-                    b.next.push(Entry { slot: e.slot, path });
+                    b.next.push(*e);
                 }
             }
             std::mem::swap(&mut b.queue, &mut b.next);
@@ -407,29 +436,32 @@ fn shade_queue<R: Real, const SHADOWS: bool>(
         let group = &b.groups[at..at + len];
         at += len;
         // Lanes past the group's end repeat its last hit (and are not active).
-        let mut nrm = [V3::<R>::ZERO; 8];
-        let (mut p, mut v) = ([V3::<R>::ZERO; 8], [V3::<R>::ZERO; 8]);
+        let mut hit = [Lane3::<R>::default(); 4];
         for k in 0..lanes {
             let i = group[k.min(len - 1)].1 as usize;
             let (Some(h), d) = (&b.found[i], b.queue[i].path.ray.direction) else {
                 unreachable!("a group holds hits")
             };
-            p[k] = h.hit.p;
-            // N turned to face the incoming ray; V is the ray's direction (Eq. 4.10).
-            nrm[k] = h.hit.facing(d).normal;
-            v[k] = d;
+            hit[0].set(k, h.hit.p);
+            hit[1].set(k, h.hit.p_error);
+            hit[2].set(k, h.hit.normal);
+            hit[3].set(k, d);
         }
-        let fill = V3::<R>::ZERO;
-        let point = LanePoint::<W<R>> {
-            p: W3::gather(p[..lanes].iter().copied(), fill),
-            n: W3::gather(nrm[..lanes].iter().copied(), fill),
-            v: Some(W3::gather(v[..lanes].iter().copied(), fill)),
+        let [p, p_error, normal, v] = hit.map(Lane3::lanes);
+        // N turned to face the incoming ray (`SurfaceHit::facing`); V is the ray's direction
+        // (Eq. 4.10).
+        let reversed = normal.dot(v).gt(W::<R>::splat(R::ZERO));
+        let n = W3 {
+            x: reversed.select(normal.x.neg(), normal.x),
+            y: reversed.select(normal.y.neg(), normal.y),
+            z: reversed.select(normal.z.neg(), normal.z),
         };
+        let point = LanePoint::<W<R>> { p, n, v: Some(v) };
         let mut side = WideSide::<R, SHADOWS> {
             aggregate: &tracer.scene.aggregate,
             flat: plan.flat.as_ref(),
-            group,
-            found: &b.found,
+            p_error,
+            normal,
             traced: 0,
         };
         let active = mask_of::<W<R>>((1u32 << len) - 1);
@@ -437,8 +469,45 @@ fn shade_queue<R: Real, const SHADOWS: bool>(
         // The local colour, Eq. 4.16, by the core, in lanes.
         let s = shade_lanes::<W<R>, Chapter, _>(Chapter, &point, active, m, lights, &mut side);
         counts.shadow += side.traced;
+        let (nx, ny, nz) = (n.x.to_array(), n.y.to_array(), n.z.to_array());
+        let (cx, cy, cz) = (
+            s.color.x.to_array(),
+            s.color.y.to_array(),
+            s.color.z.to_array(),
+        );
         for (k, &(_, i)) in group.iter().enumerate() {
-            b.shaded[i as usize] = (nrm[k], s.color.at(k));
+            b.shaded[i as usize] = (
+                V3::<R>::new(nx.as_ref()[k], ny.as_ref()[k], nz.as_ref()[k]),
+                V3::<R>::new(cx.as_ref()[k], cy.as_ref()[k], cz.as_ref()[k]),
+            );
+        }
+    }
+}
+
+/// A vector per lane being filled lane by lane: the three components' arrays.
+#[derive(Clone, Copy, Default)]
+struct Lane3<R: Real> {
+    x: <W<R> as Wide>::Array,
+    y: <W<R> as Wide>::Array,
+    z: <W<R> as Wide>::Array,
+}
+
+impl<R: Real> Lane3<R> {
+    /// Lane k holds `v`.
+    #[inline(always)]
+    fn set(&mut self, k: usize, v: V3<R>) {
+        self.x.as_mut()[k] = v.x();
+        self.y.as_mut()[k] = v.y();
+        self.z.as_mut()[k] = v.z();
+    }
+
+    /// The registers.
+    #[inline(always)]
+    fn lanes(self) -> W3<W<R>> {
+        W3 {
+            x: W::<R>::from_array(self.x),
+            y: W::<R>::from_array(self.y),
+            z: W::<R>::from_array(self.z),
         }
     }
 }
