@@ -101,19 +101,18 @@ async fn exercises(State(state): State<Shared>) -> Response {
 
 /// `POST /api/solve`: what `phong solve --format json` prints for the problem.
 async fn solve(State(state): State<Shared>, headers: HeaderMap, body: Bytes) -> Response {
-    let request: SolveRequest<'_> = match envelope(&headers, &body, SOLVE_SHAPE) {
-        Ok(r) => r,
-        Err(refused) => return refused,
-    };
-    let lang = match lang(request.lang.as_deref()) {
-        Ok(l) => l,
-        Err(refused) => return refused,
-    };
+    solved(&state, &headers, &body).unwrap_or_else(|refused| refused)
+}
+
+/// [`solve`]'s answer, or the response that refuses the request.
+fn solved(state: &Shared, headers: &HeaderMap, body: &Bytes) -> Result<Response, Response> {
+    let request: SolveRequest<'_> = envelope(headers, body, SOLVE_SHAPE)?;
+    let lang = lang(request.lang.as_deref())?;
     let precision = match request.precision.as_deref() {
         None | Some("f64") => Precision::F64,
         Some("f32") => Precision::F32,
         Some(other) => {
-            return error(
+            return Err(error(
                 StatusCode::BAD_REQUEST,
                 "usage",
                 Some("precision"),
@@ -121,34 +120,30 @@ async fn solve(State(state): State<Shared>, headers: HeaderMap, body: Bytes) -> 
                     "precision: \"{}\" is not a precision: give \"f64\" (the default) or \"f32\"",
                     check::answer::shorten(other, 40)
                 ),
-            )
+            ))
         }
     };
-    let problem = match Problem::of(&state, request.problem, request.exercise.as_deref()) {
-        Ok(p) => p,
-        Err(refused) => return refused,
-    };
+    let problem = Problem::of(state, request.problem, request.exercise.as_deref())?;
     let source = problem.source();
-    if let Err(e) = problem.admit(&state) {
-        return problem_error(&e, source.name(), lang);
+    if let Err(e) = problem.admit(state) {
+        return Err(problem_error(&e, source.name(), lang));
     }
     match crate::report::file::solve_json_warned(source, precision, lang) {
-        Ok((doc, _warnings)) => json_response(StatusCode::OK, &doc),
-        Err(e) => problem_error(&e, source.name(), lang),
+        Ok((doc, _warnings)) => Ok(json_response(StatusCode::OK, &doc)),
+        Err(e) => Err(problem_error(&e, source.name(), lang)),
     }
 }
 
 /// `POST /api/check`: what `phong check --format json` prints for the problem and the answer
 /// (and the steps, merged in as `phong check --step` merges them).
 async fn check(State(state): State<Shared>, headers: HeaderMap, body: Bytes) -> Response {
-    let request: CheckRequest<'_> = match envelope(&headers, &body, CHECK_SHAPE) {
-        Ok(r) => r,
-        Err(refused) => return refused,
-    };
-    let lang = match lang(request.lang.as_deref()) {
-        Ok(l) => l,
-        Err(refused) => return refused,
-    };
+    checked(&state, &headers, &body).unwrap_or_else(|refused| refused)
+}
+
+/// [`check`]'s answer, or the response that refuses the request.
+fn checked(state: &Shared, headers: &HeaderMap, body: &Bytes) -> Result<Response, Response> {
+    let request: CheckRequest<'_> = envelope(headers, body, CHECK_SHAPE)?;
+    let lang = lang(request.lang.as_deref())?;
     let scale = match &request.scale {
         None => check::Scale::Unit,
         Some(ScaleField::Number(1)) => check::Scale::Unit,
@@ -156,43 +151,40 @@ async fn check(State(state): State<Shared>, headers: HeaderMap, body: Bytes) -> 
         Some(ScaleField::Text(t)) if t == "1" => check::Scale::Unit,
         Some(ScaleField::Text(t)) if t == "255" => check::Scale::Bits8,
         Some(_) => {
-            return error(
+            return Err(error(
                 StatusCode::BAD_REQUEST,
                 "usage",
                 Some("scale"),
                 "scale: give 1 (components on [0, 1], the default) or 255 (8-bit integers)".into(),
-            )
+            ))
         }
     };
     if let Some(t) = request.tolerance {
         if let Err(e) = check::answer::check_tolerance(t) {
-            return error(
+            return Err(error(
                 StatusCode::UNPROCESSABLE_ENTITY,
                 "usage",
                 Some("tolerance"),
                 translated(&format!("tolerance: {e}"), lang),
-            );
+            ));
         }
     }
     let steps = match request.steps.map(|raw| given_steps(raw.get())) {
         None => Vec::new(),
         Some(Ok(s)) => s,
         Some(Err(e)) => {
-            return error(
+            return Err(error(
                 StatusCode::UNPROCESSABLE_ENTITY,
                 "usage",
                 Some("steps"),
                 translated(&format!("steps: {e}"), lang),
-            )
+            ))
         }
     };
-    let problem = match Problem::of(&state, request.problem, request.exercise.as_deref()) {
-        Ok(p) => p,
-        Err(refused) => return refused,
-    };
+    let problem = Problem::of(state, request.problem, request.exercise.as_deref())?;
     let source = problem.source();
-    if let Err(e) = problem.admit(&state) {
-        return problem_error(&e, source.name(), lang);
+    if let Err(e) = problem.admit(state) {
+        return Err(problem_error(&e, source.name(), lang));
     }
     let options = check::CheckOptions {
         answer: request.answer.clone(),
@@ -220,12 +212,12 @@ async fn check(State(state): State<Shared>, headers: HeaderMap, body: Bytes) -> 
         .any(|s| s == check::report::Status::Unchecked);
     let Some(mut doc) = check::report::document(answer.as_ref(), steps.as_ref()) else {
         // Not reached: without steps there is always an answer's verdict.
-        return error(
+        return Err(error(
             StatusCode::INTERNAL_SERVER_ERROR,
             "internal",
             None,
             "nothing was checked".into(),
-        );
+        ));
     };
     if let Some(log) = &state.answers {
         log.record(&AnswerEntry {
@@ -247,9 +239,9 @@ async fn check(State(state): State<Shared>, headers: HeaderMap, body: Bytes) -> 
             // An invalid verdict's message is the error's own sentence.
             translate_error(&mut doc, lang);
         }
-        json_response(StatusCode::UNPROCESSABLE_ENTITY, &doc)
+        Ok(json_response(StatusCode::UNPROCESSABLE_ENTITY, &doc))
     } else {
-        json_response(StatusCode::OK, &doc)
+        Ok(json_response(StatusCode::OK, &doc))
     }
 }
 
