@@ -1149,3 +1149,45 @@ fn every_exercise_solves_in_both_precisions_and_formats_without_nan_or_inf() {
     }
     c.finish("every exercise must solve cleanly");
 }
+
+/// A field name or a `type` word thousands of characters long (a pasted blob, a fuzzer's key) is
+/// named shortened, with its length, in the message and the JSON's `field`: the message stays a
+/// few lines, whatever was written. Found by the fuzz test of `phong serve`'s API, whose answers
+/// must be of bounded size.
+#[test]
+fn a_very_long_unknown_name_is_echoed_shortened() {
+    let dir = TempDir::new().expect("a temporary folder");
+    let long = "x".repeat(10_000);
+    let cases = [
+        ("field", {
+            let mut p = point_problem();
+            p[&long] = json!(1);
+            p
+        }),
+        ("type", {
+            let mut p = point_problem();
+            p["lights"][1]["type"] = json!(long.clone());
+            p
+        }),
+    ];
+    for (what, problem) in cases {
+        let file = dir.path().join(format!("{what}.json"));
+        fs::write(&file, pretty(&problem)).expect("written");
+        let run = phong(&["solve", utf8(&file), "--format", "json"]);
+        assert_eq!(run.code, Some(BAD_INPUT), "{what}");
+        assert!(
+            run.stderr.len() < 1_000,
+            "{what}: the message is {} bytes long",
+            run.stderr.len()
+        );
+        assert!(
+            run.stderr.contains("10000 characters"),
+            "{what}: {}",
+            run.stderr
+        );
+        let doc: Value = serde_json::from_str(&run.stdout).expect("a JSON document");
+        let field = doc["error"]["field"].as_str().unwrap_or("");
+        assert!(field.len() < 200, "{what}: field {} bytes", field.len());
+        assert!(doc["error"]["message"].as_str().unwrap_or("").len() < 1_000);
+    }
+}

@@ -162,10 +162,10 @@ fn parse_tracked(path: &Path, source: &str) -> Result<ProblemFile, ProblemError>
         .and_then(|f| de.end().map(|()| f).map_err(|e| (String::new(), e)));
     result.map_err(|(field, inner)| {
         let text = inner.to_string();
-        let message = text
-            .rsplit_once(" at line ")
-            .map_or(text.as_str(), |(m, _)| m)
-            .to_owned();
+        let message = shorten_quoted(
+            text.rsplit_once(" at line ")
+                .map_or(text.as_str(), |(m, _)| m),
+        );
         let fix = syntax_fix(&inner, &message);
         let field = (!field.is_empty()).then_some(field);
         let (message, fix) = if message == "trailing characters" && field.is_some() {
@@ -234,6 +234,27 @@ fn not_an_object(path: &Path, text: &str) -> Result<(), ProblemError> {
 /// The field where the parser stopped, as `lights[1].falloff`; empty at the top level. (The
 /// path's own Display writes "." for the top level and "?" for a position it does not know,
 /// and a field may itself be named "a.?".)
+/// The longest name (a key, a `type` word) a message repeats in full; a longer one is shown
+/// shortened, with its length, so that a message stays a few lines whatever was written.
+const LONGEST_NAME: usize = 60;
+
+/// `message` with each name it quotes between backticks (serde's `unknown field `…``, `unknown
+/// variant `…``) shortened to [`LONGEST_NAME`].
+fn shorten_quoted(message: &str) -> String {
+    let mut out = String::with_capacity(message.len().min(1024));
+    for (i, part) in message.split('`').enumerate() {
+        if i > 0 {
+            out.push('`');
+        }
+        if i % 2 == 1 {
+            out.push_str(&crate::check::answer::shorten(part, LONGEST_NAME));
+        } else {
+            out.push_str(part);
+        }
+    }
+    out
+}
+
 fn field_path(path: &serde_path_to_error::Path) -> String {
     use serde_path_to_error::Segment;
     let mut out = String::new();
@@ -244,7 +265,7 @@ fn field_path(path: &serde_path_to_error::Path) -> String {
                 if !out.is_empty() {
                     out.push('.');
                 }
-                out.push_str(key);
+                out.push_str(&crate::check::answer::shorten(key, LONGEST_NAME));
             }
             Segment::Unknown => {}
         }
