@@ -11,3 +11,15 @@ pub enum Lang {
     /// Portuguese (português), as in the course notes.
     Pt,
 }
+
+impl Lang {
+    /// The language of a code as a request writes it: `en`, or `pt` (`pt-BR`), in any case;
+    /// `None` for any other.
+    pub fn from_code(code: &str) -> Option<Lang> {
+        match code.to_ascii_lowercase().as_str() {
+            "en" => Some(Lang::En),
+            "pt" | "pt-br" => Some(Lang::Pt),
+            _ => None,
+        }
+    }
+}

@@ -475,17 +475,18 @@ fn is_trailing(e: &ProblemError) -> bool {
 /// The `lang` of a request: English unless `"pt"`.
 fn lang(text: Option<&str>) -> Result<Lang, Response> {
     match text {
-        None | Some("en") => Ok(Lang::En),
-        Some("pt") => Ok(Lang::Pt),
-        Some(other) => Err(error(
-            StatusCode::BAD_REQUEST,
-            "usage",
-            Some("lang"),
-            format!(
-                "lang: \"{}\" is not a language: give \"en\" (the default) or \"pt\"",
-                check::answer::shorten(other, 40)
-            ),
-        )),
+        None => Ok(Lang::En),
+        Some(code) => Lang::from_code(code).ok_or_else(|| {
+            error(
+                StatusCode::BAD_REQUEST,
+                "usage",
+                Some("lang"),
+                format!(
+                    "lang: \"{}\" is not a language: give \"en\" (the default) or \"pt\"",
+                    check::answer::shorten(code, 40)
+                ),
+            )
+        }),
     }
 }
 

@@ -18,19 +18,10 @@ pub(crate) fn query<'a>(uri: &'a Uri, key: &str) -> Option<&'a str> {
         .map(|(_, v)| v)
 }
 
-/// `en` or `pt` as a [`Lang`].
-pub(crate) fn parse(code: &str) -> Option<Lang> {
-    match code.to_ascii_lowercase().as_str() {
-        "en" => Some(Lang::En),
-        "pt" | "pt-br" => Some(Lang::Pt),
-        _ => None,
-    }
-}
-
 /// The language of a request: `?lang=`, else `Accept-Language`, else English.
 pub(crate) fn of(uri: &Uri, headers: &HeaderMap) -> Lang {
     query(uri, "lang")
-        .and_then(parse)
+        .and_then(Lang::from_code)
         .or_else(|| {
             headers
                 .get(header::ACCEPT_LANGUAGE)
