@@ -108,7 +108,10 @@ macro_rules! impl_wide {
             }
             #[inline(always)]
             fn finite(self) -> Self {
-                <$w>::is_finite(self)
+                // x − x is +0 exactly for a finite x and NaN for ±∞ or NaN: two float
+                // operations, where the bit test on the exponent needs 64-bit integer
+                // comparisons that SSE2 does not have.
+                (self - self).cmp_eq(<$w>::splat(0.0))
             }
             #[inline(always)]
             fn and(self, o: Self) -> Self {
@@ -208,10 +211,12 @@ impl<L: Wide> W3<L> {
         self.x * o.x + self.y * o.y + self.z * o.z
     }
 
-    /// The mask of lanes whose three components are all finite.
+    /// The mask of lanes whose three components are all finite: (x − x) + (y − y) + (z − z)
+    /// is +0 exactly where they are, NaN where one is ±∞ or NaN.
     #[inline(always)]
     pub fn finite(self) -> L {
-        self.x.finite().and(self.y.finite()).and(self.z.finite())
+        let zero = L::splat(<L::Scalar as Real>::ZERO);
+        ((self.x - self.x) + (self.y - self.y) + (self.z - self.z)).eq(zero)
     }
 }
 
@@ -895,6 +900,52 @@ mod tests {
                 }
             }
         }
+    }
+
+    /// `finite` in lanes (one register, and a vector's three) is the scalar `is_finite` of
+    /// every awkward number: ±∞ and NaN out, the largest finite numbers and subnormals in.
+    fn finite_in_lanes_is_the_scalar_test<R: Real>() {
+        let xs = awkward::<R>();
+        let lanes = W::<R>::LANES;
+        for group in xs.chunks(lanes) {
+            let mut a = <W<R> as Wide>::Array::default();
+            a.as_mut()[..group.len()].copy_from_slice(group);
+            let w = W::<R>::from_array(a);
+            let got = w.finite().bits();
+            for (k, &x) in group.iter().enumerate() {
+                assert_eq!(got & (1 << k) != 0, x.is_finite(), "{x:?}");
+            }
+            // Each awkward number in turn as the x, y and z of an otherwise ordinary vector.
+            let one = W::<R>::splat(R::ONE);
+            for v in [
+                W3 {
+                    x: w,
+                    y: one,
+                    z: one,
+                },
+                W3 {
+                    x: one,
+                    y: w,
+                    z: one,
+                },
+                W3 {
+                    x: one,
+                    y: one,
+                    z: w,
+                },
+            ] {
+                let got = v.finite().bits();
+                for (k, &x) in group.iter().enumerate() {
+                    assert_eq!(got & (1 << k) != 0, x.is_finite(), "{x:?} in a vector");
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn finite_in_lanes_in_both_precisions() {
+        finite_in_lanes_is_the_scalar_test::<f32>();
+        finite_in_lanes_is_the_scalar_test::<f64>();
     }
 
     #[test]

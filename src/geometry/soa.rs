@@ -16,11 +16,33 @@ use super::{Plane, Ray, Shape, Sphere};
 use crate::core::lanes::{lanes_of, Wide, W, W3};
 use crate::core::Real;
 
-/// The surfaces of a flat scene by kind, each with its index in the scene's order.
+/// The surfaces of a flat scene by kind, each with its index in the scene's order and its
+/// constants already in lanes.
 #[derive(Clone, Debug)]
 pub struct FlatScene<R: Real> {
-    planes: Vec<(u32, Plane<R>)>,
-    spheres: Vec<(u32, Sphere<R>)>,
+    planes: Vec<FlatPlane<R>>,
+    spheres: Vec<FlatSphere<R>>,
+}
+
+/// A plane of a [`FlatScene`]: the plane, its tag (its index in the scene), and N and Q in every lane
+/// (splatted once, in [`FlatScene::new`], not once per packet).
+#[derive(Clone, Debug)]
+struct FlatPlane<R: Real> {
+    plane: Plane<R>,
+    normal: W3<W<R>>,
+    point: W3<W<R>>,
+    /// index + 1 in every lane: the mark [`FlatScene::nearest`] keeps of the best shape.
+    tag: W<R>,
+}
+
+/// A sphere of a [`FlatScene`]: the sphere, its tag, and C and r² in every lane.
+#[derive(Clone, Debug)]
+struct FlatSphere<R: Real> {
+    sphere: Sphere<R>,
+    center: W3<W<R>>,
+    r2: W<R>,
+    /// index + 1 in every lane, as [`FlatPlane::tag`].
+    tag: W<R>,
 }
 
 /// The lanes where `x` is 0 or a square the fast formula may use ([`Sphere::intersect_line`]).
@@ -30,6 +52,14 @@ fn safe_square<L: Wide>(x: L) -> L {
     let lo = L::splat(<L::Scalar as Real>::SAFE_SQUARED_MIN);
     let hi = L::splat(<L::Scalar as Real>::SAFE_SQUARED_MAX);
     x.eq(zero).or(x.gt(lo).and(x.lt(hi)))
+}
+
+/// No lane hit and none left to the scalar code: what a shape's test gives a packet that misses
+/// it everywhere.
+#[inline(always)]
+fn no_hit<L: Wide>() -> (L, L, L) {
+    let zero = L::splat(<L::Scalar as Real>::ZERO);
+    (zero.gt(zero), zero, zero.gt(zero))
 }
 
 /// [`Shape::hit_t`] of a sphere in every lane (rays or spheres, either may be the same in all
@@ -43,7 +73,23 @@ pub(crate) fn sphere_hit_t<L: Wide>(
     r2: L,
     t_max: L,
 ) -> (L, L, L) {
+    sphere_hit_t_in(o, d, center, r2, t_max, u32::MAX)
+}
+
+/// [`sphere_hit_t`] for the lanes set in `live` (the others' answers are not read): a packet
+/// whose live lanes all miss returns after the cheap test.
+#[inline(always)]
+fn sphere_hit_t_in<L: Wide>(
+    o: W3<L>,
+    d: W3<L>,
+    center: W3<L>,
+    r2: L,
+    t_max: L,
+    live: u32,
+) -> (L, L, L) {
     let zero = L::splat(<L::Scalar as Real>::ZERO);
+    let lo = L::splat(<L::Scalar as Real>::SAFE_SQUARED_MIN);
+    let hi = L::splat(<L::Scalar as Real>::SAFE_SQUARED_MAX);
     let f = o - center;
     let b = d.dot(f);
     let ff = f.dot(f);
@@ -51,14 +97,23 @@ pub(crate) fn sphere_hit_t<L: Wide>(
     let away = b.gt(zero).and(ff.gt(r2));
     let q = f - d.scale(b);
     let perp2 = q.dot(q);
+    // Most lanes miss most spheres: the line passes farther than r from C (r² < ‖q‖², so
+    // disc = r² − ‖q‖² < 0), with every square inside the fast formula's range (lo < r² <
+    // ‖q‖² < hi, lo < f·f < hi). Such a lane, and an `away` one, is a miss the full test
+    // below would decide as well; where every live lane is one, skip the rest.
+    let passes = perp2
+        .gt(r2)
+        .and(perp2.lt(hi))
+        .and(r2.gt(lo))
+        .and(ff.gt(lo))
+        .and(ff.lt(hi));
+    if away.or(passes).not().bits() & live == 0 {
+        return no_hit();
+    }
     let safe = safe_square(perp2).and(safe_square(r2)).and(safe_square(ff));
     let disc = r2 - perp2;
     let meets = disc.lt(zero).not();
     let decided = safe.or(away);
-    // Most lanes miss most spheres: where none can hit, skip the root and the division.
-    if away.not().and(meets).or(decided.not()).bits() == 0 {
-        return (zero.gt(zero), zero, zero.gt(zero));
-    }
     let root = disc.sqrt();
     let nb = b.neg();
     let qq = b.lt(zero).select(nb + root, nb - root);
@@ -80,16 +135,30 @@ pub(crate) fn sphere_hit_t<L: Wide>(
     (hit, in_lo.select(lo, hi), decided.not())
 }
 
-/// [`Shape::hit_t`] of a plane in every lane of a packet: the hit mask, t, and the lanes left to
-/// the scalar code (Q − O overflowing).
+/// [`Shape::hit_t`] of a plane (N and Q in every lane) in the lanes of a packet set in `live`:
+/// the hit mask, t, and the lanes left to the scalar code (Q − O overflowing).
 #[inline(always)]
-fn plane_hit_t<L: Wide>(o: W3<L>, d: W3<L>, plane: &Plane<L::Scalar>, t_max: L) -> (L, L, L) {
+fn plane_hit_t<L: Wide>(
+    o: W3<L>,
+    d: W3<L>,
+    n: W3<L>,
+    point: W3<L>,
+    t_max: L,
+    live: u32,
+) -> (L, L, L) {
     let zero = L::splat(<L::Scalar as Real>::ZERO);
-    let n = W3::<L>::splat(plane.normal);
     let denom = n.dot(d);
-    let diff = W3::<L>::splat(plane.point) - o;
+    let diff = point - o;
+    let along = n.dot(diff);
+    let t = along / denom;
+    let in_range = t.gt(zero).and(t.lt(t_max));
+    // Where t is not in (0, t_max) the lane misses, unless Q − O overflowed (the scalar code
+    // then works on the halves); N is finite, so a Q − O that is not makes N·(Q − O) not
+    // finite either: a finite N·(Q − O) out of range is a miss the full test would decide.
+    if in_range.or(along.finite().not()).bits() & live == 0 {
+        return no_hit();
+    }
     let fast = diff.finite();
-    let t = n.dot(diff) / denom;
     let at = o + d.scale(t);
     let hit = denom
         .eq(zero)
@@ -97,9 +166,58 @@ fn plane_hit_t<L: Wide>(o: W3<L>, d: W3<L>, plane: &Plane<L::Scalar>, t_max: L) 
         .and(fast)
         .and(t.finite())
         .and(at.finite())
-        .and(t.gt(zero))
-        .and(t.lt(t_max));
+        .and(in_range);
     (hit, t, fast.not())
+}
+
+/// The lanes of `lanes` whose ray (lane k of `o`, `d`) meets `shape` with 0 < t < lane k of
+/// `t_max`, by the scalar [`Shape::hit_t`]: the lanes the fast formula left undecided.
+#[cold]
+#[inline(never)]
+fn scalar_blocked<R: Real>(
+    shape: Shape<R>,
+    o: W3<W<R>>,
+    d: W3<W<R>>,
+    t_max: W<R>,
+    lanes: u32,
+) -> u32 {
+    let tm = t_max.to_array();
+    let mut blocked = 0;
+    for k in lanes_of(lanes) {
+        let ray = Ray {
+            origin: o.at(k),
+            direction: d.at(k),
+        };
+        if shape.hit_t(&ray, tm.as_ref()[k]).is_some() {
+            blocked |= 1 << k;
+        }
+    }
+    blocked
+}
+
+/// A shape's (hit, t) in lanes with the lanes of `slow` replaced by the scalar
+/// [`Shape::hit_t`] of `rays[k]` below `best_t`: the lanes the fast formula left undecided.
+#[cold]
+#[inline(never)]
+fn scalar_nearest<R: Real>(
+    shape: Shape<R>,
+    rays: &[Ray<R>],
+    (hit, t): (W<R>, W<R>),
+    best_t: W<R>,
+    slow: u32,
+) -> (W<R>, W<R>) {
+    let zero = W::<R>::splat(R::ZERO);
+    let (mut t, mut h) = (
+        t.to_array(),
+        hit.select(W::<R>::splat(R::ONE), zero).to_array(),
+    );
+    let bests = best_t.to_array();
+    for k in lanes_of(slow) {
+        let found = shape.hit_t(&rays[k], bests.as_ref()[k]);
+        h.as_mut()[k] = if found.is_some() { R::ONE } else { R::ZERO };
+        t.as_mut()[k] = found.unwrap_or(R::ZERO);
+    }
+    (W::<R>::from_array(h).gt(zero), W::<R>::from_array(t))
 }
 
 impl<R: Real> FlatScene<R> {
@@ -112,11 +230,25 @@ impl<R: Real> FlatScene<R> {
         let mut planes = Vec::new();
         let mut spheres = Vec::new();
         for (i, s) in aggregate.shapes().iter().enumerate() {
-            let i = u32::try_from(i).ok()?;
+            let index = u32::try_from(i).ok()?;
+            // The best shape's index + 1 (0: none yet), exact in either precision below 2^24
+            // shapes.
+            let tag = W::<R>::splat(R::from_f64(f64::from(index) + 1.0));
             match s {
-                Shape::Plane(p) => planes.push((i, *p)),
+                Shape::Plane(p) => planes.push(FlatPlane {
+                    plane: *p,
+                    normal: W3::splat(p.normal),
+                    point: W3::splat(p.point),
+                    tag,
+                }),
                 Shape::Sphere(_) if spheres.len() == FLAT => return None,
-                Shape::Sphere(sp) => spheres.push((i, *sp)),
+                Shape::Sphere(sp) => spheres.push(FlatSphere {
+                    sphere: *sp,
+                    center: W3::splat(sp.center),
+                    // r², as Sphere::intersect_line forms it.
+                    r2: W::<R>::splat(sp.radius * sp.radius),
+                    tag,
+                }),
                 Shape::Triangle(_) => return None,
             }
         }
@@ -139,49 +271,37 @@ impl<R: Real> FlatScene<R> {
         let infinity = R::from_f64(f64::INFINITY);
         let zero = W::<R>::splat(R::ZERO);
         let mut best_t = W::<R>::splat(infinity);
-        // The best shape's index + 1 in each lane (0: none yet), exact in either precision
-        // below 2^24 shapes (FlatScene::new).
+        // The best shape's tag (index + 1) in each lane (0: none yet).
         let mut best_i = zero;
         let live = (1u32 << rays.len()) - 1;
-        // Keeps each lane's hit where it is nearer than its best so far: the lanes' own
-        // test, with the lanes it could not decide tested by the scalar code.
-        let mut take = |(hit, t, slow): (W<R>, W<R>, W<R>),
-                        index: u32,
-                        best_t: &mut W<R>,
-                        scalar: &dyn Fn(&Ray<R>, R) -> Option<R>| {
+        // Planes first, then spheres, each in the scene's order, as the aggregate takes them;
+        // each lane's hit kept where it is nearer than its best so far (the strict rule), the
+        // lanes the fast formula could not decide tested by the scalar code.
+        for p in &self.planes {
+            let (hit, t, slow) = plane_hit_t(o, d, p.normal, p.point, best_t, live);
             let slow = slow.bits() & live;
             let (hit, t) = if slow == 0 {
                 (hit, t)
             } else {
-                let (mut t, mut h) = (
-                    t.to_array(),
-                    hit.select(W::<R>::splat(R::ONE), zero).to_array(),
-                );
-                let bests = best_t.to_array();
-                for k in lanes_of(slow) {
-                    let found = scalar(&rays[k], bests.as_ref()[k]);
-                    h.as_mut()[k] = if found.is_some() { R::ONE } else { R::ZERO };
-                    t.as_mut()[k] = found.unwrap_or(R::ZERO);
-                }
-                (W::<R>::from_array(h).gt(zero), W::<R>::from_array(t))
+                scalar_nearest(Shape::Plane(p.plane), rays, (hit, t), best_t, slow)
             };
-            *best_t = hit.select(t, *best_t);
-            best_i = hit.select(W::<R>::splat(R::from_f64(f64::from(index) + 1.0)), best_i);
-        };
-        // Planes first, then spheres, each in the scene's order, as the aggregate takes them.
-        for (index, plane) in &self.planes {
-            let found = plane_hit_t(o, d, plane, best_t);
-            take(found, *index, &mut best_t, &|ray, t_max| {
-                Shape::Plane(*plane).hit_t(ray, t_max)
-            });
+            if hit.bits() != 0 {
+                best_t = hit.select(t, best_t);
+                best_i = hit.select(p.tag, best_i);
+            }
         }
-        for (index, sphere) in &self.spheres {
-            let c = W3::<W<R>>::splat(sphere.center);
-            let r2 = W::<R>::splat(sphere.radius * sphere.radius);
-            let found = sphere_hit_t(o, d, c, r2, best_t);
-            take(found, *index, &mut best_t, &|ray, t_max| {
-                Shape::Sphere(*sphere).hit_t(ray, t_max)
-            });
+        for s in &self.spheres {
+            let (hit, t, slow) = sphere_hit_t_in(o, d, s.center, s.r2, best_t, live);
+            let slow = slow.bits() & live;
+            let (hit, t) = if slow == 0 {
+                (hit, t)
+            } else {
+                scalar_nearest(Shape::Sphere(s.sphere), rays, (hit, t), best_t, slow)
+            };
+            if hit.bits() != 0 {
+                best_t = hit.select(t, best_t);
+                best_i = hit.select(s.tag, best_i);
+            }
         }
         let (best_t, best_i) = (best_t.to_array(), best_i.to_array());
         for (k, ray) in rays.iter().enumerate() {
@@ -200,9 +320,10 @@ impl<R: Real> FlatScene<R> {
 
     /// The shadow rays of a packet, any hit: bit k of the result is set where lane k of `want`
     /// is and some surface meets `rays[k]` with 0 < t < `t_max[k]` ([`Aggregate::occluded`] of
-    /// that ray, to the bit). Every shape is tested against all the lanes at once, and the test
-    /// stops as soon as every wanted lane is blocked. `rays` and `t_max` hold [`Wide::LANES`]
-    /// entries; the lanes not wanted may hold any ray.
+    /// that ray, to the bit). `rays` and `t_max` hold [`Wide::LANES`] entries; the lanes not
+    /// wanted may hold any ray. The rays are gathered into lanes for
+    /// [`FlatScene::occluded_lanes`].
+    #[cfg(test)]
     pub(crate) fn occluded_packet(&self, rays: &[Ray<R>], t_max: &[R], want: u32) -> u32 {
         let lanes = W::<R>::LANES;
         debug_assert!(rays.len() == lanes && t_max.len() == lanes);
@@ -210,28 +331,38 @@ impl<R: Real> FlatScene<R> {
         let d = W3::<W<R>>::gather(rays.iter().map(|r| r.direction), rays[0].direction);
         let mut tm = <W<R> as Wide>::Array::default();
         tm.as_mut().copy_from_slice(t_max);
-        let tm = W::<R>::from_array(tm);
+        self.occluded_lanes(o, d, W::<R>::from_array(tm), want)
+    }
+
+    /// [`FlatScene::occluded_packet`] of rays already in lanes (origins `o`, directions `d`,
+    /// lengths `t_max`), as the wide tracer builds its shadow rays: bit k is set where bit k of
+    /// `want` is and some surface meets lane k's ray with 0 < t < lane k of `t_max`. The lanes
+    /// not wanted may hold anything (they are never read). Every shape is tested against the
+    /// lanes not yet blocked at once, and the test stops as soon as every wanted lane is
+    /// blocked (any hit: the order of the shapes changes the cost, never the answer).
+    pub(crate) fn occluded_lanes(&self, o: W3<W<R>>, d: W3<W<R>>, t_max: W<R>, want: u32) -> u32 {
         let mut blocked = 0u32;
-        // Each shape's lanes, then the lanes its fast formula could not decide, by the scalar
-        // test; `true` once every wanted lane is blocked.
-        let mut take = |(hit, _, slow): (W<R>, W<R>, W<R>), shape: Shape<R>| {
-            blocked |= hit.bits() & want;
-            for k in lanes_of(slow.bits() & want & !blocked) {
-                if shape.hit_t(&rays[k], t_max[k]).is_some() {
-                    blocked |= 1 << k;
-                }
+        for p in &self.planes {
+            let open = want & !blocked;
+            let (hit, _, slow) = plane_hit_t(o, d, p.normal, p.point, t_max, open);
+            blocked |= hit.bits() & open;
+            let slow = slow.bits() & want & !blocked;
+            if slow != 0 {
+                blocked |= scalar_blocked(Shape::Plane(p.plane), o, d, t_max, slow);
             }
-            blocked == want
-        };
-        for (_, plane) in &self.planes {
-            if take(plane_hit_t(o, d, plane, tm), Shape::Plane(*plane)) {
+            if blocked == want {
                 return want;
             }
         }
-        for (_, sphere) in &self.spheres {
-            let c = W3::<W<R>>::splat(sphere.center);
-            let r2 = W::<R>::splat(sphere.radius * sphere.radius);
-            if take(sphere_hit_t(o, d, c, r2, tm), Shape::Sphere(*sphere)) {
+        for s in &self.spheres {
+            let open = want & !blocked;
+            let (hit, _, slow) = sphere_hit_t_in(o, d, s.center, s.r2, t_max, open);
+            blocked |= hit.bits() & open;
+            let slow = slow.bits() & want & !blocked;
+            if slow != 0 {
+                blocked |= scalar_blocked(Shape::Sphere(s.sphere), o, d, t_max, slow);
+            }
+            if blocked == want {
                 return want;
             }
         }
@@ -244,6 +375,7 @@ mod tests {
     use super::*;
     use crate::core::real::v3;
     use crate::core::vector::normalize;
+    use crate::core::V3;
 
     fn scene<R: Real>() -> Aggregate<R> {
         let sphere = |c: [f64; 3], r: f64| {
@@ -315,6 +447,18 @@ mod tests {
                     let expected = want & (1 << k) != 0 && aggregate.occluded(&rs[k], t_max[k]);
                     assert_eq!(got & (1 << k) != 0, expected, "{:?} {}", rs[k], t_max[k]);
                 }
+                // In lanes, the lanes not wanted holding NaN: the same answer.
+                let nan = v3::<R>([f64::NAN; 3]);
+                let pick = |k: usize, v: V3<R>| if want & (1 << k) != 0 { v } else { nan };
+                let o =
+                    W3::<W<R>>::gather(rs.iter().enumerate().map(|(k, r)| pick(k, r.origin)), nan);
+                let d = W3::<W<R>>::gather(
+                    rs.iter().enumerate().map(|(k, r)| pick(k, r.direction)),
+                    nan,
+                );
+                let mut tm = <W<R> as Wide>::Array::default();
+                tm.as_mut().copy_from_slice(&t_max);
+                assert_eq!(flat.occluded_lanes(o, d, W::<R>::from_array(tm), want), got);
             }
         }
     }

@@ -182,7 +182,7 @@ fn distinct_materials<R: Real>(all: &[Material<R>]) -> (Vec<u32>, Vec<Material<R
 /// on one material, built in lanes as [`crate::geometry::shadow::ShadowRays::ray`] builds each
 /// one (the origin by [`offset_origin_lanes`], the direction and length to a light by
 /// [`between_lanes`]: the same operations, so every lane holds the scalar ray's bits) and tested
-/// as a packet ([`FlatScene::occluded_packet`], or [`Aggregate::occluded_packet`] through the
+/// as a packet ([`FlatScene::occluded_lanes`], in lanes as built, or [`Aggregate::occluded_packet`] through the
 /// wide BVH for scenes in a BVH), counted as the scalar engine counts them.
 struct WideSide<'a, R: Real, const SHADOWS: bool> {
     aggregate: &'a Aggregate<R>,
@@ -236,36 +236,38 @@ impl<R: Real, const SHADOWS: bool> LaneSide<W<R>> for WideSide<'_, R, SHADOWS> {
         if want == 0 {
             return need;
         }
-        // Lanes without a ray repeat the first one (and are not asked).
-        let first = want.trailing_zeros() as usize;
-        let (ox, oy, oz) = (
-            origin.x.to_array(),
-            origin.y.to_array(),
-            origin.z.to_array(),
-        );
-        let (dx, dy, dz) = (
-            direction.x.to_array(),
-            direction.y.to_array(),
-            direction.z.to_array(),
-        );
-        let mut tm = t_max.to_array();
-        let mut rays = [Ray {
-            origin: V3::<R>::ZERO,
-            direction: V3::<R>::ZERO,
-        }; 8];
-        for (k, ray) in rays.iter_mut().enumerate().take(lanes) {
-            let j = if want & (1 << k) != 0 { k } else { first };
-            *ray = Ray {
-                origin: V3::<R>::new(ox.as_ref()[j], oy.as_ref()[j], oz.as_ref()[j]),
-                direction: V3::<R>::new(dx.as_ref()[j], dy.as_ref()[j], dz.as_ref()[j]),
-            };
-            tm.as_mut()[k] = tm.as_ref()[j];
-        }
         let blocked = match self.flat {
-            Some(flat) => flat.occluded_packet(&rays[..lanes], tm.as_ref(), want),
-            None => self
-                .aggregate
-                .occluded_packet(&rays[..lanes], tm.as_ref(), want),
+            // The rays as they are, in lanes.
+            Some(flat) => flat.occluded_lanes(origin, direction, t_max, want),
+            None => {
+                // Lanes without a ray repeat the first one (and are not asked).
+                let first = want.trailing_zeros() as usize;
+                let (ox, oy, oz) = (
+                    origin.x.to_array(),
+                    origin.y.to_array(),
+                    origin.z.to_array(),
+                );
+                let (dx, dy, dz) = (
+                    direction.x.to_array(),
+                    direction.y.to_array(),
+                    direction.z.to_array(),
+                );
+                let mut tm = t_max.to_array();
+                let mut rays = [Ray {
+                    origin: V3::<R>::ZERO,
+                    direction: V3::<R>::ZERO,
+                }; 8];
+                for (k, ray) in rays.iter_mut().enumerate().take(lanes) {
+                    let j = if want & (1 << k) != 0 { k } else { first };
+                    *ray = Ray {
+                        origin: V3::<R>::new(ox.as_ref()[j], oy.as_ref()[j], oz.as_ref()[j]),
+                        direction: V3::<R>::new(dx.as_ref()[j], dy.as_ref()[j], dz.as_ref()[j]),
+                    };
+                    tm.as_mut()[k] = tm.as_ref()[j];
+                }
+                self.aggregate
+                    .occluded_packet(&rays[..lanes], tm.as_ref(), want)
+            }
         };
         need.and(mask_of::<W<R>>(blocked).not())
     }
