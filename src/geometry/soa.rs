@@ -73,11 +73,12 @@ pub(crate) fn sphere_hit_t<L: Wide>(
     r2: L,
     t_max: L,
 ) -> (L, L, L) {
-    sphere_hit_t_in(o, d, center, r2, t_max, u32::MAX)
+    sphere_hit_t_in(o, d, center, r2, t_max, u32::MAX).unwrap_or_else(no_hit)
 }
 
-/// [`sphere_hit_t`] for the lanes set in `live` (the others' answers are not read): a packet
-/// whose live lanes all miss returns after the cheap test.
+/// [`sphere_hit_t`] for the lanes set in `live` (the others' answers are not read); `None`
+/// (no hit, nothing undecided) when every live lane is a miss by the cheap test, so that the
+/// caller goes on to the next shape at once.
 #[inline(always)]
 fn sphere_hit_t_in<L: Wide>(
     o: W3<L>,
@@ -86,7 +87,7 @@ fn sphere_hit_t_in<L: Wide>(
     r2: L,
     t_max: L,
     live: u32,
-) -> (L, L, L) {
+) -> Option<(L, L, L)> {
     let zero = L::splat(<L::Scalar as Real>::ZERO);
     let lo = L::splat(<L::Scalar as Real>::SAFE_SQUARED_MIN);
     let hi = L::splat(<L::Scalar as Real>::SAFE_SQUARED_MAX);
@@ -108,7 +109,7 @@ fn sphere_hit_t_in<L: Wide>(
         .and(ff.gt(lo))
         .and(ff.lt(hi));
     if away.or(passes).not().bits() & live == 0 {
-        return no_hit();
+        return None;
     }
     let safe = safe_square(perp2).and(safe_square(r2)).and(safe_square(ff));
     let disc = r2 - perp2;
@@ -132,11 +133,12 @@ fn sphere_hit_t_in<L: Wide>(
         .and(meets)
         .and(finite)
         .and(in_lo.or(in_hi));
-    (hit, in_lo.select(lo, hi), decided.not())
+    Some((hit, in_lo.select(lo, hi), decided.not()))
 }
 
 /// [`Shape::hit_t`] of a plane (N and Q in every lane) in the lanes of a packet set in `live`:
-/// the hit mask, t, and the lanes left to the scalar code (Q − O overflowing).
+/// the hit mask, t, and the lanes left to the scalar code (Q − O overflowing); `None` (no hit,
+/// nothing undecided) when every live lane is a miss by the cheap test.
 #[inline(always)]
 fn plane_hit_t<L: Wide>(
     o: W3<L>,
@@ -145,7 +147,7 @@ fn plane_hit_t<L: Wide>(
     point: W3<L>,
     t_max: L,
     live: u32,
-) -> (L, L, L) {
+) -> Option<(L, L, L)> {
     let zero = L::splat(<L::Scalar as Real>::ZERO);
     let denom = n.dot(d);
     let diff = point - o;
@@ -156,7 +158,7 @@ fn plane_hit_t<L: Wide>(
     // then works on the halves); N is finite, so a Q − O that is not makes N·(Q − O) not
     // finite either: a finite N·(Q − O) out of range is a miss the full test would decide.
     if in_range.or(along.finite().not()).bits() & live == 0 {
-        return no_hit();
+        return None;
     }
     let fast = diff.finite();
     let at = o + d.scale(t);
@@ -167,7 +169,7 @@ fn plane_hit_t<L: Wide>(
         .and(t.finite())
         .and(at.finite())
         .and(in_range);
-    (hit, t, fast.not())
+    Some((hit, t, fast.not()))
 }
 
 /// The lanes of `lanes` whose ray (lane k of `o`, `d`) meets `shape` with 0 < t < lane k of
@@ -278,7 +280,9 @@ impl<R: Real> FlatScene<R> {
         // each lane's hit kept where it is nearer than its best so far (the strict rule), the
         // lanes the fast formula could not decide tested by the scalar code.
         for p in &self.planes {
-            let (hit, t, slow) = plane_hit_t(o, d, p.normal, p.point, best_t, live);
+            let Some((hit, t, slow)) = plane_hit_t(o, d, p.normal, p.point, best_t, live) else {
+                continue;
+            };
             let slow = slow.bits() & live;
             let (hit, t) = if slow == 0 {
                 (hit, t)
@@ -291,7 +295,9 @@ impl<R: Real> FlatScene<R> {
             }
         }
         for s in &self.spheres {
-            let (hit, t, slow) = sphere_hit_t_in(o, d, s.center, s.r2, best_t, live);
+            let Some((hit, t, slow)) = sphere_hit_t_in(o, d, s.center, s.r2, best_t, live) else {
+                continue;
+            };
             let slow = slow.bits() & live;
             let (hit, t) = if slow == 0 {
                 (hit, t)
@@ -344,7 +350,9 @@ impl<R: Real> FlatScene<R> {
         let mut blocked = 0u32;
         for p in &self.planes {
             let open = want & !blocked;
-            let (hit, _, slow) = plane_hit_t(o, d, p.normal, p.point, t_max, open);
+            let Some((hit, _, slow)) = plane_hit_t(o, d, p.normal, p.point, t_max, open) else {
+                continue;
+            };
             blocked |= hit.bits() & open;
             let slow = slow.bits() & want & !blocked;
             if slow != 0 {
@@ -356,7 +364,9 @@ impl<R: Real> FlatScene<R> {
         }
         for s in &self.spheres {
             let open = want & !blocked;
-            let (hit, _, slow) = sphere_hit_t_in(o, d, s.center, s.r2, t_max, open);
+            let Some((hit, _, slow)) = sphere_hit_t_in(o, d, s.center, s.r2, t_max, open) else {
+                continue;
+            };
             blocked |= hit.bits() & open;
             let slow = slow.bits() & want & !blocked;
             if slow != 0 {
