@@ -316,10 +316,17 @@ impl<R: Real> FlatScene<R> {
             out[k] = if i == 0.0 {
                 None
             } else {
-                let index = i as usize - 1;
-                aggregate.shapes()[index]
-                    .hit_at(ray, best_t.as_ref()[k])
-                    .map(|hit| AggregateHit { index, hit })
+                // The tag is a small whole number (FlatScene::new): the u32 conversion is exact.
+                let index = (i as u32 - 1) as usize;
+                let t = best_t.as_ref()[k];
+                // Shape::hit_at, each kind's own called here so that it is inlined and its hit
+                // written in place.
+                let hit = match &aggregate.shapes()[index] {
+                    Shape::Plane(p) => Some(p.hit_at(ray, t)),
+                    Shape::Sphere(s) => s.hit_at(ray, t),
+                    shape => shape.hit_at(ray, t),
+                };
+                hit.map(|hit| AggregateHit { index, hit })
             };
         }
     }
