@@ -1,9 +1,11 @@
 //! A flat scene (planes and at most [`FLAT`] spheres, no triangles: the size at which
 //! [`Aggregate`] itself loops instead of using its BVH) in lanes, for the wide tracer: every
 //! sphere and plane tested against several rays at once (a packet: [`FlatScene::nearest`]), or
-//! a packet of shadow rays against each shape, stopping at the first occluder
-//! ([`FlatScene::occluded_packet`]), with no dispatch
-//! on the shape's kind.
+//! a packet of shadow rays, in the lanes the wide tracer builds them in, against each shape,
+//! stopping once every ray is blocked ([`FlatScene::occluded_lanes`]), with no dispatch on the
+//! shape's kind. Each shape's constants are splatted once ([`FlatScene::new`]), and a shape that
+//! every ray of a packet misses by the cheap test (a sphere's line passing farther than r from
+//! its centre, a plane met outside (0, t_max)) costs only that test.
 //!
 //! The lanes compute exactly what the scalar [`Shape::hit_t`] computes, operation for operation
 //! (see [`crate::core::lanes`]), and shapes are taken in the aggregate's order with the same
@@ -347,12 +349,13 @@ impl<R: Real> FlatScene<R> {
         self.occluded_lanes(o, d, W::<R>::from_array(tm), want)
     }
 
-    /// [`FlatScene::occluded_packet`] of rays already in lanes (origins `o`, directions `d`,
-    /// lengths `t_max`), as the wide tracer builds its shadow rays: bit k is set where bit k of
-    /// `want` is and some surface meets lane k's ray with 0 < t < lane k of `t_max`. The lanes
-    /// not wanted may hold anything (they are never read). Every shape is tested against the
-    /// lanes not yet blocked at once, and the test stops as soon as every wanted lane is
-    /// blocked (any hit: the order of the shapes changes the cost, never the answer).
+    /// The shadow rays of a packet in lanes (origins `o`, directions `d`, lengths `t_max`), as
+    /// the wide tracer builds them, any hit: bit k is set where bit k of `want` is and some
+    /// surface meets lane k's ray with 0 < t < lane k of `t_max` ([`Aggregate::occluded`] of
+    /// that ray, to the bit). The lanes not wanted may hold anything (they are never read).
+    /// Every shape is tested against the lanes not yet blocked at once, and the test stops as
+    /// soon as every wanted lane is blocked (any hit: the order of the shapes changes the
+    /// cost, never the answer).
     pub(crate) fn occluded_lanes(&self, o: W3<W<R>>, d: W3<W<R>>, t_max: W<R>, want: u32) -> u32 {
         let mut blocked = 0u32;
         for p in &self.planes {

@@ -6,7 +6,7 @@
 //! [`FlatScene`] (8 rays per instruction in f32, 4 in f64); the hits are grouped by material
 //! and shaded a register at a time by the core's own arithmetic ([`shade_lanes`], of which the
 //! scalar [`crate::core::shade`] is the one-lane instance), their shadow rays built as
-//! `ShadowRays` builds them and tested as packets, any hit ([`FlatScene::occluded_packet`]);
+//! `ShadowRays` builds them and tested as packets, any hit ([`FlatScene::occluded_lanes`]);
 //! then each path is stepped by the scalar tracer's own [`Tracer::step`] (the stop rules, the
 //! reflection ray), and the rays it spawns form the next bounce's queue. The loop is one of four
 //! instances ([`Plan`]), chosen once per render by whether the scene has shadows and reflection.
@@ -182,8 +182,9 @@ fn distinct_materials<R: Real>(all: &[Material<R>]) -> (Vec<u32>, Vec<Material<R
 /// on one material, built in lanes as [`crate::geometry::shadow::ShadowRays::ray`] builds each
 /// one (the origin by [`offset_origin_lanes`], the direction and length to a light by
 /// [`between_lanes`]: the same operations, so every lane holds the scalar ray's bits) and tested
-/// as a packet ([`FlatScene::occluded_lanes`], in lanes as built, or [`Aggregate::occluded_packet`] through the
-/// wide BVH for scenes in a BVH), counted as the scalar engine counts them.
+/// as a packet ([`FlatScene::occluded_lanes`], in the lanes as built, or
+/// [`Aggregate::occluded_packet`] through the wide BVH for scenes in a BVH), counted as the
+/// scalar engine counts them.
 struct WideSide<'a, R: Real, const SHADOWS: bool> {
     aggregate: &'a Aggregate<R>,
     flat: Option<&'a FlatScene<R>>,
