@@ -214,6 +214,7 @@ impl<L: Wide> W3<L> {
     /// The mask of lanes whose three components are all finite: (x − x) + (y − y) + (z − z)
     /// is +0 exactly where they are, NaN where one is ±∞ or NaN.
     #[inline(always)]
+    #[allow(clippy::eq_op)] // x − x is the test itself, not a slip.
     pub fn finite(self) -> L {
         let zero = L::splat(<L::Scalar as Real>::ZERO);
         ((self.x - self.x) + (self.y - self.y) + (self.z - self.z)).eq(zero)
