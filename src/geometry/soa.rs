@@ -26,8 +26,8 @@ pub struct FlatScene<R: Real> {
     spheres: Vec<FlatSphere<R>>,
 }
 
-/// A plane of a [`FlatScene`]: the plane, its tag (its index in the scene), and N and Q in every lane
-/// (splatted once, in [`FlatScene::new`], not once per packet).
+/// A plane of a [`FlatScene`]: the plane, its tag (from its index in the scene), and N and Q
+/// in every lane (splatted once, in [`FlatScene::new`], not once per packet).
 #[derive(Clone, Debug)]
 struct FlatPlane<R: Real> {
     plane: Plane<R>,
