@@ -286,6 +286,8 @@ struct Buffers<R: Real> {
     /// (material, entry) of the entries with a hit, sorted: the groups shaded together.
     groups: Vec<(u32, u32)>,
     rays: Vec<Ray<R>>,
+    /// Sample i of the row's pixels: its sx and its [`CameraRays::up_term`].
+    samples: Vec<(f64, V3<R>)>,
 }
 
 /// Pixel means of row `y`, each mapped by `each` and appended to `out`: the row
@@ -333,7 +335,13 @@ fn row_in<R: Real, T: Copy, const SHADOWS: bool, const REFLECT: bool>(
         shaded: vec![(V3::<R>::ZERO, V3::<R>::ZERO); BLOCK],
         groups: Vec::with_capacity(BLOCK),
         rays: Vec::with_capacity(lanes),
+        samples: Vec::with_capacity(n as usize),
     };
+    // The row's samples: each one's sx and the height of its rays, the same for every pixel.
+    b.samples.extend((0..n).map(|i| {
+        let (sx, sy) = sample(i, n);
+        (sx, camera.up_term(y, sy))
+    }));
     let aggregate = &tracer.scene.aggregate;
     let flat = plan.flat.as_ref();
     let mut sum = [0.0f64; 3];
@@ -342,11 +350,11 @@ fn row_in<R: Real, T: Copy, const SHADOWS: bool, const REFLECT: bool>(
         // Primary rays, pixel by pixel and sample by sample, as pixel_mean takes them.
         b.queue.clear();
         for s in start..end {
-            let (x, i) = ((s / n as usize) as u32, (s % n as usize) as u32);
-            let (sx, sy) = sample(i, n);
+            let (x, i) = ((s / n as usize) as u32, s % n as usize);
+            let (sx, up_term) = b.samples[i];
             b.queue.push(Entry {
                 slot: (s - start) as u32,
-                path: PathState::primary(camera.ray(x, y, sx, sy)),
+                path: PathState::primary(camera.ray_across(up_term, x, sx)),
             });
             b.colors[s - start] = V3::<R>::ZERO;
         }
