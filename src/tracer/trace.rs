@@ -261,7 +261,7 @@ impl<R: Real> Tracer<'_, R> {
         let mut shadows = self.problem.render.shadows.then(|| shadows(&h.hit));
         let local = shade(&at, m, &self.problem.lights, &mut shadows, &mut NoRecord).color;
         counts.shadow += shadows.as_ref().map_or(0, |s| s.traced());
-        self.step(path, spawn, &h, n, local, counts, rec)
+        self.step(path, spawn, &h, (n, local), counts, rec)
     }
 
     /// The step of a path whose ray missed: its share is the factor times the background.
@@ -288,8 +288,8 @@ impl<R: Real> Tracer<'_, R> {
         (path.factor * self.problem.background, false)
     }
 
-    /// The rest of [`Tracer::bounce`] once the hit `h` is shaded (`n`: the normal facing the
-    /// ray, `local`: the core's colour there), for both engines: the ray's share, the stop
+    /// The rest of [`Tracer::bounce`] once the hit `h` is shaded (`shaded`: the normal facing
+    /// the ray and the core's colour there), for both engines: the ray's share, the stop
     /// rules and the reflection ray. `spawn` is where the ray left from, for the record.
     #[inline]
     pub(crate) fn step(
@@ -297,11 +297,11 @@ impl<R: Real> Tracer<'_, R> {
         path: &mut PathState<R>,
         spawn: Option<Spawn<R>>,
         h: &AggregateHit<R>,
-        n: V3<R>,
-        local: V3<R>,
+        shaded: (V3<R>, V3<R>),
         counts: &mut Counts,
         rec: &mut impl PathRecorder<R>,
     ) -> (V3<R>, bool) {
+        let (n, local) = shaded;
         let PathState {
             ray,
             factor,

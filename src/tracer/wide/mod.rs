@@ -382,8 +382,7 @@ fn row_in<R: Real, T: Copy, const SHADOWS: bool, const REFLECT: bool>(
                 let (share, more) = match &b.found[i] {
                     None => tracer.miss(&e.path, None, &mut ()),
                     Some(h) if REFLECT => {
-                        let (n, local) = b.shaded[i];
-                        tracer.step(&mut e.path, None, h, n, local, counts, &mut ())
+                        tracer.step(&mut e.path, None, h, b.shaded[i], counts, &mut ())
                     }
                     Some(_) => (e.path.factor * b.shaded[i].1, false),
                 };
