@@ -56,11 +56,24 @@ impl<R: Real> CameraRays<R> {
     /// [0, 1)²; (0.5, 0.5) is the pixel's centre.
     #[inline]
     pub fn ray(&self, x: u32, y: u32, sx: f64, sy: f64) -> Ray<R> {
-        let ndc_x = R::from_f64((f64::from(x) + sx) / f64::from(self.width) * 2.0 - 1.0);
+        self.ray_across(self.up_term(y, sy), x, sx)
+    }
+
+    /// The part of [`CameraRays::ray`] that depends only on the row `y` and the sample's `sy`:
+    /// the image plane's up vector scaled to the point's height. A row's rays share it, so the
+    /// wide engine makes it once per row and sample rather than once per ray.
+    #[inline]
+    pub(crate) fn up_term(&self, y: u32, sy: f64) -> V3<R> {
         let ndc_y = R::from_f64(1.0 - (f64::from(y) + sy) / f64::from(self.height) * 2.0);
-        let d = self.forward
-            + self.right * (ndc_x * self.half_width)
-            + self.up * (ndc_y * self.half_height);
+        self.up * (ndc_y * self.half_height)
+    }
+
+    /// [`CameraRays::ray`] through (x + sx) across the image, at the height whose
+    /// [`CameraRays::up_term`] is `up_term`: the same operations, so the same ray.
+    #[inline]
+    pub(crate) fn ray_across(&self, up_term: V3<R>, x: u32, sx: f64) -> Ray<R> {
+        let ndc_x = R::from_f64((f64::from(x) + sx) / f64::from(self.width) * 2.0 - 1.0);
+        let d = self.forward + self.right * (ndc_x * self.half_width) + up_term;
         Ray {
             origin: self.eye,
             direction: normalize::<R>(d)

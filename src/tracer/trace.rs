@@ -116,11 +116,17 @@ pub struct RayRecord<R: Real> {
 
 /// Receives each ray of a path; the hot path passes `()`, which records nothing.
 pub trait PathRecorder<R: Real> {
+    /// Whether the records are kept: when not, the tracer does not gather what only a record
+    /// shows (where a reflection ray left from).
+    const RECORDS: bool = true;
+
     /// Receives one ray's record, in path order.
     fn ray(&mut self, record: &RayRecord<R>);
 }
 
 impl<R: Real> PathRecorder<R> for () {
+    const RECORDS: bool = false;
+
     #[inline(always)]
     fn ray(&mut self, _: &RayRecord<R>) {}
 }
@@ -141,7 +147,9 @@ pub struct Tracer<'a, R: Real> {
 
 /// Where a path stands between two bounces: the ray to trace next and what it carries. The
 /// scalar [`Tracer::trace`] keeps one; the wide tracer keeps a queue of them per bounce
-/// (`tracer::wide`), both stepping them with [`Tracer::bounce`].
+/// (`tracer::wide`), both stepping them with [`Tracer::step`]. Where a reflection ray left
+/// from ([`Spawn`]) is not carried: only a record shows it, and [`Tracer::trace`] keeps it
+/// beside the path when its recorder records.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub(crate) struct PathState<R: Real> {
     /// The ray to trace next.
@@ -152,8 +160,6 @@ pub(crate) struct PathState<R: Real> {
     pub weight: R,
     /// 1 for the primary ray.
     pub level: u32,
-    /// For a reflection ray, where it left from.
-    pub spawn: Option<Spawn<R>>,
 }
 
 impl<R: Real> PathState<R> {
@@ -165,7 +171,6 @@ impl<R: Real> PathState<R> {
             factor: V3::<R>::splat(R::ONE),
             weight: R::ONE,
             level: 1,
-            spawn: None,
         }
     }
 }
@@ -187,25 +192,41 @@ impl<R: Real> CountedVisibility<R> for crate::geometry::shadow::ShadowRays<'_, R
 impl<R: Real> Tracer<'_, R> {
     /// The colour seen along a primary ray, unclamped.
     #[inline]
-    pub fn trace(
+    pub fn trace<P: PathRecorder<R>>(
         &self,
         primary: Ray<R>,
         counts: &mut Counts,
-        rec: &mut impl PathRecorder<R>,
+        rec: &mut P,
     ) -> V3<R> {
         let infinity = R::from_f64(f64::INFINITY);
         let aggregate = &self.scene.aggregate;
         let mut color = V3::<R>::ZERO;
         let mut path = PathState::primary(primary);
+        // Where the current ray left from, for the record (a reflection ray's only).
+        let mut spawn = None;
         counts.primary += 1;
         loop {
             // The nearest hit in front of the origin; a miss sees the background.
             let found = aggregate.nearest(&path.ray, infinity);
-            let (share, more) =
-                self.bounce(&mut path, found, |h| h.shadow_rays(aggregate), counts, rec);
+            let (share, more) = self.bounce(
+                &mut path,
+                spawn,
+                found,
+                |h| h.shadow_rays(aggregate),
+                counts,
+                rec,
+            );
             color += share;
             if !more {
                 return color;
+            }
+            if P::RECORDS {
+                spawn = found.map(|h| Spawn {
+                    from: h.hit.p,
+                    p_error: h.hit.p_error,
+                    normal: h.hit.normal,
+                    origin: path.ray.origin,
+                });
             }
         }
     }
@@ -213,18 +234,20 @@ impl<R: Real> Tracer<'_, R> {
     /// One step of a path whose ray found `found` (its nearest hit, or a miss): the ray's share
     /// of the pixel (the factor times the local colour, or times the background on a miss), and
     /// whether a reflection ray follows, in which case `path` now holds it. `shadows` makes the
-    /// hit's shadow rays (asked only with shadows on).
+    /// hit's shadow rays (asked only with shadows on). `spawn` is where the ray left from, for
+    /// the record.
     #[inline]
     pub(crate) fn bounce<V: CountedVisibility<R>>(
         &self,
         path: &mut PathState<R>,
+        spawn: Option<Spawn<R>>,
         found: Option<AggregateHit<R>>,
         shadows: impl FnOnce(&SurfaceHit<R>) -> V,
         counts: &mut Counts,
         rec: &mut impl PathRecorder<R>,
     ) -> (V3<R>, bool) {
         let Some(h) = found else {
-            return self.miss(path, rec);
+            return self.miss(path, spawn, rec);
         };
         let m = &self.scene.materials[h.index];
         // N turned to face the incoming ray; V is the ray's direction (Eq. 4.10).
@@ -238,14 +261,16 @@ impl<R: Real> Tracer<'_, R> {
         let mut shadows = self.problem.render.shadows.then(|| shadows(&h.hit));
         let local = shade(&at, m, &self.problem.lights, &mut shadows, &mut NoRecord).color;
         counts.shadow += shadows.as_ref().map_or(0, |s| s.traced());
-        self.step(path, &h, n, local, counts, rec)
+        self.step(path, spawn, &h, (n, local), counts, rec)
     }
 
     /// The step of a path whose ray missed: its share is the factor times the background.
+    /// `spawn` is where the ray left from, for the record.
     #[inline]
     pub(crate) fn miss(
         &self,
         path: &PathState<R>,
+        spawn: Option<Spawn<R>>,
         rec: &mut impl PathRecorder<R>,
     ) -> (V3<R>, bool) {
         rec.ray(&RayRecord {
@@ -253,7 +278,7 @@ impl<R: Real> Tracer<'_, R> {
             weight: path.weight,
             factor: path.factor,
             ray: path.ray,
-            spawn: path.spawn,
+            spawn,
             hit: None,
             local: self.problem.background,
             o_r: None,
@@ -263,25 +288,25 @@ impl<R: Real> Tracer<'_, R> {
         (path.factor * self.problem.background, false)
     }
 
-    /// The rest of [`Tracer::bounce`] once the hit `h` is shaded (`n`: the normal facing the
-    /// ray, `local`: the core's colour there), for both engines: the ray's share, the stop
-    /// rules and the reflection ray.
+    /// The rest of [`Tracer::bounce`] once the hit `h` is shaded (`shaded`: the normal facing
+    /// the ray and the core's colour there), for both engines: the ray's share, the stop
+    /// rules and the reflection ray. `spawn` is where the ray left from, for the record.
     #[inline]
     pub(crate) fn step(
         &self,
         path: &mut PathState<R>,
+        spawn: Option<Spawn<R>>,
         h: &AggregateHit<R>,
-        n: V3<R>,
-        local: V3<R>,
+        shaded: (V3<R>, V3<R>),
         counts: &mut Counts,
         rec: &mut impl PathRecorder<R>,
     ) -> (V3<R>, bool) {
+        let (n, local) = shaded;
         let PathState {
             ray,
             factor,
             weight,
             level,
-            spawn,
         } = *path;
         let m = &self.scene.materials[h.index];
         let share = factor * local;
@@ -331,12 +356,6 @@ impl<R: Real> Tracer<'_, R> {
             factor: factor * o_r,
             weight: weight * o_r.max_element(),
             level: level + 1,
-            spawn: Some(Spawn {
-                from: h.hit.p,
-                p_error: h.hit.p_error,
-                normal: h.hit.normal,
-                origin: next.origin,
-            }),
         };
         counts.reflection += 1;
         (share, true)

@@ -279,8 +279,8 @@ impl<R: Real, const SHADOWS: bool> LaneSide<W<R>> for WideSide<'_, R, SHADOWS> {
 
 /// The queues and buffers of one row, allocated once per row and reused by its blocks.
 struct Buffers<R: Real> {
+    /// The live paths of the bounce being traced, in sample order.
     queue: Vec<Entry<R>>,
-    next: Vec<Entry<R>>,
     colors: Vec<V3<R>>,
     /// The nearest hit of each queue entry.
     found: Vec<Option<AggregateHit<R>>>,
@@ -288,8 +288,9 @@ struct Buffers<R: Real> {
     shaded: Vec<(V3<R>, V3<R>)>,
     /// (material, entry) of the entries with a hit, sorted: the groups shaded together.
     groups: Vec<(u32, u32)>,
-    hits: Vec<Option<AggregateHit<R>>>,
     rays: Vec<Ray<R>>,
+    /// Sample i of the row's pixels: its sx and its [`CameraRays::up_term`].
+    samples: Vec<(f64, V3<R>)>,
 }
 
 /// Pixel means of row `y`, each mapped by `each` and appended to `out`: the row
@@ -332,14 +333,18 @@ fn row_in<R: Real, T: Copy, const SHADOWS: bool, const REFLECT: bool>(
     let total = width as usize * n as usize;
     let mut b = Buffers {
         queue: Vec::with_capacity(BLOCK),
-        next: Vec::with_capacity(BLOCK),
         colors: vec![V3::<R>::ZERO; BLOCK],
         found: Vec::with_capacity(BLOCK),
         shaded: vec![(V3::<R>::ZERO, V3::<R>::ZERO); BLOCK],
         groups: Vec::with_capacity(BLOCK),
-        hits: vec![None; lanes],
         rays: Vec::with_capacity(lanes),
+        samples: Vec::with_capacity(n as usize),
     };
+    // The row's samples: each one's sx and the height of its rays, the same for every pixel.
+    b.samples.extend((0..n).map(|i| {
+        let (sx, sy) = sample(i, n);
+        (sx, camera.up_term(y, sy))
+    }));
     let aggregate = &tracer.scene.aggregate;
     let flat = plan.flat.as_ref();
     let mut sum = [0.0f64; 3];
@@ -348,11 +353,11 @@ fn row_in<R: Real, T: Copy, const SHADOWS: bool, const REFLECT: bool>(
         // Primary rays, pixel by pixel and sample by sample, as pixel_mean takes them.
         b.queue.clear();
         for s in start..end {
-            let (x, i) = ((s / n as usize) as u32, (s % n as usize) as u32);
-            let (sx, sy) = sample(i, n);
+            let (x, i) = ((s / n as usize) as u32, s % n as usize);
+            let (sx, up_term) = b.samples[i];
             b.queue.push(Entry {
                 slot: (s - start) as u32,
-                path: PathState::primary(camera.ray(x, y, sx, sy)),
+                path: PathState::primary(camera.ray_across(up_term, x, sx)),
             });
             b.colors[s - start] = V3::<R>::ZERO;
         }
@@ -360,41 +365,39 @@ fn row_in<R: Real, T: Copy, const SHADOWS: bool, const REFLECT: bool>(
         // One bounce per pass: the queue's nearest hits a packet at a time; the hits shaded
         // by material, a register at a time; then each path stepped and its child queued.
         while !b.queue.is_empty() {
-            b.next.clear();
+            // Each packet's hits written straight into their places in `found`.
             b.found.clear();
-            for packet in b.queue.chunks(lanes) {
+            b.found.resize(b.queue.len(), None);
+            for (packet, out) in b.queue.chunks(lanes).zip(b.found.chunks_mut(lanes)) {
+                b.rays.clear();
+                b.rays.extend(packet.iter().map(|e| e.path.ray));
                 match flat {
-                    Some(flat) => {
-                        b.rays.clear();
-                        b.rays.extend(packet.iter().map(|e| e.path.ray));
-                        flat.nearest(aggregate, &b.rays, &mut b.hits);
-                    }
-                    None => {
-                        b.rays.clear();
-                        b.rays.extend(packet.iter().map(|e| e.path.ray));
-                        aggregate.nearest_packet(&b.rays, &mut b.hits);
-                    }
+                    Some(flat) => flat.nearest(aggregate, &b.rays, out),
+                    None => aggregate.nearest_packet(&b.rays, out),
                 }
-                b.found.extend_from_slice(&b.hits[..packet.len()]);
             }
             shade_queue::<R, SHADOWS>(tracer, plan, &mut b, counts);
-            // Each path stepped where it stands in the queue (the queue is refilled next
-            // pass), and copied once into the next queue if it goes on.
-            for (i, e) in b.queue.iter_mut().enumerate() {
+            // Each path stepped where it stands in the queue, and the paths that go on moved
+            // down to its front, in order: the next bounce's queue.
+            let mut kept = 0;
+            for i in 0..b.queue.len() {
+                let e = &mut b.queue[i];
                 let (share, more) = match &b.found[i] {
-                    None => tracer.miss(&e.path, &mut ()),
+                    None => tracer.miss(&e.path, None, &mut ()),
                     Some(h) if REFLECT => {
-                        let (n, local) = b.shaded[i];
-                        tracer.step(&mut e.path, h, n, local, counts, &mut ())
+                        tracer.step(&mut e.path, None, h, b.shaded[i], counts, &mut ())
                     }
                     Some(_) => (e.path.factor * b.shaded[i].1, false),
                 };
                 b.colors[e.slot as usize] += share;
                 if more {
-                    b.next.push(*e);
+                    if kept != i {
+                        b.queue[kept] = b.queue[i];
+                    }
+                    kept += 1;
                 }
             }
-            std::mem::swap(&mut b.queue, &mut b.next);
+            b.queue.truncate(kept);
         }
         // The samples in order: each pixel's sum, then its mean, as pixel_mean forms them.
         for s in start..end {
