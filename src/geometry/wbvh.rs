@@ -35,7 +35,7 @@ use super::bvh::Bvh;
 use super::soa::sphere_hit_t;
 use super::triangle::Shear;
 use super::{Ray, Shape};
-use crate::core::lanes::{lanes_of, mask_of, Wide, W, W3};
+use crate::core::lanes::{lanes_of, mask_of, Lanes, Wide, W, W3};
 use crate::core::rounding::gamma;
 use crate::core::{Real, Vector, V3};
 
@@ -128,10 +128,21 @@ fn max<L: Wide>(a: L, b: L) -> L {
     a.lt(b).select(b, a)
 }
 
-/// a ≤ b per lane (false where either is NaN).
+/// a ≤ b per lane (false where either is NaN), by one comparison.
 #[inline(always)]
-fn le<L: Wide>(a: L, b: L) -> L {
-    a.lt(b).or(a.eq(b))
+fn le<L: Lanes<Mask = L>>(a: L, b: L) -> L {
+    a.at_most(b)
+}
+
+/// One end of a slab interval narrowed by a plane's distance: `t` where `t < end`, else `end`
+/// (a NaN `t`, from 0·∞, leaves the end as it is), by one minimum instruction rather than a
+/// comparison and a blend. The interval's far end narrows as [`Aabb::hit`]'s `t_far < t1`;
+/// its near end is kept negated, −t₀, so that "t_near > t₀" becomes "−t_near < −t₀", and
+/// −t_near is computed as (O − near)·(1/D), which is −((near − O)·(1/D)) to the bit (IEEE
+/// rounding is symmetric), so the negated end is the scalar end, negated, to the bit.
+#[inline(always)]
+fn narrow<L: Lanes>(t: L, end: L) -> L {
+    t.minimum(end)
 }
 
 /// The ray as the traversal uses it: per-axis origin and 1/D in lanes, the octant, and the
@@ -185,18 +196,19 @@ impl<R: Real> Prepared<R> {
 #[inline(always)]
 fn slab<R: Real>(node: &Node<R>, r: &Prepared<R>, t_max: R) -> (u32, W<R>) {
     let widen = W::<R>::splat(R::ONE + R::TWO * gamma::<R>(3));
-    let mut t0 = W::<R>::splat(R::ZERO);
+    // −t₀, so that both ends narrow by a minimum (see `narrow`)
+    let mut t0 = W::<R>::splat(-R::ZERO);
     let mut t1 = W::<R>::splat(t_max);
     for a in 0..3 {
         // Near and far planes by the sign of 1/D, as the scalar test picks them
         let near = node.bounds[r.near[a] & 1][a];
         let far = node.bounds[(r.near[a] & 1) ^ 1][a];
-        let t_near = (near - r.o[a]) * r.inv[a];
+        let t_near = (r.o[a] - near) * r.inv[a];
         let t_far = (far - r.o[a]) * r.inv[a] * widen;
-        // A NaN (0·∞) leaves the interval as it is, as the scalar comparisons do.
-        t0 = t_near.gt(t0).select(t_near, t0);
-        t1 = t_far.lt(t1).select(t_far, t1);
+        t0 = narrow(t_near, t0);
+        t1 = narrow(t_far, t1);
     }
+    let t0 = Wide::neg(t0);
     // t0 ≤ t1; neither can be NaN.
     (t1.lt(t0).not().bits() & node.used, t0)
 }
@@ -725,14 +737,15 @@ impl<R: Real> Packet<R> {
 #[inline(always)]
 fn slab_rays<R: Real>(near: [R; 3], far: [R; 3], p: &Packet<R>, t_max: W<R>) -> (u32, W<R>) {
     let widen = W::<R>::splat(R::ONE + R::TWO * gamma::<R>(3));
-    let mut t0 = W::<R>::splat(R::ZERO);
+    let mut t0 = W::<R>::splat(-R::ZERO);
     let mut t1 = t_max;
     for a in 0..3 {
-        let t_near = (W::<R>::splat(near[a]) - p.o[a]) * p.inv[a];
+        let t_near = (p.o[a] - W::<R>::splat(near[a])) * p.inv[a];
         let t_far = (W::<R>::splat(far[a]) - p.o[a]) * p.inv[a] * widen;
-        t0 = t_near.gt(t0).select(t_near, t0);
-        t1 = t_far.lt(t1).select(t_far, t1);
+        t0 = narrow(t_near, t0);
+        t1 = narrow(t_far, t1);
     }
+    let t0 = Wide::neg(t0);
     (t1.lt(t0).not().bits(), t0)
 }
 
