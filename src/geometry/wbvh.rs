@@ -209,8 +209,8 @@ fn slab<R: Real>(node: &Node<R>, r: &Prepared<R>, t_max: R) -> (u32, W<R>) {
         t1 = narrow(t_far, t1);
     }
     let t0 = Wide::neg(t0);
-    // t0 ≤ t1; neither can be NaN.
-    (t1.lt(t0).not().bits() & node.used, t0)
+    // t0 ≤ t1, as the scalar test ends (t0 cannot be NaN)
+    (le(t0, t1).bits() & node.used, t0)
 }
 
 /// [`Shape::hit_t`] of each triangle of a leaf against one ray (the watertight test of
@@ -494,21 +494,24 @@ impl<R: Real> WideBvh<R> {
             }
             return;
         }
-        self.traverse_from(r, root, t_max, leaf);
+        self.traverse_from(r, &mut Stack::new(), root, t_max, leaf);
     }
 
     /// [`WideBvh::traverse`] of the subtree under `start` (a node or a leaf the ray has
-    /// reached with this t_max), as the whole search would visit it.
+    /// reached with this t_max), as the whole search would visit it, on `stack` (emptied
+    /// first: the packet searches lend one stack to all the rays they send on alone, which
+    /// saves clearing a new one for each).
     #[inline(always)]
     fn traverse_from(
         &self,
         r: &Prepared<R>,
+        stack: &mut Stack<R>,
         start: Ref,
         t_max: R,
         mut leaf: impl FnMut(Ref, &mut R) -> bool,
     ) {
         let mut t_max = t_max;
-        let mut stack = Stack::<R>::new();
+        stack.clear();
         let mut cur = start;
         loop {
             if cur >> KIND == NODE {
@@ -746,7 +749,7 @@ fn slab_rays<R: Real>(near: [R; 3], far: [R; 3], p: &Packet<R>, t_max: W<R>) -> 
         t1 = narrow(t_far, t1);
     }
     let t0 = Wide::neg(t0);
-    (t1.lt(t0).not().bits(), t0)
+    (le(t0, t1).bits(), t0)
 }
 
 /// Rays the packet traversal takes on together: with this many or fewer, each ray goes on by
@@ -894,6 +897,7 @@ impl<R: Real> WideBvh<R> {
             return;
         };
         let mut stack = PacketStack::<R>::new();
+        let mut alone = Stack::<R>::new();
         let (mut cur, mut active) = (root, group);
         let mut masks = [0u32; MAX_WIDTH];
         let mut t0 = [W::<R>::splat(R::ZERO); MAX_WIDTH];
@@ -905,7 +909,7 @@ impl<R: Real> WideBvh<R> {
                     let r = lazy.get(k, &rays[k], !self.triangles.is_empty());
                     let ray = &rays[k];
                     let mut t_k = a.as_ref()[k];
-                    self.traverse_from(r, cur, t_k, |leaf, t_max| {
+                    self.traverse_from(r, &mut alone, cur, t_k, |leaf, t_max| {
                         if let Some(i) = self.nearest_leaf(shapes, r, ray, leaf, t_max) {
                             best[k] = Some(i);
                             t_k = *t_max;
@@ -1111,6 +1115,7 @@ impl<R: Real> WideBvh<R> {
             return 0;
         };
         let mut stack = PacketStack::<R>::new();
+        let mut alone = Stack::<R>::new();
         let (mut cur, mut active) = (root, group);
         let mut blocked = 0u32;
         let t_max = tm.to_array();
@@ -1123,7 +1128,7 @@ impl<R: Real> WideBvh<R> {
                     let r = lazy.get(k, &rays[k], !self.triangles.is_empty());
                     let (ray, t_k) = (&rays[k], t_max.as_ref()[k]);
                     let mut found = false;
-                    self.traverse_from(r, cur, t_k, |leaf, t_max| {
+                    self.traverse_from(r, &mut alone, cur, t_k, |leaf, t_max| {
                         found = self.occluded_leaf(shapes, r, ray, leaf, *t_max);
                         found
                     });
@@ -1264,6 +1269,13 @@ impl<R: Real> Stack<R> {
             len: 0,
             spill: Vec::new(),
         }
+    }
+
+    /// Empties the stack.
+    #[inline(always)]
+    fn clear(&mut self) {
+        self.len = 0;
+        self.spill.clear();
     }
 
     #[inline(always)]
