@@ -694,34 +694,26 @@ struct Packet<R: Real> {
 }
 
 impl<R: Real> Packet<R> {
+    /// The packet of `rays` (at least one, at most [`Wide::LANES`]): 1/D by a division in
+    /// lanes, each lane's the scalar `inverse`'s to the bit.
     fn of(rays: &[Ray<R>]) -> Self {
         debug_assert!(!rays.is_empty() && rays.len() <= W::<R>::LANES);
-        let mut o = [<W<R> as Wide>::Array::default(); 3];
-        let mut inv = [<W<R> as Wide>::Array::default(); 3];
+        let first = rays[0];
+        let o3 = W3::gather(rays.iter().map(|r| r.origin), first.origin);
+        let d3 = W3::gather(rays.iter().map(|r| r.direction), first.direction);
+        let one = W::<R>::splat(R::ONE);
+        let inv = [one / d3.x, one / d3.y, one / d3.z];
+        let zero = W::<R>::splat(R::ZERO);
+        let neg = inv.map(|i| i.lt(zero).bits());
         let mut octant = [0u8; MAX_WIDTH];
         for (k, octant) in octant.iter_mut().enumerate().take(W::<R>::LANES) {
-            let ray = rays.get(k).unwrap_or(&rays[0]);
-            let (ok, ik) = (
-                ray.origin.to_array(),
-                inverse::<R>(ray.direction).to_array(),
-            );
-            for a in 0..3 {
-                o[a].as_mut()[k] = ok[a];
-                inv[a].as_mut()[k] = ik[a];
-                *octant |= u8::from(ik[a] < R::ZERO) << a;
-            }
+            *octant = ((neg[0] >> k & 1) | (neg[1] >> k & 1) << 1 | (neg[2] >> k & 1) << 2) as u8;
         }
-        let o = o.map(W::<R>::from_array);
-        let first = rays[0];
         Packet {
-            o,
-            inv: inv.map(W::<R>::from_array),
-            o3: W3 {
-                x: o[0],
-                y: o[1],
-                z: o[2],
-            },
-            d3: W3::gather(rays.iter().map(|r| r.direction), first.direction),
+            o: [o3.x, o3.y, o3.z],
+            inv,
+            o3,
+            d3,
             octant,
         }
     }
