@@ -685,7 +685,6 @@ impl<R: Real> WideBvh<R> {
 /// slab tests of one child box against every ray and the sphere tests of one sphere against
 /// every ray. Lanes past the packet's end repeat its first ray and are never active.
 struct Packet<R: Real> {
-    o: [W<R>; 3],
     inv: [W<R>; 3],
     o3: W3<W<R>>,
     d3: W3<W<R>>,
@@ -710,7 +709,6 @@ impl<R: Real> Packet<R> {
             *octant = ((neg[0] >> k & 1) | (neg[1] >> k & 1) << 1 | (neg[2] >> k & 1) << 2) as u8;
         }
         Packet {
-            o: [o3.x, o3.y, o3.z],
             inv,
             o3,
             d3,
@@ -734,9 +732,10 @@ fn slab_rays<R: Real>(near: [R; 3], far: [R; 3], p: &Packet<R>, t_max: W<R>) -> 
     let widen = W::<R>::splat(R::ONE + R::TWO * gamma::<R>(3));
     let mut t0 = W::<R>::splat(-R::ZERO);
     let mut t1 = t_max;
+    let o = [p.o3.x, p.o3.y, p.o3.z];
     for a in 0..3 {
-        let t_near = (p.o[a] - W::<R>::splat(near[a])) * p.inv[a];
-        let t_far = (W::<R>::splat(far[a]) - p.o[a]) * p.inv[a] * widen;
+        let t_near = (o[a] - W::<R>::splat(near[a])) * p.inv[a];
+        let t_far = (W::<R>::splat(far[a]) - o[a]) * p.inv[a] * widen;
         t0 = narrow(t_near, t0);
         t1 = narrow(t_far, t1);
     }
