@@ -13,8 +13,8 @@ use super::bounds::Aabb;
 use super::bvh::Bvh;
 use super::hit::SurfaceHit;
 use super::wbvh::WideBvh;
-use super::{Ray, Shape};
-use crate::core::lanes::{lanes_of, Wide, W};
+use super::{Plane, Ray, Shape};
+use crate::core::lanes::{lanes_of, mask_of, Wide, W, W3};
 use crate::core::Real;
 
 /// Up to this many bounded shapes are tested in a plain loop rather than through the BVH.
@@ -44,6 +44,44 @@ pub struct AggregateHit<R: Real> {
     pub index: usize,
     /// Where the ray meets it: t, the point with its error bound, and the normal.
     pub hit: SurfaceHit<R>,
+}
+
+/// The origins and directions of a packet of rays (at most [`Wide::LANES`], at least one) in
+/// lanes; lanes past its end repeat its first ray.
+#[inline(always)]
+fn origins_and_directions<R: Real>(rays: &[Ray<R>]) -> (W3<W<R>>, W3<W<R>>) {
+    (
+        W3::gather(rays.iter().map(|r| r.origin), rays[0].origin),
+        W3::gather(rays.iter().map(|r| r.direction), rays[0].direction),
+    )
+}
+
+/// [`Shape::hit_t`] of a plane against every lane's ray (`Plane::intersect_line` operation for
+/// operation, then 0 < t < `t_max`): the mask of hits, their t, and the mask of the lanes left
+/// to the scalar code (Q − O overflowing, which it computes on halves).
+#[inline(always)]
+fn plane_hit_t<R: Real>(
+    o: W3<W<R>>,
+    d: W3<W<R>>,
+    plane: &Plane<R>,
+    t_max: W<R>,
+) -> (u32, W<R>, u32) {
+    let zero = W::<R>::splat(R::ZERO);
+    let n = W3::<W<R>>::splat(plane.normal);
+    let denom = n.dot(d);
+    let diff = W3::<W<R>>::splat(plane.point) - o;
+    let fast = diff.finite();
+    let t = n.dot(diff) / denom;
+    let at = o + d.scale(t);
+    let hit = denom
+        .eq(zero)
+        .not()
+        .and(fast)
+        .and(t.finite())
+        .and(at.finite())
+        .and(t.gt(zero))
+        .and(t.lt(t_max));
+    (hit.bits(), t, fast.not().bits())
 }
 
 impl<R: Real> Aggregate<R> {
@@ -160,17 +198,40 @@ impl<R: Real> Aggregate<R> {
         let mut t_max = [R::ZERO; 8];
         t_max[..rays.len()].copy_from_slice(&limit[..rays.len()]);
         let mut best: [Option<u32>; 8] = [None; 8];
-        // Planes first, one by one, as `nearest` takes them
-        for (k, ray) in rays.iter().enumerate() {
-            for &i in &self.unbounded {
-                if let Some(t) = self.shapes[i as usize].hit_t(ray, t_max[k]) {
-                    t_max[k] = t;
-                    best[k] = Some(i);
-                }
-            }
-        }
         let n = rays.len();
         let live = (1u32 << n) - 1;
+        // Planes first, in their order, as `nearest` takes them: each plane against every
+        // ray in lanes
+        if !self.unbounded.is_empty() {
+            let (o, d) = origins_and_directions(rays);
+            let mut tm = <W<R> as Wide>::Array::default();
+            tm.as_mut()[..n].copy_from_slice(&t_max[..n]);
+            let mut tm = W::<R>::from_array(tm);
+            for &i in &self.unbounded {
+                let Shape::Plane(plane) = &self.shapes[i as usize] else {
+                    unreachable!("only planes are unbounded")
+                };
+                let (hit, t, slow) = plane_hit_t(o, d, plane, tm);
+                let (hit, slow) = (hit & live, slow & live);
+                if hit != 0 {
+                    tm = mask_of::<W<R>>(hit).select(t, tm);
+                    for k in lanes_of(hit) {
+                        best[k] = Some(i);
+                    }
+                }
+                if slow != 0 {
+                    let mut a = tm.to_array();
+                    for k in lanes_of(slow) {
+                        if let Some(t) = self.shapes[i as usize].hit_t(&rays[k], a.as_ref()[k]) {
+                            a.as_mut()[k] = t;
+                            best[k] = Some(i);
+                        }
+                    }
+                    tm = W::<R>::from_array(a);
+                }
+            }
+            t_max[..n].copy_from_slice(&tm.to_array().as_ref()[..n]);
+        }
         self.wide
             .nearest_packet(&self.shapes, rays, live, &mut t_max[..n], &mut best[..n]);
         for (k, (ray, hit)) in rays.iter().zip(out.iter_mut()).enumerate() {
@@ -194,11 +255,28 @@ impl<R: Real> Aggregate<R> {
                 .filter(|&k| self.occluded(&rays[k], t_max[k]))
                 .fold(0, |m, k| m | 1 << k);
         }
+        // Planes first, each against every ray in lanes
         let mut blocked = 0;
-        for k in lanes_of(want) {
-            let blocks = |i: &u32| self.shapes[*i as usize].hit_t(&rays[k], t_max[k]).is_some();
-            if self.unbounded.iter().any(blocks) {
-                blocked |= 1 << k;
+        if !self.unbounded.is_empty() && want != 0 {
+            let n = rays.len();
+            let (o, d) = origins_and_directions(rays);
+            let mut tm = <W<R> as Wide>::Array::default();
+            tm.as_mut()[..n].copy_from_slice(&t_max[..n]);
+            let tm = W::<R>::from_array(tm);
+            for &i in &self.unbounded {
+                let Shape::Plane(plane) = &self.shapes[i as usize] else {
+                    unreachable!("only planes are unbounded")
+                };
+                let (hit, _, slow) = plane_hit_t(o, d, plane, tm);
+                blocked |= hit & want;
+                for k in lanes_of(slow & want & !blocked) {
+                    if self.shapes[i as usize].hit_t(&rays[k], t_max[k]).is_some() {
+                        blocked |= 1 << k;
+                    }
+                }
+                if want & !blocked == 0 {
+                    return blocked;
+                }
             }
         }
         blocked

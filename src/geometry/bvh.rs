@@ -12,7 +12,7 @@ use std::cmp::Ordering;
 
 use super::bounds::{inverse, Aabb};
 use super::ray::Ray;
-use crate::core::{Real, Vector};
+use crate::core::{Real, Vector, V3};
 
 /// The most primitives a leaf holds; every node with this many or fewer is a leaf. (Letting
 /// the SAH split such nodes further, as pbrt does, tripled the node count and cost 40 % more
@@ -86,17 +86,23 @@ impl<R: Real> Bin<R> {
 
     #[inline]
     fn add(&mut self, it: &Item<R>) {
-        self.count += 1;
-        self.bounds = self.bounds.union(it.bounds);
-        self.centroids = self.centroids.union_point(it.bounds.centroid());
+        self.add_at(it, it.bounds.centroid());
     }
 
-    fn merge(self, o: Self) -> Self {
-        Bin {
-            count: self.count + o.count,
-            bounds: self.bounds.union(o.bounds),
-            centroids: self.centroids.union(o.centroids),
-        }
+    /// [`Bin::add`] of an item whose centroid is already computed.
+    #[inline]
+    fn add_at(&mut self, it: &Item<R>, centroid: V3<R>) {
+        self.count += 1;
+        self.bounds = self.bounds.union(it.bounds);
+        self.centroids = self.centroids.union_point(centroid);
+    }
+
+    /// Adds the items of `o`, in place (the sides of a split gather up to [`BINS`] bins each).
+    #[inline]
+    fn merge(&mut self, o: &Self) {
+        self.count += o.count;
+        self.bounds = self.bounds.union(o.bounds);
+        self.centroids = self.centroids.union(o.centroids);
     }
 
     /// The extent of `items`, by a pass over them.
@@ -142,11 +148,14 @@ impl Binning {
     fn fill<R: Real>(&self, items: &mut [Item<R>]) -> [Bin<R>; BINS] {
         let mut bins = [Bin::empty(); BINS];
         for it in items {
+            // The centroid once, for the bin and the bin's centroid box (its component along
+            // the axis is `centroid_on`'s, to the bit)
+            let c = it.bounds.centroid();
             // `as i32` saturates (NaN gives 0) and is much cheaper than `as usize`
-            let k = (centroid_on(&it.bounds, self.axis).to_f64() - self.min) * self.scale;
+            let k = (c.to_array()[self.axis].to_f64() - self.min) * self.scale;
             let k = (k as i32).clamp(0, BINS as i32 - 1) as usize;
             it.bin = k as u8;
-            bins[k].add(it);
+            bins[k].add_at(it, c);
         }
         bins
     }
@@ -202,8 +211,7 @@ fn cheapest<R: Real>(bins: &[Bin<R>; BINS], bounds: &Aabb<R>) -> Option<(usize, 
     let mut sides = [Bin::empty(), Bin::empty()];
     for (i, b) in bins.iter().enumerate() {
         if b.count > 0 {
-            let s = &mut sides[usize::from(i > split)];
-            *s = s.merge(*b);
+            sides[usize::from(i > split)].merge(b);
         }
     }
     Some((split, sides))

@@ -35,7 +35,7 @@ use super::bvh::Bvh;
 use super::soa::sphere_hit_t;
 use super::triangle::Shear;
 use super::{Ray, Shape};
-use crate::core::lanes::{lanes_of, mask_of, Wide, W, W3};
+use crate::core::lanes::{lanes_of, mask_of, Lanes, Wide, W, W3};
 use crate::core::rounding::gamma;
 use crate::core::{Real, Vector, V3};
 
@@ -128,10 +128,21 @@ fn max<L: Wide>(a: L, b: L) -> L {
     a.lt(b).select(b, a)
 }
 
-/// a ≤ b per lane (false where either is NaN).
+/// a ≤ b per lane (false where either is NaN), by one comparison.
 #[inline(always)]
-fn le<L: Wide>(a: L, b: L) -> L {
-    a.lt(b).or(a.eq(b))
+fn le<L: Lanes<Mask = L>>(a: L, b: L) -> L {
+    a.at_most(b)
+}
+
+/// One end of a slab interval narrowed by a plane's distance: `t` where `t < end`, else `end`
+/// (a NaN `t`, from 0·∞, leaves the end as it is), by one minimum instruction rather than a
+/// comparison and a blend. The interval's far end narrows as [`Aabb::hit`]'s `t_far < t1`;
+/// its near end is kept negated, −t₀, so that "t_near > t₀" becomes "−t_near < −t₀", and
+/// −t_near is computed as (O − near)·(1/D), which is −((near − O)·(1/D)) to the bit (IEEE
+/// rounding is symmetric), so the negated end is the scalar end, negated, to the bit.
+#[inline(always)]
+fn narrow<L: Lanes>(t: L, end: L) -> L {
+    t.minimum(end)
 }
 
 /// The ray as the traversal uses it: per-axis origin and 1/D in lanes, the octant, and the
@@ -185,20 +196,21 @@ impl<R: Real> Prepared<R> {
 #[inline(always)]
 fn slab<R: Real>(node: &Node<R>, r: &Prepared<R>, t_max: R) -> (u32, W<R>) {
     let widen = W::<R>::splat(R::ONE + R::TWO * gamma::<R>(3));
-    let mut t0 = W::<R>::splat(R::ZERO);
+    // −t₀, so that both ends narrow by a minimum (see `narrow`)
+    let mut t0 = W::<R>::splat(-R::ZERO);
     let mut t1 = W::<R>::splat(t_max);
     for a in 0..3 {
         // Near and far planes by the sign of 1/D, as the scalar test picks them
         let near = node.bounds[r.near[a] & 1][a];
         let far = node.bounds[(r.near[a] & 1) ^ 1][a];
-        let t_near = (near - r.o[a]) * r.inv[a];
+        let t_near = (r.o[a] - near) * r.inv[a];
         let t_far = (far - r.o[a]) * r.inv[a] * widen;
-        // A NaN (0·∞) leaves the interval as it is, as the scalar comparisons do.
-        t0 = t_near.gt(t0).select(t_near, t0);
-        t1 = t_far.lt(t1).select(t_far, t1);
+        t0 = narrow(t_near, t0);
+        t1 = narrow(t_far, t1);
     }
-    // t0 ≤ t1; neither can be NaN.
-    (t1.lt(t0).not().bits() & node.used, t0)
+    let t0 = Wide::neg(t0);
+    // t0 ≤ t1, as the scalar test ends (t0 cannot be NaN)
+    (le(t0, t1).bits() & node.used, t0)
 }
 
 /// [`Shape::hit_t`] of each triangle of a leaf against one ray (the watertight test of
@@ -482,21 +494,24 @@ impl<R: Real> WideBvh<R> {
             }
             return;
         }
-        self.traverse_from(r, root, t_max, leaf);
+        self.traverse_from(r, &mut Stack::new(), root, t_max, leaf);
     }
 
     /// [`WideBvh::traverse`] of the subtree under `start` (a node or a leaf the ray has
-    /// reached with this t_max), as the whole search would visit it.
+    /// reached with this t_max), as the whole search would visit it, on `stack` (emptied
+    /// first: the packet searches lend one stack to all the rays they send on alone, which
+    /// saves clearing a new one for each).
     #[inline(always)]
     fn traverse_from(
         &self,
         r: &Prepared<R>,
+        stack: &mut Stack<R>,
         start: Ref,
         t_max: R,
         mut leaf: impl FnMut(Ref, &mut R) -> bool,
     ) {
         let mut t_max = t_max;
-        let mut stack = Stack::<R>::new();
+        stack.clear();
         let mut cur = start;
         loop {
             if cur >> KIND == NODE {
@@ -670,7 +685,6 @@ impl<R: Real> WideBvh<R> {
 /// slab tests of one child box against every ray and the sphere tests of one sphere against
 /// every ray. Lanes past the packet's end repeat its first ray and are never active.
 struct Packet<R: Real> {
-    o: [W<R>; 3],
     inv: [W<R>; 3],
     o3: W3<W<R>>,
     d3: W3<W<R>>,
@@ -679,34 +693,25 @@ struct Packet<R: Real> {
 }
 
 impl<R: Real> Packet<R> {
+    /// The packet of `rays` (at least one, at most [`Wide::LANES`]): 1/D by a division in
+    /// lanes, each lane's the scalar `inverse`'s to the bit.
     fn of(rays: &[Ray<R>]) -> Self {
         debug_assert!(!rays.is_empty() && rays.len() <= W::<R>::LANES);
-        let mut o = [<W<R> as Wide>::Array::default(); 3];
-        let mut inv = [<W<R> as Wide>::Array::default(); 3];
+        let first = rays[0];
+        let o3 = W3::gather(rays.iter().map(|r| r.origin), first.origin);
+        let d3 = W3::gather(rays.iter().map(|r| r.direction), first.direction);
+        let one = W::<R>::splat(R::ONE);
+        let inv = [one / d3.x, one / d3.y, one / d3.z];
+        let zero = W::<R>::splat(R::ZERO);
+        let neg = inv.map(|i| i.lt(zero).bits());
         let mut octant = [0u8; MAX_WIDTH];
         for (k, octant) in octant.iter_mut().enumerate().take(W::<R>::LANES) {
-            let ray = rays.get(k).unwrap_or(&rays[0]);
-            let (ok, ik) = (
-                ray.origin.to_array(),
-                inverse::<R>(ray.direction).to_array(),
-            );
-            for a in 0..3 {
-                o[a].as_mut()[k] = ok[a];
-                inv[a].as_mut()[k] = ik[a];
-                *octant |= u8::from(ik[a] < R::ZERO) << a;
-            }
+            *octant = ((neg[0] >> k & 1) | (neg[1] >> k & 1) << 1 | (neg[2] >> k & 1) << 2) as u8;
         }
-        let o = o.map(W::<R>::from_array);
-        let first = rays[0];
         Packet {
-            o,
-            inv: inv.map(W::<R>::from_array),
-            o3: W3 {
-                x: o[0],
-                y: o[1],
-                z: o[2],
-            },
-            d3: W3::gather(rays.iter().map(|r| r.direction), first.direction),
+            inv,
+            o3,
+            d3,
             octant,
         }
     }
@@ -725,15 +730,17 @@ impl<R: Real> Packet<R> {
 #[inline(always)]
 fn slab_rays<R: Real>(near: [R; 3], far: [R; 3], p: &Packet<R>, t_max: W<R>) -> (u32, W<R>) {
     let widen = W::<R>::splat(R::ONE + R::TWO * gamma::<R>(3));
-    let mut t0 = W::<R>::splat(R::ZERO);
+    let mut t0 = W::<R>::splat(-R::ZERO);
     let mut t1 = t_max;
+    let o = [p.o3.x, p.o3.y, p.o3.z];
     for a in 0..3 {
-        let t_near = (W::<R>::splat(near[a]) - p.o[a]) * p.inv[a];
-        let t_far = (W::<R>::splat(far[a]) - p.o[a]) * p.inv[a] * widen;
-        t0 = t_near.gt(t0).select(t_near, t0);
-        t1 = t_far.lt(t1).select(t_far, t1);
+        let t_near = (o[a] - W::<R>::splat(near[a])) * p.inv[a];
+        let t_far = (W::<R>::splat(far[a]) - o[a]) * p.inv[a] * widen;
+        t0 = narrow(t_near, t0);
+        t1 = narrow(t_far, t1);
     }
-    (t1.lt(t0).not().bits(), t0)
+    let t0 = Wide::neg(t0);
+    (le(t0, t1).bits(), t0)
 }
 
 /// Rays the packet traversal takes on together: with this many or fewer, each ray goes on by
@@ -881,6 +888,7 @@ impl<R: Real> WideBvh<R> {
             return;
         };
         let mut stack = PacketStack::<R>::new();
+        let mut alone = Stack::<R>::new();
         let (mut cur, mut active) = (root, group);
         let mut masks = [0u32; MAX_WIDTH];
         let mut t0 = [W::<R>::splat(R::ZERO); MAX_WIDTH];
@@ -892,7 +900,7 @@ impl<R: Real> WideBvh<R> {
                     let r = lazy.get(k, &rays[k], !self.triangles.is_empty());
                     let ray = &rays[k];
                     let mut t_k = a.as_ref()[k];
-                    self.traverse_from(r, cur, t_k, |leaf, t_max| {
+                    self.traverse_from(r, &mut alone, cur, t_k, |leaf, t_max| {
                         if let Some(i) = self.nearest_leaf(shapes, r, ray, leaf, t_max) {
                             best[k] = Some(i);
                             t_k = *t_max;
@@ -1098,6 +1106,7 @@ impl<R: Real> WideBvh<R> {
             return 0;
         };
         let mut stack = PacketStack::<R>::new();
+        let mut alone = Stack::<R>::new();
         let (mut cur, mut active) = (root, group);
         let mut blocked = 0u32;
         let t_max = tm.to_array();
@@ -1110,7 +1119,7 @@ impl<R: Real> WideBvh<R> {
                     let r = lazy.get(k, &rays[k], !self.triangles.is_empty());
                     let (ray, t_k) = (&rays[k], t_max.as_ref()[k]);
                     let mut found = false;
-                    self.traverse_from(r, cur, t_k, |leaf, t_max| {
+                    self.traverse_from(r, &mut alone, cur, t_k, |leaf, t_max| {
                         found = self.occluded_leaf(shapes, r, ray, leaf, *t_max);
                         found
                     });
@@ -1251,6 +1260,13 @@ impl<R: Real> Stack<R> {
             len: 0,
             spill: Vec::new(),
         }
+    }
+
+    /// Empties the stack.
+    #[inline(always)]
+    fn clear(&mut self) {
+        self.len = 0;
+        self.spill.clear();
     }
 
     #[inline(always)]
