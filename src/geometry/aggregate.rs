@@ -12,6 +12,7 @@
 use super::bounds::Aabb;
 use super::bvh::Bvh;
 use super::hit::SurfaceHit;
+use super::soa::plane_hit_t;
 use super::wbvh::WideBvh;
 use super::{Plane, Ray, Shape};
 use crate::core::lanes::{lanes_of, mask_of, Wide, W, W3};
@@ -56,32 +57,22 @@ fn origins_and_directions<R: Real>(rays: &[Ray<R>]) -> (W3<W<R>>, W3<W<R>>) {
     )
 }
 
-/// [`Shape::hit_t`] of a plane against every lane's ray (`Plane::intersect_line` operation for
-/// operation, then 0 < t < `t_max`): the mask of hits, their t, and the mask of the lanes left
-/// to the scalar code (Q − O overflowing, which it computes on halves).
+/// [`Shape::hit_t`] of a plane against the lanes set in `live` ([`plane_hit_t`], the flat
+/// scene's test, with the plane splatted): the bits of the hits, their t, and the bits of the
+/// lanes left to the scalar code (Q − O overflowing, which it computes on halves).
 #[inline(always)]
-fn plane_hit_t<R: Real>(
+fn plane_bits<R: Real>(
     o: W3<W<R>>,
     d: W3<W<R>>,
     plane: &Plane<R>,
     t_max: W<R>,
+    live: u32,
 ) -> (u32, W<R>, u32) {
-    let zero = W::<R>::splat(R::ZERO);
-    let n = W3::<W<R>>::splat(plane.normal);
-    let denom = n.dot(d);
-    let diff = W3::<W<R>>::splat(plane.point) - o;
-    let fast = diff.finite();
-    let t = n.dot(diff) / denom;
-    let at = o + d.scale(t);
-    let hit = denom
-        .eq(zero)
-        .not()
-        .and(fast)
-        .and(t.finite())
-        .and(at.finite())
-        .and(t.gt(zero))
-        .and(t.lt(t_max));
-    (hit.bits(), t, fast.not().bits())
+    let (n, q) = (W3::splat(plane.normal), W3::splat(plane.point));
+    match plane_hit_t(o, d, n, q, t_max, live) {
+        Some((hit, t, slow)) => (hit.bits(), t, slow.bits()),
+        None => (0, t_max, 0),
+    }
 }
 
 impl<R: Real> Aggregate<R> {
@@ -211,7 +202,7 @@ impl<R: Real> Aggregate<R> {
                 let Shape::Plane(plane) = &self.shapes[i as usize] else {
                     unreachable!("only planes are unbounded")
                 };
-                let (hit, t, slow) = plane_hit_t(o, d, plane, tm);
+                let (hit, t, slow) = plane_bits(o, d, plane, tm, live);
                 let (hit, slow) = (hit & live, slow & live);
                 if hit != 0 {
                     tm = mask_of::<W<R>>(hit).select(t, tm);
@@ -267,7 +258,7 @@ impl<R: Real> Aggregate<R> {
                 let Shape::Plane(plane) = &self.shapes[i as usize] else {
                     unreachable!("only planes are unbounded")
                 };
-                let (hit, _, slow) = plane_hit_t(o, d, plane, tm);
+                let (hit, _, slow) = plane_bits(o, d, plane, tm, want & !blocked);
                 blocked |= hit & want;
                 for k in lanes_of(slow & want & !blocked) {
                     if self.shapes[i as usize].hit_t(&rays[k], t_max[k]).is_some() {

@@ -142,7 +142,7 @@ fn sphere_hit_t_in<L: Wide>(
 /// the hit mask, t, and the lanes left to the scalar code (Q − O overflowing); `None` (no hit,
 /// nothing undecided) when every live lane is a miss by the cheap test.
 #[inline(always)]
-fn plane_hit_t<L: Wide>(
+pub(crate) fn plane_hit_t<L: Wide>(
     o: W3<L>,
     d: W3<L>,
     n: W3<L>,
