@@ -801,6 +801,21 @@ impl<R: Real> PacketStack<R> {
             self.spill.pop()
         }
     }
+
+    /// Pops entries until one has a ray, of its mask and not in `done`, whose box it met at a
+    /// t₀ ≤ that ray's `t_max`: that entry's node and those rays; `None` once the stack is
+    /// empty. Both packet searches go on from here (the nearest hit with its lowered t_max and
+    /// nothing done, the any-hit search with the rays already blocked done).
+    #[inline(always)]
+    fn pop_met(&mut self, t_max: W<R>, done: u32) -> Option<(Ref, u32)> {
+        while let Some((next, mask, t0)) = self.pop() {
+            let still = mask & le(t0, t_max).bits() & !done;
+            if still != 0 {
+                return Some((next, still));
+            }
+        }
+        None
+    }
 }
 
 /// Each ray's one-ray form, made when a leaf of triangles (or of both kinds) first needs it.
@@ -934,17 +949,9 @@ impl<R: Real> WideBvh<R> {
             }
             // The next entry with a ray whose box is still met before its (perhaps lowered)
             // t_max
-            loop {
-                match stack.pop() {
-                    None => return,
-                    Some((next, mask, t0)) => {
-                        let still = mask & le(t0, *tm).bits();
-                        if still != 0 {
-                            (cur, active) = (next, still);
-                            break;
-                        }
-                    }
-                }
+            match stack.pop_met(*tm, 0) {
+                None => return,
+                Some(next) => (cur, active) = next,
             }
         }
     }
@@ -1152,17 +1159,9 @@ impl<R: Real> WideBvh<R> {
                 }
             }
             // The rays not yet blocked whose box is met before t_max (which does not change)
-            loop {
-                match stack.pop() {
-                    None => return blocked,
-                    Some((next, mask, t0)) => {
-                        let still = mask & le(t0, tm).bits() & !blocked;
-                        if still != 0 {
-                            (cur, active) = (next, still);
-                            break;
-                        }
-                    }
-                }
+            match stack.pop_met(tm, blocked) {
+                None => return blocked,
+                Some(next) => (cur, active) = next,
             }
         }
     }
