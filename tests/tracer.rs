@@ -546,3 +546,62 @@ fn solving_a_scene_without_a_ray_says_to_render_it() {
     assert_eq!(out.status.code(), Some(BAD_INPUT));
     assert!(String::from_utf8_lossy(&out.stderr).contains("phong render"));
 }
+
+#[test]
+fn an_explanation_is_written_to_a_file_of_any_name() {
+    // README's `--explain-pixel … --format html -o pixel.html`: with --explain-pixel, --output
+    // names the explanation's file, so its extension need not be an image's.
+    let dir = TempDir::new().unwrap();
+    let path = write(&dir, "s.json", &small_scene());
+    for (format, name) in [
+        ("html", "pixel.html"),
+        ("json", "pixel.json"),
+        ("text", "p.txt"),
+    ] {
+        let shown = phong()
+            .arg("render")
+            .arg(&path)
+            .args(["--explain-pixel", "1,1", "--format", format])
+            .output()
+            .unwrap();
+        assert!(shown.status.success());
+        let out = dir.path().join(name);
+        phong()
+            .arg("render")
+            .arg(&path)
+            .args(["--explain-pixel", "1,1", "--format", format, "-o"])
+            .arg(&out)
+            .assert()
+            .success();
+        assert_eq!(fs::read(&out).unwrap(), shown.stdout, "{name}");
+    }
+}
+
+#[test]
+fn render_stats_speak_the_language_of_lang() {
+    let dir = TempDir::new().unwrap();
+    let path = write(&dir, "s.json", &small_scene());
+    let out = dir.path().join("s.png");
+    let stats = |lang: &str| {
+        let o = phong()
+            .arg("render")
+            .arg(&path)
+            .args(["--stats", "--threads", "1", "--lang", lang, "-o"])
+            .arg(&out)
+            .output()
+            .unwrap();
+        assert!(o.status.success());
+        String::from_utf8(o.stderr).unwrap()
+    };
+    let (en, pt) = (stats("en"), stats("pt"));
+    assert!(en.contains(" rays (") && en.contains("1 thread(s)"), "{en}");
+    for english in [
+        "rays", "read and", "traced", "primary", "shadow", "engine", "sample(",
+    ] {
+        assert!(!pt.contains(english), "{english:?} in {pt}");
+    }
+    assert!(
+        pt.contains("raios traçados") && pt.contains("lido e validado"),
+        "{pt}"
+    );
+}

@@ -102,7 +102,8 @@ pub(crate) struct RenderArgs {
     /// The scene: a problem file with a "camera" and "surfaces".
     #[arg(value_name = "SCENE")]
     pub(crate) scene: PathBuf,
-    /// The image to write (atomically): .png or .ppm. Required unless --explain-pixel.
+    /// The image to write (atomically): .png or .ppm. With --explain-pixel, the explanation's
+    /// file instead (any name; standard output when omitted or -).
     #[arg(
         short,
         long,

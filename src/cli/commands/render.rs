@@ -3,7 +3,7 @@
 //! asked for.
 
 use std::path::Path;
-use std::time::Instant;
+use std::time::{Duration, Instant};
 
 use crate::cli::args::{Format, RenderArgs};
 use crate::cli::error::CliError;
@@ -12,6 +12,7 @@ use crate::cli::output;
 use crate::core::{Precision, Real};
 use crate::problem::{self, Camera, Problem};
 use crate::report;
+use crate::report::lang::Lang;
 use crate::tracer::output::ImageFormat;
 use crate::tracer::{self, Scene};
 
@@ -33,7 +34,10 @@ fn render<R: Real>(args: &RenderArgs) -> Result<Exit, CliError> {
         .with(&super::overrides(&args.settings))
         .map_err(CliError::setting)?;
     check_work(&problem, &camera)?;
+    // With --explain-pixel, --output names the explanation's file, whatever its extension;
+    // otherwise the image's, whose format it (or --image-format) says. Checked before the build.
     let image_format = match (&args.output, args.image_format) {
+        _ if args.explain_pixel.is_some() => None,
         (_, Some(f)) => Some(f),
         (Some(out), None) => Some(ImageFormat::from_path(out).ok_or_else(|| CliError::Usage {
             flag: "--output".into(),
@@ -65,29 +69,53 @@ fn render<R: Real>(args: &RenderArgs) -> Result<Exit, CliError> {
     let bytes = tracer::output::encode(&image, image_format.expect("known format"));
     output::write_file(out, &bytes)?;
     if args.stats {
-        let secs = traced.as_secs_f64();
-        output::say(&format_args!(
-            "{}×{}, {} sample(s)/pixel, {}, {} thread(s): read and validated in {:.3} s, BVH of \
-             {} surfaces built in {:.3} s, traced {} rays ({} primary, {} reflection, {} shadow) \
-             in {:.3} s: {:.2} Mrays/s ({} engine)",
-            image.width,
-            image.height,
-            problem.render.samples,
-            R::NAME,
-            pool.current_num_threads(),
-            loaded.as_secs_f64(),
-            problem.surfaces().len(),
-            built.as_secs_f64(),
-            counts.total(),
-            counts.primary,
-            counts.reflection,
-            counts.shadow,
-            secs,
-            counts.total() as f64 / secs / 1e6,
-            args.engine.name()
+        let threads = pool.current_num_threads();
+        let times = (loaded, built, traced);
+        output::say(&stats_line::<R>(
+            args, &image, &problem, threads, times, &counts,
         ));
     }
     Ok(Exit::Success)
+}
+
+/// `--stats`: the image, the settings, and the time of each stage with the rays traced, in the
+/// language of `--lang`. The numbers keep the decimal point in both languages, as every output
+/// of phong does, so that a script reads either.
+fn stats_line<R: Real>(
+    args: &RenderArgs,
+    image: &tracer::Image,
+    problem: &Problem<R>,
+    threads: usize,
+    (loaded, built, traced): (Duration, Duration, Duration),
+    counts: &tracer::Counts,
+) -> String {
+    let secs = traced.as_secs_f64();
+    let rate = counts.total() as f64 / secs / 1e6;
+    let (w, h, samples) = (image.width, image.height, problem.render.samples);
+    let surfaces = problem.surfaces().len();
+    let s = if surfaces == 1 { "" } else { "s" };
+    let (read, build) = (loaded.as_secs_f64(), built.as_secs_f64());
+    let (total, primary, reflection, shadow) = (
+        counts.total(),
+        counts.primary,
+        counts.reflection,
+        counts.shadow,
+    );
+    let (precision, engine) = (R::NAME, args.engine.name());
+    match args.lang {
+        Lang::En => format!(
+            "{w}×{h}, {samples} sample(s)/pixel, {precision}, {threads} thread(s): read and \
+             validated in {read:.3} s, {surfaces} surface{s} prepared (BVH, flat lists) in \
+             {build:.3} s, traced {total} rays ({primary} primary, {reflection} reflection, \
+             {shadow} shadow) in {secs:.3} s: {rate:.2} Mrays/s ({engine} engine)"
+        ),
+        Lang::Pt => format!(
+            "{w}×{h}, {samples} amostra(s)/pixel, {precision}, {threads} thread(s): lido e \
+             validado em {read:.3} s, {surfaces} superfície{s} preparada{s} (BVH, listas) em \
+             {build:.3} s, {total} raios traçados ({primary} primários, {reflection} de \
+             reflexão, {shadow} de sombra) em {secs:.3} s: {rate:.2} Mraios/s (motor {engine})"
+        ),
+    }
 }
 
 /// The render's primary rays within [`crate::problem::model::MAX_PIXEL_SAMPLES`], and its image
