@@ -605,3 +605,69 @@ fn render_stats_speak_the_language_of_lang() {
         "{pt}"
     );
 }
+
+#[test]
+fn no_output_replaces_a_mesh_the_scene_reads() {
+    // A scene's OBJ file is an input of the run as much as the scene: `-o torus.obj` would
+    // destroy it, so each command refuses it (exit 2) before writing anything.
+    let dir = TempDir::new().unwrap();
+    let obj = dir.path().join("torus.obj");
+    fs::copy(repo("scenes/torus.obj"), &obj).unwrap();
+    let before = fs::read(&obj).unwrap();
+    let mut scene = read_json(&repo("scenes/mesh.json"));
+    scene["camera"]["width"] = json!(16);
+    scene["camera"]["height"] = json!(12);
+    let path = write(&dir, "mesh.json", &scene);
+    let mut ray = scene.clone();
+    ray.as_object_mut().unwrap().remove("camera");
+    ray["ray"] = json!({"origin": [0, 1, 6], "direction": [0, 0, -1]});
+    let ray_path = write(&dir, "mesh-ray.json", &ray);
+    let runs: [Vec<&str>; 4] = [
+        vec![
+            "render",
+            "mesh.json",
+            "--image-format",
+            "ppm",
+            "-o",
+            "torus.obj",
+        ],
+        vec!["export-pov", "mesh.json", "-o", "torus.obj"],
+        vec![
+            "tradeoff",
+            "mesh.json",
+            "--size",
+            "8x6",
+            "--runs",
+            "1",
+            "--levels",
+            "1",
+            "--samples",
+            "1",
+            "--precisions",
+            "f64",
+            "--min-weights",
+            "0",
+            "--reference-samples",
+            "1",
+            "-o",
+            "torus.obj",
+        ],
+        vec!["solve", "mesh-ray.json", "-o", "torus.obj"],
+    ];
+    assert!(path.exists() && ray_path.exists());
+    for args in runs {
+        let out = phong()
+            .current_dir(dir.path())
+            .args(&args)
+            .output()
+            .unwrap();
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(BAD_INPUT), "{args:?}: {stderr}");
+        assert!(stderr.contains("torus.obj"), "{args:?}: {stderr}");
+        assert_eq!(
+            fs::read(&obj).unwrap(),
+            before,
+            "{args:?} replaced the mesh"
+        );
+    }
+}

@@ -13,7 +13,7 @@ pub(crate) mod model;
 pub mod validate;
 pub(crate) mod warnings;
 
-use std::path::Path;
+use std::path::{Path, PathBuf};
 
 pub use error::{Invalid, ProblemError};
 pub use format::{schema_json, ProblemFile};
@@ -517,9 +517,24 @@ pub fn load<R: Real>(path: &Path) -> Result<(ProblemFile, Problem<R>), ProblemEr
     Source::File(path).load::<R>()
 }
 
-/// Reads a scene: a problem file with a camera and surfaces (what the tracer needs).
-pub(crate) fn load_scene<R: Real>(path: &Path) -> Result<(Problem<R>, Camera<R>), ProblemError> {
-    let (_, problem) = load::<R>(path)?;
+/// The OBJ files a problem file at `path` names (`surfaces[i].file`), as its validation finds
+/// them: inputs of the run besides the file itself, which no output of it may replace.
+pub fn mesh_files(file: &ProblemFile, path: &Path) -> Vec<PathBuf> {
+    file.surfaces
+        .iter()
+        .filter(|s| s.kind == SurfaceType::Mesh)
+        .filter_map(|s| s.file.as_deref())
+        .map(|name| validate::mesh_path(path.parent(), name))
+        .collect()
+}
+
+/// Reads a scene: a problem file with a camera and surfaces (what the tracer needs), and the
+/// mesh files it names ([`mesh_files`]).
+pub(crate) fn load_scene<R: Real>(
+    path: &Path,
+) -> Result<(Problem<R>, Camera<R>, Vec<PathBuf>), ProblemError> {
+    let (file, problem) = load::<R>(path)?;
+    let meshes = mesh_files(&file, path);
     let Some(camera) = problem.camera else {
         return Err(Invalid::new(
             "camera",
@@ -537,7 +552,7 @@ pub(crate) fn load_scene<R: Real>(path: &Path) -> Result<(Problem<R>, Camera<R>)
         )
         .at(path));
     }
-    Ok((problem, camera))
+    Ok((problem, camera, meshes))
 }
 
 #[cfg(test)]

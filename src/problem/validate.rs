@@ -776,10 +776,7 @@ fn surface<R: Real>(
             let mref = required(s.material.as_ref(), base, "material", &what)?;
             let (mat_field, material) = materials.resolve(file, mref, f("material"))?;
             needs.check(&material.spec, mat_field)?;
-            let path = match folder {
-                Some(dir) => dir.join(name),
-                None => PathBuf::from(name),
-            };
+            let path = mesh_path(folder, name);
             let triangles = mesh::load_obj::<R>(&path).map_err(|e| {
                 Invalid::new(
                     f("file"),
@@ -1015,5 +1012,14 @@ fn direction<R: Real>(a: Triple, field: Field<'_>, what: &str) -> Result<GivenVe
             ),
             "give a non-zero vector",
         )),
+    }
+}
+
+/// The path of a mesh's OBJ file named `name` in a problem file in `folder` (relative names are
+/// relative to the problem file's folder; `None`: to the working folder).
+pub(crate) fn mesh_path(folder: Option<&Path>, name: &str) -> PathBuf {
+    match folder {
+        Some(dir) => dir.join(name),
+        None => PathBuf::from(name),
     }
 }

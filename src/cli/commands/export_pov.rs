@@ -10,7 +10,11 @@ use crate::problem::{self, ProblemError};
 pub(crate) fn run(args: &ExportPovArgs) -> Result<Exit, CliError> {
     let path = &args.scene;
     output::distinct(&[path], &[("--output", args.output.as_deref())])?;
-    let (_, mut problem) = problem::load::<f64>(path)?;
+    let (file, mut problem) = problem::load::<f64>(path)?;
+    // The meshes the scene names are inputs too: no output may replace one.
+    let meshes = problem::mesh_files(&file, path);
+    let meshes: Vec<&std::path::Path> = meshes.iter().map(|p| p.as_path()).collect();
+    output::distinct(&meshes, &[("--output", args.output.as_deref())])?;
     problem.render = problem
         .render
         .with(&super::overrides(&args.settings))

@@ -9,6 +9,7 @@ use crate::cli::args::{Format, SolveArgs};
 use crate::cli::error::{self, CliError};
 use crate::cli::exit::Exit;
 use crate::cli::output;
+use crate::problem::Source;
 use crate::report;
 use crate::report::document::{Contents, Document, Header};
 use crate::report::explain::Explanation;
@@ -18,6 +19,24 @@ use crate::report::layout::{self, Layout};
 pub(crate) fn run(args: &SolveArgs) -> Result<Exit, CliError> {
     let inputs: Vec<&std::path::Path> = args.files.iter().map(|p| p.as_path()).collect();
     output::distinct(&inputs, &[("--output", args.output.as_deref())])?;
+    // A ray problem may name meshes, inputs too: no output may replace one. Read here only for
+    // their names (a file that cannot be read is reported when it is solved; standard input is
+    // read once, when it is solved).
+    if args.output.is_some() {
+        let meshes: Vec<std::path::PathBuf> = inputs
+            .iter()
+            .filter(|p| p.as_os_str() != "-")
+            .filter_map(|p| {
+                Some(crate::problem::mesh_files(
+                    &Source::File(p).parse().ok()?,
+                    p,
+                ))
+            })
+            .flatten()
+            .collect();
+        let meshes: Vec<&Path> = meshes.iter().map(|p| p.as_path()).collect();
+        output::distinct(&meshes, &[("--output", args.output.as_deref())])?;
+    }
     if args.fragment && !matches!(args.format, Format::Latex | Format::Html) {
         return Err(CliError::Conflict {
             message: "--fragment applies to --format latex and html only".into(),

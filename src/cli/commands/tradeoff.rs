@@ -1,7 +1,7 @@
 //! `phong tradeoff`: the sweep checked, the scene loaded in the precisions it needs, every
 //! setting measured, and the table (text, JSON, CSV) and the plot written.
 
-use std::path::Path;
+use std::path::{Path, PathBuf};
 
 use crate::cli::args::{TradeoffArgs, TradeoffFormat};
 use crate::cli::error::CliError;
@@ -43,9 +43,18 @@ pub(crate) fn run(args: &TradeoffArgs) -> Result<Exit, CliError> {
             });
         }
     }
-    let f64_scene = load::<f64>(&args.scene, args.size)?;
+    let (f64_scene, meshes) = load::<f64>(&args.scene, args.size)?;
+    // The meshes the scene names are inputs too: no output may replace one.
+    let meshes: Vec<&Path> = meshes.iter().map(PathBuf::as_path).collect();
+    output::distinct(
+        &meshes,
+        &[
+            ("--output", args.output.as_deref()),
+            ("--plot", args.plot.as_deref()),
+        ],
+    )?;
     let f32_scene = if args.precisions.contains(&Precision::F32) {
-        Some(load::<f32>(&args.scene, args.size)?)
+        Some(load::<f32>(&args.scene, args.size)?.0)
     } else {
         None
     };
@@ -104,15 +113,17 @@ pub(crate) fn run(args: &TradeoffArgs) -> Result<Exit, CliError> {
     Ok(Exit::Success)
 }
 
-/// The scene in precision `R`, at `size` instead of the camera's when given.
+/// The scene in precision `R`, at `size` instead of the camera's when given, and the mesh files
+/// it names.
+#[allow(clippy::type_complexity)]
 fn load<R: Real>(
     path: &Path,
     size: Option<(u32, u32)>,
-) -> Result<(Problem<R>, Camera<R>), ProblemError> {
-    let (p, mut camera) = problem::load_scene::<R>(path)?;
+) -> Result<((Problem<R>, Camera<R>), Vec<PathBuf>), ProblemError> {
+    let (p, mut camera, meshes) = problem::load_scene::<R>(path)?;
     if let Some((w, h)) = size {
         camera.width = w;
         camera.height = h;
     }
-    Ok((p, camera))
+    Ok(((p, camera), meshes))
 }
