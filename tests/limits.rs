@@ -545,3 +545,55 @@ fn a_write_over_the_file_size_limit_fails_cleanly_and_leaves_no_temporary_file()
         "the previous report\n"
     );
 }
+
+/// Whether `phong schema`'s JSON Schema accepts `doc`.
+fn schema_accepts(doc: &serde_json::Value) -> bool {
+    let out = phong().arg("schema").output().unwrap();
+    let schema: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    jsonschema::validator_for(&schema).unwrap().is_valid(doc)
+}
+
+#[test]
+fn the_schema_and_the_validator_agree_at_the_bounds_of_the_image_and_the_render() {
+    // The README and the fields' descriptions give the ranges: width and height 1 to 16384,
+    // max_level 1 to 1000, samples 1 to 4096. A validator driven by the schema must refuse what
+    // phong refuses there (the schema once said "minimum": 0 for each).
+    let dir = TempDir::new().unwrap();
+    let cases: [(&str, &str, u32, bool); 12] = [
+        ("camera", "width", 0, false),
+        ("camera", "width", 1, true),
+        ("camera", "width", 16385, false),
+        ("camera", "height", 0, false),
+        ("camera", "height", 16384, true),
+        ("camera", "height", 16385, false),
+        ("render", "max_level", 0, false),
+        ("render", "max_level", 1000, true),
+        ("render", "max_level", 1001, false),
+        ("render", "samples", 0, false),
+        ("render", "samples", 4096, true),
+        ("render", "samples", 4097, false),
+    ];
+    for (object, field, value, valid) in cases {
+        let mut scene = small_scene();
+        if object == "render" {
+            scene["render"] = json!({});
+        }
+        scene[object][field] = json!(value);
+        assert_eq!(
+            schema_accepts(&scene),
+            valid,
+            "schema, {object}.{field} = {value}"
+        );
+        let path = write(&dir, "s.json", &scene.to_string());
+        // One pixel explained: the file is read and validated whole, and little is traced.
+        let ok = phong()
+            .arg("render")
+            .arg(&path)
+            .args(["--explain-pixel", "0,0", "--format", "json"])
+            .output()
+            .unwrap()
+            .status
+            .success();
+        assert_eq!(ok, valid, "phong, {object}.{field} = {value}");
+    }
+}

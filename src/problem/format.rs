@@ -107,8 +107,10 @@ pub struct CameraSpec {
     /// The vertical field of view in degrees, 0 < fov < 180.
     pub fov: f64,
     /// Image width in pixels, 1 to 16384.
+    #[schemars(range(min = 1, max = 16384))]
     pub width: u32,
     /// Image height in pixels, 1 to 16384.
+    #[schemars(range(min = 1, max = 16384))]
     pub height: u32,
 }
 
@@ -117,8 +119,9 @@ pub struct CameraSpec {
 #[serde(deny_unknown_fields)]
 pub struct RenderSpec {
     /// The maximum recursion level: the primary ray has level 1 and a ray is traced while its
-    /// level ≤ this (default 5; 1 means primary rays only).
+    /// level ≤ this (default 5; 1 means primary rays only), 1 to 1000.
     #[serde(default)]
+    #[schemars(range(min = 1, max = 1000))]
     pub max_level: Option<u32>,
     /// A reflection ray is traced only while its weight w_s = w_p·max(O_r) exceeds this
     /// (default 1/255: below it a ray cannot change an 8-bit pixel of a colour in [0, 1]).
@@ -130,6 +133,7 @@ pub struct RenderSpec {
     /// Samples per pixel, 1 to 4096, on a stratified deterministic pattern (default 1: the
     /// pixel's centre).
     #[serde(default)]
+    #[schemars(range(min = 1, max = 4096))]
     pub samples: Option<u32>,
 }
 
