@@ -671,3 +671,22 @@ fn no_output_replaces_a_mesh_the_scene_reads() {
         );
     }
 }
+
+#[test]
+fn a_reflection_ray_is_not_said_to_come_from_the_eye() {
+    // The classic scene's pixel 320,300 hits the floor and sends a reflection ray: V = D there
+    // is the reflection ray's direction, which no eye looks along.
+    let out = phong()
+        .arg("render")
+        .arg(repo("scenes/classic.json"))
+        .args(["--explain-pixel", "320,300"])
+        .output()
+        .unwrap();
+    assert!(out.status.success());
+    let text = String::from_utf8(out.stdout).unwrap();
+    let secondary = text
+        .split_once("Ray 2 (reflection)")
+        .expect("a reflection ray")
+        .1;
+    assert!(!secondary.contains("from the eye"), "{secondary}");
+}

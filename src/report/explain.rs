@@ -698,7 +698,7 @@ fn shading<R: Real>(
     if let Some(vw) = &e.viewer {
         let how = match vw.source {
             ViewSource::Viewer => vec![Math(Formula::VFromViewer)],
-            ViewSource::Ray => vec![Math(Formula::VIsD), p(Phrase::RayFromEye, lang)],
+            ViewSource::Ray => vec![Math(Formula::VIsD), p(Phrase::RayIsLineOfSight, lang)],
             ViewSource::ReversedRay => vec![Math(Formula::VIsMinusD), p(Phrase::ReversedRay, lang)],
         };
         let mut line = how;

@@ -89,7 +89,7 @@ phrases! {
     ThenReversed => ", then reversed", ", depois invertida";
     TakenEqualToOs => " (taken equal to O_s)", " (tomada igual a O_s)";
     // The viewer.
-    RayFromEye => " (the ray comes from the eye)", " (o raio parte do olho)";
+    RayIsLineOfSight => " (the ray's direction: the ray is the line of sight)", " (a direção do raio: o raio é a linha de visão)";
     ReversedRay => " (the reversed ray)", " (o raio invertido)";
     ViewerInFront => "the viewer is in front of the surface", "o observador está na frente da superfície";
     ViewerBehind => "the viewer is BEHIND the surface", "o observador está ATRÁS da superfície";
