@@ -690,3 +690,34 @@ fn a_reflection_ray_is_not_said_to_come_from_the_eye() {
         .1;
     assert!(!secondary.contains("from the eye"), "{secondary}");
 }
+
+#[test]
+fn an_explained_pixel_states_the_readings_of_level_and_weight() {
+    // docs/conventions.md, "Recursion level" and "Weight": "≤" for the chapter's "menor que"
+    // and O_r for its max(C_r) are readings, and the explanation says so, in both languages.
+    for (lang, level, weight) in [
+        (
+            "en",
+            "\"menor que\" read as ≤",
+            "max(C_r) read as the reflectivity O_r",
+        ),
+        (
+            "pt",
+            "\"menor que\" do capítulo lido como ≤",
+            "max(C_r) do capítulo lido como a refletividade O_r",
+        ),
+    ] {
+        let out = phong()
+            .arg("render")
+            .arg(repo("scenes/classic.json"))
+            .args(["--explain-pixel", "320,300", "--lang", lang])
+            .output()
+            .unwrap();
+        assert!(out.status.success());
+        let text = String::from_utf8(out.stdout).unwrap().replace('\n', " ");
+        assert!(
+            text.contains(level) && text.contains(weight),
+            "{lang}: {text}"
+        );
+    }
+}

@@ -128,7 +128,10 @@ pub fn report<R: Real>(
     let settings = pick(
         lang,
         format!(
-            "Settings: maximum level {}, minimum weight {}, shadows {}, {} sample{} per pixel",
+            "Settings: maximum level {}, minimum weight {}, shadows {}, {} sample{} per pixel. A \
+             ray is traced while its level ≤ {0} (the chapter's \"menor que\" read as ≤), a \
+             reflection ray while its weight w_s = w_p·max(O_r) > {1} (the chapter's max(C_r) \
+             read as the reflectivity O_r).",
             s.max_level,
             n(s.min_weight),
             if s.shadows { "on" } else { "off" },
@@ -136,7 +139,10 @@ pub fn report<R: Real>(
             if s.samples == 1 { "" } else { "s" },
         ),
         format!(
-            "Parâmetros: nível máximo de recursão {}, peso mínimo {}, sombras {}, {} amostra{} por pixel",
+            "Parâmetros: nível máximo de recursão {}, peso mínimo {}, sombras {}, {} amostra{} \
+             por pixel. Um raio é traçado enquanto seu nível ≤ {0} (o \"menor que\" do capítulo \
+             lido como ≤), um raio de reflexão enquanto seu peso w_s = w_p·max(O_r) > {1} (o \
+             max(C_r) do capítulo lido como a refletividade O_r).",
             s.max_level,
             n(s.min_weight),
             if s.shadows { "ligadas" } else { "desligadas" },
@@ -386,7 +392,9 @@ pub fn write_text(p: &PixelReport) -> String {
     for row in &p.scene {
         let _ = writeln!(out, "  {}: {}", plain(&row.what), plain(&row.value));
     }
-    let _ = writeln!(out, "{}", p.settings);
+    for line in text::wrap(&p.settings, 92) {
+        let _ = writeln!(out, "{line}");
+    }
     for sample in &p.samples {
         let _ = writeln!(out, "\n{}", sample.heading);
         for ray in &sample.rays {
