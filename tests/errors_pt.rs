@@ -173,3 +173,48 @@ fn a_string_of_numbers_for_a_vector_names_every_fraction() {
     let (_, pt) = solve("normal_str.json", &text, "pt");
     assert!(pt.contains("[0.6, 0, 0.8]"), "{pt}");
 }
+
+/// Finding 4: a decimal comma in a problem file is named as such: the field, what was
+/// written, and the number with a decimal point, in both languages.
+#[test]
+fn a_decimal_comma_in_a_problem_file_is_named_with_its_fix() {
+    // "shininess": 0,5 is read as 0 and a key 5: the field is shininess, not materials.M.
+    let text = exercise_with(r#""shininess": 1"#, r#""shininess": 0,5"#);
+    let (code, en) = solve("comma.json", &text, "en");
+    assert_eq!(code, 2, "{en}");
+    assert!(
+        en.contains("materials.M.shininess: 0,5 is written with a decimal comma"),
+        "{en}"
+    );
+    assert!(en.contains("a JSON number takes a decimal point"), "{en}");
+    assert!(en.contains("Fix: write 0.5"), "{en}");
+    let (_, pt) = solve("comma.json", &text, "pt");
+    assert!(
+        pt.contains("materials.M.shininess: 0,5 está escrito com vírgula decimal"),
+        "{pt}"
+    );
+    assert!(pt.contains("Correção: escreva 0.5"), "{pt}");
+    assert!(english_in(&pt, "comma.json").is_empty(), "{pt}");
+    // [0,5, 0,4, 0,6] is read as six numbers: the three as written, and with points.
+    let text = exercise_with(
+        r#""ambient": [0.5, 0.4, 0.6]"#,
+        r#""ambient": [0,5, 0,4, 0,6]"#,
+    );
+    let (code, en) = solve("comma2.json", &text, "en");
+    assert_eq!(code, 2, "{en}");
+    assert!(
+        en.contains(
+            "materials.M.ambient: [0,5, 0,4, 0,6] has numbers written with a decimal comma"
+        ),
+        "{en}"
+    );
+    assert!(en.contains("Fix: write [0.5, 0.4, 0.6]"), "{en}");
+    assert!(!en.contains("exactly three numbers"), "{en}");
+    let (_, pt) = solve("comma2.json", &text, "pt");
+    assert!(pt.contains("Correção: escreva [0.5, 0.4, 0.6]"), "{pt}");
+    assert!(english_in(&pt, "comma2.json").is_empty(), "{pt}");
+    // A compact array of integers is no decimal comma: [1,1,1,1] is too long, as before.
+    let text = exercise_with(r#""color": [1, 1, 1]"#, r#""color": [1,1,1,1]"#);
+    let (_, en) = solve("four.json", &text, "en");
+    assert!(!en.contains("decimal comma"), "{en}");
+}

@@ -168,8 +168,18 @@ fn parse_tracked(path: &Path, source: &str) -> Result<ProblemFile, ProblemError>
                 .map_or(text.as_str(), |(m, _)| m),
         );
         let fix = syntax_fix(&inner, &message);
-        let field = (!field.is_empty()).then_some(field);
-        let (message, fix) = if message == "trailing characters" && field.is_some() {
+        let mut field = (!field.is_empty()).then_some(field);
+        let comma = decimal_comma_at(source, inner.line(), inner.column(), &message);
+        let (message, fix) = if let Some(c) = comma {
+            if let Some(key) = c.key {
+                field = Some(match field {
+                    Some(f) if !f.ends_with(&key) => format!("{f}.{key}"),
+                    Some(f) => f,
+                    None => key,
+                });
+            }
+            (c.message, c.fix)
+        } else if message == "trailing characters" && field.is_some() {
             // serde_json's words for an array longer than the [x, y, z] it was read into.
             (
                 "too many elements: expected an array of length 3".to_owned(),
@@ -326,6 +336,121 @@ fn fraction_at(source: &str, line: usize, column: usize) -> Option<String> {
         &format!("JSON has no fractions: write {a}/{b} as a decimal, {decimal}"),
         &format!("o JSON não aceita frações: escreva {a}/{b} como decimal, {decimal}"),
     ))
+}
+
+/// A number written with a decimal comma (`"shininess": 0,5`, `"ambient": [0,5, 0,4, 0,6]`),
+/// as a parse error finds it: what was written, and its fix.
+struct DecimalComma {
+    /// The key of the value, when the comma cut an object's value (`shininess`): the parser
+    /// stopped at the object, not at its field.
+    key: Option<String>,
+    /// What is wrong, in English and in Portuguese.
+    message: String,
+    /// What would fix it, in English and in Portuguese.
+    fix: String,
+}
+
+/// A decimal comma where the parser stopped, the likeliest mistake of a file written in
+/// Portuguese: JSON reads the comma as a separator. Two forms are recognised on the error's
+/// line: an object's value cut in two (`0,5` read as `0` and a key `5`, "key must be a
+/// string"), and an array of three numbers read as more ("trailing characters") whose items,
+/// split at the commas followed by a space, are three numbers with decimal commas.
+fn decimal_comma_at(
+    source: &str,
+    line: usize,
+    column: usize,
+    message: &str,
+) -> Option<DecimalComma> {
+    let text = source.lines().nth(line.checked_sub(1)?)?;
+    let bytes = text.as_bytes();
+    let at = column.checked_sub(1)?.min(bytes.len());
+    let digit = |i: usize| bytes.get(i).is_some_and(u8::is_ascii_digit);
+    let said = |written: &str, fixed: &str| {
+        let (en, pt) = if written.starts_with('[') {
+            (
+                "has numbers written with a decimal comma",
+                "tem números escritos com vírgula decimal",
+            )
+        } else {
+            (
+                "is written with a decimal comma",
+                "está escrito com vírgula decimal",
+            )
+        };
+        (
+            both(
+                &format!(
+                    "{written} {en}, and JSON reads a comma as the separator of fields and of a \
+                     list's items (a JSON number takes a decimal point)"
+                ),
+                &format!(
+                    "{written} {pt}, e o JSON lê a vírgula como separador de campos e de itens \
+                     de uma lista (um número JSON leva ponto decimal)"
+                ),
+            ),
+            both(&format!("write {fixed}"), &format!("escreva {fixed}")),
+        )
+    };
+    if message == "key must be a string" {
+        // The comma is just before where the parser stopped, between two digits.
+        let comma = (at.saturating_sub(2)..(at + 1).min(bytes.len()))
+            .find(|&i| bytes[i] == b',' && i > 0 && digit(i - 1) && digit(i + 1))?;
+        let is_num = |b: u8| b.is_ascii_digit() || b == b'.' || b == b'-';
+        let start = text[..comma]
+            .bytes()
+            .rposition(|b| !is_num(b))
+            .map_or(0, |i| i + 1);
+        let end = text[comma + 1..]
+            .bytes()
+            .position(|b| !b.is_ascii_digit())
+            .map_or(text.len(), |i| comma + 1 + i);
+        let (a, b) = (&text[start..comma], &text[comma + 1..end]);
+        let before = text[..start].trim_end().strip_suffix(':')?.trim_end();
+        let key = before
+            .strip_suffix('"')
+            .and_then(|k| k.rsplit_once('"'))
+            .map(|(_, k)| crate::check::answer::shorten(k, LONGEST_NAME));
+        let (message, fix) = said(&format!("{a},{b}"), &format!("{a}.{b}"));
+        return Some(DecimalComma { key, message, fix });
+    }
+    if message != "trailing characters" {
+        return None;
+    }
+    let open = text[..at].rfind('[')?;
+    let close = open + text[open..].find(']')?;
+    let inner = &text[open + 1..close];
+    // The items: split at each comma followed by a space (the comma of a list as people
+    // write it), not at the commas between digits.
+    let mut items = Vec::new();
+    let mut from = 0;
+    for (i, c) in inner.char_indices() {
+        if c == ',' && inner[i + 1..].starts_with(char::is_whitespace) {
+            items.push(inner[from..i].trim());
+            from = i + 1;
+        }
+    }
+    items.push(inner[from..].trim());
+    let number = |t: &str| {
+        let t = t.strip_prefix('-').unwrap_or(t);
+        !t.is_empty()
+            && t.split(',').count() <= 2
+            && t.split(',')
+                .all(|d| !d.is_empty() && d.bytes().all(|b| b.is_ascii_digit()))
+    };
+    if items.len() != 3 || !items.iter().all(|t| number(t)) || !inner.contains(char::is_numeric) {
+        return None;
+    }
+    if !items.iter().any(|t| t.contains(',')) {
+        return None;
+    }
+    let fixed: Vec<String> = items.iter().map(|t| t.replace(',', ".")).collect();
+    let fixed = format!("[{}]", fixed.join(", "));
+    let (message, fix) = said(&format!("[{}]", inner.trim()), &fixed);
+    Some(DecimalComma {
+        key: None,
+        message,
+        fix,
+    })
 }
 
 /// A string where an array of three numbers belongs (`"normal": "3/5 0 4/5"`, `"color":
