@@ -218,3 +218,39 @@ fn a_decimal_comma_in_a_problem_file_is_named_with_its_fix() {
     let (_, en) = solve("four.json", &text, "en");
     assert!(!en.contains("decimal comma"), "{en}");
 }
+
+/// Finding 9: with several files, each warning names the file it is about, in both languages.
+#[test]
+fn a_warning_names_its_file_among_several() {
+    let dir = tempfile::tempdir().unwrap();
+    let c255 = exercise_with(
+        r#""diffuse": [0.7, 0.8, 0.6]"#,
+        r#""diffuse": [178, 204, 153]"#,
+    );
+    std::fs::write(dir.path().join("c255.json"), c255).unwrap();
+    let ok = exercise_with(r#""title""#, r#""title""#);
+    std::fs::write(dir.path().join("ok.json"), ok).unwrap();
+    for (lang, word) in [("en", "warning"), ("pt", "aviso")] {
+        let out = Command::cargo_bin("phong")
+            .unwrap()
+            .current_dir(dir.path())
+            .args([
+                "solve",
+                "ok.json",
+                "c255.json",
+                "--lang",
+                lang,
+                "-o",
+                "out.txt",
+            ])
+            .output()
+            .unwrap();
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(0), "{err}");
+        assert!(
+            err.starts_with(&format!("{word}: c255.json: materials.M.diffuse: ")),
+            "{err}"
+        );
+        assert_eq!(err.lines().count(), 1, "{err}");
+    }
+}
