@@ -1475,10 +1475,9 @@ const ERRORS_PT: &[(&str, &str)] = &[
 const ASIDE: &str = " (Português: ";
 
 /// A part of a message in both languages, as the code that makes it writes it: `"{en}
-/// (Português: {pt})"`. In English the message reads as written, the Portuguese beside it (a
-/// problem file's syntax errors are read by people of either language); in Portuguese
-/// [`error_in`] puts `pt` in place of `en`, so a sentence written this way is never half
-/// translated by [`ERRORS_PT`].
+/// (Português: {pt})"`, which the JSON documents keep whole (they are language-neutral). On
+/// the command line [`error_in`] shows one: in English `en` alone, in Portuguese `pt` in place
+/// of `en`, so a sentence written this way is never half translated by [`ERRORS_PT`].
 ///
 /// `en` is a whole part of the message: a fix (all the text after `Fix: `), or the message
 /// itself after its field (`file: field: MESSAGE`), which must then hold no `: ` of its own.
@@ -1486,14 +1485,15 @@ pub(crate) fn both(en: &str, pt: &str) -> String {
     format!("{en}{ASIDE}{pt})")
 }
 
-/// An error message in `lang`: as it is in English; in Portuguese, each part written in both
-/// languages ([`both`]) replaced by its Portuguese, and the common parts of the rest translated
-/// ([`ERRORS_PT`]). The word before it ("error", "erro") is [`error_word`].
+/// An error message in `lang`: in English, without the Portuguese of the parts written in both
+/// languages ([`both`]); in Portuguese, each such part replaced by its Portuguese, and the common
+/// parts of the rest translated ([`ERRORS_PT`]). The word before it ("error", "erro") is
+/// [`error_word`].
 pub fn error_in(message: &str, lang: Lang) -> String {
+    let (mut s, portuguese) = with_asides_held(message, lang);
     match lang {
-        Lang::En => message.to_owned(),
+        Lang::En => s,
         Lang::Pt => {
-            let (mut s, portuguese) = with_asides_held(message);
             // The phrases that hold a limit, first (a const table cannot format them).
             let limits = [
                 (
@@ -1526,10 +1526,11 @@ fn held(k: usize) -> String {
 }
 
 /// `message` with each part written by [`both`] (its English and its aside) replaced by a mark
-/// ([`held`]), and the Portuguese of each part, in order. A part is the text from the last
-/// `. Fix: ` before its aside (a fix), else from the last `: ` (a message after its field), else
-/// from the start; an aside whose parentheses do not close is left as written.
-fn with_asides_held(message: &str) -> (String, Vec<String>) {
+/// ([`held`]), and the Portuguese of each part, in order; in English, each part's English
+/// without its aside (and no mark). A part is the text from the last `. Fix: ` before its
+/// aside (a fix), else from the last `: ` (a message after its field), else from the start; an
+/// aside whose parentheses do not close is left as written.
+fn with_asides_held(message: &str, lang: Lang) -> (String, Vec<String>) {
     let mut out = String::with_capacity(message.len());
     let mut portuguese = Vec::new();
     let mut rest = message;
@@ -1552,9 +1553,14 @@ fn with_asides_held(message: &str) -> (String, Vec<String>) {
             .map(|i| i + FIX.len())
             .or_else(|| before.rfind(": ").map(|i| i + 2))
             .unwrap_or(0);
-        out.push_str(&before[..part]);
-        out.push_str(&held(portuguese.len()));
-        portuguese.push(after[..end].to_owned());
+        match lang {
+            Lang::En => out.push_str(before),
+            Lang::Pt => {
+                out.push_str(&before[..part]);
+                out.push_str(&held(portuguese.len()));
+                portuguese.push(after[..end].to_owned());
+            }
+        }
         rest = &after[end + 1..];
     }
     out.push_str(rest);
@@ -1749,7 +1755,11 @@ mod tests {
             "x.json: viewer: o observador está em P. Correção: o JSON não aceita frações \
              (escreva 0.6)"
         );
-        assert_eq!(error_in(&en, Lang::En), en);
+        assert_eq!(
+            error_in(&en, Lang::En),
+            "x.json: viewer: the viewer is at P, so V is undefined. Fix: JSON has no fractions: \
+             write 0.6"
+        );
         // An aside that does not close is left as written.
         assert_eq!(error_in("a (Português: b", Lang::Pt), "a (Português: b");
     }
