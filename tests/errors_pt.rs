@@ -154,13 +154,14 @@ fn the_portuguese_aside_is_the_portuguese_fix() {
         "{pt}"
     );
     assert!(!pt.contains("(Português"), "{pt}");
-    // In English the fix is English, with the Portuguese beside it as before.
+    // In English the fix is English alone.
     let (_, en) = solve(
         "frac.json",
         &exercise_with(r#""position": [3, 1, 3]"#, r#""position": [3/5, 1, 3]"#),
         "en",
     );
     assert!(en.contains("write 3/5 as a decimal, 0.6"), "{en}");
+    assert!(!en.contains("Português"), "{en}");
 }
 
 #[test]
@@ -253,4 +254,40 @@ fn a_warning_names_its_file_among_several() {
         );
         assert_eq!(err.lines().count(), 1, "{err}");
     }
+}
+
+/// Finding 7: an output path in a missing folder: the message names the path given (not the
+/// temporary file's random name) and the fix, in both languages; nothing is written.
+#[test]
+fn an_output_in_a_missing_folder_names_the_path_and_the_fix() {
+    let dir = tempfile::tempdir().unwrap();
+    let exercise = Path::new(env!("CARGO_MANIFEST_DIR")).join("exercises/4.1.json");
+    for (command, output) in [("solve", "nodir/x.txt"), ("moodle", "nodir/q.xml")] {
+        for lang in ["en", "pt"] {
+            let out = Command::cargo_bin("phong")
+                .unwrap()
+                .current_dir(dir.path())
+                .arg(command)
+                .arg(&exercise)
+                .args(["--lang", lang, "-o", output])
+                .output()
+                .unwrap();
+            let err = String::from_utf8_lossy(&out.stderr);
+            assert_eq!(out.status.code(), Some(2), "{err}");
+            assert!(!err.contains(".phong-"), "{err}");
+            assert!(!err.contains(".tmp"), "{err}");
+            let expected = match lang {
+                "en" => format!(
+                    "error: cannot write {output}: the folder nodir does not exist. Fix: create \
+                     it first (mkdir -p nodir), or give a path in a folder that exists"
+                ),
+                _ => format!(
+                    "erro: não é possível escrever {output}: a pasta nodir não existe. Correção: \
+                     crie-a antes (mkdir -p nodir), ou dê um caminho numa pasta que existe"
+                ),
+            };
+            assert!(err.starts_with(&expected), "{err}");
+        }
+    }
+    assert!(std::fs::read_dir(dir.path()).unwrap().next().is_none());
 }
