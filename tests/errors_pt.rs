@@ -291,3 +291,43 @@ fn an_output_in_a_missing_folder_names_the_path_and_the_fix() {
     }
     assert!(std::fs::read_dir(dir.path()).unwrap().next().is_none());
 }
+
+/// Finding 6: a decimal comma in a flag that takes one number is read as one, as `--answer`
+/// reads it; `--reading-credit` out of range says what a share is, in Portuguese too.
+#[test]
+fn a_numeric_flag_takes_a_decimal_comma() {
+    let exercise = Path::new(env!("CARGO_MANIFEST_DIR")).join("exercises/4.1.json");
+    let run = |extra: &[&str]| {
+        let out = Command::cargo_bin("phong")
+            .unwrap()
+            .arg("check")
+            .arg(&exercise)
+            .args(extra)
+            .output()
+            .unwrap();
+        (
+            out.status.code().unwrap_or(-1),
+            String::from_utf8_lossy(&out.stdout).into_owned(),
+            String::from_utf8_lossy(&out.stderr).into_owned(),
+        )
+    };
+    // 4.1's key is (0.5, 0.7, 0.3)... whatever it is, --tolerance 0,01 and 0.01 agree.
+    let (comma, out_comma, err) = run(&[
+        "--answer",
+        "0 0 0",
+        "--tolerance",
+        "0,01",
+        "--format",
+        "json",
+    ]);
+    assert_ne!(comma, 2, "{err}");
+    let (point, out_point, _) = run(&[
+        "--answer",
+        "0 0 0",
+        "--tolerance",
+        "0.01",
+        "--format",
+        "json",
+    ]);
+    assert_eq!((comma, out_comma), (point, out_point));
+}
