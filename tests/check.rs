@@ -643,7 +643,9 @@ fn a_0_255_colour_is_a_warning_not_an_error() {
         .unwrap();
     assert_eq!(out.status.code(), Some(0));
     let err = String::from_utf8(out.stderr).unwrap();
-    assert!(err.contains("warning: point.material.ambient"), "{err}");
+    // The warning names its file, as an error does (QA report A, finding 9).
+    let named = format!("warning: {}: point.material.ambient", f.path().display());
+    assert!(err.contains(&named), "{err}");
     let json: Value = serde_json::from_slice(&out.stdout).unwrap();
     assert_eq!(json["warnings"][0]["code"], "material_color_0_255");
     let out = phong()

@@ -94,18 +94,41 @@ impl Rubric {
         Ok(rubric)
     }
 
-    /// Adds `--points 4.1=1,4.2=2` (over a rubric file's points).
+    /// Adds `--points 4.1=1,4.2=2` (over a rubric file's points). A decimal comma is read as one
+    /// (`4.1=0,5,4.2=2` gives 4.1 half a point): the comma separates the items, but a fragment of
+    /// digits alone right after a whole number of points, with no space, can only be its
+    /// decimals. An error names the item as written, with its decimals.
     pub fn add_points(&mut self, spec: &str) -> Result<(), String> {
-        for item in spec.split(',').map(str::trim).filter(|s| !s.is_empty()) {
+        let fragments: Vec<&str> = spec.split(',').collect();
+        let digits = |d: &str| !d.is_empty() && d.bytes().all(|b| b.is_ascii_digit());
+        let mut i = 0;
+        while i < fragments.len() {
+            let raw = fragments[i];
+            i += 1;
+            let item = raw.trim();
+            if item.is_empty() {
+                continue;
+            }
             let Some((name, value)) = item.split_once('=') else {
-                return Err(format!("\"{item}\" is not EXERCISE=POINTS"));
+                let written = match i.checked_sub(2).map(|k| fragments[k].trim()) {
+                    Some(previous) if !previous.is_empty() => format!("{previous},{item}"),
+                    _ => item.to_owned(),
+                };
+                return Err(format!("\"{written}\" is not EXERCISE=POINTS"));
             };
+            let mut value = value.trim().to_owned();
+            let mut written = item.to_owned();
+            if let Some(next) = fragments.get(i).filter(|n| digits(n)) {
+                if digits(&value) && raw.ends_with(|c: char| c.is_ascii_digit()) {
+                    value = format!("{value}.{next}");
+                    written = format!("{item},{next}");
+                    i += 1;
+                }
+            }
             let name = name.trim();
             let value: f64 = value
-                .trim()
-                .replace(',', ".")
                 .parse()
-                .map_err(|_| format!("\"{item}\": the points are not a number"))?;
+                .map_err(|_| format!("\"{written}\": the points are not a number"))?;
             let p = check_points(name, value)?;
             self.points
                 .insert(name.strip_suffix(".json").unwrap_or(name).to_owned(), p);
@@ -143,10 +166,29 @@ mod tests {
     use super::*;
 
     #[test]
+    fn points_with_a_decimal_comma() {
+        // QA report A, finding 6: 4.1=0,5 is half a point, beside other items.
+        let mut r = Rubric::default();
+        r.add_points("4.1=0,5,4.2=2").unwrap();
+        assert_eq!(r.points["4.1"], 0.5);
+        assert_eq!(r.points["4.2"], 2.0);
+        let mut r = Rubric::default();
+        r.add_points("4.1=0,5").unwrap();
+        assert_eq!(r.points["4.1"], 0.5);
+        // A fragment that cannot be decimals is named as written, with what came before it.
+        let e = Rubric::default().add_points("4.1=0.5,5").unwrap_err();
+        assert_eq!(e, "\"4.1=0.5,5\" is not EXERCISE=POINTS");
+        let e = Rubric::default().add_points("4.1=x,5").unwrap_err();
+        assert_eq!(e, "\"4.1=x\": the points are not a number");
+    }
+
+    #[test]
     fn points_from_the_flag_and_the_file() {
         let mut r =
             Rubric::from_json(r#"{"points": {"4.1.json": 2}, "reading_credit": 0.25}"#).unwrap();
-        r.add_points("4.2=3, 4.3=0,5").unwrap_err();
+        // A decimal comma is read as one (it used to be refused).
+        r.add_points("4.2=3, 4.3=0,5").unwrap();
+        assert_eq!(r.points_of("4.3"), 0.5);
         r.add_points("4.2=3,4.3=1.5").unwrap();
         assert_eq!(r.points_of("4.1"), 2.0);
         assert_eq!(r.points_of("4.2.json"), 3.0);

@@ -8,7 +8,7 @@ use clap::{Args, Parser, Subcommand, ValueEnum};
 
 use super::parse::{
     parse_delimiter, parse_fraction, parse_level, parse_pixel, parse_runs, parse_samples,
-    parse_size, parse_threads, parse_tolerance,
+    parse_share, parse_size, parse_threads, parse_tolerance,
 };
 use crate::check;
 use crate::core::Precision;

@@ -137,10 +137,20 @@ pub(crate) fn refused(e: &clap::Error, args: &[std::ffi::OsString]) -> Option<Ex
     Some(Exit::BadInput)
 }
 
-/// Prints a warning (a likely mistake that is not an error), already in `lang`, on standard
-/// error after `warning:` (`aviso:` in Portuguese).
-pub(crate) fn warn_in(warning: &dyn Display, lang: Lang) {
-    super::output::say(&format_args!("{}: {warning}", messages::warning_word(lang)));
+/// Prints a warning (a likely mistake that is not an error) about the file at `file`, already
+/// in `lang`, on standard error after `warning:` (`aviso:` in Portuguese) and the file, as an
+/// error names its file: with several files, the warning says which one it is about.
+pub(crate) fn warn_in(file: &Path, warning: &dyn Display, lang: Lang) {
+    super::output::say(&format_args!("{}", warning_line(file, warning, lang)));
+}
+
+/// The line [`warn_in`] prints: `warning: FILE: …`.
+fn warning_line(file: &Path, warning: &dyn Display, lang: Lang) -> String {
+    format!(
+        "{}: {}: {warning}",
+        messages::warning_word(lang),
+        file.display()
+    )
 }
 
 /// The exit of a step a command goes on after (one file of several): success, or bad input
@@ -161,6 +171,19 @@ pub(crate) fn fail_in(e: &CliError, lang: Lang) -> Exit {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_warning_names_its_file() {
+        // QA report A, finding 9: "warning: c255.json: materials.M.diffuse: …".
+        assert_eq!(
+            warning_line(Path::new("c255.json"), &"materials.M.diffuse: x", Lang::En),
+            "warning: c255.json: materials.M.diffuse: x"
+        );
+        assert_eq!(
+            warning_line(Path::new("c255.json"), &"materials.M.diffuse: x", Lang::Pt),
+            "aviso: c255.json: materials.M.diffuse: x"
+        );
+    }
 
     #[test]
     fn a_setting_is_named_by_its_flag() {

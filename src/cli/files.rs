@@ -143,7 +143,9 @@ fn write_atomically(
         // Passed to open(2), which takes the umask away.
         builder.permissions(std::fs::Permissions::from_mode(0o666));
     }
-    let mut tmp = builder.tempfile_in(dir)?;
+    let mut tmp = builder
+        .tempfile_in(dir)
+        .map_err(|e| not_in_folder(dir, e))?;
     let _pending = Pending::new(tmp.path());
     tmp.write_all(bytes)?;
     if let Some(p) = existing {
@@ -153,6 +155,61 @@ fn write_atomically(
     // On failure the temporary file is dropped, hence removed.
     tmp.persist(path).map_err(|e| e.error)?;
     Ok(())
+}
+
+/// Why the temporary file cannot be made in `dir`, said of the folder the user named: a
+/// missing folder with its fix, in English and in Portuguese; another error as the system
+/// says it, without the temporary file's random name (which tempfile's error holds, and which
+/// the user never gave).
+fn not_in_folder(dir: &Path, e: std::io::Error) -> std::io::Error {
+    use crate::report::messages::both;
+    let shown = dir.display();
+    match std::fs::metadata(dir) {
+        Err(m) if m.kind() == std::io::ErrorKind::NotFound => std::io::Error::new(
+            std::io::ErrorKind::NotFound,
+            format!(
+                "{}. Fix: {}",
+                both(
+                    &format!("the folder {shown} does not exist"),
+                    &format!("a pasta {shown} não existe"),
+                ),
+                both(
+                    &format!(
+                        "create it first (mkdir -p {shown}), or give a path in a folder that \
+                         exists"
+                    ),
+                    &format!(
+                        "crie-a antes (mkdir -p {shown}), ou dê um caminho numa pasta que existe"
+                    ),
+                )
+            ),
+        ),
+        Ok(m) if !m.is_dir() => std::io::Error::new(
+            std::io::ErrorKind::NotADirectory,
+            format!(
+                "{}. Fix: {}",
+                both(
+                    &format!("{shown} is not a folder"),
+                    &format!("{shown} não é uma pasta"),
+                ),
+                both(
+                    "give a path in a folder that exists",
+                    "dê um caminho numa pasta que existe",
+                )
+            ),
+        ),
+        _ => {
+            let inner = e
+                .get_ref()
+                .and_then(|i| i.source())
+                .and_then(|s| s.downcast_ref::<std::io::Error>())
+                .map(ToString::to_string);
+            match inner {
+                Some(text) => std::io::Error::new(e.kind(), text),
+                None => e,
+            }
+        }
+    }
 }
 
 /// What identifies a file for [`distinct`]: its device and inode when it exists, else its

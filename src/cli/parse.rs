@@ -6,7 +6,21 @@ use clap::ValueEnum;
 
 use crate::core::Precision;
 
-/// A number ≥ 0 written as a decimal or a fraction (1/255).
+/// `s` with its decimal comma as a point, when `s` is one number written with one (`0,5`,
+/// `-1,25`: digits, a comma, digits), as a spreadsheet in Portuguese writes it; else `s`. Only
+/// a flag that takes one number reads it so: in a list (`--min-weights 0,1/255`) the comma
+/// separates the items.
+fn with_decimal_point(s: &str) -> std::borrow::Cow<'_, str> {
+    let t = s.trim();
+    let digits = |d: &str| !d.is_empty() && d.bytes().all(|b| b.is_ascii_digit());
+    match t.strip_prefix('-').unwrap_or(t).split_once(',') {
+        Some((a, b)) if digits(a) && digits(b) => t.replacen(',', ".", 1).into(),
+        _ => s.into(),
+    }
+}
+
+/// A number ≥ 0 written as a decimal (with a point, or a decimal comma: `0,05`) or a fraction
+/// (1/255).
 pub(super) fn parse_fraction(s: &str) -> Result<f64, String> {
     if let Some(hint) = crate::check::answer::not_a_number_hint(s.trim()) {
         return Err(format!(
@@ -14,7 +28,7 @@ pub(super) fn parse_fraction(s: &str) -> Result<f64, String> {
             crate::check::answer::shorten(s, 40)
         ));
     }
-    match crate::check::answer::number(s) {
+    match crate::check::answer::number(&with_decimal_point(s)) {
         Some(x) if x >= 0.0 => Ok(x),
         _ => Err(format!(
             "{:?} is not a number ≥ 0. Fix: write a decimal (0.05) or a fraction (1/255)",
@@ -23,8 +37,33 @@ pub(super) fn parse_fraction(s: &str) -> Result<f64, String> {
     }
 }
 
-/// A tolerance: a number ≥ 0 (a decimal, or a fraction 1/255), finite; a number beyond the
-/// range of f64 (`1e400`) is said to be out of range, not infinite.
+/// A share of the points (`--reading-credit`): a number from 0 to 1, written as a decimal
+/// (`0.5`, or with a decimal comma `0,5`) or a fraction (`1/2`); the error says what a share is
+/// (the fix of [`parse_fraction`] is a minimum weight's).
+pub(super) fn parse_share(s: &str) -> Result<f64, String> {
+    let shown = crate::check::answer::shorten(s, 40);
+    let fix = crate::report::messages::both(
+        "give a share of the points from 0 to 1, such as 0.5 (half) or 1/3",
+        "dê uma fração dos pontos de 0 a 1, como 0.5 (metade) ou 1/3",
+    );
+    if let Some(hint) = crate::check::answer::not_a_number_hint(s.trim()) {
+        return Err(format!("\"{shown}\" {hint}. Fix: {fix}"));
+    }
+    match crate::check::answer::number(&with_decimal_point(s)) {
+        Some(x) if (0.0..=1.0).contains(&x) => Ok(x),
+        _ => Err(format!(
+            "{}. Fix: {fix}",
+            crate::report::messages::both(
+                &format!("\"{shown}\" is not a number from 0 to 1"),
+                &format!("\"{shown}\" não é um número de 0 a 1"),
+            )
+        )),
+    }
+}
+
+/// A tolerance: a number ≥ 0 (a decimal, with a point or a decimal comma `0,01`, or a fraction
+/// 1/255), finite; a number beyond the range of f64 (`1e400`) is said to be out of range, not
+/// infinite.
 pub(super) fn parse_tolerance(s: &str) -> Result<f64, String> {
     if let Some(hint) = crate::check::answer::not_a_number_hint(s.trim()) {
         return Err(format!(
@@ -32,7 +71,7 @@ pub(super) fn parse_tolerance(s: &str) -> Result<f64, String> {
             crate::check::answer::shorten(s, 40)
         ));
     }
-    match crate::check::answer::number(s) {
+    match crate::check::answer::number(&with_decimal_point(s)) {
         Some(x) if x >= 0.0 => Ok(x),
         _ => Err(format!(
             "\"{}\" is not a tolerance. Fix: give the largest difference accepted per channel, \
@@ -135,5 +174,40 @@ impl ValueEnum for Precision {
 
     fn to_possible_value(&self) -> Option<clap::builder::PossibleValue> {
         Some(clap::builder::PossibleValue::new(self.name()))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_single_number_flag_takes_a_decimal_comma() {
+        // QA report A, finding 6: 0,01 is 0.01 and 0,5 is 0.5, as --answer reads them.
+        assert_eq!(parse_tolerance("0,01"), Ok(0.01));
+        assert_eq!(parse_fraction("0,5"), Ok(0.5));
+        assert_eq!(parse_share("0,5"), Ok(0.5));
+        assert_eq!(parse_share("1/2"), Ok(0.5));
+        // Not one number with one comma: refused as before.
+        assert!(parse_tolerance("0,0,1").is_err());
+        assert!(parse_fraction(",5").is_err());
+        assert!(parse_tolerance("-0,5").is_err());
+    }
+
+    #[test]
+    fn a_share_out_of_range_says_what_a_share_is() {
+        let e = parse_share("1,5").unwrap_err();
+        assert!(e.starts_with("\"1,5\" is not a number from 0 to 1"), "{e}");
+        assert!(
+            e.contains("Fix: give a share of the points from 0 to 1"),
+            "{e}"
+        );
+        assert!(!e.contains("1/255"), "{e}");
+        let pt = crate::report::messages::error_in(&e, crate::report::lang::Lang::Pt);
+        assert_eq!(
+            pt,
+            "\"1,5\" não é um número de 0 a 1. Correção: dê uma fração dos pontos de 0 a 1, \
+             como 0.5 (metade) ou 1/3"
+        );
     }
 }

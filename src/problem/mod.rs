@@ -25,6 +25,7 @@ pub use model::{
 pub use warnings::{Warning, WarningKind};
 
 use crate::core::Real;
+use crate::report::messages::both;
 use format::{LightSpec, LightType, SurfaceSpec, SurfaceType};
 use serde::Deserialize;
 
@@ -167,8 +168,18 @@ fn parse_tracked(path: &Path, source: &str) -> Result<ProblemFile, ProblemError>
                 .map_or(text.as_str(), |(m, _)| m),
         );
         let fix = syntax_fix(&inner, &message);
-        let field = (!field.is_empty()).then_some(field);
-        let (message, fix) = if message == "trailing characters" && field.is_some() {
+        let mut field = (!field.is_empty()).then_some(field);
+        let comma = decimal_comma_at(source, inner.line(), inner.column(), &message);
+        let (message, fix) = if let Some(c) = comma {
+            if let Some(key) = c.key {
+                field = Some(match field {
+                    Some(f) if !f.ends_with(&key) => format!("{f}.{key}"),
+                    Some(f) => f,
+                    None => key,
+                });
+            }
+            (c.message, c.fix)
+        } else if message == "trailing characters" && field.is_some() {
             // serde_json's words for an array longer than the [x, y, z] it was read into.
             (
                 "too many elements: expected an array of length 3".to_owned(),
@@ -179,6 +190,8 @@ fn parse_tracked(path: &Path, source: &str) -> Result<ProblemFile, ProblemError>
                 message,
                 format!("JSON has no {word}: every number must be finite, such as 0 or 1e300"),
             )
+        } else if let Some(fix) = string_for_vector(&message) {
+            (message, fix)
         } else if let Some(fix) = fraction_at(source, inner.line(), inner.column()) {
             (message, fix)
         } else if let Some(fix) = word_for_number(&message, field.as_deref()) {
@@ -319,10 +332,168 @@ fn fraction_at(source: &str, line: usize, column: usize) -> Option<String> {
         return None;
     }
     let decimal = validate::show((x / y * 1e6).round() / 1e6);
-    Some(format!(
-        "JSON has no fractions: write {a}/{b} as a decimal, {decimal} (Português: o JSON não \
-         aceita frações: escreva {a}/{b} como decimal, {decimal})"
+    Some(both(
+        &format!("JSON has no fractions: write {a}/{b} as a decimal, {decimal}"),
+        &format!("o JSON não aceita frações: escreva {a}/{b} como decimal, {decimal}"),
     ))
+}
+
+/// A number written with a decimal comma (`"shininess": 0,5`, `"ambient": [0,5, 0,4, 0,6]`),
+/// as a parse error finds it: what was written, and its fix.
+struct DecimalComma {
+    /// The key of the value, when the comma cut an object's value (`shininess`): the parser
+    /// stopped at the object, not at its field.
+    key: Option<String>,
+    /// What is wrong, in English and in Portuguese.
+    message: String,
+    /// What would fix it, in English and in Portuguese.
+    fix: String,
+}
+
+/// A decimal comma where the parser stopped, the likeliest mistake of a file written in
+/// Portuguese: JSON reads the comma as a separator. Two forms are recognised on the error's
+/// line: an object's value cut in two (`0,5` read as `0` and a key `5`, "key must be a
+/// string"), and an array of three numbers read as more ("trailing characters") whose items,
+/// split at the commas followed by a space, are three numbers with decimal commas.
+fn decimal_comma_at(
+    source: &str,
+    line: usize,
+    column: usize,
+    message: &str,
+) -> Option<DecimalComma> {
+    let text = source.lines().nth(line.checked_sub(1)?)?;
+    let bytes = text.as_bytes();
+    let at = column.checked_sub(1)?.min(bytes.len());
+    let digit = |i: usize| bytes.get(i).is_some_and(u8::is_ascii_digit);
+    let said = |written: &str, fixed: &str| {
+        let (en, pt) = if written.starts_with('[') {
+            (
+                "has numbers written with a decimal comma",
+                "tem números escritos com vírgula decimal",
+            )
+        } else {
+            (
+                "is written with a decimal comma",
+                "está escrito com vírgula decimal",
+            )
+        };
+        (
+            both(
+                &format!(
+                    "{written} {en}, and JSON reads a comma as the separator of fields and of a \
+                     list's items (a JSON number takes a decimal point)"
+                ),
+                &format!(
+                    "{written} {pt}, e o JSON lê a vírgula como separador de campos e de itens \
+                     de uma lista (um número JSON leva ponto decimal)"
+                ),
+            ),
+            both(&format!("write {fixed}"), &format!("escreva {fixed}")),
+        )
+    };
+    if message == "key must be a string" {
+        // The comma is just before where the parser stopped, between two digits.
+        let comma = (at.saturating_sub(2)..(at + 1).min(bytes.len()))
+            .find(|&i| bytes[i] == b',' && i > 0 && digit(i - 1) && digit(i + 1))?;
+        let is_num = |b: u8| b.is_ascii_digit() || b == b'.' || b == b'-';
+        let start = text[..comma]
+            .bytes()
+            .rposition(|b| !is_num(b))
+            .map_or(0, |i| i + 1);
+        let end = text[comma + 1..]
+            .bytes()
+            .position(|b| !b.is_ascii_digit())
+            .map_or(text.len(), |i| comma + 1 + i);
+        let (a, b) = (&text[start..comma], &text[comma + 1..end]);
+        let before = text[..start].trim_end().strip_suffix(':')?.trim_end();
+        let key = before
+            .strip_suffix('"')
+            .and_then(|k| k.rsplit_once('"'))
+            .map(|(_, k)| crate::check::answer::shorten(k, LONGEST_NAME));
+        let (message, fix) = said(&format!("{a},{b}"), &format!("{a}.{b}"));
+        return Some(DecimalComma { key, message, fix });
+    }
+    if message != "trailing characters" {
+        return None;
+    }
+    let open = text[..at].rfind('[')?;
+    let close = open + text[open..].find(']')?;
+    let inner = &text[open + 1..close];
+    // The items: split at each comma followed by a space (the comma of a list as people
+    // write it), not at the commas between digits.
+    let mut items = Vec::new();
+    let mut from = 0;
+    for (i, c) in inner.char_indices() {
+        if c == ',' && inner[i + 1..].starts_with(char::is_whitespace) {
+            items.push(inner[from..i].trim());
+            from = i + 1;
+        }
+    }
+    items.push(inner[from..].trim());
+    let number = |t: &str| {
+        let t = t.strip_prefix('-').unwrap_or(t);
+        !t.is_empty()
+            && t.split(',').count() <= 2
+            && t.split(',')
+                .all(|d| !d.is_empty() && d.bytes().all(|b| b.is_ascii_digit()))
+    };
+    if items.len() != 3 || !items.iter().all(|t| number(t)) || !inner.contains(char::is_numeric) {
+        return None;
+    }
+    if !items.iter().any(|t| t.contains(',')) {
+        return None;
+    }
+    let fixed: Vec<String> = items.iter().map(|t| t.replace(',', ".")).collect();
+    let fixed = format!("[{}]", fixed.join(", "));
+    let (message, fix) = said(&format!("[{}]", inner.trim()), &fixed);
+    Some(DecimalComma {
+        key: None,
+        message,
+        fix,
+    })
+}
+
+/// A string where an array of three numbers belongs (`"normal": "3/5 0 4/5"`, `"color":
+/// "white"`): the array to write, every number (and fraction) of the string in it when it
+/// holds three, in English and in Portuguese.
+fn string_for_vector(message: &str) -> Option<String> {
+    let rest = message.strip_prefix("invalid type: string \"")?;
+    let (text, expected) = rest.rsplit_once("\", expected ")?;
+    if expected != "an array of length 3" {
+        return None;
+    }
+    let number = |t: &str| -> Option<f64> {
+        let x = match t.split_once('/') {
+            Some((a, b)) => a.parse::<f64>().ok()? / b.parse::<f64>().ok()?,
+            None => t.parse::<f64>().ok()?,
+        };
+        x.is_finite().then_some(x)
+    };
+    let items: Vec<&str> = text
+        .split(|c: char| c.is_whitespace() || c == ';' || c == ',')
+        .filter(|t| !t.is_empty())
+        .collect();
+    let numbers: Option<Vec<f64>> = items.iter().map(|t| number(t)).collect();
+    Some(match numbers.filter(|n| n.len() == 3) {
+        Some(n) => {
+            let array = format!(
+                "[{}, {}, {}]",
+                validate::show((n[0] * 1e6).round() / 1e6),
+                validate::show((n[1] * 1e6).round() / 1e6),
+                validate::show((n[2] * 1e6).round() / 1e6)
+            );
+            both(
+                &format!("write the three numbers as a JSON array, without quotes, {array}"),
+                &format!("escreva os três números como uma lista JSON, sem aspas, {array}"),
+            )
+        }
+        None => both(
+            "give three numbers in brackets, such as [1, 1, 1] (a colour: red, green and blue \
+             from 0 to 1)",
+            "dê três números entre colchetes, como [1, 1, 1] (uma cor: vermelho, verde e azul \
+             de 0 a 1)",
+        ),
+    })
 }
 
 /// A word (a string) where a number belongs: the number it likely means, in plain words, in
@@ -342,10 +513,15 @@ fn word_for_number(message: &str, field: Option<&str>) -> Option<String> {
         _ => None,
     };
     if let (true, Some(f)) = (is_falloff, falloff) {
-        return Some(format!(
-            "the falloff is the exponent f of d^f, a number: write {f} for \"{word}\" (0 none, 1 \
-             linear, 2 quadratic) (Português: o decaimento é o expoente f de d^f, um número: \
-             escreva {f} para \"{word}\")"
+        return Some(both(
+            &format!(
+                "the falloff is the exponent f of d^f, a number: write {f} for \"{word}\" (0 \
+                 none, 1 linear, 2 quadratic)"
+            ),
+            &format!(
+                "o decaimento é o expoente f de d^f, um número: escreva {f} para \"{word}\" (0 \
+                 sem decaimento, 1 linear, 2 quadrático)"
+            ),
         ));
     }
     let number = |t: &str| match t.split_once('/') {
@@ -353,22 +529,28 @@ fn word_for_number(message: &str, field: Option<&str>) -> Option<String> {
         None => t.parse::<f64>().ok(),
     };
     if let Some(x) = number(word.trim()).filter(|x| x.is_finite()) {
-        return Some(format!(
-            "a number is written without quotes: {} (Português: um número se escreve sem aspas: \
-             {})",
-            validate::show(x),
-            validate::show(x)
+        return Some(both(
+            &format!("a number is written without quotes: {}", validate::show(x)),
+            &format!("um número se escreve sem aspas: {}", validate::show(x)),
         ));
     }
-    Some(format!(
-        "a number belongs here, not the word \"{word}\"{} (Português: aqui vai um número, não a \
-         palavra \"{word}\")",
-        if is_falloff {
-            ": the falloff is 0 (none), 1 (linear) or 2 (quadratic)"
-        } else {
-            ""
-        }
-    ))
+    Some(if is_falloff {
+        both(
+            &format!(
+                "a number belongs here, not the word \"{word}\": the falloff is 0 (none), 1 \
+                 (linear) or 2 (quadratic)"
+            ),
+            &format!(
+                "aqui vai um número, não a palavra \"{word}\": o decaimento é 0 (sem \
+                 decaimento), 1 (linear) ou 2 (quadrático)"
+            ),
+        )
+    } else {
+        both(
+            &format!("a number belongs here, not the word \"{word}\""),
+            &format!("aqui vai um número, não a palavra \"{word}\""),
+        )
+    })
 }
 
 fn syntax_fix(e: &serde_json::Error, message: &str) -> String {
@@ -390,6 +572,12 @@ fn syntax_fix(e: &serde_json::Error, message: &str) -> String {
                 "give the field once: remove one of the two (the parser does not pick one)".into()
             } else if message.starts_with("duplicate material") {
                 "give each material its own name, or remove one of the two".into()
+            } else if let Some(fix) = message
+                .strip_prefix("unknown variant `")
+                .and_then(|s| s.split('`').next())
+                .and_then(kind_in_portuguese)
+            {
+                fix
             } else if let Some(name) = message
                 .strip_prefix("missing field `")
                 .and_then(|s| s.split('`').next())
@@ -403,6 +591,26 @@ fn syntax_fix(e: &serde_json::Error, message: &str) -> String {
             }
         }
     }
+}
+
+/// A light's or a surface's kind written in Portuguese (`"type": "pontual"`): the file's word
+/// for it, in English and in Portuguese.
+fn kind_in_portuguese(word: &str) -> Option<String> {
+    let kind = match word.trim().to_lowercase().as_str() {
+        "pontual" | "ponto" => "point",
+        "direcional" => "directional",
+        "ambiente" => "ambient",
+        "holofote" => "spot",
+        "plano" => "plane",
+        "esfera" => "sphere",
+        "triângulo" | "triangulo" => "triangle",
+        "malha" => "mesh",
+        _ => return None,
+    };
+    Some(both(
+        &format!("a kind is written in English in the file: write \"{kind}\" for \"{word}\""),
+        &format!("o tipo se escreve em inglês no arquivo: escreva \"{kind}\" para \"{word}\""),
+    ))
 }
 
 /// What a required field of the format is used for, to say why it is needed. A light's and a

@@ -1369,6 +1369,8 @@ const ERRORS_PT: &[(&str, &str)] = &[
     ("standard output", "a saída padrão"),
     // Syntax (serde's words).
     ("unknown field ", "campo desconhecido "),
+    ("unknown variant ", "valor desconhecido "),
+    (", expected an array of length ", ", esperada uma lista de comprimento "),
     (", expected one of ", ", esperado um de "),
     (
         "remove the field or correct its spelling (`phong schema` lists every field)",
@@ -1468,13 +1470,30 @@ const ERRORS_PT: &[(&str, &str)] = &[
     ("remove ", "remova "),
 ];
 
-/// An error message in `lang`: as it is in English; in Portuguese, its common parts translated
-/// ([`ERRORS_PT`]). The word before it ("error", "erro") is [`error_word`].
+/// Where a message carries its own Portuguese: `English (Português: Portuguese)`, written by
+/// [`both`].
+const ASIDE: &str = " (Português: ";
+
+/// A part of a message in both languages, as the code that makes it writes it: `"{en}
+/// (Português: {pt})"`, which the JSON documents keep whole (they are language-neutral). On
+/// the command line [`error_in`] shows one: in English `en` alone, in Portuguese `pt` in place
+/// of `en`, so a sentence written this way is never half translated by [`ERRORS_PT`].
+///
+/// `en` is a whole part of the message: a fix (all the text after `Fix: `), or the message
+/// itself after its field (`file: field: MESSAGE`), which must then hold no `: ` of its own.
+pub(crate) fn both(en: &str, pt: &str) -> String {
+    format!("{en}{ASIDE}{pt})")
+}
+
+/// An error message in `lang`: in English, without the Portuguese of the parts written in both
+/// languages ([`both`]); in Portuguese, each such part replaced by its Portuguese, and the common
+/// parts of the rest translated ([`ERRORS_PT`]). The word before it ("error", "erro") is
+/// [`error_word`].
 pub fn error_in(message: &str, lang: Lang) -> String {
+    let (mut s, portuguese) = with_asides_held(message, lang);
     match lang {
-        Lang::En => message.to_owned(),
+        Lang::En => s,
         Lang::Pt => {
-            let mut s = message.to_owned();
             // The phrases that hold a limit, first (a const table cannot format them).
             let limits = [
                 (
@@ -1492,40 +1511,60 @@ pub fn error_in(message: &str, lang: Lang) -> String {
             for (en, pt) in ERRORS_PT {
                 s = s.replace(en, pt);
             }
-            without_portuguese_aside(&s)
+            for (k, pt) in portuguese.iter().enumerate() {
+                s = s.replace(&held(k), pt);
+            }
+            s
         }
     }
 }
 
-/// A message without its " (Português: …)" asides: the fixes that say themselves in both
-/// languages (a word where a number belongs) need them only in English.
-fn without_portuguese_aside(message: &str) -> String {
-    const ASIDE: &str = " (Português: ";
+/// The mark that holds the place of the `k`th Portuguese part while the table translates the
+/// rest: characters of Unicode's private use area, which no message and no table entry holds.
+fn held(k: usize) -> String {
+    format!("\u{E000}{k}\u{E001}")
+}
+
+/// `message` with each part written by [`both`] (its English and its aside) replaced by a mark
+/// ([`held`]), and the Portuguese of each part, in order; in English, each part's English
+/// without its aside (and no mark). A part is the text from the last `. Fix: ` before its
+/// aside (a fix), else from the last `: ` (a message after its field), else from the start; an
+/// aside whose parentheses do not close is left as written.
+fn with_asides_held(message: &str, lang: Lang) -> (String, Vec<String>) {
     let mut out = String::with_capacity(message.len());
+    let mut portuguese = Vec::new();
     let mut rest = message;
     while let Some(start) = rest.find(ASIDE) {
-        out.push_str(&rest[..start]);
-        let mut depth = 1;
         let after = &rest[start + ASIDE.len()..];
+        let mut depth = 1;
         let end = after.char_indices().find_map(|(i, c)| {
             match c {
                 '(' => depth += 1,
                 ')' => depth -= 1,
                 _ => {}
             }
-            (depth == 0).then_some(i + 1)
+            (depth == 0).then_some(i)
         });
-        match end {
-            Some(e) => rest = &after[e..],
-            // Unbalanced: keep it as it is.
-            None => {
-                out.push_str(&rest[start..]);
-                rest = "";
+        let Some(end) = end else { break };
+        let before = &rest[..start];
+        const FIX: &str = ". Fix: ";
+        let part = before
+            .rfind(FIX)
+            .map(|i| i + FIX.len())
+            .or_else(|| before.rfind(": ").map(|i| i + 2))
+            .unwrap_or(0);
+        match lang {
+            Lang::En => out.push_str(before),
+            Lang::Pt => {
+                out.push_str(&before[..part]);
+                out.push_str(&held(portuguese.len()));
+                portuguese.push(after[..end].to_owned());
             }
         }
+        rest = &after[end + 1..];
     }
     out.push_str(rest);
-    out
+    (out, portuguese)
 }
 
 /// The formulas of `phong check --step` that hold words (check/steps.rs's `NAMES`), in
@@ -1685,14 +1724,44 @@ mod tests {
         assert_eq!(error_in(en, Lang::En), en);
         assert_eq!(
             error_in(
-                "the falloff is the exponent f of d^f, a number: write 1 for \"linear\" (0 none, \
-                 1 linear, 2 quadratic) (Português: o decaimento é o expoente f de d^f (Eq. \
-                 4.3): escreva 1)",
+                "x.json:1:2: lights[0].falloff: invalid type: string \"linear\", expected f64. \
+                 Fix: the falloff is the exponent \
+                 f of d^f, a number: write 1 for \"linear\" (Português: o decaimento é o \
+                 expoente f de d^f (Eq. 4.3): escreva 1)",
                 Lang::Pt
             ),
-            "o decaimento é o expoente f de d^f, um número: escreva 1 para \"linear\" (0 sem \
-             decaimento, 1 linear, 2 quadrático)"
+            "x.json:1:2: lights[0].falloff: tipo inválido: texto \"linear\", esperado um número. \
+             Correção: o decaimento é o expoente \
+             f de d^f (Eq. 4.3): escreva 1"
         );
+    }
+
+    #[test]
+    fn a_part_written_in_both_languages_is_its_portuguese_in_portuguese() {
+        // The message after its field, and the fix after "Fix: " (which may hold ": ").
+        let en = format!(
+            "x.json: viewer: {}. Fix: {}",
+            both(
+                "the viewer is at P, so V is undefined",
+                "o observador está em P"
+            ),
+            both(
+                "JSON has no fractions: write 0.6",
+                "o JSON não aceita frações (escreva 0.6)"
+            )
+        );
+        assert_eq!(
+            error_in(&en, Lang::Pt),
+            "x.json: viewer: o observador está em P. Correção: o JSON não aceita frações \
+             (escreva 0.6)"
+        );
+        assert_eq!(
+            error_in(&en, Lang::En),
+            "x.json: viewer: the viewer is at P, so V is undefined. Fix: JSON has no fractions: \
+             write 0.6"
+        );
+        // An aside that does not close is left as written.
+        assert_eq!(error_in("a (Português: b", Lang::Pt), "a (Português: b");
     }
 
     #[test]

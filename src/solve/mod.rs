@@ -17,6 +17,7 @@ use crate::core::{
 use crate::geometry::{Aggregate, Ray, SurfaceHit};
 use crate::problem::validate::{light_label, show};
 use crate::problem::{GivenVector, Invalid, NamedMaterial, Problem, SurfaceSource, Target};
+use crate::report::messages::both;
 
 pub use file::{solve_file, solve_source};
 pub use findings::{ConeEdge, Finding, FindingData, GateDecision};
@@ -535,18 +536,33 @@ fn evaluate<R: Real, F: Formulas, Vis: Visibility<R>>(
             let v = between::<R>(e, p).ok_or_else(|| {
                 Invalid::new(
                     "viewer",
-                    "the viewer is exactly at the point being shaded, so V is undefined",
-                    "move the viewer away from the point",
+                    both(
+                        "the viewer is exactly at the point being shaded, so V is undefined",
+                        "o observador está exatamente no ponto iluminado, e V fica indefinido",
+                    ),
+                    both(
+                        "move the viewer away from the point",
+                        "afaste o observador do ponto",
+                    ),
                 )
             })?;
             if !v.length.is_finite() {
                 return Err(Invalid::new(
                     "viewer",
-                    format!(
-                        "the distance from the viewer to the point overflows {}",
-                        R::NAME
+                    both(
+                        &format!(
+                            "the distance from the viewer to the point overflows {}",
+                            R::NAME
+                        ),
+                        &format!(
+                            "a distância do observador ao ponto passa do alcance de {}",
+                            R::NAME
+                        ),
                     ),
-                    "bring the coordinates into a smaller range",
+                    both(
+                        "bring the coordinates into a smaller range",
+                        "use coordenadas de ordem de grandeza menor",
+                    ),
                 ));
             }
             Some((Some(e), ViewSource::Viewer, v.unit))
@@ -578,9 +594,16 @@ fn evaluate<R: Real, F: Formulas, Vis: Visibility<R>>(
             if l.position() == Some(p) {
                 return Err(Invalid::new(
                     format!("lights[{}].position", info.file_index),
-                    "the light is exactly at the point being shaded, so \
-                     L = (P − P_l)/‖P − P_l‖ (Eq. 4.1) is undefined",
-                    "move the light or the point",
+                    both(
+                        "the light is exactly at the point being shaded, so \
+                         L = (P − P_l)/‖P − P_l‖ (Eq. 4.1) is undefined",
+                        "a fonte de luz está exatamente no ponto iluminado, e \
+                         L = (P − P_l)/‖P − P_l‖ (Eq. 4.1) fica indefinido",
+                    ),
+                    both(
+                        "move the light or the point",
+                        "mude de lugar a fonte de luz ou o ponto",
+                    ),
                 ));
             }
         }

@@ -79,7 +79,7 @@ pub(crate) struct GradeArgs {
     pub(crate) rubric: Option<PathBuf>,
     /// The share of an exercise's points an answer in its likely intended reading earns, 0 to 1
     /// (over the rubric's) [default: 0.5; nothing under --strict].
-    #[arg(long, value_name = "SHARE", value_parser = parse_fraction)]
+    #[arg(long, value_name = "SHARE", value_parser = parse_share)]
     pub(crate) reading_credit: Option<f64>,
     /// Which answer counts when a student answers an exercise more than once (the others stay
     /// in the report with counted false).

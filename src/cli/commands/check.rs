@@ -48,7 +48,8 @@ pub(crate) fn run(args: &CheckArgs) -> Result<Exit, CliError> {
         let c = check::check_file(path, &options);
         exit = exit.max(exit_of(c.status()));
         for w in &c.warnings {
-            error::warn_in(&crate::report::messages::warning(w, args.lang), args.lang);
+            let warning = crate::report::messages::warning(w, args.lang);
+            error::warn_in(path, &warning, args.lang);
         }
         if let Err(f) = &c.outcome {
             error::print_in(&f.message, args.lang);
@@ -144,7 +145,8 @@ fn with_steps(args: &CheckArgs, steps: &[check::steps::GivenStep]) -> Result<Exi
     let checked = check::steps::check_steps(path, steps, args.strict);
     let mut exit = exit_of(checked.status());
     for w in &checked.warnings {
-        error::warn_in(&crate::report::messages::warning(w, args.lang), args.lang);
+        let warning = crate::report::messages::warning(w, args.lang);
+        error::warn_in(path, &warning, args.lang);
     }
     let answer = args.answer.as_ref().map(|_| {
         check::check_file(

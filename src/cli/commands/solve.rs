@@ -72,11 +72,15 @@ pub(crate) fn run(args: &SolveArgs) -> Result<Exit, CliError> {
                 args.lang,
             )
             .map(|(v, warnings)| {
-                warnings.iter().for_each(|w| error::warn_in(w, args.lang));
+                warnings
+                    .iter()
+                    .for_each(|w| error::warn_in(path, w, args.lang));
                 docs.push(v);
             }),
             _ => explain_file(path, args.precision, args.lang).map(|x| {
-                x.warnings.iter().for_each(|w| error::warn_in(w, args.lang));
+                x.warnings
+                    .iter()
+                    .for_each(|w| error::warn_in(path, w, args.lang));
                 explanations.push(x);
             }),
         };

@@ -1,0 +1,333 @@
+//! QA report A, findings 1 and 4: with `--lang pt` a problem file's errors are wholly
+//! Portuguese (no English word of the message survives, and the Portuguese the code writes as
+//! an aside is used), and a decimal comma in a problem file is named as such, with its fix.
+
+use std::path::Path;
+
+use assert_cmd::Command;
+
+/// Exercise 4.2 with `from` replaced by `to` (once; the text must hold it).
+fn exercise_with(from: &str, to: &str) -> String {
+    let text =
+        std::fs::read_to_string(Path::new(env!("CARGO_MANIFEST_DIR")).join("exercises/4.2.json"))
+            .unwrap();
+    assert!(text.contains(from), "4.2.json has no {from:?}");
+    text.replacen(from, to, 1)
+}
+
+/// Runs `phong solve FILE --lang LANG` on `text`: the exit code and standard error.
+fn solve(name: &str, text: &str, lang: &str) -> (i32, String) {
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join(name);
+    std::fs::write(&path, text).unwrap();
+    let out = Command::cargo_bin("phong")
+        .unwrap()
+        .current_dir(dir.path())
+        .args(["solve", name, "--lang", lang])
+        .output()
+        .unwrap();
+    (
+        out.status.code().unwrap_or(-1),
+        String::from_utf8_lossy(&out.stderr).into_owned(),
+    )
+}
+
+/// The cases of finding 1: one change each to 4.2.json.
+fn finding_1_cases() -> Vec<(&'static str, String)> {
+    vec![
+        // The light at the point: lights[0].position = point.position.
+        (
+            "light_at_p.json",
+            exercise_with(r#""position": [1, 1, 1]"#, r#""position": [3, 1, 3]"#),
+        ),
+        (
+            "viewer_at_p.json",
+            exercise_with(r#""viewer": [5, 4, 6]"#, r#""viewer": [3, 1, 3]"#),
+        ),
+        (
+            "frac.json",
+            exercise_with(r#""position": [3, 1, 3]"#, r#""position": [3/5, 1, 3]"#),
+        ),
+        (
+            "normal_str.json",
+            exercise_with(r#""normal": [0.6, 0, 0.8]"#, r#""normal": "3/5 0 4/5""#),
+        ),
+        (
+            "badtype.json",
+            exercise_with(r#""type": "point""#, r#""type": "pontual""#),
+        ),
+        (
+            "strcolor.json",
+            exercise_with(r#""color": [1, 1, 1]"#, r#""color": "white""#),
+        ),
+    ]
+}
+
+/// English words (and word pairs) of the messages of finding 1 that must not survive in
+/// Portuguese.
+const ENGLISH: &[&str] = &[
+    "the",
+    "light",
+    "viewer",
+    "point",
+    "move",
+    "write",
+    "expected",
+    "fractions",
+    "unknown",
+    "variant",
+    "array",
+    "length",
+    "of",
+    "away",
+    "from",
+    "so",
+    "is",
+    "undefined",
+    "fix",
+    "Português",
+];
+
+/// The prose of a message: what is between quotes or backticks (the file's own words, such as
+/// `pontual` or "white"), the file's name and the field (`point.position:`) left out.
+fn prose(message: &str, file: &str) -> String {
+    let mut out = String::new();
+    let mut quote: Option<char> = None;
+    for c in message.replace(file, " ").chars() {
+        match quote {
+            Some(q) if c == q => quote = None,
+            Some(_) => {}
+            None if c == '"' || c == '`' => quote = Some(c),
+            None => out.push(c),
+        }
+    }
+    out.split_whitespace()
+        .filter(|w| {
+            !(w.ends_with(':')
+                && w.chars()
+                    .all(|c| c.is_ascii_alphanumeric() || "_.[]:".contains(c)))
+        })
+        .collect::<Vec<_>>()
+        .join(" ")
+}
+
+/// The English words of [`ENGLISH`] in `message`.
+fn english_in(message: &str, file: &str) -> Vec<String> {
+    prose(message, file)
+        .split(|c: char| !c.is_alphabetic())
+        .filter(|w| ENGLISH.iter().any(|e| e.eq_ignore_ascii_case(w)))
+        .map(str::to_owned)
+        .collect()
+}
+
+#[test]
+fn the_errors_of_finding_1_are_wholly_portuguese() {
+    let mut failures = Vec::new();
+    for (name, text) in finding_1_cases() {
+        let (code, stderr) = solve(name, &text, "pt");
+        assert_eq!(code, 2, "{name}: {stderr}");
+        assert!(stderr.starts_with("erro: "), "{name}: {stderr}");
+        assert!(stderr.contains("Correção: "), "{name}: no fix in {stderr}");
+        let found = english_in(&stderr, name);
+        if !found.is_empty() {
+            failures.push(format!("{name}: {found:?} in {stderr}"));
+        }
+    }
+    assert!(
+        failures.is_empty(),
+        "English with --lang pt:\n{}",
+        failures.join("\n")
+    );
+}
+
+#[test]
+fn the_portuguese_aside_is_the_portuguese_fix() {
+    // The code writes "(Português: o JSON não aceita frações: escreva 3/5 como decimal, 0.6)":
+    // that sentence is the fix in Portuguese, and the English half is not kept.
+    let (_, pt) = solve(
+        "frac.json",
+        &exercise_with(r#""position": [3, 1, 3]"#, r#""position": [3/5, 1, 3]"#),
+        "pt",
+    );
+    assert!(
+        pt.contains("Correção: o JSON não aceita frações: escreva 3/5 como decimal, 0.6"),
+        "{pt}"
+    );
+    assert!(!pt.contains("(Português"), "{pt}");
+    // In English the fix is English alone.
+    let (_, en) = solve(
+        "frac.json",
+        &exercise_with(r#""position": [3, 1, 3]"#, r#""position": [3/5, 1, 3]"#),
+        "en",
+    );
+    assert!(en.contains("write 3/5 as a decimal, 0.6"), "{en}");
+    assert!(!en.contains("Português"), "{en}");
+}
+
+#[test]
+fn a_string_of_numbers_for_a_vector_names_every_fraction() {
+    // "3/5 0 4/5" is three numbers written as text: the fix gives the array, 3/5 = 0.6 and
+    // 4/5 = 0.8 both.
+    let text = exercise_with(r#""normal": [0.6, 0, 0.8]"#, r#""normal": "3/5 0 4/5""#);
+    let (_, en) = solve("normal_str.json", &text, "en");
+    assert!(en.contains("[0.6, 0, 0.8]"), "{en}");
+    let (_, pt) = solve("normal_str.json", &text, "pt");
+    assert!(pt.contains("[0.6, 0, 0.8]"), "{pt}");
+}
+
+/// Finding 4: a decimal comma in a problem file is named as such: the field, what was
+/// written, and the number with a decimal point, in both languages.
+#[test]
+fn a_decimal_comma_in_a_problem_file_is_named_with_its_fix() {
+    // "shininess": 0,5 is read as 0 and a key 5: the field is shininess, not materials.M.
+    let text = exercise_with(r#""shininess": 1"#, r#""shininess": 0,5"#);
+    let (code, en) = solve("comma.json", &text, "en");
+    assert_eq!(code, 2, "{en}");
+    assert!(
+        en.contains("materials.M.shininess: 0,5 is written with a decimal comma"),
+        "{en}"
+    );
+    assert!(en.contains("a JSON number takes a decimal point"), "{en}");
+    assert!(en.contains("Fix: write 0.5"), "{en}");
+    let (_, pt) = solve("comma.json", &text, "pt");
+    assert!(
+        pt.contains("materials.M.shininess: 0,5 está escrito com vírgula decimal"),
+        "{pt}"
+    );
+    assert!(pt.contains("Correção: escreva 0.5"), "{pt}");
+    assert!(english_in(&pt, "comma.json").is_empty(), "{pt}");
+    // [0,5, 0,4, 0,6] is read as six numbers: the three as written, and with points.
+    let text = exercise_with(
+        r#""ambient": [0.5, 0.4, 0.6]"#,
+        r#""ambient": [0,5, 0,4, 0,6]"#,
+    );
+    let (code, en) = solve("comma2.json", &text, "en");
+    assert_eq!(code, 2, "{en}");
+    assert!(
+        en.contains(
+            "materials.M.ambient: [0,5, 0,4, 0,6] has numbers written with a decimal comma"
+        ),
+        "{en}"
+    );
+    assert!(en.contains("Fix: write [0.5, 0.4, 0.6]"), "{en}");
+    assert!(!en.contains("exactly three numbers"), "{en}");
+    let (_, pt) = solve("comma2.json", &text, "pt");
+    assert!(pt.contains("Correção: escreva [0.5, 0.4, 0.6]"), "{pt}");
+    assert!(english_in(&pt, "comma2.json").is_empty(), "{pt}");
+    // A compact array of integers is no decimal comma: [1,1,1,1] is too long, as before.
+    let text = exercise_with(r#""color": [1, 1, 1]"#, r#""color": [1,1,1,1]"#);
+    let (_, en) = solve("four.json", &text, "en");
+    assert!(!en.contains("decimal comma"), "{en}");
+}
+
+/// Finding 9: with several files, each warning names the file it is about, in both languages.
+#[test]
+fn a_warning_names_its_file_among_several() {
+    let dir = tempfile::tempdir().unwrap();
+    let c255 = exercise_with(
+        r#""diffuse": [0.7, 0.8, 0.6]"#,
+        r#""diffuse": [178, 204, 153]"#,
+    );
+    std::fs::write(dir.path().join("c255.json"), c255).unwrap();
+    let ok = exercise_with(r#""title""#, r#""title""#);
+    std::fs::write(dir.path().join("ok.json"), ok).unwrap();
+    for (lang, word) in [("en", "warning"), ("pt", "aviso")] {
+        let out = Command::cargo_bin("phong")
+            .unwrap()
+            .current_dir(dir.path())
+            .args([
+                "solve",
+                "ok.json",
+                "c255.json",
+                "--lang",
+                lang,
+                "-o",
+                "out.txt",
+            ])
+            .output()
+            .unwrap();
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(0), "{err}");
+        assert!(
+            err.starts_with(&format!("{word}: c255.json: materials.M.diffuse: ")),
+            "{err}"
+        );
+        assert_eq!(err.lines().count(), 1, "{err}");
+    }
+}
+
+/// Finding 7: an output path in a missing folder: the message names the path given (not the
+/// temporary file's random name) and the fix, in both languages; nothing is written.
+#[test]
+fn an_output_in_a_missing_folder_names_the_path_and_the_fix() {
+    let dir = tempfile::tempdir().unwrap();
+    let exercise = Path::new(env!("CARGO_MANIFEST_DIR")).join("exercises/4.1.json");
+    for (command, output) in [("solve", "nodir/x.txt"), ("moodle", "nodir/q.xml")] {
+        for lang in ["en", "pt"] {
+            let out = Command::cargo_bin("phong")
+                .unwrap()
+                .current_dir(dir.path())
+                .arg(command)
+                .arg(&exercise)
+                .args(["--lang", lang, "-o", output])
+                .output()
+                .unwrap();
+            let err = String::from_utf8_lossy(&out.stderr);
+            assert_eq!(out.status.code(), Some(2), "{err}");
+            assert!(!err.contains(".phong-"), "{err}");
+            assert!(!err.contains(".tmp"), "{err}");
+            let expected = match lang {
+                "en" => format!(
+                    "error: cannot write {output}: the folder nodir does not exist. Fix: create \
+                     it first (mkdir -p nodir), or give a path in a folder that exists"
+                ),
+                _ => format!(
+                    "erro: não é possível escrever {output}: a pasta nodir não existe. Correção: \
+                     crie-a antes (mkdir -p nodir), ou dê um caminho numa pasta que existe"
+                ),
+            };
+            assert!(err.starts_with(&expected), "{err}");
+        }
+    }
+    assert!(std::fs::read_dir(dir.path()).unwrap().next().is_none());
+}
+
+/// Finding 6: a decimal comma in a flag that takes one number is read as one, as `--answer`
+/// reads it; `--reading-credit` out of range says what a share is, in Portuguese too.
+#[test]
+fn a_numeric_flag_takes_a_decimal_comma() {
+    let exercise = Path::new(env!("CARGO_MANIFEST_DIR")).join("exercises/4.1.json");
+    let run = |extra: &[&str]| {
+        let out = Command::cargo_bin("phong")
+            .unwrap()
+            .arg("check")
+            .arg(&exercise)
+            .args(extra)
+            .output()
+            .unwrap();
+        (
+            out.status.code().unwrap_or(-1),
+            String::from_utf8_lossy(&out.stdout).into_owned(),
+            String::from_utf8_lossy(&out.stderr).into_owned(),
+        )
+    };
+    // 4.1's key is (0.5, 0.7, 0.3)... whatever it is, --tolerance 0,01 and 0.01 agree.
+    let (comma, out_comma, err) = run(&[
+        "--answer",
+        "0 0 0",
+        "--tolerance",
+        "0,01",
+        "--format",
+        "json",
+    ]);
+    assert_ne!(comma, 2, "{err}");
+    let (point, out_point, _) = run(&[
+        "--answer",
+        "0 0 0",
+        "--tolerance",
+        "0.01",
+        "--format",
+        "json",
+    ]);
+    assert_eq!((comma, out_comma), (point, out_point));
+}
