@@ -331,3 +331,131 @@ fn a_numeric_flag_takes_a_decimal_comma() {
     ]);
     assert_eq!((comma, out_comma), (point, out_point));
 }
+
+/// Runs `phong ARGS` in `dir` with `stdin` on standard input: the exit code and standard error.
+fn phong_in(dir: &Path, args: &[&str], stdin: &[u8]) -> (i32, String) {
+    let out = Command::cargo_bin("phong")
+        .unwrap()
+        .current_dir(dir)
+        .args(args)
+        .write_stdin(stdin)
+        .output()
+        .unwrap();
+    (
+        out.status.code().unwrap_or(-1),
+        String::from_utf8_lossy(&out.stderr).into_owned(),
+    )
+}
+
+/// `scenes/mesh.json` as a JSON value, its mesh named `obj`.
+fn mesh_scene(obj: &str) -> serde_json::Value {
+    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/mesh.json");
+    let mut v: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(path).unwrap()).unwrap();
+    v["surfaces"][1]["file"] = obj.into();
+    v
+}
+
+#[test]
+fn a_scenes_errors_are_wholly_portuguese_and_say_what_fits() {
+    // QA report B, findings 3, 6, 7, 8 and 20: each render error in Portuguese, with no English
+    // word left, and with words that fit the case.
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let classic: serde_json::Value = serde_json::from_str(
+        &std::fs::read_to_string(Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/classic.json"))
+            .unwrap(),
+    )
+    .unwrap();
+    let mut nocam = classic.clone();
+    nocam.as_object_mut().unwrap().remove("camera");
+    std::fs::write(d.join("nocam.json"), nocam.to_string()).unwrap();
+    let mut bg = classic.clone();
+    bg["background"] = serde_json::json!([2, 0, -1]);
+    std::fs::write(d.join("bg.json"), bg.to_string()).unwrap();
+    std::fs::write(d.join("nan.obj"), "v 0 0 nan\nv 1 0 0\nv 0 1 0\nf 1 2 3\n").unwrap();
+    std::fs::write(d.join("nan.json"), mesh_scene("nan.obj").to_string()).unwrap();
+    let big = format!(
+        "v 0 0 0\nv 1 0 0\nv 0 1 0\n{}",
+        "f 1 2 3\n".repeat(1_000_001)
+    );
+    std::fs::write(d.join("big.obj"), big).unwrap();
+    std::fs::write(d.join("big.json"), mesh_scene("big.obj").to_string()).unwrap();
+    let stdin_scene = mesh_scene("absent.obj").to_string();
+
+    let cases: [(&str, &[&str], &[u8], &[&str]); 5] = [
+        // No camera: the field is the camera, not "point".
+        ("nocam.json", &[], b"", &["camera: ausente"]),
+        // The background is not a light, and its numbers are shown as written.
+        ("bg.json", &[], b"", &["a cor de fundo", "[2, 0, -1]"]),
+        // A NaN vertex in f64: no advice to use f64.
+        (
+            "nan.json",
+            &[],
+            b"",
+            &["não é finito em f64", "dê coordenadas finitas"],
+        ),
+        // Over a million triangles: the fix in Portuguese too.
+        (
+            "big.json",
+            &[],
+            b"",
+            &["dê uma malha de no máximo 1000000 triângulos"],
+        ),
+        // A scene on standard input: its mesh is relative to the working folder.
+        (
+            "-",
+            &[],
+            stdin_scene.as_bytes(),
+            &["pasta de trabalho", "entrada padrão"],
+        ),
+    ];
+    for (file, extra, stdin, wanted) in cases {
+        let mut args = vec!["render", file, "-o", "out.png", "--lang", "pt"];
+        args.extend_from_slice(extra);
+        let (code, stderr) = phong_in(d, &args, stdin);
+        assert_eq!(code, 2, "{file}: {stderr}");
+        for w in wanted {
+            assert!(stderr.contains(w), "{file}: no {w:?} in {stderr}");
+        }
+        assert!(!stderr.contains("--precision f64"), "{file}: {stderr}");
+        let found = english_in(&stderr, file);
+        assert!(found.is_empty(), "{file}: {found:?} in {stderr}");
+        assert!(!d.join("out.png").exists(), "{file}: an image was written");
+    }
+    // In f32 the other precision is a way out, and the fix says so.
+    let (_, stderr) = phong_in(
+        d,
+        &["render", "nan.json", "-o", "o.png", "--precision", "f32"],
+        b"",
+    );
+    assert!(stderr.contains("(or use --precision f64)"), "{stderr}");
+}
+
+#[test]
+fn an_explained_mesh_pixel_names_its_triangle_in_portuguese() {
+    // QA report B, finding 4: "triangle (surfaces[1] (mesh), triangle 1557)" in Portuguese.
+    let out = Command::cargo_bin("phong")
+        .unwrap()
+        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .args([
+            "render",
+            "scenes/mesh.json",
+            "--explain-pixel",
+            "240,150",
+            "--lang",
+            "pt",
+        ])
+        .output()
+        .unwrap();
+    assert!(out.status.success());
+    let text = String::from_utf8(out.stdout).unwrap();
+    assert!(
+        text.contains("triângulo (surfaces[1] (malha), triângulo "),
+        "{text}"
+    );
+    assert!(
+        !text.contains("triangle") && !text.contains("(mesh)"),
+        "{text}"
+    );
+}

@@ -43,6 +43,16 @@ impl Faces {
 }
 
 /// A mistake on line `line` of the OBJ file.
+/// The fix for a vertex that is not finite in `R`: f32's range is the one a coordinate can
+/// leave while finite in f64, so only in f32 is the other precision a way out.
+fn finite_fix<R: Real>() -> &'static str {
+    if R::NAME == "f32" {
+        "give finite coordinates (or use --precision f64)"
+    } else {
+        "give finite coordinates"
+    }
+}
+
 fn at_line(line: usize, message: String, fix: &str) -> MeshError {
     MeshError {
         message: format!("line {line}: {message}"),
@@ -84,7 +94,7 @@ fn scan<R: Real>(text: &str) -> Result<Faces, MeshError> {
                     return Err(at_line(
                         n,
                         format!("the vertex \"{}\" is not finite in {}", shown(), R::NAME),
-                        "give finite coordinates (or use --precision f64)",
+                        finite_fix::<R>(),
                     ));
                 }
                 vertices += 1;
@@ -133,8 +143,12 @@ fn scan<R: Real>(text: &str) -> Result<Faces, MeshError> {
                     return Err(at_line(
                         n,
                         format!("the mesh has more than {MAX_TRIANGLES} triangles"),
-                        "give a mesh of at most 1,000,000 triangles (simplify it, e.g. with \
-                         Blender's Decimate)",
+                        &crate::report::messages::both(
+                            "give a mesh of at most 1000000 triangles (simplify it, for example \
+                             with Blender's Decimate modifier)",
+                            "dê uma malha de no máximo 1000000 triângulos (simplifique-a, por \
+                             exemplo com o modificador Decimate do Blender)",
+                        ),
                     ));
                 }
                 faces.lines.push((n, refs.len() - 2));
@@ -150,7 +164,9 @@ pub fn load_obj<R: Real>(path: &Path) -> Result<Vec<Triangle<R>>, MeshError> {
     let bytes = super::read_limited(path, MAX_MESH_BYTES, "a mesh").map_err(|e| MeshError {
         message: format!("cannot be read: {e}"),
         fix: if super::read_fix(&e).starts_with("check") {
-            "check the path; it is relative to the scene file's folder".into()
+            "check the path; it is relative to the scene file's folder (to the working folder \
+             for a scene read from standard input)"
+                .into()
         } else {
             super::read_fix(&e).into()
         },
@@ -192,7 +208,7 @@ pub fn load_obj<R: Real>(path: &Path) -> Result<Vec<Triangle<R>>, MeshError> {
             if !crate::core::Vector::is_finite(v) {
                 return Err(MeshError {
                     message: format!("vertex {} is not finite in {}", i + 1, R::NAME),
-                    fix: "give finite coordinates (or use --precision f64)".into(),
+                    fix: finite_fix::<R>().into(),
                 });
             }
             Ok(v)

@@ -76,6 +76,27 @@ pub fn validate_in<R: Real>(
                     surfaces: surfaces::<R>(file, base, &needs)?,
                 }
             }
+            // Surfaces without a ray or a camera: a scene whose camera is missing (what `phong
+            // render` needs), more likely than a point problem with surfaces.
+            (None, None) if !file.surfaces.is_empty() => {
+                return Err(Invalid::new(
+                    "camera",
+                    crate::report::messages::both(
+                        "missing, and so is a ray (the file gives surfaces, with nothing to see \
+                         them)",
+                        "ausente, e também o raio (o arquivo dá superfícies, sem nada que as \
+                         veja)",
+                    ),
+                    crate::report::messages::both(
+                        "add \"camera\": {\"eye\": [x, y, z], \"look_at\": [x, y, z], \"fov\": \
+                         45, \"width\": 640, \"height\": 480} to render the scene, or a \"ray\" \
+                         to solve one ray",
+                        "acrescente \"camera\": {\"eye\": [x, y, z], \"look_at\": [x, y, z], \
+                         \"fov\": 45, \"width\": 640, \"height\": 480} para renderizar a cena, \
+                         ou um \"ray\" para resolver um raio",
+                    ),
+                ))
+            }
             (None, None) => return Err(Invalid::new(
                 "point",
                 "the problem has nothing to shade",
@@ -194,7 +215,7 @@ pub fn validate_in<R: Real>(
         target,
         camera,
         background: match file.background {
-            Some(c) => color::<R>(c, Field::Name("background"), ColorRange::Light)?,
+            Some(c) => color::<R>(c, Field::Name("background"), ColorRange::Background)?,
             None => V3::<R>::ZERO,
         },
         render,
@@ -942,6 +963,7 @@ fn material_color<R: Real>(c: &ColorSpec, field: Field<'_>) -> Result<V3<R>, Inv
 enum ColorRange {
     Light,
     Material,
+    Background,
 }
 
 fn color<R: Real>(c: Triple, field: Field<'_>, range: ColorRange) -> Result<V3<R>, Invalid> {
@@ -950,10 +972,13 @@ fn color<R: Real>(c: Triple, field: Field<'_>, range: ColorRange) -> Result<V3<R
         let what = match range {
             ColorRange::Light => "a light's colour",
             ColorRange::Material => "a material colour",
+            ColorRange::Background => "the background colour",
         };
+        // The numbers as the file writes them (2, not 2.0).
+        let [r, g, b] = c;
         return Err(Invalid::new(
             field,
-            format!("{what} has a negative component: {c:?}"),
+            format!("{what} has a negative component: [{r}, {g}, {b}]"),
             "colour components must be ≥ 0",
         ));
     }

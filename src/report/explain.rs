@@ -570,7 +570,7 @@ fn intersection<R: Real>(x: &Intersection<R>, lang: Lang) -> Vec<Step> {
                     t(format!(
                         "{} ({}): ",
                         messages::surface_kind(kind, lang),
-                        messages::surface_label(x.source)
+                        messages::surface_label(x.source, lang)
                     )),
                     Math(Formula::T),
                     EQ,

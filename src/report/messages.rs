@@ -77,6 +77,8 @@ phrases! {
     Direction => "direction ", "direção ";
     Plane => "plane", "plano";
     Sphere => "sphere", "esfera";
+    Triangle => "triangle", "triângulo";
+    Mesh => "mesh", "malha";
     Hit => "hit (t > 0)", "interseção (t > 0)";
     NotAHit => "behind the origin (t ≤ 0): not a hit", "atrás da origem (t ≤ 0): não é interseção";
     LineMeetsNothing => "the ray's line meets no surface", "a reta do raio não encontra nenhuma superfície";
@@ -174,6 +176,8 @@ pub fn surface_kind(kind: &str, lang: Lang) -> &str {
     match kind {
         "plane" => Phrase::Plane.get(lang),
         "sphere" => Phrase::Sphere.get(lang),
+        "triangle" => Phrase::Triangle.get(lang),
+        "mesh" => Phrase::Mesh.get(lang),
         other => other,
     }
 }
@@ -1164,8 +1168,10 @@ const ERRORS_PT: &[(&str, &str)] = &[
     (": line ", ": linha "),
     ("cannot be read: ", "não pode ser lido: "),
     (
-        "check the path; it is relative to the scene file's folder",
-        "confira o caminho; ele é relativo à pasta do arquivo da cena",
+        "check the path; it is relative to the scene file's folder (to the working folder for a \
+         scene read from standard input)",
+        "confira o caminho; ele é relativo à pasta do arquivo da cena (à pasta de trabalho para \
+         uma cena lida da entrada padrão)",
     ),
     ("is not a valid Wavefront OBJ file: ", "não é um arquivo Wavefront OBJ válido: "),
     (
@@ -1181,6 +1187,7 @@ const ERRORS_PT: &[(&str, &str)] = &[
     (" is not `v x y z` (three numbers)", " não é `v x y z` (três números)"),
     ("write each vertex as `v x y z`", "escreva cada vértice como `v x y z`"),
     ("give finite coordinates (or use --precision f64)", "dê coordenadas finitas (ou use --precision f64)"),
+    ("give finite coordinates", "dê coordenadas finitas"),
     (" is a line element, which has no surface to hit", " é um elemento de linha, que não tem superfície a atingir"),
     ("remove the `l` lines (faces are `f i j k`)", "remova as linhas `l` (as faces são `f i j k`)"),
     ("a face refers to vertex ", "uma face se refere ao vértice "),
@@ -1433,6 +1440,7 @@ const ERRORS_PT: &[(&str, &str)] = &[
     ("the sphere", "a esfera"),
     ("rendering needs a camera", "a renderização precisa de uma câmera"),
     ("a light's colour has a negative component", "a cor de uma fonte de luz tem um componente negativo"),
+    ("the background colour has a negative component", "a cor de fundo tem um componente negativo"),
     ("colour components must be ≥ 0", "os componentes de uma cor devem ser ≥ 0"),
     ("is not three numbers: write three numbers such as ", "não são três números: escreva três números como "),
     ("three integers 0–255 with --scale 255, or ", "três inteiros 0–255 com --scale 255, ou "),
@@ -1589,13 +1597,19 @@ pub fn error_word(lang: Lang) -> &'static str {
     pick(lang, "error", "erro")
 }
 
-/// "surfaces[2]", or "surfaces[2] (mesh), triangle 17".
-pub fn surface_label(source: Option<crate::problem::SurfaceSource>) -> String {
+/// "surfaces[2]", or "surfaces[2] (mesh), triangle 17" ("(malha), triângulo 17" in
+/// Portuguese; the triangle's index in the mesh, from 0).
+pub fn surface_label(source: Option<crate::problem::SurfaceSource>, lang: Lang) -> String {
     match source {
-        None => "no surface".into(),
+        None => pick(lang, "no surface", "nenhuma superfície").into(),
         Some(s) => match s.triangle {
             None => format!("surfaces[{}]", s.index),
-            Some(t) => format!("surfaces[{}] (mesh), triangle {t}", s.index),
+            Some(t) => format!(
+                "surfaces[{}] ({}), {} {t}",
+                s.index,
+                Phrase::Mesh.get(lang),
+                Phrase::Triangle.get(lang)
+            ),
         },
     }
 }
