@@ -679,6 +679,16 @@ fn echo(f: &[u8]) -> String {
     visible(String::from_utf8_lossy(f).trim())
 }
 
+/// A field of a line that cannot be read as CSV, as a reader would take it: spaces around it
+/// dropped, and the quotes around it when it has both (`"carla"` is `carla`).
+fn unquote(field: &[u8]) -> &[u8] {
+    let t = field.trim_ascii();
+    match t {
+        [b'"', inner @ .., b'"'] => inner,
+        _ => t,
+    }
+}
+
 /// `text` with NUL and other control characters (but tabs) shown as U+FFFD.
 fn visible(text: &str) -> String {
     text.chars()
@@ -765,7 +775,15 @@ pub fn grade_bytes(bytes: &[u8], options: &Options) -> Report {
         match parsed {
             Ok(f) => grade_row(&mut row, &f, &layout, d, options, &mut cache),
             Err(e) => {
-                row.student = echo(content.split(|&b| b == d).next().unwrap_or_default());
+                // The student and the exercise as the line starts, so that the row stands under
+                // its student's exercise (in the totals and the platforms' reports) rather than
+                // leaving it unanswered.
+                let mut cells = content.split(|&b| b == d).map(unquote);
+                row.student = echo(cells.next().unwrap_or_default());
+                row.exercise = echo(cells.next().unwrap_or_default());
+                if !row.exercise.is_empty() && cache.get(&row.exercise).is_ok() {
+                    row.max_points = Some(options.rubric.points_of(&row.exercise));
+                }
                 let reason = format!("the row cannot be read as CSV: {e}");
                 mark_invalid(&mut row, reason, options.lang);
             }

@@ -122,7 +122,8 @@ pub(crate) fn run(args: &GradeArgs) -> Result<Exit, CliError> {
 
 /// Gradescope's results.json: to `-o FILE` or standard output (one student: the file itself;
 /// several: an object keyed by student), or, with `-o DIR/` (a folder, or a path ending in
-/// `/`), one `DIR/STUDENT.json` per student.
+/// `/`), one `DIR/STUDENT.json` per student (and `DIR/_no_student_.json`, `_sem_aluno_.json`
+/// in Portuguese, for the rows without a student).
 fn gradescope(report: &check::grade::Report, args: &GradeArgs) -> Result<(), CliError> {
     let to_folder = args.output.as_deref().filter(|o| {
         o.is_dir()
@@ -138,9 +139,7 @@ fn gradescope(report: &check::grade::Report, args: &GradeArgs) -> Result<(), Cli
         path: dir.to_owned(),
         source,
     })?;
-    let names = check::export::file_names(report);
-    for (student, name) in report.students.iter().zip(names) {
-        let doc = check::export::gradescope::results(report, student, args.lang);
+    for (name, doc) in check::export::gradescope::files(report, args.lang) {
         output::emit_bytes(
             Some(&dir.join(format!("{name}.json"))),
             output::json_pretty(&doc).as_bytes(),
