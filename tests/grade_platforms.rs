@@ -634,3 +634,67 @@ fn gradescope_keeps_every_row_under_its_student() {
     files.sort();
     assert_eq!(files, ["_sem_aluno_.json", "ana.json", "carla.json"]);
 }
+
+#[test]
+fn exercises_are_in_natural_order_in_totals_summary_and_exports() {
+    // QA finding 11: exercises 4.2, 4.9 and 4.10 are listed 4.2, 4.9, 4.10 (numbers compared as
+    // numbers, as the README orders the Moodle slots), not in text order 4.10, 4.2, 4.9.
+    let dir = tempfile::tempdir().unwrap();
+    let src = Path::new(env!("CARGO_MANIFEST_DIR")).join("exercises/4.2.json");
+    for name in ["4.2", "4.9", "4.10"] {
+        std::fs::copy(&src, dir.path().join(format!("{name}.json"))).unwrap();
+    }
+    let input =
+        write_temp("aluno;exercício;resposta\nana;4.10;0 0 0\nana;4.2;0 0 0\nana;4.9;0 0 0\n");
+    let run = |extra: &[&str]| {
+        let out = phong()
+            .arg("grade")
+            .arg(input.path())
+            .arg("--exercises")
+            .arg(dir.path())
+            .args(extra)
+            .output()
+            .unwrap();
+        assert_eq!(
+            out.status.code(),
+            Some(0),
+            "{}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        String::from_utf8(out.stdout).unwrap()
+    };
+    let out = tempfile::tempdir().unwrap();
+    let totals = out.path().join("totals.csv");
+    let summary = out.path().join("summary.csv");
+    run(&[
+        "-o",
+        out.path().join("r.csv").to_str().unwrap(),
+        "--by-student",
+        totals.to_str().unwrap(),
+        "--summary",
+        summary.to_str().unwrap(),
+    ]);
+    let totals = std::fs::read_to_string(totals).unwrap();
+    assert_eq!(
+        totals, "student,points,max_points,4.2,4.9,4.10\nana,3,3,1,1,1\n",
+        "{totals}"
+    );
+    let summary = std::fs::read_to_string(summary).unwrap();
+    let first: Vec<&str> = summary
+        .lines()
+        .skip(1)
+        .map(|l| l.split(',').next().unwrap())
+        .collect();
+    assert_eq!(first, ["4.2", "4.9", "4.10"], "{summary}");
+    let doc: Value = serde_json::from_str(&run(&["--format", "gradescope"])).unwrap();
+    let numbers: Vec<&str> = doc["tests"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|t| t["number"].as_str().unwrap())
+        .collect();
+    assert_eq!(numbers, ["4.2", "4.9", "4.10"]);
+    let xml = run(&["--format", "junit"]);
+    let at = |name: &str| xml.find(&format!("name=\"{name}\"")).unwrap();
+    assert!(at("4.2") < at("4.9") && at("4.9") < at("4.10"), "{xml}");
+}

@@ -85,13 +85,21 @@ pub fn folder_exercises(dir: &Path) -> Vec<String> {
                 .collect()
         })
         .unwrap_or_default();
+    names.sort_by(|a, b| natural_order(a, b));
+    names
+}
+
+/// Exercises in natural order: their names compared part by part at each `.`, a part that is
+/// a number as a number (4.2 before 4.10, 4.9 before 4.10), one that is not after the numbers,
+/// as text. Used wherever a list of exercises is shown (the totals' columns, the summary, the
+/// platforms' tests), as the Moodle slots are numbered.
+pub(crate) fn natural_order(a: &str, b: &str) -> std::cmp::Ordering {
     let parts = |s: &str| -> Vec<(u64, String)> {
         s.split('.')
             .map(|p| (p.parse().unwrap_or(u64::MAX), p.to_owned()))
             .collect()
     };
-    names.sort_by_key(|n| parts(n));
-    names
+    parts(a).cmp(&parts(b))
 }
 
 impl Default for Options {
@@ -219,7 +227,7 @@ pub struct Report {
     pub format_version: u32,
     /// Each data row of the CSV, graded, in file order.
     pub rows: Vec<RowOut>,
-    /// One entry per exercise, in name order.
+    /// One entry per exercise, in natural order (4.2 before 4.10).
     pub summary: Vec<SummaryOut>,
     /// The exercises graded, in name order, with their points.
     pub exercises: BTreeMap<String, f64>,
@@ -1121,6 +1129,8 @@ struct Tally<'a> {
     slips: BTreeMap<&'a [Slip], usize>,
 }
 
+/// One summary per exercise named by the rows, in natural order (4.2 before 4.10): its rows by
+/// verdict and its wrong rows' diagnoses, most common first.
 fn summarise(rows: &[RowOut]) -> Vec<SummaryOut> {
     let mut by: BTreeMap<&str, Tally> = BTreeMap::new();
     for r in rows {
@@ -1143,7 +1153,8 @@ fn summarise(rows: &[RowOut]) -> Vec<SummaryOut> {
             *slips.entry(d.as_slice()).or_default() += 1;
         }
     }
-    by.into_values()
+    let mut out = by
+        .into_values()
         .map(|Tally { mut summary, slips }| {
             let mut counts: Vec<SlipCount> = slips
                 .into_iter()
@@ -1159,7 +1170,9 @@ fn summarise(rows: &[RowOut]) -> Vec<SummaryOut> {
             summary.slips = counts;
             summary
         })
-        .collect()
+        .collect::<Vec<_>>();
+    out.sort_by(|a, b| natural_order(&a.exercise, &b.exercise));
+    out
 }
 
 fn codes(slips: &[Slip]) -> String {
@@ -1329,13 +1342,15 @@ pub(crate) fn summary_csv(report: &Report) -> Vec<u8> {
     w.into_inner().expect("writing to memory")
 }
 
-/// Each student's total as CSV: `student, points, max_points`, then one column per exercise
-/// (the points of the answer that counts; empty: no answer), students in the order they first
-/// appear.
+/// Each student's total as CSV: `student, points, max_points`, then one column per exercise in
+/// natural order, 4.2 before 4.10 (the points of the answer that counts; empty: no answer),
+/// students in the order they first appear.
 pub fn students_csv(report: &Report) -> Vec<u8> {
     let mut w = csv::Writer::from_writer(Vec::new());
     let mut header = vec!["student".to_owned(), "points".into(), "max_points".into()];
-    header.extend(report.exercises.keys().map(|k| safe_cell(k)));
+    let mut exercises: Vec<&String> = report.exercises.keys().collect();
+    exercises.sort_by(|a, b| natural_order(a, b));
+    header.extend(exercises.iter().map(|k| safe_cell(k)));
     w.write_record(&header).expect("writing to memory");
     for s in &report.students {
         let mut line = vec![
@@ -1343,11 +1358,13 @@ pub fn students_csv(report: &Report) -> Vec<u8> {
             number(s.points),
             number(s.max_points),
         ];
-        line.extend(
+        line.extend(exercises.iter().map(|k| {
             s.exercises
-                .values()
-                .map(|p| p.map_or(String::new(), number)),
-        );
+                .get(*k)
+                .copied()
+                .flatten()
+                .map_or(String::new(), number)
+        }));
         w.write_record(&line).expect("writing to memory");
     }
     w.into_inner().expect("writing to memory")

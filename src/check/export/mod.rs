@@ -12,7 +12,7 @@ pub mod junit;
 
 use std::collections::BTreeMap;
 
-use super::grade::{Report, RowOut};
+use super::grade::{natural_order, Report, RowOut};
 use crate::report::lang::Lang;
 
 /// One test of a submission.
@@ -41,7 +41,8 @@ pub(crate) struct Submission<'a> {
     pub points: f64,
     /// The points of every exercise graded.
     pub max_points: f64,
-    /// The class's exercises in name order, then the other rows in input order.
+    /// The class's exercises in natural order (4.2 before 4.10), then the other rows in input
+    /// order.
     pub tests: Vec<Test<'a>>,
 }
 
@@ -73,7 +74,8 @@ pub(crate) fn row_name(row: &RowOut, lang: Lang) -> String {
 /// some rows have no student, one submission holding them. Every row of the report is one test
 /// of exactly one submission, or the row that counts for one of its exercises.
 pub(crate) fn submissions(report: &Report, lang: Lang) -> Vec<Submission<'_>> {
-    let exercises: Vec<(&String, &f64)> = report.exercises.iter().collect();
+    let mut exercises: Vec<(&String, &f64)> = report.exercises.iter().collect();
+    exercises.sort_by(|a, b| natural_order(a.0, b.0));
     // Each student's rows, in input order; the rows without a student apart.
     let mut by_student: BTreeMap<&str, Vec<&RowOut>> = BTreeMap::new();
     let mut nobody: Vec<&RowOut> = Vec::new();
