@@ -132,7 +132,9 @@ pub struct RowOut {
     pub line: u64,
     /// The `student` column, as written (control characters and NUL shown as U+FFFD).
     pub student: String,
-    /// The `exercise` column, as written (exercise `4.2` is the file `4.2.json`).
+    /// The `exercise` column, as written (exercise `4.2` is the file `4.2.json`); a number
+    /// written with a decimal comma, `4,1`, is read as exercise `4.1` when there is one (a
+    /// graded row's reason says so).
     pub exercise: String,
     /// The `answer` column, as written.
     pub answer: String,
@@ -789,6 +791,9 @@ pub fn grade_bytes(bytes: &[u8], options: &Options) -> Report {
                 let mut cells = content.split(|&b| b == d).map(unquote);
                 row.student = echo(cells.next().unwrap_or_default());
                 row.exercise = echo(cells.next().unwrap_or_default());
+                if let Some(point) = comma_exercise(&row.exercise, &mut cache) {
+                    row.exercise = point;
+                }
                 if !row.exercise.is_empty() && cache.get(&row.exercise).is_ok() {
                     row.max_points = Some(options.rubric.points_of(&row.exercise));
                 }
@@ -1021,6 +1026,11 @@ fn grade_row(
     if let Some(i) = empty {
         return invalid(row, format!("the {} field is empty", COLUMNS[i]));
     }
+    let note = comma_exercise(&row.exercise, cache).map(|point| {
+        let note = comma_note(&row.exercise, &point);
+        row.exercise = point;
+        note
+    });
     let exercise = match cache.get(&row.exercise) {
         Ok(e) => e,
         Err(e) => return invalid(row, e.clone()),
@@ -1093,6 +1103,12 @@ fn grade_row(
     {
         row.reason = Some(messages::unclamped_note(Lang::En).to_owned());
     }
+    if let Some(n) = note {
+        row.reason = Some(match row.reason.take() {
+            Some(r) => format!("{n}; {r}"),
+            None => n,
+        });
+    }
     let max = options.rubric.points_of(&row.exercise);
     row.points = match v.kind {
         VerdictKind::Right => max,
@@ -1114,6 +1130,27 @@ fn grade_row(
         row.feedback.push_str(&steps::feedback(&j, options.lang));
         row.steps = Some(steps::steps_json(&j));
     }
+}
+
+/// The exercise `written` names when it is a number written with a decimal comma (`4,1`, how
+/// a Brazilian spreadsheet writes the number cell 4.1 in its `;` CSV): `4.1`, when there is an
+/// exercise 4.1. No exercise may be named with a comma (its file name would be refused), so the
+/// reading is never ambiguous; `None` when `written` has no comma or `4.1` is not an exercise.
+fn comma_exercise(written: &str, cache: &mut Cache) -> Option<String> {
+    if !written.contains(',') || cache.get(written).is_ok() {
+        return None;
+    }
+    let point = written.replace(',', ".");
+    cache.get(&point).is_ok().then_some(point)
+}
+
+/// The reason's note for an exercise read with a decimal comma: what was written and how it was
+/// read (English, as every `reason`).
+fn comma_note(written: &str, point: &str) -> String {
+    format!(
+        "the exercise is written \"{written}\", read as {point} (a decimal comma, as a \
+         spreadsheet writes the number {point}; write {point} with a point to be sure)"
+    )
 }
 
 /// Three whole numbers 0–255, one of them above 1: 8-bit values rather than a 0–1 colour.
