@@ -522,3 +522,14 @@ fn an_exercise_written_with_a_decimal_comma_is_that_exercise() {
     );
     assert_eq!(r.students[0].exercises["4.1"], Some(1.0));
 }
+
+#[test]
+fn an_answer_that_is_not_a_number_is_echoed_as_typed() {
+    // QA finding 13: the reason names `0,2x` as the student typed it, not the converted `0.2x`.
+    let r = grade("aluno;exercício;resposta\nfabio;4.2;0,2x 0 0\n".as_bytes());
+    let reason = r.rows[0].reason.as_deref().unwrap();
+    assert!(
+        reason.contains("\"0,2x\" in \"0,2x 0 0\" is not a number"),
+        "{reason}"
+    );
+}
