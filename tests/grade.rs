@@ -527,3 +527,79 @@ fn a_header_of_column_names_without_the_answer_is_a_row_saying_so() {
         "{r}"
     );
 }
+
+#[test]
+fn an_output_that_cannot_be_written_stops_before_anything_is_and_says_no_graded_line() {
+    // QA finding 8: the folders of -o, --summary and --by-student are checked before anything
+    // is written, so a bad --summary leaves no report behind; and after a write that fails,
+    // no "graded N rows" line reads as success.
+    let dir = exercises();
+    let work = tempfile::tempdir().unwrap();
+    let input = work.path().join("in.csv");
+    std::fs::write(&input, submissions()).unwrap();
+    let run = |args: &[&str]| {
+        let out = phong()
+            .current_dir(work.path())
+            .arg("grade")
+            .arg(&input)
+            .arg("--exercises")
+            .arg(dir.path())
+            .args(args)
+            .output()
+            .unwrap();
+        (
+            out.status.code(),
+            String::from_utf8_lossy(&out.stderr).into_owned(),
+        )
+    };
+    let (code, err) = run(&["-o", "nodir/r.csv"]);
+    assert_eq!(code, Some(2), "{err}");
+    assert!(
+        err.contains("--output: the folder nodir does not exist"),
+        "{err}"
+    );
+    assert!(
+        err.contains("Fix: create the folder (mkdir -p nodir)"),
+        "{err}"
+    );
+    assert!(!err.contains("graded"), "{err}");
+    let (code, err) = run(&["-o", "r.csv", "--summary", "nodir/s.csv"]);
+    assert_eq!(code, Some(2), "{err}");
+    assert!(
+        err.contains("--summary: the folder nodir does not exist"),
+        "{err}"
+    );
+    assert!(
+        !work.path().join("r.csv").exists(),
+        "the report was written"
+    );
+    let (code, err) = run(&[
+        "--lang",
+        "pt",
+        "-o",
+        "r.csv",
+        "--by-student",
+        "in.csv/t.csv",
+    ]);
+    assert_eq!(code, Some(2), "{err}");
+    assert!(
+        err.contains("--by-student: ") && err.contains("in.csv não é uma pasta"),
+        "{err}"
+    );
+    assert!(!err.contains("avaliadas"), "{err}");
+    assert!(
+        !work.path().join("r.csv").exists(),
+        "the report was written"
+    );
+    // A write that fails all the same (the report's path is a folder): the error, then neither
+    // the summary nor the graded line.
+    std::fs::create_dir(work.path().join("taken")).unwrap();
+    let (code, err) = run(&["-o", "taken", "--summary", "s.csv"]);
+    assert_eq!(code, Some(2), "{err}");
+    assert!(err.contains("cannot write taken"), "{err}");
+    assert!(!err.contains("graded"), "{err}");
+    assert!(
+        !work.path().join("s.csv").exists(),
+        "the summary was written"
+    );
+}

@@ -482,3 +482,54 @@ fn every_line_that_holds_data_is_one_row_exactly_once_in_order() {
         .run(&file(), |f| check(&f))
         .unwrap_or_else(|e| panic!("{e}"));
 }
+
+#[test]
+fn an_exercise_written_with_a_decimal_comma_is_that_exercise() {
+    // QA finding 5: a Brazilian spreadsheet exports the number cell 4.1 as `4,1` in its `;`
+    // CSV. No exercise file may be named with a comma, so `4,1` can only mean 4.1: it is graded
+    // as 4.1 (right: 4.1's colour is (0.5, 0.7, 0.3)), under 4.1 in the summary and the totals,
+    // and the reason says what was written and how it was read. `4,9` has no 4.9 to mean: it
+    // stays an unknown exercise.
+    let csv = "aluno;exercício;resposta\nbia;4,1;0,5 0,7 0,3\nbia;4,9;0 0 0\ncaio;4,1;\"0,5 0,7\n";
+    let r = grade(csv.as_bytes());
+    assert_eq!(
+        summary(&r),
+        [
+            row(2, "bia", "right"),
+            row(3, "bia", "invalid"),
+            row(4, "caio", "invalid")
+        ]
+    );
+    let bia = &r.rows[0];
+    assert_eq!(bia.exercise, "4.1");
+    assert_eq!(bia.points, 1.0);
+    let reason = bia.reason.as_deref().unwrap();
+    assert!(
+        reason.contains("\"4,1\"") && reason.contains("read as 4.1"),
+        "{reason}"
+    );
+    assert!(r.rows[1]
+        .reason
+        .as_deref()
+        .unwrap()
+        .starts_with("unknown exercise"));
+    // A row that cannot be read as CSV stands under 4.1 too.
+    assert_eq!(r.rows[2].exercise, "4.1");
+    assert_eq!(r.summary.len(), 2, "{:?}", r.summary);
+    assert_eq!(
+        (r.summary[0].exercise.as_str(), r.summary[0].rows),
+        ("4.1", 2)
+    );
+    assert_eq!(r.students[0].exercises["4.1"], Some(1.0));
+}
+
+#[test]
+fn an_answer_that_is_not_a_number_is_echoed_as_typed() {
+    // QA finding 13: the reason names `0,2x` as the student typed it, not the converted `0.2x`.
+    let r = grade("aluno;exercício;resposta\nfabio;4.2;0,2x 0 0\n".as_bytes());
+    let reason = r.rows[0].reason.as_deref().unwrap();
+    assert!(
+        reason.contains("\"0,2x\" in \"0,2x 0 0\" is not a number"),
+        "{reason}"
+    );
+}

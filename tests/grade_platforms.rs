@@ -345,7 +345,10 @@ fn junit_validates_against_the_xsd() {
     assert_eq!(out.status.code(), Some(0));
     let xml = String::from_utf8(out.stdout).unwrap();
     assert_eq!(xml.matches("<testsuite ").count(), 31);
-    assert_eq!(xml.matches("<testcase ").count(), 31 * 3);
+    // A testcase per exercise per student, and one more for aluno07's first 4.1, which her
+    // second replaces (skipped: it does not count).
+    assert_eq!(xml.matches("<testcase ").count(), 31 * 3 + 1);
+    assert_eq!(xml.matches("<skipped ").count(), 1);
     // aluno31's 4.2 cannot be read: an error, its text escaped.
     assert!(xml.contains("<error message=\"invalid\""), "{xml}");
     assert!(xml.contains("half &amp; &lt;half&gt;"), "{xml}");
@@ -496,4 +499,202 @@ fn moodle_responses_export_is_read() {
         assert_eq!(report["students"][0]["points"], 6.0);
         assert_eq!(report["students"][1]["points"], 1.0);
     }
+}
+
+/// A class whose rows are not all answers the exercises judge (QA finding 3), `;` and decimal
+/// commas, graded with --points 4.1=1,4.2=2,4.3=3 (so the class's exercises are 4.1, 4.2, 4.3):
+/// line 2 is ana's 4.1 that her line 3 replaces (`--duplicates last`); line 4 names an exercise
+/// there is no file for; line 5 opens a quote it does not close (carla's 4.1, unreadable); line
+/// 6 has two fields (carla's 4.2); line 7 has no student.
+const ODD_ROWS: &str = "aluno;exercício;resposta\n\
+                        ana;4.1;0 0 0\n\
+                        ana;4.1;0,5 0,7 0,3\n\
+                        carla;4.9;0 0 0\n\
+                        carla;4.1;\"0,5 0,7\n\
+                        carla;4.2\n\
+                        ;4.1;0,5 0,7 0,3\n";
+
+/// The `<testsuite>` element named `name` in `xml`, whole.
+fn suite<'a>(xml: &'a str, name: &str) -> &'a str {
+    let start = xml
+        .find(&format!("<testsuite name=\"{name}\""))
+        .unwrap_or_else(|| panic!("no testsuite {name}\n{xml}"));
+    let end = start + xml[start..].find("</testsuite>").unwrap();
+    &xml[start..end]
+}
+
+#[test]
+fn junit_keeps_every_row_under_its_student() {
+    let input = write_temp(ODD_ROWS);
+    let out = grade(input.path(), &["--format", "junit", "--lang", "pt"]);
+    assert_eq!(out.status.code(), Some(0));
+    let xml = String::from_utf8(out.stdout).unwrap();
+    assert_junit_valid(&xml);
+    // Six rows: ana's two (the right one counts for 4.1, the replaced one is skipped), carla's
+    // three (4.1 and 4.2 count, unreadable; 4.9 is a testcase of its own), and the row without
+    // a student in a suite of its own; plus the class's exercises nobody answered.
+    let ana = suite(&xml, "ana");
+    assert_eq!(ana.matches("<testcase ").count(), 4, "{ana}");
+    assert!(
+        ana.contains("name=\"4.1 (linha 2)\" time=\"0\"><skipped "),
+        "{ana}"
+    );
+    assert!(ana.contains("skipped=\"1\""), "{ana}");
+    let carla = suite(&xml, "carla");
+    assert_eq!(carla.matches("<testcase ").count(), 4, "{carla}");
+    assert!(carla.contains("errors=\"3\""), "{carla}");
+    assert!(
+        carla.contains("name=\"4.1\" time=\"0\"><error "),
+        "her 4.1 is the unreadable row, not unanswered: {carla}"
+    );
+    assert!(carla.contains("name=\"4.2\" time=\"0\"><error "), "{carla}");
+    assert!(
+        carla.contains("name=\"4.9 (linha 4)\" time=\"0\"><error "),
+        "{carla}"
+    );
+    // Only 4.3 is unanswered.
+    assert_eq!(carla.matches("Sem resposta.").count(), 1, "{carla}");
+    let nobody = suite(&xml, "(sem aluno)");
+    assert_eq!(nobody.matches("<testcase ").count(), 1, "{nobody}");
+    assert!(nobody.contains("name=\"4.1 (linha 7)\""), "{nobody}");
+    assert!(
+        nobody.contains("Não conta: a linha não tem aluno."),
+        "{nobody}"
+    );
+    assert!(
+        xml.contains("<testsuites name=\"phong grade\" tests=\"9\""),
+        "{xml}"
+    );
+}
+
+#[test]
+fn gradescope_keeps_every_row_under_its_student() {
+    let schema = gradescope_schema();
+    let input = write_temp(ODD_ROWS);
+    let out = grade(input.path(), &["--format", "gradescope", "--lang", "pt"]);
+    assert_eq!(out.status.code(), Some(0));
+    let all: Value = serde_json::from_slice(&out.stdout).unwrap();
+    let keys: Vec<&String> = all.as_object().unwrap().keys().collect();
+    assert_eq!(keys, ["(sem aluno)", "ana", "carla"]);
+    for doc in all.as_object().unwrap().values() {
+        assert_valid(&schema, doc);
+    }
+    let names = |s: &str| -> Vec<String> {
+        all[s]["tests"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|t| t["name"].as_str().unwrap().to_owned())
+            .collect()
+    };
+    assert_eq!(
+        names("carla"),
+        [
+            "Exercício 4.1",
+            "Exercício 4.2",
+            "Exercício 4.3",
+            "Exercício 4.9 (linha 4)"
+        ]
+    );
+    let carla = &all["carla"]["tests"];
+    assert_ne!(carla[0]["output"], "Sem resposta.", "{carla:#}");
+    assert_eq!(carla[0]["max_score"], 1.0);
+    assert_eq!(carla[3]["score"], 0.0);
+    assert_eq!(carla[3]["max_score"], 0.0);
+    assert_eq!(carla[3]["status"], "failed");
+    assert_eq!(all["carla"]["score"], 0.0);
+    assert_eq!(names("ana")[3], "Exercício 4.1 (linha 2)");
+    assert_eq!(all["ana"]["score"], 1.0);
+    let nobody = &all["(sem aluno)"]["tests"];
+    assert_eq!(names("(sem aluno)"), ["Exercício 4.1 (linha 7)"]);
+    assert!(nobody[0]["output"]
+        .as_str()
+        .unwrap()
+        .starts_with("Não conta: a linha não tem aluno."));
+    // One student's file: the row without a student is among her tests, worth nothing.
+    let one = write_temp("student,exercise,answer\nana,4.1,0.5 0.7 0.3\n,4.2,0 0 0\n");
+    let out = grade(one.path(), &["--format", "gradescope"]);
+    let doc: Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert_valid(&schema, &doc);
+    assert_eq!(doc["score"], 1.0);
+    assert_eq!(doc["tests"].as_array().unwrap().len(), 4);
+    assert_eq!(doc["tests"][3]["name"], "Exercise 4.2 (line 3)");
+    // A file per submission: the rows without a student have theirs.
+    let dir = tempfile::tempdir().unwrap();
+    let to = format!("{}/", dir.path().display());
+    let out = grade(
+        input.path(),
+        &["--format", "gradescope", "--lang", "pt", "-o", &to],
+    );
+    assert_eq!(out.status.code(), Some(0));
+    let mut files: Vec<String> = std::fs::read_dir(dir.path())
+        .unwrap()
+        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+        .collect();
+    files.sort();
+    assert_eq!(files, ["_sem_aluno_.json", "ana.json", "carla.json"]);
+}
+
+#[test]
+fn exercises_are_in_natural_order_in_totals_summary_and_exports() {
+    // QA finding 11: exercises 4.2, 4.9 and 4.10 are listed 4.2, 4.9, 4.10 (numbers compared as
+    // numbers, as the README orders the Moodle slots), not in text order 4.10, 4.2, 4.9.
+    let dir = tempfile::tempdir().unwrap();
+    let src = Path::new(env!("CARGO_MANIFEST_DIR")).join("exercises/4.2.json");
+    for name in ["4.2", "4.9", "4.10"] {
+        std::fs::copy(&src, dir.path().join(format!("{name}.json"))).unwrap();
+    }
+    let input =
+        write_temp("aluno;exercício;resposta\nana;4.10;0 0 0\nana;4.2;0 0 0\nana;4.9;0 0 0\n");
+    let run = |extra: &[&str]| {
+        let out = phong()
+            .arg("grade")
+            .arg(input.path())
+            .arg("--exercises")
+            .arg(dir.path())
+            .args(extra)
+            .output()
+            .unwrap();
+        assert_eq!(
+            out.status.code(),
+            Some(0),
+            "{}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        String::from_utf8(out.stdout).unwrap()
+    };
+    let out = tempfile::tempdir().unwrap();
+    let totals = out.path().join("totals.csv");
+    let summary = out.path().join("summary.csv");
+    run(&[
+        "-o",
+        out.path().join("r.csv").to_str().unwrap(),
+        "--by-student",
+        totals.to_str().unwrap(),
+        "--summary",
+        summary.to_str().unwrap(),
+    ]);
+    let totals = std::fs::read_to_string(totals).unwrap();
+    assert_eq!(
+        totals, "student,points,max_points,4.2,4.9,4.10\nana,3,3,1,1,1\n",
+        "{totals}"
+    );
+    let summary = std::fs::read_to_string(summary).unwrap();
+    let first: Vec<&str> = summary
+        .lines()
+        .skip(1)
+        .map(|l| l.split(',').next().unwrap())
+        .collect();
+    assert_eq!(first, ["4.2", "4.9", "4.10"], "{summary}");
+    let doc: Value = serde_json::from_str(&run(&["--format", "gradescope"])).unwrap();
+    let numbers: Vec<&str> = doc["tests"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|t| t["number"].as_str().unwrap())
+        .collect();
+    assert_eq!(numbers, ["4.2", "4.9", "4.10"]);
+    let xml = run(&["--format", "junit"]);
+    let at = |name: &str| xml.find(&format!("name=\"{name}\"")).unwrap();
+    assert!(at("4.2") < at("4.9") && at("4.9") < at("4.10"), "{xml}");
 }

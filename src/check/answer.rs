@@ -162,8 +162,9 @@ pub fn parse(text: &str, scale: Scale) -> Result<Answer, BadAnswer> {
     })?;
     let mut values = [0.0; 3];
     for (v, tok) in values.iter_mut().zip(&tokens) {
-        *v = number(tok).ok_or_else(|| {
-            let why = not_a_number_hint(tok).unwrap_or("is not a number");
+        *v = token_number(tok).ok_or_else(|| {
+            // The hint reads the number as converted; the message echoes it as typed (`0,2x`).
+            let why = not_a_number_hint(&tok.replace(',', ".")).unwrap_or("is not a number");
             bad(format!(
                 "\"{}\" in \"{shown}\" {why}: {FORMS}",
                 shorten(tok, 40)
@@ -290,7 +291,7 @@ pub(crate) fn three(text: &str) -> Option<[f64; 3]> {
     let tokens = split(strip_brackets(text.trim()))?;
     let mut values = [0.0; 3];
     for (v, tok) in values.iter_mut().zip(&tokens) {
-        *v = number(tok)?;
+        *v = token_number(tok)?;
     }
     Some(values)
 }
@@ -306,13 +307,14 @@ fn strip_brackets(t: &str) -> &str {
     t
 }
 
-/// Splits into exactly three number tokens. Semicolons, when present, are the only separators
+/// Splits into exactly three number tokens, as typed (a decimal comma kept, so that a message
+/// echoes `0,2x`; [`token_number`] reads it). Semicolons, when present, are the only separators
 /// (and a comma is then a decimal comma). Otherwise spaces and commas separate; if that does not
 /// give three tokens, spaces alone with decimal commas ("0,52 0,03 0").
 fn split(s: &str) -> Option<Vec<String>> {
     let three = |v: Vec<String>| (v.len() == 3).then_some(v);
     if s.contains(';') {
-        return three(s.split(';').map(|x| x.trim().replace(',', ".")).collect());
+        return three(s.split(';').map(|x| x.trim().to_owned()).collect());
     }
     let by_both: Vec<String> = s
         .split(|c: char| c == ',' || c.is_whitespace())
@@ -324,9 +326,15 @@ fn split(s: &str) -> Option<Vec<String>> {
     }
     three(
         s.split_whitespace()
-            .map(|x| x.trim_end_matches(',').replace(',', "."))
+            .map(|x| x.trim_end_matches(',').to_owned())
             .collect(),
     )
+}
+
+/// A token of an answer as [`split`] gives it: its decimal comma read as a point (`0,52` is
+/// 0.52), then a number as [`number`] reads it.
+fn token_number(tok: &str) -> Option<f64> {
+    number(&tok.replace(',', "."))
 }
 
 /// `text` as it is echoed in a message: whole up to `max` characters, else its first ones and
@@ -422,6 +430,31 @@ mod tests {
         }
         assert_eq!(unit("3/5 0 4/5"), [0.6, 0.0, 0.8]);
         assert_eq!(unit("-0.299 -0.36 -0.25"), [-0.299, -0.36, -0.25]);
+    }
+
+    #[test]
+    fn a_number_that_is_not_one_is_echoed_as_typed() {
+        // QA finding 13: the student wrote `0,2x`; the message names `0,2x`, not the `0.2x` the
+        // decimal comma was converted to, in each way of separating the numbers.
+        for (text, token) in [
+            ("0,2x 0 0", "0,2x"),
+            ("0,2x; 0; 0", "0,2x"),
+            ("0 1,5e400 0", "1,5e400"),
+        ] {
+            let e = parse(text, Scale::Unit).unwrap_err().message;
+            assert!(
+                e.starts_with(&format!("\"{token}\" in \"{text}\" ")),
+                "{text}: {e}"
+            );
+        }
+        // The hint still reads the converted number: 1,5e400 is out of range.
+        let e = parse("0 1,5e400 0", Scale::Unit).unwrap_err().message;
+        assert!(e.contains("is out of range"), "{e}");
+        // And the numbers read are those of the decimal commas.
+        assert_eq!(
+            parse("0,52 0,03 0", Scale::Unit).unwrap().values,
+            Some([0.52, 0.03, 0.0])
+        );
     }
 
     #[test]

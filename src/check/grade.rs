@@ -85,13 +85,21 @@ pub fn folder_exercises(dir: &Path) -> Vec<String> {
                 .collect()
         })
         .unwrap_or_default();
+    names.sort_by(|a, b| natural_order(a, b));
+    names
+}
+
+/// Exercises in natural order: their names compared part by part at each `.`, a part that is
+/// a number as a number (4.2 before 4.10, 4.9 before 4.10), one that is not after the numbers,
+/// as text. Used wherever a list of exercises is shown (the totals' columns, the summary, the
+/// platforms' tests), as the Moodle slots are numbered.
+pub(crate) fn natural_order(a: &str, b: &str) -> std::cmp::Ordering {
     let parts = |s: &str| -> Vec<(u64, String)> {
         s.split('.')
             .map(|p| (p.parse().unwrap_or(u64::MAX), p.to_owned()))
             .collect()
     };
-    names.sort_by_key(|n| parts(n));
-    names
+    parts(a).cmp(&parts(b))
 }
 
 impl Default for Options {
@@ -124,7 +132,9 @@ pub struct RowOut {
     pub line: u64,
     /// The `student` column, as written (control characters and NUL shown as U+FFFD).
     pub student: String,
-    /// The `exercise` column, as written (exercise `4.2` is the file `4.2.json`).
+    /// The `exercise` column, as written (exercise `4.2` is the file `4.2.json`); a number
+    /// written with a decimal comma, `4,1`, is read as exercise `4.1` when there is one (a
+    /// graded row's reason says so).
     pub exercise: String,
     /// The `answer` column, as written.
     pub answer: String,
@@ -219,7 +229,7 @@ pub struct Report {
     pub format_version: u32,
     /// Each data row of the CSV, graded, in file order.
     pub rows: Vec<RowOut>,
-    /// One entry per exercise, in name order.
+    /// One entry per exercise, in natural order (4.2 before 4.10).
     pub summary: Vec<SummaryOut>,
     /// The exercises graded, in name order, with their points.
     pub exercises: BTreeMap<String, f64>,
@@ -679,6 +689,16 @@ fn echo(f: &[u8]) -> String {
     visible(String::from_utf8_lossy(f).trim())
 }
 
+/// A field of a line that cannot be read as CSV, as a reader would take it: spaces around it
+/// dropped, and the quotes around it when it has both (`"carla"` is `carla`).
+fn unquote(field: &[u8]) -> &[u8] {
+    let t = field.trim_ascii();
+    match t {
+        [b'"', inner @ .., b'"'] => inner,
+        _ => t,
+    }
+}
+
 /// `text` with NUL and other control characters (but tabs) shown as U+FFFD.
 fn visible(text: &str) -> String {
     text.chars()
@@ -765,7 +785,18 @@ pub fn grade_bytes(bytes: &[u8], options: &Options) -> Report {
         match parsed {
             Ok(f) => grade_row(&mut row, &f, &layout, d, options, &mut cache),
             Err(e) => {
-                row.student = echo(content.split(|&b| b == d).next().unwrap_or_default());
+                // The student and the exercise as the line starts, so that the row stands under
+                // its student's exercise (in the totals and the platforms' reports) rather than
+                // leaving it unanswered.
+                let mut cells = content.split(|&b| b == d).map(unquote);
+                row.student = echo(cells.next().unwrap_or_default());
+                row.exercise = echo(cells.next().unwrap_or_default());
+                if let Some(point) = comma_exercise(&row.exercise, &mut cache) {
+                    row.exercise = point;
+                }
+                if !row.exercise.is_empty() && cache.get(&row.exercise).is_ok() {
+                    row.max_points = Some(options.rubric.points_of(&row.exercise));
+                }
                 let reason = format!("the row cannot be read as CSV: {e}");
                 mark_invalid(&mut row, reason, options.lang);
             }
@@ -995,6 +1026,11 @@ fn grade_row(
     if let Some(i) = empty {
         return invalid(row, format!("the {} field is empty", COLUMNS[i]));
     }
+    let note = comma_exercise(&row.exercise, cache).map(|point| {
+        let note = comma_note(&row.exercise, &point);
+        row.exercise = point;
+        note
+    });
     let exercise = match cache.get(&row.exercise) {
         Ok(e) => e,
         Err(e) => return invalid(row, e.clone()),
@@ -1067,6 +1103,12 @@ fn grade_row(
     {
         row.reason = Some(messages::unclamped_note(Lang::En).to_owned());
     }
+    if let Some(n) = note {
+        row.reason = Some(match row.reason.take() {
+            Some(r) => format!("{n}; {r}"),
+            None => n,
+        });
+    }
     let max = options.rubric.points_of(&row.exercise);
     row.points = match v.kind {
         VerdictKind::Right => max,
@@ -1090,6 +1132,27 @@ fn grade_row(
     }
 }
 
+/// The exercise `written` names when it is a number written with a decimal comma (`4,1`, how
+/// a Brazilian spreadsheet writes the number cell 4.1 in its `;` CSV): `4.1`, when there is an
+/// exercise 4.1. No exercise may be named with a comma (its file name would be refused), so the
+/// reading is never ambiguous; `None` when `written` has no comma or `4.1` is not an exercise.
+fn comma_exercise(written: &str, cache: &mut Cache) -> Option<String> {
+    if !written.contains(',') || cache.get(written).is_ok() {
+        return None;
+    }
+    let point = written.replace(',', ".");
+    cache.get(&point).is_ok().then_some(point)
+}
+
+/// The reason's note for an exercise read with a decimal comma: what was written and how it was
+/// read (English, as every `reason`).
+fn comma_note(written: &str, point: &str) -> String {
+    format!(
+        "the exercise is written \"{written}\", read as {point} (a decimal comma, as a \
+         spreadsheet writes the number {point}; write {point} with a point to be sure)"
+    )
+}
+
 /// Three whole numbers 0–255, one of them above 1: 8-bit values rather than a 0–1 colour.
 fn looks_8bit(v: &[f64; 3]) -> bool {
     v.iter()
@@ -1103,6 +1166,8 @@ struct Tally<'a> {
     slips: BTreeMap<&'a [Slip], usize>,
 }
 
+/// One summary per exercise named by the rows, in natural order (4.2 before 4.10): its rows by
+/// verdict and its wrong rows' diagnoses, most common first.
 fn summarise(rows: &[RowOut]) -> Vec<SummaryOut> {
     let mut by: BTreeMap<&str, Tally> = BTreeMap::new();
     for r in rows {
@@ -1125,7 +1190,8 @@ fn summarise(rows: &[RowOut]) -> Vec<SummaryOut> {
             *slips.entry(d.as_slice()).or_default() += 1;
         }
     }
-    by.into_values()
+    let mut out = by
+        .into_values()
         .map(|Tally { mut summary, slips }| {
             let mut counts: Vec<SlipCount> = slips
                 .into_iter()
@@ -1141,7 +1207,9 @@ fn summarise(rows: &[RowOut]) -> Vec<SummaryOut> {
             summary.slips = counts;
             summary
         })
-        .collect()
+        .collect::<Vec<_>>();
+    out.sort_by(|a, b| natural_order(&a.exercise, &b.exercise));
+    out
 }
 
 fn codes(slips: &[Slip]) -> String {
@@ -1311,13 +1379,15 @@ pub(crate) fn summary_csv(report: &Report) -> Vec<u8> {
     w.into_inner().expect("writing to memory")
 }
 
-/// Each student's total as CSV: `student, points, max_points`, then one column per exercise
-/// (the points of the answer that counts; empty: no answer), students in the order they first
-/// appear.
+/// Each student's total as CSV: `student, points, max_points`, then one column per exercise in
+/// natural order, 4.2 before 4.10 (the points of the answer that counts; empty: no answer),
+/// students in the order they first appear.
 pub fn students_csv(report: &Report) -> Vec<u8> {
     let mut w = csv::Writer::from_writer(Vec::new());
     let mut header = vec!["student".to_owned(), "points".into(), "max_points".into()];
-    header.extend(report.exercises.keys().map(|k| safe_cell(k)));
+    let mut exercises: Vec<&String> = report.exercises.keys().collect();
+    exercises.sort_by(|a, b| natural_order(a, b));
+    header.extend(exercises.iter().map(|k| safe_cell(k)));
     w.write_record(&header).expect("writing to memory");
     for s in &report.students {
         let mut line = vec![
@@ -1325,11 +1395,13 @@ pub fn students_csv(report: &Report) -> Vec<u8> {
             number(s.points),
             number(s.max_points),
         ];
-        line.extend(
+        line.extend(exercises.iter().map(|k| {
             s.exercises
-                .values()
-                .map(|p| p.map_or(String::new(), number)),
-        );
+                .get(*k)
+                .copied()
+                .flatten()
+                .map_or(String::new(), number)
+        }));
         w.write_record(&line).expect("writing to memory");
     }
     w.into_inner().expect("writing to memory")

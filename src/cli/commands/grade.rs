@@ -35,6 +35,17 @@ pub(crate) fn run(args: &GradeArgs) -> Result<Exit, CliError> {
             ("--by-student", args.by_student.as_deref()),
         ],
     )?;
+    for (flag, path) in [
+        ("--output", args.output.as_deref()),
+        ("--summary", args.summary.as_deref()),
+        ("--by-student", args.by_student.as_deref()),
+    ] {
+        // A Gradescope folder (`-o DIR/`) is created; any other output's folder must exist.
+        let folder_output = flag == "--output" && args.format == GradeFormat::Gradescope;
+        if let Some(path) = path.filter(|_| !folder_output) {
+            folder_exists(flag, path, args.lang)?;
+        }
+    }
     let mut rubric = match &args.rubric {
         None => check::rubric::Rubric::default(),
         Some(path) => {
@@ -76,8 +87,9 @@ pub(crate) fn run(args: &GradeArgs) -> Result<Exit, CliError> {
         questions: args.questions.clone(),
     };
     let report = check::grade::grade_file(&args.submissions, &options)?;
-    // The report first, then the summary and the totals, then the line on standard error: a
-    // message that cannot be shown never costs the report.
+    // The report first, then the summary and the totals, then the line on standard error. Their
+    // folders were checked above; a write that fails all the same (a full disk) stops there, and
+    // the `graded N rows` line, which reads as success, is not written.
     let written = match args.format {
         GradeFormat::Csv => {
             output::emit_bytes(args.output.as_deref(), &check::grade::rows_csv(&report))
@@ -93,19 +105,18 @@ pub(crate) fn run(args: &GradeArgs) -> Result<Exit, CliError> {
         GradeFormat::Gradescope => gradescope(&report, args),
     };
     let lang = args.lang;
-    let mut exit = error::carry_on_in(written, lang);
-    // The summary and the totals are written even when the report could not be.
-    if let Some(summary) = &args.summary {
-        exit = exit.max(error::carry_on_in(
-            output::emit_bytes(Some(summary), &check::grade::summary_csv(&report)),
-            lang,
-        ));
-    }
-    if let Some(by) = &args.by_student {
-        exit = exit.max(error::carry_on_in(
-            output::emit_bytes(Some(by), &check::grade::students_csv(&report)),
-            lang,
-        ));
+    let written = written
+        .and_then(|()| match &args.summary {
+            Some(summary) => output::emit_bytes(Some(summary), &check::grade::summary_csv(&report)),
+            None => Ok(()),
+        })
+        .and_then(|()| match &args.by_student {
+            Some(by) => output::emit_bytes(Some(by), &check::grade::students_csv(&report)),
+            None => Ok(()),
+        });
+    let exit = error::carry_on_in(written, lang);
+    if exit != Exit::Success {
+        return Ok(exit);
     }
     let total =
         |f: fn(&check::grade::SummaryOut) -> usize| report.summary.iter().map(f).sum::<usize>();
@@ -122,7 +133,8 @@ pub(crate) fn run(args: &GradeArgs) -> Result<Exit, CliError> {
 
 /// Gradescope's results.json: to `-o FILE` or standard output (one student: the file itself;
 /// several: an object keyed by student), or, with `-o DIR/` (a folder, or a path ending in
-/// `/`), one `DIR/STUDENT.json` per student.
+/// `/`), one `DIR/STUDENT.json` per student (and `DIR/_no_student_.json`, `_sem_aluno_.json`
+/// in Portuguese, for the rows without a student).
 fn gradescope(report: &check::grade::Report, args: &GradeArgs) -> Result<(), CliError> {
     let to_folder = args.output.as_deref().filter(|o| {
         o.is_dir()
@@ -138,13 +150,53 @@ fn gradescope(report: &check::grade::Report, args: &GradeArgs) -> Result<(), Cli
         path: dir.to_owned(),
         source,
     })?;
-    let names = check::export::file_names(report);
-    for (student, name) in report.students.iter().zip(names) {
-        let doc = check::export::gradescope::results(report, student, args.lang);
+    for (name, doc) in check::export::gradescope::files(report, args.lang) {
         output::emit_bytes(
             Some(&dir.join(format!("{name}.json"))),
             output::json_pretty(&doc).as_bytes(),
         )?;
     }
     Ok(())
+}
+
+/// Refuses, before anything is written, an output `path` (of `flag`) whose folder does not
+/// exist or is not a folder, so that a bad `--summary` does not leave the report written with
+/// an error; the message names the folder and the fix, in `lang`. `-` (standard output) and a
+/// path in the current folder pass.
+fn folder_exists(flag: &str, path: &Path, lang: crate::report::lang::Lang) -> Result<(), CliError> {
+    use crate::report::lang::Lang;
+    if output::is_dash(path) {
+        return Ok(());
+    }
+    let Some(folder) = path.parent().filter(|f| !f.as_os_str().is_empty()) else {
+        return Ok(());
+    };
+    if folder.is_dir() {
+        return Ok(());
+    }
+    let (f, p) = (folder.display(), path.display());
+    let exists = folder.exists();
+    let (message, fix) = match (lang, exists) {
+        (Lang::En, false) => (
+            format!("the folder {f} does not exist, so {p} cannot be written; nothing was written"),
+            format!("create the folder (mkdir -p {f}) or give a path in a folder that exists"),
+        ),
+        (Lang::En, true) => (
+            format!("{f} is not a folder, so {p} cannot be written; nothing was written"),
+            "give a path in a folder that exists".to_owned(),
+        ),
+        (Lang::Pt, false) => (
+            format!("a pasta {f} não existe, então {p} não pode ser escrito; nada foi escrito"),
+            format!("crie a pasta (mkdir -p {f}) ou dê um caminho numa pasta que existe"),
+        ),
+        (Lang::Pt, true) => (
+            format!("{f} não é uma pasta, então {p} não pode ser escrito; nada foi escrito"),
+            "dê um caminho numa pasta que existe".to_owned(),
+        ),
+    };
+    Err(CliError::Usage {
+        flag: flag.to_owned(),
+        message,
+        fix,
+    })
 }
