@@ -597,3 +597,28 @@ fn the_schema_and_the_validator_agree_at_the_bounds_of_the_image_and_the_render(
         assert_eq!(ok, valid, "phong, {object}.{field} = {value}");
     }
 }
+
+#[test]
+fn a_grade_output_may_not_replace_an_exercise_it_grades_against() {
+    // `phong grade … --exercises ex -o ex/4.1.json` would replace the exercise with the report.
+    let dir = TempDir::new().unwrap();
+    let ex = dir.path().join("ex");
+    std::fs::create_dir(&ex).unwrap();
+    let original = std::fs::read_to_string(exercise("4.1.json")).unwrap();
+    std::fs::write(ex.join("4.1.json"), &original).unwrap();
+    let subs = write(&dir, "subs.csv", "ana,4.1,0.5 0.7 0.3\n");
+    refused(
+        phong()
+            .arg("grade")
+            .arg(&subs)
+            .arg("--exercises")
+            .arg(&ex)
+            .arg("-o")
+            .arg(ex.join("4.1.json")),
+        &["--output", "is the input"],
+    );
+    assert_eq!(
+        std::fs::read_to_string(ex.join("4.1.json")).unwrap(),
+        original
+    );
+}

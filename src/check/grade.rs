@@ -68,7 +68,7 @@ pub enum Input {
     Auto,
     /// The plain CSV: student, exercise, answer.
     Csv,
-    /// Moodle's quiz Responses report downloaded as CSV ([`super::moodle`]).
+    /// Moodle's quiz Responses report downloaded as CSV (README, "Grading").
     Moodle,
 }
 

@@ -27,6 +27,15 @@ pub(crate) fn run(args: &GradeArgs) -> Result<Exit, CliError> {
     if let Some(r) = &args.rubric {
         inputs.push(r);
     }
+    // The exercise files are inputs too: `-o exercises/4.2.json` would replace one.
+    let exercise_files: Vec<std::path::PathBuf> = std::fs::read_dir(&args.exercises)
+        .map(|dir| {
+            dir.filter_map(|e| e.ok().map(|e| e.path()))
+                .filter(|p| p.extension().is_some_and(|x| x == "json"))
+                .collect()
+        })
+        .unwrap_or_default();
+    inputs.extend(exercise_files.iter().map(|p| p.as_path()));
     output::distinct(
         &inputs,
         &[
