@@ -1,0 +1,99 @@
+//! Regressions of `phong check --step`, its messages, `phong moodle` and `phong new` (QA
+//! report A): each test states the expected behaviour from the problem's own reasoning.
+
+use std::io::Write;
+
+use assert_cmd::Command;
+
+fn phong() -> Command {
+    let mut c = Command::cargo_bin("phong").unwrap();
+    c.current_dir(env!("CARGO_MANIFEST_DIR"));
+    c
+}
+
+/// `phong ARGS…`: exit code, standard output, standard error.
+fn run(args: &[&str]) -> (i32, String, String) {
+    let out = phong().args(args).output().unwrap();
+    (
+        out.status.code().unwrap(),
+        String::from_utf8(out.stdout).unwrap(),
+        String::from_utf8(out.stderr).unwrap(),
+    )
+}
+
+/// A file in a fresh temporary folder holding `text`.
+fn temp_file(name: &str, text: &str) -> (tempfile::TempDir, std::path::PathBuf) {
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join(name);
+    std::fs::File::create(&path)
+        .unwrap()
+        .write_all(text.as_bytes())
+        .unwrap();
+    (dir, path)
+}
+
+// QA A #2. In 4.2 the light at (1, 1, 1) is behind the surface at P = (3, 1, 3) with
+// N = (0.6, 0, 0.8): L = (P − P_l)/‖·‖ = (2, 0, 2)/√8, N·L = (1.2 + 1.6)/√8 = 0.99 > 0, so
+// cos θ = −N·L < 0 and, as written, the light adds no specular term: there is no
+// (cos φ)^n_s. Only the likely intended reading (light reversed) has one. 4.2 is a point
+// problem: it has no ray, so "the ray hits nothing" is false.
+#[test]
+fn a_point_problems_missing_step_is_explained_by_the_light_not_by_a_ray() {
+    let (code, out, err) = run(&[
+        "check",
+        "exercises/4.2.json",
+        "--step",
+        "cos_phi_pow=0.7658",
+    ]);
+    assert_eq!(code, 0, "{out}{err}");
+    assert!(!out.contains("ray"), "{out}");
+    assert!(out.contains("behind the surface (cos θ < 0)"), "{out}");
+    assert!(out.contains("no specular term"), "{out}");
+    let (code, out, err) = run(&[
+        "check",
+        "exercises/4.2.json",
+        "--step",
+        "cos_phi_pow=0.7658",
+        "--lang",
+        "pt",
+    ]);
+    assert_eq!(code, 0, "{out}{err}");
+    assert!(!out.contains("raio"), "{out}");
+    assert!(out.contains("atrás da superfície (cos θ < 0)"), "{out}");
+    // A wrong value of the same step is told the reading's value, with the same reason.
+    let (code, out, _) = run(&["check", "exercises/4.2.json", "--step", "cos_phi_pow=0.1"]);
+    assert_eq!(code, 1, "{out}");
+    assert!(!out.contains("ray"), "{out}");
+    assert!(out.contains("behind the surface (cos θ < 0)"), "{out}");
+}
+
+// QA A #2, through `phong grade`: the feedback is the same sentence.
+#[test]
+fn grade_feedback_on_a_point_problems_missing_step_does_not_speak_of_a_ray() {
+    let (_dir, csv) = temp_file(
+        "turma.csv",
+        "aluno;exercício;resposta;passos\neli;4.2;0 0 0;cos_phi_pow=0,7658\n",
+    );
+    let (code, out, err) = run(&[
+        "grade",
+        csv.to_str().unwrap(),
+        "--exercises",
+        "exercises",
+        "--lang",
+        "pt",
+        "-o",
+        "-",
+    ]);
+    assert_eq!(code, 0, "{out}{err}");
+    assert!(!out.contains("raio"), "{out}");
+    assert!(out.contains("atrás da superfície (cos θ < 0)"), "{out}");
+}
+
+// 4.3 as written: the ray meets the plane only behind its origin (t = −90), so it hits
+// nothing; that reason stays.
+#[test]
+fn a_ray_that_hits_nothing_is_still_the_reason_in_4_3() {
+    let (code, out, _) = run(&["check", "exercises/4.3.json", "--step", "cos_theta=0.03417"]);
+    assert_eq!(code, 0, "{out}");
+    assert!(out.contains("as written the ray hits nothing"), "{out}");
+}
