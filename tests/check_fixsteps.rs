@@ -97,3 +97,79 @@ fn a_ray_that_hits_nothing_is_still_the_reason_in_4_3() {
     assert_eq!(code, 0, "{out}");
     assert!(out.contains("as written the ray hits nothing"), "{out}");
 }
+
+// QA A #12. 4.2's file has one light, lights[0] (a point light): a step of lights[3] names a
+// light that is not there, and the fix is the index it has, or the bare name.
+#[test]
+fn a_step_of_a_light_not_in_the_file_says_which_to_use() {
+    let (code, _, err) = run(&["check", "exercises/4.2.json", "--step", "cos_theta[3]=0.5"]);
+    assert_eq!(code, 2, "{err}");
+    assert!(
+        err.contains("exercises/4.2.json: --step: cos_theta[3]"),
+        "{err}"
+    );
+    assert!(err.contains("Fix: use cos_theta[0] or cos_theta"), "{err}");
+    let (code, _, err) = run(&[
+        "check",
+        "exercises/4.2.json",
+        "--step",
+        "cos_theta[3]=0.5",
+        "--lang",
+        "pt",
+    ]);
+    assert_eq!(code, 2, "{err}");
+    assert!(
+        err.contains("Correção: use cos_theta[0] ou cos_theta"),
+        "{err}"
+    );
+}
+
+// QA A #12. A step that cannot be read is an error of the check of that file: it names the
+// file, as the error of a step the file does not have (cos_psi) does.
+#[test]
+fn a_step_that_cannot_be_read_names_the_file() {
+    for (step, what) in [
+        ("I_l=0.3535", "I_l is a vector"),
+        ("cos_thet=0.5", "\"cos_thet\" is not the name of a step"),
+        ("cos_theta", "\"cos_theta\" is not NAME=VALUE"),
+    ] {
+        let (code, _, err) = run(&["check", "exercises/4.2.json", "--step", step]);
+        assert_eq!(code, 2, "{err}");
+        assert!(
+            err.contains(&format!("exercises/4.2.json: --step: {what}")),
+            "{step}: {err}"
+        );
+        assert!(err.contains("Fix: "), "{step}: {err}");
+    }
+}
+
+// An ambient-only problem has no light of its own for a per-light step: the fix says which
+// steps it has.
+#[test]
+fn a_light_step_of_an_ambient_only_problem_has_a_fix() {
+    let (_dir, file) = temp_file(
+        "amb.json",
+        r#"{"lights": [{"type": "ambient", "color": [1, 1, 1]}],
+            "point": {"material": {"ambient": [0.5, 0.5, 0.5]}}}"#,
+    );
+    for step in ["cos_theta=0.5", "cos_theta[2]=0.5"] {
+        let (code, _, err) = run(&["check", file.to_str().unwrap(), "--step", step]);
+        assert_eq!(code, 2, "{err}");
+        assert!(
+            err.contains("Fix: check a step of the ambient light: I_a or ambient"),
+            "{err}"
+        );
+        let (_, _, err) = run(&[
+            "check",
+            file.to_str().unwrap(),
+            "--step",
+            step,
+            "--lang",
+            "pt",
+        ]);
+        assert!(
+            err.contains("Correção: confira um passo da luz ambiente: I_a ou ambient"),
+            "{err}"
+        );
+    }
+}

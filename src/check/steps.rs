@@ -678,29 +678,42 @@ impl StepsExpected {
     }
 
     /// The light a step means (its `[i]`, or the first light that is not ambient), or why it
-    /// means none.
+    /// means none, with the fix: the indices of the file's lights that are not ambient (or,
+    /// where there is none, the ambient light's own steps).
     fn light_of(&self, step: &GivenStep) -> Result<Option<usize>, String> {
         if !step.name.per_light {
             return Ok(None);
         }
+        let name = step.name.name;
+        let no_light = || {
+            format!(
+                "{}: the problem has no light other than ambient light, so no {name}. Fix: check \
+                 a step of the ambient light: I_a or ambient",
+                step.text
+            )
+        };
         match step.light {
-            None => self.first_light.map(Some).ok_or_else(|| {
-                format!(
-                    "{}: the problem has no light other than ambient light, so no {}",
-                    step.text, step.name.name
-                )
-            }),
+            None => self.first_light.map(Some).ok_or_else(no_light),
             Some(i) if self.ambient_lights.contains(&i) => Err(format!(
-                "{}: lights[{i}] is an ambient light, which has no {}. Fix: give the index of a \
-                 point, directional or spot light",
-                step.text, step.name.name
+                "{}: lights[{i}] is an ambient light, which has no {name}. Fix: give the index of \
+                 a point, directional or spot light",
+                step.text
             )),
-            Some(i) if i >= self.lights_in_file => Err(format!(
-                "{}: there is no lights[{i}]: the file has {} light{}, from lights[0]",
-                step.text,
-                self.lights_in_file,
-                if self.lights_in_file == 1 { "" } else { "s" }
-            )),
+            Some(_) if self.first_light.is_none() => Err(no_light()),
+            Some(i) if i >= self.lights_in_file => {
+                let indexed: Vec<String> = (0..self.lights_in_file)
+                    .filter(|k| !self.ambient_lights.contains(k))
+                    .map(|k| format!("{name}[{k}]"))
+                    .collect();
+                Err(format!(
+                    "{}: there is no lights[{i}]: the file has {} light{}, from lights[0]. Fix: \
+                     use {} or {name}",
+                    step.text,
+                    self.lights_in_file,
+                    if self.lights_in_file == 1 { "" } else { "s" },
+                    indexed.join(", ")
+                ))
+            }
             Some(i) => Ok(Some(i)),
         }
     }
