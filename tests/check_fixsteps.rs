@@ -173,3 +173,51 @@ fn a_light_step_of_an_ambient_only_problem_has_a_fix() {
         );
     }
 }
+
+// QA A #16. "nenhuma" (no hit) to a point problem: there is no value to compare with slips,
+// so no "no classic slip gives it" line; the answer's own explanation is enough.
+#[test]
+fn a_no_hit_answer_to_a_point_problem_has_no_slip_line() {
+    let (code, out, _) = run(&[
+        "check",
+        "exercises/4.2.json",
+        "--answer",
+        "nenhuma",
+        "--lang",
+        "pt",
+    ]);
+    assert_eq!(code, 1, "{out}");
+    assert!(
+        out.contains("um problema de ponto não tem raio que erre"),
+        "{out}"
+    );
+    assert!(!out.contains("erro clássico"), "{out}");
+    let (_, out, _) = run(&["check", "exercises/4.2.json", "--answer", "none"]);
+    assert!(!out.contains("no classic slip"), "{out}");
+}
+
+// QA A #16. "76 92 81" on the 0–1 scale is 8-bit values (76/255 = 0.298, 92/255 = 0.361,
+// 81/255 = 0.318: 4.2's likely intended reading): a near miss "90.98 away" measured on the
+// 0–1 scale is noise; the hint to use --scale 255 is the message, with no near miss on the
+// wrong scale (nor a slip line measured there).
+#[test]
+fn an_8_bit_answer_without_scale_gets_no_near_miss_on_the_wrong_scale() {
+    let (code, out, _) = run(&["check", "exercises/4.2.json", "--answer", "76 92 81"]);
+    assert_eq!(code, 1, "{out}");
+    assert!(out.contains("did you mean --scale 255?"), "{out}");
+    assert!(!out.contains("closest"), "{out}");
+    assert!(!out.contains("no classic slip"), "{out}");
+    let (_, out, _) = run(&[
+        "check",
+        "exercises/4.2.json",
+        "--answer",
+        "76 92 81",
+        "--format",
+        "json",
+    ]);
+    let doc: serde_json::Value = serde_json::from_str(&out).unwrap();
+    let nearest = doc
+        .pointer("/nearest")
+        .or_else(|| doc.pointer("/0/nearest"));
+    assert!(nearest.is_none_or(|n| n.is_null()), "{out}");
+}

@@ -728,7 +728,8 @@ pub(crate) fn feedback(f: &RowFacts, lang: Lang) -> String {
                         .collect::<Vec<_>>()
                         .join(or);
                     parts.push(format!("{} {list}", diagnosis_intro(v.pairs, lang)));
-                } else if v.has_colour.is_none() {
+                } else if v.has_colour.is_none() && !v.looks_8bit {
+                    // As `phong check`'s text: no slip line for 8-bit numbers on the 0–1 scale.
                     parts.push(no_diagnosis(lang).to_owned());
                 }
                 if v.looks_8bit {

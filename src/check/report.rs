@@ -256,8 +256,14 @@ pub fn text(c: &Checked, lang: Lang) -> String {
         let _ = writeln!(out, "  {}", messages::nothing_to_shade(lang));
     }
     if v.kind == VerdictKind::Wrong {
+        // "No classic slip gives it" only where there is a value compared on its own scale: not
+        // for an answer "none" (no value), nor for 8-bit numbers read on the 0–1 scale (the
+        // hint to use --scale 255 below is what helps).
+        let compared = answer.values.is_some() && !v.looks_8bit;
         if v.diagnosis.is_empty() {
-            let _ = writeln!(out, "  {}", messages::no_diagnosis(lang));
+            if compared {
+                let _ = writeln!(out, "  {}", messages::no_diagnosis(lang));
+            }
         } else {
             let _ = writeln!(out, "  {}", messages::diagnosis_intro(v.pairs, lang));
             for d in &v.diagnosis {
