@@ -221,3 +221,21 @@ fn an_8_bit_answer_without_scale_gets_no_near_miss_on_the_wrong_scale() {
         .or_else(|| doc.pointer("/0/nearest"));
     assert!(nearest.is_none_or(|n| n.is_null()), "{out}");
 }
+
+// QA A #17. Each row of `--slips` is "(clamped)  ((unclamped))" where they differ. 4.2's
+// no_clamping slip keeps the negative cosines: Eq. 4.16 gives (−0.299153, −0.361229, −0.318306)
+// (the likely intended reading's colour, negated); clamped to [0, 1] that is (0, 0, 0).
+#[test]
+fn the_no_clamping_row_of_slips_shows_both_columns() {
+    let (code, out, _) = run(&["check", "exercises/4.2.json", "--slips", "--lang", "pt"]);
+    assert_eq!(code, 0, "{out}");
+    let row = out
+        .lines()
+        .find(|l| l.trim_start().starts_with("no_clamping "))
+        .unwrap_or_else(|| panic!("{out}"));
+    assert!(
+        row.trim_end()
+            .ends_with(" (0, 0, 0)  ((-0.299153, -0.361229, -0.318306))"),
+        "{row}"
+    );
+}
