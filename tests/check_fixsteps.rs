@@ -239,3 +239,68 @@ fn the_no_clamping_row_of_slips_shows_both_columns() {
         "{row}"
     );
 }
+
+// QA A #14. Two ambient lights are two values: one symbol I_a for both, in two identical
+// sentences, reads as a contradiction. They are named apart, I_a1 and I_a2, in one sentence;
+// a single ambient light keeps I_a.
+#[test]
+fn two_generated_ambient_lights_are_named_apart() {
+    let (code, out, err) = run(&[
+        "new", "--kind", "ambient", "--count", "12", "--seed", "7", "--lang", "pt",
+    ]);
+    assert_eq!(code, 0, "{err}");
+    let problems: Vec<serde_json::Value> = serde_json::from_str(&out).unwrap();
+    let mut two = 0;
+    for p in &problems {
+        let ambient: Vec<String> = p["lights"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .filter(|l| l["type"] == "ambient")
+            .map(|l| {
+                let c: Vec<String> = l["color"]
+                    .as_array()
+                    .unwrap()
+                    .iter()
+                    .map(|x| x.to_string())
+                    .collect();
+                format!("({})", c.join(", "))
+            })
+            .collect();
+        let (en, pt) = (
+            p["question"].as_str().unwrap(),
+            p["question_pt"].as_str().unwrap(),
+        );
+        if ambient.len() == 2 {
+            two += 1;
+            let want_en = format!(
+                "Two ambient lights, I_a1 = {} and I_a2 = {}, light the scene.",
+                ambient[0], ambient[1]
+            );
+            let want_pt = format!(
+                "Duas luzes ambientes, I_a1 = {} e I_a2 = {}, iluminam a cena.",
+                ambient[0], ambient[1]
+            );
+            assert!(en.contains(&want_en), "{en}");
+            assert!(pt.contains(&want_pt), "{pt}");
+            assert!(
+                !en.contains("I_a =") && !pt.contains("I_a ="),
+                "{en} / {pt}"
+            );
+        } else {
+            assert_eq!(ambient.len(), 1);
+            assert!(
+                en.contains(&format!("An ambient light I_a = {} lights", ambient[0])),
+                "{en}"
+            );
+            assert!(
+                pt.contains(&format!("Uma luz ambiente I_a = {} ilumina", ambient[0])),
+                "{pt}"
+            );
+        }
+    }
+    assert!(
+        two > 0,
+        "seed 7 draws a problem with two ambient lights (QA's ambient-7-001)"
+    );
+}
