@@ -617,3 +617,41 @@ fn a_file_that_is_not_a_question_is_refused_by_name() {
     let err = String::from_utf8(out.stderr).unwrap();
     assert!(err.contains("-[2]") && err.contains("bogus"), "{err}");
 }
+
+// QA A #10. A problem's own text is text: a Cloze sub-question written in its title, question
+// or a light's name (`{2:SHORTANSWER:=x}`), or LaTeX-ish braces (`\frac{1}{2}`) with `~`, `#`
+// and `=` around them, must not become a sub-question of the quiz. 4.2 is a colour problem:
+// its quiz has exactly phong's three NUMERICAL parts (R, G, B), whatever its text holds.
+#[test]
+fn cloze_syntax_in_a_problems_text_stays_text() {
+    let mut problem: Value =
+        serde_json::from_str(&std::fs::read_to_string(root().join("exercises/4.2.json")).unwrap())
+            .unwrap();
+    let evil = "Pergunta com ]]> e {2:SHORTANSWER:=x} e {:NM:=1:0} e ~ # } = \\frac{1}{2} {";
+    problem["question"] = Value::from(evil);
+    problem["question_pt"] = Value::from(evil);
+    problem["title_pt"] = Value::from("Exercício {1:SHORTANSWER:=x}");
+    problem["lights"][0]["name_pt"] = Value::from("luz {1:NUMERICAL:=0.5:1}");
+    problem["lights"][0]["name"] = Value::from("light {1:NUMERICAL:=0.5:1}");
+    let dir = tempfile::tempdir().unwrap();
+    let file = dir.path().join("evil.json");
+    std::fs::write(&file, problem.to_string()).unwrap();
+    for lang in ["pt", "en"] {
+        let xml = moodle(std::slice::from_ref(&file), lang, None);
+        xmllint(&xml, &format!("evil-{lang}.xml"));
+        let questions = validate(&xml).unwrap_or_else(|e| panic!("{lang}: {e}"));
+        assert_eq!(questions.len(), 1, "{lang}");
+        let subs = &questions[0];
+        assert_eq!(subs.len(), 3, "{lang}: {subs:?}");
+        assert!(
+            subs.iter().all(|s| s.kind == "NUMERICAL"),
+            "{lang}: {subs:?}"
+        );
+        // The text is still there, shown as written: its braces as HTML references.
+        let text = between(&xml, "<questiontext format=\"html\"><text>", "</text>").unwrap();
+        assert!(
+            text.contains("&#123;2:SHORTANSWER:=x&#125;") && text.contains("\\frac&#123;1&#125;"),
+            "{lang}: {text}"
+        );
+    }
+}

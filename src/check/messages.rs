@@ -427,37 +427,113 @@ pub fn step_verdict(v: super::steps::StepVerdict, lang: Lang) -> &'static str {
     }
 }
 
+/// Why the problem as written has no such step, as a clause after "as written" ("como
+/// enunciado"): the ray hits nothing (4.3), or, for a light's specular steps, why that light
+/// adds no specular term (4.2: the light is behind the surface). Each reason the solver can
+/// give has its own words, so that a point problem is never told of a ray.
+pub fn step_absent_because(why: super::steps::Absence, lang: Lang) -> &'static str {
+    use super::steps::Absence as A;
+    use crate::core::{LightStatus as L, SpecularStatus as S};
+    match (lang, why) {
+        (Lang::En, A::NoHit) => "the ray hits nothing",
+        (Lang::Pt, A::NoHit) => "o raio não atinge nada",
+        (Lang::En, A::Light(L::BehindSurface)) => {
+            "the light is behind the surface (cos θ < 0) and adds no specular term"
+        }
+        (Lang::Pt, A::Light(L::BehindSurface)) => {
+            "a fonte de luz está atrás da superfície (cos θ < 0) e não contribui com reflexão \
+             especular"
+        }
+        (Lang::En, A::Light(L::InTangentPlane)) => {
+            "the light is in the tangent plane (cos θ = 0) and adds no specular term"
+        }
+        (Lang::Pt, A::Light(L::InTangentPlane)) => {
+            "a fonte de luz está no plano tangente (cos θ = 0) e não contribui com reflexão \
+             especular"
+        }
+        (Lang::En, A::Light(L::OutsideCone)) => {
+            "the point is outside the spot's cone (ψ > γ), so the light adds no specular term"
+        }
+        (Lang::Pt, A::Light(L::OutsideCone)) => {
+            "o ponto está fora do cone do spot (ψ > γ), então a fonte de luz não contribui com \
+             reflexão especular"
+        }
+        (Lang::En, A::Light(L::AtLight)) => {
+            "the point is at the light, so the light adds no specular term"
+        }
+        (Lang::Pt, A::Light(L::AtLight)) => {
+            "o ponto está na posição da fonte de luz, que não contribui com reflexão especular"
+        }
+        (Lang::En, A::Light(L::InShadow)) => {
+            "the point is in shadow, so the light adds no specular term"
+        }
+        (Lang::Pt, A::Light(L::InShadow)) => {
+            "o ponto está na sombra, então a fonte de luz não contribui com reflexão especular"
+        }
+        (Lang::En, A::Specular(S::AwayFromViewer)) => {
+            "R points away from the viewer (cos φ ≤ 0), so the light adds no specular term"
+        }
+        (Lang::Pt, A::Specular(S::AwayFromViewer)) => {
+            "R aponta para longe do observador (cos φ ≤ 0), então a fonte de luz não contribui \
+             com reflexão especular"
+        }
+        (Lang::En, A::Specular(S::NoViewer)) => "there is no viewer, so cos φ cannot be computed",
+        (Lang::Pt, A::Specular(S::NoViewer)) => {
+            "não há observador, então cos φ não pode ser calculado"
+        }
+        (Lang::En, A::Specular(S::NoSpecularColor)) => "the material has no specular colour O_s",
+        (Lang::Pt, A::Specular(S::NoSpecularColor)) => {
+            "o material não tem cor de reflexão especular O_s"
+        }
+        // A light that lights the point and a specular term that is lit have every step:
+        // kept for completeness, in words that assume nothing.
+        (Lang::En, A::Light(L::Lit) | A::Specular(S::Lit | S::LightNotLit) | A::Other) => {
+            "the problem has no such quantity"
+        }
+        (Lang::Pt, A::Light(L::Lit) | A::Specular(S::Lit | S::LightNotLit) | A::Other) => {
+            "o problema não tem essa grandeza"
+        }
+    }
+}
+
 /// A step of the likely intended reading of a problem that, as written, has no such quantity
-/// (its ray hits nothing).
-pub fn step_no_hit(code: ReadingCode, lang: Lang) -> String {
+/// (`why`: the ray hits nothing, the light does not light the point…).
+pub fn step_no_hit(code: ReadingCode, why: super::steps::Absence, lang: Lang) -> String {
     match lang {
         Lang::En => format!(
-            "as the likely intended reading \"{}\" has it; as written the ray hits nothing, so \
-             there is no such step",
-            reading(code, lang)
+            "as the likely intended reading \"{}\" has it; as written {}, so there is no such \
+             step",
+            reading(code, lang),
+            step_absent_because(why, lang)
         ),
         Lang::Pt => format!(
-            "como na leitura provavelmente pretendida \"{}\"; como enunciado o raio não atinge \
-             nada, então não há esse passo",
-            reading(code, lang)
+            "como na leitura provavelmente pretendida \"{}\"; como enunciado {}, então não há \
+             esse passo",
+            reading(code, lang),
+            step_absent_because(why, lang)
         ),
     }
 }
 
 /// What the step's value is (as written, or in the likely intended reading when the problem as
-/// written has none).
-pub fn step_exact(exact: &str, from: Option<ReadingCode>, lang: Lang) -> String {
+/// written has none, `why` saying why it has none).
+pub fn step_exact(
+    exact: &str,
+    from: Option<(ReadingCode, super::steps::Absence)>,
+    lang: Lang,
+) -> String {
     match (lang, from) {
         (Lang::En, None) => format!("the problem as written gives {exact}"),
         (Lang::Pt, None) => format!("o problema como enunciado dá {exact}"),
-        (Lang::En, Some(c)) => format!(
-            "the likely intended reading \"{}\" gives {exact} (as written the ray hits nothing)",
-            reading(c, lang)
+        (Lang::En, Some((c, why))) => format!(
+            "the likely intended reading \"{}\" gives {exact} (as written {})",
+            reading(c, lang),
+            step_absent_because(why, lang)
         ),
-        (Lang::Pt, Some(c)) => format!(
-            "a leitura provavelmente pretendida \"{}\" dá {exact} (como enunciado o raio não \
-             atinge nada)",
-            reading(c, lang)
+        (Lang::Pt, Some((c, why))) => format!(
+            "a leitura provavelmente pretendida \"{}\" dá {exact} (como enunciado {})",
+            reading(c, lang),
+            step_absent_because(why, lang)
         ),
     }
 }
@@ -652,7 +728,8 @@ pub(crate) fn feedback(f: &RowFacts, lang: Lang) -> String {
                         .collect::<Vec<_>>()
                         .join(or);
                     parts.push(format!("{} {list}", diagnosis_intro(v.pairs, lang)));
-                } else if v.has_colour.is_none() {
+                } else if v.has_colour.is_none() && !v.looks_8bit {
+                    // As `phong check`'s text: no slip line for 8-bit numbers on the 0–1 scale.
                     parts.push(no_diagnosis(lang).to_owned());
                 }
                 if v.looks_8bit {

@@ -396,6 +396,11 @@ pub(crate) fn judge(expected: &Expected, answer: &Answer, tolerance: f64, strict
         v.nearest = nearest_reading(expected, answer, tolerance)
             .filter(|n| n.comparison.distance() <= 10.0 * tolerance);
     }
+    // 8-bit numbers read on the 0–1 scale: every distance is measured on the wrong scale (76
+    // is "75 away" from a 0.3), so no near miss is told; the hint to use --scale 255 is.
+    if v.looks_8bit {
+        v.nearest = None;
+    }
     v
 }
 

@@ -256,8 +256,14 @@ pub fn text(c: &Checked, lang: Lang) -> String {
         let _ = writeln!(out, "  {}", messages::nothing_to_shade(lang));
     }
     if v.kind == VerdictKind::Wrong {
+        // "No classic slip gives it" only where there is a value compared on its own scale: not
+        // for an answer "none" (no value), nor for 8-bit numbers read on the 0–1 scale (the
+        // hint to use --scale 255 below is what helps).
+        let compared = answer.values.is_some() && !v.looks_8bit;
         if v.diagnosis.is_empty() {
-            let _ = writeln!(out, "  {}", messages::no_diagnosis(lang));
+            if compared {
+                let _ = writeln!(out, "  {}", messages::no_diagnosis(lang));
+            }
         } else {
             let _ = writeln!(out, "  {}", messages::diagnosis_intro(v.pairs, lang));
             for d in &v.diagnosis {
@@ -535,12 +541,18 @@ pub(crate) fn verdict_code(k: VerdictKind) -> &'static str {
 pub(crate) fn slips_text(file: &str, x: &super::Expected, lang: Lang) -> String {
     let mut out = String::new();
     let _ = writeln!(out, "{file}");
-    let show = |t: &super::Target| match t.clamped {
-        Some(c) if c != t.unclamped => {
+    // "(clamped)  ((unclamped))" where they differ. The literal colour (no_clamping) has no
+    // clamped target of its own (it is detected unclamped only), but its row shows both columns
+    // like the others: the first is then that colour clamped to [0, 1], as a screen shows it.
+    let show = |t: &super::Target| {
+        let c = t
+            .clamped
+            .unwrap_or_else(|| t.unclamped.map(|x| x.clamp(0.0, 1.0)));
+        if c == t.unclamped {
+            triple(c, num)
+        } else {
             format!("{}  ({})", triple(c, num), triple(t.unclamped, num))
         }
-        Some(c) => triple(c, num),
-        None => format!("({})", triple(t.unclamped, num)),
     };
     match &x.solution {
         Some(t) => {

@@ -570,9 +570,33 @@ impl Source {
     }
 }
 
+/// Why the problem as written has no such step (the likely intended reading has it): the
+/// message says so in these words, never assuming a ray where the problem has a point.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Absence {
+    /// As written the ray hits nothing (4.3): nothing is shaded, so no step of the point.
+    NoHit,
+    /// As written the step's light does not light the point (4.2: behind the surface), so it
+    /// has no specular term (no R, cos φ or (cos φ)^n_s where the solver skips them).
+    Light(crate::core::LightStatus),
+    /// The light lights the point but its specular term is not there for this reason
+    /// (cos φ ≤ 0: no (cos φ)^n_s).
+    Specular(crate::core::SpecularStatus),
+    /// None of those (kept so that every case has words).
+    Other,
+}
+
 /// Everything steps are judged against, solved once.
 pub struct StepsExpected {
     written: Source,
+    /// Whether the problem as written shades a point at all (a ray that hits nothing does not).
+    written_shaded: bool,
+    /// Each light's status and specular status as written, by file index.
+    written_status: Vec<(
+        Option<usize>,
+        crate::core::LightStatus,
+        crate::core::SpecularStatus,
+    )>,
     readings: Vec<(ReadingCode, bool, Source)>,
     slips: Vec<(Slip, Source)>,
     /// The file index of the first light that is not ambient (a bare name's light).
@@ -588,6 +612,19 @@ impl StepsExpected {
     pub fn of(problem: &Problem<f64>) -> Result<Self, crate::problem::Invalid> {
         let solution = crate::solve::solve(problem)?;
         let written = Source::of(problem, &solution);
+        let written_shaded = solution.evaluation.is_some();
+        let written_status = solution
+            .evaluation
+            .iter()
+            .flat_map(|e| &e.lights)
+            .map(|t| {
+                (
+                    problem.light_info.get(t.index).map(|l| l.file_index),
+                    t.status,
+                    t.specular.status,
+                )
+            })
+            .collect();
         let readings = solution
             .readings
             .iter()
@@ -613,6 +650,8 @@ impl StepsExpected {
             problem.ambient_info.iter().map(|a| a.file_index).collect();
         Ok(StepsExpected {
             written,
+            written_shaded,
+            written_status,
             readings,
             slips,
             first_light: problem.light_info.first().map(|l| l.file_index),
@@ -621,30 +660,60 @@ impl StepsExpected {
         })
     }
 
+    /// Why the problem as written has no quantity `name` (of light `light`): no point shaded
+    /// (the ray hits nothing), or the light's own status, or its specular term's.
+    fn absence(&self, light: Option<usize>) -> Absence {
+        use crate::core::{LightStatus, SpecularStatus};
+        if !self.written_shaded {
+            return Absence::NoHit;
+        }
+        let Some(i) = light else {
+            return Absence::Other;
+        };
+        match self.written_status.iter().find(|(l, _, _)| *l == Some(i)) {
+            Some((_, status, _)) if *status != LightStatus::Lit => Absence::Light(*status),
+            Some((_, _, spec)) if *spec != SpecularStatus::Lit => Absence::Specular(*spec),
+            _ => Absence::Other,
+        }
+    }
+
     /// The light a step means (its `[i]`, or the first light that is not ambient), or why it
-    /// means none.
+    /// means none, with the fix: the indices of the file's lights that are not ambient (or,
+    /// where there is none, the ambient light's own steps).
     fn light_of(&self, step: &GivenStep) -> Result<Option<usize>, String> {
         if !step.name.per_light {
             return Ok(None);
         }
+        let name = step.name.name;
+        let no_light = || {
+            format!(
+                "{}: the problem has no light other than ambient light, so no {name}. Fix: check \
+                 a step of the ambient light: I_a or ambient",
+                step.text
+            )
+        };
         match step.light {
-            None => self.first_light.map(Some).ok_or_else(|| {
-                format!(
-                    "{}: the problem has no light other than ambient light, so no {}",
-                    step.text, step.name.name
-                )
-            }),
+            None => self.first_light.map(Some).ok_or_else(no_light),
             Some(i) if self.ambient_lights.contains(&i) => Err(format!(
-                "{}: lights[{i}] is an ambient light, which has no {}. Fix: give the index of a \
-                 point, directional or spot light",
-                step.text, step.name.name
+                "{}: lights[{i}] is an ambient light, which has no {name}. Fix: give the index of \
+                 a point, directional or spot light",
+                step.text
             )),
-            Some(i) if i >= self.lights_in_file => Err(format!(
-                "{}: there is no lights[{i}]: the file has {} light{}, from lights[0]",
-                step.text,
-                self.lights_in_file,
-                if self.lights_in_file == 1 { "" } else { "s" }
-            )),
+            Some(_) if self.first_light.is_none() => Err(no_light()),
+            Some(i) if i >= self.lights_in_file => {
+                let indexed: Vec<String> = (0..self.lights_in_file)
+                    .filter(|k| !self.ambient_lights.contains(k))
+                    .map(|k| format!("{name}[{k}]"))
+                    .collect();
+                Err(format!(
+                    "{}: there is no lights[{i}]: the file has {} light{}, from lights[0]. Fix: \
+                     use {} or {name}",
+                    step.text,
+                    self.lights_in_file,
+                    if self.lights_in_file == 1 { "" } else { "s" },
+                    indexed.join(", ")
+                ))
+            }
             Some(i) => Ok(Some(i)),
         }
     }
@@ -675,8 +744,10 @@ pub struct JudgedStep {
     /// intended reading has it), for the order and the expected value.
     pub expected: Quantity,
     /// Whether `expected` is the likely intended reading's (the problem as written has no such
-    /// quantity: 4.3's ray hits nothing).
+    /// quantity: 4.3's ray hits nothing, 4.2's light adds no specular term).
     pub expected_from_reading: Option<ReadingCode>,
+    /// Why the problem as written has no such quantity, when `expected_from_reading` is set.
+    pub absent_as_written: Option<Absence>,
     /// The likely intended reading's value, when the step matched it (verdict `reading`).
     pub reading: Option<ReadingCode>,
     /// The given value is the expected one with its sign reversed.
@@ -748,6 +819,7 @@ pub fn judge_steps(
             verdict: StepVerdict::Wrong,
             expected,
             expected_from_reading: from_reading,
+            absent_as_written: from_reading.map(|_| x.absence(light)),
             reading: None,
             sign: false,
             literal: false,
@@ -885,12 +957,14 @@ pub fn step_message(s: &JudgedStep, lang: Lang) -> String {
     );
     let exact = s.expected.value.text();
     let mut parts = Vec::new();
+    let why = s.absent_as_written.unwrap_or(Absence::Other);
     match (s.verdict, s.expected_from_reading) {
         (StepVerdict::Right, None) => {}
         (StepVerdict::Right | StepVerdict::Reading, Some(c)) => {
-            parts.push(messages::step_no_hit(c, lang));
+            parts.push(messages::step_no_hit(c, why, lang));
         }
         (_, from) => {
+            let from = from.map(|c| (c, why));
             let mut p = messages::step_exact(&exact, from, lang);
             if s.sign {
                 p.push_str(messages::step_sign(s.expected.value.is_vector(), lang));

@@ -21,6 +21,10 @@
 //! - inside Cloze answers and feedback `}` and `#` are written `\}` and `\#` (the parser's only
 //!   escapes), and `~` and `\`, which have none, as the HTML references `&\#126;` and `&\#92;`
 //!   (the feedback is HTML): no raw `~`, `}` or `#` can end an alternative early;
+//! - the problem's own text in the question (its statement, the data table's names, the no-hit
+//!   prompt) has every `{` and `}` as `&#123;` and `&#125;` ([`cloze_inert`]), so that Cloze
+//!   syntax written there (`{2:SHORTANSWER:=x}`, LaTeX braces) is shown, never parsed: only
+//!   phong's own sub-questions match the grammar;
 //! - fractions come from Moodle's fixed list only (100, 50, 0);
 //! - the worked solution is the general feedback, in HTML with MathJax's `\( … \)` (a single `$`
 //!   is no delimiter in Moodle), and each diagram an SVG `<file>` in base64 shown by
@@ -133,6 +137,17 @@ pub(crate) fn cloze_escape(s: &str) -> String {
         }
     }
     out
+}
+
+/// The question's own HTML (its statement, the data table, the no-hit prompt), made inert for
+/// Moodle's Cloze parser: a sub-question is `{` weight `:` TYPE `:` … `}` anywhere in the
+/// question text, so a problem's text holding `{2:SHORTANSWER:=x}` (or `{` from LaTeX-ish
+/// notes) would become a live sub-question and change the grade. Every `{` and `}` is written
+/// as its HTML reference, `&#123;` and `&#125;`: the browser (and MathJax, which reads the
+/// page's text) shows the brace, while the parser, reading the raw text, sees none, so only
+/// phong's own sub-questions match the grammar; `~`, `#` and `=` are read only inside one.
+pub(crate) fn cloze_inert(html: &str) -> String {
+    html.replace('{', "&#123;").replace('}', "&#125;")
 }
 
 /// A number as a Cloze NUMERICAL answer: plain decimal, at most six decimals.
@@ -449,9 +464,9 @@ fn question(
     let w = words(lang);
     let mut text = String::new();
     if let Some(question) = &x.question {
-        let _ = writeln!(text, "<p>{}</p>", esc(question));
+        let _ = writeln!(text, "<p>{}</p>", cloze_inert(&esc(question)));
     }
-    text.push_str(&data_table(&x.data, lang));
+    text.push_str(&cloze_inert(&data_table(&x.data, lang)));
     match (0..3)
         .map(|c| channel(c, &expected, entry.tolerance, lang))
         .collect::<Option<Vec<String>>>()
@@ -467,7 +482,7 @@ fn question(
             let _ = writeln!(
                 text,
                 "<p>{} {}</p>",
-                esc(w.no_hit_question),
+                cloze_inert(&esc(w.no_hit_question)),
                 no_hit_part(lang)
             );
         }
@@ -524,6 +539,14 @@ mod tests {
     #[test]
     fn cloze_specials_are_escaped() {
         assert_eq!(cloze_escape("a}b#c~d\\e"), "a\\}b\\#c&\\#126;d&\\#92;e");
+    }
+
+    #[test]
+    fn the_questions_own_braces_are_html_references() {
+        assert_eq!(
+            cloze_inert("a {2:SHORTANSWER:=x} \\frac{1}{2}"),
+            "a &#123;2:SHORTANSWER:=x&#125; \\frac&#123;1&#125;&#123;2&#125;"
+        );
     }
 
     #[test]

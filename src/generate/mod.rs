@@ -607,15 +607,61 @@ fn falloff_words(f: u8, t: Tongue) -> &'static str {
     }
 }
 
+/// The sentence of two or more ambient lights, each named apart (I_a1, I_a2, …): "Two ambient
+/// lights, I_a1 = (1, 0.5, 1) and I_a2 = (0, 0.5, 0.5), light the scene." ("Duas luzes
+/// ambientes, … iluminam a cena."). Their sum is the I_a of Eq. 4.6.
+fn several_ambient(colours: &[String], t: Tongue) -> String {
+    let en = t == Tongue::En;
+    let mut named: Vec<String> = colours
+        .iter()
+        .enumerate()
+        .map(|(k, c)| format!("I_a{} = {c}", k + 1))
+        .collect();
+    let last = named.pop().unwrap_or_default();
+    let list = format!(
+        "{} {} {last}",
+        named.join(", "),
+        if en { "and" } else { "e" }
+    );
+    let count = match (colours.len(), en) {
+        (2, true) => "Two".to_owned(),
+        (3, true) => "Three".to_owned(),
+        (2, false) => "Duas".to_owned(),
+        (3, false) => "Três".to_owned(),
+        (n, _) => n.to_string(),
+    };
+    if en {
+        format!("{count} ambient lights, {list}, light the scene.")
+    } else {
+        format!("{count} luzes ambientes, {list}, iluminam a cena.")
+    }
+}
+
 /// The question with its data in full sentences, in the chapter's style.
 fn statement(p: &ProblemOut, t: Tongue) -> String {
     let v = |x: &N3| word_vec(x, t);
     let en = t == Tongue::En;
     let mut s: Vec<String> = Vec::new();
+    let ambient: Vec<String> = p
+        .lights
+        .iter()
+        .filter(|l| l.kind == "ambient")
+        .map(|l| v(&l.color))
+        .collect();
+    let mut ambient_said = false;
     for l in &p.lights {
         let c = v(&l.color);
         let at = l.position.as_ref().map(v).unwrap_or_default();
         let f = falloff_words(l.falloff.unwrap_or(0), t);
+        // Several ambient lights are several values: each its own symbol, in one sentence
+        // (one I_a for two values would read as a contradiction).
+        if l.kind == "ambient" && ambient.len() > 1 {
+            if !ambient_said {
+                ambient_said = true;
+                s.push(several_ambient(&ambient, t));
+            }
+            continue;
+        }
         s.push(match (l.kind, en) {
             ("ambient", true) => format!("An ambient light I_a = {c} lights the scene."),
             ("ambient", false) => format!("Uma luz ambiente I_a = {c} ilumina a cena."),

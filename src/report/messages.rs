@@ -1313,6 +1313,7 @@ const ERRORS_PT: &[(&str, &str)] = &[
     (" lights, from ", " fontes de luz, a partir de "),
     (" light, from ", " fonte de luz, a partir de "),
     (": this problem has no ", ": este problema não tem "),
+    ("check a step of the ambient light: ", "confira um passo da luz ambiente: "),
     ("check a step it has: ", "confira um passo que ele tem: "),
     // The check command's steps (cli/commands/check.rs).
     (

@@ -96,10 +96,15 @@ fn given_steps(args: &CheckArgs) -> Result<Vec<check::steps::GivenStep>, CliErro
         });
     }
     let mut out = Vec::new();
+    // A step is of the one file checked: its error names that file, as a judged step's does.
+    let step_flag = match args.files.first() {
+        Some(f) => format!("{}: --step", f.display()),
+        None => "--step".to_owned(),
+    };
     for text in &args.step {
         out.push(check::steps::parse_step(text).map_err(|e| {
             step_usage(
-                "--step",
+                &step_flag,
                 "",
                 e,
                 "write NAME=VALUE, such as --step cos_theta=0.98995 or --step R=0.6,0,0.8",
