@@ -736,11 +736,19 @@ pub fn mesh_files(file: &ProblemFile, path: &Path) -> Vec<PathBuf> {
         .collect()
 }
 
+/// A scene as the tracer's commands read it.
+pub(crate) struct SceneFile<R: Real> {
+    /// The validated problem.
+    pub problem: Problem<R>,
+    /// Its camera.
+    pub camera: Camera<R>,
+    /// The mesh files it names ([`mesh_files`]): inputs no output may replace.
+    pub meshes: Vec<PathBuf>,
+}
+
 /// Reads a scene: a problem file with a camera and surfaces (what the tracer needs), and the
-/// mesh files it names ([`mesh_files`]).
-pub(crate) fn load_scene<R: Real>(
-    path: &Path,
-) -> Result<(Problem<R>, Camera<R>, Vec<PathBuf>), ProblemError> {
+/// mesh files it names.
+pub(crate) fn load_scene<R: Real>(path: &Path) -> Result<SceneFile<R>, ProblemError> {
     let (file, problem) = load::<R>(path)?;
     let meshes = mesh_files(&file, path);
     let Some(camera) = problem.camera else {
@@ -760,7 +768,11 @@ pub(crate) fn load_scene<R: Real>(
         )
         .at(path));
     }
-    Ok((problem, camera, meshes))
+    Ok(SceneFile {
+        problem,
+        camera,
+        meshes,
+    })
 }
 
 #[cfg(test)]

@@ -27,7 +27,11 @@ fn render<R: Real>(args: &RenderArgs) -> Result<Exit, CliError> {
     let path = &args.scene;
     output::distinct(&[path], &[("--output", args.output.as_deref())])?;
     let started = Instant::now();
-    let (mut problem, camera, meshes) = problem::load_scene::<R>(path)?;
+    let problem::SceneFile {
+        mut problem,
+        camera,
+        meshes,
+    } = problem::load_scene::<R>(path)?;
     let loaded = started.elapsed();
     // The meshes the scene names are inputs too: no output may replace one.
     let meshes: Vec<&Path> = meshes.iter().map(|p| p.as_path()).collect();

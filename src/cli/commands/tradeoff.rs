@@ -115,12 +115,16 @@ pub(crate) fn run(args: &TradeoffArgs) -> Result<Exit, CliError> {
 
 /// The scene in precision `R`, at `size` instead of the camera's when given, and the mesh files
 /// it names.
-#[allow(clippy::type_complexity)]
+#[allow(clippy::type_complexity)] // a scene (problem and camera) and its meshes
 fn load<R: Real>(
     path: &Path,
     size: Option<(u32, u32)>,
 ) -> Result<((Problem<R>, Camera<R>), Vec<PathBuf>), ProblemError> {
-    let (p, mut camera, meshes) = problem::load_scene::<R>(path)?;
+    let problem::SceneFile {
+        problem: p,
+        mut camera,
+        meshes,
+    } = problem::load_scene::<R>(path)?;
     if let Some((w, h)) = size {
         camera.width = w;
         camera.height = h;

@@ -60,7 +60,10 @@ fn same_by_both_engines<R: Real>(name: &str, problem: &Problem<R>, camera: &Came
 fn bundled_scenes_in<R: Real>() {
     let mut rendered = 0;
     for path in scenes() {
-        let Ok((problem, camera)) = problem::load_scene::<R>(&path) else {
+        let Ok(problem::SceneFile {
+            problem, camera, ..
+        }) = problem::load_scene::<R>(&path)
+        else {
             continue; // a ray or point problem, not a scene
         };
         same_by_both_engines::<R>(&path.display().to_string(), &problem, &camera);
@@ -172,7 +175,11 @@ fn the_plan_groups_exactly_the_equal_materials() {
 /// several samples, small image, with and without shadows.
 fn mesh_scene_in<R: Real>() {
     let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/mesh.json");
-    let (mut problem, mut camera) = problem::load_scene::<R>(&path).expect("scenes/mesh.json");
+    let problem::SceneFile {
+        mut problem,
+        mut camera,
+        ..
+    } = problem::load_scene::<R>(&path).expect("scenes/mesh.json");
     camera.width = 53;
     camera.height = 41;
     for (samples, shadows) in [(3, true), (2, false)] {
