@@ -2479,6 +2479,23 @@ fn an_unknown_field_named_like_a_path_is_named_whole() {
     }
 }
 
+#[test]
+fn a_huge_negative_colour_is_shown_as_written_not_in_40_digits() {
+    // Found by the mutated-files round: a colour's negative component was echoed with `{}`,
+    // which writes -1e39 as 40 digits; it is shown as the file writes it.
+    let ws = Workspace::new();
+    let text = bundled("exercises/4.1.json").replacen("[1, 1, 1]", "[-1e39, 0, 0]", 1);
+    assert!(text.contains("-1e39"));
+    ws.write(text.as_bytes()).expect("written");
+    match problem::load::<f64>(&ws.case) {
+        Err(e) => {
+            let m = e.to_string();
+            assert!(m.contains("[-1e39, 0, 0]"), "{m}");
+        }
+        Ok(_) => panic!("a negative colour was accepted"),
+    }
+}
+
 /// A bundled file's text, by its path in the repository.
 fn bundled(name: &str) -> &'static str {
     &bases()

@@ -974,8 +974,8 @@ fn color<R: Real>(c: Triple, field: Field<'_>, range: ColorRange) -> Result<V3<R
             ColorRange::Material => "a material colour",
             ColorRange::Background => "the background colour",
         };
-        // The numbers as the file writes them (2, not 2.0).
-        let [r, g, b] = c;
+        // The numbers as the file writes them (2, not 2.0; 1e39, not 40 digits).
+        let [r, g, b] = c.map(show);
         return Err(Invalid::new(
             field,
             format!("{what} has a negative component: [{r}, {g}, {b}]"),
