@@ -555,18 +555,18 @@ fn an_output_that_cannot_be_written_stops_before_anything_is_and_says_no_graded_
     let (code, err) = run(&["-o", "nodir/r.csv"]);
     assert_eq!(code, Some(2), "{err}");
     assert!(
-        err.contains("--output: the folder nodir does not exist"),
+        err.contains("cannot write nodir/r.csv: the folder nodir does not exist"),
         "{err}"
     );
     assert!(
-        err.contains("Fix: create the folder (mkdir -p nodir)"),
+        err.contains("Fix: create it first (mkdir -p nodir)"),
         "{err}"
     );
     assert!(!err.contains("graded"), "{err}");
     let (code, err) = run(&["-o", "r.csv", "--summary", "nodir/s.csv"]);
     assert_eq!(code, Some(2), "{err}");
     assert!(
-        err.contains("--summary: the folder nodir does not exist"),
+        err.contains("cannot write nodir/s.csv: the folder nodir does not exist"),
         "{err}"
     );
     assert!(
@@ -583,7 +583,7 @@ fn an_output_that_cannot_be_written_stops_before_anything_is_and_says_no_graded_
     ]);
     assert_eq!(code, Some(2), "{err}");
     assert!(
-        err.contains("--by-student: ") && err.contains("in.csv não é uma pasta"),
+        err.contains("escrever in.csv/t.csv: ") && err.contains("in.csv não é uma pasta"),
         "{err}"
     );
     assert!(!err.contains("avaliadas"), "{err}");

@@ -162,10 +162,27 @@ fn write_atomically(
 /// says it, without the temporary file's random name (which tempfile's error holds, and which
 /// the user never gave).
 fn not_in_folder(dir: &Path, e: std::io::Error) -> std::io::Error {
+    folder_problem(dir).unwrap_or_else(|| {
+        let inner = e
+            .get_ref()
+            .and_then(|i| i.source())
+            .and_then(|s| s.downcast_ref::<std::io::Error>())
+            .map(ToString::to_string);
+        match inner {
+            Some(text) => std::io::Error::new(e.kind(), text),
+            None => e,
+        }
+    })
+}
+
+/// Why no file can be written in `dir`, when it is missing or is not a folder: the folder the
+/// user named, with its fix, in English and in Portuguese (`None` when it is a folder). A
+/// command that writes several files asks this of each one's folder before writing any.
+pub(crate) fn folder_problem(dir: &Path) -> Option<std::io::Error> {
     use crate::report::messages::both;
     let shown = dir.display();
     match std::fs::metadata(dir) {
-        Err(m) if m.kind() == std::io::ErrorKind::NotFound => std::io::Error::new(
+        Err(m) if m.kind() == std::io::ErrorKind::NotFound => Some(std::io::Error::new(
             std::io::ErrorKind::NotFound,
             format!(
                 "{}. Fix: {}",
@@ -183,8 +200,8 @@ fn not_in_folder(dir: &Path, e: std::io::Error) -> std::io::Error {
                     ),
                 )
             ),
-        ),
-        Ok(m) if !m.is_dir() => std::io::Error::new(
+        )),
+        Ok(m) if !m.is_dir() => Some(std::io::Error::new(
             std::io::ErrorKind::NotADirectory,
             format!(
                 "{}. Fix: {}",
@@ -197,18 +214,8 @@ fn not_in_folder(dir: &Path, e: std::io::Error) -> std::io::Error {
                     "dê um caminho numa pasta que existe",
                 )
             ),
-        ),
-        _ => {
-            let inner = e
-                .get_ref()
-                .and_then(|i| i.source())
-                .and_then(|s| s.downcast_ref::<std::io::Error>())
-                .map(ToString::to_string);
-            match inner {
-                Some(text) => std::io::Error::new(e.kind(), text),
-                None => e,
-            }
-        }
+        )),
+        _ => None,
     }
 }
 

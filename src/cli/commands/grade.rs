@@ -52,7 +52,7 @@ pub(crate) fn run(args: &GradeArgs) -> Result<Exit, CliError> {
         // A Gradescope folder (`-o DIR/`) is created; any other output's folder must exist.
         let folder_output = flag == "--output" && args.format == GradeFormat::Gradescope;
         if let Some(path) = path.filter(|_| !folder_output) {
-            folder_exists(flag, path, args.lang)?;
+            folder_exists(path)?;
         }
     }
     let mut rubric = match &args.rubric {
@@ -168,44 +168,22 @@ fn gradescope(report: &check::grade::Report, args: &GradeArgs) -> Result<(), Cli
     Ok(())
 }
 
-/// Refuses, before anything is written, an output `path` (of `flag`) whose folder does not
-/// exist or is not a folder, so that a bad `--summary` does not leave the report written with
-/// an error; the message names the folder and the fix, in `lang`. `-` (standard output) and a
-/// path in the current folder pass.
-fn folder_exists(flag: &str, path: &Path, lang: crate::report::lang::Lang) -> Result<(), CliError> {
-    use crate::report::lang::Lang;
+/// Refuses, before anything is written, an output `path` whose folder does not exist or is not
+/// a folder, so that a bad `--summary` does not leave the report written with an error; the
+/// error is the one writing the file would give ([`crate::cli::files::folder_problem`]).
+/// `-` (standard output) and a path in the current folder pass.
+fn folder_exists(path: &Path) -> Result<(), CliError> {
     if output::is_dash(path) {
         return Ok(());
     }
     let Some(folder) = path.parent().filter(|f| !f.as_os_str().is_empty()) else {
         return Ok(());
     };
-    if folder.is_dir() {
-        return Ok(());
+    match crate::cli::files::folder_problem(folder) {
+        None => Ok(()),
+        Some(source) => Err(CliError::Write {
+            path: Some(path.to_owned()),
+            source,
+        }),
     }
-    let (f, p) = (folder.display(), path.display());
-    let exists = folder.exists();
-    let (message, fix) = match (lang, exists) {
-        (Lang::En, false) => (
-            format!("the folder {f} does not exist, so {p} cannot be written; nothing was written"),
-            format!("create the folder (mkdir -p {f}) or give a path in a folder that exists"),
-        ),
-        (Lang::En, true) => (
-            format!("{f} is not a folder, so {p} cannot be written; nothing was written"),
-            "give a path in a folder that exists".to_owned(),
-        ),
-        (Lang::Pt, false) => (
-            format!("a pasta {f} não existe, então {p} não pode ser escrito; nada foi escrito"),
-            format!("crie a pasta (mkdir -p {f}) ou dê um caminho numa pasta que existe"),
-        ),
-        (Lang::Pt, true) => (
-            format!("{f} não é uma pasta, então {p} não pode ser escrito; nada foi escrito"),
-            "dê um caminho numa pasta que existe".to_owned(),
-        ),
-    };
-    Err(CliError::Usage {
-        flag: flag.to_owned(),
-        message,
-        fix,
-    })
 }
