@@ -455,3 +455,29 @@ fn an_explained_mesh_pixel_names_its_triangle_in_portuguese() {
         "{text}"
     );
 }
+
+#[test]
+fn a_degenerate_obj_face_is_named_without_tobjs_placeholder() {
+    // QA report B, finding 22: "(model \"unnamed_object\")" named an object the file never
+    // gives; a file's own `o name` is still named, as an object.
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let flat = "v 0 0 0\nv 1 0 0\nv 2 0 0\nf 1 2 3\n";
+    std::fs::write(d.join("flat.obj"), flat).unwrap();
+    std::fs::write(d.join("named.obj"), format!("o wing\n{flat}")).unwrap();
+    std::fs::write(d.join("flat.json"), mesh_scene("flat.obj").to_string()).unwrap();
+    std::fs::write(d.join("named.json"), mesh_scene("named.obj").to_string()).unwrap();
+    let (code, stderr) = phong_in(d, &["render", "flat.json", "-o", "o.png"], b"");
+    assert_eq!(code, 2, "{stderr}");
+    assert!(stderr.contains("is degenerate in f64"), "{stderr}");
+    assert!(
+        !stderr.contains("unnamed_object") && !stderr.contains("model"),
+        "{stderr}"
+    );
+    let (_, stderr) = phong_in(
+        d,
+        &["render", "named.json", "-o", "o.png", "--lang", "pt"],
+        b"",
+    );
+    assert!(stderr.contains("(objeto \"wing\")"), "{stderr}");
+}

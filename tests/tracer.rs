@@ -721,3 +721,13 @@ fn an_explained_pixel_states_the_readings_of_level_and_weight() {
         );
     }
 }
+
+#[test]
+fn export_pov_help_offers_only_the_samples_it_can_export() {
+    // `export-pov --samples 4` is refused (POV-Ray cannot average phong's samples), so its help
+    // must not offer render's "1 to 4096".
+    let out = phong().args(["export-pov", "--help"]).output().unwrap();
+    let help = String::from_utf8(out.stdout).unwrap();
+    let line = help.lines().find(|l| l.contains("--samples")).unwrap();
+    assert!(line.contains("only 1") && !line.contains("4096"), "{line}");
+}

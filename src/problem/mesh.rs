@@ -218,13 +218,18 @@ pub fn load_obj<R: Real>(path: &Path) -> Result<Vec<Triangle<R>>, MeshError> {
                 p: [corner(face[0])?, corner(face[1])?, corner(face[2])?],
             };
             if t.normal().is_none() {
+                // The object's name when the file gives one (`o name`); tobj's placeholder for
+                // a file without `o` lines is not the user's word.
+                let object = match model.name.as_str() {
+                    "unnamed_object" | "" => String::new(),
+                    name => format!(" (object \"{name}\")"),
+                };
                 return Err(MeshError {
                     message: format!(
-                        "line {}: the face's triangle {} (model \"{}\") is degenerate in {}: its \
-                         corners lie on one line",
+                        "line {}: the face's triangle {}{object} is degenerate in {}: its corners \
+                         lie on one line",
                         faces.line_of(out.len()),
                         out.len(),
-                        model.name,
                         R::NAME
                     ),
                     fix: "remove the degenerate face from the OBJ file".into(),

@@ -1214,7 +1214,7 @@ const ERRORS_PT: &[(&str, &str)] = &[
     ),
     (": its corners lie on one line", ": seus vértices estão numa reta"),
     ("remove the degenerate face from the OBJ file", "remova a face degenerada do arquivo OBJ"),
-    (" (model ", " (modelo "),
+    (" (object ", " (objeto "),
     // Answers (check/answer.rs).
     ("the answer is empty: ", "a resposta está vazia: "),
     (

@@ -68,6 +68,10 @@ pub(crate) enum TradeoffFormat {
 }
 
 #[derive(Debug, Args)]
+#[command(mut_arg("samples", |a| a.help(
+    "Samples per pixel: only 1 can be exported (POV-Ray cannot average phong's stratified \
+     samples) [scene's, or 1]"
+)))]
 pub(crate) struct ExportPovArgs {
     /// The scene: a problem file with a "camera" and "surfaces".
     #[arg(value_name = "SCENE")]
