@@ -331,11 +331,16 @@ fn fraction_at(source: &str, line: usize, column: usize) -> Option<String> {
     if y == 0.0 {
         return None;
     }
-    let decimal = validate::show((x / y * 1e6).round() / 1e6);
+    let decimal = six_decimals(x / y);
     Some(both(
         &format!("JSON has no fractions: write {a}/{b} as a decimal, {decimal}"),
         &format!("o JSON não aceita frações: escreva {a}/{b} como decimal, {decimal}"),
     ))
+}
+
+/// `x` rounded to six decimals, as a fix writes a fraction's decimal (`3/7` → 0.428571).
+fn six_decimals(x: f64) -> String {
+    validate::show((x * 1e6).round() / 1e6)
 }
 
 /// A number written with a decimal comma (`"shininess": 0,5`, `"ambient": [0,5, 0,4, 0,6]`),
@@ -462,25 +467,18 @@ fn string_for_vector(message: &str) -> Option<String> {
     if expected != "an array of length 3" {
         return None;
     }
-    let number = |t: &str| -> Option<f64> {
-        let x = match t.split_once('/') {
-            Some((a, b)) => a.parse::<f64>().ok()? / b.parse::<f64>().ok()?,
-            None => t.parse::<f64>().ok()?,
-        };
-        x.is_finite().then_some(x)
-    };
-    let items: Vec<&str> = text
+    let numbers: Option<Vec<f64>> = text
         .split(|c: char| c.is_whitespace() || c == ';' || c == ',')
         .filter(|t| !t.is_empty())
+        .map(crate::check::answer::number)
         .collect();
-    let numbers: Option<Vec<f64>> = items.iter().map(|t| number(t)).collect();
     Some(match numbers.filter(|n| n.len() == 3) {
         Some(n) => {
             let array = format!(
                 "[{}, {}, {}]",
-                validate::show((n[0] * 1e6).round() / 1e6),
-                validate::show((n[1] * 1e6).round() / 1e6),
-                validate::show((n[2] * 1e6).round() / 1e6)
+                six_decimals(n[0]),
+                six_decimals(n[1]),
+                six_decimals(n[2])
             );
             both(
                 &format!("write the three numbers as a JSON array, without quotes, {array}"),
@@ -524,11 +522,7 @@ fn word_for_number(message: &str, field: Option<&str>) -> Option<String> {
             ),
         ));
     }
-    let number = |t: &str| match t.split_once('/') {
-        Some((a, b)) => Some(a.trim().parse::<f64>().ok()? / b.trim().parse::<f64>().ok()?),
-        None => t.parse::<f64>().ok(),
-    };
-    if let Some(x) = number(word.trim()).filter(|x| x.is_finite()) {
+    if let Some(x) = crate::check::answer::number(word.trim()) {
         return Some(both(
             &format!("a number is written without quotes: {}", validate::show(x)),
             &format!("um número se escreve sem aspas: {}", validate::show(x)),

@@ -8,7 +8,7 @@ use crate::cli::error::CliError;
 use crate::cli::exit::Exit;
 use crate::cli::output;
 use crate::core::{Precision, Real};
-use crate::problem::{self, Camera, Problem, ProblemError};
+use crate::problem::{self, ProblemError, SceneFile};
 use crate::tradeoff::{self, report, ReferenceSettings, Scenes, Sweep};
 
 pub(crate) fn run(args: &TradeoffArgs) -> Result<Exit, CliError> {
@@ -43,7 +43,12 @@ pub(crate) fn run(args: &TradeoffArgs) -> Result<Exit, CliError> {
             });
         }
     }
-    let (f64_scene, meshes) = load::<f64>(&args.scene, args.size)?;
+    let SceneFile {
+        problem,
+        camera,
+        meshes,
+    } = load::<f64>(&args.scene, args.size)?;
+    let f64_scene = (problem, camera);
     // The meshes the scene names are inputs too: no output may replace one.
     let meshes: Vec<&Path> = meshes.iter().map(PathBuf::as_path).collect();
     output::distinct(
@@ -54,7 +59,8 @@ pub(crate) fn run(args: &TradeoffArgs) -> Result<Exit, CliError> {
         ],
     )?;
     let f32_scene = if args.precisions.contains(&Precision::F32) {
-        Some(load::<f32>(&args.scene, args.size)?.0)
+        let s = load::<f32>(&args.scene, args.size)?;
+        Some((s.problem, s.camera))
     } else {
         None
     };
@@ -115,19 +121,11 @@ pub(crate) fn run(args: &TradeoffArgs) -> Result<Exit, CliError> {
 
 /// The scene in precision `R`, at `size` instead of the camera's when given, and the mesh files
 /// it names.
-#[allow(clippy::type_complexity)] // a scene (problem and camera) and its meshes
-fn load<R: Real>(
-    path: &Path,
-    size: Option<(u32, u32)>,
-) -> Result<((Problem<R>, Camera<R>), Vec<PathBuf>), ProblemError> {
-    let problem::SceneFile {
-        problem: p,
-        mut camera,
-        meshes,
-    } = problem::load_scene::<R>(path)?;
+fn load<R: Real>(path: &Path, size: Option<(u32, u32)>) -> Result<SceneFile<R>, ProblemError> {
+    let mut scene = problem::load_scene::<R>(path)?;
     if let Some((w, h)) = size {
-        camera.width = w;
-        camera.height = h;
+        scene.camera.width = w;
+        scene.camera.height = h;
     }
-    Ok(((p, camera), meshes))
+    Ok(scene)
 }
