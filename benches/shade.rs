@@ -56,6 +56,7 @@ fn material<R: Real>() -> Material<R> {
         o_s: Some(v3::<R>([0.2, 0.3, 0.4])),
         n_s: R::from_f64(16.0),
         o_r: None,
+        transmission: None,
     }
 }
 

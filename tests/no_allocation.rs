@@ -73,6 +73,7 @@ fn allocations_of_shading<R: Real>() -> usize {
         o_s: Some(v3::<R>([0.2, 0.3, 0.4])),
         n_s: R::from_f64(8.0),
         o_r: None,
+        transmission: None,
     };
     let mut sum = v3::<R>([0.0; 3]);
     let before = ALLOCATIONS.load(Ordering::SeqCst);

@@ -17,4 +17,19 @@ pub struct Material<R: Real> {
     pub n_s: R,
     /// O_r, the reflectivity of Section 4.4 (explicit, or equal to O_s).
     pub o_r: Option<V3<R>>,
+    /// O_t and η, the transmission of Section 4.4 ("idem para a transmissão ou refração, se
+    /// considerada"); `None` for an opaque material.
+    pub transmission: Option<Transmission<R>>,
+}
+
+/// A material's transmission (docs/conventions.md, "Transmission"): the transmissivity O_t,
+/// which scales the colour C_t a transmitted ray brings back as O_r scales C_r, and the index
+/// of refraction η of the material's inside (the side its surface's normal points away from),
+/// the outside's being 1.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Transmission<R: Real> {
+    /// O_t: an RGB colour, each component ≥ 0 (zero: no transmission ray, as with O_r).
+    pub o_t: V3<R>,
+    /// η > 0, the inside's index of refraction.
+    pub eta: R,
 }

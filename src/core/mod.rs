@@ -29,7 +29,7 @@ pub(crate) mod vector;
 
 pub use lanes::{LaneVec, Lanes, Mask, Wide};
 pub use light::{Arrival, Cone, ConeTest, Falloff, Light, LightKind, LightSet, Reach};
-pub use material::Material;
+pub use material::{Material, Transmission};
 pub use real::{Precision, Real, Vector, V3};
 pub use shade::{
     shade, AllVisible, LightStatus, LightTerm, NoRecord, Recorder, Shade, ShadingPoint,

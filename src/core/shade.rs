@@ -803,6 +803,7 @@ mod tests {
             o_s: Some(v3::<R>([0.2, 0.3, 0.4])),
             n_s: R::ONE,
             o_r: None,
+            transmission: None,
         }
     }
 
@@ -962,6 +963,7 @@ mod tests {
             o_s: Some(v3::<R>([1.0; 3])),
             n_s: R::from_f64(n_s),
             o_r: None,
+            transmission: None,
         };
         let lights = LightSet {
             ambient: None,

@@ -315,6 +315,15 @@ pub struct MaterialSpec {
     /// O_r (Section 4.4): an RGB colour, or "specular" to take O_r = O_s.
     #[serde(default)]
     pub reflectivity: Option<ReflectivitySpec>,
+    /// O_t (Section 4.4, "idem para a transmissão ou refração"): an RGB colour ≥ 0; a hit
+    /// spawns a transmission ray with colour O_t·C_t. Needs `ior`.
+    #[serde(default)]
+    pub transmissivity: Option<Triple>,
+    /// η > 0, the index of refraction of the surface's inside (the side its normal points away
+    /// from; the outside's is 1), for Snell's law. Given with `transmissivity`.
+    #[serde(default)]
+    #[schemars(range(min = 0))]
+    pub ior: Option<f64>,
 }
 
 /// A material colour: `[r, g, b]` (the product k·O) or `{"k": k, "color": [r, g, b]}`.

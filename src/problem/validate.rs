@@ -19,7 +19,9 @@ use super::model::{
     MAX_PIXEL_SAMPLES, MAX_SAMPLES,
 };
 use crate::core::vector::{between, is_unit_length, normalize};
-use crate::core::{Cone, Falloff, Light, LightKind, LightSet, Material, Real, Vector, V3};
+use crate::core::{
+    Cone, Falloff, Light, LightKind, LightSet, Material, Real, Transmission, Vector, V3,
+};
 use crate::geometry::{Plane, Ray, Shape, Sphere, Triangle};
 
 /// Validates a parsed problem in precision `R`; mesh files are looked up from the working
@@ -203,7 +205,7 @@ pub fn validate_in<R: Real>(
     if let Some(c) = &camera {
         check_work(c.width, c.height, render.samples).map_err(|e| e.at("render.samples"))?;
     }
-    Ok(Problem {
+    let problem = Problem {
         title: file.title.as_deref().map(Arc::from),
         title_pt: file.title_pt.as_deref().map(Arc::from),
         question: file.question.as_deref().map(Arc::from),
@@ -220,7 +222,13 @@ pub fn validate_in<R: Real>(
         },
         render,
         warnings: super::warnings::warnings(file),
-    })
+    };
+    if problem.camera.is_some() {
+        let s = &problem.render;
+        check_tree(&problem, s.max_level, s.min_weight.to_f64())
+            .map_err(|e| e.at("render.max_level"))?;
+    }
+    Ok(problem)
 }
 
 /// The camera: E ≠ the look-at point, `up` not along the line of sight, 0 < fov < 180, and an
@@ -371,6 +379,78 @@ pub(crate) fn check_work(width: u32, height: u32, samples: u32) -> Result<(), Se
             } else {
                 "give a smaller image".to_owned()
             },
+        ));
+    }
+    Ok(())
+}
+
+/// The most rays one sample's tree may hold (2^20): where a material both reflects and
+/// transmits, a hit spawns two rays and the tree may double at each level.
+pub(crate) const MAX_TREE_RAYS: u64 = 1 << 20;
+
+/// The rays one sample's tree can hold at most, with `max_level` and `min_weight`: 2^D − 1, D
+/// the deepest level a ray can reach (the maximum level, or fewer where every O_r and O_t is
+/// below 1 and the weight rule stops the rays first), when some material both reflects and
+/// transmits; D when none does (a chain).
+pub(crate) fn tree_rays<R: Real>(problem: &Problem<R>, max_level: u32, min_weight: f64) -> u64 {
+    let mut branches = false;
+    // The largest max(O) of any child a hit can spawn.
+    let mut most = 0.0f64;
+    for s in problem.surfaces() {
+        let m = &s.material.material;
+        let o_r = m.o_r.map_or(0.0, |o| o.max_element().to_f64());
+        let o_t = m.transmission.map_or(0.0, |t| t.o_t.max_element().to_f64());
+        branches |= o_r > 0.0 && o_t > 0.0;
+        most = most.max(o_r).max(o_t);
+    }
+    // A ray of level d has weight ≤ most^(d−1) and is traced only while that exceeds the
+    // minimum weight.
+    let mut depth = max_level;
+    if most < 1.0 && min_weight > 0.0 {
+        let mut w = 1.0f64;
+        let mut d = 1;
+        while d < max_level {
+            w *= most;
+            if w <= min_weight {
+                break;
+            }
+            d += 1;
+        }
+        depth = d;
+    }
+    if branches {
+        if depth >= 63 {
+            u64::MAX
+        } else {
+            (1u64 << depth) - 1
+        }
+    } else {
+        u64::from(depth)
+    }
+}
+
+/// One sample's tree within [`MAX_TREE_RAYS`] rays: refused rather than run for hours.
+pub(crate) fn check_tree<R: Real>(
+    problem: &Problem<R>,
+    max_level: u32,
+    min_weight: f64,
+) -> Result<(), SettingError> {
+    let rays = tree_rays(problem, max_level, min_weight);
+    if rays > MAX_TREE_RAYS {
+        let shown = if rays == u64::MAX {
+            "more than 2^63".to_owned()
+        } else {
+            rays.to_string()
+        };
+        return Err(SettingError::new(
+            format!(
+                "maximum level {max_level} with minimum weight {} lets one sample's ray tree \
+                 hold {shown} rays (a material both reflects and transmits, so each hit can \
+                 spawn two rays), more than the {MAX_TREE_RAYS} (2^20) a tree may hold",
+                show(min_weight)
+            ),
+            "give a maximum level of at most 20, or a larger minimum weight (e.g. 0.01), \
+             which stops the rays whose weight w = w_p·max(O) has fallen below it",
         ));
     }
     Ok(())
@@ -930,6 +1010,7 @@ fn material<R: Real>(spec: &MaterialSpec, field: Field<'_>) -> Result<NamedMater
             }
         },
     };
+    let transmission = transmission::<R>(spec, &field)?;
     Ok(NamedMaterial {
         name: None,
         spec: std::sync::Arc::new(spec.clone()),
@@ -939,9 +1020,46 @@ fn material<R: Real>(spec: &MaterialSpec, field: Field<'_>) -> Result<NamedMater
             o_s,
             n_s,
             o_r,
+            transmission,
         },
         reflectivity: source,
     })
+}
+
+/// O_t and η (docs/conventions.md, "Transmission"): both or neither, O_t a colour in [0, 1]
+/// and η a finite number > 0.
+fn transmission<R: Real>(
+    spec: &MaterialSpec,
+    field: &Field<'_>,
+) -> Result<Option<Transmission<R>>, Invalid> {
+    let f = |name: &'static str| Field::Key(field, name);
+    match (spec.transmissivity, spec.ior) {
+        (None, None) => Ok(None),
+        (Some(_), None) => Err(Invalid::new(
+            f("ior"),
+            "is missing, and the material has a transmissivity",
+            "give the index of refraction of the material's inside, e.g. \"ior\": 1.5 for \
+             glass (the outside's is 1); Snell's law needs it to bend the transmitted ray",
+        )),
+        (None, Some(_)) => Err(Invalid::new(
+            f("transmissivity"),
+            "is missing, and the material has an index of refraction",
+            "give the transmissivity O_t as [r, g, b] (e.g. [0.9, 0.9, 0.9]), or remove \
+             \"ior\": without O_t no ray is transmitted",
+        )),
+        (Some(o_t), Some(eta)) => {
+            let o_t = color::<R>(o_t, f("transmissivity"), ColorRange::Material)?;
+            let value = number::<R>(eta, f("ior"))?;
+            if eta <= 0.0 || value <= R::ZERO {
+                return Err(Invalid::new(
+                    f("ior"),
+                    format!("{} is not a positive number", show(eta)),
+                    "an index of refraction is > 0 (1 for air, 1.33 for water, 1.5 for glass)",
+                ));
+            }
+            Ok(Some(Transmission { o_t, eta: value }))
+        }
+    }
 }
 
 fn material_color<R: Real>(c: &ColorSpec, field: Field<'_>) -> Result<V3<R>, Invalid> {

@@ -16,7 +16,7 @@ use crate::core::real::to_f64_array;
 use crate::core::{Real, Vector, V3};
 use crate::problem::Problem;
 use crate::tracer::explain::{PixelExplanation, RayExplanation};
-use crate::tracer::trace::Stop;
+use crate::tracer::trace::{RayKind, RayRecord, Stop, TransmissionRecord};
 
 fn v<R: Real>(x: V3<R>) -> String {
     vec3(to_f64_array::<R>(x))
@@ -54,6 +54,36 @@ pub(crate) fn stop_reason_in(stop: Stop, lang: Lang) -> &'static str {
             "the reflection ray's weight w_s = w_p·max(O_r) would not exceed the minimum weight",
             "o peso do raio de reflexão w_s = w_p·max(O_r) não passaria do peso mínimo",
         ),
+        Stop::NotTransmissive => pick(
+            lang,
+            "the surface's transmissivity O_t is zero: no transmission ray",
+            "a transmissividade O_t da superfície é zero: sem raio de transmissão",
+        ),
+        Stop::TotalInternalReflection => pick(
+            lang,
+            "total internal reflection: k = 1 − η_r²(1 − cos²θ_i) < 0, the ray meets the surface \
+             beyond the critical angle, and Snell's law has no transmitted direction",
+            "reflexão interna total: k = 1 − η_r²(1 − cos²θ_i) < 0, o raio atinge a superfície \
+             além do ângulo crítico e a lei de Snell não tem direção transmitida",
+        ),
+    }
+}
+
+/// Why a hit spawns no transmission ray, in `lang` (the level and weight rules said of the
+/// transmission ray, the others as [`stop_reason_in`] says them).
+pub(crate) fn transmission_stop_in(stop: Stop, lang: Lang) -> &'static str {
+    match stop {
+        Stop::MaxLevel => pick(
+            lang,
+            "the transmission ray's level would exceed the maximum level",
+            "o nível de recursão do raio de transmissão passaria do nível máximo",
+        ),
+        Stop::MinWeight => pick(
+            lang,
+            "the transmission ray's weight w_t = w_p·max(O_t) would not exceed the minimum weight",
+            "o peso do raio de transmissão w_t = w_p·max(O_t) não passaria do peso mínimo",
+        ),
+        other => stop_reason_in(other, lang),
     }
 }
 
@@ -150,6 +180,29 @@ pub fn report<R: Real>(
             if s.samples == 1 { "" } else { "s" },
         ),
     );
+    let transmits = problem
+        .surfaces()
+        .iter()
+        .any(|s| s.material.material.transmission.is_some());
+    let settings = if transmits {
+        let min = n(s.min_weight);
+        settings
+            + &pick(
+                lang,
+                format!(
+                    " A transmission ray is traced under the same rules, with weight w_t = \
+                     w_p·max(O_t) > {min}; total internal reflection spawns none \
+                     (docs/conventions.md, \"Transmission\")."
+                ),
+                format!(
+                    " Um raio de transmissão é traçado pelas mesmas regras, com peso w_t = \
+                     w_p·max(O_t) > {min}; a reflexão interna total não gera nenhum \
+                     (docs/conventions.md, \"Transmission\")."
+                ),
+            )
+    } else {
+        settings
+    };
     let samples = e
         .samples
         .iter()
@@ -173,24 +226,51 @@ pub fn report<R: Real>(
                     num(sy)
                 ),
             );
+            let records: Vec<&RayRecord<R>> = sample.rays.iter().map(|r| &r.record).collect();
+            let tree = records.iter().any(|r| r.transmission.is_some());
             let rays = sample
                 .rays
                 .iter()
-                .map(|ray| ray_report(file, problem, ray, lang, &mut seen))
+                .enumerate()
+                .map(|(i, ray)| {
+                    let at = Place {
+                        index: i,
+                        records: &records,
+                        tree,
+                    };
+                    ray_report(file, problem, ray, at, lang, &mut seen)
+                })
                 .collect();
             let c = sample.color.to_array().map(|x| x.max(R::ZERO).min(R::ONE));
             let clamped = v::<R>(V3::<R>::new(c[0], c[1], c[2]));
-            let color = pick(
-                lang,
-                format!(
-                    "Colour of the path: C = Σ factor·C_local = {}, clamped {clamped}",
-                    v::<R>(sample.color)
+            let color = match tree {
+                false => pick(
+                    lang,
+                    format!(
+                        "Colour of the path: C = Σ factor·C_local = {}, clamped {clamped}",
+                        v::<R>(sample.color)
+                    ),
+                    format!(
+                        "Cor do caminho: C = Σ fator·C_local = {}, limitada {clamped}",
+                        v::<R>(sample.color)
+                    ),
                 ),
-                format!(
-                    "Cor do caminho: C = Σ fator·C_local = {}, limitada {clamped}",
-                    v::<R>(sample.color)
+                true => pick(
+                    lang,
+                    format!(
+                        "Colour of the ray tree: C = Σ factor·C_local over its {} rays = {}, \
+                         clamped {clamped}",
+                        records.len(),
+                        v::<R>(sample.color)
+                    ),
+                    format!(
+                        "Cor da árvore de raios: C = Σ fator·C_local sobre seus {} raios = {}, \
+                         limitada {clamped}",
+                        records.len(),
+                        v::<R>(sample.color)
+                    ),
                 ),
-            );
+            };
             SampleReport {
                 heading,
                 rays,
@@ -252,32 +332,62 @@ fn problem_explanation<R: Real>(
     (title, source, super::explain::data_rows(problem, lang))
 }
 
+/// Where a ray stands in its sample's tree: its index among the records (breadth first), the
+/// records, and whether the tree branches anywhere (a material transmits): a chain's rays are
+/// said as before, a tree's name their parent and children.
+#[derive(Clone, Copy)]
+struct Place<'a, R: Real> {
+    index: usize,
+    records: &'a [&'a RayRecord<R>],
+    tree: bool,
+}
+
+impl<R: Real> Place<'_, R> {
+    /// The number (from 1) of this ray's child of `kind`, when it was traced.
+    fn child(&self, kind: RayKind) -> Option<usize> {
+        self.records
+            .iter()
+            .position(|r| r.parent == Some(self.index as u32) && r.kind == kind)
+            .map(|j| j + 1)
+    }
+}
+
 fn ray_report<R: Real>(
     file: &str,
     problem: &Problem<R>,
     ray: &RayExplanation<R>,
+    at: Place<'_, R>,
     lang: Lang,
     seen: &mut Vec<String>,
 ) -> RayReport {
     let r = &ray.record;
-    let kind = match (r.level == 1, lang) {
-        (true, Lang::En) => "primary",
-        (false, Lang::En) => "reflection",
-        (true, Lang::Pt) => "primário",
-        (false, Lang::Pt) => "de reflexão",
+    let kind = match (r.kind, lang) {
+        (RayKind::Primary, Lang::En) => "primary",
+        (RayKind::Reflection, Lang::En) => "reflection",
+        (RayKind::Transmission, Lang::En) => "transmission",
+        (RayKind::Primary, Lang::Pt) => "primário",
+        (RayKind::Reflection, Lang::Pt) => "de reflexão",
+        (RayKind::Transmission, Lang::Pt) => "de transmissão",
+    };
+    let number = at.index + 1;
+    let from = match (at.tree, r.parent) {
+        (true, Some(p)) => pick(
+            lang,
+            format!(", from ray {}", p + 1),
+            format!(", do raio {}", p + 1),
+        ),
+        _ => String::new(),
     };
     let heading = pick(
         lang,
         format!(
-            "Ray {} ({kind}): level {}, weight w = {}, factor in the pixel {}",
-            r.level,
+            "Ray {number} ({kind}{from}): level {}, weight w = {}, factor in the pixel {}",
             r.level,
             n(r.weight),
             v::<R>(r.factor)
         ),
         format!(
-            "Raio {} ({kind}): nível {}, peso w = {}, fator no pixel {}",
-            r.level,
+            "Raio {number} ({kind}{from}): nível {}, peso w = {}, fator no pixel {}",
             r.level,
             n(r.weight),
             v::<R>(r.factor)
@@ -291,22 +401,54 @@ fn ray_report<R: Real>(
             format!("parte do olho O = {}", v::<R>(r.ray.origin)),
         )),
         Some(sp) => {
-            origin.push(format!(
-                "R_V = V − 2(N·V)N = {}  (Eq. 4.17)",
-                v::<R>(r.ray.direction)
-            ));
+            let parent = r.parent.and_then(|p| at.records.get(p as usize));
+            let refraction = parent.and_then(|p| p.transmission);
+            match (r.kind, refraction) {
+                (RayKind::Transmission, Some(t)) => {
+                    let f = t.refraction;
+                    origin.push(pick(
+                        lang,
+                        format!(
+                            "T = η_r V + (η_r cos θ_i − √k) N = {}  (Snell's law, η_r = η_i/η_t \
+                             = {}/{})",
+                            v::<R>(r.ray.direction),
+                            n(f.eta_i),
+                            n(f.eta_t)
+                        ),
+                        format!(
+                            "T = η_r V + (η_r cos θ_i − √k) N = {}  (lei de Snell, η_r = η_i/η_t \
+                             = {}/{})",
+                            v::<R>(r.ray.direction),
+                            n(f.eta_i),
+                            n(f.eta_t)
+                        ),
+                    ));
+                }
+                _ => origin.push(format!(
+                    "R_V = V − 2(N·V)N = {}  (Eq. 4.17)",
+                    v::<R>(r.ray.direction)
+                )),
+            }
+            let side = match r.kind {
+                RayKind::Transmission => pick(
+                    lang,
+                    " (to the side it goes to: through the surface)",
+                    " (para o lado para onde vai: através da superfície)",
+                ),
+                _ => "",
+            };
             origin.push(pick(
                 lang,
                 format!(
                     "leaves P = {} offset along the surface's normal by the error bound of P ({}) \
-                     to O = {}",
+                     to O = {}{side}",
                     v::<R>(sp.from),
                     v::<R>(sp.p_error),
                     v::<R>(sp.origin)
                 ),
                 format!(
                     "parte de P = {} deslocado ao longo da normal da superfície pela cota do erro \
-                     de P ({}) para O = {}",
+                     de P ({}) para O = {}{side}",
                     v::<R>(sp.from),
                     v::<R>(sp.p_error),
                     v::<R>(sp.origin)
@@ -341,38 +483,133 @@ fn ray_report<R: Real>(
         }
         after.push(line);
     }
+    let (max, min) = (problem.render.max_level, n(problem.render.min_weight));
+    let level = r.level + 1;
+    // A chain's last ray says the path ends; a tree's rays say each child by itself.
+    let ends = !at.tree || r.hit.is_none();
     after.push(match r.stop {
-        Some(stop) => pick(
+        Some(stop) if ends => pick(
             lang,
             format!("The path ends here: {}.", stop_reason_in(stop, lang)),
             format!("O caminho termina aqui: {}.", stop_reason_in(stop, lang)),
         ),
+        Some(stop) => pick(
+            lang,
+            format!("No reflection ray: {}.", stop_reason_in(stop, lang)),
+            format!("Sem raio de reflexão: {}.", stop_reason_in(stop, lang)),
+        ),
         None => {
-            let (level, max, w, min) = (
-                r.level + 1,
-                problem.render.max_level,
-                n(r.next_weight.unwrap_or(R::ZERO)),
-                n(problem.render.min_weight),
-            );
+            let w = n(r.next_weight.unwrap_or(R::ZERO));
+            let which = match (at.tree, at.child(RayKind::Reflection)) {
+                (true, Some(k)) => pick(lang, format!(" (ray {k})"), format!(" (raio {k})")),
+                _ => String::new(),
+            };
             pick(
                 lang,
                 format!(
-                    "A reflection ray follows: level {level} ≤ {max} and weight {w} > {min}; it \
-                     adds O_r·C_r."
+                    "A reflection ray follows{which}: level {level} ≤ {max} and weight {w} > \
+                     {min}; it adds O_r·C_r."
                 ),
                 format!(
-                    "Segue um raio de reflexão: nível {level} ≤ {max} e peso {w} > {min}; ele \
-                     soma O_r·C_r."
+                    "Segue um raio de reflexão{which}: nível {level} ≤ {max} e peso {w} > {min}; \
+                     ele soma O_r·C_r."
                 ),
             )
         }
     });
+    if let Some(t) = &r.transmission {
+        after.extend(transmission_lines(t, &at, (level, max, &min), lang));
+    }
+    if at.tree && r.hit.is_some() && r.is_leaf() {
+        after.push(pick(
+            lang,
+            "This branch of the tree ends here.".to_owned(),
+            "Este ramo da árvore termina aqui.".to_owned(),
+        ));
+    }
     RayReport {
         heading,
         origin,
         explanation,
         after,
     }
+}
+
+/// What a hit's transmission says: O_t and the weight, Snell's law there, and the transmission
+/// ray that follows or why none does. `next` is the child's level, the maximum level and the
+/// minimum weight.
+fn transmission_lines<R: Real>(
+    t: &TransmissionRecord<R>,
+    at: &Place<'_, R>,
+    next: (u32, u32, &str),
+    lang: Lang,
+) -> Vec<String> {
+    let (level, max, min) = next;
+    let f = &t.refraction;
+    let mut lines = vec![format!(
+        "O_t = {}; w_t = w_p·max(O_t) = {}",
+        v::<R>(t.o_t),
+        n(t.weight)
+    )];
+    let (side_en, side_pt) = if f.entering {
+        (
+            "the ray enters the material (it meets the surface against its normal)",
+            "o raio entra no material (atinge a superfície contra a sua normal)",
+        )
+    } else {
+        (
+            "the ray leaves the material (it meets the surface along its normal)",
+            "o raio sai do material (atinge a superfície no sentido da sua normal)",
+        )
+    };
+    lines.push(pick(
+        lang,
+        format!(
+            "Snell's law: {side_en}, η_i = {}, η_t = {}; cos θ_i = −N·V = {}; k = 1 − \
+             η_r²(1 − cos²θ_i) = {}",
+            n(f.eta_i),
+            n(f.eta_t),
+            n(f.cos_i),
+            n(f.k)
+        ),
+        format!(
+            "Lei de Snell: {side_pt}, η_i = {}, η_t = {}; cos θ_i = −N·V = {}; k = 1 − \
+             η_r²(1 − cos²θ_i) = {}",
+            n(f.eta_i),
+            n(f.eta_t),
+            n(f.cos_i),
+            n(f.k)
+        ),
+    ));
+    lines.push(match t.stop {
+        Some(stop) => pick(
+            lang,
+            format!("No transmission ray: {}.", transmission_stop_in(stop, lang)),
+            format!(
+                "Sem raio de transmissão: {}.",
+                transmission_stop_in(stop, lang)
+            ),
+        ),
+        None => {
+            let which = match at.child(RayKind::Transmission) {
+                Some(k) => pick(lang, format!(" (ray {k})"), format!(" (raio {k})")),
+                None => String::new(),
+            };
+            let w = n(t.weight);
+            pick(
+                lang,
+                format!(
+                    "A transmission ray follows{which}: level {level} ≤ {max} and weight {w} > \
+                     {min}; it adds O_t·C_t."
+                ),
+                format!(
+                    "Segue um raio de transmissão{which}: nível {level} ≤ {max} e peso {w} > \
+                     {min}; ele soma O_t·C_t."
+                ),
+            )
+        }
+    });
+    lines
 }
 
 /// The text report, in English.
@@ -568,7 +805,7 @@ pub struct PixelOut<'a, R: Real> {
     pub pixel: [u32; 2],
     /// The tracer's settings the pixel was traced with.
     pub settings: SettingsOut<R>,
-    /// Each sample of the pixel, with its path.
+    /// Each sample of the pixel, with its ray tree.
     pub samples: Vec<SampleOut<'a, R>>,
     /// The pixel's 8-bit colour, as in the image: round(255·c) of its samples' clamped mean.
     pub rgb8: [u8; 3],
@@ -594,20 +831,27 @@ pub struct SettingsOut<R: Real> {
 pub struct SampleOut<'a, R: Real> {
     /// (sx, sy) in [0, 1)², from the pixel's top-left corner.
     pub position: [f64; 2],
-    /// The path's rays, primary first.
+    /// The tree's rays, primary first, breadth first.
     pub rays: Vec<RayOut<'a, R>>,
     /// The path's colour, unclamped: Σ factor·local over its rays.
     pub color: V3<R>,
 }
 
-/// An entry of a sample's `rays`: one ray of the path.
+/// An entry of a sample's `rays`: one ray of the tree, breadth first (reflection before
+/// transmission at each hit).
 #[derive(Serialize)]
 pub struct RayOut<'a, R: Real> {
-    /// The ray's level: 1 for the primary ray, its parent's + 1 for a reflection ray.
+    /// "primary", "reflection" or "transmission".
+    pub kind: RayKind,
+    /// The index in `rays` of the ray it was spawned from; `null` for the primary ray.
+    pub parent: Option<u32>,
+    /// The ray's level: 1 for the primary ray, its parent's + 1 for a secondary ray.
     pub level: u32,
-    /// w: 1 for the primary ray, w_p·max(O_r) for a reflection ray.
+    /// w: 1 for the primary ray, w_p·max(O_r) for a reflection ray, w_p·max(O_t) for a
+    /// transmission ray.
     pub weight: R,
-    /// The product of the O_r of the hits before this ray: its colour's factor in the pixel.
+    /// The product of the O_r and O_t on the way from the primary ray: its colour's factor in
+    /// the pixel.
     pub factor: V3<R>,
     /// The ray's origin.
     pub origin: V3<R>,
@@ -625,15 +869,43 @@ pub struct RayOut<'a, R: Real> {
     /// The weight a reflection ray from this hit would have; `null` when there is none to
     /// weigh.
     pub next_weight: Option<R>,
-    /// Why the path ended at this ray; `null` when a reflection ray follows.
+    /// Why no reflection ray follows this one ("miss" on a miss); `null` when one does.
     pub stop: Option<Stop>,
     /// The reason in `stop`, as an English sentence.
     pub stop_message: Option<&'static str>,
+    /// The transmission at the hit; `null` when the material has no transmissivity.
+    pub transmission: Option<TransmissionOut<R>>,
     /// The solver's document for the equivalent ray problem (as `phong solve --format json`).
     pub solve: Option<json::Document<'a, R>>,
 }
 
-/// `spawned_from`: where a reflection ray left from.
+/// `transmission`: Snell's law at a hit and the transmission ray (docs/conventions.md,
+/// "Transmission").
+#[derive(Serialize)]
+pub struct TransmissionOut<R: Real> {
+    /// O_t at the hit.
+    pub transmissivity: V3<R>,
+    /// Whether the ray enters the material (it meets the surface against its own normal).
+    pub entering: bool,
+    /// η_i, the index of the medium the ray travels in.
+    pub eta_i: R,
+    /// η_t, the index beyond the surface.
+    pub eta_t: R,
+    /// cos θ_i = −N·V, N facing the ray.
+    pub cos_i: R,
+    /// k = 1 − η_r²(1 − cos²θ_i); negative under total internal reflection.
+    pub k: R,
+    /// T, the transmitted direction (unit); `null` under total internal reflection.
+    pub direction: Option<V3<R>>,
+    /// w_t = w_p·max(O_t).
+    pub weight: R,
+    /// Why no transmission ray follows; `null` when one does.
+    pub stop: Option<Stop>,
+    /// The reason in `stop`, as an English sentence.
+    pub stop_message: Option<&'static str>,
+}
+
+/// `spawned_from`: where a secondary ray left from.
 #[derive(Serialize)]
 pub struct SpawnOut<R: Real> {
     /// The hit point it leaves.
@@ -676,6 +948,8 @@ pub fn document<'a, R: Real>(
                     .map(|ray| {
                         let r = &ray.record;
                         RayOut {
+                            kind: r.kind,
+                            parent: r.parent,
                             level: r.level,
                             weight: r.weight,
                             factor: r.factor,
@@ -693,6 +967,18 @@ pub fn document<'a, R: Real>(
                             next_weight: r.next_weight,
                             stop: r.stop,
                             stop_message: r.stop.map(stop_reason),
+                            transmission: r.transmission.map(|t| TransmissionOut {
+                                transmissivity: t.o_t,
+                                entering: t.refraction.entering,
+                                eta_i: t.refraction.eta_i,
+                                eta_t: t.refraction.eta_t,
+                                cos_i: t.refraction.cos_i,
+                                k: t.refraction.k,
+                                direction: t.refraction.direction,
+                                weight: t.weight,
+                                stop: t.stop,
+                                stop_message: t.stop.map(|s| transmission_stop_in(s, Lang::En)),
+                            }),
                             solve: ray
                                 .solution
                                 .as_ref()

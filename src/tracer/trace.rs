@@ -1,15 +1,21 @@
-//! One ray's path through the scene, Section 4.4. A Whitted tracer with reflection only follows
-//! a single path: the primary ray, then at each hit at most one reflection ray. Its colour is
-//! C = C_local,1 + O_r,1 (C_local,2 + O_r,2 (…)), accumulated front to back as
-//! Σ_k (O_r,1 ⋯ O_r,k−1) C_local,k, so no recursion and no allocation; the explanation shows
-//! each ray's factor and share.
+//! One ray's tree through the scene, Section 4.4. At each hit a Whitted tracer spawns at most
+//! a reflection ray (Eq. 4.17, where O_r ≠ 0) and a transmission ray ("idem para a transmissão
+//! ou refração, se considerada": where O_t ≠ 0, bent by Snell's law; docs/conventions.md,
+//! "Transmission"). A ray's colour is C = C_local + O_r C_r + O_t C_t; unrolled, the pixel's
+//! colour is Σ factor·C_local over the tree's rays, each ray's factor the product of the O_r
+//! and O_t on its way from the primary ray. The rays are taken breadth first, reflection before
+//! transmission at each hit: the order in which the wide tracer's queues take them, so that both
+//! add the same shares in the same order. Where nothing transmits the tree is a chain and is
+//! traced with no queue and no allocation.
 //!
 //! The local colour of every hit is the core's [`shade`], with the core's gating, given the
 //! hit's shadow rays ([`crate::geometry::SurfaceHit::shadow_rays`]); the normal facing the ray
-//! and the reflection ray's origin are the hit's too, as in the solver's ray problems.
+//! and the secondary rays' origins are the hit's too, as in the solver's ray problems.
+
+use std::collections::VecDeque;
 
 use crate::core::vector::normalize;
-use crate::core::{shade, Material, NoRecord, Real, ShadingPoint, Vector, V3};
+use crate::core::{shade, Material, NoRecord, Real, ShadingPoint, Transmission, Vector, V3};
 use crate::geometry::{Aggregate, AggregateHit, Ray, SurfaceHit};
 use crate::problem::Problem;
 
@@ -35,7 +41,7 @@ impl<R: Real> Scene<R> {
     }
 }
 
-/// Why a path ended.
+/// Why a ray spawns no reflection ray, or no transmission ray.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize)]
 #[serde(rename_all = "snake_case")]
 pub enum Stop {
@@ -43,10 +49,94 @@ pub enum Stop {
     Miss,
     /// The surface has no reflectivity (O_r absent or zero): no reflection ray.
     NotReflective,
-    /// The reflection ray's level would exceed the maximum level.
+    /// The child's level would exceed the maximum level.
     MaxLevel,
-    /// The reflection ray's weight w_s = w_p·max(O_r) would not exceed the minimum weight.
+    /// The child's weight (w_p·max(O_r), or w_p·max(O_t)) would not exceed the minimum weight.
     MinWeight,
+    /// The surface's transmissivity O_t is zero: no transmission ray.
+    NotTransmissive,
+    /// Snell's law has no solution (k < 0, the ray meets the surface beyond the critical angle
+    /// from the denser side): total internal reflection, no transmission ray.
+    TotalInternalReflection,
+}
+
+/// What a ray of the tree is.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum RayKind {
+    /// A pixel's ray, level 1.
+    Primary,
+    /// A reflection ray, Eq. 4.17.
+    Reflection,
+    /// A transmission ray, by Snell's law.
+    Transmission,
+}
+
+/// Snell's law at a hit, as the explanation shows it (docs/conventions.md, "Transmission"): the
+/// two media, the angle, and the transmitted direction T = η_r V + (η_r cos θ_i − √k) N, with
+/// N facing the ray, cos θ_i = −N·V, η_r = η_i/η_t and k = 1 − η_r²(1 − cos²θ_i).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Refraction<R: Real> {
+    /// Whether the ray enters the material (it arrives against the surface's own normal).
+    pub entering: bool,
+    /// η_i, the index of the medium the ray travels in.
+    pub eta_i: R,
+    /// η_t, the index of the medium beyond the surface.
+    pub eta_t: R,
+    /// cos θ_i = −N·V, with N facing the ray.
+    pub cos_i: R,
+    /// k = 1 − η_r²(1 − cos²θ_i) = cos²θ_t; negative beyond the critical angle.
+    pub k: R,
+    /// T, unit; `None` under total internal reflection (k < 0).
+    pub direction: Option<V3<R>>,
+}
+
+impl<R: Real> Refraction<R> {
+    /// Snell's law for a ray along `v` (unit) meeting a surface whose own normal is `normal`,
+    /// `n` being that normal turned to face the ray, with the material's `eta` inside.
+    #[inline]
+    pub fn at(v: V3<R>, normal: V3<R>, n: V3<R>, eta: R) -> Self {
+        // Against the surface's own normal: from the outside (index 1) into the material.
+        let entering = normal.dot(v) < R::ZERO;
+        let (eta_i, eta_t) = if entering {
+            (R::ONE, eta)
+        } else {
+            (eta, R::ONE)
+        };
+        let eta_r = eta_i / eta_t;
+        let cos_i = -n.dot(v);
+        // 1 − cos²θ_i, kept ≥ 0 against rounding.
+        let sin2_i = (R::ONE - cos_i * cos_i).max(R::ZERO);
+        let k = R::ONE - eta_r * eta_r * sin2_i;
+        let direction = if k < R::ZERO {
+            None
+        } else {
+            let t = v * eta_r + n * (eta_r * cos_i - k.sqrt());
+            normalize::<R>(t).map(|t| t.unit)
+        };
+        Refraction {
+            entering,
+            eta_i,
+            eta_t,
+            cos_i,
+            k,
+            direction,
+        }
+    }
+}
+
+/// A hit's transmission ray, as the explanation shows it: O_t, Snell's law there, the child's
+/// weight and why it was not traced.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct TransmissionRecord<R: Real> {
+    /// O_t at the hit.
+    pub o_t: V3<R>,
+    /// Snell's law at the hit.
+    pub refraction: Refraction<R>,
+    /// w_t = w_p·max(O_t), the weight the transmission ray has.
+    pub weight: R,
+    /// Why no transmission ray follows, or `None` when one does.
+    pub stop: Option<Stop>,
 }
 
 /// How many rays of each kind were traced.
@@ -56,14 +146,16 @@ pub struct Counts {
     pub primary: u64,
     /// Reflection rays (Eq. 4.17).
     pub reflection: u64,
+    /// Transmission rays (Snell's law).
+    pub transmission: u64,
     /// Shadow rays, from hit points to lights.
     pub shadow: u64,
 }
 
 impl Counts {
-    /// Every ray traced, of all three kinds.
+    /// Every ray traced, of all four kinds.
     pub fn total(&self) -> u64 {
-        self.primary + self.reflection + self.shadow
+        self.primary + self.reflection + self.transmission + self.shadow
     }
 }
 
@@ -71,6 +163,7 @@ impl std::ops::AddAssign for Counts {
     fn add_assign(&mut self, o: Counts) {
         self.primary += o.primary;
         self.reflection += o.reflection;
+        self.transmission += o.transmission;
         self.shadow += o.shadow;
     }
 }
@@ -89,18 +182,25 @@ pub struct Spawn<R: Real> {
     pub origin: V3<R>,
 }
 
-/// One ray of a path, as the explanation shows it.
+/// One ray of a tree, as the explanation shows it.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct RayRecord<R: Real> {
+    /// Primary, reflection or transmission.
+    pub kind: RayKind,
+    /// The index of the ray it was spawned from among its tree's records; `None` for the
+    /// primary ray.
+    pub parent: Option<u32>,
     /// 1 for the primary ray.
     pub level: u32,
-    /// w: 1 for the primary ray, w_p·max(O_r) for a reflection ray.
+    /// w: 1 for the primary ray, w_p·max(O_r) for a reflection ray, w_p·max(O_t) for a
+    /// transmission ray.
     pub weight: R,
-    /// The product of the O_r of the hits before this ray: its colour's factor in the pixel.
+    /// The product of the O_r and O_t on the way from the primary ray: its colour's factor in
+    /// the pixel.
     pub factor: V3<R>,
     /// The ray itself (unit direction).
     pub ray: Ray<R>,
-    /// For a reflection ray, where it left from.
+    /// For a secondary ray, where it left from.
     pub spawn: Option<Spawn<R>>,
     /// The nearest hit with t > 0; `None` on a miss.
     pub hit: Option<AggregateHit<R>>,
@@ -110,8 +210,17 @@ pub struct RayRecord<R: Real> {
     pub o_r: Option<V3<R>>,
     /// The weight a reflection ray would have, when there is one to weigh.
     pub next_weight: Option<R>,
-    /// Why the path ended here, or `None` when a reflection ray follows.
+    /// Why no reflection ray follows (on a miss: [`Stop::Miss`]), or `None` when one does.
     pub stop: Option<Stop>,
+    /// The transmission ray, where the material has a transmissivity.
+    pub transmission: Option<TransmissionRecord<R>>,
+}
+
+impl<R: Real> RayRecord<R> {
+    /// Whether no ray is spawned from this one: the tree ends here.
+    pub fn is_leaf(&self) -> bool {
+        self.stop.is_some() && self.transmission.is_none_or(|t| t.stop.is_some())
+    }
 }
 
 /// Receives each ray of a path; the hot path passes `()`, which records nothing.
@@ -120,7 +229,8 @@ pub trait PathRecorder<R: Real> {
     /// shows (where a reflection ray left from).
     const RECORDS: bool = true;
 
-    /// Receives one ray's record, in path order.
+    /// Receives one ray's record, in the tree's order (breadth first, reflection before
+    /// transmission).
     fn ray(&mut self, record: &RayRecord<R>);
 }
 
@@ -146,20 +256,24 @@ pub struct Tracer<'a, R: Real> {
 }
 
 /// Where a path stands between two bounces: the ray to trace next and what it carries. The
-/// scalar [`Tracer::trace`] keeps one; the wide tracer keeps a queue of them per bounce
-/// (`tracer::wide`), both stepping them with [`Tracer::step`]. Where a reflection ray left
-/// from ([`Spawn`]) is not carried: only a record shows it, and [`Tracer::trace`] keeps it
-/// beside the path when its recorder records.
+/// scalar [`Tracer::trace`] keeps a queue of them when the tree branches (one when it does not);
+/// the wide tracer keeps a queue of them per bounce (`tracer::wide`), both stepping them with
+/// [`Tracer::step`]. Where a secondary ray left from ([`Spawn`]) is not carried: only a record
+/// shows it, and [`Tracer::trace`] keeps it beside the path when its recorder records.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub(crate) struct PathState<R: Real> {
     /// The ray to trace next.
     pub ray: Ray<R>,
-    /// The product of the O_r of the hits before this ray.
+    /// The product of the O_r and O_t on the way from the primary ray.
     pub factor: V3<R>,
-    /// w: 1 for the primary ray, w_p·max(O_r) for a reflection ray.
+    /// w: 1 for the primary ray, w_p·max(O_r) or w_p·max(O_t) for a secondary ray.
     pub weight: R,
     /// 1 for the primary ray.
     pub level: u32,
+    /// Primary, reflection or transmission.
+    pub kind: RayKind,
+    /// The parent's index among the tree's records (only a recorder reads it).
+    pub parent: u32,
 }
 
 impl<R: Real> PathState<R> {
@@ -171,9 +285,14 @@ impl<R: Real> PathState<R> {
             factor: V3::<R>::splat(R::ONE),
             weight: R::ONE,
             level: 1,
+            kind: RayKind::Primary,
+            parent: u32::MAX,
         }
     }
 }
+
+/// The rays a hit spawns: its reflection ray, then its transmission ray.
+pub(crate) type Children<R> = [Option<PathState<R>>; 2];
 
 /// A hit's shadow rays as the core asks them ([`crate::core::Visibility`]), and how many were
 /// traced.
@@ -190,7 +309,8 @@ impl<R: Real> CountedVisibility<R> for crate::geometry::shadow::ShadowRays<'_, R
 }
 
 impl<R: Real> Tracer<'_, R> {
-    /// The colour seen along a primary ray, unclamped.
+    /// The colour seen along a primary ray, unclamped: the shares of its tree's rays, breadth
+    /// first.
     #[inline]
     pub fn trace<P: PathRecorder<R>>(
         &self,
@@ -201,14 +321,16 @@ impl<R: Real> Tracer<'_, R> {
         let infinity = R::from_f64(f64::INFINITY);
         let aggregate = &self.scene.aggregate;
         let mut color = V3::<R>::ZERO;
-        let mut path = PathState::primary(primary);
-        // Where the current ray left from, for the record (a reflection ray's only).
-        let mut spawn = None;
+        // The ray to trace now, with where it left from (for the record: a secondary ray's
+        // only); the rays waiting behind it, only once the tree branches.
+        let mut current = Some((PathState::primary(primary), None));
+        let mut pending: VecDeque<(PathState<R>, Option<Spawn<R>>)> = VecDeque::new();
+        let mut recorded = 0u32;
         counts.primary += 1;
-        loop {
+        while let Some((mut path, spawn)) = current.take() {
             // The nearest hit in front of the origin; a miss sees the background.
             let found = aggregate.nearest(&path.ray, infinity);
-            let (share, more) = self.bounce(
+            let (share, children) = self.bounce(
                 &mut path,
                 spawn,
                 found,
@@ -217,25 +339,39 @@ impl<R: Real> Tracer<'_, R> {
                 rec,
             );
             color += share;
-            if !more {
-                return color;
-            }
-            if P::RECORDS {
-                spawn = found.map(|h| Spawn {
-                    from: h.hit.p,
-                    p_error: h.hit.p_error,
-                    normal: h.hit.normal,
-                    origin: path.ray.origin,
-                });
+            let here = recorded;
+            recorded = recorded.wrapping_add(1);
+            let mut spawned = children.into_iter().flatten().map(|mut child| {
+                child.parent = here;
+                let spawn = if P::RECORDS {
+                    found.map(|h| Spawn {
+                        from: h.hit.p,
+                        p_error: h.hit.p_error,
+                        normal: h.hit.normal,
+                        origin: child.ray.origin,
+                    })
+                } else {
+                    None
+                };
+                (child, spawn)
+            });
+            // A chain (the only child, nothing waiting) goes on without the queue.
+            match (spawned.next(), spawned.next()) {
+                (Some(only), None) if pending.is_empty() => current = Some(only),
+                (first, second) => {
+                    pending.extend(first);
+                    pending.extend(second);
+                    current = pending.pop_front();
+                }
             }
         }
+        color
     }
 
     /// One step of a path whose ray found `found` (its nearest hit, or a miss): the ray's share
     /// of the pixel (the factor times the local colour, or times the background on a miss), and
-    /// whether a reflection ray follows, in which case `path` now holds it. `shadows` makes the
-    /// hit's shadow rays (asked only with shadows on). `spawn` is where the ray left from, for
-    /// the record.
+    /// the rays it spawns. `shadows` makes the hit's shadow rays (asked only with shadows on).
+    /// `spawn` is where the ray left from, for the record.
     #[inline]
     pub(crate) fn bounce<V: CountedVisibility<R>>(
         &self,
@@ -245,9 +381,9 @@ impl<R: Real> Tracer<'_, R> {
         shadows: impl FnOnce(&SurfaceHit<R>) -> V,
         counts: &mut Counts,
         rec: &mut impl PathRecorder<R>,
-    ) -> (V3<R>, bool) {
+    ) -> (V3<R>, Children<R>) {
         let Some(h) = found else {
-            return self.miss(path, spawn, rec);
+            return (self.miss(path, spawn, rec), [None, None]);
         };
         let m = &self.scene.materials[h.index];
         // N turned to face the incoming ray; V is the ray's direction (Eq. 4.10).
@@ -264,16 +400,18 @@ impl<R: Real> Tracer<'_, R> {
         self.step(path, spawn, &h, (n, local), counts, rec)
     }
 
-    /// The step of a path whose ray missed: its share is the factor times the background.
-    /// `spawn` is where the ray left from, for the record.
+    /// The share of a ray that missed: the factor times the background. `spawn` is where the
+    /// ray left from, for the record.
     #[inline]
     pub(crate) fn miss(
         &self,
         path: &PathState<R>,
         spawn: Option<Spawn<R>>,
         rec: &mut impl PathRecorder<R>,
-    ) -> (V3<R>, bool) {
+    ) -> V3<R> {
         rec.ray(&RayRecord {
+            kind: path.kind,
+            parent: (path.parent != u32::MAX).then_some(path.parent),
             level: path.level,
             weight: path.weight,
             factor: path.factor,
@@ -284,33 +422,54 @@ impl<R: Real> Tracer<'_, R> {
             o_r: None,
             next_weight: None,
             stop: Some(Stop::Miss),
+            transmission: None,
         });
-        (path.factor * self.problem.background, false)
+        path.factor * self.problem.background
     }
 
     /// The rest of [`Tracer::bounce`] once the hit `h` is shaded (`shaded`: the normal facing
-    /// the ray and the core's colour there), for both engines: the ray's share, the stop
-    /// rules and the reflection ray. `spawn` is where the ray left from, for the record.
+    /// the ray and the core's colour there), for both engines: the ray's share, the stop rules
+    /// and the rays it spawns, reflection first. `spawn` is where the ray left from, for the
+    /// record.
     #[inline]
     pub(crate) fn step(
         &self,
-        path: &mut PathState<R>,
+        path: &PathState<R>,
         spawn: Option<Spawn<R>>,
         h: &AggregateHit<R>,
         shaded: (V3<R>, V3<R>),
         counts: &mut Counts,
         rec: &mut impl PathRecorder<R>,
-    ) -> (V3<R>, bool) {
+    ) -> (V3<R>, Children<R>) {
         let (n, local) = shaded;
         let PathState {
             ray,
             factor,
             weight,
             level,
+            kind,
+            parent,
         } = *path;
         let m = &self.scene.materials[h.index];
         let share = factor * local;
+        let settings = &self.problem.render;
+        // A child is traced only where its colour (O_r, O_t) ≠ 0, its level ≤ the maximum and
+        // its weight w_p·max(O) above the minimum (docs/conventions.md, "Recursion level",
+        // "Weight", "Transmission").
+        let rules = |o: V3<R>| {
+            let w = weight * o.max_element();
+            let stop = if level >= settings.max_level {
+                Some(Stop::MaxLevel)
+            } else if w <= settings.min_weight {
+                Some(Stop::MinWeight)
+            } else {
+                None
+            };
+            (w, stop)
+        };
         let mut record = RayRecord {
+            kind,
+            parent: (parent != u32::MAX).then_some(parent),
             level,
             weight,
             factor,
@@ -321,43 +480,74 @@ impl<R: Real> Tracer<'_, R> {
             o_r: m.o_r,
             next_weight: None,
             stop: None,
+            transmission: None,
         };
-        // A reflection ray only where O_r ≠ 0, its level ≤ the maximum and its weight
-        // w_s = w_p·max(O_r) above the minimum (docs/conventions.md, "Recursion level",
-        // "Weight").
         record.stop = match m.o_r {
             None => Some(Stop::NotReflective),
             Some(o_r) if o_r == V3::<R>::ZERO => Some(Stop::NotReflective),
             Some(o_r) => {
-                let w_s = weight * o_r.max_element();
+                let (w_s, stop) = rules(o_r);
                 record.next_weight = Some(w_s);
-                if level >= self.problem.render.max_level {
-                    Some(Stop::MaxLevel)
-                } else if w_s <= self.problem.render.min_weight {
-                    Some(Stop::MinWeight)
-                } else {
-                    None
-                }
+                stop
             }
         };
-        rec.ray(&record);
-        if record.stop.is_some() {
-            return (share, false);
+        let mut children: Children<R> = [None, None];
+        if record.stop.is_none() {
+            let o_r = m.o_r.expect("a reflection ray needs O_r");
+            // The reflection direction R_V = V − 2(N·V)N, Eq. 4.17.
+            let r_v = ray.direction - n * (R::TWO * n.dot(ray.direction));
+            if let Some(r_v) = normalize::<R>(r_v) {
+                children[0] = Some(PathState {
+                    ray: h.hit.spawn_ray(r_v.unit),
+                    factor: factor * o_r,
+                    weight: weight * o_r.max_element(),
+                    level: level + 1,
+                    kind: RayKind::Reflection,
+                    parent: u32::MAX,
+                });
+                counts.reflection += 1;
+            }
         }
-        let o_r = m.o_r.expect("a reflection ray needs O_r");
-        // The reflection direction R_V = V − 2(N·V)N, Eq. 4.17.
-        let r_v = ray.direction - n * (R::TWO * n.dot(ray.direction));
-        let Some(r_v) = normalize::<R>(r_v) else {
-            return (share, false);
-        };
-        let next = h.hit.spawn_ray(r_v.unit);
-        *path = PathState {
-            ray: next,
-            factor: factor * o_r,
-            weight: weight * o_r.max_element(),
-            level: level + 1,
-        };
-        counts.reflection += 1;
-        (share, true)
+        if let Some(Transmission { o_t, eta }) = m.transmission {
+            let (w_t, mut stop) = if o_t == V3::<R>::ZERO {
+                (R::ZERO, Some(Stop::NotTransmissive))
+            } else {
+                rules(o_t)
+            };
+            // Snell's law only where a ray may follow, or where the record shows it.
+            let refraction = (stop.is_none() || rec_records(rec))
+                .then(|| Refraction::at(ray.direction, h.hit.normal, n, eta));
+            if let Some(r) = refraction {
+                match (stop, r.direction) {
+                    (None, Some(t)) => {
+                        children[1] = Some(PathState {
+                            ray: h.hit.spawn_ray(t),
+                            factor: factor * o_t,
+                            weight: w_t,
+                            level: level + 1,
+                            kind: RayKind::Transmission,
+                            parent: u32::MAX,
+                        });
+                        counts.transmission += 1;
+                    }
+                    (None, None) => stop = Some(Stop::TotalInternalReflection),
+                    _ => {}
+                }
+                record.transmission = Some(TransmissionRecord {
+                    o_t,
+                    refraction: r,
+                    weight: w_t,
+                    stop,
+                });
+            }
+        }
+        rec.ray(&record);
+        (share, children)
     }
+}
+
+/// Whether `rec` keeps what it receives.
+#[inline(always)]
+fn rec_records<R: Real, P: PathRecorder<R>>(_: &P) -> bool {
+    P::RECORDS
 }

@@ -239,6 +239,7 @@ fn rays_json(c: &Counts) -> Value {
     json!({
         "primary": c.primary,
         "reflection": c.reflection,
+        "transmission": c.transmission,
         "shadow": c.shadow,
         "total": c.total(),
     })
@@ -308,6 +309,7 @@ pub fn csv(s: &Summary) -> String {
         "median_s",
         "rays_primary",
         "rays_reflection",
+        "rays_transmission",
         "rays_shadow",
         "rays_total",
         "max_abs",
@@ -331,6 +333,7 @@ pub fn csv(s: &Summary) -> String {
             m.median_s.to_string(),
             m.rays.primary.to_string(),
             m.rays.reflection.to_string(),
+            m.rays.transmission.to_string(),
             m.rays.shadow.to_string(),
             m.rays.total().to_string(),
             e.max_abs.to_string(),

@@ -102,10 +102,11 @@ fn stats_line<R: Real>(
     let surfaces = problem.surfaces().len();
     let s = if surfaces == 1 { "" } else { "s" };
     let (read, build) = (loaded.as_secs_f64(), built.as_secs_f64());
-    let (total, primary, reflection, shadow) = (
+    let (total, primary, reflection, transmission, shadow) = (
         counts.total(),
         counts.primary,
         counts.reflection,
+        counts.transmission,
         counts.shadow,
     );
     let (precision, engine) = (R::NAME, args.engine.name());
@@ -114,22 +115,28 @@ fn stats_line<R: Real>(
             "{w}×{h}, {samples} sample(s)/pixel, {precision}, {threads} thread(s): read and \
              validated in {read:.3} s, {surfaces} surface{s} prepared (BVH, flat lists) in \
              {build:.3} s, traced {total} rays ({primary} primary, {reflection} reflection, \
-             {shadow} shadow) in {secs:.3} s: {rate:.2} Mrays/s ({engine} engine)"
+             {transmission} transmission, {shadow} shadow) in {secs:.3} s: {rate:.2} Mrays/s \
+             ({engine} engine)"
         ),
         Lang::Pt => format!(
             "{w}×{h}, {samples} amostra(s)/pixel, {precision}, {threads} thread(s): lido e \
              validado em {read:.3} s, {surfaces} superfície{s} preparada{s} (BVH, listas) em \
              {build:.3} s, {total} raios traçados ({primary} primários, {reflection} de \
-             reflexão, {shadow} de sombra) em {secs:.3} s: {rate:.2} Mraios/s (motor {engine})"
+             reflexão, {transmission} de transmissão, {shadow} de sombra) em {secs:.3} s: \
+             {rate:.2} Mraios/s (motor {engine})"
         ),
     }
 }
 
-/// The render's primary rays within [`crate::problem::model::MAX_PIXEL_SAMPLES`], and its image
-/// (and the rows gathered before it) within memory: refused with exit 2 rather than aborting.
+/// The render's primary rays within [`crate::problem::model::MAX_PIXEL_SAMPLES`], each sample's
+/// ray tree within [`crate::problem::validate::MAX_TREE_RAYS`], and its image (and the rows
+/// gathered before it) within memory: refused with exit 2 rather than aborting.
 fn check_work<R: Real>(problem: &Problem<R>, camera: &Camera<R>) -> Result<(), CliError> {
     crate::problem::validate::check_work(camera.width, camera.height, problem.render.samples)
         .map_err(|e| CliError::setting(e.at("samples")))?;
+    let s = &problem.render;
+    crate::problem::validate::check_tree(problem, s.max_level, s.min_weight.to_f64())
+        .map_err(|e| CliError::setting(e.at("max_level")))?;
     let bytes = (camera.width as usize)
         .saturating_mul(camera.height as usize)
         .saturating_mul(3 * 2);

@@ -77,6 +77,16 @@ pub(crate) fn run(args: &TradeoffArgs) -> Result<Exit, CliError> {
             fix: "give a smaller --size, fewer --runs, --samples or --reference-samples".into(),
         });
     }
+    // The deepest trees the sweep traces: its largest level with the reference's weight, 0.
+    let deepest = sweep
+        .levels
+        .iter()
+        .chain([&sweep.reference.max_level])
+        .max();
+    if let Some(&level) = deepest {
+        crate::problem::validate::check_tree(&f64_scene.0, level, 0.0)
+            .map_err(|e| CliError::setting(e.at("levels")))?;
+    }
     for samples in sweep.samples.iter().chain([&sweep.reference.samples]) {
         crate::problem::validate::check_work(w, h, *samples)
             .map_err(|e| CliError::setting(e.at("size")))?;

@@ -8,12 +8,14 @@
 //! scalar [`crate::core::shade`] is the one-lane instance), their shadow rays built as
 //! `ShadowRays` builds them and tested as packets, any hit ([`FlatScene::occluded_lanes`]);
 //! then each path is stepped by the scalar tracer's own [`Tracer::step`] (the stop rules, the
-//! reflection ray), and the rays it spawns form the next bounce's queue. The loop is one of four
-//! instances ([`Plan`]), chosen once per render by whether the scene has shadows and reflection.
-//! A hit may push more than one child (refraction is planned): each queue entry carries the
-//! sample it adds to and its own factor, so a ray tree fits the same queues.
+//! reflection and transmission rays), and the rays it spawns form the next bounce's queue, in
+//! order, reflection first. The loop is one of four instances ([`Plan`]), chosen once per render
+//! by whether the scene has shadows and secondary rays. Each queue entry carries the sample it
+//! adds to and its own factor, so a ray tree fits the same queues: they hold its rays breadth
+//! first, the order in which [`Tracer::trace`] takes them.
 //!
-//! The shares of a sample are added in bounce order, as [`Tracer::trace`] adds them, and a
+//! The shares of a sample are added in bounce order (breadth first), as [`Tracer::trace`] adds
+//! them, and a
 //! pixel's samples in sample order, as [`super::render::pixel_mean`] does; the packet
 //! intersection is the aggregate's to the bit ([`FlatScene`]). So the image is the scalar
 //! tracer's, byte for byte, in both precisions (src/tracer/wide/tests.rs). Scenes the packets do not cover
@@ -82,18 +84,18 @@ pub(crate) struct Plan<R: Real> {
 }
 
 /// The monomorphised instances of the bounce loop, chosen once per render by what the scene
-/// contains: shadow rays only with shadows on, the reflection step only where some surface
-/// reflects. (The spot cone and the specular term are decided by the core per light and per
+/// contains: shadow rays only with shadows on, the step of secondary rays only where some
+/// surface reflects or transmits. (The spot cone and the specular term are decided by the core per light and per
 /// material, once for a register of hits, never per ray.)
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 enum Model {
-    /// Shadows on, some surface reflects (the classic scene).
+    /// Shadows on, some surface reflects or transmits (the classic scene).
     ShadowsReflections,
-    /// Shadows on, nothing reflects: one bounce.
+    /// Shadows on, nothing reflects or transmits: one bounce.
     Shadows,
-    /// Shadows off, some surface reflects.
+    /// Shadows off, some surface reflects or transmits.
     Reflections,
-    /// Shadows off, nothing reflects.
+    /// Shadows off, nothing reflects or transmits.
     Local,
 }
 
@@ -101,10 +103,10 @@ impl<R: Real> Plan<R> {
     /// The plan for rendering `scene` with `problem`'s settings.
     pub(crate) fn new(scene: &Scene<R>, problem: &Problem<R>) -> Self {
         let (material_of, materials) = distinct_materials(&scene.materials);
-        let reflects = scene
-            .materials
-            .iter()
-            .any(|m| m.o_r.is_some_and(|o| o != V3::<R>::ZERO));
+        let reflects = scene.materials.iter().any(|m| {
+            m.o_r.is_some_and(|o| o != V3::<R>::ZERO)
+                || m.transmission.is_some_and(|t| t.o_t != V3::<R>::ZERO)
+        });
         let model = match (problem.render.shadows, reflects) {
             (true, true) => Model::ShadowsReflections,
             (true, false) => Model::Shadows,
@@ -281,6 +283,8 @@ impl<R: Real, const SHADOWS: bool> LaneSide<W<R>> for WideSide<'_, R, SHADOWS> {
 struct Buffers<R: Real> {
     /// The live paths of the bounce being traced, in sample order.
     queue: Vec<Entry<R>>,
+    /// The rays the bounce spawns, in the same order: the next bounce's queue.
+    next: Vec<Entry<R>>,
     colors: Vec<V3<R>>,
     /// The nearest hit of each queue entry.
     found: Vec<Option<AggregateHit<R>>>,
@@ -316,9 +320,9 @@ pub(crate) fn row<R: Real, T: Copy>(
     }
 }
 
-/// [`row`] in the instance the scene needs: `SHADOWS` (shadow rays), `REFLECT` (some surface
-/// reflects: the stop rules and the reflection queue).
-fn row_in<R: Real, T: Copy, const SHADOWS: bool, const REFLECT: bool>(
+/// [`row`] in the instance the scene needs: `SHADOWS` (shadow rays), `SECONDARY` (some surface
+/// reflects or transmits: the stop rules and the queue of secondary rays).
+fn row_in<R: Real, T: Copy, const SHADOWS: bool, const SECONDARY: bool>(
     tracer: &Tracer<R>,
     plan: &Plan<R>,
     camera: &CameraRays<R>,
@@ -333,6 +337,7 @@ fn row_in<R: Real, T: Copy, const SHADOWS: bool, const REFLECT: bool>(
     let total = width as usize * n as usize;
     let mut b = Buffers {
         queue: Vec::with_capacity(BLOCK),
+        next: Vec::with_capacity(BLOCK),
         colors: vec![V3::<R>::ZERO; BLOCK],
         found: Vec::with_capacity(BLOCK),
         shaded: vec![(V3::<R>::ZERO, V3::<R>::ZERO); BLOCK],
@@ -368,6 +373,11 @@ fn row_in<R: Real, T: Copy, const SHADOWS: bool, const REFLECT: bool>(
             // Each packet's hits written straight into their places in `found`.
             b.found.clear();
             b.found.resize(b.queue.len(), None);
+            // A tree's bounce may hold more rays than the block has samples.
+            if b.shaded.len() < b.queue.len() {
+                b.shaded
+                    .resize(b.queue.len(), (V3::<R>::ZERO, V3::<R>::ZERO));
+            }
             for (packet, out) in b.queue.chunks(lanes).zip(b.found.chunks_mut(lanes)) {
                 b.rays.clear();
                 b.rays.extend(packet.iter().map(|e| e.path.ray));
@@ -377,27 +387,30 @@ fn row_in<R: Real, T: Copy, const SHADOWS: bool, const REFLECT: bool>(
                 }
             }
             shade_queue::<R, SHADOWS>(tracer, plan, &mut b, counts);
-            // Each path stepped where it stands in the queue, and the paths that go on moved
-            // down to its front, in order: the next bounce's queue.
-            let mut kept = 0;
+            // Each path stepped where it stands in the queue, and the rays it spawns queued
+            // behind each other in order, reflection first: the next bounce's queue.
+            b.next.clear();
             for i in 0..b.queue.len() {
-                let e = &mut b.queue[i];
-                let (share, more) = match &b.found[i] {
+                let e = &b.queue[i];
+                let share = match &b.found[i] {
                     None => tracer.miss(&e.path, None, &mut ()),
-                    Some(h) if REFLECT => {
-                        tracer.step(&mut e.path, None, h, b.shaded[i], counts, &mut ())
+                    Some(h) if SECONDARY => {
+                        let (share, children) =
+                            tracer.step(&e.path, None, h, b.shaded[i], counts, &mut ());
+                        let slot = e.slot;
+                        b.next.extend(
+                            children
+                                .into_iter()
+                                .flatten()
+                                .map(|path| Entry { slot, path }),
+                        );
+                        share
                     }
-                    Some(_) => (e.path.factor * b.shaded[i].1, false),
+                    Some(_) => e.path.factor * b.shaded[i].1,
                 };
                 b.colors[e.slot as usize] += share;
-                if more {
-                    if kept != i {
-                        b.queue[kept] = b.queue[i];
-                    }
-                    kept += 1;
-                }
             }
-            b.queue.truncate(kept);
+            std::mem::swap(&mut b.queue, &mut b.next);
         }
         // The samples in order: each pixel's sum, then its mean, as pixel_mean forms them.
         for s in start..end {

@@ -157,6 +157,7 @@ fn the_plan_groups_exactly_the_equal_materials() {
         o_s: (i % 3 != 0).then(|| v3::<f64>([0.2; 3])),
         n_s: (i + 1) as f64,
         o_r: Some(v3::<f64>([o_r; 3])),
+        transmission: None,
     };
     let all: Vec<Material<f64>> = (0..40).map(|i| m(i % 20, (i / 20) as f64 * 0.5)).collect();
     let (of, distinct) = super::distinct_materials(&all);
@@ -194,4 +195,36 @@ fn mesh_scene_in<R: Real>() {
 fn the_mesh_scene_with_samples_renders_the_same_bits_in_both_precisions() {
     mesh_scene_in::<f32>();
     mesh_scene_in::<f64>();
+}
+
+/// The many-spheres scene with glass among its materials: each material's first sphere material
+/// (the "mirror" and every other one) given a transmissivity, so that hits spawn two rays and
+/// the queues hold trees, in packets (5 spheres) and through the BVH (40).
+fn glass_scenes_in<R: Real>() {
+    for n in [5usize, 40] {
+        let mut json = many_spheres::scene(n);
+        let materials = json["materials"].as_object_mut().expect("materials");
+        for (k, (_, m)) in materials.iter_mut().enumerate() {
+            if k % 2 == 0 {
+                m["transmissivity"] = serde_json::json!([0.7, 0.8, 0.9]);
+                m["ior"] = serde_json::json!(1.0 + 0.25 * k as f64);
+            }
+        }
+        let mut problem = load::<R>(&json.to_string());
+        let mut camera = problem.camera.expect("a camera");
+        camera.width = 53;
+        camera.height = 31;
+        for (samples, shadows) in [(1, true), (2, false)] {
+            problem.render.samples = samples;
+            problem.render.shadows = shadows;
+            let name = format!("{n} spheres with glass, {samples} samples, shadows {shadows}");
+            same_by_both_engines::<R>(&name, &problem, &camera);
+        }
+    }
+}
+
+#[test]
+fn ray_trees_render_the_same_bits_by_both_engines_in_both_precisions() {
+    glass_scenes_in::<f32>();
+    glass_scenes_in::<f64>();
 }
