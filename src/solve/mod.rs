@@ -3,6 +3,7 @@
 //! (a light behind the surface, a hit behind the ray's origin, …) and, where a problem as written
 //! has a surprising property, the result of its likely intended reading, labelled as such.
 
+mod conditioning;
 mod file;
 mod findings;
 mod rounding;
@@ -61,6 +62,9 @@ pub struct Intersection<R: Real> {
     pub point: Option<V3<R>>,
     /// t > 0: a hit of the ray itself.
     pub in_front: bool,
+    /// Where in the file a plane the ray lies in is, when the ray meets no surface otherwise:
+    /// every point of the ray is on it, so there is no single hit point.
+    pub lies_in: Option<SurfaceSource>,
 }
 
 /// The normal used at the point.
@@ -266,7 +270,7 @@ pub(crate) fn solve_with<R: Real, F: Formulas>(
                 used: n.unit,
                 reversed: false,
             });
-            let at = |n, lights: Option<LightSet<R>>| {
+            let at = |n, lights: Option<&LightSet<R>>| {
                 let viewer = problem.viewer;
                 let vis = &mut AllVisible;
                 evaluate(
@@ -288,7 +292,7 @@ pub(crate) fn solve_with<R: Real, F: Formulas>(
                     solution.readings.push(Reading {
                         code: ReadingCode::LightReversed,
                         intersection: None,
-                        evaluation: at(normal, Some(mirrored))?,
+                        evaluation: at(normal, Some(&mirrored))?,
                     });
                 }
                 let reversed = normal.map(|n| NormalUsed {
@@ -313,6 +317,7 @@ pub(crate) fn solve_with<R: Real, F: Formulas>(
                 ray,
                 direction,
                 &aggregate,
+                Frame::RayOrigin,
             );
         }
         Target::Scene { .. } => {
@@ -349,7 +354,97 @@ pub(crate) fn solve_ray<R: Real>(
     direction: &GivenVector<R>,
     aggregate: &Aggregate<R>,
 ) -> Result<Solution<R>, Invalid> {
-    solve_ray_with(problem, Chapter, viewer, ray, direction, aggregate)
+    solve_ray_with(
+        problem,
+        Chapter,
+        viewer,
+        ray,
+        direction,
+        aggregate,
+        Frame::Absolute,
+    )
+}
+
+/// The frame a ray's hit is shaded in (docs/accuracy.md, "Far from the origin").
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum Frame {
+    /// The problem's own coordinates, P the hit point as computed: what the tracer does, so
+    /// that an explained pixel is the rendered pixel to the bit.
+    Absolute,
+    /// Coordinates relative to the ray's origin O: P − P_l is computed as tD − (P_l − O) and
+    /// P − E as tD − (E − O), so that a hit far from the origin (coordinates of 1e12) does not
+    /// lose the digits of P − P_l to the rounding of P itself. A ray problem's frame.
+    RayOrigin,
+}
+
+/// A ray problem's lights and viewer moved into the frame of the ray's origin O: each position
+/// X becomes X − O (one rounding, relative to |X − O|, small when X is near O however far both
+/// are from the origin). `None` when a moved position leaves the precision's range: the
+/// absolute frame is used then.
+struct Moved<R: Real> {
+    lights: LightSet<R>,
+    viewer: Option<V3<R>>,
+}
+
+impl<R: Real> Moved<R> {
+    /// `lights` and `viewer` moved by −`origin`.
+    fn new(lights: &LightSet<R>, viewer: Option<V3<R>>, origin: V3<R>) -> Option<Self> {
+        let by = |x: V3<R>| x - origin;
+        let lights = LightSet {
+            ambient: lights.ambient,
+            lights: lights
+                .lights
+                .iter()
+                .map(|l| Light {
+                    color: l.color,
+                    kind: match l.kind {
+                        LightKind::Point { position, falloff } => LightKind::Point {
+                            position: by(position),
+                            falloff,
+                        },
+                        LightKind::Spot {
+                            position,
+                            falloff,
+                            cone,
+                        } => LightKind::Spot {
+                            position: by(position),
+                            falloff,
+                            cone,
+                        },
+                        directional => directional,
+                    },
+                })
+                .collect(),
+        };
+        let viewer = viewer.map(by);
+        (positions_finite(&lights) && viewer.is_none_or(|e| e.is_finite()))
+            .then_some(Moved { lights, viewer })
+    }
+}
+
+/// The shadow rays of a hit shaded in the frame of the ray's origin: the core asks about a
+/// moved light, and the rays are cast from the hit as computed to the light as given (the same
+/// light by its place in the set).
+struct MovedVisibility<'a, R: Real, V> {
+    inner: &'a mut V,
+    moved: &'a LightSet<R>,
+    given: &'a LightSet<R>,
+    p: V3<R>,
+}
+
+impl<R: Real, V: Visibility<R>> Visibility<R> for MovedVisibility<'_, R, V> {
+    /// Whether the light as given reaches the hit as computed, asked of the inner visibility.
+    fn visible(&mut self, _: V3<R>, light: &Light<R>, arrival: &crate::core::Arrival<R>) -> bool {
+        // The core shades with `moved` itself (not a copy), so the light is found by address.
+        let k = self
+            .moved
+            .lights
+            .iter()
+            .position(|l| std::ptr::eq(l, light));
+        debug_assert!(k.is_some(), "a light of the moved set");
+        let given = k.map_or(light, |k| &self.given.lights[k]);
+        self.inner.visible(self.p, given, arrival)
+    }
 }
 
 /// [`solve_ray`] with the core's formulas switched as `formulas` says (mistake diagnosis).
@@ -360,9 +455,14 @@ pub(crate) fn solve_ray_with<R: Real, F: Formulas>(
     ray: &Ray<R>,
     direction: &GivenVector<R>,
     aggregate: &Aggregate<R>,
+    frame: Frame,
 ) -> Result<Solution<R>, Invalid> {
     let mut solution = Solution::empty(problem);
     let surfaces = problem.surfaces();
+    let moved = match frame {
+        Frame::RayOrigin => Moved::new(&problem.lights, viewer, ray.origin),
+        Frame::Absolute => None,
+    };
     let record = |hit: Option<(usize, R, V3<R>)>| Intersection {
         origin: ray.origin,
         direction_given: direction.given,
@@ -373,6 +473,7 @@ pub(crate) fn solve_ray_with<R: Real, F: Formulas>(
         t: hit.map(|(_, t, _)| t),
         point: hit.map(|(_, _, p)| p),
         in_front: hit.is_some_and(|(_, t, _)| t > R::ZERO),
+        lies_in: None,
     };
     // The shading at a hit, V from the incoming direction (the ray's, or the reversed ray's
     // for a hit behind) and N turned to face it by the hit, as in the tracer
@@ -394,17 +495,50 @@ pub(crate) fn solve_ray_with<R: Real, F: Formulas>(
         // The hit's shadow rays, as the tracer casts them, when the problem has them on.
         let mut shadows = problem.render.shadows.then(|| hit.shadow_rays(aggregate));
         let m = &s.material;
-        let e = evaluate(
-            problem,
-            formulas,
-            viewer,
-            Some(hit.p),
-            Some(normal),
-            view,
-            m,
-            None,
-            &mut shadows,
-        )?;
+        let e = match &moved {
+            // P − O = tD, exactly the t the hit was found at.
+            Some(mv) => {
+                let mut vis = MovedVisibility {
+                    inner: &mut shadows,
+                    moved: &mv.lights,
+                    given: &problem.lights,
+                    p: hit.p,
+                };
+                let p_local = ray.direction * hit.t;
+                let e = evaluate(
+                    problem,
+                    formulas,
+                    mv.viewer,
+                    Some(p_local),
+                    Some(normal),
+                    view,
+                    m,
+                    Some(&mv.lights),
+                    &mut vis,
+                )?;
+                // Shown in the problem's own coordinates.
+                Evaluation {
+                    point: Some(hit.p),
+                    viewer: e.viewer.map(|v| ViewerUsed {
+                        position: viewer,
+                        ..v
+                    }),
+                    light_set: None,
+                    ..e
+                }
+            }
+            None => evaluate(
+                problem,
+                formulas,
+                viewer,
+                Some(hit.p),
+                Some(normal),
+                view,
+                m,
+                None,
+                &mut shadows,
+            )?,
+        };
         Ok(Evaluation {
             p_error: Some(hit.p_error),
             ..e
@@ -423,6 +557,8 @@ pub(crate) fn solve_ray_with<R: Real, F: Formulas>(
         )
     };
     let mut starts_on_surface = false;
+    // A plane the ray lies in, which the hit search (N·D = 0) passes over.
+    let mut lies_in = None;
     if let Some(h) = aggregate.nearest(ray, R::from_f64(f64::INFINITY)) {
         solution.intersection = Some(record(Some((h.index, h.hit.t, h.hit.p))));
         solution.evaluation = Some(at_hit(h.index, &h.hit, ViewSource::Ray)?);
@@ -434,6 +570,9 @@ pub(crate) fn solve_ray_with<R: Real, F: Formulas>(
             let t_front = s.shape.hit_t(ray, R::from_f64(f64::INFINITY));
             if t_front.is_some_and(|t| s.shape.hit_at(ray, t).is_none()) {
                 return Err(unresolved(i));
+            }
+            if lies_in.is_none() && s.shape.contains_line(ray) {
+                lies_in = Some(s.source);
             }
             let hits = s.shape.line_hits(ray);
             starts_on_surface |= hits.at_origin();
@@ -455,7 +594,12 @@ pub(crate) fn solve_ray_with<R: Real, F: Formulas>(
                     evaluation: at_hit(i, &hit, ViewSource::ReversedRay)?,
                 });
             }
-            None => solution.intersection = Some(record(None)),
+            None => {
+                solution.intersection = Some(Intersection {
+                    lies_in,
+                    ..record(None)
+                })
+            }
         }
     }
     let query = findings::Query {
@@ -526,10 +670,10 @@ fn evaluate<R: Real, F: Formulas, Vis: Visibility<R>>(
     normal: Option<NormalUsed<R>>,
     ray: Option<(V3<R>, ViewSource)>,
     material: &NamedMaterial<R>,
-    lights: Option<LightSet<R>>,
+    lights: Option<&LightSet<R>>,
     visibility: &mut Vis,
 ) -> Result<Evaluation<R>, Invalid> {
-    let set = lights.as_ref().unwrap_or(&problem.lights);
+    let set = lights.unwrap_or(&problem.lights);
     // The viewing direction V, from the eye to the point (Eq. 4.10).
     let viewer = match (viewer, p, ray) {
         (Some(e), Some(p), _) => {
@@ -654,7 +798,7 @@ fn evaluate<R: Real, F: Formulas, Vis: Visibility<R>>(
         normal,
         viewer,
         material: material.clone(),
-        light_set: lights,
+        light_set: lights.cloned(),
         lights: records,
         shade,
         omitted,
