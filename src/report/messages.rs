@@ -20,7 +20,8 @@ use crate::problem::validate::show;
 use crate::problem::warnings::{Warning, WarningKind};
 use crate::problem::Problem;
 use crate::solve::{
-    ConeEdge, Finding, FindingData, GateDecision, Omission, OmissionReason, ReadingCode, Side, Term,
+    ConeEdge, FarFromOrigin, Finding, FindingData, GateDecision, Omission, OmissionReason,
+    ReadingCode, Side, Term,
 };
 
 /// Chooses the text of a language; both texts must be given.
@@ -340,6 +341,29 @@ fn finding_with<R: Real>(problem: &Problem<R>, f: &Finding, lang: Lang, json: bo
                 ),
             )
         }
+        FindingData::HitFarFromOrigin(FarFromOrigin {
+            point_error,
+            direction_error,
+        }) => pick(
+            lang,
+            format!(
+                "the hit is far from the origin compared with its distance to the lights or the \
+                 viewer: P itself may be off by up to {} in {p}, which would move L and V by up \
+                 to {}, so the vectors from the lights and the viewer to P are computed as \
+                 (O − P_l) + tD, from the numbers as given, keeping their digits",
+                num(point_error),
+                num(direction_error)
+            ),
+            format!(
+                "o ponto de interseção está longe da origem em comparação com a sua distância às \
+                 fontes de luz ou ao observador: o próprio P pode ter um erro de até {} em {p}, \
+                 o que deslocaria L e V em até {}; por isso os vetores das fontes de luz e do \
+                 observador até P são calculados como (O − P_l) + tD, a partir dos números \
+                 dados, o que preserva os seus algarismos",
+                num(point_error),
+                num(direction_error)
+            ),
+        ),
         FindingData::RayStartsOnSurface => pick(
             lang,
             "the ray starts on a surface (t = 0), which is not a hit (a hit needs t > 0)",

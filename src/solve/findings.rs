@@ -116,6 +116,10 @@ pub enum FindingData {
     ViewerInTangentPlane,
     /// The viewer is not the ray's origin: V comes from the viewer, as the problem states.
     ViewerNotAtRayOrigin,
+    /// The hit is far from the origin compared with its nearest light or viewer, so it was
+    /// shaded in the frame of the ray's origin (P − P_l = (O − P_l) + tD), which keeps the
+    /// digits that the rounding of P itself would cost the directions L and V.
+    HitFarFromOrigin(super::FarFromOrigin),
     /// The normal in the hit was reversed to face the incoming ray.
     NormalTurnedToFaceRay,
     /// A given normal was not of unit length and was normalised.
@@ -246,6 +250,14 @@ pub(super) fn find<R: Real>(
         if e != x.origin {
             out.push(Finding::new(FindingData::ViewerNotAtRayOrigin));
         }
+    }
+    let far = s
+        .evaluation
+        .iter()
+        .chain(s.readings.iter().map(|r| &r.evaluation))
+        .find_map(|e| e.far_from_origin);
+    if let Some(far) = far {
+        out.push(Finding::new(FindingData::HitFarFromOrigin(far)));
     }
     if let Some(n) = s.evaluation.as_ref().and_then(|e| e.normal) {
         if n.reversed {

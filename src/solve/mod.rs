@@ -184,6 +184,20 @@ pub struct Evaluation<R: Real> {
     /// A bound on the error of each component of P where P was computed (a ray's hit);
     /// `None` where P was given.
     pub p_error: Option<V3<R>>,
+    /// Set where a ray problem's hit was shaded in the frame of the ray's origin because it is
+    /// far from the origin compared with its lights or viewer ([`Frame::RayOrigin`]).
+    pub far_from_origin: Option<FarFromOrigin>,
+}
+
+/// Why a hit was shaded in the frame of the ray's origin: the rounding of P itself, and what
+/// it would have cost the directions from P had P − P_l been computed from the rounded P.
+#[derive(Clone, Copy, Debug, PartialEq, serde::Serialize)]
+pub struct FarFromOrigin {
+    /// ‖bound on the error of P‖.
+    pub point_error: f64,
+    /// The bound 2e/d on the error of L (or V) from it, at the nearest light or viewer at
+    /// distance d.
+    pub direction_error: f64,
 }
 
 /// A reading of the problem other than the literal one.
@@ -365,15 +379,52 @@ pub(crate) fn solve_ray<R: Real>(
     )
 }
 
+/// How far the rounding of a hit point P would carry into the directions from it: with
+/// e = ‖p_error‖ and d the distance to the nearest point or spot light or to the viewer, L and V
+/// computed from the rounded P are off by up to 2e/d (`solve::rounding`). `Some` when that
+/// exceeds 1e4·ε, four of the precision's digits: a hit about 1000 times farther from the
+/// origin than from its nearest light, where the frame of the ray's origin keeps those digits.
+/// An ordinary scene's hits stay below it, so their ray problems are shaded exactly as the
+/// tracer shades the same rays.
+fn far_from_origin<R: Real>(
+    problem: &Problem<R>,
+    viewer: Option<V3<R>>,
+    hit: &SurfaceHit<R>,
+) -> Option<FarFromOrigin> {
+    let e = hit.p_error.to_array().map(|x| x.to_f64());
+    let e = (e[0] * e[0] + e[1] * e[1] + e[2] * e[2]).sqrt();
+    let p = hit.p.to_array().map(|x| x.to_f64());
+    let distance = |q: V3<R>| {
+        let q = q.to_array().map(|x| x.to_f64());
+        ((p[0] - q[0]).powi(2) + (p[1] - q[1]).powi(2) + (p[2] - q[2]).powi(2)).sqrt()
+    };
+    let d = problem
+        .lights
+        .lights
+        .iter()
+        .filter_map(|l| l.position())
+        .chain(viewer)
+        .map(distance)
+        .fold(f64::INFINITY, f64::min);
+    let direction_error = 2.0 * e / d;
+    let threshold = 1e4 * R::EPSILON.to_f64();
+    (d.is_finite() && direction_error > threshold).then_some(FarFromOrigin {
+        point_error: e,
+        direction_error,
+    })
+}
+
 /// The frame a ray's hit is shaded in (docs/accuracy.md, "Far from the origin").
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub(crate) enum Frame {
     /// The problem's own coordinates, P the hit point as computed: what the tracer does, so
     /// that an explained pixel is the rendered pixel to the bit.
     Absolute,
-    /// Coordinates relative to the ray's origin O: P − P_l is computed as tD − (P_l − O) and
-    /// P − E as tD − (E − O), so that a hit far from the origin (coordinates of 1e12) does not
-    /// lose the digits of P − P_l to the rounding of P itself. A ray problem's frame.
+    /// Coordinates relative to the ray's origin O where the hit is far from the origin
+    /// compared with its lights ([`far_from_origin`]): P − P_l is computed as tD − (P_l − O)
+    /// and P − E as tD − (E − O), so that a hit 1e12 from the origin does not lose the digits
+    /// of P − P_l to the rounding of P itself; the problem's coordinates elsewhere, as the
+    /// tracer. A ray problem's frame.
     RayOrigin,
 }
 
@@ -495,7 +546,8 @@ pub(crate) fn solve_ray_with<R: Real, F: Formulas>(
         // The hit's shadow rays, as the tracer casts them, when the problem has them on.
         let mut shadows = problem.render.shadows.then(|| hit.shadow_rays(aggregate));
         let m = &s.material;
-        let e = match &moved {
+        let far = far_from_origin(problem, viewer, hit);
+        let e = match moved.as_ref().filter(|_| far.is_some()) {
             // P − O = tD, exactly the t the hit was found at.
             Some(mv) => {
                 let mut vis = MovedVisibility {
@@ -541,6 +593,7 @@ pub(crate) fn solve_ray_with<R: Real, F: Formulas>(
         };
         Ok(Evaluation {
             p_error: Some(hit.p_error),
+            far_from_origin: far,
             ..e
         })
     };
@@ -805,6 +858,7 @@ fn evaluate<R: Real, F: Formulas, Vis: Visibility<R>>(
         clamped,
         rgb8,
         p_error: None,
+        far_from_origin: None,
     })
 }
 
