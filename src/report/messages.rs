@@ -281,9 +281,9 @@ fn finding_with<R: Real>(problem: &Problem<R>, f: &Finding, lang: Lang, json: bo
                 lang,
                 format!(
                     "the hit is ill-conditioned: the ray almost grazes the plane (N·D = {}, \
-                     known only to ±{}), so t = {} is known only to ±{} (a relative {relative}) \
-                     and P only to ±{p_bound}, counting the rounding of the numbers as written \
-                     and of the computation in {p}. The answer is sensitive to the last digits \
+                     known only to ±{}), so t = {} is known only to ±{} (a relative error of \
+                     {relative}) and P only to ±{p_bound}, counting the rounding of the numbers \
+                     as written and of the computation in {p}. The answer is sensitive to the last digits \
                      of the data: changing the last digit of the ray's origin or direction, or \
                      of the plane, can move the hit point that much, and change the colour \
                      with it",
@@ -295,11 +295,12 @@ fn finding_with<R: Real>(problem: &Problem<R>, f: &Finding, lang: Lang, json: bo
                 format!(
                     "a interseção é mal condicionada: o raio quase tangencia o plano (N·D = {}, \
                      conhecido apenas a menos de ±{}), então t = {} é conhecido apenas a menos \
-                     de ±{} (um erro relativo de {relative}) e P apenas a menos de ±{p_bound}, \
-                     contando o arredondamento dos números como escritos e o do cálculo em {p}. \
+                     de ±{} (erro relativo de até {relative}) e P apenas a menos de \
+                     ±{p_bound}, levando em conta o arredondamento dos números como foram \
+                     escritos e o do cálculo em {p}. \
                      A resposta é sensível aos últimos algarismos dos dados: mudar o último \
                      algarismo da origem ou da direção do raio, ou do plano, pode deslocar o \
-                     ponto de interseção desse tanto e mudar a cor junto",
+                     ponto de interseção desse tanto e, com ele, mudar a cor",
                     num(n_dot_d),
                     num(n_dot_d_error),
                     num(t),

@@ -104,8 +104,12 @@ pub(super) fn plane_hit<R: Real>(plane: &Plane<R>, ray: &Ray<R>, t: R) -> PlaneH
     if !(grazing && t_error > REPORTED_RELATIVE * t.abs()) {
         return PlaneHit::WellConditioned;
     }
-    let p_error =
+    let p_error: [f64; 3] =
         std::array::from_fn(|i| d[i].abs() * t_error + g(6) * (o[i].abs() + (t * d[i]).abs()));
+    // Bounds beyond f64 (coordinates near the end of the range) are not printed: no finding.
+    if !(t_error.is_finite() && p_error.iter().all(|x| x.is_finite())) {
+        return PlaneHit::WellConditioned;
+    }
     PlaneHit::Ill {
         n_dot_d: b,
         n_dot_d_error: e_b,

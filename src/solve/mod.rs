@@ -196,7 +196,7 @@ pub struct FarFromOrigin {
     /// ‖bound on the error of P‖.
     pub point_error: f64,
     /// The bound 2e/d on the error of L (or V) from it, at the nearest light or viewer at
-    /// distance d.
+    /// distance d (at most 2, the most a unit vector can move).
     pub direction_error: f64,
 }
 
@@ -391,12 +391,11 @@ fn far_from_origin<R: Real>(
     viewer: Option<V3<R>>,
     hit: &SurfaceHit<R>,
 ) -> Option<FarFromOrigin> {
-    let e = hit.p_error.to_array().map(|x| x.to_f64());
-    let e = (e[0] * e[0] + e[1] * e[1] + e[2] * e[2]).sqrt();
+    let e = norm(hit.p_error.to_array().map(|x| x.to_f64()));
     let p = hit.p.to_array().map(|x| x.to_f64());
     let distance = |q: V3<R>| {
         let q = q.to_array().map(|x| x.to_f64());
-        ((p[0] - q[0]).powi(2) + (p[1] - q[1]).powi(2) + (p[2] - q[2]).powi(2)).sqrt()
+        norm(std::array::from_fn(|i| p[i] - q[i]))
     };
     let d = problem
         .lights
@@ -406,12 +405,23 @@ fn far_from_origin<R: Real>(
         .chain(viewer)
         .map(distance)
         .fold(f64::INFINITY, f64::min);
-    let direction_error = 2.0 * e / d;
+    // A unit vector moves by at most 2, however far its point is moved.
+    let direction_error = (2.0 * e / d).min(2.0);
     let threshold = 1e4 * R::EPSILON.to_f64();
-    (d.is_finite() && direction_error > threshold).then_some(FarFromOrigin {
+    (e.is_finite() && d.is_finite() && direction_error > threshold).then_some(FarFromOrigin {
         point_error: e,
         direction_error,
     })
+}
+
+/// The Euclidean length of `v`, scaled by its largest component so that no square overflows
+/// (a hit 1e230 from the origin has an error bound whose square is beyond f64).
+fn norm(v: [f64; 3]) -> f64 {
+    let m = v.iter().fold(0.0f64, |m, x| m.max(x.abs()));
+    if m == 0.0 || !m.is_finite() {
+        return m;
+    }
+    m * v.iter().map(|x| (x / m) * (x / m)).sum::<f64>().sqrt()
 }
 
 /// The frame a ray's hit is shaded in (docs/accuracy.md, "Far from the origin").
