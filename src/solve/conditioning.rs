@@ -33,7 +33,7 @@
 //! **When it is reported.** When the bound on t exceeds 1e-6 of t (the reports print six
 //! significant digits, so the last of them could be wrong) *and* the ray grazes the plane,
 //! Σ|N̂_i D̂_i| ≥ 100·|N̂·D̂| (the loss comes from N·D, not from the constants of a worst-case
-//! bound). In f64 that takes an angle below about 1e-8 rad; in f32 below about 0.01 rad.
+//! bound). In f64 that takes an angle below about 1e-9 rad; in f32 below about 0.01 rad.
 
 use crate::core::rounding::gamma;
 use crate::core::{Real, Vector, V3};
