@@ -128,6 +128,15 @@ impl<R: Real> Shape<R> {
         }
     }
 
+    /// Whether the ray's whole line lies on the surface (a plane it lies in,
+    /// [`Plane::contains_line`]); a sphere or a triangle never holds a whole line.
+    pub(crate) fn contains_line(&self, ray: &Ray<R>) -> bool {
+        match self {
+            Shape::Plane(p) => p.contains_line(ray),
+            Shape::Sphere(_) | Shape::Triangle(_) => false,
+        }
+    }
+
     /// The point at t, re-projected onto the surface where that reduces rounding error.
     pub(crate) fn point_at(&self, ray: &Ray<R>, t: R) -> V3<R> {
         match self {

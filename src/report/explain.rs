@@ -585,7 +585,10 @@ fn intersection<R: Real>(x: &Intersection<R>, lang: Lang) -> Vec<Step> {
                 None,
             );
         }
-        _ => out.push(0, vec![p(Phrase::LineMeetsNothing, lang)], None),
+        _ => match x.lies_in {
+            Some(_) => out.push(0, vec![p(Phrase::LineLiesInPlane, lang)], None),
+            None => out.push(0, vec![p(Phrase::LineMeetsNothing, lang)], None),
+        },
     }
     out.0
 }

@@ -99,6 +99,10 @@ pub struct IntersectionOut<R: Real> {
     pub point: Option<V3<R>>,
     /// t > 0.
     pub hit: bool,
+    /// The index in the file's `surfaces` of a plane the ray lies in, when it meets no surface
+    /// otherwise (absent otherwise): every point of the ray is on it, no single hit point.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub lies_in_surface: Option<usize>,
 }
 
 /// An entry of `readings`: the problem read another way, solved by the same core.
@@ -377,6 +381,7 @@ fn intersection<R: Real>(x: &Intersection<R>) -> IntersectionOut<R> {
         t: x.t,
         point: x.point,
         hit: x.in_front,
+        lies_in_surface: x.lies_in.map(|s| s.index),
     }
 }
 
