@@ -1,9 +1,13 @@
 //! Wavefront OBJ meshes: read with `tobj`, polygons split into triangles, each triangle checked
 //! to have an area in the chosen precision. Materials of the OBJ file (`.mtl`) are not read:
-//! a mesh has the one material its surface entry names.
+//! a mesh has the one material its surface entry names. Vertex normals (`vn`, faces `f v//vn` or
+//! `f v/vt/vn`) make the faces that give them smooth triangles (docs/conventions.md, "Smooth
+//! meshes"); they are read by this module's own first pass, since `tobj` drops a missing normal
+//! of a face silently and misaligns the rest.
 
 use std::path::Path;
 
+use crate::core::vector::normalize;
 use crate::core::{Real, Vector, V3};
 use crate::geometry::Triangle;
 
@@ -23,12 +27,18 @@ pub const MAX_TRIANGLES: usize = 1_000_000;
 
 /// What the first pass over an OBJ file found: where each face is, so that a triangle can be
 /// named by the line of its face.
-struct Faces {
+struct Faces<R: Real> {
     /// The line of each face and how many triangles it gives, in the file's order.
     lines: Vec<(usize, usize)>,
+    /// The file's vertex normals (`vn`), each normalised in `R`.
+    normals: Vec<V3<R>>,
+    /// Each triangle's vertex normals as indices into `normals` (0-based), in the order of its
+    /// corners, or `None` for a face without normals; triangles in the file's order, a
+    /// polygon's fan (p₀, p_i, p_{i+1}) as `tobj` splits it.
+    triangle_normals: Vec<Option<[u32; 3]>>,
 }
 
-impl Faces {
+impl<R: Real> Faces<R> {
     /// The line of the face that gave triangle `k` (0-based, in the file's order).
     fn line_of(&self, k: usize) -> usize {
         let mut first = 0;
@@ -60,13 +70,30 @@ fn at_line(line: usize, message: String, fix: &str) -> MeshError {
     }
 }
 
-/// The first pass: every vertex is three numbers finite in `R`, every face has at least three
-/// vertices that exist, there are at most [`MAX_TRIANGLES`] triangles; each mistake named by its
-/// line (`tobj` says only which kind of line failed).
-fn scan<R: Real>(text: &str) -> Result<Faces, MeshError> {
+/// The fix for a vertex normal that is zero (or too small) in `R`.
+fn zero_normal_fix<R: Real>() -> &'static str {
+    if R::NAME == "f32" {
+        "give each `vn` a direction of nonzero length (or use --precision f64), or remove the \
+         mesh's `vn` lines and the faces' `//n` parts for flat shading"
+    } else {
+        "give each `vn` a direction of nonzero length, or remove the mesh's `vn` lines and the \
+         faces' `//n` parts for flat shading"
+    }
+}
+
+/// The first pass: every vertex is three numbers finite in `R`, every vertex normal three
+/// numbers finite in `R` of a length that is not zero there, every face has at least three
+/// vertices that exist and either a normal for each of them or none, there are at most
+/// [`MAX_TRIANGLES`] triangles; each mistake named by its line (`tobj` says only which kind of
+/// line failed).
+fn scan<R: Real>(text: &str) -> Result<Faces<R>, MeshError> {
     let mut vertices: usize = 0;
     let mut triangles: usize = 0;
-    let mut faces = Faces { lines: Vec::new() };
+    let mut faces = Faces {
+        lines: Vec::new(),
+        normals: Vec::new(),
+        triangle_normals: Vec::new(),
+    };
     for (i, line) in text.lines().enumerate() {
         let n = i + 1;
         let mut words = line.split_whitespace();
@@ -99,6 +126,54 @@ fn scan<R: Real>(text: &str) -> Result<Faces, MeshError> {
                 }
                 vertices += 1;
             }
+            Some("vn") => {
+                let xyz: Vec<&str> = words.by_ref().take(3).collect();
+                let numbers: Option<Vec<f64>> = (xyz.len() == 3)
+                    .then(|| xyz.iter().map(|w| w.parse::<f64>().ok()).collect())
+                    .flatten();
+                let Some(numbers) = numbers else {
+                    return Err(at_line(
+                        n,
+                        format!(
+                            "the vertex normal \"{}\" is not `vn x y z` (three numbers)",
+                            shown()
+                        ),
+                        "write each vertex normal as `vn x y z`",
+                    ));
+                };
+                if numbers
+                    .iter()
+                    .any(|&x| !(x.is_finite() && R::from_f64(x).is_finite()))
+                {
+                    return Err(at_line(
+                        n,
+                        format!(
+                            "the vertex normal \"{}\" is not finite in {}",
+                            shown(),
+                            R::NAME
+                        ),
+                        "give each `vn` three finite numbers, a direction such as `vn 0 1 0`",
+                    ));
+                }
+                let v = V3::<R>::new(
+                    R::from_f64(numbers[0]),
+                    R::from_f64(numbers[1]),
+                    R::from_f64(numbers[2]),
+                );
+                let Some(unit) = normalize::<R>(v) else {
+                    return Err(at_line(
+                        n,
+                        format!(
+                            "the vertex normal \"{}\" has length zero in {}, so it has no \
+                             direction",
+                            shown(),
+                            R::NAME
+                        ),
+                        zero_normal_fix::<R>(),
+                    ));
+                };
+                faces.normals.push(unit.unit);
+            }
             Some("l") => {
                 return Err(at_line(
                     n,
@@ -120,6 +195,47 @@ fn scan<R: Real>(text: &str) -> Result<Faces, MeshError> {
                             refs.len()
                         ),
                         "give each face three or more vertices (`f i j k`)",
+                    ));
+                }
+                // Each vertex's normal index (`v//vn`, `v/vt/vn`), when it gives one.
+                let mut vn: Vec<Option<u32>> = Vec::with_capacity(refs.len());
+                for r in &refs {
+                    let Some(word) = r.split('/').nth(2).filter(|w| !w.is_empty()) else {
+                        vn.push(None);
+                        continue;
+                    };
+                    let known = faces.normals.len() as i64;
+                    let resolved = word
+                        .parse::<i64>()
+                        .ok()
+                        .map(|k| if k < 0 { known + 1 + k } else { k })
+                        .filter(|&k| k >= 1 && k <= known);
+                    let Some(k) = resolved else {
+                        return Err(at_line(
+                            n,
+                            format!(
+                                "the face \"{}\" refers to vertex normal {word} (in {r}), and \
+                                 {known} vertex normals come before it",
+                                shown()
+                            ),
+                            "correct the face's normal indices (the third number of `v/vt/vn`; \
+                             1 is the first `vn` line)",
+                        ));
+                    };
+                    vn.push(Some((k - 1) as u32));
+                }
+                let given = vn.iter().flatten().count();
+                if given != 0 && given != vn.len() {
+                    return Err(at_line(
+                        n,
+                        format!(
+                            "the face \"{}\" gives vertex normals for {given} of its {} \
+                             vertices: a face is smooth with a normal at every corner, or flat \
+                             with none",
+                            shown(),
+                            vn.len()
+                        ),
+                        "give every vertex of the face a normal (`v//vn`), or none (`v`)",
                     ));
                 }
                 for r in &refs {
@@ -152,6 +268,13 @@ fn scan<R: Real>(text: &str) -> Result<Faces, MeshError> {
                     ));
                 }
                 faces.lines.push((n, refs.len() - 2));
+                // The fan tobj splits the face into: (0, i, i + 1).
+                for i in 1..refs.len() - 1 {
+                    faces.triangle_normals.push(match (vn[0], vn[i], vn[i + 1]) {
+                        (Some(a), Some(b), Some(c)) => Some([a, b, c]),
+                        _ => None,
+                    });
+                }
             }
             _ => {}
         }
@@ -159,7 +282,8 @@ fn scan<R: Real>(text: &str) -> Result<Faces, MeshError> {
     Ok(faces)
 }
 
-/// Reads the triangles of an OBJ file, in the file's order.
+/// Reads the triangles of an OBJ file, in the file's order; a face with vertex normals gives
+/// smooth triangles ([`Triangle::normals`]).
 pub fn load_obj<R: Real>(path: &Path) -> Result<Vec<Triangle<R>>, MeshError> {
     let bytes = super::read_limited(path, MAX_MESH_BYTES, "a mesh").map_err(|e| MeshError {
         message: format!("cannot be read: {e}"),
@@ -214,8 +338,15 @@ pub fn load_obj<R: Real>(path: &Path) -> Result<Vec<Triangle<R>>, MeshError> {
             Ok(v)
         };
         for face in model.mesh.indices.chunks_exact(3) {
+            let normals = faces
+                .triangle_normals
+                .get(out.len())
+                .copied()
+                .flatten()
+                .map(|k| k.map(|j| faces.normals[j as usize]));
             let t = Triangle {
                 p: [corner(face[0])?, corner(face[1])?, corner(face[2])?],
+                normals,
             };
             if t.normal().is_none() {
                 // The object's name when the file gives one (`o name`); tobj's placeholder for
