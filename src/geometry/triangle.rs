@@ -568,6 +568,75 @@ mod tests {
         normals::<f64>();
     }
 
+    fn smooth_normals<R: Real>() {
+        let mut t = tri::<R>([0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0]);
+        // Flat: the shading normal is the geometric normal, bit for bit, and facing turns it
+        // as before.
+        let down = ray::<R>([0.25, 0.25, 1.0], [0.0, 0.0, -1.0]);
+        let flat = t.hit(&down, inf::<R>()).unwrap();
+        assert_eq!(flat.shading, flat.normal);
+        assert_eq!(flat.facing(down.direction).normal, flat.normal);
+        assert!(t.smooth_hit(&down, flat.t).is_none());
+        // N₀ = (0, 0, 1), N₁ = (0.6, 0, 0.8), N₂ = (0, 0.6, 0.8) and the hit at (0.25, 0.25, 0),
+        // b = (0.5, 0.25, 0.25): ΣbN = (0.15, 0.15, 0.5 + 0.2 + 0.2) = (0.15, 0.15, 0.9), of
+        // length √0.855 (by hand).
+        t.normals = Some([
+            v3::<R>([0.0, 0.0, 1.0]),
+            v3::<R>([0.6, 0.0, 0.8]),
+            v3::<R>([0.0, 0.6, 0.8]),
+        ]);
+        let h = t.hit(&down, inf::<R>()).unwrap();
+        let len = 0.855f64.sqrt();
+        let want = [0.15 / len, 0.15 / len, 0.9 / len];
+        let got = to_f64_array::<R>(h.shading);
+        for i in 0..3 {
+            assert!(close(R::from_f64(got[i]), want[i], 8.0), "{got:?} {want:?}");
+        }
+        // The geometric normal, the point and t are the flat triangle's.
+        assert_eq!((h.normal, h.p, h.t), (flat.normal, flat.p, flat.t));
+        let s = t.smooth_hit(&down, h.t).unwrap();
+        assert_eq!((s.used, s.clamped), (h.shading, false));
+        for (b, want) in s.b.iter().zip([0.5, 0.25, 0.25]) {
+            assert!(close(*b, want, 8.0), "{:?}", s.b);
+        }
+        // From below, the shading normal turns with the geometric normal's test.
+        let up = ray::<R>([0.25, 0.25, -1.0], [0.0, 0.0, 1.0]);
+        let below = t.hit(&up, inf::<R>()).unwrap();
+        let f = below.facing(up.direction);
+        assert!(f.reversed);
+        assert_eq!(f.normal, -below.shading);
+        // The line's point behind an origin gets the same weights from its areas.
+        let b = t.barycentric_at(h.p, h.normal);
+        for (b, want) in b.iter().zip([0.5, 0.25, 0.25]) {
+            assert!(close(*b, want, 8.0), "{b:?}");
+        }
+        // Vertex normals against the winding: the interpolation is on the other side of the
+        // surface, so the geometric normal is used.
+        t.normals = Some([
+            v3::<R>([0.0, 0.0, -1.0]),
+            v3::<R>([0.6, 0.0, -0.8]),
+            v3::<R>([0.0, 0.6, -0.8]),
+        ]);
+        let h = t.hit(&down, inf::<R>()).unwrap();
+        assert_eq!(h.shading, h.normal);
+        assert!(t.smooth_hit(&down, h.t).unwrap().clamped);
+        // Opposite normals cancelling at the hit: no interpolation, the geometric normal.
+        t.normals = Some([
+            v3::<R>([0.0, 0.0, 1.0]),
+            v3::<R>([0.0, 0.0, -1.0]),
+            v3::<R>([0.0, 0.0, -1.0]),
+        ]);
+        let h = t.hit(&down, inf::<R>()).unwrap();
+        let s = t.smooth_hit(&down, h.t).unwrap();
+        assert_eq!((s.interpolated, s.clamped, h.shading), (None, true, h.normal));
+    }
+
+    #[test]
+    fn a_smooth_triangle_shades_with_its_interpolated_vertex_normals_worked_by_hand() {
+        smooth_normals::<f32>();
+        smooth_normals::<f64>();
+    }
+
     #[test]
     fn bounds_are_the_box_of_the_corners() {
         let t = tri::<f64>([1.0, -2.0, 3.0], [0.0, 5.0, 3.5], [2.0, 0.0, -1.0]);

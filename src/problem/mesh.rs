@@ -377,3 +377,85 @@ pub fn load_obj<R: Real>(path: &Path) -> Result<Vec<Triangle<R>>, MeshError> {
     }
     Ok(out)
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The error message of scanning `text` in precision `R`.
+    fn refused<R: Real>(text: &str) -> MeshError {
+        match scan::<R>(text) {
+            Ok(_) => panic!("{text:?} was accepted in {}", R::NAME),
+            Err(e) => e,
+        }
+    }
+
+    const CORNERS: &str = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\n";
+
+    #[test]
+    fn vertex_normals_are_read_per_corner_through_a_polygon_s_fan() {
+        // A quad with a normal at each corner, given by index and by negative index, then a
+        // flat triangle: the fan (0, 1, 2), (0, 2, 3) as tobj splits it.
+        let text = format!(
+            "{CORNERS}vn 0 0 2\nvn 0 0.6 0.8\nvn 0.6 0 0.8\nf 1//1 2//2 3/7/3 4//-3\nf 1 2 3\n"
+        );
+        let faces = scan::<f64>(&text).unwrap();
+        assert_eq!(
+            faces.triangle_normals,
+            vec![Some([0, 1, 2]), Some([0, 2, 0]), None]
+        );
+        // Each normal is normalised: (0, 0, 2) → (0, 0, 1).
+        assert_eq!(faces.normals[0], V3::<f64>::new(0.0, 0.0, 1.0));
+        assert_eq!(faces.lines, vec![(8, 2), (9, 1)]);
+    }
+
+    #[test]
+    fn bad_vertex_normals_are_refused_naming_the_line_and_the_fix() {
+        let zero = refused::<f64>(&format!("{CORNERS}vn 0 0 0\nf 1//1 2//1 3//1\n"));
+        assert!(zero.message.starts_with("line 5: "), "{}", zero.message);
+        assert!(zero.message.contains("length zero"), "{}", zero.message);
+        assert!(zero.fix.contains("nonzero length"), "{}", zero.fix);
+        let nan = refused::<f64>(&format!("{CORNERS}vn nan 0 1\n"));
+        assert!(nan.message.contains("line 5: the vertex normal \"vn nan 0 1\" is not finite"));
+        let inf = refused::<f64>(&format!("{CORNERS}vn 0 inf 1\n"));
+        assert!(inf.message.contains("is not finite in f64"), "{}", inf.message);
+        let short = refused::<f64>(&format!("{CORNERS}vn 0 1\n"));
+        assert!(short.message.contains("is not `vn x y z`"), "{}", short.message);
+        // Finite in f64 but not in f32; nonzero in f64 but zero in f32.
+        assert!(scan::<f64>(&format!("{CORNERS}vn 0 1e39 1\n")).is_ok());
+        let big = refused::<f32>(&format!("{CORNERS}vn 0 1e39 1\n"));
+        assert!(big.message.contains("is not finite in f32"), "{}", big.message);
+        assert!(scan::<f64>(&format!("{CORNERS}vn 0 1e-50 0\n")).is_ok());
+        let tiny = refused::<f32>(&format!("{CORNERS}vn 0 1e-50 0\n"));
+        assert!(tiny.message.contains("length zero in f32"), "{}", tiny.message);
+        assert!(tiny.fix.contains("--precision f64"), "{}", tiny.fix);
+    }
+
+    #[test]
+    fn faces_with_missing_or_partial_normals_are_refused_naming_the_line() {
+        let missing = refused::<f64>(&format!("{CORNERS}vn 0 0 1\nf 1//1 2//2 3//1\n"));
+        assert!(
+            missing
+                .message
+                .contains("line 6: the face \"f 1//1 2//2 3//1\" refers to vertex normal 2"),
+            "{}",
+            missing.message
+        );
+        assert!(missing.message.contains("1 vertex normals come before it"));
+        let ahead = refused::<f64>(&format!("{CORNERS}f 1//1 2//1 3//1\nvn 0 0 1\n"));
+        assert!(ahead.message.starts_with("line 5: "), "{}", ahead.message);
+        let partial = refused::<f64>(&format!("{CORNERS}vn 0 0 1\nf 1//1 2 3//1\n"));
+        assert!(
+            partial
+                .message
+                .contains("gives vertex normals for 2 of its 3 vertices"),
+            "{}",
+            partial.message
+        );
+        assert!(partial.message.starts_with("line 6: "), "{}", partial.message);
+        assert!(partial.fix.contains("or none"), "{}", partial.fix);
+        // A texture coordinate without a normal is not a normal.
+        let faces = scan::<f64>(&format!("{CORNERS}f 1/1 2/1 3/1\n")).unwrap();
+        assert_eq!(faces.triangle_normals, vec![None]);
+    }
+}
