@@ -628,7 +628,10 @@ mod tests {
         ]);
         let h = t.hit(&down, inf::<R>()).unwrap();
         let s = t.smooth_hit(&down, h.t).unwrap();
-        assert_eq!((s.interpolated, s.clamped, h.shading), (None, true, h.normal));
+        assert_eq!(
+            (s.interpolated, s.clamped, h.shading),
+            (None, true, h.normal)
+        );
     }
 
     #[test]

@@ -10,6 +10,7 @@ use std::path::Path;
 use crate::core::vector::normalize;
 use crate::core::{Real, Vector, V3};
 use crate::geometry::Triangle;
+use crate::report::messages::both;
 
 /// Why a mesh could not be used: a message and how to fix it.
 #[derive(Debug)]
@@ -70,15 +71,23 @@ fn at_line(line: usize, message: String, fix: &str) -> MeshError {
     }
 }
 
-/// The fix for a vertex normal that is zero (or too small) in `R`.
-fn zero_normal_fix<R: Real>() -> &'static str {
-    if R::NAME == "f32" {
-        "give each `vn` a direction of nonzero length (or use --precision f64), or remove the \
-         mesh's `vn` lines and the faces' `//n` parts for flat shading"
+/// The fix for a vertex normal that is zero (or too small) in `R`, in both languages.
+fn zero_normal_fix<R: Real>() -> String {
+    let (en, pt) = if R::NAME == "f32" {
+        (" (or use --precision f64)", " (ou use --precision f64)")
     } else {
-        "give each `vn` a direction of nonzero length, or remove the mesh's `vn` lines and the \
-         faces' `//n` parts for flat shading"
-    }
+        ("", "")
+    };
+    both(
+        &format!(
+            "give each `vn` a direction of nonzero length{en}, or remove the mesh's `vn` lines \
+             and the faces' `//n` parts for flat shading"
+        ),
+        &format!(
+            "dê a cada `vn` uma direção de comprimento não nulo{pt}, ou remova as linhas `vn` \
+             da malha e as partes `//n` das faces para um sombreamento plano"
+        ),
+    )
 }
 
 /// The first pass: every vertex is three numbers finite in `R`, every vertex normal three
@@ -134,11 +143,20 @@ fn scan<R: Real>(text: &str) -> Result<Faces<R>, MeshError> {
                 let Some(numbers) = numbers else {
                     return Err(at_line(
                         n,
-                        format!(
-                            "the vertex normal \"{}\" is not `vn x y z` (three numbers)",
-                            shown()
+                        both(
+                            &format!(
+                                "the vertex normal \"{}\" is not `vn x y z` (three numbers)",
+                                shown()
+                            ),
+                            &format!(
+                                "a normal de vértice \"{}\" não é `vn x y z` (três números)",
+                                shown()
+                            ),
                         ),
-                        "write each vertex normal as `vn x y z`",
+                        &both(
+                            "write each vertex normal as `vn x y z`",
+                            "escreva cada normal de vértice como `vn x y z`",
+                        ),
                     ));
                 };
                 if numbers
@@ -147,12 +165,22 @@ fn scan<R: Real>(text: &str) -> Result<Faces<R>, MeshError> {
                 {
                     return Err(at_line(
                         n,
-                        format!(
-                            "the vertex normal \"{}\" is not finite in {}",
-                            shown(),
-                            R::NAME
+                        both(
+                            &format!(
+                                "the vertex normal \"{}\" is not finite in {}",
+                                shown(),
+                                R::NAME
+                            ),
+                            &format!(
+                                "a normal de vértice \"{}\" não é finita em {}",
+                                shown(),
+                                R::NAME
+                            ),
                         ),
-                        "give each `vn` three finite numbers, a direction such as `vn 0 1 0`",
+                        &both(
+                            "give each `vn` three finite numbers, a direction such as `vn 0 1 0`",
+                            "dê a cada `vn` três números finitos, uma direção como `vn 0 1 0`",
+                        ),
                     ));
                 }
                 let v = V3::<R>::new(
@@ -163,13 +191,21 @@ fn scan<R: Real>(text: &str) -> Result<Faces<R>, MeshError> {
                 let Some(unit) = normalize::<R>(v) else {
                     return Err(at_line(
                         n,
-                        format!(
-                            "the vertex normal \"{}\" has length zero in {}, so it has no \
-                             direction",
-                            shown(),
-                            R::NAME
+                        both(
+                            &format!(
+                                "the vertex normal \"{}\" has length zero in {}, so it has no \
+                                 direction",
+                                shown(),
+                                R::NAME
+                            ),
+                            &format!(
+                                "a normal de vértice \"{}\" tem comprimento zero em {}, então \
+                                 não tem direção",
+                                shown(),
+                                R::NAME
+                            ),
                         ),
-                        zero_normal_fix::<R>(),
+                        &zero_normal_fix::<R>(),
                     ));
                 };
                 faces.normals.push(unit.unit);
@@ -213,13 +249,24 @@ fn scan<R: Real>(text: &str) -> Result<Faces<R>, MeshError> {
                     let Some(k) = resolved else {
                         return Err(at_line(
                             n,
-                            format!(
-                                "the face \"{}\" refers to vertex normal {word} (in {r}), and \
-                                 {known} vertex normals come before it",
-                                shown()
+                            both(
+                                &format!(
+                                    "the face \"{}\" refers to vertex normal {word} (in {r}), \
+                                     and {known} vertex normals come before it",
+                                    shown()
+                                ),
+                                &format!(
+                                    "a face \"{}\" se refere à normal de vértice {word} (em \
+                                     {r}), e {known} normais de vértice vêm antes dela",
+                                    shown()
+                                ),
                             ),
-                            "correct the face's normal indices (the third number of `v/vt/vn`; \
-                             1 is the first `vn` line)",
+                            &both(
+                                "correct the face's normal indices (the third number of \
+                                 `v/vt/vn`; 1 is the first `vn` line)",
+                                "corrija os índices de normais da face (o terceiro número de \
+                                 `v/vt/vn`; 1 é a primeira linha `vn`)",
+                            ),
                         ));
                     };
                     vn.push(Some((k - 1) as u32));
@@ -228,14 +275,26 @@ fn scan<R: Real>(text: &str) -> Result<Faces<R>, MeshError> {
                 if given != 0 && given != vn.len() {
                     return Err(at_line(
                         n,
-                        format!(
-                            "the face \"{}\" gives vertex normals for {given} of its {} \
-                             vertices: a face is smooth with a normal at every corner, or flat \
-                             with none",
-                            shown(),
-                            vn.len()
+                        both(
+                            &format!(
+                                "the face \"{}\" gives vertex normals for {given} of its {} \
+                                 vertices; a face is smooth with a normal at every corner, or \
+                                 flat with none",
+                                shown(),
+                                vn.len()
+                            ),
+                            &format!(
+                                "a face \"{}\" dá normais de vértice para {given} de seus {} \
+                                 vértices; uma face é suave com uma normal em cada vértice, ou \
+                                 plana sem nenhuma",
+                                shown(),
+                                vn.len()
+                            ),
                         ),
-                        "give every vertex of the face a normal (`v//vn`), or none (`v`)",
+                        &both(
+                            "give every vertex of the face a normal (`v//vn`), or none (`v`)",
+                            "dê uma normal a cada vértice da face (`v//vn`), ou a nenhum (`v`)",
+                        ),
                     ));
                 }
                 for r in &refs {
@@ -259,7 +318,7 @@ fn scan<R: Real>(text: &str) -> Result<Faces<R>, MeshError> {
                     return Err(at_line(
                         n,
                         format!("the mesh has more than {MAX_TRIANGLES} triangles"),
-                        &crate::report::messages::both(
+                        &both(
                             "give a mesh of at most 1000000 triangles (simplify it, for example \
                              with Blender's Decimate modifier)",
                             "dê uma malha de no máximo 1000000 triângulos (simplifique-a, por \
@@ -270,10 +329,12 @@ fn scan<R: Real>(text: &str) -> Result<Faces<R>, MeshError> {
                 faces.lines.push((n, refs.len() - 2));
                 // The fan tobj splits the face into: (0, i, i + 1).
                 for i in 1..refs.len() - 1 {
-                    faces.triangle_normals.push(match (vn[0], vn[i], vn[i + 1]) {
-                        (Some(a), Some(b), Some(c)) => Some([a, b, c]),
-                        _ => None,
-                    });
+                    faces
+                        .triangle_normals
+                        .push(match (vn[0], vn[i], vn[i + 1]) {
+                            (Some(a), Some(b), Some(c)) => Some([a, b, c]),
+                            _ => None,
+                        });
                 }
             }
             _ => {}
@@ -416,18 +477,36 @@ mod tests {
         assert!(zero.message.contains("length zero"), "{}", zero.message);
         assert!(zero.fix.contains("nonzero length"), "{}", zero.fix);
         let nan = refused::<f64>(&format!("{CORNERS}vn nan 0 1\n"));
-        assert!(nan.message.contains("line 5: the vertex normal \"vn nan 0 1\" is not finite"));
+        assert!(nan
+            .message
+            .contains("line 5: the vertex normal \"vn nan 0 1\" is not finite"));
         let inf = refused::<f64>(&format!("{CORNERS}vn 0 inf 1\n"));
-        assert!(inf.message.contains("is not finite in f64"), "{}", inf.message);
+        assert!(
+            inf.message.contains("is not finite in f64"),
+            "{}",
+            inf.message
+        );
         let short = refused::<f64>(&format!("{CORNERS}vn 0 1\n"));
-        assert!(short.message.contains("is not `vn x y z`"), "{}", short.message);
+        assert!(
+            short.message.contains("is not `vn x y z`"),
+            "{}",
+            short.message
+        );
         // Finite in f64 but not in f32; nonzero in f64 but zero in f32.
         assert!(scan::<f64>(&format!("{CORNERS}vn 0 1e39 1\n")).is_ok());
         let big = refused::<f32>(&format!("{CORNERS}vn 0 1e39 1\n"));
-        assert!(big.message.contains("is not finite in f32"), "{}", big.message);
+        assert!(
+            big.message.contains("is not finite in f32"),
+            "{}",
+            big.message
+        );
         assert!(scan::<f64>(&format!("{CORNERS}vn 0 1e-50 0\n")).is_ok());
         let tiny = refused::<f32>(&format!("{CORNERS}vn 0 1e-50 0\n"));
-        assert!(tiny.message.contains("length zero in f32"), "{}", tiny.message);
+        assert!(
+            tiny.message.contains("length zero in f32"),
+            "{}",
+            tiny.message
+        );
         assert!(tiny.fix.contains("--precision f64"), "{}", tiny.fix);
     }
 
@@ -452,7 +531,11 @@ mod tests {
             "{}",
             partial.message
         );
-        assert!(partial.message.starts_with("line 6: "), "{}", partial.message);
+        assert!(
+            partial.message.starts_with("line 6: "),
+            "{}",
+            partial.message
+        );
         assert!(partial.fix.contains("or none"), "{}", partial.fix);
         // A texture coordinate without a normal is not a normal.
         let faces = scan::<f64>(&format!("{CORNERS}f 1/1 2/1 3/1\n")).unwrap();

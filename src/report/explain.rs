@@ -647,13 +647,21 @@ fn shading<R: Real>(
         if let Some(s) = &nu.smooth {
             given.push(
                 1,
-                vec![p(Phrase::SmoothInterpolated, lang), Math(Formula::NSmooth)],
+                vec![
+                    p(Phrase::SmoothInterpolated, lang),
+                    Math(Formula::P),
+                    t(": "),
+                    Math(Formula::NSmooth),
+                ],
                 None,
             );
             let b = s.b.map(|x| x.to_f64());
             given.push(2, vec![Math(Formula::Barycentric), EQ, Vector(b)], None);
             let mut corners = Vec::new();
-            for (k, symbol) in [Formula::N0, Formula::N1, Formula::N2].into_iter().enumerate() {
+            for (k, symbol) in [Formula::N0, Formula::N1, Formula::N2]
+                .into_iter()
+                .enumerate()
+            {
                 if k > 0 {
                     corners.push(t(", "));
                 }

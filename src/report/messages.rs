@@ -91,8 +91,8 @@ phrases! {
     ThenReversed => ", then reversed", ", depois invertida";
     /// A smooth triangle's shading normal (docs/conventions.md, "Smooth meshes").
     SmoothInterpolated => "interpolated from the triangle's three vertex normals with the \
-        barycentric weights of P: ",
-        "interpolada das normais dos três vértices do triângulo com os pesos baricêntricos de P: ";
+        barycentric weights of ",
+        "interpolada das normais dos três vértices do triângulo com os pesos baricêntricos de ";
     SmoothGeometric => "the triangle's geometric normal (from the order of its corners; it \
         decides which side the ray is on and where new rays leave from): ",
         "a normal geométrica do triângulo (dada pela ordem dos vértices; é ela que decide de que \
