@@ -61,6 +61,7 @@ impl<R: Real> Plane<R> {
             p,
             p_error,
             normal: self.normal,
+            shading: self.normal,
         }
     }
 }

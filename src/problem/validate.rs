@@ -872,7 +872,7 @@ fn surface<R: Real>(
             for (k, corner) in v.iter().enumerate() {
                 p[k] = vector::<R>(*corner, vertices.index(k))?;
             }
-            let t = Triangle { p };
+            let t = Triangle { p, normals: None };
             if t.normal().is_none() {
                 return Err(Invalid::new(
                     f("vertices"),

@@ -91,6 +91,18 @@ phrases! {
     NormalisedFrom => "normalised from ", "normalizada de ";
     Length => "length ", "comprimento ";
     ThenReversed => ", then reversed", ", depois invertida";
+    /// A smooth triangle's shading normal (docs/conventions.md, "Smooth meshes").
+    SmoothInterpolated => "interpolated from the triangle's three vertex normals with the \
+        barycentric weights of ",
+        "interpolada das normais dos três vértices do triângulo com os pesos baricêntricos de ";
+    SmoothGeometric => "the triangle's geometric normal (from the order of its corners; it \
+        decides which side the ray is on and where new rays leave from): ",
+        "a normal geométrica do triângulo (dada pela ordem dos vértices; é ela que decide de que \
+        lado o raio está e de onde partem os novos raios): ";
+    SmoothClamped => "the interpolation does not point to the geometric normal's side of the \
+        surface, so N is the geometric normal",
+        "a interpolação não aponta para o lado da superfície em que está a normal geométrica, \
+        então N é a normal geométrica";
     TakenEqualToOs => " (taken equal to O_s)", " (tomada igual a O_s)";
     // The viewer.
     RayIsLineOfSight => " (the ray's direction: the ray is the line of sight)", " (a direção do raio: o raio é a linha de visão)";

@@ -15,7 +15,7 @@ use crate::core::{
     shade_with, AllVisible, Chapter, Formulas, Light, LightKind, LightSet, LightStatus, LightTerm,
     Real, Shade, Vector, Visibility, V3,
 };
-use crate::geometry::{Aggregate, Ray, SurfaceHit};
+use crate::geometry::{Aggregate, Ray, Shape, SmoothNormal, SurfaceHit};
 use crate::problem::validate::{light_label, show};
 use crate::problem::{GivenVector, Invalid, NamedMaterial, Problem, SurfaceSource, Target};
 use crate::report::messages::both;
@@ -78,6 +78,10 @@ pub struct NormalUsed<R: Real> {
     pub used: V3<R>,
     /// Whether N was reversed (to face the incoming ray, or by a reading).
     pub reversed: bool,
+    /// On a smooth triangle (a mesh with vertex normals): how the shading normal was
+    /// interpolated from the vertex normals, `given` then being the geometric normal, which
+    /// decides `reversed` (docs/conventions.md, "Smooth meshes"); `None` elsewhere.
+    pub smooth: Option<SmoothNormal<R>>,
 }
 
 /// Which side of the surface the viewer is on.
@@ -283,6 +287,7 @@ pub(crate) fn solve_with<R: Real, F: Formulas>(
                 length: n.length,
                 used: n.unit,
                 reversed: false,
+                smooth: None,
             });
             let at = |n, lights: Option<&LightSet<R>>| {
                 let viewer = problem.viewer;
@@ -546,11 +551,23 @@ pub(crate) fn solve_ray_with<R: Real, F: Formulas>(
             _ => ray.direction,
         };
         let facing = hit.facing(incoming);
+        // A smooth triangle's interpolation, as its hit made it: the ray's own hit again, or
+        // for the line behind the origin the weights of its point.
+        let smooth = match &s.shape {
+            Shape::Triangle(tri) if tri.normals.is_some() => match source {
+                ViewSource::ReversedRay => {
+                    tri.smooth(tri.barycentric_at(hit.p, hit.normal), hit.normal)
+                }
+                _ => tri.smooth_hit(ray, hit.t),
+            },
+            _ => None,
+        };
         let normal = NormalUsed {
             given: s.normal.map_or(hit.normal, |n| n.given),
             length: s.normal.map_or(R::ONE, |n| n.length),
             used: facing.normal,
             reversed: facing.reversed,
+            smooth,
         };
         let view = Some((incoming, source));
         // The hit's shadow rays, as the tracer casts them, when the problem has them on.

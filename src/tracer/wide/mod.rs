@@ -455,7 +455,7 @@ fn shade_queue<R: Real, const SHADOWS: bool>(
         let group = &b.groups[at..at + len];
         at += len;
         // Lanes past the group's end repeat its last hit (and are not active).
-        let mut hit = [Lane3::<R>::default(); 4];
+        let mut hit = [Lane3::<R>::default(); 5];
         for k in 0..lanes {
             let i = group[k.min(len - 1)].1 as usize;
             let (Some(h), d) = (&b.found[i], b.queue[i].path.ray.direction) else {
@@ -465,15 +465,16 @@ fn shade_queue<R: Real, const SHADOWS: bool>(
             hit[1].set(k, h.hit.p_error);
             hit[2].set(k, h.hit.normal);
             hit[3].set(k, d);
+            hit[4].set(k, h.hit.shading);
         }
-        let [p, p_error, normal, v] = hit.map(Lane3::lanes);
-        // N turned to face the incoming ray (`SurfaceHit::facing`); V is the ray's direction
-        // (Eq. 4.10).
+        let [p, p_error, normal, v, shading] = hit.map(Lane3::lanes);
+        // The shading normal turned to face the incoming ray by the geometric normal's test
+        // (`SurfaceHit::facing`); V is the ray's direction (Eq. 4.10).
         let reversed = normal.dot(v).gt(W::<R>::splat(R::ZERO));
         let n = W3 {
-            x: reversed.select(normal.x.neg(), normal.x),
-            y: reversed.select(normal.y.neg(), normal.y),
-            z: reversed.select(normal.z.neg(), normal.z),
+            x: reversed.select(shading.x.neg(), shading.x),
+            y: reversed.select(shading.y.neg(), shading.y),
+            z: reversed.select(shading.z.neg(), shading.z),
         };
         let point = LanePoint::<W<R>> { p, n, v: Some(v) };
         let mut side = WideSide::<R, SHADOWS> {
