@@ -377,6 +377,8 @@ impl<R: Real> Tracer<'_, R> {
     /// rays it spawns go to `push`, reflection first. `shadows` makes the hit's shadow rays
     /// (asked only with shadows on). `spawn` is where the ray left from, for the record.
     #[inline]
+    // Each part by itself: the wide engine passes its own (no recorder, its queue's push).
+    #[allow(clippy::too_many_arguments)]
     pub(crate) fn bounce<V: CountedVisibility<R>>(
         &self,
         path: &mut PathState<R>,
@@ -437,6 +439,8 @@ impl<R: Real> Tracer<'_, R> {
     /// and the rays it spawns, given to `push`, reflection first. `spawn` is where the ray left
     /// from, for the record.
     #[inline]
+    // Each part by itself: the wide engine passes its own (no recorder, its queue's push).
+    #[allow(clippy::too_many_arguments)]
     pub(crate) fn step(
         &self,
         path: &PathState<R>,
