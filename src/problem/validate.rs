@@ -388,45 +388,55 @@ pub(crate) fn check_work(width: u32, height: u32, samples: u32) -> Result<(), Se
 /// transmits, a hit spawns two rays and the tree may double at each level.
 pub(crate) const MAX_TREE_RAYS: u64 = 1 << 20;
 
-/// The rays one sample's tree can hold at most, with `max_level` and `min_weight`: 2^D − 1, D
-/// the deepest level a ray can reach (the maximum level, or fewer where every O_r and O_t is
-/// below 1 and the weight rule stops the rays first), when some material both reflects and
-/// transmits; D when none does (a chain).
+/// The rays one sample's tree can hold at most, with `max_level` and `min_weight` (saturating
+/// at `u64::MAX`). Each ray but the primary is its parent's only or larger child, whose weight
+/// is its parent's times at most HI (the largest max(O_r) or max(O_t) of any material), or the
+/// smaller child of a hit on a material that both reflects and transmits, times at most LO (the
+/// largest smaller of the two of such a material). A ray of level d reached through i smaller
+/// children has weight ≤ HI^(d−1−i)·LO^i, and at most C(d−1, i) rays of level d are reached so:
+/// the bound counts those whose weight can exceed the minimum weight. Without such a material
+/// the tree is a chain, of at most `max_level` rays.
 pub(crate) fn tree_rays<R: Real>(problem: &Problem<R>, max_level: u32, min_weight: f64) -> u64 {
+    let (mut hi, mut lo) = (0.0f64, 0.0f64);
     let mut branches = false;
-    // The largest max(O) of any child a hit can spawn.
-    let mut most = 0.0f64;
     for s in problem.surfaces() {
         let m = &s.material.material;
         let o_r = m.o_r.map_or(0.0, |o| o.max_element().to_f64());
         let o_t = m.transmission.map_or(0.0, |t| t.o_t.max_element().to_f64());
-        branches |= o_r > 0.0 && o_t > 0.0;
-        most = most.max(o_r).max(o_t);
+        hi = hi.max(o_r).max(o_t);
+        if o_r > 0.0 && o_t > 0.0 {
+            branches = true;
+            lo = lo.max(o_r.min(o_t));
+        }
     }
-    // A ray of level d has weight ≤ most^(d−1) and is traced only while that exceeds the
-    // minimum weight.
-    let mut depth = max_level;
-    if most < 1.0 && min_weight > 0.0 {
-        let mut w = 1.0f64;
-        let mut d = 1;
-        while d < max_level {
-            w *= most;
-            if w <= min_weight {
-                break;
+    if !branches {
+        return u64::from(max_level);
+    }
+    // In logarithms, so that no power underflows; a minimum weight of 0 lets every ray through.
+    let (ln_hi, ln_lo, ln_min) = (hi.ln(), lo.ln(), min_weight.ln());
+    let mut total = 1.0f64;
+    // C(d − 1, i) for the current level d, as f64 (the count saturates long before it rounds
+    // anything that matters).
+    let mut row = vec![1.0f64];
+    for d in 2..=max_level {
+        let mut next = vec![1.0f64; row.len() + 1];
+        for i in 1..row.len() {
+            next[i] = row[i - 1] + row[i];
+        }
+        row = next;
+        let k = f64::from(d - 1);
+        for (i, c) in row.iter().enumerate() {
+            let i = i as f64;
+            let ln_w = (k - i) * ln_hi + i * ln_lo;
+            if min_weight <= 0.0 || ln_w > ln_min {
+                total += c;
             }
-            d += 1;
         }
-        depth = d;
-    }
-    if branches {
-        if depth >= 63 {
-            u64::MAX
-        } else {
-            (1u64 << depth) - 1
+        if total >= 1.8e19 {
+            return u64::MAX;
         }
-    } else {
-        u64::from(depth)
     }
+    total as u64
 }
 
 /// One sample's tree within [`MAX_TREE_RAYS`] rays: refused rather than run for hours.

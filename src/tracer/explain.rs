@@ -113,9 +113,9 @@ pub fn explain_pixel<R: Real>(
     })
 }
 
-/// Why a path's colour Σ factor·local is not finite although each ray's own colour is: the
-/// factor, the product of the O_r of the hits before a ray (Eq. 4.17), or its product with that
-/// ray's local colour, overflows. Names the surface whose reflection was the last one added,
+/// Why a tree's colour Σ factor·local is not finite although each ray's own colour is: the
+/// factor, the product of the O_r and O_t on the way to a ray (Eq. 4.17), or its product with
+/// that ray's local colour, overflows. Names the surface the ray left from (its parent's hit),
 /// as the solver names the light whose term overflows.
 fn overflowed<R: Real>(problem: &Problem<R>, rays: &[RayExplanation<R>]) -> Invalid {
     let surfaces = problem.surfaces();
@@ -124,9 +124,10 @@ fn overflowed<R: Real>(problem: &Problem<R>, rays: &[RayExplanation<R>]) -> Inva
         .iter()
         .position(|r| !(r.record.factor * r.record.local).is_finite())
         .unwrap_or(rays.len().saturating_sub(1));
-    let from = k
-        .checked_sub(1)
-        .and_then(|j| rays[j].record.hit)
+    let from = rays
+        .get(k)
+        .and_then(|r| r.record.parent)
+        .and_then(|j| rays[j as usize].record.hit)
         .map(|h| &surfaces[h.index]);
     let (field, material) = match from {
         Some(s) => (
@@ -139,14 +140,28 @@ fn overflowed<R: Real>(problem: &Problem<R>, rays: &[RayExplanation<R>]) -> Inva
         None => ("surfaces".to_owned(), String::new()),
     };
     let level = rays.get(k).map_or(1, |r| r.record.level);
+    let transmitted = rays
+        .get(k)
+        .is_some_and(|r| r.record.kind == super::trace::RayKind::Transmission);
+    let (adds, fix) = if transmitted {
+        (
+            "O_t·C_t (Section 4.4)",
+            "bring the transmissivity O_t and the colours into a smaller range (a transmissivity \
+             lies in [0, 1])",
+        )
+    } else {
+        (
+            "O_r·C_r (Eq. 4.17)",
+            "bring the reflectivity O_r and the colours into a smaller range (a reflectivity lies \
+             in [0, 1])",
+        )
+    };
     Invalid::new(
         field,
         format!(
-            "the colour this pixel's ray of level {level} adds, O_r·C_r (Eq. 4.17), overflows \
-             {}{material}",
+            "the colour this pixel's ray of level {level} adds, {adds}, overflows {}{material}",
             R::NAME
         ),
-        "bring the reflectivity O_r and the colours into a smaller range (a reflectivity lies \
-         in [0, 1])",
+        fix,
     )
 }

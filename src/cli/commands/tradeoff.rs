@@ -77,14 +77,40 @@ pub(crate) fn run(args: &TradeoffArgs) -> Result<Exit, CliError> {
             fix: "give a smaller --size, fewer --runs, --samples or --reference-samples".into(),
         });
     }
-    // The deepest trees the sweep traces: its largest level with the reference's weight, 0.
-    let deepest = sweep
-        .levels
-        .iter()
-        .chain([&sweep.reference.max_level])
-        .max();
-    if let Some(&level) = deepest {
-        crate::problem::validate::check_tree(&f64_scene.0, level, 0.0)
+    // The deepest trees it traces: the reference's (minimum weight 0), and the sweep's largest
+    // level with its smallest weight.
+    let fits = |level: u32, weight: f64| {
+        crate::problem::validate::check_tree(&f64_scene.0, level, weight).is_ok()
+    };
+    let reference = sweep.reference.max_level;
+    if !fits(reference, 0.0) {
+        let most = (1..reference).rev().find(|&l| fits(l, 0.0)).unwrap_or(1);
+        let limit = crate::problem::validate::MAX_TREE_RAYS;
+        return Err(CliError::Usage {
+            flag: "--reference-level".into(),
+            message: crate::report::messages::both(
+                &format!(
+                    "the reference (maximum level {reference}, minimum weight 0) would let one \
+                     sample's ray tree hold more than {limit} rays, since a material of the \
+                     scene both reflects and transmits and each hit can spawn two rays"
+                ),
+                &format!(
+                    "a referência (nível máximo {reference}, peso mínimo 0) deixaria a árvore de \
+                     raios de uma amostra ter mais de {limit} raios, pois um material da cena \
+                     reflete e transmite e cada interseção pode gerar dois raios"
+                ),
+            ),
+            fix: crate::report::messages::both(
+                &format!("give --reference-level {most} or lower (the deepest whose tree fits)"),
+                &format!("dê --reference-level {most} ou menos (o mais profundo cuja árvore cabe)"),
+            ),
+        });
+    }
+    if let (Some(&level), Some(weight)) = (
+        sweep.levels.iter().max(),
+        sweep.min_weights.iter().copied().reduce(f64::min),
+    ) {
+        crate::problem::validate::check_tree(&f64_scene.0, level, weight)
             .map_err(|e| CliError::setting(e.at("levels")))?;
     }
     for samples in sweep.samples.iter().chain([&sweep.reference.samples]) {
