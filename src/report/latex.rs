@@ -162,6 +162,7 @@ fn shading(out: &mut String, sh: &Shading, lang: Lang) {
     block(out, Phrase::Given, &sh.given, false, lang);
     block(out, Phrase::Steps, &sh.steps, true, lang);
     block(out, Phrase::Total, &sh.total, false, lang);
+    block(out, Phrase::SecondaryRays, &sh.secondary, false, lang);
     for d in &sh.diagrams {
         out.push_str(&super::diagram::tikz(d, lang));
     }

@@ -31,6 +31,15 @@ pub fn pick<T>(lang: Lang, en: T, pt: T) -> T {
     }
 }
 
+/// That a ray problem's solution shows its secondary rays without tracing them (the JSON's
+/// `secondary_rays.note`, and the explanation's last line on them).
+pub(crate) const SECONDARY_NOT_TRACED: &str = "The solver shows these rays but does not trace \
+     them (their colours C_r and C_t are not computed here): phong render traces them.";
+
+/// [`SECONDARY_NOT_TRACED`] in Portuguese.
+pub(crate) const SECONDARY_NOT_TRACED_PT: &str = "O solucionador mostra estes raios mas não os \
+     traça (as suas cores C_r e C_t não são calculadas aqui): quem os traça é o phong render.";
+
 /// Every fixed phrase of the explanations in `lang`, in the order declared: the catalogue a
 /// translator reads, and the one `tests/portuguese.rs` checks outputs against.
 pub fn catalogue(lang: Lang) -> Vec<&'static str> {
@@ -72,6 +81,7 @@ phrases! {
     Given => "Given", "Dados";
     Steps => "Steps", "Passos";
     Total => "Total", "Total";
+    SecondaryRays => "Secondary rays (Section 4.4)", "Raios secundários (Seção 4.4)";
     // The ray.
     Origin => "origin ", "origem ";
     Direction => "direction ", "direção ";
