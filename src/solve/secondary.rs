@@ -182,3 +182,54 @@ pub(crate) fn at_hit<R: Real>(
         transmission,
     })
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::problem::Target;
+    use crate::tracer::{Counts, RayRecord, Scene, Tracer};
+
+    /// The solver's R_V and T are the tracer's own, bit for bit: the exercise's ray traced
+    /// (with every child allowed) gives a reflection ray and a transmission ray whose
+    /// directions are the solution's.
+    #[test]
+    fn the_solvers_secondary_rays_are_the_tracers_in_both_precisions() {
+        fn go<R: Real>() {
+            let path = std::path::Path::new("exercises/secondary-rays.json");
+            let (_, mut problem) = crate::problem::load::<R>(path).unwrap();
+            // Let both children through, so that the tracer spawns them.
+            problem.render.min_weight = R::ZERO;
+            let solution = crate::solve::solve(&problem).unwrap();
+            let x = solution.secondary.expect("secondary rays");
+            let Target::Ray { ray, .. } = problem.target else {
+                panic!("a ray problem")
+            };
+            let scene = Scene::new(&problem);
+            let tracer = Tracer {
+                scene: &scene,
+                problem: &problem,
+            };
+            let mut records: Vec<RayRecord<R>> = Vec::new();
+            tracer.trace(ray, &mut Counts::default(), &mut records);
+            let child = |kind| {
+                records
+                    .iter()
+                    .find(|r| r.kind == kind)
+                    .map(|r| (r.ray.direction, r.level, r.weight))
+            };
+            let r = x.reflection.unwrap();
+            let t = x.transmission.unwrap();
+            assert!(r.traced() && t.traced());
+            assert_eq!(
+                child(crate::tracer::trace::RayKind::Reflection),
+                Some((r.direction.unwrap(), r.level, r.weight))
+            );
+            assert_eq!(
+                child(crate::tracer::trace::RayKind::Transmission),
+                Some((t.refraction.direction.unwrap(), t.level, t.weight))
+            );
+        }
+        go::<f32>();
+        go::<f64>();
+    }
+}
