@@ -220,6 +220,30 @@ fn the_text_says_each_rule_and_that_the_solver_does_not_trace() {
     assert!(after.contains("não os traça"));
 }
 
+#[test]
+fn the_handouts_data_give_o_t_the_index_and_the_render_settings() {
+    for (lang, material, settings) in [
+        (
+            "en",
+            "O_t = (0.5, 0.6, 0.7), η = 1.5",
+            "Render settings: maximum level 2, minimum weight 0.1",
+        ),
+        (
+            "pt",
+            "O_t = (0.5, 0.6, 0.7), η = 1.5",
+            "Parâmetros do traçado: nível máximo 2, peso mínimo 0.1",
+        ),
+    ] {
+        let out = Command::cargo_bin("phong")
+            .unwrap()
+            .args(["solve", EXERCISE, "--part", "statement", "--lang", lang])
+            .output()
+            .unwrap();
+        let text = String::from_utf8(out.stdout).unwrap();
+        assert!(text.contains(material) && text.contains(settings), "{text}");
+    }
+}
+
 /// `phong check EXERCISE --step …` with `args`, its exit code and its JSON.
 fn check(args: &[&str]) -> (i32, Value) {
     let mut all = vec!["check", EXERCISE, "--format", "json"];

@@ -527,6 +527,18 @@ fn data<R: Real>(problem: &Problem<R>, lang: Lang) -> Vec<DataRow> {
         if let (Some(o_r), Some(ReflectivitySource::Explicit)) = (m.material.o_r, m.reflectivity) {
             value.extend([t(", "), Math(Formula::OR), EQ, Color(v::<R>(o_r))]);
         }
+        if let Some(tr) = m.material.transmission {
+            value.extend([
+                t(", "),
+                Math(Formula::OT),
+                EQ,
+                Color(v::<R>(tr.o_t)),
+                t(", "),
+                Math(Formula::Eta),
+                EQ,
+                Num(tr.eta.to_f64()),
+            ]);
+        }
         if value.is_empty() {
             continue;
         }
@@ -537,6 +549,32 @@ fn data<R: Real>(problem: &Problem<R>, lang: Lang) -> Vec<DataRow> {
             ))],
             value,
         );
+    }
+    // A ray problem whose surfaces reflect or transmit: the tracer's settings decide which of
+    // the hit's secondary rays are traced (Section 4.4).
+    if let Target::Ray { surfaces, .. } = &problem.target {
+        let spawns = surfaces.iter().any(|s| {
+            s.material.material.o_r.is_some() || s.material.material.transmission.is_some()
+        });
+        if spawns {
+            let s = &problem.render;
+            row(
+                vec![t(pick(lang, "Render settings", "Parâmetros do traçado"))],
+                vec![t(pick(
+                    lang,
+                    format!(
+                        "maximum level {}, minimum weight {}",
+                        s.max_level,
+                        super::number::num(s.min_weight.to_f64())
+                    ),
+                    format!(
+                        "nível máximo {}, peso mínimo {}",
+                        s.max_level,
+                        super::number::num(s.min_weight.to_f64())
+                    ),
+                ))],
+            );
+        }
     }
     rows
 }
