@@ -268,6 +268,8 @@ const FIELD_NAMES: &[&str] = &[
     "specular",
     "shininess",
     "reflectivity",
+    "transmissivity",
+    "ior",
     "k",
     "eye",
     "look_at",
@@ -567,6 +569,11 @@ const FIELD_VALUES: &[(&str, &[&str])] = &[
         &["1", "255", "0", "2", "-255", "1e300", "254.99999999999997"],
     ),
     ("tolerance", &["0", "-1", "1e308", "1e-320", "0.5", "1e300"]),
+    (
+        "transmissivity",
+        &["[0.9, 0.9, 0.9]", "[0, 0, 0]", "[1, 1, 1]", "[-1, 0, 0]", "[1e308, 1, 1]"],
+    ),
+    ("ior", &["1.5", "1", "0", "-1.5", "1e-320", "1e308", "0.5"]),
     (
         "reflectivity",
         &[

@@ -80,11 +80,14 @@ fn scene<R: Real>(rng: &mut Rng) -> Vec<Shape<R>> {
                 p(i + 1, j),
                 p(i + 1, j + 1),
             )));
-            shapes.push(Shape::Triangle(Triangle::new(
-                p(i, j),
-                p(i + 1, j + 1),
-                p(i, j + 1),
-            )));
+            // Every other triangle smooth: its hits carry an interpolated shading normal.
+            let mut smooth = Triangle::new(p(i, j), p(i + 1, j + 1), p(i, j + 1));
+            let tilt = |k: usize| {
+                let a = 0.3 * ((i + j + k) % 5) as f64 / 4.0;
+                v::<R>([a.sin(), a.cos(), 0.0])
+            };
+            smooth.normals = Some([tilt(0), tilt(1), tilt(2)]);
+            shapes.push(Shape::Triangle(smooth));
         }
     }
     for k in 0..40 {
@@ -183,7 +186,7 @@ fn packet<R: Real>(rng: &mut Rng, shapes: &[Shape<R>], len: usize) -> Vec<Ray<R>
     }
 }
 
-type Bits = Option<(usize, u64, [u64; 3])>;
+type Bits = Option<(usize, u64, [u64; 3], [u64; 3])>;
 
 fn bits<R: Real>(h: &Option<AggregateHit<R>>) -> Bits {
     h.map(|h| {
@@ -191,6 +194,7 @@ fn bits<R: Real>(h: &Option<AggregateHit<R>>) -> Bits {
             h.index,
             h.hit.t.to_f64().to_bits(),
             h.hit.p.to_array().map(|x| x.to_f64().to_bits()),
+            h.hit.shading.to_array().map(|x| x.to_f64().to_bits()),
         )
     })
 }

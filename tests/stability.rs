@@ -22,6 +22,7 @@ use phong::core::Precision;
 use phong::core::{Real, Vector};
 use phong::geometry::{offset_origin, Plane, Ray, Shape, Sphere, Triangle};
 use phong::report::file::{solve_json, solve_text};
+use phong::tracer::Refraction;
 use proptest::prelude::*;
 use proptest::test_runner::{Config, RngSeed};
 use serde_json::{json, Value};
@@ -1270,8 +1271,9 @@ fn rehit_strategy() -> impl Strategy<Value = RehitCase> {
 }
 
 /// What must hold: the aimed ray hits; a ray spawned from the hit by `offset_origin` (the
-/// tracer's and the shadow rays' origin) towards the mirror direction, a random direction and
-/// back the way it came never meets a plane or a triangle again, and meets a sphere again only
+/// tracer's and the shadow rays' origin) towards the mirror direction, a random direction, back
+/// the way it came and through the surface by Snell's law (η 1.5 and 0.7) never meets a plane or
+/// a triangle again, and meets a sphere again only
 /// when it goes into it, at its far side: at t ≥ half the exact chord 2r|w·N| (checked where
 /// |w·N| ≥ 0.01, so the chord is far beyond the point's error).
 fn rehit<R: Real>(case: &RehitCase) -> Result<(), String> {
@@ -1343,7 +1345,17 @@ fn rehit<R: Real>(case: &RehitCase) -> Result<(), String> {
     let n = hit.normal;
     let d = ray.direction;
     let mirror = d - n * (R::TWO * n.dot(d));
-    for w in [mirror, v3::<R>(case.leave), -d] {
+    // The transmitted rays the tracer spawns (Snell's law, docs/conventions.md
+    // "Transmission"), into a denser and into a lighter material, where one exists.
+    let facing = if n.dot(d) > R::ZERO { -n } else { n };
+    let refracted = [1.5, 0.7]
+        .map(|eta| Refraction::at(d, n, facing, R::from_f64(eta)).direction)
+        .into_iter()
+        .flatten();
+    for w in [mirror, v3::<R>(case.leave), -d]
+        .into_iter()
+        .chain(refracted)
+    {
         let spawned = Ray {
             origin: offset_origin::<R>(hit.p, hit.p_error, n, w),
             direction: w,

@@ -736,3 +736,196 @@ fn export_pov_help_offers_only_the_samples_it_can_export() {
     let line = help.lines().find(|l| l.contains("--samples")).unwrap();
     assert!(line.contains("only 1") && !line.contains("4096"), "{line}");
 }
+
+/// The triangle (0,0,0), (1,0,0), (0,1,0) with vertex normals N₀ = (0, 0, 1), N₁ = (0.6, 0, 0.8),
+/// N₂ = (0, 0.6, 0.8): a smooth face.
+const SMOOTH_OBJ: &str = "v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\nvn 0.6 0 0.8\nvn 0 0.6 0.8\n\
+                          f 1//1 2//2 3//3\n";
+
+/// A ray problem on the face of `obj` (written as `smooth.obj`), straight down onto
+/// (0.25, 0.25, 0), lit by a directional light along −z.
+fn smooth_ray_problem(dir: &TempDir, obj: &str) -> PathBuf {
+    fs::write(dir.path().join("smooth.obj"), obj).unwrap();
+    let problem = json!({
+        "lights": [{ "type": "directional", "direction": [0, 0, -1], "color": [1, 1, 1] }],
+        "surfaces": [{ "type": "mesh", "file": "smooth.obj",
+                       "material": { "diffuse": [0.5, 0.5, 0.5], "specular": [0, 0, 0],
+                                     "shininess": 1 } }],
+        "ray": { "origin": [0.25, 0.25, 1], "direction": [0, 0, -1] }
+    });
+    write(dir, "smooth-ray.json", &problem)
+}
+
+#[test]
+fn a_ray_on_a_smooth_face_is_shaded_with_the_interpolated_normal_worked_by_hand() {
+    let dir = TempDir::new().unwrap();
+    let path = smooth_ray_problem(&dir, SMOOTH_OBJ);
+    let s = solve_json(&path);
+    // By hand: P = (0.25, 0.25, 0), b = (1 − x − y, x, y) = (0.5, 0.25, 0.25);
+    // ΣbN = (0.15, 0.15, 0.5 + 0.2 + 0.2) = (0.15, 0.15, 0.9), ‖ΣbN‖ = √0.855;
+    // cos θ = −N·L = N_z = 0.9/√0.855 = 0.97332852…; diffuse 0.5·cos θ = 0.48666426….
+    let len = 0.855f64.sqrt();
+    let want_n = [0.15 / len, 0.15 / len, 0.9 / len];
+    let normal = &s["solution"]["normal"];
+    for (i, want) in want_n.iter().enumerate() {
+        let got = normal["n"][i].as_f64().unwrap();
+        assert!((got - want).abs() < 1e-15, "N = {normal}");
+    }
+    // The geometric normal is the winding's, (0, 0, 1), and it is not reversed.
+    assert_eq!(normal["given"], json!([0.0, 0.0, 1.0]));
+    assert_eq!(normal["reversed"], json!(false));
+    let smooth = &normal["smooth"];
+    for (i, want) in [0.5, 0.25, 0.25].iter().enumerate() {
+        let got = smooth["barycentric"][i].as_f64().unwrap();
+        assert!((got - want).abs() < 1e-15, "{smooth}");
+    }
+    assert_eq!(smooth["clamped"], json!(false));
+    assert_eq!(smooth["vertex_normals"][1], json!([0.6, 0.0, 0.8]));
+    let diffuse = 0.5 * 0.9 / len;
+    assert!((diffuse - 0.486_664_26).abs() < 1e-8);
+    for c in 0..3 {
+        let got = s["solution"]["color"]["unclamped"][c].as_f64().unwrap();
+        assert!((got - diffuse).abs() < 1e-15, "{}", s["solution"]["color"]);
+    }
+    // The text says where N came from, in both languages.
+    for (lang, words) in [
+        (
+            "en",
+            "interpolated from the triangle's three vertex normals",
+        ),
+        (
+            "pt",
+            "interpolada das normais dos três vértices do triângulo",
+        ),
+    ] {
+        let out = phong()
+            .arg("solve")
+            .arg(&path)
+            .args(["--lang", lang])
+            .output()
+            .unwrap();
+        let text = String::from_utf8_lossy(&out.stdout);
+        assert!(out.status.success() && text.contains(words), "{text}");
+        assert!(text.contains("(0.5, 0.25, 0.25)"), "{text}");
+    }
+}
+
+#[test]
+fn a_flat_mesh_s_json_has_no_smooth_normal() {
+    let dir = TempDir::new().unwrap();
+    let path = smooth_ray_problem(&dir, "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+    let s = solve_json(&path);
+    let normal = &s["solution"]["normal"];
+    assert!(normal.get("smooth").is_none(), "{normal}");
+    assert_eq!(normal["n"], json!([0.0, 0.0, 1.0]));
+}
+
+#[test]
+fn bad_vertex_normals_are_refused_naming_the_obj_file_and_line() {
+    let dir = TempDir::new().unwrap();
+    let scene = |file: &str| {
+        let mut s = small_scene();
+        s["surfaces"] = json!([{ "type": "mesh", "file": file,
+                                 "material": { "ambient": [0.5, 0.5, 0.5] } }]);
+        s
+    };
+    let corners = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";
+    for (name, body, words, pt) in [
+        (
+            "zero.obj",
+            "vn 0 0 0\nf 1//1 2//1 3//1\n",
+            "line 4: the vertex normal",
+            "linha 4: a normal de vértice \"vn 0 0 0\" tem comprimento zero em f64",
+        ),
+        (
+            "nan.obj",
+            "vn 0 nan 1\nf 1//1 2//1 3//1\n",
+            "line 4: the vertex normal",
+            "linha 4: a normal de vértice \"vn 0 nan 1\" não é finita em f64",
+        ),
+        (
+            "partial.obj",
+            "vn 0 0 1\nf 1//1 2 3//1\n",
+            "line 5: the face",
+            "dá normais de vértice para 2 de seus 3 vértices",
+        ),
+        (
+            "index.obj",
+            "vn 0 0 1\nf 1//1 2//1 3//2\n",
+            "line 5: the face",
+            "se refere à normal de vértice 2 (em 3//2), e 1 normais de vértice vêm antes dela",
+        ),
+    ] {
+        fs::write(dir.path().join(name), format!("{corners}{body}")).unwrap();
+        refused(&dir, &scene(name), &[], "surfaces[0].file");
+        let path = write(&dir, "bad.json", &scene(name));
+        let out = phong()
+            .arg("render")
+            .arg(&path)
+            .arg("-o")
+            .arg(dir.path().join("out.png"))
+            .output()
+            .unwrap();
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        assert!(
+            stderr.contains(name) && stderr.contains(words) && !stderr.contains("Português"),
+            "{name}: {stderr}"
+        );
+        let out = phong()
+            .arg("render")
+            .arg(&path)
+            .arg("-o")
+            .arg(dir.path().join("out.png"))
+            .args(["--lang", "pt"])
+            .output()
+            .unwrap();
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        assert!(
+            out.status.code() == Some(BAD_INPUT)
+                && stderr.contains(pt)
+                && stderr.contains("Correção"),
+            "{name}: {stderr}"
+        );
+    }
+}
+
+#[test]
+fn an_explained_smooth_mesh_pixel_says_which_normal_it_shades_with() {
+    let path = repo("scenes/smooth.json");
+    // Pixel (100, 100) of the 320×240 scene is on the mesh sphere.
+    let v = explain_json(&path, 100, 100, &[]);
+    let solve = &v["samples"][0]["rays"][0]["solve"];
+    assert_eq!(
+        solve["intersection"]["surface_type"],
+        json!("triangle"),
+        "{solve}"
+    );
+    let ray = &solve["solution"];
+    let smooth = &ray["normal"]["smooth"];
+    let b: Vec<f64> = (0..3)
+        .map(|i| smooth["barycentric"][i].as_f64().unwrap())
+        .collect();
+    assert!(b.iter().all(|&x| x >= 0.0) && (b.iter().sum::<f64>() - 1.0).abs() < 1e-12);
+    // The interpolation by hand from the weights and the vertex normals given.
+    let mut sum = [0.0; 3];
+    for (k, bk) in b.iter().enumerate() {
+        for (i, s) in sum.iter_mut().enumerate() {
+            *s += bk * smooth["vertex_normals"][k][i].as_f64().unwrap();
+        }
+    }
+    let len = (sum[0] * sum[0] + sum[1] * sum[1] + sum[2] * sum[2]).sqrt();
+    for (i, s) in sum.iter().enumerate() {
+        let n = ray["normal"]["n"][i].as_f64().unwrap();
+        assert!((n - s / len).abs() < 1e-12, "{}", ray["normal"]);
+    }
+    for (lang, words) in [("en", "N_g = "), ("pt", "a normal geométrica do triângulo")] {
+        let out = phong()
+            .arg("render")
+            .arg(&path)
+            .args(["--explain-pixel", "100,100", "--lang", lang])
+            .output()
+            .unwrap();
+        let text = String::from_utf8_lossy(&out.stdout);
+        assert!(out.status.success() && text.contains(words), "{text}");
+    }
+}

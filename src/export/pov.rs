@@ -49,7 +49,7 @@ use glam::DVec3;
 
 use crate::core::light::{Falloff, LightKind};
 use crate::core::Material;
-use crate::geometry::Shape;
+use crate::geometry::{Shape, Triangle};
 use crate::problem::{Problem, Surface};
 use crate::tracer::camera::CameraRays;
 
@@ -316,14 +316,35 @@ pub fn export(problem: &Problem<f64>) -> Result<String, Unexpressible> {
                     && surfaces[i].source.index == index
                     && surfaces[i].source.triangle.is_some()
                 {
-                    if let Shape::Triangle(tri) = surfaces[i].shape {
-                        let _ = writeln!(
-                            out,
-                            "  triangle {{ {}, {}, {} }}",
-                            vec3(tri.p[0]),
-                            vec3(tri.p[1]),
-                            vec3(tri.p[2])
-                        );
+                    match surfaces[i].shape {
+                        // A smooth face (vertex normals): POV-Ray's smooth_triangle
+                        // interpolates them as phong does (docs/conventions.md, "Smooth
+                        // meshes").
+                        Shape::Triangle(Triangle {
+                            p,
+                            normals: Some(n),
+                        }) => {
+                            let _ = writeln!(
+                                out,
+                                "  smooth_triangle {{ {}, {}, {}, {}, {}, {} }}",
+                                vec3(p[0]),
+                                vec3(n[0]),
+                                vec3(p[1]),
+                                vec3(n[1]),
+                                vec3(p[2]),
+                                vec3(n[2])
+                            );
+                        }
+                        Shape::Triangle(tri) => {
+                            let _ = writeln!(
+                                out,
+                                "  triangle {{ {}, {}, {} }}",
+                                vec3(tri.p[0]),
+                                vec3(tri.p[1]),
+                                vec3(tri.p[2])
+                            );
+                        }
+                        _ => {}
                     }
                     i += 1;
                 }

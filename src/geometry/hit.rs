@@ -24,14 +24,23 @@ pub struct SurfaceHit<R: Real> {
     /// A bound on the absolute error of each component of `p`.
     pub p_error: V3<R>,
     /// The surface's own unit normal at `p` (a plane's as given, a sphere's outward, a
-    /// triangle's (v1 − v0) × (v2 − v0)); `SurfaceHit::facing` turns it to face a ray.
+    /// triangle's (v1 − v0) × (v2 − v0)): the geometric normal, which decides which side of
+    /// the surface a ray is on ([`SurfaceHit::facing`]) and where spawned rays leave from.
     pub normal: V3<R>,
+    /// The unit normal to shade with, on the same side of the surface as `normal`: `normal`
+    /// itself, except on a smooth triangle (a mesh with vertex normals), where it is the
+    /// barycentric interpolation of the three vertex normals, normalised (or `normal` where
+    /// that interpolation does not lie on `normal`'s side; docs/conventions.md, "Smooth
+    /// meshes"). [`SurfaceHit::facing`] turns it to the ray with `normal`'s turn.
+    pub shading: V3<R>,
 }
 
-/// The normal used at a hit: the surface's own, turned to face the incoming ray.
+/// The normal used at a hit: the shading normal, turned to face the incoming ray by the test
+/// on the surface's own (geometric) normal.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Facing<R: Real> {
-    /// N with N·D ≤ 0 for the incoming direction D.
+    /// The shading normal on the side the ray comes from: N_g·D ≤ 0 for the geometric normal
+    /// N_g so turned (and N·D ≤ 0 too wherever N is N_g: every surface but a smooth triangle).
     pub normal: V3<R>,
     /// Whether the surface's own normal was reversed to get it.
     pub reversed: bool,
@@ -45,22 +54,30 @@ impl<R: Real> SurfaceHit<R> {
     pub(crate) fn behind_origin(shape: &Shape<R>, ray: &Ray<R>, t: R) -> Option<Self> {
         // The point's error bound, for any shape: O, P and tD each a few roundings off.
         let p = shape.point_at(ray, t);
+        let normal = shape.normal_at(p)?;
         Some(SurfaceHit {
             t,
             p,
             p_error: (ray.origin.abs() + p.abs() + (ray.direction * t).abs()) * gamma::<R>(8),
-            normal: shape.normal_at(p)?,
+            normal,
+            shading: shape.shading_at(p, normal),
         })
     }
 
-    /// The surface's normal turned to face a ray arriving along `incoming` (pbrt-v4's
-    /// `FaceForward`; docs/conventions.md, "Orientation"): reversed when N·D > 0, so that a
-    /// primary ray sees the side it comes from.
+    /// The normal to shade with, turned to face a ray arriving along `incoming` (pbrt-v4's
+    /// `FaceForward`; docs/conventions.md, "Orientation", "Smooth meshes"): the shading normal,
+    /// reversed when the geometric normal has N_g·D > 0, so that a primary ray sees the side it
+    /// comes from. This is the one place the tracer (both engines' shading and the reflection
+    /// direction, Eq. 4.17) and the solver take the normal from.
     #[inline]
     pub(crate) fn facing(&self, incoming: V3<R>) -> Facing<R> {
         let reversed = self.normal.dot(incoming) > R::ZERO;
         Facing {
-            normal: if reversed { -self.normal } else { self.normal },
+            normal: if reversed {
+                -self.shading
+            } else {
+                self.shading
+            },
             reversed,
         }
     }

@@ -26,7 +26,7 @@ pub use hit::{offset_origin, SurfaceHit};
 pub use plane::Plane;
 pub use ray::Ray;
 pub use sphere::Sphere;
-pub use triangle::Triangle;
+pub use triangle::{SmoothNormal, Triangle};
 
 use crate::core::{Real, Vector, V3};
 
@@ -128,6 +128,15 @@ impl<R: Real> Shape<R> {
         }
     }
 
+    /// Whether the ray's whole line lies on the surface (a plane it lies in,
+    /// [`Plane::contains_line`]); a sphere or a triangle never holds a whole line.
+    pub(crate) fn contains_line(&self, ray: &Ray<R>) -> bool {
+        match self {
+            Shape::Plane(p) => p.contains_line(ray),
+            Shape::Sphere(_) | Shape::Triangle(_) => false,
+        }
+    }
+
     /// The point at t, re-projected onto the surface where that reduces rounding error.
     pub(crate) fn point_at(&self, ray: &Ray<R>, t: R) -> V3<R> {
         match self {
@@ -144,6 +153,15 @@ impl<R: Real> Shape<R> {
             Shape::Plane(pl) => Some(pl.normal),
             Shape::Sphere(s) => s.normal_at(p),
             Shape::Triangle(t) => t.normal(),
+        }
+    }
+
+    /// The unit normal to shade with at a point `p` on the surface whose own normal there is
+    /// `normal`: `normal`, except on a smooth triangle ([`Triangle::shading_at`]).
+    pub(crate) fn shading_at(&self, p: V3<R>, normal: V3<R>) -> V3<R> {
+        match self {
+            Shape::Triangle(t) => t.shading_at(p, normal),
+            _ => normal,
         }
     }
 

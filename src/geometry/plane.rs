@@ -38,6 +38,14 @@ impl<R: Real> Plane<R> {
         (t.is_finite() && ray.at(t).is_finite()).then_some(t)
     }
 
+    /// Whether the ray's line lies in the plane as computed: N·D = 0 and N·(Q − O) = 0. Such a
+    /// line meets the plane at every point, so [`Plane::intersect_line`] has no single t for it
+    /// (docs/conventions.md, "Ray hits"); the solver says so rather than "no hit".
+    pub(crate) fn contains_line(&self, ray: &Ray<R>) -> bool {
+        self.normal.dot(ray.direction) == R::ZERO
+            && self.normal.dot(self.point - ray.origin) == R::ZERO
+    }
+
     /// The hit at a t found by [`Plane::intersect_line`]: O + tD, bounded in error, with the
     /// plane's normal as given.
     #[inline]
@@ -53,6 +61,7 @@ impl<R: Real> Plane<R> {
             p,
             p_error,
             normal: self.normal,
+            shading: self.normal,
         }
     }
 }

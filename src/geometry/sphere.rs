@@ -85,11 +85,13 @@ impl<R: Real> Sphere<R> {
         // The point's error bound: C + r·(P − C)/‖P − C‖ is a few roundings of |C| and |P|
         // (pbrt re-projects in object space; here C is not at the origin).
         let p = self.project(ray.at(t));
+        let normal = self.normal_at(p)?;
         Some(SurfaceHit {
             t,
             p,
             p_error: self.center.abs() * gamma::<R>(6) + p.abs() * gamma::<R>(6),
-            normal: self.normal_at(p)?,
+            normal,
+            shading: normal,
         })
     }
 

@@ -21,6 +21,27 @@ use crate::core::{Real, Vector, V3};
 pub struct Triangle<R: Real> {
     /// The corners p₀, p₁, p₂; the normal is (p₁ − p₀) × (p₂ − p₀), normalised.
     pub p: [V3<R>; 3],
+    /// The unit vertex normals N₀, N₁, N₂ at the corners (an OBJ file's `vn`) of a smooth
+    /// triangle, shaded with their barycentric interpolation ([`Triangle::smooth`]); `None` for
+    /// a flat triangle, shaded with its geometric normal.
+    pub normals: Option<[V3<R>; 3]>,
+}
+
+/// How a smooth triangle's shading normal came about at a point: the interpolation of its
+/// vertex normals (docs/conventions.md, "Smooth meshes"), for the hit and the explanation.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct SmoothNormal<R: Real> {
+    /// The barycentric weights b₀, b₁, b₂ of the point.
+    pub b: [R; 3],
+    /// The unit vertex normals N₀, N₁, N₂.
+    pub vertex: [V3<R>; 3],
+    /// b₀N₀ + b₁N₁ + b₂N₂ normalised; `None` where that sum is zero (opposite vertex normals).
+    pub interpolated: Option<V3<R>>,
+    /// The shading normal: `interpolated`, or the geometric normal where `interpolated` is
+    /// `None` or not on the geometric normal's side (N·N_g ≤ 0).
+    pub used: V3<R>,
+    /// Whether `used` is the geometric normal in place of the interpolation.
+    pub clamped: bool,
 }
 
 /// A ray's hit on a triangle, 0 < t < t_max.
@@ -102,7 +123,59 @@ impl<R: Real> Triangle<R> {
     /// The triangle with corners `p0`, `p1`, `p2`.
     #[inline]
     pub fn new(p0: V3<R>, p1: V3<R>, p2: V3<R>) -> Self {
-        Triangle { p: [p0, p1, p2] }
+        Triangle {
+            p: [p0, p1, p2],
+            normals: None,
+        }
+    }
+
+    /// The shading normal of a smooth triangle at the barycentric point `b`, whose geometric
+    /// normal is `ng` (docs/conventions.md, "Smooth meshes"): N = b₀N₀ + b₁N₁ + b₂N₂ normalised,
+    /// kept only where it lies on `ng`'s side of the surface (N·N_g > 0; else N_g, as pbrt and
+    /// Mitsuba keep a shading normal from crossing the geometric surface); `None` for a flat
+    /// triangle.
+    #[inline]
+    pub fn smooth(&self, b: [R; 3], ng: V3<R>) -> Option<SmoothNormal<R>> {
+        let vertex = self.normals?;
+        let sum = vertex[0] * b[0] + vertex[1] * b[1] + vertex[2] * b[2];
+        let interpolated = normalize::<R>(sum).map(|n| n.unit);
+        let (used, clamped) = match interpolated {
+            Some(n) if n.dot(ng) > R::ZERO => (n, false),
+            _ => (ng, true),
+        };
+        Some(SmoothNormal {
+            b,
+            vertex,
+            interpolated,
+            used,
+            clamped,
+        })
+    }
+
+    /// The barycentric weights of a point `p` on the triangle's plane whose geometric normal is
+    /// `ng`: each b_i the signed area of the triangle p with the other two corners over the
+    /// whole (for a point the watertight test did not give: the line's meeting behind a ray's
+    /// origin).
+    pub(crate) fn barycentric_at(&self, p: V3<R>, ng: V3<R>) -> [R; 3] {
+        let [p0, p1, p2] = self.p;
+        let area = |a: V3<R>, b: V3<R>, c: V3<R>| (b - a).cross(c - a).dot(ng);
+        let whole = area(p0, p1, p2);
+        [
+            area(p, p1, p2) / whole,
+            area(p0, p, p2) / whole,
+            area(p0, p1, p) / whole,
+        ]
+    }
+
+    /// The unit normal to shade with at a point `p` on the triangle whose geometric normal is
+    /// `ng`: the smooth normal there ([`Triangle::smooth`] at [`Triangle::barycentric_at`]),
+    /// or `ng` for a flat triangle.
+    pub(crate) fn shading_at(&self, p: V3<R>, ng: V3<R>) -> V3<R> {
+        if self.normals.is_none() {
+            return ng;
+        }
+        self.smooth(self.barycentric_at(p, ng), ng)
+            .map_or(ng, |s| s.used)
     }
 
     /// The box of the three corners (exact: no arithmetic).
@@ -270,17 +343,31 @@ impl<R: Real> Triangle<R> {
     }
 
     /// The ray's hit with 0 < t < `t_max` as [`Triangle::intersect`] finds it, with the
-    /// barycentric point, its error bound and the triangle's normal; `None` also for a
-    /// triangle degenerate in this precision (see [`Triangle::normal`]).
+    /// barycentric point, its error bound, the triangle's normal and the normal to shade with
+    /// (the smooth normal at the hit's barycentric weights, [`Triangle::smooth`]; the
+    /// triangle's normal for a flat one); `None` also for a triangle degenerate in this
+    /// precision (see [`Triangle::normal`]).
     #[inline]
     pub(crate) fn hit(&self, ray: &Ray<R>, t_max: R) -> Option<SurfaceHit<R>> {
         let h = self.intersect(ray, t_max)?;
+        let normal = self.normal()?;
         Some(SurfaceHit {
             t: h.t,
             p: h.p,
             p_error: h.p_error,
-            normal: self.normal()?,
+            normal,
+            shading: self.smooth(h.b, normal).map_or(normal, |s| s.used),
         })
+    }
+
+    /// How the shading normal of the hit [`Triangle::hit`] gives for a ray whose hit is at `t`
+    /// came about: its barycentric weights and the interpolation ([`Triangle::smooth`], the
+    /// same arithmetic, so `used` is the hit's shading normal to the bit); `None` for a flat
+    /// triangle or no hit. The solver's explanation reads it.
+    pub(crate) fn smooth_hit(&self, ray: &Ray<R>, t: R) -> Option<SmoothNormal<R>> {
+        self.normals?;
+        let h = self.intersect(ray, t.next_up())?;
+        self.smooth(h.b, self.normal()?)
     }
 
     /// t (of either sign, 0 included) where the ray's *line* meets the triangle, by the same
@@ -479,6 +566,78 @@ mod tests {
     fn normal_is_unit_and_oriented_by_corner_order_and_none_for_degenerate_triangles() {
         normals::<f32>();
         normals::<f64>();
+    }
+
+    fn smooth_normals<R: Real>() {
+        let mut t = tri::<R>([0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0]);
+        // Flat: the shading normal is the geometric normal, bit for bit, and facing turns it
+        // as before.
+        let down = ray::<R>([0.25, 0.25, 1.0], [0.0, 0.0, -1.0]);
+        let flat = t.hit(&down, inf::<R>()).unwrap();
+        assert_eq!(flat.shading, flat.normal);
+        assert_eq!(flat.facing(down.direction).normal, flat.normal);
+        assert!(t.smooth_hit(&down, flat.t).is_none());
+        // N₀ = (0, 0, 1), N₁ = (0.6, 0, 0.8), N₂ = (0, 0.6, 0.8) and the hit at (0.25, 0.25, 0),
+        // b = (0.5, 0.25, 0.25): ΣbN = (0.15, 0.15, 0.5 + 0.2 + 0.2) = (0.15, 0.15, 0.9), of
+        // length √0.855 (by hand).
+        t.normals = Some([
+            v3::<R>([0.0, 0.0, 1.0]),
+            v3::<R>([0.6, 0.0, 0.8]),
+            v3::<R>([0.0, 0.6, 0.8]),
+        ]);
+        let h = t.hit(&down, inf::<R>()).unwrap();
+        let len = 0.855f64.sqrt();
+        let want = [0.15 / len, 0.15 / len, 0.9 / len];
+        let got = to_f64_array::<R>(h.shading);
+        for i in 0..3 {
+            assert!(close(R::from_f64(got[i]), want[i], 8.0), "{got:?} {want:?}");
+        }
+        // The geometric normal, the point and t are the flat triangle's.
+        assert_eq!((h.normal, h.p, h.t), (flat.normal, flat.p, flat.t));
+        let s = t.smooth_hit(&down, h.t).unwrap();
+        assert_eq!((s.used, s.clamped), (h.shading, false));
+        for (b, want) in s.b.iter().zip([0.5, 0.25, 0.25]) {
+            assert!(close(*b, want, 8.0), "{:?}", s.b);
+        }
+        // From below, the shading normal turns with the geometric normal's test.
+        let up = ray::<R>([0.25, 0.25, -1.0], [0.0, 0.0, 1.0]);
+        let below = t.hit(&up, inf::<R>()).unwrap();
+        let f = below.facing(up.direction);
+        assert!(f.reversed);
+        assert_eq!(f.normal, -below.shading);
+        // The line's point behind an origin gets the same weights from its areas.
+        let b = t.barycentric_at(h.p, h.normal);
+        for (b, want) in b.iter().zip([0.5, 0.25, 0.25]) {
+            assert!(close(*b, want, 8.0), "{b:?}");
+        }
+        // Vertex normals against the winding: the interpolation is on the other side of the
+        // surface, so the geometric normal is used.
+        t.normals = Some([
+            v3::<R>([0.0, 0.0, -1.0]),
+            v3::<R>([0.6, 0.0, -0.8]),
+            v3::<R>([0.0, 0.6, -0.8]),
+        ]);
+        let h = t.hit(&down, inf::<R>()).unwrap();
+        assert_eq!(h.shading, h.normal);
+        assert!(t.smooth_hit(&down, h.t).unwrap().clamped);
+        // Opposite normals cancelling at the hit: no interpolation, the geometric normal.
+        t.normals = Some([
+            v3::<R>([0.0, 0.0, 1.0]),
+            v3::<R>([0.0, 0.0, -1.0]),
+            v3::<R>([0.0, 0.0, -1.0]),
+        ]);
+        let h = t.hit(&down, inf::<R>()).unwrap();
+        let s = t.smooth_hit(&down, h.t).unwrap();
+        assert_eq!(
+            (s.interpolated, s.clamped, h.shading),
+            (None, true, h.normal)
+        );
+    }
+
+    #[test]
+    fn a_smooth_triangle_shades_with_its_interpolated_vertex_normals_worked_by_hand() {
+        smooth_normals::<f32>();
+        smooth_normals::<f64>();
     }
 
     #[test]

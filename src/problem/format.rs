@@ -322,7 +322,7 @@ pub struct MaterialSpec {
     /// η > 0, the index of refraction of the surface's inside (the side its normal points away
     /// from; the outside's is 1), for Snell's law. Given with `transmissivity`.
     #[serde(default)]
-    #[schemars(range(min = 0))]
+    #[schemars(extend("exclusiveMinimum" = 0))]
     pub ior: Option<f64>,
 }
 

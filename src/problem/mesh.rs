@@ -1,11 +1,16 @@
 //! Wavefront OBJ meshes: read with `tobj`, polygons split into triangles, each triangle checked
 //! to have an area in the chosen precision. Materials of the OBJ file (`.mtl`) are not read:
-//! a mesh has the one material its surface entry names.
+//! a mesh has the one material its surface entry names. Vertex normals (`vn`, faces `f v//vn` or
+//! `f v/vt/vn`) make the faces that give them smooth triangles (docs/conventions.md, "Smooth
+//! meshes"); they are read by this module's own first pass, since `tobj` drops a missing normal
+//! of a face silently and misaligns the rest.
 
 use std::path::Path;
 
+use crate::core::vector::normalize;
 use crate::core::{Real, Vector, V3};
 use crate::geometry::Triangle;
+use crate::report::messages::both;
 
 /// Why a mesh could not be used: a message and how to fix it.
 #[derive(Debug)]
@@ -23,12 +28,18 @@ pub const MAX_TRIANGLES: usize = 1_000_000;
 
 /// What the first pass over an OBJ file found: where each face is, so that a triangle can be
 /// named by the line of its face.
-struct Faces {
+struct Faces<R: Real> {
     /// The line of each face and how many triangles it gives, in the file's order.
     lines: Vec<(usize, usize)>,
+    /// The file's vertex normals (`vn`), each normalised in `R`.
+    normals: Vec<V3<R>>,
+    /// Each triangle's vertex normals as indices into `normals` (0-based), in the order of its
+    /// corners, or `None` for a face without normals; triangles in the file's order, a
+    /// polygon's fan (p₀, p_i, p_{i+1}) as `tobj` splits it.
+    triangle_normals: Vec<Option<[u32; 3]>>,
 }
 
-impl Faces {
+impl<R: Real> Faces<R> {
     /// The line of the face that gave triangle `k` (0-based, in the file's order).
     fn line_of(&self, k: usize) -> usize {
         let mut first = 0;
@@ -60,13 +71,38 @@ fn at_line(line: usize, message: String, fix: &str) -> MeshError {
     }
 }
 
-/// The first pass: every vertex is three numbers finite in `R`, every face has at least three
-/// vertices that exist, there are at most [`MAX_TRIANGLES`] triangles; each mistake named by its
-/// line (`tobj` says only which kind of line failed).
-fn scan<R: Real>(text: &str) -> Result<Faces, MeshError> {
+/// The fix for a vertex normal that is zero (or too small) in `R`, in both languages.
+fn zero_normal_fix<R: Real>() -> String {
+    let (en, pt) = if R::NAME == "f32" {
+        (" (or use --precision f64)", " (ou use --precision f64)")
+    } else {
+        ("", "")
+    };
+    both(
+        &format!(
+            "give each `vn` a direction of nonzero length{en}, or remove the mesh's `vn` lines \
+             and the faces' `//n` parts for flat shading"
+        ),
+        &format!(
+            "dê a cada `vn` uma direção de comprimento não nulo{pt}, ou remova as linhas `vn` \
+             da malha e as partes `//n` das faces para um sombreamento plano"
+        ),
+    )
+}
+
+/// The first pass: every vertex is three numbers finite in `R`, every vertex normal three
+/// numbers finite in `R` of a length that is not zero there, every face has at least three
+/// vertices that exist and either a normal for each of them or none, there are at most
+/// [`MAX_TRIANGLES`] triangles; each mistake named by its line (`tobj` says only which kind of
+/// line failed).
+fn scan<R: Real>(text: &str) -> Result<Faces<R>, MeshError> {
     let mut vertices: usize = 0;
     let mut triangles: usize = 0;
-    let mut faces = Faces { lines: Vec::new() };
+    let mut faces = Faces {
+        lines: Vec::new(),
+        normals: Vec::new(),
+        triangle_normals: Vec::new(),
+    };
     for (i, line) in text.lines().enumerate() {
         let n = i + 1;
         let mut words = line.split_whitespace();
@@ -99,6 +135,81 @@ fn scan<R: Real>(text: &str) -> Result<Faces, MeshError> {
                 }
                 vertices += 1;
             }
+            Some("vn") => {
+                let xyz: Vec<&str> = words.by_ref().take(3).collect();
+                let numbers: Option<Vec<f64>> = (xyz.len() == 3)
+                    .then(|| xyz.iter().map(|w| w.parse::<f64>().ok()).collect())
+                    .flatten();
+                let Some(numbers) = numbers else {
+                    return Err(at_line(
+                        n,
+                        both(
+                            &format!(
+                                "the vertex normal \"{}\" is not `vn x y z` (three numbers)",
+                                shown()
+                            ),
+                            &format!(
+                                "a normal de vértice \"{}\" não é `vn x y z` (três números)",
+                                shown()
+                            ),
+                        ),
+                        &both(
+                            "write each vertex normal as `vn x y z`",
+                            "escreva cada normal de vértice como `vn x y z`",
+                        ),
+                    ));
+                };
+                if numbers
+                    .iter()
+                    .any(|&x| !(x.is_finite() && R::from_f64(x).is_finite()))
+                {
+                    return Err(at_line(
+                        n,
+                        both(
+                            &format!(
+                                "the vertex normal \"{}\" is not finite in {}",
+                                shown(),
+                                R::NAME
+                            ),
+                            &format!(
+                                "a normal de vértice \"{}\" não é finita em {}",
+                                shown(),
+                                R::NAME
+                            ),
+                        ),
+                        &both(
+                            "give each `vn` three finite numbers, a direction such as `vn 0 1 0`",
+                            "dê a cada `vn` três números finitos, uma direção como `vn 0 1 0`",
+                        ),
+                    ));
+                }
+                let v = V3::<R>::new(
+                    R::from_f64(numbers[0]),
+                    R::from_f64(numbers[1]),
+                    R::from_f64(numbers[2]),
+                );
+                let Some(unit) = normalize::<R>(v) else {
+                    return Err(at_line(
+                        n,
+                        both(
+                            &format!(
+                                "the vertex normal \"{}\" has length zero in {}, so it has no \
+                                 direction",
+                                shown(),
+                                R::NAME
+                            ),
+                            &format!(
+                                "a normal de vértice \"{}\" tem comprimento zero em {}, então \
+                                 não tem direção",
+                                shown(),
+                                R::NAME
+                            ),
+                        ),
+                        &zero_normal_fix::<R>(),
+                    ));
+                };
+                faces.normals.push(unit.unit);
+            }
             Some("l") => {
                 return Err(at_line(
                     n,
@@ -122,6 +233,70 @@ fn scan<R: Real>(text: &str) -> Result<Faces, MeshError> {
                         "give each face three or more vertices (`f i j k`)",
                     ));
                 }
+                // Each vertex's normal index (`v//vn`, `v/vt/vn`), when it gives one.
+                let mut vn: Vec<Option<u32>> = Vec::with_capacity(refs.len());
+                for r in &refs {
+                    let Some(word) = r.split('/').nth(2).filter(|w| !w.is_empty()) else {
+                        vn.push(None);
+                        continue;
+                    };
+                    let known = faces.normals.len() as i64;
+                    let resolved = word
+                        .parse::<i64>()
+                        .ok()
+                        .map(|k| if k < 0 { known + 1 + k } else { k })
+                        .filter(|&k| k >= 1 && k <= known);
+                    let Some(k) = resolved else {
+                        return Err(at_line(
+                            n,
+                            both(
+                                &format!(
+                                    "the face \"{}\" refers to vertex normal {word} (in {r}), \
+                                     and {known} vertex normals come before it",
+                                    shown()
+                                ),
+                                &format!(
+                                    "a face \"{}\" se refere à normal de vértice {word} (em \
+                                     {r}), e {known} normais de vértice vêm antes dela",
+                                    shown()
+                                ),
+                            ),
+                            &both(
+                                "correct the face's normal indices (the third number of \
+                                 `v/vt/vn`; 1 is the first `vn` line)",
+                                "corrija os índices de normais da face (o terceiro número de \
+                                 `v/vt/vn`; 1 é a primeira linha `vn`)",
+                            ),
+                        ));
+                    };
+                    vn.push(Some((k - 1) as u32));
+                }
+                let given = vn.iter().flatten().count();
+                if given != 0 && given != vn.len() {
+                    return Err(at_line(
+                        n,
+                        both(
+                            &format!(
+                                "the face \"{}\" gives vertex normals for {given} of its {} \
+                                 vertices; a face is smooth with a normal at every corner, or \
+                                 flat with none",
+                                shown(),
+                                vn.len()
+                            ),
+                            &format!(
+                                "a face \"{}\" dá normais de vértice para {given} de seus {} \
+                                 vértices; uma face é suave com uma normal em cada vértice, ou \
+                                 plana sem nenhuma",
+                                shown(),
+                                vn.len()
+                            ),
+                        ),
+                        &both(
+                            "give every vertex of the face a normal (`v//vn`), or none (`v`)",
+                            "dê uma normal a cada vértice da face (`v//vn`), ou a nenhum (`v`)",
+                        ),
+                    ));
+                }
                 for r in &refs {
                     let index = r.split('/').next().and_then(|v| v.parse::<i64>().ok());
                     // Negative indices count back from the last vertex so far (-1 is the last).
@@ -143,7 +318,7 @@ fn scan<R: Real>(text: &str) -> Result<Faces, MeshError> {
                     return Err(at_line(
                         n,
                         format!("the mesh has more than {MAX_TRIANGLES} triangles"),
-                        &crate::report::messages::both(
+                        &both(
                             "give a mesh of at most 1000000 triangles (simplify it, for example \
                              with Blender's Decimate modifier)",
                             "dê uma malha de no máximo 1000000 triângulos (simplifique-a, por \
@@ -152,6 +327,15 @@ fn scan<R: Real>(text: &str) -> Result<Faces, MeshError> {
                     ));
                 }
                 faces.lines.push((n, refs.len() - 2));
+                // The fan tobj splits the face into: (0, i, i + 1).
+                for i in 1..refs.len() - 1 {
+                    faces
+                        .triangle_normals
+                        .push(match (vn[0], vn[i], vn[i + 1]) {
+                            (Some(a), Some(b), Some(c)) => Some([a, b, c]),
+                            _ => None,
+                        });
+                }
             }
             _ => {}
         }
@@ -159,7 +343,8 @@ fn scan<R: Real>(text: &str) -> Result<Faces, MeshError> {
     Ok(faces)
 }
 
-/// Reads the triangles of an OBJ file, in the file's order.
+/// Reads the triangles of an OBJ file, in the file's order; a face with vertex normals gives
+/// smooth triangles ([`Triangle::normals`]).
 pub fn load_obj<R: Real>(path: &Path) -> Result<Vec<Triangle<R>>, MeshError> {
     let bytes = super::read_limited(path, MAX_MESH_BYTES, "a mesh").map_err(|e| MeshError {
         message: format!("cannot be read: {e}"),
@@ -214,8 +399,15 @@ pub fn load_obj<R: Real>(path: &Path) -> Result<Vec<Triangle<R>>, MeshError> {
             Ok(v)
         };
         for face in model.mesh.indices.chunks_exact(3) {
+            let normals = faces
+                .triangle_normals
+                .get(out.len())
+                .copied()
+                .flatten()
+                .map(|k| k.map(|j| faces.normals[j as usize]));
             let t = Triangle {
                 p: [corner(face[0])?, corner(face[1])?, corner(face[2])?],
+                normals,
             };
             if t.normal().is_none() {
                 // The object's name when the file gives one (`o name`); tobj's placeholder for
@@ -245,4 +437,108 @@ pub fn load_obj<R: Real>(path: &Path) -> Result<Vec<Triangle<R>>, MeshError> {
         });
     }
     Ok(out)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The error message of scanning `text` in precision `R`.
+    fn refused<R: Real>(text: &str) -> MeshError {
+        match scan::<R>(text) {
+            Ok(_) => panic!("{text:?} was accepted in {}", R::NAME),
+            Err(e) => e,
+        }
+    }
+
+    const CORNERS: &str = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\n";
+
+    #[test]
+    fn vertex_normals_are_read_per_corner_through_a_polygon_s_fan() {
+        // A quad with a normal at each corner, given by index and by negative index, then a
+        // flat triangle: the fan (0, 1, 2), (0, 2, 3) as tobj splits it.
+        let text = format!(
+            "{CORNERS}vn 0 0 2\nvn 0 0.6 0.8\nvn 0.6 0 0.8\nf 1//1 2//2 3/7/3 4//-3\nf 1 2 3\n"
+        );
+        let faces = scan::<f64>(&text).unwrap();
+        assert_eq!(
+            faces.triangle_normals,
+            vec![Some([0, 1, 2]), Some([0, 2, 0]), None]
+        );
+        // Each normal is normalised: (0, 0, 2) → (0, 0, 1).
+        assert_eq!(faces.normals[0], V3::<f64>::new(0.0, 0.0, 1.0));
+        assert_eq!(faces.lines, vec![(8, 2), (9, 1)]);
+    }
+
+    #[test]
+    fn bad_vertex_normals_are_refused_naming_the_line_and_the_fix() {
+        let zero = refused::<f64>(&format!("{CORNERS}vn 0 0 0\nf 1//1 2//1 3//1\n"));
+        assert!(zero.message.starts_with("line 5: "), "{}", zero.message);
+        assert!(zero.message.contains("length zero"), "{}", zero.message);
+        assert!(zero.fix.contains("nonzero length"), "{}", zero.fix);
+        let nan = refused::<f64>(&format!("{CORNERS}vn nan 0 1\n"));
+        assert!(nan
+            .message
+            .contains("line 5: the vertex normal \"vn nan 0 1\" is not finite"));
+        let inf = refused::<f64>(&format!("{CORNERS}vn 0 inf 1\n"));
+        assert!(
+            inf.message.contains("is not finite in f64"),
+            "{}",
+            inf.message
+        );
+        let short = refused::<f64>(&format!("{CORNERS}vn 0 1\n"));
+        assert!(
+            short.message.contains("is not `vn x y z`"),
+            "{}",
+            short.message
+        );
+        // Finite in f64 but not in f32; nonzero in f64 but zero in f32.
+        assert!(scan::<f64>(&format!("{CORNERS}vn 0 1e39 1\n")).is_ok());
+        let big = refused::<f32>(&format!("{CORNERS}vn 0 1e39 1\n"));
+        assert!(
+            big.message.contains("is not finite in f32"),
+            "{}",
+            big.message
+        );
+        assert!(scan::<f64>(&format!("{CORNERS}vn 0 1e-50 0\n")).is_ok());
+        let tiny = refused::<f32>(&format!("{CORNERS}vn 0 1e-50 0\n"));
+        assert!(
+            tiny.message.contains("length zero in f32"),
+            "{}",
+            tiny.message
+        );
+        assert!(tiny.fix.contains("--precision f64"), "{}", tiny.fix);
+    }
+
+    #[test]
+    fn faces_with_missing_or_partial_normals_are_refused_naming_the_line() {
+        let missing = refused::<f64>(&format!("{CORNERS}vn 0 0 1\nf 1//1 2//2 3//1\n"));
+        assert!(
+            missing
+                .message
+                .contains("line 6: the face \"f 1//1 2//2 3//1\" refers to vertex normal 2"),
+            "{}",
+            missing.message
+        );
+        assert!(missing.message.contains("1 vertex normals come before it"));
+        let ahead = refused::<f64>(&format!("{CORNERS}f 1//1 2//1 3//1\nvn 0 0 1\n"));
+        assert!(ahead.message.starts_with("line 5: "), "{}", ahead.message);
+        let partial = refused::<f64>(&format!("{CORNERS}vn 0 0 1\nf 1//1 2 3//1\n"));
+        assert!(
+            partial
+                .message
+                .contains("gives vertex normals for 2 of its 3 vertices"),
+            "{}",
+            partial.message
+        );
+        assert!(
+            partial.message.starts_with("line 6: "),
+            "{}",
+            partial.message
+        );
+        assert!(partial.fix.contains("or none"), "{}", partial.fix);
+        // A texture coordinate without a normal is not a normal.
+        let faces = scan::<f64>(&format!("{CORNERS}f 1/1 2/1 3/1\n")).unwrap();
+        assert_eq!(faces.triangle_normals, vec![None]);
+    }
 }

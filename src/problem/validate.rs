@@ -442,15 +442,29 @@ pub(crate) fn check_tree<R: Real>(
         } else {
             rays.to_string()
         };
+        use crate::report::messages::both;
+        let w = show(min_weight);
         return Err(SettingError::new(
-            format!(
-                "maximum level {max_level} with minimum weight {} lets one sample's ray tree \
-                 hold {shown} rays (a material both reflects and transmits, so each hit can \
-                 spawn two rays), more than the {MAX_TREE_RAYS} (2^20) a tree may hold",
-                show(min_weight)
+            both(
+                &format!(
+                    "maximum level {max_level} with minimum weight {w} lets one sample's ray \
+                     tree hold {shown} rays (a material both reflects and transmits, so each \
+                     hit can spawn two rays), more than the {MAX_TREE_RAYS} (2^20) a tree may \
+                     hold"
+                ),
+                &format!(
+                    "o nível máximo {max_level} com o peso mínimo {w} deixa a árvore de raios \
+                     de uma amostra ter {shown} raios (um material reflete e transmite, e cada \
+                     interseção pode gerar dois raios), mais que os {MAX_TREE_RAYS} (2^20) que \
+                     uma árvore pode ter"
+                ),
             ),
-            "give a maximum level of at most 20, or a larger minimum weight (e.g. 0.01), \
-             which stops the rays whose weight w = w_p·max(O) has fallen below it",
+            both(
+                "give a maximum level of at most 20, or a larger minimum weight (e.g. 0.01), \
+                 which stops the rays whose weight w = w_p·max(O) has fallen below it",
+                "dê um nível máximo de no máximo 20, ou um peso mínimo maior (por exemplo \
+                 0.01), que para os raios cujo peso w = w_p·max(O) caiu abaixo dele",
+            ),
         ));
     }
     Ok(())
@@ -858,7 +872,7 @@ fn surface<R: Real>(
             for (k, corner) in v.iter().enumerate() {
                 p[k] = vector::<R>(*corner, vertices.index(k))?;
             }
-            let t = Triangle { p };
+            let t = Triangle { p, normals: None };
             if t.normal().is_none() {
                 return Err(Invalid::new(
                     f("vertices"),
@@ -1033,19 +1047,35 @@ fn transmission<R: Real>(
     field: &Field<'_>,
 ) -> Result<Option<Transmission<R>>, Invalid> {
     let f = |name: &'static str| Field::Key(field, name);
+    use crate::report::messages::both;
     match (spec.transmissivity, spec.ior) {
         (None, None) => Ok(None),
         (Some(_), None) => Err(Invalid::new(
             f("ior"),
-            "is missing, and the material has a transmissivity",
-            "give the index of refraction of the material's inside, e.g. \"ior\": 1.5 for \
-             glass (the outside's is 1); Snell's law needs it to bend the transmitted ray",
+            both(
+                "is missing, and the material has a transmissivity",
+                "falta, e o material tem uma transmissividade",
+            ),
+            both(
+                "give the index of refraction of the material's inside, e.g. \"ior\": 1.5 for \
+                 glass (the outside's is 1); Snell's law needs it to bend the transmitted ray",
+                "dê o índice de refração do interior do material, por exemplo \"ior\": 1.5 \
+                 para o vidro (o do exterior é 1); a lei de Snell precisa dele para desviar o \
+                 raio transmitido",
+            ),
         )),
         (None, Some(_)) => Err(Invalid::new(
             f("transmissivity"),
-            "is missing, and the material has an index of refraction",
-            "give the transmissivity O_t as [r, g, b] (e.g. [0.9, 0.9, 0.9]), or remove \
-             \"ior\": without O_t no ray is transmitted",
+            both(
+                "is missing, and the material has an index of refraction",
+                "falta, e o material tem um índice de refração",
+            ),
+            both(
+                "give the transmissivity O_t as [r, g, b] (e.g. [0.9, 0.9, 0.9]), or remove \
+                 \"ior\": without O_t no ray is transmitted",
+                "dê a transmissividade O_t como [r, g, b] (por exemplo [0.9, 0.9, 0.9]), ou \
+                 retire \"ior\": sem O_t nenhum raio é transmitido",
+            ),
         )),
         (Some(o_t), Some(eta)) => {
             let o_t = color::<R>(o_t, f("transmissivity"), ColorRange::Material)?;
@@ -1053,8 +1083,15 @@ fn transmission<R: Real>(
             if eta <= 0.0 || value <= R::ZERO {
                 return Err(Invalid::new(
                     f("ior"),
-                    format!("{} is not a positive number", show(eta)),
-                    "an index of refraction is > 0 (1 for air, 1.33 for water, 1.5 for glass)",
+                    both(
+                        &format!("{} is not a positive number", show(eta)),
+                        &format!("{} não é um número positivo", show(eta)),
+                    ),
+                    both(
+                        "an index of refraction is > 0 (1 for air, 1.33 for water, 1.5 for glass)",
+                        "um índice de refração é > 0 (1 para o ar, 1.33 para a água, 1.5 para o \
+                         vidro)",
+                    ),
                 ));
             }
             Ok(Some(Transmission { o_t, eta: value }))

@@ -631,7 +631,10 @@ fn intersection<R: Real>(x: &Intersection<R>, lang: Lang) -> Vec<Step> {
                 None,
             );
         }
-        _ => out.push(0, vec![p(Phrase::LineMeetsNothing, lang)], None),
+        _ => match x.lies_in {
+            Some(_) => out.push(0, vec![p(Phrase::LineLiesInPlane, lang)], None),
+            None => out.push(0, vec![p(Phrase::LineMeetsNothing, lang)], None),
+        },
     }
     out.0
 }
@@ -904,6 +907,45 @@ fn shading<R: Real>(
             }
         }
         given.push(0, line, None);
+        // A smooth triangle: where N came from (docs/conventions.md, "Smooth meshes").
+        if let Some(s) = &nu.smooth {
+            given.push(
+                1,
+                vec![
+                    p(Phrase::SmoothInterpolated, lang),
+                    Math(Formula::P),
+                    t(": "),
+                    Math(Formula::NSmooth),
+                ],
+                None,
+            );
+            let b = s.b.map(|x| x.to_f64());
+            given.push(2, vec![Math(Formula::Barycentric), EQ, Vector(b)], None);
+            let mut corners = Vec::new();
+            for (k, symbol) in [Formula::N0, Formula::N1, Formula::N2]
+                .into_iter()
+                .enumerate()
+            {
+                if k > 0 {
+                    corners.push(t(", "));
+                }
+                corners.extend([Math(symbol), EQ, Vector(v::<R>(s.vertex[k]))]);
+            }
+            given.push(2, corners, None);
+            given.push(
+                2,
+                vec![
+                    p(Phrase::SmoothGeometric, lang),
+                    Math(Formula::NG),
+                    EQ,
+                    Vector(v::<R>(nu.given)),
+                ],
+                None,
+            );
+            if s.clamped {
+                given.push(2, vec![p(Phrase::SmoothClamped, lang)], None);
+            }
+        }
     }
     if let Some(pos) = e.viewer.and_then(|vw| vw.position) {
         given.push(

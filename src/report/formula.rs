@@ -126,6 +126,18 @@ pub enum Formula {
     WS,
     /// w_t = w_p·max(O_t), a transmission ray's weight.
     WT,
+    /// N = (b₀N₀ + b₁N₁ + b₂N₂)/‖b₀N₀ + b₁N₁ + b₂N₂‖, a smooth triangle's shading normal.
+    NSmooth,
+    /// (b₀, b₁, b₂), the barycentric weights.
+    Barycentric,
+    /// N₀, the vertex normal at a triangle's first corner.
+    N0,
+    /// N₁.
+    N1,
+    /// N₂.
+    N2,
+    /// N_g, a triangle's geometric normal.
+    NG,
 }
 
 impl Formula {
@@ -193,6 +205,12 @@ impl Formula {
             SnellT => "T = η_r V + (η_r cos θ_i − √k) N",
             WS => "w_s = w_p·max(O_r)",
             WT => "w_t = w_p·max(O_t)",
+            NSmooth => "N = (b_0 N_0 + b_1 N_1 + b_2 N_2)/‖b_0 N_0 + b_1 N_1 + b_2 N_2‖",
+            Barycentric => "(b_0, b_1, b_2)",
+            N0 => "N_0",
+            N1 => "N_1",
+            N2 => "N_2",
+            NG => "N_g",
         }
     }
 
@@ -262,6 +280,15 @@ impl Formula {
             }
             WS => "w_s = w_p\\max(O_r)",
             WT => "w_t = w_p\\max(O_t)",
+            NSmooth => {
+                "\\mathbf{N} = \\frac{b_0\\mathbf{N}_0 + b_1\\mathbf{N}_1 + b_2\\mathbf{N}_2}\
+                 {\\lVert b_0\\mathbf{N}_0 + b_1\\mathbf{N}_1 + b_2\\mathbf{N}_2\\rVert}"
+            }
+            Barycentric => "(b_0, b_1, b_2)",
+            N0 => "\\mathbf{N}_0",
+            N1 => "\\mathbf{N}_1",
+            N2 => "\\mathbf{N}_2",
+            NG => "\\mathbf{N}_g",
         }
     }
 }

@@ -226,6 +226,10 @@ pub struct IntersectionOut<R: Real> {
     pub point: Option<V3<R>>,
     /// t > 0.
     pub hit: bool,
+    /// The index in the file's `surfaces` of a plane the ray lies in, when it meets no surface
+    /// otherwise (absent otherwise): every point of the ray is on it, no single hit point.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub lies_in_surface: Option<usize>,
 }
 
 /// An entry of `readings`: the problem read another way, solved by the same core.
@@ -278,6 +282,25 @@ pub struct NormalOut<R: Real> {
     pub n: V3<R>,
     /// Whether N was reversed (to face the incoming ray, or by a reading).
     pub reversed: bool,
+    /// On a smooth triangle only (a mesh with vertex normals): how N was interpolated; `given`
+    /// is then the triangle's geometric normal. Absent elsewhere.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub smooth: Option<SmoothOut<R>>,
+}
+
+/// `normal.smooth`: a smooth triangle's shading normal, interpolated from its vertex normals.
+#[derive(Serialize)]
+pub struct SmoothOut<R: Real> {
+    /// The barycentric weights [b₀, b₁, b₂] of P.
+    pub barycentric: [R; 3],
+    /// The unit vertex normals [N₀, N₁, N₂] at the triangle's corners.
+    pub vertex_normals: [V3<R>; 3],
+    /// (b₀N₀ + b₁N₁ + b₂N₂)/‖b₀N₀ + b₁N₁ + b₂N₂‖, before N is turned to the ray; `null` where
+    /// the sum is zero.
+    pub interpolated: Option<V3<R>>,
+    /// Whether the geometric normal was used instead, the interpolation being zero or on the
+    /// other side of the surface.
+    pub clamped: bool,
 }
 
 /// `viewer`: the viewing direction at the point.
@@ -511,6 +534,7 @@ fn intersection<R: Real>(x: &Intersection<R>) -> IntersectionOut<R> {
         t: x.t,
         point: x.point,
         hit: x.in_front,
+        lies_in_surface: x.lies_in.map(|s| s.index),
     }
 }
 
@@ -524,6 +548,12 @@ fn evaluation<R: Real>(problem: &Problem<R>, e: &Evaluation<R>) -> EvaluationOut
             length: n.length,
             n: n.used,
             reversed: n.reversed,
+            smooth: n.smooth.map(|s| SmoothOut {
+                barycentric: s.b,
+                vertex_normals: s.vertex,
+                interpolated: s.interpolated,
+                clamped: s.clamped,
+            }),
         }),
         viewer: e.viewer.map(|v| ViewerOut {
             position: v.position,

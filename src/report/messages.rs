@@ -20,7 +20,8 @@ use crate::problem::validate::show;
 use crate::problem::warnings::{Warning, WarningKind};
 use crate::problem::Problem;
 use crate::solve::{
-    ConeEdge, Finding, FindingData, GateDecision, Omission, OmissionReason, ReadingCode, Side, Term,
+    ConeEdge, FarFromOrigin, Finding, FindingData, GateDecision, Omission, OmissionReason,
+    ReadingCode, Side, Term,
 };
 
 /// Chooses the text of a language; both texts must be given.
@@ -92,6 +93,7 @@ phrases! {
     Hit => "hit (t > 0)", "interseção (t > 0)";
     NotAHit => "behind the origin (t ≤ 0): not a hit", "atrás da origem (t ≤ 0): não é interseção";
     LineMeetsNothing => "the ray's line meets no surface", "a reta do raio não encontra nenhuma superfície";
+    LineLiesInPlane => "the ray lies in the plane: every point of it is on the surface, so there is no single hit point", "o raio está contido no plano: todos os seus pontos estão na superfície, então não há um único ponto de interseção";
     // What is given.
     Viewer => "viewer ", "observador ";
     Material => "material", "material";
@@ -99,6 +101,18 @@ phrases! {
     NormalisedFrom => "normalised from ", "normalizada de ";
     Length => "length ", "comprimento ";
     ThenReversed => ", then reversed", ", depois invertida";
+    /// A smooth triangle's shading normal (docs/conventions.md, "Smooth meshes").
+    SmoothInterpolated => "interpolated from the triangle's three vertex normals with the \
+        barycentric weights of ",
+        "interpolada das normais dos três vértices do triângulo com os pesos baricêntricos de ";
+    SmoothGeometric => "the triangle's geometric normal (from the order of its corners; it \
+        decides which side the ray is on and where new rays leave from): ",
+        "a normal geométrica do triângulo (dada pela ordem dos vértices; é ela que decide de que \
+        lado o raio está e de onde partem os novos raios): ";
+    SmoothClamped => "the interpolation does not point to the geometric normal's side of the \
+        surface, so N is the geometric normal",
+        "a interpolação não aponta para o lado da superfície em que está a normal geométrica, \
+        então N é a normal geométrica";
     TakenEqualToOs => " (taken equal to O_s)", " (tomada igual a O_s)";
     // The viewer.
     RayIsLineOfSight => " (the ray's direction: the ray is the line of sight)", " (a direção do raio: o raio é a linha de visão)";
@@ -263,6 +277,116 @@ fn finding_with<R: Real>(problem: &Problem<R>, f: &Finding, lang: Lang, json: bo
             "a reta do raio não encontra nenhuma superfície: nada a iluminar",
         )
         .into(),
+        FindingData::RayInPlane { surface } => pick(
+            lang,
+            format!(
+                "the ray lies in the plane surfaces[{surface}] (N·D = 0 and N·(Q − O) = 0): \
+                 every point of it is on the surface, so the problem has no single hit point \
+                 and nothing is shaded"
+            ),
+            format!(
+                "o raio está contido no plano surfaces[{surface}] (N·D = 0 e N·(Q − O) = 0): \
+                 todos os seus pontos estão na superfície, então o problema não tem um único \
+                 ponto de interseção, e nada é iluminado"
+            ),
+        ),
+        FindingData::HitIllConditioned {
+            n_dot_d,
+            n_dot_d_error,
+            t,
+            t_error_bound,
+            p_error_bound,
+        } => {
+            let relative = num(t_error_bound / t.abs());
+            let p_bound = super::number::vec3(p_error_bound);
+            pick(
+                lang,
+                format!(
+                    "the hit is ill-conditioned: the ray almost grazes the plane (N·D = {}, \
+                     known only to ±{}), so t = {} is known only to ±{} (a relative error of \
+                     {relative}) and P only to ±{p_bound}, counting the rounding of the numbers \
+                     as written and of the computation in {p}. The answer is sensitive to the last digits \
+                     of the data: changing the last digit of the ray's origin or direction, or \
+                     of the plane, can move the hit point that much, and change the colour \
+                     with it",
+                    num(n_dot_d),
+                    num(n_dot_d_error),
+                    num(t),
+                    num(t_error_bound)
+                ),
+                format!(
+                    "a interseção é mal condicionada: o raio quase tangencia o plano (N·D = {}, \
+                     conhecido apenas a menos de ±{}), então t = {} é conhecido apenas a menos \
+                     de ±{} (erro relativo de até {relative}) e P apenas a menos de \
+                     ±{p_bound}, levando em conta o arredondamento dos números como foram \
+                     escritos e o do cálculo em {p}. \
+                     A resposta é sensível aos últimos algarismos dos dados: mudar o último \
+                     algarismo da origem ou da direção do raio, ou do plano, pode deslocar o \
+                     ponto de interseção desse tanto e, com ele, mudar a cor",
+                    num(n_dot_d),
+                    num(n_dot_d_error),
+                    num(t),
+                    num(t_error_bound)
+                ),
+            )
+        }
+        FindingData::ParallelWithinRounding {
+            n_dot_d,
+            n_dot_d_error,
+            may_lie_in_plane,
+        } => {
+            let (en, pt) = if may_lie_in_plane {
+                (
+                    ", or even lie in it (N·(Q − O) is within rounding of 0 too)",
+                    ", ou até estar contido nele (N·(Q − O) também está dentro do \
+                     arredondamento de 0)",
+                )
+            } else {
+                ("", "")
+            };
+            pick(
+                lang,
+                format!(
+                    "N·D = {} is within the rounding of its own computation in {p} (±{}): the \
+                     ray may be parallel to the plane{en}, so whether it meets the plane, and \
+                     where, depends on the last digits of the data; the hit shown cannot be \
+                     trusted",
+                    num(n_dot_d),
+                    num(n_dot_d_error)
+                ),
+                format!(
+                    "N·D = {} está dentro do arredondamento do seu próprio cálculo em {p} (±{}): \
+                     o raio pode ser paralelo ao plano{pt}, então se ele encontra o plano, e \
+                     onde, depende dos últimos algarismos dos dados; a interseção mostrada não \
+                     é confiável",
+                    num(n_dot_d),
+                    num(n_dot_d_error)
+                ),
+            )
+        }
+        FindingData::HitFarFromOrigin(FarFromOrigin {
+            point_error,
+            direction_error,
+        }) => pick(
+            lang,
+            format!(
+                "the hit is far from the origin compared with its distance to the lights or the \
+                 viewer: P itself may be off by up to {} in {p}, which would move L and V by up \
+                 to {}, so the vectors from the lights and the viewer to P are computed as \
+                 (O − P_l) + tD, from the numbers as given, keeping their digits",
+                num(point_error),
+                num(direction_error)
+            ),
+            format!(
+                "o ponto de interseção está longe da origem em comparação com a sua distância às \
+                 fontes de luz ou ao observador: o próprio P pode ter um erro de até {} em {p}, \
+                 o que deslocaria L e V em até {}; por isso os vetores das fontes de luz e do \
+                 observador até P são calculados como (O − P_l) + tD, a partir dos números \
+                 dados, o que preserva os seus algarismos",
+                num(point_error),
+                num(direction_error)
+            ),
+        ),
         FindingData::RayStartsOnSurface => pick(
             lang,
             "the ray starts on a surface (t = 0), which is not a hit (a hit needs t > 0)",

@@ -488,6 +488,17 @@ fn ray_report<R: Real>(
     // A chain's last ray says the path ends; a tree's rays say each child by itself.
     let ends = !at.tree || r.hit.is_none();
     after.push(match r.stop {
+        Some(stop) if at.tree && ends => pick(
+            lang,
+            format!(
+                "This branch of the tree ends here: {}.",
+                stop_reason_in(stop, lang)
+            ),
+            format!(
+                "Este ramo da árvore termina aqui: {}.",
+                stop_reason_in(stop, lang)
+            ),
+        ),
         Some(stop) if ends => pick(
             lang,
             format!("The path ends here: {}.", stop_reason_in(stop, lang)),

@@ -2,11 +2,12 @@
 //! structured (what it is, with the numbers that back it, and the light it concerns) so that
 //! scripts can rely on it and the report layer words it, in whatever language.
 
+use super::conditioning::{self, PlaneHit};
 use super::rounding::{cone_bound, cos_theta_bound, exactly_zero, HitError};
-use super::{Evaluation, Side, Solution};
+use super::{Evaluation, Intersection, Side, Solution};
 use crate::core::vector::is_unit_length;
 use crate::core::{LightKind, LightStatus, LightTerm, Real, Vector, V3};
-use crate::geometry::Shape;
+use crate::geometry::{Ray, Shape};
 use crate::problem::{GivenVector, Problem, Target};
 
 /// One finding. In the JSON: its `code`, the `light` it concerns (when it concerns one), and
@@ -43,6 +44,37 @@ pub enum FindingData {
     },
     /// The ray's line meets no surface at all.
     NoIntersection,
+    /// The ray lies in a plane: every point of it is on the surface, so there is no single hit
+    /// point (N·D = 0 and N·(Q − O) = 0 as computed).
+    RayInPlane {
+        /// The plane's index in the file's `surfaces`.
+        surface: usize,
+    },
+    /// The ray nearly grazes the plane it meets, so its hit is sensitive to the last digits of
+    /// the data (`solve::conditioning`): t and P are known only to within the bounds given,
+    /// which count the rounding of the file's numbers and of the computation.
+    HitIllConditioned {
+        /// N·D as computed, N and D of unit length: the sine of the angle between ray and plane.
+        n_dot_d: f64,
+        /// The bound on the error of N·D.
+        n_dot_d_error: f64,
+        /// t as computed.
+        t: f64,
+        /// The bound on the error of t.
+        t_error_bound: f64,
+        /// The bound on the error of each coordinate of P = O + tD.
+        p_error_bound: [f64; 3],
+    },
+    /// N·D is within its own rounding error of 0: the ray may be parallel to the plane, so
+    /// whether and where it meets it depends on the last digits of the data.
+    ParallelWithinRounding {
+        /// N·D as computed, N and D of unit length.
+        n_dot_d: f64,
+        /// The bound on the error of N·D, at least |N·D|.
+        n_dot_d_error: f64,
+        /// N·(Q − O) is within its rounding error of 0 too: the ray may lie in the plane.
+        may_lie_in_plane: bool,
+    },
     /// The ray starts on a surface (t = 0), which is not a hit (t > 0).
     RayStartsOnSurface,
     /// A light is on the back side of the surface (cos θ < 0).
@@ -84,6 +116,10 @@ pub enum FindingData {
     ViewerInTangentPlane,
     /// The viewer is not the ray's origin: V comes from the viewer, as the problem states.
     ViewerNotAtRayOrigin,
+    /// The hit is far from the origin compared with its nearest light or viewer, so it was
+    /// shaded in the frame of the ray's origin (P − P_l = (O − P_l) + tD), which keeps the
+    /// digits that the rounding of P itself would cost the directions L and V.
+    HitFarFromOrigin(super::FarFromOrigin),
     /// The normal in the hit was reversed to face the incoming ray.
     NormalTurnedToFaceRay,
     /// A given normal was not of unit length and was normalised.
@@ -163,9 +199,15 @@ pub(super) fn find<R: Real>(
             (Some(t), false) => {
                 out.push(Finding::new(FindingData::HitBehindOrigin { t: t.to_f64() }))
             }
-            (None, _) => out.push(Finding::new(FindingData::NoIntersection)),
+            (None, _) => out.push(Finding::new(match x.lies_in {
+                Some(source) => FindingData::RayInPlane {
+                    surface: source.index,
+                },
+                None => FindingData::NoIntersection,
+            })),
             _ => {}
         }
+        out.extend(hit_conditioning(problem, x));
     }
     if let Some(e) = &s.evaluation {
         for (t, info) in e.lights.iter().zip(&problem.light_info) {
@@ -208,6 +250,14 @@ pub(super) fn find<R: Real>(
         if e != x.origin {
             out.push(Finding::new(FindingData::ViewerNotAtRayOrigin));
         }
+    }
+    let far = s
+        .evaluation
+        .iter()
+        .chain(s.readings.iter().map(|r| &r.evaluation))
+        .find_map(|e| e.far_from_origin);
+    if let Some(far) = far {
+        out.push(Finding::new(FindingData::HitFarFromOrigin(far)));
     }
     if let Some(n) = s.evaluation.as_ref().and_then(|e| e.normal) {
         if n.reversed {
@@ -252,6 +302,45 @@ pub(super) fn find<R: Real>(
         }
     }
     out
+}
+
+/// How well the data determine a ray's hit on a plane (`solve::conditioning`): a finding when
+/// the ray grazes the plane so that t and P lose digits, or when N·D is within rounding of 0.
+fn hit_conditioning<R: Real>(problem: &Problem<R>, x: &Intersection<R>) -> Option<Finding> {
+    let (Some(i), Some(t)) = (x.surface, x.t) else {
+        return None;
+    };
+    let Shape::Plane(plane) = problem.surfaces()[i].shape else {
+        return None;
+    };
+    let ray = Ray {
+        origin: x.origin,
+        direction: x.direction,
+    };
+    match conditioning::plane_hit(&plane, &ray, t) {
+        PlaneHit::WellConditioned => None,
+        PlaneHit::Ill {
+            n_dot_d,
+            n_dot_d_error,
+            t_error,
+            p_error,
+        } => Some(Finding::new(FindingData::HitIllConditioned {
+            n_dot_d,
+            n_dot_d_error,
+            t: t.to_f64(),
+            t_error_bound: t_error,
+            p_error_bound: p_error,
+        })),
+        PlaneHit::Parallel {
+            n_dot_d,
+            n_dot_d_error,
+            may_lie_in_plane,
+        } => Some(Finding::new(FindingData::ParallelWithinRounding {
+            n_dot_d,
+            n_dot_d_error,
+            may_lie_in_plane,
+        })),
+    }
 }
 
 /// How far the gates of light `t` can be trusted (`solve::rounding`): a cos θ within its

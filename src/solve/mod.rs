@@ -3,6 +3,7 @@
 //! (a light behind the surface, a hit behind the ray's origin, …) and, where a problem as written
 //! has a surprising property, the result of its likely intended reading, labelled as such.
 
+mod conditioning;
 mod file;
 mod findings;
 mod rounding;
@@ -15,7 +16,7 @@ use crate::core::{
     shade_with, AllVisible, Chapter, Formulas, Light, LightKind, LightSet, LightStatus, LightTerm,
     Real, Shade, Vector, Visibility, V3,
 };
-use crate::geometry::{Aggregate, Ray, SurfaceHit};
+use crate::geometry::{Aggregate, Ray, Shape, SmoothNormal, SurfaceHit};
 use crate::problem::validate::{light_label, show};
 use crate::problem::{GivenVector, Invalid, NamedMaterial, Problem, SurfaceSource, Target};
 use crate::report::messages::both;
@@ -66,6 +67,9 @@ pub struct Intersection<R: Real> {
     pub point: Option<V3<R>>,
     /// t > 0: a hit of the ray itself.
     pub in_front: bool,
+    /// Where in the file a plane the ray lies in is, when the ray meets no surface otherwise:
+    /// every point of the ray is on it, so there is no single hit point.
+    pub lies_in: Option<SurfaceSource>,
 }
 
 /// The normal used at the point.
@@ -79,6 +83,10 @@ pub struct NormalUsed<R: Real> {
     pub used: V3<R>,
     /// Whether N was reversed (to face the incoming ray, or by a reading).
     pub reversed: bool,
+    /// On a smooth triangle (a mesh with vertex normals): how the shading normal was
+    /// interpolated from the vertex normals, `given` then being the geometric normal, which
+    /// decides `reversed` (docs/conventions.md, "Smooth meshes"); `None` elsewhere.
+    pub smooth: Option<SmoothNormal<R>>,
 }
 
 /// Which side of the surface the viewer is on.
@@ -185,6 +193,20 @@ pub struct Evaluation<R: Real> {
     /// A bound on the error of each component of P where P was computed (a ray's hit);
     /// `None` where P was given.
     pub p_error: Option<V3<R>>,
+    /// Set where a ray problem's hit was shaded in the frame of the ray's origin because it is
+    /// far from the origin compared with its lights or viewer ([`Frame::RayOrigin`]).
+    pub far_from_origin: Option<FarFromOrigin>,
+}
+
+/// Why a hit was shaded in the frame of the ray's origin: the rounding of P itself, and what
+/// it would have cost the directions from P had P − P_l been computed from the rounded P.
+#[derive(Clone, Copy, Debug, PartialEq, serde::Serialize)]
+pub struct FarFromOrigin {
+    /// ‖bound on the error of P‖.
+    pub point_error: f64,
+    /// The bound 2e/d on the error of L (or V) from it, at the nearest light or viewer at
+    /// distance d (at most 2, the most a unit vector can move).
+    pub direction_error: f64,
 }
 
 /// A reading of the problem other than the literal one.
@@ -271,8 +293,9 @@ pub(crate) fn solve_with<R: Real, F: Formulas>(
                 length: n.length,
                 used: n.unit,
                 reversed: false,
+                smooth: None,
             });
-            let at = |n, lights: Option<LightSet<R>>| {
+            let at = |n, lights: Option<&LightSet<R>>| {
                 let viewer = problem.viewer;
                 let vis = &mut AllVisible;
                 evaluate(
@@ -294,7 +317,7 @@ pub(crate) fn solve_with<R: Real, F: Formulas>(
                     solution.readings.push(Reading {
                         code: ReadingCode::LightReversed,
                         intersection: None,
-                        evaluation: at(normal, Some(mirrored))?,
+                        evaluation: at(normal, Some(&mirrored))?,
                     });
                 }
                 let reversed = normal.map(|n| NormalUsed {
@@ -319,6 +342,7 @@ pub(crate) fn solve_with<R: Real, F: Formulas>(
                 ray,
                 direction,
                 &aggregate,
+                Frame::RayOrigin,
                 true,
             );
         }
@@ -356,7 +380,145 @@ pub(crate) fn solve_ray<R: Real>(
     direction: &GivenVector<R>,
     aggregate: &Aggregate<R>,
 ) -> Result<Solution<R>, Invalid> {
-    solve_ray_with(problem, Chapter, viewer, ray, direction, aggregate, false)
+    solve_ray_with(
+        problem,
+        Chapter,
+        viewer,
+        ray,
+        direction,
+        aggregate,
+        Frame::Absolute,
+        false,
+    )
+}
+
+/// How far the rounding of a hit point P would carry into the directions from it: with
+/// e = ‖p_error‖ and d the distance to the nearest point or spot light or to the viewer, L and V
+/// computed from the rounded P are off by up to 2e/d (`solve::rounding`). `Some` when that
+/// exceeds 1e4·ε, four of the precision's digits: a hit about 1000 times farther from the
+/// origin than from its nearest light, where the frame of the ray's origin keeps those digits.
+/// An ordinary scene's hits stay below it, so their ray problems are shaded exactly as the
+/// tracer shades the same rays.
+fn far_from_origin<R: Real>(
+    problem: &Problem<R>,
+    viewer: Option<V3<R>>,
+    hit: &SurfaceHit<R>,
+) -> Option<FarFromOrigin> {
+    let e = norm(hit.p_error.to_array().map(|x| x.to_f64()));
+    let p = hit.p.to_array().map(|x| x.to_f64());
+    let distance = |q: V3<R>| {
+        let q = q.to_array().map(|x| x.to_f64());
+        norm(std::array::from_fn(|i| p[i] - q[i]))
+    };
+    let d = problem
+        .lights
+        .lights
+        .iter()
+        .filter_map(|l| l.position())
+        .chain(viewer)
+        .map(distance)
+        .fold(f64::INFINITY, f64::min);
+    // A unit vector moves by at most 2, however far its point is moved.
+    let direction_error = (2.0 * e / d).min(2.0);
+    let threshold = 1e4 * R::EPSILON.to_f64();
+    (e.is_finite() && d.is_finite() && direction_error > threshold).then_some(FarFromOrigin {
+        point_error: e,
+        direction_error,
+    })
+}
+
+/// The Euclidean length of `v`, scaled by its largest component so that no square overflows
+/// (a hit 1e230 from the origin has an error bound whose square is beyond f64).
+fn norm(v: [f64; 3]) -> f64 {
+    let m = v.iter().fold(0.0f64, |m, x| m.max(x.abs()));
+    if m == 0.0 || !m.is_finite() {
+        return m;
+    }
+    m * v.iter().map(|x| (x / m) * (x / m)).sum::<f64>().sqrt()
+}
+
+/// The frame a ray's hit is shaded in (docs/accuracy.md, "Far from the origin").
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum Frame {
+    /// The problem's own coordinates, P the hit point as computed: what the tracer does, so
+    /// that an explained pixel is the rendered pixel to the bit.
+    Absolute,
+    /// Coordinates relative to the ray's origin O where the hit is far from the origin
+    /// compared with its lights ([`far_from_origin`]): P − P_l is computed as tD − (P_l − O)
+    /// and P − E as tD − (E − O), so that a hit 1e12 from the origin does not lose the digits
+    /// of P − P_l to the rounding of P itself; the problem's coordinates elsewhere, as the
+    /// tracer. A ray problem's frame.
+    RayOrigin,
+}
+
+/// A ray problem's lights and viewer moved into the frame of the ray's origin O: each position
+/// X becomes X − O (one rounding, relative to |X − O|, small when X is near O however far both
+/// are from the origin). `None` when a moved position leaves the precision's range: the
+/// absolute frame is used then.
+struct Moved<R: Real> {
+    lights: LightSet<R>,
+    viewer: Option<V3<R>>,
+}
+
+impl<R: Real> Moved<R> {
+    /// `lights` and `viewer` moved by −`origin`.
+    fn new(lights: &LightSet<R>, viewer: Option<V3<R>>, origin: V3<R>) -> Option<Self> {
+        let by = |x: V3<R>| x - origin;
+        let lights = LightSet {
+            ambient: lights.ambient,
+            lights: lights
+                .lights
+                .iter()
+                .map(|l| Light {
+                    color: l.color,
+                    kind: match l.kind {
+                        LightKind::Point { position, falloff } => LightKind::Point {
+                            position: by(position),
+                            falloff,
+                        },
+                        LightKind::Spot {
+                            position,
+                            falloff,
+                            cone,
+                        } => LightKind::Spot {
+                            position: by(position),
+                            falloff,
+                            cone,
+                        },
+                        directional => directional,
+                    },
+                })
+                .collect(),
+        };
+        let viewer = viewer.map(by);
+        (positions_finite(&lights) && viewer.is_none_or(|e| e.is_finite()))
+            .then_some(Moved { lights, viewer })
+    }
+}
+
+/// The shadow rays of a hit shaded in the frame of the ray's origin: the core asks about a
+/// moved light, and the rays are cast from the hit as computed to the light as given (the same
+/// light by its place in the set).
+struct MovedVisibility<'a, R: Real, V> {
+    inner: &'a mut V,
+    moved: &'a LightSet<R>,
+    given: &'a LightSet<R>,
+    p: V3<R>,
+}
+
+impl<R: Real, V: Visibility<R>> Visibility<R> for MovedVisibility<'_, R, V> {
+    /// Whether the light as given reaches the hit as computed, asked of the inner visibility.
+    fn visible(&mut self, _: V3<R>, light: &Light<R>, arrival: &crate::core::Arrival<R>) -> bool {
+        // The core shades with `moved` itself (not a copy), so the light is found by address.
+        let k = self
+            .moved
+            .lights
+            .iter()
+            .position(|l| std::ptr::eq(l, light));
+        debug_assert!(k.is_some(), "a light of the moved set");
+        let given = k.map_or(light, |k| &self.given.lights[k]);
+        self.inner.visible(self.p, given, arrival)
+    }
 }
 
 /// [`solve_ray`] with the core's formulas switched as `formulas` says (mistake diagnosis).
@@ -370,10 +532,15 @@ pub(crate) fn solve_ray_with<R: Real, F: Formulas>(
     ray: &Ray<R>,
     direction: &GivenVector<R>,
     aggregate: &Aggregate<R>,
+    frame: Frame,
     secondaries: bool,
 ) -> Result<Solution<R>, Invalid> {
     let mut solution = Solution::empty(problem);
     let surfaces = problem.surfaces();
+    let moved = match frame {
+        Frame::RayOrigin => Moved::new(&problem.lights, viewer, ray.origin),
+        Frame::Absolute => None,
+    };
     let record = |hit: Option<(usize, R, V3<R>)>| Intersection {
         origin: ray.origin,
         direction_given: direction.given,
@@ -384,6 +551,7 @@ pub(crate) fn solve_ray_with<R: Real, F: Formulas>(
         t: hit.map(|(_, t, _)| t),
         point: hit.map(|(_, _, p)| p),
         in_front: hit.is_some_and(|(_, t, _)| t > R::ZERO),
+        lies_in: None,
     };
     // The shading at a hit, V from the incoming direction (the ray's, or the reversed ray's
     // for a hit behind) and N turned to face it by the hit, as in the tracer
@@ -395,29 +563,76 @@ pub(crate) fn solve_ray_with<R: Real, F: Formulas>(
             _ => ray.direction,
         };
         let facing = hit.facing(incoming);
+        // A smooth triangle's interpolation, as its hit made it: the ray's own hit again, or
+        // for the line behind the origin the weights of its point.
+        let smooth = match &s.shape {
+            Shape::Triangle(tri) if tri.normals.is_some() => match source {
+                ViewSource::ReversedRay => {
+                    tri.smooth(tri.barycentric_at(hit.p, hit.normal), hit.normal)
+                }
+                _ => tri.smooth_hit(ray, hit.t),
+            },
+            _ => None,
+        };
         let normal = NormalUsed {
             given: s.normal.map_or(hit.normal, |n| n.given),
             length: s.normal.map_or(R::ONE, |n| n.length),
             used: facing.normal,
             reversed: facing.reversed,
+            smooth,
         };
         let view = Some((incoming, source));
         // The hit's shadow rays, as the tracer casts them, when the problem has them on.
         let mut shadows = problem.render.shadows.then(|| hit.shadow_rays(aggregate));
         let m = &s.material;
-        let e = evaluate(
-            problem,
-            formulas,
-            viewer,
-            Some(hit.p),
-            Some(normal),
-            view,
-            m,
-            None,
-            &mut shadows,
-        )?;
+        let far = far_from_origin(problem, viewer, hit);
+        let e = match moved.as_ref().filter(|_| far.is_some()) {
+            // P − O = tD, exactly the t the hit was found at.
+            Some(mv) => {
+                let mut vis = MovedVisibility {
+                    inner: &mut shadows,
+                    moved: &mv.lights,
+                    given: &problem.lights,
+                    p: hit.p,
+                };
+                let p_local = ray.direction * hit.t;
+                let e = evaluate(
+                    problem,
+                    formulas,
+                    mv.viewer,
+                    Some(p_local),
+                    Some(normal),
+                    view,
+                    m,
+                    Some(&mv.lights),
+                    &mut vis,
+                )?;
+                // Shown in the problem's own coordinates.
+                Evaluation {
+                    point: Some(hit.p),
+                    viewer: e.viewer.map(|v| ViewerUsed {
+                        position: viewer,
+                        ..v
+                    }),
+                    light_set: None,
+                    ..e
+                }
+            }
+            None => evaluate(
+                problem,
+                formulas,
+                viewer,
+                Some(hit.p),
+                Some(normal),
+                view,
+                m,
+                None,
+                &mut shadows,
+            )?,
+        };
         Ok(Evaluation {
             p_error: Some(hit.p_error),
+            far_from_origin: far,
             ..e
         })
     };
@@ -434,6 +649,8 @@ pub(crate) fn solve_ray_with<R: Real, F: Formulas>(
         )
     };
     let mut starts_on_surface = false;
+    // A plane the ray lies in, which the hit search (N·D = 0) passes over.
+    let mut lies_in = None;
     if let Some(h) = aggregate.nearest(ray, R::from_f64(f64::INFINITY)) {
         solution.intersection = Some(record(Some((h.index, h.hit.t, h.hit.p))));
         solution.evaluation = Some(at_hit(h.index, &h.hit, ViewSource::Ray)?);
@@ -449,6 +666,9 @@ pub(crate) fn solve_ray_with<R: Real, F: Formulas>(
             let t_front = s.shape.hit_t(ray, R::from_f64(f64::INFINITY));
             if t_front.is_some_and(|t| s.shape.hit_at(ray, t).is_none()) {
                 return Err(unresolved(i));
+            }
+            if lies_in.is_none() && s.shape.contains_line(ray) {
+                lies_in = Some(s.source);
             }
             let hits = s.shape.line_hits(ray);
             starts_on_surface |= hits.at_origin();
@@ -470,7 +690,12 @@ pub(crate) fn solve_ray_with<R: Real, F: Formulas>(
                     evaluation: at_hit(i, &hit, ViewSource::ReversedRay)?,
                 });
             }
-            None => solution.intersection = Some(record(None)),
+            None => {
+                solution.intersection = Some(Intersection {
+                    lies_in,
+                    ..record(None)
+                })
+            }
         }
     }
     let query = findings::Query {
@@ -541,10 +766,10 @@ fn evaluate<R: Real, F: Formulas, Vis: Visibility<R>>(
     normal: Option<NormalUsed<R>>,
     ray: Option<(V3<R>, ViewSource)>,
     material: &NamedMaterial<R>,
-    lights: Option<LightSet<R>>,
+    lights: Option<&LightSet<R>>,
     visibility: &mut Vis,
 ) -> Result<Evaluation<R>, Invalid> {
-    let set = lights.as_ref().unwrap_or(&problem.lights);
+    let set = lights.unwrap_or(&problem.lights);
     // The viewing direction V, from the eye to the point (Eq. 4.10).
     let viewer = match (viewer, p, ray) {
         (Some(e), Some(p), _) => {
@@ -669,13 +894,14 @@ fn evaluate<R: Real, F: Formulas, Vis: Visibility<R>>(
         normal,
         viewer,
         material: material.clone(),
-        light_set: lights,
+        light_set: lights.cloned(),
         lights: records,
         shade,
         omitted,
         clamped,
         rgb8,
         p_error: None,
+        far_from_origin: None,
     })
 }
 

@@ -24,5 +24,8 @@ pub use camera::CameraRays;
 pub use explain::{explain_pixel, PixelExplanation, RayExplanation, SampleExplanation};
 pub use render::{render, render_with, Image};
 pub(crate) use render::{render_linear_with, LinearImage};
-pub use trace::{Counts, PathRecorder, RayRecord, Scene, Spawn, Stop, Tracer};
+pub use trace::{
+    Counts, PathRecorder, RayKind, RayRecord, Refraction, Scene, Spawn, Stop, Tracer,
+    TransmissionRecord,
+};
 pub use wide::Engine;

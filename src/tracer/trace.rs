@@ -291,9 +291,6 @@ impl<R: Real> PathState<R> {
     }
 }
 
-/// The rays a hit spawns: its reflection ray, then its transmission ray.
-pub(crate) type Children<R> = [Option<PathState<R>>; 2];
-
 /// A hit's shadow rays as the core asks them ([`crate::core::Visibility`]), and how many were
 /// traced.
 pub(crate) trait CountedVisibility<R: Real>: crate::core::Visibility<R> {
@@ -330,13 +327,20 @@ impl<R: Real> Tracer<'_, R> {
         while let Some((mut path, spawn)) = current.take() {
             // The nearest hit in front of the origin; a miss sees the background.
             let found = aggregate.nearest(&path.ray, infinity);
-            let (share, children) = self.bounce(
+            // The rays the hit spawns: its reflection ray, then its transmission ray.
+            let mut children: [Option<PathState<R>>; 2] = [None, None];
+            let mut spawned_count = 0;
+            let share = self.bounce(
                 &mut path,
                 spawn,
                 found,
                 |h| h.shadow_rays(aggregate),
                 counts,
                 rec,
+                &mut |child| {
+                    children[spawned_count] = Some(child);
+                    spawned_count += 1;
+                },
             );
             color += share;
             let here = recorded;
@@ -369,10 +373,12 @@ impl<R: Real> Tracer<'_, R> {
     }
 
     /// One step of a path whose ray found `found` (its nearest hit, or a miss): the ray's share
-    /// of the pixel (the factor times the local colour, or times the background on a miss), and
-    /// the rays it spawns. `shadows` makes the hit's shadow rays (asked only with shadows on).
-    /// `spawn` is where the ray left from, for the record.
+    /// of the pixel (the factor times the local colour, or times the background on a miss); the
+    /// rays it spawns go to `push`, reflection first. `shadows` makes the hit's shadow rays
+    /// (asked only with shadows on). `spawn` is where the ray left from, for the record.
     #[inline]
+    // Each part by itself: the wide engine passes its own (no recorder, its queue's push).
+    #[allow(clippy::too_many_arguments)]
     pub(crate) fn bounce<V: CountedVisibility<R>>(
         &self,
         path: &mut PathState<R>,
@@ -381,9 +387,10 @@ impl<R: Real> Tracer<'_, R> {
         shadows: impl FnOnce(&SurfaceHit<R>) -> V,
         counts: &mut Counts,
         rec: &mut impl PathRecorder<R>,
-    ) -> (V3<R>, Children<R>) {
+        push: &mut impl FnMut(PathState<R>),
+    ) -> V3<R> {
         let Some(h) = found else {
-            return (self.miss(path, spawn, rec), [None, None]);
+            return self.miss(path, spawn, rec);
         };
         let m = &self.scene.materials[h.index];
         // N turned to face the incoming ray; V is the ray's direction (Eq. 4.10).
@@ -397,7 +404,7 @@ impl<R: Real> Tracer<'_, R> {
         let mut shadows = self.problem.render.shadows.then(|| shadows(&h.hit));
         let local = shade(&at, m, &self.problem.lights, &mut shadows, &mut NoRecord).color;
         counts.shadow += shadows.as_ref().map_or(0, |s| s.traced());
-        self.step(path, spawn, &h, (n, local), counts, rec)
+        self.step(path, spawn, &h, (n, local), counts, rec, push)
     }
 
     /// The share of a ray that missed: the factor times the background. `spawn` is where the
@@ -429,9 +436,11 @@ impl<R: Real> Tracer<'_, R> {
 
     /// The rest of [`Tracer::bounce`] once the hit `h` is shaded (`shaded`: the normal facing
     /// the ray and the core's colour there), for both engines: the ray's share, the stop rules
-    /// and the rays it spawns, reflection first. `spawn` is where the ray left from, for the
-    /// record.
+    /// and the rays it spawns, given to `push`, reflection first. `spawn` is where the ray left
+    /// from, for the record.
     #[inline]
+    // Each part by itself: the wide engine passes its own (no recorder, its queue's push).
+    #[allow(clippy::too_many_arguments)]
     pub(crate) fn step(
         &self,
         path: &PathState<R>,
@@ -440,7 +449,8 @@ impl<R: Real> Tracer<'_, R> {
         shaded: (V3<R>, V3<R>),
         counts: &mut Counts,
         rec: &mut impl PathRecorder<R>,
-    ) -> (V3<R>, Children<R>) {
+        push: &mut impl FnMut(PathState<R>),
+    ) -> V3<R> {
         let (n, local) = shaded;
         let PathState {
             ray,
@@ -491,13 +501,12 @@ impl<R: Real> Tracer<'_, R> {
                 stop
             }
         };
-        let mut children: Children<R> = [None, None];
         if record.stop.is_none() {
             let o_r = m.o_r.expect("a reflection ray needs O_r");
             // The reflection direction R_V = V − 2(N·V)N, Eq. 4.17.
             let r_v = ray.direction - n * (R::TWO * n.dot(ray.direction));
             if let Some(r_v) = normalize::<R>(r_v) {
-                children[0] = Some(PathState {
+                push(PathState {
                     ray: h.hit.spawn_ray(r_v.unit),
                     factor: factor * o_r,
                     weight: weight * o_r.max_element(),
@@ -520,7 +529,7 @@ impl<R: Real> Tracer<'_, R> {
             if let Some(r) = refraction {
                 match (stop, r.direction) {
                     (None, Some(t)) => {
-                        children[1] = Some(PathState {
+                        push(PathState {
                             ray: h.hit.spawn_ray(t),
                             factor: factor * o_t,
                             weight: w_t,
@@ -542,7 +551,7 @@ impl<R: Real> Tracer<'_, R> {
             }
         }
         rec.ray(&record);
-        (share, children)
+        share
     }
 }
 

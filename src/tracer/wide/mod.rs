@@ -9,7 +9,7 @@
 //! `ShadowRays` builds them and tested as packets, any hit ([`FlatScene::occluded_lanes`]);
 //! then each path is stepped by the scalar tracer's own [`Tracer::step`] (the stop rules, the
 //! reflection and transmission rays), and the rays it spawns form the next bounce's queue, in
-//! order, reflection first. The loop is one of four instances ([`Plan`]), chosen once per render
+//! order, reflection first. The loop is one of six instances ([`Plan`]), chosen once per render
 //! by whether the scene has shadows and secondary rays. Each queue entry carries the sample it
 //! adds to and its own factor, so a ray tree fits the same queues: they hold its rays breadth
 //! first, the order in which [`Tracer::trace`] takes them.
@@ -89,11 +89,15 @@ pub(crate) struct Plan<R: Real> {
 /// material, once for a register of hits, never per ray.)
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 enum Model {
-    /// Shadows on, some surface reflects or transmits (the classic scene).
+    /// Shadows on, some surface transmits: ray trees (the glass scene).
+    ShadowsTrees,
+    /// Shadows on, some surface reflects, none transmits: paths (the classic scene).
     ShadowsReflections,
     /// Shadows on, nothing reflects or transmits: one bounce.
     Shadows,
-    /// Shadows off, some surface reflects or transmits.
+    /// Shadows off, some surface transmits.
+    Trees,
+    /// Shadows off, some surface reflects, none transmits.
     Reflections,
     /// Shadows off, nothing reflects or transmits.
     Local,
@@ -103,15 +107,16 @@ impl<R: Real> Plan<R> {
     /// The plan for rendering `scene` with `problem`'s settings.
     pub(crate) fn new(scene: &Scene<R>, problem: &Problem<R>) -> Self {
         let (material_of, materials) = distinct_materials(&scene.materials);
-        let reflects = scene.materials.iter().any(|m| {
-            m.o_r.is_some_and(|o| o != V3::<R>::ZERO)
-                || m.transmission.is_some_and(|t| t.o_t != V3::<R>::ZERO)
-        });
-        let model = match (problem.render.shadows, reflects) {
-            (true, true) => Model::ShadowsReflections,
-            (true, false) => Model::Shadows,
-            (false, true) => Model::Reflections,
-            (false, false) => Model::Local,
+        let reflects = (scene.materials.iter()).any(|m| m.o_r.is_some_and(|o| o != V3::<R>::ZERO));
+        let transmits = (scene.materials.iter())
+            .any(|m| m.transmission.is_some_and(|t| t.o_t != V3::<R>::ZERO));
+        let model = match (problem.render.shadows, transmits, reflects) {
+            (true, true, _) => Model::ShadowsTrees,
+            (true, false, true) => Model::ShadowsReflections,
+            (true, false, false) => Model::Shadows,
+            (false, true, _) => Model::Trees,
+            (false, false, true) => Model::Reflections,
+            (false, false, false) => Model::Local,
         };
         Plan {
             flat: FlatScene::new(&scene.aggregate),
@@ -309,20 +314,32 @@ pub(crate) fn row<R: Real, T: Copy>(
     out: &mut Vec<T>,
 ) {
     match plan.model {
+        Model::ShadowsTrees => {
+            row_in::<R, T, true, true, true>(tracer, plan, camera, y, counts, each, out)
+        }
         Model::ShadowsReflections => {
-            row_in::<R, T, true, true>(tracer, plan, camera, y, counts, each, out)
+            row_in::<R, T, true, true, false>(tracer, plan, camera, y, counts, each, out)
         }
-        Model::Shadows => row_in::<R, T, true, false>(tracer, plan, camera, y, counts, each, out),
+        Model::Shadows => {
+            row_in::<R, T, true, false, false>(tracer, plan, camera, y, counts, each, out)
+        }
+        Model::Trees => {
+            row_in::<R, T, false, true, true>(tracer, plan, camera, y, counts, each, out)
+        }
         Model::Reflections => {
-            row_in::<R, T, false, true>(tracer, plan, camera, y, counts, each, out)
+            row_in::<R, T, false, true, false>(tracer, plan, camera, y, counts, each, out)
         }
-        Model::Local => row_in::<R, T, false, false>(tracer, plan, camera, y, counts, each, out),
+        Model::Local => {
+            row_in::<R, T, false, false, false>(tracer, plan, camera, y, counts, each, out)
+        }
     }
 }
 
 /// [`row`] in the instance the scene needs: `SHADOWS` (shadow rays), `SECONDARY` (some surface
-/// reflects or transmits: the stop rules and the queue of secondary rays).
-fn row_in<R: Real, T: Copy, const SHADOWS: bool, const SECONDARY: bool>(
+/// reflects or transmits: the stop rules and the queue of secondary rays), `TREES` (some
+/// surface transmits, so a hit may spawn two rays: the next bounce's queue built apart; else
+/// the paths that go on are moved down the queue in place).
+fn row_in<R: Real, T: Copy, const SHADOWS: bool, const SECONDARY: bool, const TREES: bool>(
     tracer: &Tracer<R>,
     plan: &Plan<R>,
     camera: &CameraRays<R>,
@@ -387,30 +404,50 @@ fn row_in<R: Real, T: Copy, const SHADOWS: bool, const SECONDARY: bool>(
                 }
             }
             shade_queue::<R, SHADOWS>(tracer, plan, &mut b, counts);
-            // Each path stepped where it stands in the queue, and the rays it spawns queued
-            // behind each other in order, reflection first: the next bounce's queue.
-            b.next.clear();
-            for i in 0..b.queue.len() {
-                let e = &b.queue[i];
-                let share = match &b.found[i] {
-                    None => tracer.miss(&e.path, None, &mut ()),
-                    Some(h) if SECONDARY => {
-                        let (share, children) =
-                            tracer.step(&e.path, None, h, b.shaded[i], counts, &mut ());
-                        let slot = e.slot;
-                        b.next.extend(
-                            children
-                                .into_iter()
-                                .flatten()
-                                .map(|path| Entry { slot, path }),
-                        );
-                        share
+            if TREES {
+                // Each path stepped where it stands in the queue, and the rays it spawns queued
+                // behind each other in order, reflection first: the next bounce's queue.
+                b.next.clear();
+                for i in 0..b.queue.len() {
+                    let e = &b.queue[i];
+                    let share = match &b.found[i] {
+                        None => tracer.miss(&e.path, None, &mut ()),
+                        Some(h) => {
+                            let (slot, next) = (e.slot, &mut b.next);
+                            let shaded = b.shaded[i];
+                            tracer.step(&e.path, None, h, shaded, counts, &mut (), &mut |path| {
+                                next.push(Entry { slot, path })
+                            })
+                        }
+                    };
+                    b.colors[e.slot as usize] += share;
+                }
+                std::mem::swap(&mut b.queue, &mut b.next);
+            } else {
+                // At most one child per path: each path stepped where it stands, and the paths
+                // that go on moved down to the queue's front, in order.
+                let mut kept = 0;
+                for i in 0..b.queue.len() {
+                    let e = b.queue[i];
+                    let mut child = None;
+                    let share = match &b.found[i] {
+                        None => tracer.miss(&e.path, None, &mut ()),
+                        Some(h) if SECONDARY => {
+                            let shaded = b.shaded[i];
+                            tracer.step(&e.path, None, h, shaded, counts, &mut (), &mut |path| {
+                                child = Some(path)
+                            })
+                        }
+                        Some(_) => e.path.factor * b.shaded[i].1,
+                    };
+                    b.colors[e.slot as usize] += share;
+                    if let Some(path) = child {
+                        b.queue[kept] = Entry { slot: e.slot, path };
+                        kept += 1;
                     }
-                    Some(_) => e.path.factor * b.shaded[i].1,
-                };
-                b.colors[e.slot as usize] += share;
+                }
+                b.queue.truncate(kept);
             }
-            std::mem::swap(&mut b.queue, &mut b.next);
         }
         // The samples in order: each pixel's sum, then its mean, as pixel_mean forms them.
         for s in start..end {
@@ -455,7 +492,7 @@ fn shade_queue<R: Real, const SHADOWS: bool>(
         let group = &b.groups[at..at + len];
         at += len;
         // Lanes past the group's end repeat its last hit (and are not active).
-        let mut hit = [Lane3::<R>::default(); 4];
+        let mut hit = [Lane3::<R>::default(); 5];
         for k in 0..lanes {
             let i = group[k.min(len - 1)].1 as usize;
             let (Some(h), d) = (&b.found[i], b.queue[i].path.ray.direction) else {
@@ -465,15 +502,16 @@ fn shade_queue<R: Real, const SHADOWS: bool>(
             hit[1].set(k, h.hit.p_error);
             hit[2].set(k, h.hit.normal);
             hit[3].set(k, d);
+            hit[4].set(k, h.hit.shading);
         }
-        let [p, p_error, normal, v] = hit.map(Lane3::lanes);
-        // N turned to face the incoming ray (`SurfaceHit::facing`); V is the ray's direction
-        // (Eq. 4.10).
+        let [p, p_error, normal, v, shading] = hit.map(Lane3::lanes);
+        // The shading normal turned to face the incoming ray by the geometric normal's test
+        // (`SurfaceHit::facing`); V is the ray's direction (Eq. 4.10).
         let reversed = normal.dot(v).gt(W::<R>::splat(R::ZERO));
         let n = W3 {
-            x: reversed.select(normal.x.neg(), normal.x),
-            y: reversed.select(normal.y.neg(), normal.y),
-            z: reversed.select(normal.z.neg(), normal.z),
+            x: reversed.select(shading.x.neg(), shading.x),
+            y: reversed.select(shading.y.neg(), shading.y),
+            z: reversed.select(shading.z.neg(), shading.z),
         };
         let point = LanePoint::<W<R>> { p, n, v: Some(v) };
         let mut side = WideSide::<R, SHADOWS> {

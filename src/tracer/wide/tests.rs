@@ -172,29 +172,35 @@ fn the_plan_groups_exactly_the_equal_materials() {
     }
 }
 
-/// Triangles (the torus mesh of scenes/mesh.json: SoA triangle leaves of the wide BVH) with
-/// several samples, small image, with and without shadows.
-fn mesh_scene_in<R: Real>() {
-    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/mesh.json");
+/// Triangles (the torus mesh of scenes/mesh.json, the smooth sphere of scenes/smooth.json: SoA
+/// triangle leaves of the wide BVH) with several samples, small image, with and without shadows.
+fn mesh_scene_in<R: Real>(file: &str) {
+    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join(file);
     let problem::SceneFile {
         mut problem,
         mut camera,
         ..
-    } = problem::load_scene::<R>(&path).expect("scenes/mesh.json");
+    } = problem::load_scene::<R>(&path).expect(file);
     camera.width = 53;
     camera.height = 41;
     for (samples, shadows) in [(3, true), (2, false)] {
         problem.render.samples = samples;
         problem.render.shadows = shadows;
-        let name = format!("mesh, {samples} samples, shadows {shadows}");
+        let name = format!("{file}, {samples} samples, shadows {shadows}");
         same_by_both_engines::<R>(&name, &problem, &camera);
     }
 }
 
 #[test]
 fn the_mesh_scene_with_samples_renders_the_same_bits_in_both_precisions() {
-    mesh_scene_in::<f32>();
-    mesh_scene_in::<f64>();
+    mesh_scene_in::<f32>("scenes/mesh.json");
+    mesh_scene_in::<f64>("scenes/mesh.json");
+}
+
+#[test]
+fn the_smooth_mesh_scene_with_samples_renders_the_same_bits_in_both_precisions() {
+    mesh_scene_in::<f32>("scenes/smooth.json");
+    mesh_scene_in::<f64>("scenes/smooth.json");
 }
 
 /// The many-spheres scene with glass among its materials: each material's first sphere material
