@@ -67,6 +67,30 @@ fn every_format_and_language_of_the_chapters_exercises_matches_its_snapshot() {
 }
 
 #[test]
+fn every_format_and_language_of_the_secondary_rays_exercise_matches_its_snapshot() {
+    settings().bind(|| {
+        let exercise = "secondary-rays";
+        for lang in [Lang::En, Lang::Pt] {
+            let x = explain(exercise, lang);
+            let l = lang_code(lang);
+            let xs = std::slice::from_ref(&x);
+            if lang == Lang::Pt {
+                insta::assert_snapshot!(format!("text-pt@{exercise}"), text(&x, false));
+            }
+            insta::assert_snapshot!(format!("markdown-{l}@{exercise}"), markdown(xs));
+            insta::assert_snapshot!(
+                format!("latex-{l}@{exercise}"),
+                latex(xs, LatexOptions::default())
+            );
+            insta::assert_snapshot!(
+                format!("html-{l}@{exercise}"),
+                html(xs, HtmlOptions::default(), lang)
+            );
+        }
+    });
+}
+
+#[test]
 fn coloured_text_of_exercise_4_2_matches_its_snapshot() {
     settings().bind(|| {
         insta::assert_snapshot!("text-color-en@4.2", text(&explain("4.2", Lang::En), true));

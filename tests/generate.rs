@@ -7,7 +7,7 @@ use std::path::{Path, PathBuf};
 use assert_cmd::Command;
 use serde_json::Value;
 
-const KINDS: [&str; 7] = [
+const KINDS: [&str; 8] = [
     "ambient",
     "point",
     "ray-plane",
@@ -15,6 +15,7 @@ const KINDS: [&str; 7] = [
     "spot",
     "several",
     "sphere",
+    "secondary",
 ];
 
 fn generate(kind: &str, count: u32, seed: u64, dir: &Path) -> Vec<PathBuf> {
@@ -168,7 +169,7 @@ fn the_numbers_are_friendly_to_hand_calculation() {
                 "point" | "directional" | "spot" | "several" => {
                     (v3(&p["point"]["position"]), v3(&p["point"]["normal"]))
                 }
-                "ray-plane" => {
+                "ray-plane" | "secondary" => {
                     let o = v3(&p["ray"]["origin"]);
                     let d = v3(&p["ray"]["direction"]);
                     let q = v3(&p["surfaces"][0]["point"]);

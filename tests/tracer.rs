@@ -117,8 +117,13 @@ fn every_ray_of_an_explained_pixel_is_what_phong_solve_says_of_that_ray() {
         for (k, ray) in rays.iter().enumerate() {
             let problem = ray_problem(&scene, &ray["origin"], &ray["direction"]);
             let path = write(&dir, &format!("ray-{x}-{y}-{k}.json"), &problem);
-            let solved = solve_json(&path);
+            let mut solved = solve_json(&path);
             if ray["hit"].as_bool().unwrap() {
+                // A ray problem's ray is a primary ray, and `phong solve` shows the rays it
+                // would spawn at level 2; the pixel's tree shows each ray's own children, so its
+                // `solve` leaves them out (docs/conventions.md, "Secondary rays of a ray
+                // problem").
+                solved.as_object_mut().unwrap().remove("secondary_rays");
                 assert_eq!(
                     without_file(ray["solve"].clone()),
                     without_file(solved),

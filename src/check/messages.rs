@@ -51,6 +51,14 @@ pub fn slip(s: Slip, lang: Lang) -> &'static str {
             Slip::SpotConeIgnored => {
                 "the spot light's cone ignored (taken as a point light, Eq. 4.4)"
             }
+            Slip::ReflectionSignFlipped => {
+                "R_V with the sign of its N·V term flipped: V + 2(N·V)N instead of V − 2(N·V)N \
+                 (Eq. 4.17)"
+            }
+            Slip::EtaInverted => {
+                "Snell's law with η_i/η_t inverted: η_r = η_t/η_i (from the medium beyond into \
+                 the medium the ray travels in)"
+            }
             Slip::NoClamping => {
                 "negative cosines kept: Eq. 4.16 taken literally, cos θ and cos φ not clamped at 0"
             }
@@ -91,6 +99,14 @@ pub fn slip(s: Slip, lang: Lang) -> &'static str {
             Slip::HalfVector => "cos φ pelo vetor médio de Blinn, N·H, em vez de −R·V (Eq. 4.10)",
             Slip::CosPhiNotRaised => "cos φ não elevado a n_s (Eq. 4.10)",
             Slip::SpotConeIgnored => "o cone do spot ignorado (tomado como luz pontual, Eq. 4.4)",
+            Slip::ReflectionSignFlipped => {
+                "R_V com o sinal do termo em N·V trocado: V + 2(N·V)N em vez de V − 2(N·V)N \
+                 (Eq. 4.17)"
+            }
+            Slip::EtaInverted => {
+                "a lei de Snell com η_i/η_t invertido: η_r = η_t/η_i (do meio além da superfície \
+                 para o meio em que o raio viaja)"
+            }
             Slip::NoClamping => {
                 "cossenos negativos mantidos: a Eq. 4.16 ao pé da letra, cos θ e cos φ sem o \
                  limite em 0"

@@ -57,6 +57,10 @@ pub enum Slip {
     CosPhiNotRaised,
     /// The spot light's cone ignored: the spot taken as a point light (Eq. 4.4).
     SpotConeIgnored,
+    /// R_V with the sign of its N·V term flipped: V + 2(N·V)N for V − 2(N·V)N (Eq. 4.17).
+    ReflectionSignFlipped,
+    /// Snell's law with η_i/η_t inverted (η_r = η_t/η_i): the material's η taken as 1/η.
+    EtaInverted,
     /// Every intermediate (N, V, L, d, 1/d^f, I_l, N·L, R, cos φ, each term) rounded to two
     /// decimals before the next step uses it.
     IntermediatesRounded,
@@ -70,7 +74,7 @@ pub enum Slip {
 
 impl Slip {
     /// Every slip, in the order of application.
-    pub const ALL: [Slip; 18] = [
+    pub const ALL: [Slip; 20] = [
         Slip::HitBehindOrigin,
         Slip::LightReversed,
         Slip::ViewerReversed,
@@ -85,6 +89,8 @@ impl Slip {
         Slip::HalfVector,
         Slip::CosPhiNotRaised,
         Slip::SpotConeIgnored,
+        Slip::ReflectionSignFlipped,
+        Slip::EtaInverted,
         Slip::IntermediatesRounded,
         Slip::NoClamping,
         Slip::TruncatedDecimals,
@@ -108,6 +114,8 @@ impl Slip {
             Slip::HalfVector => "half_vector",
             Slip::CosPhiNotRaised => "cos_phi_not_raised",
             Slip::SpotConeIgnored => "spot_cone_ignored",
+            Slip::ReflectionSignFlipped => "reflection_sign_flipped",
+            Slip::EtaInverted => "eta_inverted",
             Slip::IntermediatesRounded => "intermediates_rounded",
             Slip::NoClamping => "no_clamping",
             Slip::TruncatedDecimals => "truncated_decimals",
@@ -140,6 +148,9 @@ pub(crate) struct Variant {
     pub problem: Problem<f64>,
     pub formulas: Slipped,
     pub literal: bool,
+    /// R_V taken as V + 2(N·V)N: the secondary rays' slip, made on the solution's R_V (the
+    /// local colour does not depend on it).
+    pub reflection_sign_flipped: bool,
 }
 
 impl Variant {
@@ -148,12 +159,23 @@ impl Variant {
             problem: problem.clone(),
             formulas: Slipped::default(),
             literal: false,
+            reflection_sign_flipped: false,
         }
     }
 
-    /// Solves the variant with the same solver and core.
+    /// Solves the variant with the same solver and core; with `reflection_sign_flipped`, the
+    /// reflection ray's direction is then the slip's V + 2(N·V)N, normalised as R_V is.
     pub fn solve(&self) -> Option<Solution<f64>> {
-        solve_with(&self.problem, self.formulas).ok()
+        let mut s = solve_with(&self.problem, self.formulas).ok()?;
+        if self.reflection_sign_flipped {
+            if let Some(x) = &mut s.secondary {
+                if let Some(r) = &mut x.reflection {
+                    let slipped = x.v + x.n * (2.0 * x.n.dot(x.v));
+                    r.direction = crate::core::vector::normalize::<f64>(slipped).map(|u| u.unit);
+                }
+            }
+        }
+        Some(s)
     }
 
     /// The colour the variant gives: the clamped and unclamped colour of the problem as written,
@@ -242,6 +264,24 @@ impl Variant {
                     if m.material.o_s.is_some() && m.material.n_s != 1.0 {
                         m.material.n_s = 1.0;
                         any = true;
+                    }
+                }
+                any
+            }
+            Slip::ReflectionSignFlipped => {
+                let reflects = solution
+                    .and_then(|s| s.secondary.as_ref())
+                    .is_some_and(|x| x.reflection.is_some());
+                reflects && !std::mem::replace(&mut v.reflection_sign_flipped, true)
+            }
+            Slip::EtaInverted => {
+                let mut any = false;
+                for m in materials(&mut v.problem) {
+                    if let Some(t) = &mut m.material.transmission {
+                        if t.eta != 1.0 {
+                            t.eta = 1.0 / t.eta;
+                            any = true;
+                        }
                     }
                 }
                 any

@@ -31,7 +31,7 @@ use crate::core::{LightKind, Vector};
 use crate::problem::{self, Problem};
 use crate::report::lang::Lang;
 use crate::report::number::num;
-use crate::solve::{Evaluation, Intersection, ReadingCode, Solution};
+use crate::solve::{Evaluation, Intersection, ReadingCode, Secondary, Solution};
 
 /// The relative tolerance of a step: 1 % of the quantity's size.
 pub const STEP_RELATIVE: f64 = 1e-2;
@@ -46,6 +46,8 @@ pub enum Value {
     Scalar(f64),
     /// Three numbers (L, R, V, I_l, a term).
     Vector([f64; 3]),
+    /// Yes or no (whether a secondary ray is traced).
+    Flag(bool),
 }
 
 impl Value {
@@ -53,6 +55,7 @@ impl Value {
         match self {
             Value::Scalar(x) => vec![x],
             Value::Vector(v) => v.to_vec(),
+            Value::Flag(b) => vec![if b { 1.0 } else { 0.0 }],
         }
     }
 
@@ -60,6 +63,8 @@ impl Value {
         match self {
             Value::Scalar(x) => Value::Scalar(-x),
             Value::Vector(v) => Value::Vector(v.map(|x| -x)),
+            // A yes or no has no sign: "the sign differs" never says it.
+            Value::Flag(b) => Value::Flag(b),
         }
     }
 
@@ -67,11 +72,18 @@ impl Value {
         matches!(self, Value::Vector(_))
     }
 
-    /// The text of the value, as the reports write numbers.
+    /// The text of the value, as the reports write numbers (a yes or no in English).
     pub fn text(self) -> String {
+        self.text_in(Lang::En)
+    }
+
+    /// The text of the value in `lang`: numbers as the reports write them, a yes or no as
+    /// "yes"/"no" or "sim"/"não".
+    pub fn text_in(self, lang: Lang) -> String {
         match self {
             Value::Scalar(x) => num(x),
             Value::Vector(v) => format!("({}, {}, {})", num(v[0]), num(v[1]), num(v[2])),
+            Value::Flag(b) => crate::report::messages::yes_no(b, lang).to_owned(),
         }
     }
 }
@@ -98,6 +110,8 @@ pub struct Name {
     pub per_light: bool,
     /// A vector, or a number.
     pub vector: bool,
+    /// A yes or no (then `vector` is false).
+    pub flag: bool,
     /// The chapter's equation, when it numbers one.
     pub equation: Option<&'static str>,
     /// The formula, in the chapter's symbols.
@@ -115,13 +129,26 @@ const fn name(
         name,
         per_light,
         vector,
+        flag: false,
         equation,
         formula,
     }
 }
 
+/// A yes-or-no quantity of the point (whether a secondary ray is traced).
+const fn flag(name: &'static str, formula: &'static str) -> Name {
+    Name {
+        name,
+        per_light: false,
+        vector: false,
+        flag: true,
+        equation: None,
+        formula,
+    }
+}
+
 /// Every step that can be checked, in the order of the solution (as `phong solve` shows it).
-pub const NAMES: [Name; 22] = [
+pub const NAMES: [Name; 30] = [
     name("t", false, false, None, "O + tD on the surface"),
     name("P", false, true, None, "P = O + tD"),
     name("N", false, true, None, "N, of unit length"),
@@ -156,10 +183,49 @@ pub const NAMES: [Name; 22] = [
         Some("4.16"),
         "I = O_a I_a + Σ (diffuse + specular)",
     ),
+    // The secondary rays of a ray problem's hit, Section 4.4.
+    name("r_v", false, true, Some("4.17"), "R_V = V − 2(N·V)N"),
+    name(
+        "reflection_weight",
+        false,
+        false,
+        None,
+        "w_s = w_p·max(O_r), w_p = 1",
+    ),
+    flag(
+        "reflection_traced",
+        "the reflection ray is traced: level ≤ maximum level and w_s > minimum weight",
+    ),
+    name("cos_theta_i", false, false, None, "cos θ_i = −N·V"),
+    name(
+        "k",
+        false,
+        false,
+        None,
+        "k = 1 − η_r²(1 − cos²θ_i), η_r = η_i/η_t",
+    ),
+    name(
+        "t_direction",
+        false,
+        true,
+        None,
+        "T = η_r V + (η_r cos θ_i − √k) N",
+    ),
+    name(
+        "transmission_weight",
+        false,
+        false,
+        None,
+        "w_t = w_p·max(O_t), w_p = 1",
+    ),
+    flag(
+        "transmission_traced",
+        "the transmission ray is traced: k ≥ 0, level ≤ maximum level and w_t > minimum weight",
+    ),
 ];
 
 /// Other ways of writing a name (compared without case, spaces or underscores).
-const ALIASES: [(&str, &str); 16] = [
+const ALIASES: [(&str, &str); 26] = [
     ("costheta", "cos_theta"),
     ("cosθ", "cos_theta"),
     ("cosphi", "cos_phi"),
@@ -176,6 +242,16 @@ const ALIASES: [(&str, &str); 16] = [
     ("cosphipow", "cos_phi_pow"),
     ("total", "I"),
     ("color", "I"),
+    ("rv", "r_v"),
+    ("reflection_direction", "r_v"),
+    ("w_s", "reflection_weight"),
+    ("w_t", "transmission_weight"),
+    ("transmitted_direction", "t_direction"),
+    ("transmission_direction", "t_direction"),
+    ("costhetai", "cos_theta_i"),
+    ("cosθi", "cos_theta_i"),
+    ("reflected", "reflection_traced"),
+    ("transmitted", "transmission_traced"),
 ];
 
 fn squash(s: &str) -> String {
@@ -254,6 +330,21 @@ pub fn parse_named(name_text: &str, value_text: &str) -> Result<GivenStep, BadSt
             name.name
         )));
     }
+    if name.flag {
+        let value = parse_flag(value_text).ok_or_else(|| {
+            bad(format!(
+                "\"{}\" is not a value for {}: write yes or no (sim or não)",
+                value_text.trim(),
+                name.name
+            ))
+        })?;
+        return Ok(GivenStep {
+            text: name_text.to_owned(),
+            name,
+            light,
+            value: Value::Flag(value),
+        });
+    }
     let value = parse_value(value_text).ok_or_else(|| {
         bad(format!(
             "\"{}\" is not a value for {}: write {}",
@@ -290,6 +381,20 @@ pub fn parse_named(name_text: &str, value_text: &str) -> Result<GivenStep, BadSt
         light,
         value,
     })
+}
+
+/// A yes or no: yes, no, sim, não (nao), true, false, traced, not traced (traçado, não
+/// traçado), without case.
+fn parse_flag(text: &str) -> Option<bool> {
+    let t = text.trim().to_lowercase();
+    let t = t.trim_matches(|c: char| c == '"' || c == '.' || c == '!');
+    match t {
+        "yes" | "y" | "sim" | "s" | "true" | "traced" | "traçado" | "tracado" => Some(true),
+        "no" | "n" | "não" | "nao" | "false" | "not traced" | "não traçado" | "nao tracado" => {
+            Some(false)
+        }
+        _ => None,
+    }
 }
 
 /// One number (a decimal comma is read as a point) or three.
@@ -389,6 +494,7 @@ pub fn parse_steps_json(text: &str) -> Result<Vec<GivenStep>, BadStep> {
         let value = match v {
             serde_json::Value::Number(n) => n.to_string(),
             serde_json::Value::String(s) => s.clone(),
+            serde_json::Value::Bool(b) => b.to_string(),
             serde_json::Value::Array(a) if a.iter().all(serde_json::Value::is_number) => a
                 .iter()
                 .map(ToString::to_string)
@@ -538,6 +644,40 @@ pub fn quantities(
     out
 }
 
+/// The quantities of a ray problem's secondary rays (Section 4.4), in the order of the
+/// solution; their `order` is set by the caller, after the local colour's.
+pub fn secondary_quantities(x: &Secondary<f64>) -> Vec<Quantity> {
+    let mut out = Vec::new();
+    let mut push = |n: &str, value: Value| {
+        let name = NAMES[order_of(n)];
+        out.push(Quantity {
+            name,
+            light: None,
+            order: 0,
+            value,
+            literal: None,
+            equation: name.equation,
+        });
+    };
+    if let Some(r) = &x.reflection {
+        if let Some(d) = r.direction {
+            push("r_v", Value::Vector(d.to_array()));
+        }
+        push("reflection_weight", Value::Scalar(r.weight));
+        push("reflection_traced", Value::Flag(r.traced()));
+    }
+    if let Some(t) = &x.transmission {
+        push("cos_theta_i", Value::Scalar(t.refraction.cos_i));
+        push("k", Value::Scalar(t.refraction.k));
+        if let Some(d) = t.refraction.direction {
+            push("t_direction", Value::Vector(d.to_array()));
+        }
+        push("transmission_weight", Value::Scalar(t.weight));
+        push("transmission_traced", Value::Flag(t.traced()));
+    }
+    out
+}
+
 fn light_kind(
     problem: &Problem<f64>,
     file_index: usize,
@@ -558,9 +698,15 @@ struct Source {
 
 impl Source {
     fn of(problem: &Problem<f64>, s: &Solution<f64>) -> Self {
-        Source {
-            quantities: quantities(problem, s.intersection.as_ref(), s.evaluation.as_ref()),
+        let mut quantities = quantities(problem, s.intersection.as_ref(), s.evaluation.as_ref());
+        if let Some(x) = &s.secondary {
+            let after = quantities.len();
+            quantities.extend(secondary_quantities(x));
+            for (k, q) in quantities.iter_mut().enumerate().skip(after) {
+                q.order = k;
+            }
         }
+        Source { quantities }
     }
 
     fn find(&self, name: Name, light: Option<usize>) -> Option<&Quantity> {
@@ -955,7 +1101,15 @@ pub fn step_message(s: &JudgedStep, lang: Lang) -> String {
         messages::step_verdict(s.verdict, lang),
         equation(&s.expected, lang)
     );
-    let exact = s.expected.value.text();
+    let exact = match s.expected.value {
+        // A yes or no says what it means: "no (the ray is not traced)".
+        Value::Flag(b) => format!(
+            "{} ({})",
+            s.expected.value.text_in(lang),
+            crate::report::messages::ray_traced(b, lang)
+        ),
+        other => other.text_in(lang),
+    };
     let mut parts = Vec::new();
     let why = s.absent_as_written.unwrap_or(Absence::Other);
     match (s.verdict, s.expected_from_reading) {
@@ -1015,7 +1169,7 @@ pub fn text(c: &StepsChecked, lang: Lang) -> String {
             out,
             "  {label}{} = {}  {}",
             " ".repeat(pad),
-            s.given.value.text(),
+            s.given.value.text_in(lang),
             step_message(s, lang)
         );
     }
@@ -1055,7 +1209,7 @@ pub(crate) fn feedback(j: &StepsJudged, lang: Lang) -> String {
         .map(|s| {
             messages::step_sentence(
                 &s.label(),
-                &s.given.value.text(),
+                &s.given.value.text_in(lang),
                 &step_message(s, lang),
                 lang,
             )

@@ -120,6 +120,9 @@ fn slip_text(slip: Slip, lang: Lang) -> String {
         Slip::SpotConeIgnored => "4.4",
         Slip::IntermediatesRounded | Slip::NoClamping | Slip::TruncatedDecimals => "4.16",
         Slip::TruncatedRgb8 => "4.16",
+        Slip::ReflectionSignFlipped => "4.17",
+        // Snell's law is not one of the chapter's numbered equations.
+        Slip::EtaInverted => return format!("{text} (Sec. 4.4)"),
     };
     format!("{text} (Eq. {eq})")
 }

@@ -35,6 +35,11 @@ pub enum Kind {
     Several,
     /// A ray meeting a sphere (the nearest of its two hits, in front of the ray's origin).
     Sphere,
+    /// A ray meeting a plane whose material reflects (O_r) and transmits (O_t, η), with the
+    /// render settings' maximum level and minimum weight: the local colour, then the reflected
+    /// ray R_V (Eq. 4.17) and the transmitted ray (Snell's law), each with its level and
+    /// weight, and whether it is traced (Section 4.4).
+    Secondary,
 }
 
 impl Kind {
@@ -48,6 +53,7 @@ impl Kind {
             Kind::Spot => "spot",
             Kind::Several => "several",
             Kind::Sphere => "sphere",
+            Kind::Secondary => "secondary",
         }
     }
 }
@@ -218,6 +224,19 @@ struct MaterialOut {
     specular: Option<N3>,
     #[serde(skip_serializing_if = "Option::is_none")]
     shininess: Option<u32>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    reflectivity: Option<N3>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    transmissivity: Option<N3>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    ior: Option<Num>,
+}
+
+/// The render settings of a problem about secondary rays (the format's `render`).
+#[derive(Serialize)]
+struct RenderOut {
+    max_level: u32,
+    min_weight: Num,
 }
 
 #[derive(Serialize)]
@@ -278,6 +297,8 @@ struct ProblemOut {
     #[serde(skip_serializing_if = "Vec::is_empty")]
     surfaces: Vec<SurfaceOut>,
     #[serde(skip_serializing_if = "Option::is_none")]
+    render: Option<RenderOut>,
+    #[serde(skip_serializing_if = "Option::is_none")]
     answer: Option<N3>,
 }
 
@@ -320,6 +341,7 @@ fn title(kind: Kind, i: u32, t: Tongue) -> String {
         Kind::Spot => ("spot light", "luz spot"),
         Kind::Several => ("several lights", "várias luzes"),
         Kind::Sphere => ("ray and sphere", "raio e esfera"),
+        Kind::Secondary => ("secondary rays", "raios secundários"),
     };
     match t {
         Tongue::En => format!("Generated problem {i}: {en}"),
@@ -399,6 +421,9 @@ fn phong_material(r: &mut Draw) -> MaterialOut {
         diffuse: Some(r.color(1, 9)),
         specular: Some(r.color(1, 5)),
         shininess: Some(r.range(1, 3) as u32),
+        reflectivity: None,
+        transmissivity: None,
+        ior: None,
     }
 }
 
@@ -419,6 +444,7 @@ fn problem(kind: Kind, i: u32, seed: u64) -> ProblemOut {
         point: None,
         ray: None,
         surfaces: Vec::new(),
+        render: None,
         answer: None,
     }
 }
@@ -438,6 +464,9 @@ fn draw(kind: Kind, r: &mut Draw, i: u32, seed: u64) -> ProblemOut {
                     diffuse: None,
                     specular: None,
                     shininess: None,
+                    reflectivity: None,
+                    transmissivity: None,
+                    ior: None,
                 },
             );
             out.point = Some(PointOut {
@@ -533,6 +562,7 @@ fn draw(kind: Kind, r: &mut Draw, i: u32, seed: u64) -> ProblemOut {
                 material: "M",
             });
         }
+        Kind::Secondary => draw_secondary(&mut out, r),
         Kind::Sphere => {
             // P = C + ρ·n on the sphere; the ray from P + t·u (u·n ≥ 0.2) along −u meets it
             // first at P (its second hit is 2ρ(u·n) further on).
@@ -569,6 +599,51 @@ fn draw(kind: Kind, r: &mut Draw, i: u32, seed: u64) -> ProblemOut {
         }
     }
     out
+}
+
+/// A problem about secondary rays: a ray meeting a plane from its normal's side at an integer
+/// t (as `ray-plane`'s), a white point light in front, a material with O_r (one decimal, up to
+/// 0.5, so that w_s often meets the minimum weight), O_t and a friendly η, and render settings
+/// whose level or weight stops a child in about half the problems.
+fn draw_secondary(out: &mut ProblemOut, r: &mut Draw) {
+    let p = r.point(4);
+    let n = r.unit();
+    let light_dir = r.unit_facing(n, 0.2);
+    let d = r.range(1, 5);
+    out.lights.push(ambient_light(r, &[0.0, 0.5, 1.0]));
+    out.lights.push(LightOut {
+        kind: "point",
+        position: Some(offset(p, d, light_dir)),
+        color: n3([1.0; 3]),
+        falloff: Some(0),
+        ..LightOut::default()
+    });
+    let mut m = phong_material(r);
+    m.reflectivity = Some(r.color(0, 5));
+    m.transmissivity = Some(r.color(1, 9));
+    m.ior = Some(Num(r.pick(&[1.25, 1.5, 2.0])));
+    out.materials.insert("M", m);
+    let toward = r.unit_facing(n, 0.2);
+    let t = r.range(2, 6);
+    let tangent = tangent(n.num);
+    let k = r.pick(&[-1, 1]);
+    let q = [0, 1, 2].map(|i| p[i] + k * tangent[i]);
+    out.ray = Some(RayOut {
+        origin: offset(p, t, toward),
+        direction: n3(toward.f().map(|x| -x)),
+    });
+    out.surfaces.push(SurfaceOut {
+        kind: "plane",
+        point: Some(f3(q)),
+        normal: Some(n3(n.f())),
+        center: None,
+        radius: None,
+        material: "M",
+    });
+    out.render = Some(RenderOut {
+        max_level: r.pick(&[1, 2, 2, 3]),
+        min_weight: Num(r.pick(&[0.1, 0.2, 0.3])),
+    });
 }
 
 /// C + ρ·n + d·u, exactly.
@@ -706,6 +781,19 @@ fn statement(p: &ProblemOut, t: Tongue) -> String {
         if let Some(n) = m.shininess {
             terms.push(format!("n_s = {n}"));
         }
+        if let Some(o_r) = &m.reflectivity {
+            terms.push(format!("O_r = {}", v(o_r)));
+        }
+        if let Some(o_t) = &m.transmissivity {
+            terms.push(format!("O_t = {}", v(o_t)));
+        }
+        if let Some(eta) = m.ior {
+            terms.push(if en {
+                format!("index of refraction η = {}", word_num(eta, t))
+            } else {
+                format!("índice de refração η = {}", word_num(eta, t))
+            });
+        }
         let last = terms.pop().expect("O_a");
         let list = if terms.is_empty() {
             last
@@ -772,6 +860,26 @@ fn statement(p: &ProblemOut, t: Tongue) -> String {
             s.push("Não é dado observador: o raio vem do olho (V = D).".into())
         }
         _ => {}
+    }
+    if let Some(settings) = &p.render {
+        let (l, w) = (settings.max_level, word_num(settings.min_weight, t));
+        s.push(if en {
+            format!(
+                "The medium on the side the normal points to has index 1. The tracer's maximum level is {l} and \
+                 its minimum weight {w}. What colour does the ray see where it meets the \
+                 surface (Eq. 4.16)? What are the directions of the reflected ray (Eq. 4.17) \
+                 and of the transmitted ray (Snell's law), their levels and weights, and is \
+                 each traced?"
+            )
+        } else {
+            format!(
+                "O meio do lado para o qual a normal aponta tem índice 1. O nível máximo do traçador é {l} e o seu \
+                 peso mínimo, {w}. Que cor o raio vê no ponto em que atinge a superfície \
+                 (Eq. 4.16)? Quais são as direções do raio refletido (Eq. 4.17) e do raio \
+                 transmitido (lei de Snell), os seus níveis e pesos, e cada um deles é traçado?"
+            )
+        });
+        return s.join(" ");
     }
     s.push(
         match (

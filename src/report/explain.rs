@@ -15,7 +15,9 @@ use crate::core::{Falloff, LightKind, LightSet, LightStatus, LightTerm, Real, Sp
 use crate::problem::format::ColorSpec;
 use crate::problem::model::ReflectivitySource;
 use crate::problem::Problem;
-use crate::solve::{Evaluation, Intersection, Solution, ViewSource};
+use crate::report::pixel::transmission_stop_in;
+use crate::solve::{Evaluation, Intersection, Secondary, Solution, ViewSource};
+use crate::tracer::Stop;
 
 /// One piece of a step's line.
 #[derive(Clone, Debug, PartialEq)]
@@ -144,6 +146,9 @@ pub struct Shading {
     pub rgb8: [u8; 3],
     /// One plane of incidence per light that has a direction at the point.
     pub diagrams: Vec<Diagram>,
+    /// A ray problem's secondary rays at the hit (Section 4.4), after the local colour; empty
+    /// where the material neither reflects nor transmits, and in a reading.
+    pub secondary: Vec<Step>,
 }
 
 /// What a diagram of the plane of incidence needs: the unit vectors at P for one light.
@@ -208,10 +213,13 @@ pub fn explain<R: Real>(
         heading: Phrase::AsWritten.get(lang).to_owned(),
         explanation: None,
         ray: None,
-        shading: s
-            .evaluation
-            .as_ref()
-            .map(|e| shading(problem, e, lang, ray_mark(s.intersection.as_ref()))),
+        shading: s.evaluation.as_ref().map(|e| Shading {
+            secondary: s
+                .secondary
+                .as_ref()
+                .map_or_else(Vec::new, |x| secondary(x, lang)),
+            ..shading(problem, e, lang, ray_mark(s.intersection.as_ref()))
+        }),
     })
     .chain(s.readings.iter().map(|r| Part {
         heading: capitalised(messages::reading_label_in(r.code, lang)),
@@ -519,6 +527,18 @@ fn data<R: Real>(problem: &Problem<R>, lang: Lang) -> Vec<DataRow> {
         if let (Some(o_r), Some(ReflectivitySource::Explicit)) = (m.material.o_r, m.reflectivity) {
             value.extend([t(", "), Math(Formula::OR), EQ, Color(v::<R>(o_r))]);
         }
+        if let Some(tr) = m.material.transmission {
+            value.extend([
+                t(", "),
+                Math(Formula::OT),
+                EQ,
+                Color(v::<R>(tr.o_t)),
+                t(", "),
+                Math(Formula::Eta),
+                EQ,
+                Num(tr.eta.to_f64()),
+            ]);
+        }
         if value.is_empty() {
             continue;
         }
@@ -529,6 +549,32 @@ fn data<R: Real>(problem: &Problem<R>, lang: Lang) -> Vec<DataRow> {
             ))],
             value,
         );
+    }
+    // A ray problem whose surfaces reflect or transmit: the tracer's settings decide which of
+    // the hit's secondary rays are traced (Section 4.4).
+    if let Target::Ray { surfaces, .. } = &problem.target {
+        let spawns = surfaces.iter().any(|s| {
+            s.material.material.o_r.is_some() || s.material.material.transmission.is_some()
+        });
+        if spawns {
+            let s = &problem.render;
+            row(
+                vec![t(pick(lang, "Render settings", "Parâmetros do traçado"))],
+                vec![t(pick(
+                    lang,
+                    format!(
+                        "maximum level {}, minimum weight {}",
+                        s.max_level,
+                        super::number::num(s.min_weight.to_f64())
+                    ),
+                    format!(
+                        "nível máximo {}, peso mínimo {}",
+                        s.max_level,
+                        super::number::num(s.min_weight.to_f64())
+                    ),
+                ))],
+            );
+        }
     }
     rows
 }
@@ -590,6 +636,221 @@ fn intersection<R: Real>(x: &Intersection<R>, lang: Lang) -> Vec<Step> {
             None => out.push(0, vec![p(Phrase::LineMeetsNothing, lang)], None),
         },
     }
+    out.0
+}
+
+/// The secondary rays at a ray problem's hit, Section 4.4: the level and weight rules, V and N,
+/// the reflection ray R_V (Eq. 4.17) with its level, weight and whether it is traced, and the
+/// transmitted ray by Snell's law likewise (docs/conventions.md, "Recursion level", "Weight",
+/// "Transmission"); the last line says the solver does not trace them.
+fn secondary<R: Real>(x: &Secondary<R>, lang: Lang) -> Vec<Step> {
+    let mut out = Steps(Vec::new());
+    let (max, min) = (x.max_level, x.min_weight.to_f64());
+    out.push(
+        0,
+        vec![t(pick(
+            lang,
+            format!(
+                "The problem's ray is a primary ray: level {}, weight w_p = 1. A ray it spawns \
+                 has level {} and is traced only if its level ≤ the maximum level ({max}) and \
+                 its weight > the minimum weight ({}).",
+                x.level,
+                x.level + 1,
+                super::number::num(min)
+            ),
+            format!(
+                "O raio do problema é um raio primário: nível {}, peso w_p = 1. Um raio gerado \
+                 por ele tem nível {} e só é traçado se o seu nível for ≤ o nível máximo ({max}) \
+                 e o seu peso for > o peso mínimo ({}).",
+                x.level,
+                x.level + 1,
+                super::number::num(min)
+            ),
+        ))],
+        Some(Ref::Sec("4.4")),
+    );
+    out.push(
+        0,
+        vec![
+            Math(Formula::VIsD),
+            EQ,
+            Vector(v::<R>(x.v)),
+            t(", "),
+            Math(Formula::N),
+            EQ,
+            Vector(v::<R>(x.n)),
+            t(pick(
+                lang,
+                " (facing the ray), ",
+                " (voltada para o raio), ",
+            )),
+            Math(Formula::NDotV),
+            EQ,
+            Num(x.n_dot_v.to_f64()),
+        ],
+        None,
+    );
+    // Whether a child is traced, and the rule that says so.
+    let verdict = |level: u32, weight: R, stop: Option<Stop>, adds: &str| {
+        let (l, w) = (level, super::number::num(weight.to_f64()));
+        let m = super::number::num(min);
+        match stop {
+            None => t(pick(
+                lang,
+                format!("traced: level {l} ≤ {max} and weight {w} > {m}; it adds {adds}"),
+                format!("traçado: nível {l} ≤ {max} e peso {w} > {m}; ele soma {adds}"),
+            )),
+            Some(Stop::MaxLevel) => t(pick(
+                lang,
+                format!("not traced: level {l} > the maximum level {max}"),
+                format!("não é traçado: nível {l} > o nível máximo {max}"),
+            )),
+            Some(Stop::MinWeight) => t(pick(
+                lang,
+                format!("not traced: weight {w} ≤ the minimum weight {m}"),
+                format!("não é traçado: peso {w} ≤ o peso mínimo {m}"),
+            )),
+            Some(other) => t(pick(
+                lang,
+                format!("not traced: {}", transmission_stop_in(other, lang)),
+                format!("não é traçado: {}", transmission_stop_in(other, lang)),
+            )),
+        }
+    };
+    if let Some(r) = &x.reflection {
+        let mut line = vec![
+            t(pick(lang, "Reflection ray: ", "Raio de reflexão: ")),
+            Math(Formula::RV),
+            EQ,
+        ];
+        line.push(match r.direction {
+            Some(d) => Vector(v::<R>(d)),
+            None => t(pick(lang, "undefined", "indefinido")),
+        });
+        out.push(0, line, Some(Ref::Eq("4.17")));
+        out.push(
+            1,
+            vec![
+                Math(Formula::OR),
+                EQ,
+                Color(v::<R>(r.o_r)),
+                t(pick(lang, "; level ", "; nível ")),
+                Num(f64::from(r.level)),
+                t(", "),
+                Math(Formula::WS),
+                EQ,
+                Num(r.weight.to_f64()),
+            ],
+            None,
+        );
+        out.push(1, vec![verdict(r.level, r.weight, r.stop, "O_r·C_r")], None);
+    }
+    if let Some(tr) = &x.transmission {
+        let f = &tr.refraction;
+        let mut line = vec![t(pick(
+            lang,
+            "Transmitted ray (Snell's law): ",
+            "Raio de transmissão (lei de Snell): ",
+        ))];
+        match f.direction {
+            Some(d) => line.extend([Math(Formula::SnellT), EQ, Vector(v::<R>(d))]),
+            None => line.push(t(pick(
+                lang,
+                "none, total internal reflection",
+                "nenhum, reflexão interna total",
+            ))),
+        }
+        out.push(0, line, Some(Ref::Sec("4.4")));
+        let side = if f.entering {
+            pick(
+                lang,
+                "the ray enters the material (it meets the surface against its own normal): ",
+                "o raio entra no material (atinge a superfície contra a sua própria normal): ",
+            )
+        } else {
+            pick(
+                lang,
+                "the ray leaves the material (it meets the surface along its own normal): ",
+                "o raio sai do material (atinge a superfície no sentido da sua própria normal): ",
+            )
+        };
+        let eta_r = f.eta_i / f.eta_t;
+        out.push(
+            1,
+            vec![
+                t(side),
+                Math(Formula::EtaI),
+                EQ,
+                Num(f.eta_i.to_f64()),
+                t(", "),
+                Math(Formula::EtaT),
+                EQ,
+                Num(f.eta_t.to_f64()),
+                t(", "),
+                Math(Formula::EtaR),
+                EQ,
+                Num(eta_r.to_f64()),
+            ],
+            None,
+        );
+        out.push(
+            1,
+            vec![
+                Math(Formula::CosThetaI),
+                EQ,
+                Num(f.cos_i.to_f64()),
+                t(", "),
+                Math(Formula::SnellK),
+                EQ,
+                Num(f.k.to_f64()),
+            ],
+            None,
+        );
+        if f.direction.is_none() {
+            out.push(
+                2,
+                vec![t(pick(
+                    lang,
+                    "k < 0: the ray meets the surface beyond the critical angle from the denser \
+                     side; Snell's law has no transmitted direction, and no reflection ray \
+                     replaces it (the reflection ray comes from O_r alone)",
+                    "k < 0: o raio atinge a superfície além do ângulo crítico, vindo do meio \
+                     mais denso; a lei de Snell não tem direção transmitida, e nenhum raio de \
+                     reflexão a substitui (o raio de reflexão vem apenas de O_r)",
+                ))],
+                None,
+            );
+        }
+        out.push(
+            1,
+            vec![
+                Math(Formula::OT),
+                EQ,
+                Color(v::<R>(tr.o_t)),
+                t(pick(lang, "; level ", "; nível ")),
+                Num(f64::from(tr.level)),
+                t(", "),
+                Math(Formula::WT),
+                EQ,
+                Num(tr.weight.to_f64()),
+            ],
+            None,
+        );
+        out.push(
+            1,
+            vec![verdict(tr.level, tr.weight, tr.stop, "O_t·C_t")],
+            None,
+        );
+    }
+    out.push(
+        0,
+        vec![t(pick(
+            lang,
+            messages::SECONDARY_NOT_TRACED,
+            messages::SECONDARY_NOT_TRACED_PT,
+        ))],
+        None,
+    );
     out.0
 }
 
@@ -734,6 +995,21 @@ fn shading<R: Real>(
         }
         given.push(1, line, Some(Ref::Sec("4.4")));
     }
+    if let Some(tr) = m.material.transmission {
+        given.push(
+            1,
+            vec![
+                Math(Formula::OT),
+                EQ,
+                Color(v::<R>(tr.o_t)),
+                t(", "),
+                Math(Formula::Eta),
+                EQ,
+                Num(tr.eta.to_f64()),
+            ],
+            Some(Ref::Sec("4.4")),
+        );
+    }
 
     // The steps.
     let mut steps = Steps(Vec::new());
@@ -860,6 +1136,7 @@ fn shading<R: Real>(
         clamped: v::<R>(e.clamped),
         rgb8: e.rgb8,
         diagrams,
+        secondary: Vec::new(),
     }
 }
 

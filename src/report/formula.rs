@@ -104,6 +104,28 @@ pub enum Formula {
     Center,
     /// r, a sphere's radius.
     Radius,
+    /// R_V = V − 2(N·V)N, the reflection ray's direction (Eq. 4.17).
+    RV,
+    /// O_t, the transmissivity.
+    OT,
+    /// η, a material's index of refraction.
+    Eta,
+    /// η_i, the index of the medium the ray travels in.
+    EtaI,
+    /// η_t, the index of the medium beyond the surface.
+    EtaT,
+    /// η_r = η_i/η_t.
+    EtaR,
+    /// cos θ_i = −N·V.
+    CosThetaI,
+    /// k = 1 − η_r²(1 − cos²θ_i).
+    SnellK,
+    /// T = η_r V + (η_r cos θ_i − √k) N, the transmitted direction.
+    SnellT,
+    /// w_s = w_p·max(O_r), a reflection ray's weight.
+    WS,
+    /// w_t = w_p·max(O_t), a transmission ray's weight.
+    WT,
     /// N = (b₀N₀ + b₁N₁ + b₂N₂)/‖b₀N₀ + b₁N₁ + b₂N₂‖, a smooth triangle's shading normal.
     NSmooth,
     /// (b₀, b₁, b₂), the barycentric weights.
@@ -172,6 +194,17 @@ impl Formula {
             Q => "Q",
             Center => "C",
             Radius => "r",
+            RV => "R_V = V − 2(N·V)N",
+            OT => "O_t",
+            Eta => "η",
+            EtaI => "η_i",
+            EtaT => "η_t",
+            EtaR => "η_r = η_i/η_t",
+            CosThetaI => "cos θ_i = −N·V",
+            SnellK => "k = 1 − η_r²(1 − cos²θ_i)",
+            SnellT => "T = η_r V + (η_r cos θ_i − √k) N",
+            WS => "w_s = w_p·max(O_r)",
+            WT => "w_t = w_p·max(O_t)",
             NSmooth => "N = (b_0 N_0 + b_1 N_1 + b_2 N_2)/‖b_0 N_0 + b_1 N_1 + b_2 N_2‖",
             Barycentric => "(b_0, b_1, b_2)",
             N0 => "N_0",
@@ -234,6 +267,19 @@ impl Formula {
             Q => "Q",
             Center => "C",
             Radius => "r",
+            RV => "\\mathbf{R}_V = \\mathbf{V} - 2(\\mathbf{N}\\cdot\\mathbf{V})\\mathbf{N}",
+            OT => "O_t",
+            Eta => "\\eta",
+            EtaI => "\\eta_i",
+            EtaT => "\\eta_t",
+            EtaR => "\\eta_r = \\eta_i/\\eta_t",
+            CosThetaI => "\\cos\\theta_i = -\\mathbf{N}\\cdot\\mathbf{V}",
+            SnellK => "k = 1 - \\eta_r^2(1 - \\cos^2\\theta_i)",
+            SnellT => {
+                "\\mathbf{T} = \\eta_r\\mathbf{V} + (\\eta_r\\cos\\theta_i - \\sqrt{k})\\mathbf{N}"
+            }
+            WS => "w_s = w_p\\max(O_r)",
+            WT => "w_t = w_p\\max(O_t)",
             NSmooth => {
                 "\\mathbf{N} = \\frac{b_0\\mathbf{N}_0 + b_1\\mathbf{N}_1 + b_2\\mathbf{N}_2}\
                  {\\lVert b_0\\mathbf{N}_0 + b_1\\mathbf{N}_1 + b_2\\mathbf{N}_2\\rVert}"

@@ -151,6 +151,7 @@ fn shading(out: &mut String, sh: &Shading, lang: Lang, id: &str) {
         (Phrase::Given, &sh.given, false),
         (Phrase::Steps, &sh.steps, true),
         (Phrase::Total, &sh.total, false),
+        (Phrase::SecondaryRays, &sh.secondary, false),
     ] {
         if !steps.is_empty() {
             let _ = writeln!(out, "<h3>{}</h3>", heading.get(lang));

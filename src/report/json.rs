@@ -12,8 +12,10 @@ use crate::core::{Falloff, LightKind, LightStatus, LightTerm, Real, SpecularStat
 use crate::problem::model::ReflectivitySource;
 use crate::problem::Problem;
 use crate::solve::{
-    Evaluation, Intersection, OmissionReason, ReadingCode, Side, Solution, Term, ViewSource,
+    Evaluation, Intersection, OmissionReason, ReadingCode, Secondary, Side, Solution, Term,
+    ViewSource,
 };
+use crate::tracer::Stop;
 
 /// The version of this output format.
 pub const FORMAT_VERSION: u32 = 1;
@@ -43,6 +45,131 @@ pub struct Document<'a, R: Real> {
     /// Likely unit mistakes in the file (never errors); absent when there are none.
     #[serde(skip_serializing_if = "Vec::is_empty")]
     pub warnings: Vec<WarningOut>,
+    /// A ray problem's secondary rays at its hit (Section 4.4), shown and not traced; absent
+    /// for a point problem, a ray that hits nothing in front of its origin, and a material
+    /// with neither O_r nor O_t.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub secondary_rays: Option<SecondaryOut<R>>,
+}
+
+/// `secondary_rays`: the rays a ray problem's hit spawns (docs/conventions.md, "Recursion
+/// level", "Weight", "Transmission").
+#[derive(Serialize)]
+pub struct SecondaryOut<R: Real> {
+    /// The problem's ray's level: 1 (a primary ray).
+    pub level: u32,
+    /// The problem's ray's weight w_p: 1.
+    pub weight: R,
+    /// The problem's `render.max_level`: a ray is traced only if its level ≤ this.
+    pub max_level: u32,
+    /// The problem's `render.min_weight`: a ray is traced only if its weight > this.
+    pub min_weight: R,
+    /// V = D, the incoming ray's unit direction.
+    pub v: V3<R>,
+    /// N at the hit, turned to face the ray.
+    pub n: V3<R>,
+    /// N·V.
+    pub n_dot_v: R,
+    /// The reflection ray (Eq. 4.17); `null` when the material has no O_r.
+    pub reflection: Option<ReflectionOut<R>>,
+    /// The transmitted ray (Snell's law); `null` when the material has no O_t.
+    pub transmission: Option<TransmittedOut<R>>,
+    /// That the solver does not trace these rays, in English.
+    pub note: &'static str,
+}
+
+/// `secondary_rays.reflection`: R_V = V − 2(N·V)N, Eq. 4.17.
+#[derive(Serialize)]
+pub struct ReflectionOut<R: Real> {
+    /// O_r at the hit.
+    pub reflectivity: V3<R>,
+    /// R_V, unit; `null` only where it cannot be normalised.
+    pub direction: Option<V3<R>>,
+    /// Its level: 2.
+    pub level: u32,
+    /// w_s = w_p·max(O_r).
+    pub weight: R,
+    /// Whether the tracer traces it (level ≤ max_level, weight > min_weight, O_r ≠ 0).
+    pub traced: bool,
+    /// Why it is not traced ("not_reflective", "max_level", "min_weight"); `null` when it is.
+    pub stop: Option<Stop>,
+    /// The reason in `stop`, as an English sentence.
+    pub stop_message: Option<&'static str>,
+}
+
+/// `secondary_rays.transmission`: T by Snell's law.
+#[derive(Serialize)]
+pub struct TransmittedOut<R: Real> {
+    /// O_t at the hit.
+    pub transmissivity: V3<R>,
+    /// η, the material's index of refraction.
+    pub ior: R,
+    /// Whether the ray enters the material (it meets the surface against its own normal).
+    pub entering: bool,
+    /// η_i, the index of the medium the ray travels in.
+    pub eta_i: R,
+    /// η_t, the index beyond the surface.
+    pub eta_t: R,
+    /// cos θ_i = −N·V.
+    pub cos_i: R,
+    /// k = 1 − η_r²(1 − cos²θ_i), η_r = η_i/η_t; negative under total internal reflection.
+    pub k: R,
+    /// T = η_r V + (η_r cos θ_i − √k) N, unit; `null` under total internal reflection.
+    pub direction: Option<V3<R>>,
+    /// Whether k < 0: total internal reflection, no transmitted ray.
+    pub total_internal_reflection: bool,
+    /// Its level: 2.
+    pub level: u32,
+    /// w_t = w_p·max(O_t).
+    pub weight: R,
+    /// Whether the tracer traces it.
+    pub traced: bool,
+    /// Why it is not traced ("not_transmissive", "max_level", "min_weight",
+    /// "total_internal_reflection"); `null` when it is.
+    pub stop: Option<Stop>,
+    /// The reason in `stop`, as an English sentence.
+    pub stop_message: Option<&'static str>,
+}
+
+/// The JSON form of a hit's secondary rays.
+fn secondary<R: Real>(x: &Secondary<R>) -> SecondaryOut<R> {
+    use crate::report::lang::Lang;
+    use crate::report::pixel::{stop_reason_in, transmission_stop_in};
+    SecondaryOut {
+        level: x.level,
+        weight: x.weight,
+        max_level: x.max_level,
+        min_weight: x.min_weight,
+        v: x.v,
+        n: x.n,
+        n_dot_v: x.n_dot_v,
+        reflection: x.reflection.map(|r| ReflectionOut {
+            reflectivity: r.o_r,
+            direction: r.direction,
+            level: r.level,
+            weight: r.weight,
+            traced: r.traced(),
+            stop: r.stop,
+            stop_message: r.stop.map(|s| stop_reason_in(s, Lang::En)),
+        }),
+        transmission: x.transmission.map(|t| TransmittedOut {
+            transmissivity: t.o_t,
+            ior: t.eta,
+            entering: t.refraction.entering,
+            eta_i: t.refraction.eta_i,
+            eta_t: t.refraction.eta_t,
+            cos_i: t.refraction.cos_i,
+            k: t.refraction.k,
+            direction: t.refraction.direction,
+            total_internal_reflection: t.refraction.direction.is_none(),
+            level: t.level,
+            weight: t.weight,
+            traced: t.traced(),
+            stop: t.stop,
+            stop_message: t.stop.map(|s| transmission_stop_in(s, Lang::En)),
+        }),
+        note: messages::SECONDARY_NOT_TRACED,
+    }
 }
 
 /// A likely unit mistake: its code and the value given, the field, and the sentence (English).
@@ -209,6 +336,12 @@ pub struct MaterialOut<R: Real> {
     pub o_r: Option<V3<R>>,
     /// Where O_r came from: "explicit" or "specular" (O_r = O_s); `null` without O_r.
     pub o_r_source: Option<ReflectivitySource>,
+    /// O_t, the transmissivity (Section 4.4); absent for an opaque material.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub o_t: Option<V3<R>>,
+    /// η, the index of refraction of the material's inside; absent for an opaque material.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub ior: Option<R>,
 }
 
 /// `ambient`: the ambient term, Eq. 4.5–4.6.
@@ -386,6 +519,7 @@ pub fn document<'a, R: Real>(
             })
             .collect(),
         warnings: warnings_out(&problem.warnings),
+        secondary_rays: s.secondary.as_ref().map(secondary),
     }
 }
 
@@ -436,6 +570,8 @@ fn evaluation<R: Real>(problem: &Problem<R>, e: &Evaluation<R>) -> EvaluationOut
             n_s: e.material.spec.shininess.map(|_| m.n_s),
             o_r: m.o_r,
             o_r_source: e.material.reflectivity,
+            o_t: m.transmission.map(|t| t.o_t),
+            ior: m.transmission.map(|t| t.eta),
         },
         ambient: AmbientOut {
             lights: problem.ambient_info.iter().map(|a| a.color).collect(),

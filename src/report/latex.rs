@@ -23,12 +23,23 @@ fn subscripted(chars: &[char], i: usize) -> Option<usize> {
     if i > 0 && (word(&chars[i - 1]) || chars[i - 1] == '_') {
         return None;
     }
-    if !(chars.get(i)?.is_ascii_alphabetic() && *chars.get(i + 1)? == '_') {
+    if !((chars.get(i)?.is_ascii_alphabetic() || greek(*chars.get(i)?).is_some())
+        && *chars.get(i + 1)? == '_')
+    {
         return None;
     }
     let sub = chars[i + 2..].iter().take_while(|c| word(c)).count();
     let end = i + 2 + sub;
     (sub > 0 && chars.get(end).is_none_or(|c| !word(c) && *c != '_')).then_some(end - i)
+}
+
+/// The LaTeX of a Greek letter that may carry a subscript in prose (η_i, θ_i).
+fn greek(c: char) -> Option<&'static str> {
+    match c {
+        'η' => Some("\\eta"),
+        'θ' => Some("\\theta"),
+        _ => None,
+    }
 }
 
 /// Escapes text for LaTeX (outside math). Symbols with a subscript ("n_s") become math, and
@@ -41,7 +52,8 @@ pub(crate) fn escape(s: &str) -> String {
     while i < chars.len() {
         if let Some(n) = subscripted(&chars, i) {
             let sub: String = chars[i + 2..i + n].iter().collect();
-            out.push_str(&format!("\\ensuremath{{{}_{{{sub}}}}}", chars[i]));
+            let base = greek(chars[i]).map_or_else(|| chars[i].to_string(), str::to_owned);
+            out.push_str(&format!("\\ensuremath{{{base}_{{{sub}}}}}"));
             i += n;
             continue;
         }
@@ -69,6 +81,8 @@ pub(crate) fn escape(s: &str) -> String {
             '>' => math(">"),
             '|' => math("|"),
             'θ' => math("\\theta"),
+            'η' => math("\\eta"),
+            '√' => math("\\surd"),
             'φ' => math("\\phi"),
             'ψ' => math("\\psi"),
             'γ' => math("\\gamma"),
@@ -162,6 +176,7 @@ fn shading(out: &mut String, sh: &Shading, lang: Lang) {
     block(out, Phrase::Given, &sh.given, false, lang);
     block(out, Phrase::Steps, &sh.steps, true, lang);
     block(out, Phrase::Total, &sh.total, false, lang);
+    block(out, Phrase::SecondaryRays, &sh.secondary, false, lang);
     for d in &sh.diagrams {
         out.push_str(&super::diagram::tikz(d, lang));
     }

@@ -80,6 +80,7 @@ fn shading(out: &mut String, sh: &Shading, lang: Lang, id: &str) {
     block(out, Phrase::Given, &sh.given, false, lang);
     block(out, Phrase::Steps, &sh.steps, true, lang);
     block(out, Phrase::Total, &sh.total, false, lang);
+    block(out, Phrase::SecondaryRays, &sh.secondary, false, lang);
     // The diagrams inline, as the same SVG as the HTML's (Markdown passes HTML through).
     for d in &sh.diagrams {
         out.push_str(&super::diagram::svg(

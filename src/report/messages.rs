@@ -32,6 +32,15 @@ pub fn pick<T>(lang: Lang, en: T, pt: T) -> T {
     }
 }
 
+/// That a ray problem's solution shows its secondary rays without tracing them (the JSON's
+/// `secondary_rays.note`, and the explanation's last line on them).
+pub(crate) const SECONDARY_NOT_TRACED: &str = "The solver shows these rays but does not trace \
+     them (their colours C_r and C_t are not computed here): phong render traces them.";
+
+/// [`SECONDARY_NOT_TRACED`] in Portuguese.
+pub(crate) const SECONDARY_NOT_TRACED_PT: &str = "O solucionador mostra estes raios mas não os \
+     traça (as suas cores C_r e C_t não são calculadas aqui): quem os traça é o phong render.";
+
 /// Every fixed phrase of the explanations in `lang`, in the order declared: the catalogue a
 /// translator reads, and the one `tests/portuguese.rs` checks outputs against.
 pub fn catalogue(lang: Lang) -> Vec<&'static str> {
@@ -73,6 +82,7 @@ phrases! {
     Given => "Given", "Dados";
     Steps => "Steps", "Passos";
     Total => "Total", "Total";
+    SecondaryRays => "Secondary rays (Section 4.4)", "Raios secundários (Seção 4.4)";
     // The ray.
     Origin => "origin ", "origem ";
     Direction => "direction ", "direção ";
@@ -1708,7 +1718,36 @@ pub fn step_formula(formula: &'static str, lang: Lang) -> &'static str {
         ("O + tD on the surface", Lang::Pt) => "O + tD sobre a superfície",
         ("N, of unit length", Lang::Pt) => "N, de comprimento 1",
         ("I_a = Σ ambient lights", Lang::Pt) => "I_a = Σ das luzes ambientes",
+        (
+            "the reflection ray is traced: level ≤ maximum level and w_s > minimum weight",
+            Lang::Pt,
+        ) => "o raio de reflexão é traçado: nível ≤ nível máximo e w_s > peso mínimo",
+        (
+            "the transmission ray is traced: k ≥ 0, level ≤ maximum level and w_t > minimum \
+             weight",
+            Lang::Pt,
+        ) => "o raio de transmissão é traçado: k ≥ 0, nível ≤ nível máximo e w_t > peso mínimo",
         (other, Lang::Pt) => other,
+    }
+}
+
+/// "yes"/"no" or "sim"/"não": a yes-or-no step's value (whether a secondary ray is traced).
+pub fn yes_no(b: bool, lang: Lang) -> &'static str {
+    match (b, lang) {
+        (true, Lang::En) => "yes",
+        (false, Lang::En) => "no",
+        (true, Lang::Pt) => "sim",
+        (false, Lang::Pt) => "não",
+    }
+}
+
+/// Whether a secondary ray is traced, as a clause: "the ray is traced", "o raio não é traçado".
+pub fn ray_traced(b: bool, lang: Lang) -> &'static str {
+    match (b, lang) {
+        (true, Lang::En) => "the ray is traced",
+        (false, Lang::En) => "the ray is not traced",
+        (true, Lang::Pt) => "o raio é traçado",
+        (false, Lang::Pt) => "o raio não é traçado",
     }
 }
 

@@ -116,7 +116,11 @@ fn shading(out: &mut String, style: &Style, sh: &Shading, lang: Lang) {
         (Phrase::Given, &sh.given),
         (Phrase::Steps, &sh.steps),
         (Phrase::Total, &sh.total),
+        (Phrase::SecondaryRays, &sh.secondary),
     ] {
+        if list.is_empty() && heading == Phrase::SecondaryRays {
+            continue;
+        }
         let _ = writeln!(out, "  {}", style.bold(heading.get(lang)));
         steps(out, style, 4, list, lang);
     }

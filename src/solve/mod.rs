@@ -7,6 +7,7 @@ mod conditioning;
 mod file;
 mod findings;
 mod rounding;
+mod secondary;
 
 use crate::core::color::{self, clamp01};
 use crate::core::real::to_f64_array;
@@ -22,6 +23,7 @@ use crate::report::messages::both;
 
 pub use file::{solve_file, solve_source};
 pub use findings::{ConeEdge, Finding, FindingData, GateDecision};
+pub use secondary::{ReflectionRay, Secondary, TransmittedRay, PROBLEM_RAY_LEVEL};
 
 /// Everything the solver found out about one problem.
 #[derive(Clone, Debug)]
@@ -38,6 +40,9 @@ pub struct Solution<R: Real> {
     pub evaluation: Option<Evaluation<R>>,
     /// Likely intended readings of a problem whose literal reading is surprising.
     pub readings: Vec<Reading<R>>,
+    /// For a ray problem whose ray hits a surface that reflects or transmits: the secondary
+    /// rays of Section 4.4 at the hit (shown, not traced).
+    pub secondary: Option<Secondary<R>>,
 }
 
 /// Where a ray problem's ray meets its surfaces.
@@ -253,6 +258,7 @@ impl<R: Real> Solution<R> {
             intersection: None,
             evaluation: None,
             readings: Vec::new(),
+            secondary: None,
         }
     }
 }
@@ -337,6 +343,7 @@ pub(crate) fn solve_with<R: Real, F: Formulas>(
                 direction,
                 &aggregate,
                 Frame::RayOrigin,
+                true,
             );
         }
         Target::Scene { .. } => {
@@ -381,6 +388,7 @@ pub(crate) fn solve_ray<R: Real>(
         direction,
         aggregate,
         Frame::Absolute,
+        false,
     )
 }
 
@@ -514,6 +522,9 @@ impl<R: Real, V: Visibility<R>> Visibility<R> for MovedVisibility<'_, R, V> {
 }
 
 /// [`solve_ray`] with the core's formulas switched as `formulas` says (mistake diagnosis).
+/// `secondaries` asks for the hit's secondary rays ([`Solution::secondary`]): a ray problem
+/// shows them; a pixel's explanation does not, since its tree shows the rays traced.
+#[allow(clippy::too_many_arguments)]
 pub(crate) fn solve_ray_with<R: Real, F: Formulas>(
     problem: &Problem<R>,
     formulas: F,
@@ -522,6 +533,7 @@ pub(crate) fn solve_ray_with<R: Real, F: Formulas>(
     direction: &GivenVector<R>,
     aggregate: &Aggregate<R>,
     frame: Frame,
+    secondaries: bool,
 ) -> Result<Solution<R>, Invalid> {
     let mut solution = Solution::empty(problem);
     let surfaces = problem.surfaces();
@@ -642,6 +654,10 @@ pub(crate) fn solve_ray_with<R: Real, F: Formulas>(
     if let Some(h) = aggregate.nearest(ray, R::from_f64(f64::INFINITY)) {
         solution.intersection = Some(record(Some((h.index, h.hit.t, h.hit.p))));
         solution.evaluation = Some(at_hit(h.index, &h.hit, ViewSource::Ray)?);
+        if secondaries {
+            let m = &surfaces[h.index].material.material;
+            solution.secondary = secondary::at_hit(&h.hit, ray.direction, m, &problem.render);
+        }
     } else {
         // No hit in front: where does the line meet a surface behind the origin?
         let mut behind: Option<(usize, R)> = None;

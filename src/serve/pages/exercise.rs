@@ -213,8 +213,9 @@ pub(crate) fn not_found(lang: Lang) -> Response {
 type SortKey = (usize, usize, usize);
 
 /// The step boxes of an exercise: every quantity of its solution as written and of its
-/// readings (a ray that misses as written still has the intended reading's steps), in the
-/// order of the solution. A per-light name takes `[i]` when there is more than one light
+/// readings (a ray that misses as written still has the intended reading's steps), then its
+/// secondary rays' (a ray problem whose hit reflects or transmits), in the order of the
+/// solution. A per-light name takes `[i]` when there is more than one light
 /// other than ambient.
 fn step_boxes(ex: &Exercise) -> Vec<StepBox> {
     let Ok((_, problem)) = ex.source().load::<f64>() else {
@@ -234,6 +235,11 @@ fn step_boxes(ex: &Exercise) -> Vec<StepBox> {
             r.intersection.as_ref(),
             Some(&r.evaluation),
         ));
+    }
+    // A ray problem's secondary rays (R_V, T, their weights and whether they are traced),
+    // after the totals.
+    if let Some(x) = &solution.secondary {
+        all.extend(steps::secondary_quantities(x));
     }
     let indexed = problem.light_info.len() > 1;
     let position = |n: &Name| NAMES.iter().position(|x| x == n).unwrap_or(usize::MAX);
