@@ -131,10 +131,39 @@ pub struct TransmittedOut<R: Real> {
     pub stop_message: Option<&'static str>,
 }
 
+/// The JSON form of a transmitted ray: a ray problem's (`secondary_rays.transmission`) and an
+/// explained pixel's (`rays[i].transmission`) are the same object. η is the material's: η_t
+/// for a ray entering it, η_i for one leaving it.
+pub(crate) fn transmitted<R: Real>(
+    o_t: V3<R>,
+    f: crate::tracer::Refraction<R>,
+    level: u32,
+    weight: R,
+    stop: Option<Stop>,
+) -> TransmittedOut<R> {
+    TransmittedOut {
+        transmissivity: o_t,
+        ior: if f.entering { f.eta_t } else { f.eta_i },
+        entering: f.entering,
+        eta_i: f.eta_i,
+        eta_t: f.eta_t,
+        cos_i: f.cos_i,
+        k: f.k,
+        direction: f.direction,
+        total_internal_reflection: f.direction.is_none(),
+        level,
+        weight,
+        traced: stop.is_none(),
+        stop,
+        stop_message: stop
+            .map(|s| crate::report::pixel::transmission_stop_in(s, crate::report::lang::Lang::En)),
+    }
+}
+
 /// The JSON form of a hit's secondary rays.
 fn secondary<R: Real>(x: &Secondary<R>) -> SecondaryOut<R> {
     use crate::report::lang::Lang;
-    use crate::report::pixel::{stop_reason_in, transmission_stop_in};
+    use crate::report::pixel::stop_reason_in;
     SecondaryOut {
         level: x.level,
         weight: x.weight,
@@ -152,22 +181,9 @@ fn secondary<R: Real>(x: &Secondary<R>) -> SecondaryOut<R> {
             stop: r.stop,
             stop_message: r.stop.map(|s| stop_reason_in(s, Lang::En)),
         }),
-        transmission: x.transmission.map(|t| TransmittedOut {
-            transmissivity: t.o_t,
-            ior: t.eta,
-            entering: t.refraction.entering,
-            eta_i: t.refraction.eta_i,
-            eta_t: t.refraction.eta_t,
-            cos_i: t.refraction.cos_i,
-            k: t.refraction.k,
-            direction: t.refraction.direction,
-            total_internal_reflection: t.refraction.direction.is_none(),
-            level: t.level,
-            weight: t.weight,
-            traced: t.traced(),
-            stop: t.stop,
-            stop_message: t.stop.map(|s| transmission_stop_in(s, Lang::En)),
-        }),
+        transmission: x
+            .transmission
+            .map(|t| transmitted(t.o_t, t.refraction, t.level, t.weight, t.stop)),
         note: messages::SECONDARY_NOT_TRACED,
     }
 }

@@ -884,36 +884,11 @@ pub struct RayOut<'a, R: Real> {
     pub stop: Option<Stop>,
     /// The reason in `stop`, as an English sentence.
     pub stop_message: Option<&'static str>,
-    /// The transmission at the hit; `null` when the material has no transmissivity.
-    pub transmission: Option<TransmissionOut<R>>,
+    /// The transmission at the hit, as a ray problem's `secondary_rays.transmission`; `null`
+    /// when the material has no transmissivity.
+    pub transmission: Option<json::TransmittedOut<R>>,
     /// The solver's document for the equivalent ray problem (as `phong solve --format json`).
     pub solve: Option<json::Document<'a, R>>,
-}
-
-/// `transmission`: Snell's law at a hit and the transmission ray (docs/conventions.md,
-/// "Transmission").
-#[derive(Serialize)]
-pub struct TransmissionOut<R: Real> {
-    /// O_t at the hit.
-    pub transmissivity: V3<R>,
-    /// Whether the ray enters the material (it meets the surface against its own normal).
-    pub entering: bool,
-    /// η_i, the index of the medium the ray travels in.
-    pub eta_i: R,
-    /// η_t, the index beyond the surface.
-    pub eta_t: R,
-    /// cos θ_i = −N·V, N facing the ray.
-    pub cos_i: R,
-    /// k = 1 − η_r²(1 − cos²θ_i); negative under total internal reflection.
-    pub k: R,
-    /// T, the transmitted direction (unit); `null` under total internal reflection.
-    pub direction: Option<V3<R>>,
-    /// w_t = w_p·max(O_t).
-    pub weight: R,
-    /// Why no transmission ray follows; `null` when one does.
-    pub stop: Option<Stop>,
-    /// The reason in `stop`, as an English sentence.
-    pub stop_message: Option<&'static str>,
 }
 
 /// `spawned_from`: where a secondary ray left from.
@@ -978,17 +953,14 @@ pub fn document<'a, R: Real>(
                             next_weight: r.next_weight,
                             stop: r.stop,
                             stop_message: r.stop.map(stop_reason),
-                            transmission: r.transmission.map(|t| TransmissionOut {
-                                transmissivity: t.o_t,
-                                entering: t.refraction.entering,
-                                eta_i: t.refraction.eta_i,
-                                eta_t: t.refraction.eta_t,
-                                cos_i: t.refraction.cos_i,
-                                k: t.refraction.k,
-                                direction: t.refraction.direction,
-                                weight: t.weight,
-                                stop: t.stop,
-                                stop_message: t.stop.map(|s| transmission_stop_in(s, Lang::En)),
+                            transmission: r.transmission.map(|t| {
+                                json::transmitted(
+                                    t.o_t,
+                                    t.refraction,
+                                    r.level + 1,
+                                    t.weight,
+                                    t.stop,
+                                )
                             }),
                             solve: ray
                                 .solution
