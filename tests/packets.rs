@@ -86,12 +86,12 @@ fn scene<R: Real>(rng: &mut Rng) -> Vec<Shape<R>> {
                 let a = 0.3 * ((i + j + k) % 5) as f64 / 4.0;
                 v::<R>([a.sin(), a.cos(), 0.0])
             };
-            smooth.normals = Some([tilt(0), tilt(1), tilt(2)]);
+            smooth.normals = Some(std::sync::Arc::new([tilt(0), tilt(1), tilt(2)]));
             shapes.push(Shape::Triangle(smooth));
         }
     }
     for k in 0..40 {
-        shapes.push(shapes[1 + k * 37 % (shapes.len() - 1)]);
+        shapes.push(shapes[1 + k * 37 % (shapes.len() - 1)].clone());
     }
     shapes
 }
@@ -105,7 +105,7 @@ fn packet<R: Real>(rng: &mut Rng, shapes: &[Shape<R>], len: usize) -> Vec<Ray<R>
             rng.range(-42.0, 3.0),
         ]
     };
-    let inside = |rng: &mut Rng| match shapes[1 + rng.pick(shapes.len() - 1)] {
+    let inside = |rng: &mut Rng| match &shapes[1 + rng.pick(shapes.len() - 1)] {
         Shape::Sphere(s) => s.center.to_array().map(|x| x.to_f64()),
         Shape::Triangle(t) => t.p[rng.pick(3)].to_array().map(|x| x.to_f64()),
         Shape::Plane(p) => p.point.to_array().map(|x| x.to_f64()),

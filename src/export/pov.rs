@@ -280,7 +280,7 @@ pub fn export(problem: &Problem<f64>) -> Result<String, Unexpressible> {
     while i < surfaces.len() {
         let s = &surfaces[i];
         let t = surface_texture[i];
-        match s.shape {
+        match &s.shape {
             Shape::Plane(p) => {
                 let _ = writeln!(
                     out,
@@ -316,7 +316,7 @@ pub fn export(problem: &Problem<f64>) -> Result<String, Unexpressible> {
                     && surfaces[i].source.index == index
                     && surfaces[i].source.triangle.is_some()
                 {
-                    match surfaces[i].shape {
+                    match &surfaces[i].shape {
                         // A smooth face (vertex normals): POV-Ray's smooth_triangle
                         // interpolates them as phong does (docs/conventions.md, "Smooth
                         // meshes").
@@ -426,7 +426,7 @@ fn scene_extent(problem: &Problem<f64>) -> Extent {
         }
     }
     for s in problem.surfaces() {
-        match s.shape {
+        match &s.shape {
             Shape::Plane(p) => add(p.point, 0.0),
             Shape::Sphere(sp) => add(sp.center, sp.radius),
             Shape::Triangle(t) => t.p.iter().for_each(|&p| add(p, 0.0)),
@@ -447,7 +447,7 @@ fn scene_extent(problem: &Problem<f64>) -> Extent {
 fn nearest_surface(p: DVec3, surfaces: &[Surface<f64>]) -> f64 {
     surfaces
         .iter()
-        .map(|s| match s.shape {
+        .map(|s| match &s.shape {
             Shape::Plane(pl) => pl.normal.dot(p - pl.point).abs(),
             Shape::Sphere(sp) => ((p - sp.center).length() - sp.radius).abs(),
             Shape::Triangle(t) => {

@@ -31,7 +31,7 @@ pub use triangle::{SmoothNormal, Triangle};
 use crate::core::{Real, Vector, V3};
 
 /// A surface of a ray problem or scene.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq)]
 pub enum Shape<R: Real> {
     /// An infinite plane.
     Plane(Plane<R>),

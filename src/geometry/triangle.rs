@@ -17,14 +17,14 @@ use crate::core::vector::normalize;
 use crate::core::{Real, Vector, V3};
 
 /// The triangle with corners p₀, p₁, p₂.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq)]
 pub struct Triangle<R: Real> {
     /// The corners p₀, p₁, p₂; the normal is (p₁ − p₀) × (p₂ − p₀), normalised.
     pub p: [V3<R>; 3],
     /// The unit vertex normals N₀, N₁, N₂ at the corners (an OBJ file's `vn`) of a smooth
     /// triangle, shaded with their barycentric interpolation ([`Triangle::smooth`]); `None` for
     /// a flat triangle, shaded with its geometric normal.
-    pub normals: Option<[V3<R>; 3]>,
+    pub normals: Option<std::sync::Arc<[V3<R>; 3]>>,
 }
 
 /// How a smooth triangle's shading normal came about at a point: the interpolation of its
@@ -136,7 +136,7 @@ impl<R: Real> Triangle<R> {
     /// triangle.
     #[inline]
     pub fn smooth(&self, b: [R; 3], ng: V3<R>) -> Option<SmoothNormal<R>> {
-        let vertex = self.normals?;
+        let vertex = self.normals.as_deref()?;
         let sum = vertex[0] * b[0] + vertex[1] * b[1] + vertex[2] * b[2];
         let interpolated = normalize::<R>(sum).map(|n| n.unit);
         let (used, clamped) = match interpolated {
@@ -145,7 +145,7 @@ impl<R: Real> Triangle<R> {
         };
         Some(SmoothNormal {
             b,
-            vertex,
+            vertex: *vertex,
             interpolated,
             used,
             clamped,
@@ -365,7 +365,7 @@ impl<R: Real> Triangle<R> {
     /// same arithmetic, so `used` is the hit's shading normal to the bit); `None` for a flat
     /// triangle or no hit. The solver's explanation reads it.
     pub(crate) fn smooth_hit(&self, ray: &Ray<R>, t: R) -> Option<SmoothNormal<R>> {
-        self.normals?;
+        self.normals.as_ref()?;
         let h = self.intersect(ray, t.next_up())?;
         self.smooth(h.b, self.normal()?)
     }
@@ -580,11 +580,11 @@ mod tests {
         // N₀ = (0, 0, 1), N₁ = (0.6, 0, 0.8), N₂ = (0, 0.6, 0.8) and the hit at (0.25, 0.25, 0),
         // b = (0.5, 0.25, 0.25): ΣbN = (0.15, 0.15, 0.5 + 0.2 + 0.2) = (0.15, 0.15, 0.9), of
         // length √0.855 (by hand).
-        t.normals = Some([
+        t.normals = Some(std::sync::Arc::new([
             v3::<R>([0.0, 0.0, 1.0]),
             v3::<R>([0.6, 0.0, 0.8]),
             v3::<R>([0.0, 0.6, 0.8]),
-        ]);
+        ]));
         let h = t.hit(&down, inf::<R>()).unwrap();
         let len = 0.855f64.sqrt();
         let want = [0.15 / len, 0.15 / len, 0.9 / len];
@@ -612,20 +612,20 @@ mod tests {
         }
         // Vertex normals against the winding: the interpolation is on the other side of the
         // surface, so the geometric normal is used.
-        t.normals = Some([
+        t.normals = Some(std::sync::Arc::new([
             v3::<R>([0.0, 0.0, -1.0]),
             v3::<R>([0.6, 0.0, -0.8]),
             v3::<R>([0.0, 0.6, -0.8]),
-        ]);
+        ]));
         let h = t.hit(&down, inf::<R>()).unwrap();
         assert_eq!(h.shading, h.normal);
         assert!(t.smooth_hit(&down, h.t).unwrap().clamped);
         // Opposite normals cancelling at the hit: no interpolation, the geometric normal.
-        t.normals = Some([
+        t.normals = Some(std::sync::Arc::new([
             v3::<R>([0.0, 0.0, 1.0]),
             v3::<R>([0.0, 0.0, -1.0]),
             v3::<R>([0.0, 0.0, -1.0]),
-        ]);
+        ]));
         let h = t.hit(&down, inf::<R>()).unwrap();
         let s = t.smooth_hit(&down, h.t).unwrap();
         assert_eq!(

@@ -444,7 +444,7 @@ impl<R: Real> WideBvh<R> {
             let mut p = [[<W<R> as Wide>::Array::default(); 3]; 3];
             let mut used = 0;
             for (k, i) in ids.iter().enumerate() {
-                let Shape::Triangle(t) = shapes[i as usize] else {
+                let Shape::Triangle(t) = &shapes[i as usize] else {
                     unreachable!("all triangles")
                 };
                 for (corner, v) in t.p.iter().enumerate() {
@@ -1376,7 +1376,7 @@ mod tests {
         };
         // Exact duplicates, and a degenerate triangle: ties broken by the order of the visit.
         for k in 0..shapes.len() / 10 {
-            shapes.push(shapes[k * 7 % shapes.len()]);
+            shapes.push(shapes[k * 7 % shapes.len()].clone());
         }
         shapes.push(Shape::Triangle(Triangle::new(
             v3::<R>([0.0, 0.0, 0.0]),

@@ -407,7 +407,7 @@ pub fn load_obj<R: Real>(path: &Path) -> Result<Vec<Triangle<R>>, MeshError> {
                 .map(|k| k.map(|j| faces.normals[j as usize]));
             let t = Triangle {
                 p: [corner(face[0])?, corner(face[1])?, corner(face[2])?],
-                normals,
+                normals: normals.map(std::sync::Arc::new),
             };
             if t.normal().is_none() {
                 // The object's name when the file gives one (`o name`); tobj's placeholder for

@@ -365,7 +365,7 @@ pub(crate) fn solve_with<R: Real, F: Formulas>(
 
 /// The surfaces of a problem as one [`Aggregate`], to find hits and cast shadow rays.
 pub(crate) fn aggregate<R: Real>(problem: &Problem<R>) -> Aggregate<R> {
-    Aggregate::new(problem.surfaces().iter().map(|s| s.shape).collect())
+    Aggregate::new(problem.surfaces().iter().map(|s| s.shape.clone()).collect())
 }
 
 /// Solves one ray against the problem's surfaces and lights: the nearest hit in front of the
