@@ -49,7 +49,8 @@ pub(crate) enum Command {
     /// Print the JSON Schema of the problem format.
     Schema(SchemaArgs),
     /// Write a scene as POV-Ray 3.7 SDL that computes the same model (for cross-checking),
-    /// or say why POV-Ray cannot express it (exit 2).
+    /// or say why POV-Ray cannot express it (exit 2): e.g. a transmitting surface where total
+    /// internal reflection could occur (only spheres and planes seen from outside, ior ≥ 1).
     ExportPov(ExportPovArgs),
     /// Check an answer (or each file's answer key) and name the slips behind a wrong one.
     Check(CheckArgs),

@@ -51,14 +51,16 @@
 //!   ray that has been reflected (`NoSomethingFlagRayObjectCondition`, `Ray::IsImageRay`), so
 //!   the copy is seen by shadow rays only. What POV-Ray computes otherwise is refused:
 //!   total internal reflection (POV-Ray traces a reflection ray there, with the transmission's
-//!   weight, and drops the surface's own reflection), so only a sphere or a plane that no
-//!   other surface enters, seen from outside, with η ≥ 1, may transmit; and an O_t whose
-//!   greyscale POV-Ray's gate `trans > adc_bailout` would stop while phong traces the ray.
+//!   weight, and drops the surface's own reflection), so only a sphere or a plane with η ≥ 1,
+//!   seen from outside, that no reflecting or transmitting surface enters, may transmit; and
+//!   an O_t whose greyscale POV-Ray's gate `trans > adc_bailout` would stop while phong
+//!   traces the ray.
 //!
 //! What POV-Ray cannot express is refused with the reason, never approximated: more than one
-//! sample per pixel, a transmitting surface where total internal reflection could occur, a scene so large that POV-Ray's 1e7 limit on intersection distances
-//! would cut it, a light too bright to scale for the falloff emulation within f32, and
-//! recursion settings that POV-Ray's limits (256 levels, weight 1 for primary rays) change.
+//! sample per pixel, a transmitting surface where total internal reflection could occur, a
+//! scene so large that POV-Ray's 1e7 limit on intersection distances would cut it, a light
+//! too bright to scale for the falloff emulation within f32, and recursion settings that
+//! POV-Ray's limits (256 levels, weight 1 for primary rays) change.
 
 use std::collections::BTreeMap;
 use std::fmt::Write as _;
@@ -201,10 +203,13 @@ pub fn export(problem: &Problem<f64>) -> Result<String, Unexpressible> {
         (f64::from(f32_after(mw)), false)
     };
     let max_level = effective_max_level(settings.max_level, mw, reflective_max)?;
-    // Which surfaces transmit in the export: none when no child ray passes the weight rule.
+    // Which surfaces transmit in the export: none when no child ray passes the weight rule or
+    // the level rule (at level 1 POV-Ray's refracted colour is black, as phong traces none).
     let transmits: Vec<bool> = surfaces
         .iter()
-        .map(|s| !strip_reflection && transmission(&s.material.material).is_some())
+        .map(|s| {
+            !strip_reflection && max_level >= 2 && transmission(&s.material.material).is_some()
+        })
         .collect();
     for (s, _) in surfaces.iter().zip(&transmits).filter(|(_, &t)| t) {
         check_transmission(problem, s, adc, mw, max_level)?;
@@ -617,11 +622,12 @@ fn pov_greyscale(c: DVec3) -> f64 {
 /// (docs/conventions.md, "Transmission", "POV-Ray"). Total internal reflection is where the
 /// two differ (POV-Ray traces a reflection ray in place of the transmitted one and drops the
 /// surface's own reflection; phong adds nothing), so a transmitting surface must be one where
-/// it cannot occur: a sphere or a plane, η ≥ 1, seen from outside, that no other surface
-/// enters. A ray then meets its inside only by refraction from the outside, at an angle below
-/// the critical one, and (inside a sphere, where every chord meets the surface at equal
-/// angles at its two ends) leaves it at that same angle. POV-Ray's stack of media then agrees
-/// with phong's sides too: every ray inside the object entered it from the outside.
+/// it cannot occur: a sphere or a plane, η ≥ 1, seen from outside, that no reflecting or
+/// transmitting surface enters (a matte opaque one inside ends every ray that meets it). A
+/// ray then meets its inside only by refraction from the outside, at an angle below the
+/// critical one, and (inside a sphere, where every chord meets the surface at equal angles at
+/// its two ends) leaves it at that same angle. POV-Ray's stack of media then agrees with
+/// phong's sides too: every ray inside the object entered it from the outside.
 fn check_transmission(
     problem: &Problem<f64>,
     s: &Surface<f64>,
@@ -920,7 +926,7 @@ fn texture(
             if o[i] == 0.0 {
                 continue;
             }
-            if !(passed[i] > 0.0) || o[i] / passed[i] > limit {
+            if passed[i] <= 0.0 || o[i] / passed[i] > limit {
                 return Err(refuse(
                     what,
                     format!(
@@ -1001,6 +1007,62 @@ mod tests {
         assert_eq!(effective_max_level(1000, 0.01, 0.5).unwrap(), 7);
         assert_eq!(effective_max_level(5, 0.01, 0.5).unwrap(), 5);
         assert!(effective_max_level(1000, 0.0, 0.5).is_err());
+    }
+
+    #[test]
+    fn an_index_within_povrays_epsilon_of_one_is_moved_just_beyond_it() {
+        assert_eq!(pov_ior(1.5), 1.5);
+        assert_eq!(pov_ior(1.0), 1.0 + 2e-10);
+        assert_eq!(pov_ior(1.0 + 1e-10), 1.0 + 2e-10);
+        assert_eq!(pov_ior(1.0 + 1e-9), 1.0 + 1e-9);
+    }
+
+    #[test]
+    fn the_greyscale_is_povrays_weighted_sum() {
+        // By hand: 0.297·0.5 + 0.589·0.25 + 0.114·1 = 0.1485 + 0.14725 + 0.114 = 0.40975.
+        let g = pov_greyscale(DVec3::new(0.5, 0.25, 1.0));
+        assert!((g - 0.40975).abs() < 1e-7, "{g}");
+        // The weights sum to 1: a grey colour is its own greyscale (within f32 rounding).
+        assert!((pov_greyscale(DVec3::splat(0.85)) - 0.85).abs() < 1e-7);
+    }
+
+    #[test]
+    fn a_surface_touching_a_glass_ball_does_not_enter_it() {
+        use crate::geometry::{Plane, Sphere, Triangle};
+        let c = DVec3::new(0.0, 1.0, 0.0);
+        let floor = |y: f64| {
+            Shape::Plane(Plane {
+                point: DVec3::new(0.0, y, 0.0),
+                normal: DVec3::Y,
+            })
+        };
+        // Tangent.
+        assert!(!enters_ball(floor(0.0), c, 1.0));
+        assert!(enters_ball(floor(0.1), c, 1.0));
+        let ball = |x: f64| {
+            Shape::Sphere(Sphere {
+                center: DVec3::new(x, 1.0, 0.0),
+                radius: 0.5,
+            })
+        };
+        // Touching from outside.
+        assert!(!enters_ball(ball(1.5), c, 1.0));
+        assert!(enters_ball(ball(1.4), c, 1.0));
+        // Inside.
+        assert!(enters_ball(ball(0.0), c, 1.0));
+        // A triangle in the plane x = 2, and one through the ball's centre.
+        let tri = |x: f64| {
+            Shape::Triangle(Triangle {
+                p: [
+                    DVec3::new(x, 0.0, 0.0),
+                    DVec3::new(x, 2.0, 0.0),
+                    DVec3::new(x, 0.0, 2.0),
+                ],
+                normals: None,
+            })
+        };
+        assert!(!enters_ball(tri(2.0), c, 1.0));
+        assert!(enters_ball(tri(0.0), c, 1.0));
     }
 
     #[test]
