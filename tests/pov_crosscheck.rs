@@ -399,6 +399,9 @@ fn the_glass_scene_matches_povray_with_and_without_shadows() {
         200,
         &["--max-level", "3", "--min-weight", "0.5"],
     );
+    // The same glass with its own ambient and diffuse colour: one layer still, the emission
+    // and the diffuse light divided by the opacity 1 − T = 0.15 through the pigment.
+    same("data/pov-glass-ambient.json", 240, &[]);
 }
 
 #[test]
