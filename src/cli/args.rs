@@ -50,6 +50,11 @@ pub(crate) enum Command {
     Schema(SchemaArgs),
     /// Write a scene as POV-Ray 3.7 SDL that computes the same model (for cross-checking),
     /// or say why POV-Ray cannot express it (exit 2).
+    ///
+    /// A transmitting material is exported only where total internal reflection cannot occur
+    /// (POV-Ray traces a reflection ray there, phong nothing): on a sphere or a plane with
+    /// "ior" ≥ 1, seen from outside, that no reflecting or transmitting surface enters; with
+    /// shadows on, it casts phong's full shadow through a copy only POV-Ray's shadow rays see.
     ExportPov(ExportPovArgs),
     /// Check an answer (or each file's answer key) and name the slips behind a wrong one.
     Check(CheckArgs),

@@ -36,11 +36,31 @@
 //!   next f32 above the minimum weight.
 //! - **Shadows off**: `no_shadow` on every object (a `shadowless` light would also lose its
 //!   highlights in POV-Ray).
+//! - **Transmission** (docs/conventions.md, "Transmission", "POV-Ray"): `interior { ior η }`
+//!   and a pigment that lets O_t through. POV-Ray (`ComputeLightedTexture` in
+//!   `source/backend/render/trace.cpp`) multiplies a layer's emission and diffuse light by the
+//!   layer's opacity 1 − filter − transmit (not its `phong` highlight, not its reflection),
+//!   adds the refracted colour times the product of the layers' `rgb·filter + transmit`
+//!   (`filCol`) and traces the refracted ray with weight w·max(filCol). A grey O_t = T < 1 is
+//!   one layer `rgbt <O_d/(1 − T), T>`: the opacity undoes the division, the transmitted
+//!   colour is T·C_t, the weight w·T. Any other O_t is layers: the local ones each passing t,
+//!   then a last `rgbf <O_t/above, 1>` layer, so that filCol = O_t. With shadows on, the
+//!   transmitting object has `no_shadow` (POV-Ray would let coloured light through it) and an
+//!   identical black copy with `no_image no_reflection` blocks the shadow rays: POV-Ray hides
+//!   a `no_image` object from primary and refracted rays and a `no_reflection` one from every
+//!   ray that has been reflected (`NoSomethingFlagRayObjectCondition`, `Ray::IsImageRay`), so
+//!   the copy is seen by shadow rays only. What POV-Ray computes otherwise is refused:
+//!   total internal reflection (POV-Ray traces a reflection ray there, with the transmission's
+//!   weight, and drops the surface's own reflection), so only a sphere or a plane with η ≥ 1,
+//!   seen from outside, that no reflecting or transmitting surface enters, may transmit; and
+//!   an O_t whose greyscale POV-Ray's gate `trans > adc_bailout` would stop while phong
+//!   traces the ray.
 //!
 //! What POV-Ray cannot express is refused with the reason, never approximated: more than one
-//! sample per pixel, a scene so large that POV-Ray's 1e7 limit on intersection distances
-//! would cut it, a light too bright to scale for the falloff emulation within f32, and
-//! recursion settings that POV-Ray's limits (256 levels, weight 1 for primary rays) change.
+//! sample per pixel, a transmitting surface where total internal reflection could occur, a
+//! scene so large that POV-Ray's 1e7 limit on intersection distances would cut it, a light
+//! too bright to scale for the falloff emulation within f32, and recursion settings that
+//! POV-Ray's limits (256 levels, weight 1 for primary rays) change.
 
 use std::collections::BTreeMap;
 use std::fmt::Write as _;
@@ -48,6 +68,7 @@ use std::fmt::Write as _;
 use glam::DVec3;
 
 use crate::core::light::{Falloff, LightKind};
+use crate::core::material::Transmission;
 use crate::core::Material;
 use crate::geometry::{Shape, Triangle};
 use crate::problem::{Problem, Surface};
@@ -83,6 +104,17 @@ const POV_MAX_DISTANCE: f64 = 1.0e7;
 const POV_MAX_TRACE_LEVEL: u32 = 256;
 /// The relative error allowed in the falloff emulation at the nearest surface point.
 const FALLOFF_RELATIVE_ERROR: f64 = 1e-9;
+/// The copy of a transmitting surface that blocks shadow rays and nothing else: POV-Ray's
+/// `no_image` hides it from primary and refracted rays, `no_reflection` from every ray that
+/// has been reflected (`NoSomethingFlagRayObjectCondition`), so only shadow rays meet it.
+const SHADOW_COPY: &str =
+    "texture { pigment { rgb 0 } finish { ambient 0 emission 0 diffuse 0 } } no_image no_reflection";
+/// POV-Ray's `EPSILON`: an index ratio within it of 1 is not refracted but continued, at the
+/// same trace level (`Trace::ComputeRefraction`).
+const POV_EPSILON: f64 = 1.0e-10;
+/// POV-Ray's greyscale weights (`RED_INTENSITY`, … in `source/base/types.h`), by which it
+/// decides whether a surface passes enough light to trace its refracted ray.
+const POV_GREY: [f64; 3] = [0.297, 0.589, 0.114];
 
 /// The POV-Ray command line that renders an exported scene as phong renders it: no
 /// anti-aliasing, highest quality, linear output, no display, quiet.
@@ -139,10 +171,15 @@ pub fn export(problem: &Problem<f64>) -> Result<String, Unexpressible> {
         ));
     }
 
-    // Recursion: level and weight rule.
+    // Recursion: level and weight rule. A child ray's weight is its parent's times max(O_r)
+    // or max(O_t), so the largest of these bounds every ray's weight by level.
     let reflective_max = surfaces
         .iter()
-        .filter_map(|s| s.material.material.o_r)
+        .flat_map(|s| {
+            let m = &s.material.material;
+            [m.o_r, m.transmission.map(|t| t.o_t)]
+        })
+        .flatten()
         .map(|o| o.max_element())
         .fold(0.0f64, f64::max);
     let mw = settings.min_weight;
@@ -166,6 +203,17 @@ pub fn export(problem: &Problem<f64>) -> Result<String, Unexpressible> {
         (f64::from(f32_after(mw)), false)
     };
     let max_level = effective_max_level(settings.max_level, mw, reflective_max)?;
+    // Which surfaces transmit in the export: none when no child ray passes the weight rule or
+    // the level rule (at level 1 POV-Ray's refracted colour is black, as phong traces none).
+    let transmits: Vec<bool> = surfaces
+        .iter()
+        .map(|s| {
+            !strip_reflection && max_level >= 2 && transmission(&s.material.material).is_some()
+        })
+        .collect();
+    for (s, _) in surfaces.iter().zip(&transmits).filter(|(_, &t)| t) {
+        check_transmission(problem, s, adc, mw, max_level)?;
+    }
 
     let mut out = String::new();
     let title = problem.title.as_deref().unwrap_or("a phong scene");
@@ -255,15 +303,21 @@ pub fn export(problem: &Problem<f64>) -> Result<String, Unexpressible> {
     // Materials, each declared once.
     let ambient = problem.lights.ambient;
     let mut textures: Vec<String> = Vec::new();
-    let mut by_key: BTreeMap<[u64; 17], usize> = BTreeMap::new();
+    let mut by_key: BTreeMap<[u64; 21], usize> = BTreeMap::new();
     let mut surface_texture = Vec::with_capacity(surfaces.len());
-    for s in surfaces {
-        let key = material_key(&s.material.material);
+    for (s, &transmit) in surfaces.iter().zip(&transmits) {
+        let m = &s.material.material;
+        let o_t = if transmit {
+            transmission(m).map(|t| t.o_t)
+        } else {
+            None
+        };
+        let key = material_key(m, o_t.is_some());
         let index = match by_key.get(&key) {
             Some(&k) => k,
             None => {
                 let what = material_name(s);
-                let body = texture(&what, &s.material.material, ambient, adc, strip_reflection)?;
+                let body = texture(&what, m, ambient, adc, strip_reflection, o_t)?;
                 let k = textures.len();
                 let _ = writeln!(out, "// {what}\n#declare T{k} = {body}");
                 textures.push(body);
@@ -274,29 +328,44 @@ pub fn export(problem: &Problem<f64>) -> Result<String, Unexpressible> {
         surface_texture.push(index);
     }
 
-    // Surfaces; a mesh's triangles (consecutive, from one file entry) become one `mesh`.
+    // Surfaces; a mesh's triangles (consecutive, from one file entry) become one `mesh`. A
+    // transmitting surface has its `interior`, and with shadows on, `no_shadow` and a black
+    // copy that only shadow rays see (see the module doc).
     let shadow = if settings.shadows { "" } else { " no_shadow" };
     let mut i = 0;
     while i < surfaces.len() {
         let s = &surfaces[i];
         let t = surface_texture[i];
+        let glass = transmission(&s.material.material).filter(|_| transmits[i]);
+        let (inside, own_shadow) = match glass {
+            Some(g) => (
+                format!(" interior {{ ior {} }}", num(pov_ior(g.eta))),
+                " no_shadow",
+            ),
+            None => (String::new(), shadow),
+        };
+        let blocker = glass.is_some() && settings.shadows;
         match &s.shape {
             Shape::Plane(p) => {
+                let geometry = format!("{}, {}", vec3(p.normal), num(p.normal.dot(p.point)));
                 let _ = writeln!(
                     out,
-                    "plane {{ {}, {} texture {{ T{t} }}{shadow} }}",
-                    vec3(p.normal),
-                    num(p.normal.dot(p.point))
+                    "plane {{ {geometry} texture {{ T{t} }}{inside}{own_shadow} }}"
                 );
+                if blocker {
+                    let _ = writeln!(out, "plane {{ {geometry} {SHADOW_COPY} }}");
+                }
                 i += 1;
             }
             Shape::Sphere(sp) => {
+                let geometry = format!("{}, {}", vec3(sp.center), num(sp.radius));
                 let _ = writeln!(
                     out,
-                    "sphere {{ {}, {} texture {{ T{t} }}{shadow} }}",
-                    vec3(sp.center),
-                    num(sp.radius)
+                    "sphere {{ {geometry} texture {{ T{t} }}{inside}{own_shadow} }}"
                 );
+                if blocker {
+                    let _ = writeln!(out, "sphere {{ {geometry} {SHADOW_COPY} }}");
+                }
                 i += 1;
             }
             Shape::Triangle(tri) if s.source.triangle.is_none() => {
@@ -503,9 +572,10 @@ fn material_name(s: &Surface<f64>) -> String {
     }
 }
 
-/// A key that identifies a material exactly (bit patterns of all its numbers).
-fn material_key(m: &Material<f64>) -> [u64; 17] {
-    let mut k = [0u64; 17];
+/// A key that identifies a material exactly as exported (bit patterns of all its numbers; O_t
+/// only where the material transmits in the export, η apart, as it belongs to the object).
+fn material_key(m: &Material<f64>, transmits: bool) -> [u64; 21] {
+    let mut k = [0u64; 21];
     let mut put = |at: usize, v: Option<DVec3>| {
         if let Some(v) = v {
             k[at] = 1;
@@ -518,8 +588,188 @@ fn material_key(m: &Material<f64>) -> [u64; 17] {
     put(4, m.o_d);
     put(8, m.o_s);
     put(12, m.o_r);
-    k[16] = m.n_s.to_bits();
+    put(16, m.transmission.filter(|_| transmits).map(|t| t.o_t));
+    k[20] = m.n_s.to_bits();
     k
+}
+
+/// The material's transmission where it has one with O_t ≠ 0 (a zero O_t traces no ray).
+fn transmission(m: &Material<f64>) -> Option<Transmission<f64>> {
+    m.transmission.filter(|t| t.o_t != DVec3::ZERO)
+}
+
+/// The index written for η: η itself, except within POV-Ray's `EPSILON` of 1, where POV-Ray
+/// would continue the ray at its parent's trace level instead of refracting it; there η is
+/// moved just beyond that band (2e-10 above 1), which bends a ray by at most about 2e-5 rad
+/// at grazing incidence and keeps POV-Ray's level count phong's.
+fn pov_ior(eta: f64) -> f64 {
+    if (eta - 1.0).abs() < 2.0 * POV_EPSILON {
+        1.0 + 2.0 * POV_EPSILON
+    } else {
+        eta
+    }
+}
+
+/// POV-Ray's greyscale of a colour, in its f32 colour arithmetic.
+fn pov_greyscale(c: DVec3) -> f64 {
+    let g = (0..3)
+        .map(|i| (POV_GREY[i] as f32) * (c[i] as f32))
+        .fold(0.0f32, |a, b| a + b);
+    f64::from(g)
+}
+
+/// Refuses a transmitting surface whose image POV-Ray would compute otherwise than phong
+/// (docs/conventions.md, "Transmission", "POV-Ray"). Total internal reflection is where the
+/// two differ (POV-Ray traces a reflection ray in place of the transmitted one and drops the
+/// surface's own reflection; phong adds nothing), so a transmitting surface must be one where
+/// it cannot occur: a sphere or a plane, η ≥ 1, seen from outside, that no reflecting or
+/// transmitting surface enters (a matte opaque one inside ends every ray that meets it). A
+/// ray then meets its inside only by refraction from the outside, at an angle below the
+/// critical one, and (inside a sphere, where every chord meets the surface at equal angles at
+/// its two ends) leaves it at that same angle. POV-Ray's stack of media then agrees with
+/// phong's sides too: every ray inside the object entered it from the outside.
+fn check_transmission(
+    problem: &Problem<f64>,
+    s: &Surface<f64>,
+    adc: f64,
+    min_weight: f64,
+    max_level: u32,
+) -> Result<(), Unexpressible> {
+    let what = material_name(s);
+    let surface = format!("surfaces[{}]", s.source.index);
+    let t = transmission(&s.material.material).expect("a transmitting surface");
+    let tir = "total internal reflection, where POV-Ray traces a reflection ray in place of the \
+               transmitted one and phong adds nothing";
+    if t.eta < 1.0 {
+        return Err(refuse(
+            format!("{what}: \"ior\""),
+            format!(
+                "an index of refraction {} below 1 gives {tir}, already where a ray enters it",
+                num(t.eta)
+            ),
+            "give an \"ior\" of at least 1, or export with --max-level 1",
+        ));
+    }
+    let eye = problem.camera.as_ref().map(|c| c.eye);
+    // The other surfaces that send rays on: a matte opaque surface inside the material ends
+    // every ray that meets it there, so it cannot send one back to the surface from inside.
+    let others = problem
+        .surfaces()
+        .iter()
+        .filter(|o| !std::ptr::eq(*o, s))
+        .filter(|o| {
+            let m = &o.material.material;
+            m.o_r.is_some_and(|r| r != DVec3::ZERO) || transmission(m).is_some()
+        })
+        .map(|o| &o.shape);
+    match s.shape {
+        Shape::Triangle(_) => Err(refuse(
+            surface,
+            format!(
+                "a triangle or mesh with a transmitting material ({what}) may show {tir}, and a \
+                 ray through an open surface has no inside that POV-Ray's stack of media agrees on"
+            ),
+            "make the transmitting surface a sphere or a plane, or give its material no \
+             \"transmissivity\"",
+        )),
+        Shape::Sphere(sp) => {
+            if eye.is_some_and(|e| (e - sp.center).length() <= sp.radius) {
+                return Err(refuse(
+                    surface,
+                    format!("the eye is inside this transmitting sphere ({what}), whose rays may show {tir}"),
+                    "move the eye outside the sphere",
+                ));
+            }
+            for o in others {
+                if enters_ball(o, sp.center, sp.radius) {
+                    return Err(refuse(
+                        surface,
+                        format!(
+                            "a reflecting or transmitting surface reaches inside this \
+                             transmitting sphere ({what}): a ray reflected from it inside may \
+                             show {tir}, and POV-Ray's stack of media reads nested media \
+                             otherwise than phong"
+                        ),
+                        "move the other reflecting or transmitting surfaces out of the sphere (touching \
+                         it is fine; matte opaque ones may stay)",
+                    ));
+                }
+            }
+            Ok(())
+        }
+        Shape::Plane(pl) => {
+            let front = |p: DVec3| pl.normal.dot(p - pl.point);
+            if eye.is_some_and(|e| front(e) <= 0.0) {
+                return Err(refuse(
+                    surface,
+                    format!(
+                        "the eye is behind this transmitting plane ({what}), in its material, \
+                         where its rays may show {tir}"
+                    ),
+                    "put the eye on the side the plane's normal points to",
+                ));
+            }
+            for o in others {
+                let behind = match o {
+                    Shape::Sphere(b) => front(b.center) < b.radius,
+                    Shape::Triangle(tr) => tr.p.iter().any(|&v| front(v) < 0.0),
+                    Shape::Plane(q) => {
+                        q.normal.cross(pl.normal) != DVec3::ZERO || front(q.point) <= 0.0
+                    }
+                };
+                if behind {
+                    return Err(refuse(
+                        surface,
+                        format!(
+                            "a reflecting or transmitting surface reaches behind this \
+                             transmitting plane ({what}), into its material: a ray reflected \
+                             from it there may show {tir}"
+                        ),
+                        "keep every other reflecting or transmitting surface on the side the \
+                         plane's normal points to (another plane only parallel to it and in \
+                         front); matte opaque ones may be behind it",
+                    ));
+                }
+            }
+            Ok(())
+        }
+    }?;
+    // POV-Ray traces the refracted ray only where the greyscale of what the surface passes
+    // exceeds adc_bailout, whatever the ray's weight.
+    let traced_by_phong = max_level >= 2 && t.o_t.max_element() > min_weight;
+    if traced_by_phong && pov_greyscale(t.o_t) <= adc {
+        return Err(refuse(
+            format!("{what}: \"transmissivity\""),
+            format!(
+                "POV-Ray traces a refracted ray only where the greyscale \
+                 0.297·R + 0.589·G + 0.114·B of O_t = {} exceeds the minimum weight, \
+                 and it is {}; phong traces it while w·max(O_t) exceeds it",
+                vec3(t.o_t),
+                num(pov_greyscale(t.o_t))
+            ),
+            "give a transmissivity whose greyscale is above the minimum weight, or a larger \
+             minimum weight",
+        ));
+    }
+    Ok(())
+}
+
+/// Whether a shape reaches strictly inside the ball of centre `c` and radius `r` (touching
+/// it from outside does not count). For a triangle the test is conservative: its plane or
+/// its bounding ball must stay out of the ball.
+fn enters_ball(shape: &Shape<f64>, c: DVec3, r: f64) -> bool {
+    match shape {
+        Shape::Sphere(o) => (o.center - c).length() < o.radius + r,
+        Shape::Plane(p) => p.normal.dot(c - p.point).abs() < r,
+        Shape::Triangle(t) => {
+            let n = (t.p[1] - t.p[0]).cross(t.p[2] - t.p[0]).normalize_or_zero();
+            let plane_clear = n != DVec3::ZERO && n.dot(c - t.p[0]).abs() >= r;
+            let mid = (t.p[0] + t.p[1] + t.p[2]) / 3.0;
+            let reach = t.p.iter().map(|&v| (v - mid).length()).fold(0.0, f64::max);
+            let ball_clear = (mid - c).length() >= reach + r;
+            !(plane_clear || ball_clear)
+        }
+    }
 }
 
 /// One material as a POV-Ray texture (see the module doc).
@@ -529,6 +779,7 @@ fn texture(
     ambient_light: Option<DVec3>,
     adc: f64,
     strip_reflection: bool,
+    o_t: Option<DVec3>,
 ) -> Result<String, Unexpressible> {
     let nonzero = |v: Option<DVec3>| v.filter(|v| *v != DVec3::ZERO);
     let amb = match (m.o_a, ambient_light) {
@@ -552,6 +803,7 @@ fn texture(
         ("ambient", amb),
         ("diffuse", diffuse),
         ("specular", specular),
+        ("transmissivity", o_t),
     ] {
         if let Some(v) = v {
             if v.max_element() > limit {
@@ -574,8 +826,21 @@ fn texture(
         (None, _) | (_, None) => true,
         (Some(a), Some(d)) => (0..3).all(|c| a[c] == 0.0 || (d[c] > 0.0 && a[c] / d[c] <= limit)),
     };
-    if grey_specular && ambient_fits {
-        // One layer: pigment O_d (white without one), emission O_a·I_a / O_d.
+    // A grey O_t = T < 1 fits the one layer as its transmit T: POV-Ray multiplies the layer's
+    // emission and diffuse light by its opacity 1 − T, which the pigment's division by 1 − T
+    // undoes, and passes T·C_t (not its highlight, not its reflection, are multiplied).
+    let one_layer_transmit = match o_t {
+        None => Some(0.0),
+        Some(o) if o.x == o.y && o.y == o.z && o.x < 1.0 => Some(o.x),
+        Some(_) => None,
+    };
+    let one_layer = one_layer_transmit.filter(|&tr| {
+        let fits = |v: Option<DVec3>| v.is_none_or(|v| v.max_element() / (1.0 - tr) <= limit);
+        fits(diffuse) && (diffuse.is_some() || amb.is_none() || 1.0 / (1.0 - tr) <= limit)
+    });
+    if let (true, Some(tr)) = (grey_specular && ambient_fits, one_layer) {
+        // One layer: pigment O_d (white without one), emission O_a·I_a / O_d; with a
+        // transmit T, the pigment's colour divided by 1 − T.
         let pigment = diffuse.unwrap_or(DVec3::ONE);
         let emission = amb.map_or(DVec3::ZERO, |a| {
             DVec3::from_array(std::array::from_fn(|c| {
@@ -586,10 +851,16 @@ fn texture(
                 }
             }))
         });
+        let colour = if tr == 0.0 {
+            format!("rgb {}", vec3(pigment))
+        } else if diffuse.is_none() && amb.is_none() {
+            format!("rgbt <0, 0, 0, {}>", num(tr))
+        } else {
+            format!("rgbt <{}, {}>", vec3_inner(pigment / (1.0 - tr)), num(tr))
+        };
         return Ok(format!(
-            "texture {{ pigment {{ rgb {} }} finish {{ ambient 0 emission rgb {} diffuse {} \
+            "texture {{ pigment {{ {colour} }} finish {{ ambient 0 emission rgb {} diffuse {} \
              brilliance 1{}{} }} }}",
-            vec3(pigment),
             vec3(emission),
             if diffuse.is_some() { 1 } else { 0 },
             specular.map(|s| phong(s.x)).unwrap_or_default(),
@@ -603,6 +874,7 @@ fn texture(
     let t = ((1.0 + adc) / 2.0).sqrt();
     let mut layers: Vec<String> = Vec::new();
     let mut above = 1.0f64; // the product of the transmitted fractions above this layer
+    let mut passed = DVec3::ONE; // what every layer so far passes, by channel
     let scalar: Vec<(DVec3, &str)> = [
         (amb, "emission 1 diffuse 0"),
         (diffuse, "emission 0 diffuse 1"),
@@ -612,7 +884,7 @@ fn texture(
     .collect();
     let n_scalar = scalar.len();
     for (k, (v, finish)) in scalar.into_iter().enumerate() {
-        let last = k + 1 == n_scalar && specular.is_none();
+        let last = k + 1 == n_scalar && specular.is_none() && o_t.is_none();
         let pigment = if last {
             format!("rgb {}", vec3(v / above))
         } else {
@@ -620,6 +892,7 @@ fn texture(
             above *= t;
             p
         };
+        passed = DVec3::splat(above);
         layers.push(format!(
             "pigment {{ {pigment} }} finish {{ ambient 0 {finish} }}"
         ));
@@ -633,9 +906,44 @@ fn texture(
             "pigment {{ rgbf <{}, 1> }} finish {{ ambient 0 emission 0 diffuse 0 }}",
             vec3_inner(s / (above * p))
         ));
+        // Opaque, or passing everything where the material transmits.
+        let white = if o_t.is_some() {
+            "rgbt <0, 0, 0, 1>"
+        } else {
+            "rgb 1"
+        };
         layers.push(format!(
-            "pigment {{ rgb 1 }} finish {{ ambient 0 emission 0 diffuse 0{} }}",
+            "pigment {{ {white} }} finish {{ ambient 0 emission 0 diffuse 0{} }}",
             phong(p)
+        ));
+        passed = s / p;
+    }
+    if let Some(o) = o_t {
+        // The last layer lets O_t through: POV-Ray multiplies the refracted colour by the
+        // product of every layer's rgb·filter + transmit, `passed` so far.
+        let mut c = DVec3::ZERO;
+        for i in 0..3 {
+            if o[i] == 0.0 {
+                continue;
+            }
+            if passed[i] <= 0.0 || o[i] / passed[i] > limit {
+                return Err(refuse(
+                    what,
+                    format!(
+                        "its specular colour {} is zero where its transmissivity {} is not, \
+                         and the layers POV-Ray needs for a coloured specular colour then pass \
+                         no light in that channel",
+                        vec3(specular.unwrap_or(DVec3::ZERO)),
+                        vec3(o)
+                    ),
+                    "give the specular colour no zero component, or make it grey",
+                ));
+            }
+            c[i] = o[i] / passed[i];
+        }
+        layers.push(format!(
+            "pigment {{ rgbf <{}, 1> }} finish {{ ambient 0 emission 0 diffuse 0 }}",
+            vec3_inner(c)
         ));
     }
     if layers.is_empty() {
@@ -699,6 +1007,62 @@ mod tests {
         assert_eq!(effective_max_level(1000, 0.01, 0.5).unwrap(), 7);
         assert_eq!(effective_max_level(5, 0.01, 0.5).unwrap(), 5);
         assert!(effective_max_level(1000, 0.0, 0.5).is_err());
+    }
+
+    #[test]
+    fn an_index_within_povrays_epsilon_of_one_is_moved_just_beyond_it() {
+        assert_eq!(pov_ior(1.5), 1.5);
+        assert_eq!(pov_ior(1.0), 1.0 + 2e-10);
+        assert_eq!(pov_ior(1.0 + 1e-10), 1.0 + 2e-10);
+        assert_eq!(pov_ior(1.0 + 1e-9), 1.0 + 1e-9);
+    }
+
+    #[test]
+    fn the_greyscale_is_povrays_weighted_sum() {
+        // By hand: 0.297·0.5 + 0.589·0.25 + 0.114·1 = 0.1485 + 0.14725 + 0.114 = 0.40975.
+        let g = pov_greyscale(DVec3::new(0.5, 0.25, 1.0));
+        assert!((g - 0.40975).abs() < 1e-7, "{g}");
+        // The weights sum to 1: a grey colour is its own greyscale (within f32 rounding).
+        assert!((pov_greyscale(DVec3::splat(0.85)) - 0.85).abs() < 1e-7);
+    }
+
+    #[test]
+    fn a_surface_touching_a_glass_ball_does_not_enter_it() {
+        use crate::geometry::{Plane, Sphere, Triangle};
+        let c = DVec3::new(0.0, 1.0, 0.0);
+        let floor = |y: f64| {
+            Shape::Plane(Plane {
+                point: DVec3::new(0.0, y, 0.0),
+                normal: DVec3::Y,
+            })
+        };
+        // Tangent.
+        assert!(!enters_ball(&floor(0.0), c, 1.0));
+        assert!(enters_ball(&floor(0.1), c, 1.0));
+        let ball = |x: f64| {
+            Shape::Sphere(Sphere {
+                center: DVec3::new(x, 1.0, 0.0),
+                radius: 0.5,
+            })
+        };
+        // Touching from outside.
+        assert!(!enters_ball(&ball(1.5), c, 1.0));
+        assert!(enters_ball(&ball(1.4), c, 1.0));
+        // Inside.
+        assert!(enters_ball(&ball(0.0), c, 1.0));
+        // A triangle in the plane x = 2, and one through the ball's centre.
+        let tri = |x: f64| {
+            Shape::Triangle(Triangle {
+                p: [
+                    DVec3::new(x, 0.0, 0.0),
+                    DVec3::new(x, 2.0, 0.0),
+                    DVec3::new(x, 0.0, 2.0),
+                ],
+                normals: None,
+            })
+        };
+        assert!(!enters_ball(&tri(2.0), c, 1.0));
+        assert!(enters_ball(&tri(0.0), c, 1.0));
     }
 
     #[test]
