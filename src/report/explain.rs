@@ -717,6 +717,20 @@ fn secondary<R: Real>(x: &Secondary<R>, lang: Lang) -> Vec<Step> {
             )),
         }
     };
+    // "O = (…); level l, w = …": a child's colour factor, level and weight.
+    let weighed = |o: Formula, color: V3<R>, level: u32, w: Formula, weight: R| {
+        vec![
+            Math(o),
+            EQ,
+            Color(v::<R>(color)),
+            t(pick(lang, "; level ", "; nível ")),
+            Num(f64::from(level)),
+            t(", "),
+            Math(w),
+            EQ,
+            Num(weight.to_f64()),
+        ]
+    };
     if let Some(r) = &x.reflection {
         let mut line = vec![
             t(pick(lang, "Reflection ray: ", "Raio de reflexão: ")),
@@ -730,17 +744,7 @@ fn secondary<R: Real>(x: &Secondary<R>, lang: Lang) -> Vec<Step> {
         out.push(0, line, Some(Ref::Eq("4.17")));
         out.push(
             1,
-            vec![
-                Math(Formula::OR),
-                EQ,
-                Color(v::<R>(r.o_r)),
-                t(pick(lang, "; level ", "; nível ")),
-                Num(f64::from(r.level)),
-                t(", "),
-                Math(Formula::WS),
-                EQ,
-                Num(r.weight.to_f64()),
-            ],
+            weighed(Formula::OR, r.o_r, r.level, Formula::WS, r.weight),
             None,
         );
         out.push(1, vec![verdict(r.level, r.weight, r.stop, "O_r·C_r")], None);
@@ -823,17 +827,7 @@ fn secondary<R: Real>(x: &Secondary<R>, lang: Lang) -> Vec<Step> {
         }
         out.push(
             1,
-            vec![
-                Math(Formula::OT),
-                EQ,
-                Color(v::<R>(tr.o_t)),
-                t(pick(lang, "; level ", "; nível ")),
-                Num(f64::from(tr.level)),
-                t(", "),
-                Math(Formula::WT),
-                EQ,
-                Num(tr.weight.to_f64()),
-            ],
+            weighed(Formula::OT, tr.o_t, tr.level, Formula::WT, tr.weight),
             None,
         );
         out.push(

@@ -464,32 +464,7 @@ impl<R: Real> Moved<R> {
     /// `lights` and `viewer` moved by −`origin`.
     fn new(lights: &LightSet<R>, viewer: Option<V3<R>>, origin: V3<R>) -> Option<Self> {
         let by = |x: V3<R>| x - origin;
-        let lights = LightSet {
-            ambient: lights.ambient,
-            lights: lights
-                .lights
-                .iter()
-                .map(|l| Light {
-                    color: l.color,
-                    kind: match l.kind {
-                        LightKind::Point { position, falloff } => LightKind::Point {
-                            position: by(position),
-                            falloff,
-                        },
-                        LightKind::Spot {
-                            position,
-                            falloff,
-                            cone,
-                        } => LightKind::Spot {
-                            position: by(position),
-                            falloff,
-                            cone,
-                        },
-                        directional => directional,
-                    },
-                })
-                .collect(),
-        };
+        let lights = map_lights(lights, by, |d| d);
         let viewer = viewer.map(by);
         (positions_finite(&lights) && viewer.is_none_or(|e| e.is_finite()))
             .then_some(Moved { lights, viewer })
@@ -718,28 +693,38 @@ pub(crate) fn positions_finite<R: Real>(lights: &LightSet<R>) -> bool {
 /// reversed with it), a directional light travels the other way. Every L, R and cos ψ is
 /// then the negative of the original (cos ψ unchanged), d unchanged: exactly "L reversed".
 pub(crate) fn mirror_lights<R: Real>(lights: &LightSet<R>, p: V3<R>) -> LightSet<R> {
-    let mirror = |q: V3<R>| p * R::TWO - q;
-    let mirrored = lights
+    map_lights(lights, |q| p * R::TWO - q, |d| -d)
+}
+
+/// The lights with each position (a point's, a spot's apex) taken through `place` and each
+/// direction (a directional light's, a spot's axis) through `turn`; colours, falloffs, cones'
+/// angles and the ambient light as they are.
+fn map_lights<R: Real>(
+    lights: &LightSet<R>,
+    place: impl Fn(V3<R>) -> V3<R>,
+    turn: impl Fn(V3<R>) -> V3<R>,
+) -> LightSet<R> {
+    let moved = lights
         .lights
         .iter()
         .map(|l| Light {
             color: l.color,
             kind: match l.kind {
                 LightKind::Point { position, falloff } => LightKind::Point {
-                    position: mirror(position),
+                    position: place(position),
                     falloff,
                 },
                 LightKind::Directional { direction } => LightKind::Directional {
-                    direction: -direction,
+                    direction: turn(direction),
                 },
                 LightKind::Spot {
                     position,
                     falloff,
                     mut cone,
                 } => {
-                    cone.axis = -cone.axis;
+                    cone.axis = turn(cone.axis);
                     LightKind::Spot {
-                        position: mirror(position),
+                        position: place(position),
                         falloff,
                         cone,
                     }
@@ -749,7 +734,7 @@ pub(crate) fn mirror_lights<R: Real>(lights: &LightSet<R>, p: V3<R>) -> LightSet
         .collect();
     LightSet {
         ambient: lights.ambient,
-        lights: mirrored,
+        lights: moved,
     }
 }
 
