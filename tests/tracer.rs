@@ -731,10 +731,18 @@ fn an_explained_pixel_states_the_readings_of_level_and_weight() {
 fn export_pov_help_offers_only_the_samples_it_can_export() {
     // `export-pov --samples 4` is refused (POV-Ray cannot average phong's samples), so its help
     // must not offer render's "1 to 4096".
-    let out = phong().args(["export-pov", "--help"]).output().unwrap();
-    let help = String::from_utf8(out.stdout).unwrap();
-    let line = help.lines().find(|l| l.contains("--samples")).unwrap();
-    assert!(line.contains("only 1") && !line.contains("4096"), "{line}");
+    // The short help writes a flag's text on its line; the long help (export-pov has a long
+    // one) on the lines below it, up to a blank line.
+    for flag in ["-h", "--help"] {
+        let out = phong().args(["export-pov", flag]).output().unwrap();
+        let help = String::from_utf8(out.stdout).unwrap();
+        let from = help.find("--samples").unwrap();
+        let entry = help[from..].split("\n\n").next().unwrap();
+        assert!(
+            entry.contains("only 1") && !entry.contains("4096"),
+            "{flag}: {entry}"
+        );
+    }
 }
 
 /// The triangle (0,0,0), (1,0,0), (0,1,0) with vertex normals N₀ = (0, 0, 1), N₁ = (0.6, 0, 0.8),
