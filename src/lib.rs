@@ -1,6 +1,8 @@
 //! phong: solve, check and explain the illumination exercises of Chapter 4 ("Modelos de
 //! Iluminação") and render their scenes with the same shading core.
 //!
+//! - [`text`]: how phong speaks: the language, numbers as people write them, and messages as
+//!   values rendered in English or Portuguese.
 //! - [`check`]: checks answers against a solution and names the slips that explain a wrong one.
 //! - [`core`]: the Phong model itself, pure, generic over f32/f64.
 //! - [`geometry`]: rays, planes, spheres, triangles, their intersections and the BVH.
@@ -32,5 +34,6 @@ pub mod report;
 #[cfg(feature = "serve")]
 pub(crate) mod serve;
 pub mod solve;
+pub mod text;
 pub mod tracer;
 pub(crate) mod tradeoff;

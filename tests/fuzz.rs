@@ -1631,10 +1631,9 @@ fn error_is_clear(e: &ProblemError, c: &Context, label: &str) -> Result<(), Stri
             line,
             column,
             field,
-            message,
-            fix,
             ..
         } => {
+            let (message, fix) = (e.message(), e.fix());
             if *line == 0 || !shown.starts_with(&format!("{file}:{line}:{column}: ")) {
                 return fail("a syntax error without its line and column");
             }
@@ -1657,12 +1656,8 @@ fn error_is_clear(e: &ProblemError, c: &Context, label: &str) -> Result<(), Stri
                 }
             }
         }
-        ProblemError::Invalid {
-            field,
-            message,
-            fix,
-            ..
-        } => {
+        ProblemError::Invalid { field, .. } => {
+            let (message, fix) = (e.message(), e.fix());
             if message.trim().is_empty() || fix.trim().is_empty() {
                 return fail("a validation error without a message or a fix");
             }
@@ -2133,13 +2128,12 @@ fn load_bytes(bytes: &[u8]) -> (Workspace, Result<problem::Problem<f64>, Problem
 /// The syntax error of a file that must be rejected: (line, column, message, fix).
 fn syntax_error(bytes: &[u8]) -> (usize, usize, String, String) {
     match load_bytes(bytes).1 {
-        Err(ProblemError::Syntax {
-            line,
-            column,
-            message,
-            fix,
-            ..
-        }) => (line, column, message, fix),
+        Err(e @ ProblemError::Syntax { .. }) => {
+            let ProblemError::Syntax { line, column, .. } = e else {
+                unreachable!()
+            };
+            (line, column, e.message(), e.fix())
+        }
         other => panic!("expected a syntax error, got {other:?}"),
     }
 }
@@ -2419,10 +2413,10 @@ fn a_direction_whose_length_overflows_is_refused_not_reported_as_infinite() {
             "surfaces": [{"type": "plane", "point": [0, 0, 0], "normal": [1, 1, 1], "material": {}}]}"#,
     );
     match loaded {
-        Err(ProblemError::Invalid { field, message, .. }) => {
-            assert_eq!(field, "ray.direction");
+        Err(e @ ProblemError::Invalid { .. }) => {
+            assert_eq!(e.field(), Some("ray.direction"));
             assert_eq!(
-                message,
+                e.message(),
                 "the ray's direction is too long for f64: its length overflows"
             );
         }
@@ -2484,9 +2478,11 @@ fn an_unknown_field_named_like_a_path_is_named_whole() {
     let ws = Workspace::new();
     ws.write(br#"{"a.?": 0}"#).expect("written");
     match problem::load::<f64>(&ws.case) {
-        Err(ProblemError::Syntax { field, message, .. }) => {
-            assert_eq!(field.as_deref(), Some("a.?"));
-            assert!(message.starts_with("a.?: unknown field `a.?`"), "{message}");
+        Err(e @ ProblemError::Syntax { .. }) => {
+            assert_eq!(e.field(), Some("a.?"));
+            // The field is the error's own part; the message is what is wrong with it.
+            assert!(e.to_string().contains(": a.?: unknown field `a.?`"), "{e}");
+            assert!(e.message().starts_with("unknown field `a.?`"), "{e}");
         }
         other => panic!("expected a syntax error, got {other:?}"),
     }
@@ -2595,8 +2591,8 @@ fn a_pixel_whose_reflections_overflow_is_refused_not_shown_as_infinite() {
                 e.field == "surfaces[0]" || e.field == "surfaces[1]",
                 "the floor or the mirror: {e:?}"
             );
-            assert!(e.message.contains("overflows f64"), "{e:?}");
-            assert!(e.fix.contains("reflectivity"), "{e:?}");
+            assert!(e.message().contains("overflows f64"), "{e:?}");
+            assert!(e.fix().contains("reflectivity"), "{e:?}");
         }
     }
 }

@@ -96,18 +96,23 @@ fn an_error_deep_in_a_large_scene_still_names_its_field() {
     valid_json["surfaces"][9_500]["center"] = serde_json::json!([0, 1, 0]);
     let path = write_scene(dir.path(), &valid_json.to_string());
     match problem::load::<f64>(&path) {
-        Err(ProblemError::Invalid { field, message, .. }) => {
-            assert_eq!(field, "surfaces[9000].radius");
-            assert_eq!(message, "-1 is not a radius");
+        Err(e @ ProblemError::Invalid { .. }) => {
+            assert_eq!(e.field(), Some("surfaces[9000].radius"));
+            assert_eq!(e.message(), "-1 is not a radius");
         }
         other => panic!("expected a validation error, got {other:?}"),
     }
     // The parse error: found by the second, tracked reading, with its path.
     let path = write_scene(dir.path(), &scene.to_string());
     match problem::load::<f64>(&path) {
-        Err(ProblemError::Syntax { field, message, .. }) => {
-            assert_eq!(field.as_deref(), Some("surfaces[9500].center[1]"));
-            assert!(message.starts_with("surfaces[9500].center[1]: invalid type: string \"1\""));
+        Err(e @ ProblemError::Syntax { .. }) => {
+            assert_eq!(e.field(), Some("surfaces[9500].center[1]"));
+            assert!(e.message().starts_with("invalid type: string \"1\""), "{e}");
+            assert!(
+                e.to_string()
+                    .contains(": surfaces[9500].center[1]: invalid type"),
+                "{e}"
+            );
         }
         other => panic!("expected a syntax error, got {other:?}"),
     }

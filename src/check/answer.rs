@@ -7,6 +7,7 @@
 
 use crate::problem::format::{AnswerColor, AnswerSpec};
 use crate::problem::validate::show;
+pub use crate::text::number::{number, shorten};
 
 /// The scale an answer is written on.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize, clap::ValueEnum)]
@@ -164,7 +165,8 @@ pub fn parse(text: &str, scale: Scale) -> Result<Answer, BadAnswer> {
     for (v, tok) in values.iter_mut().zip(&tokens) {
         *v = token_number(tok).ok_or_else(|| {
             // The hint reads the number as converted; the message echoes it as typed (`0,2x`).
-            let why = not_a_number_hint(&tok.replace(',', ".")).unwrap_or("is not a number");
+            let why = not_a_number_hint(&tok.replace(',', "."))
+                .unwrap_or_else(|| "is not a number".into());
             bad(format!(
                 "\"{}\" in \"{shown}\" {why}: {FORMS}",
                 shorten(tok, 40)
@@ -337,69 +339,11 @@ fn token_number(tok: &str) -> Option<f64> {
     number(&tok.replace(',', "."))
 }
 
-/// `text` as it is echoed in a message: whole up to `max` characters, else its first ones and
-/// how long it was (`0.5 0.5 0.5 0.5… (100000 characters)`).
-pub fn shorten(text: &str, max: usize) -> String {
-    let n = text.chars().count();
-    if n <= max {
-        return text.to_owned();
-    }
-    let head: String = text.chars().take(max.saturating_sub(1)).collect();
-    format!("{head}… ({n} characters)")
-}
-
-/// Why a text that looks like a number is not one, when it has a common cause: beyond the range
-/// of f64 (`1e400`), a Unicode minus (U+2212, as word processors write it), or full-width digits
-/// (as Asian input methods write them). `None` when there is no such cause.
-pub fn not_a_number_hint(text: &str) -> Option<&'static str> {
-    if text.contains(['\u{2212}', '\u{2013}', '\u{FE63}', '\u{FF0D}']) {
-        return Some(
-            "has a Unicode minus or dash (−, –): write the minus as the ASCII hyphen-minus -",
-        );
-    }
-    if text
-        .chars()
-        .any(|c| ('\u{FF10}'..='\u{FF19}').contains(&c) || c == '\u{FF0E}')
-    {
-        return Some(
-            "has full-width digits (０-９): write the digits 0-9 and the point . in ASCII",
-        );
-    }
-    let overflows = |t: &str| {
-        let t = t.trim();
-        !t.is_empty()
-            && t.chars()
-                .all(|c| c.is_ascii_digit() || matches!(c, '.' | '-' | '+' | 'e' | 'E'))
-            && t.parse::<f64>().is_ok_and(f64::is_infinite)
-    };
-    let parts: Vec<&str> = text.split('/').collect();
-    if parts.len() <= 2 && parts.iter().any(|p| overflows(p)) {
-        return Some("is out of range: beyond ±1.8e308, the largest number f64 holds");
-    }
-    None
-}
-
-/// A finite decimal number, or a fraction a/b.
-pub fn number(tok: &str) -> Option<f64> {
-    let x = match tok.split_once('/') {
-        Some((a, b)) => decimal(a)? / decimal(b)?,
-        None => decimal(tok)?,
-    };
-    x.is_finite().then_some(x)
-}
-
-/// A decimal number (no "inf", "nan" or hexadecimal).
-fn decimal(tok: &str) -> Option<f64> {
-    let t = tok.trim();
-    let ok = !t.is_empty()
-        && t.chars()
-            .all(|c| c.is_ascii_digit() || matches!(c, '.' | '-' | '+' | 'e' | 'E'))
-        && t.chars().any(|c| c.is_ascii_digit());
-    if ok {
-        t.parse().ok()
-    } else {
-        None
-    }
+/// Transitional: [`crate::text::number::not_a_number`] in English, for the messages not yet
+/// written as typed values.
+pub fn not_a_number_hint(text: &str) -> Option<String> {
+    use crate::text::Message;
+    crate::text::number::not_a_number(text).map(|m| m.text(crate::text::Lang::En))
 }
 
 #[cfg(test)]

@@ -26,8 +26,8 @@ use super::report::{scale_number, verdict_code, CHECK_FORMAT_VERSION};
 use super::rubric::{Duplicates, Rubric};
 use super::steps::{self, StepsExpected, StepsOut};
 use super::{answer, judge, messages, Expected, Scale, Slip, Verdict, VerdictKind};
-use crate::report::lang::Lang;
 use crate::solve::ReadingCode;
+use crate::text::lang::Lang;
 
 /// How answers are read and judged.
 #[derive(Clone, Debug)]

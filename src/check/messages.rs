@@ -3,8 +3,8 @@
 //! carries the English sentences next to stable codes; `--lang pt` changes the text only.
 
 use super::{Against, Slip, VerdictKind};
-use crate::report::lang::Lang;
 use crate::solve::ReadingCode;
+use crate::text::lang::Lang;
 
 /// What a slip is, in a few words.
 pub fn slip(s: Slip, lang: Lang) -> &'static str {
@@ -205,7 +205,7 @@ pub fn has_colour(ray: bool, lang: Lang) -> &'static str {
 
 /// What a nearest candidate is, how far the answer is from it, against the tolerance.
 pub fn nearest(c: &super::Candidate, distance: f64, tolerance: f64, lang: Lang) -> String {
-    use crate::report::number::num;
+    use crate::text::number::num;
     let what = match (lang, c) {
         (Lang::En, super::Candidate::Written) => "the problem as written".to_owned(),
         (Lang::Pt, super::Candidate::Written) => "o problema como enunciado".to_owned(),
@@ -677,7 +677,7 @@ pub(crate) fn graded(
 
 /// The tolerance of steps.
 pub fn step_tolerance(relative: f64, absolute: f64, lang: Lang) -> String {
-    use crate::report::number::num;
+    use crate::text::number::num;
     let pct = num(relative * 100.0);
     match lang {
         Lang::En => format!(
@@ -826,7 +826,7 @@ pub(crate) fn exercise_name(exercise: &str, lang: Lang) -> String {
 
 /// A student's total, in words.
 pub(crate) fn total(points: f64, max: f64, lang: Lang) -> String {
-    use crate::report::number::num;
+    use crate::text::number::num;
     let one = max == 1.0;
     match (lang, one) {
         (Lang::En, true) => format!("{} of {} point", num(points), num(max)),

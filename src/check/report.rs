@@ -9,9 +9,9 @@ use serde::Serialize;
 use super::messages::{self, Line};
 use super::{Answer, Candidate, Comparison, Nearest, Scale, Verdict, VerdictKind};
 use crate::problem::ProblemError;
-use crate::report::lang::Lang;
-use crate::report::number::num;
 use crate::solve::ReadingCode;
+use crate::text::lang::Lang;
+use crate::text::number::num;
 
 /// The version of the JSON output of `phong check` and `phong grade`.
 pub const CHECK_FORMAT_VERSION: u32 = 1;

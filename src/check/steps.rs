@@ -29,9 +29,9 @@ use super::report::{Failure, FailureKind, CHECK_FORMAT_VERSION};
 use super::slips::{self, Slip};
 use crate::core::{LightKind, Vector};
 use crate::problem::{self, Problem};
-use crate::report::lang::Lang;
-use crate::report::number::num;
 use crate::solve::{Evaluation, Intersection, ReadingCode, Secondary, Solution};
+use crate::text::lang::Lang;
+use crate::text::number::num;
 
 /// The relative tolerance of a step: 1 % of the quantity's size.
 pub const STEP_RELATIVE: f64 = 1e-2;

@@ -14,7 +14,7 @@ use crate::check;
 use crate::core::Precision;
 use crate::generate;
 use crate::report::document::Contents;
-use crate::report::lang::Lang;
+use crate::text::lang::Lang;
 use crate::tracer::output::ImageFormat;
 
 mod answers;

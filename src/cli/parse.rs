@@ -25,14 +25,14 @@ pub(super) fn parse_fraction(s: &str) -> Result<f64, String> {
     if let Some(hint) = crate::check::answer::not_a_number_hint(s.trim()) {
         return Err(format!(
             "\"{}\" {hint}. Fix: write a decimal (0.05) or a fraction (1/255)",
-            crate::check::answer::shorten(s, 40)
+            crate::text::number::shorten(s, 40)
         ));
     }
-    match crate::check::answer::number(&with_decimal_point(s)) {
+    match crate::text::number::number(&with_decimal_point(s)) {
         Some(x) if x >= 0.0 => Ok(x),
         _ => Err(format!(
             "{:?} is not a number ≥ 0. Fix: write a decimal (0.05) or a fraction (1/255)",
-            crate::check::answer::shorten(s, 40)
+            crate::text::number::shorten(s, 40)
         )),
     }
 }
@@ -41,7 +41,7 @@ pub(super) fn parse_fraction(s: &str) -> Result<f64, String> {
 /// (`0.5`, or with a decimal comma `0,5`) or a fraction (`1/2`); the error says what a share is
 /// (the fix of [`parse_fraction`] is a minimum weight's).
 pub(super) fn parse_share(s: &str) -> Result<f64, String> {
-    let shown = crate::check::answer::shorten(s, 40);
+    let shown = crate::text::number::shorten(s, 40);
     let fix = crate::report::messages::both(
         "give a share of the points from 0 to 1, such as 0.5 (half) or 1/3",
         "dê uma fração dos pontos de 0 a 1, como 0.5 (metade) ou 1/3",
@@ -49,7 +49,7 @@ pub(super) fn parse_share(s: &str) -> Result<f64, String> {
     if let Some(hint) = crate::check::answer::not_a_number_hint(s.trim()) {
         return Err(format!("\"{shown}\" {hint}. Fix: {fix}"));
     }
-    match crate::check::answer::number(&with_decimal_point(s)) {
+    match crate::text::number::number(&with_decimal_point(s)) {
         Some(x) if (0.0..=1.0).contains(&x) => Ok(x),
         _ => Err(format!(
             "{}. Fix: {fix}",
@@ -68,15 +68,15 @@ pub(super) fn parse_tolerance(s: &str) -> Result<f64, String> {
     if let Some(hint) = crate::check::answer::not_a_number_hint(s.trim()) {
         return Err(format!(
             "\"{}\" {hint}. Fix: give a number ≥ 0 (e.g. 0.005 on the 0–1 scale)",
-            crate::check::answer::shorten(s, 40)
+            crate::text::number::shorten(s, 40)
         ));
     }
-    match crate::check::answer::number(&with_decimal_point(s)) {
+    match crate::text::number::number(&with_decimal_point(s)) {
         Some(x) if x >= 0.0 => Ok(x),
         _ => Err(format!(
             "\"{}\" is not a tolerance. Fix: give the largest difference accepted per channel, \
              a number ≥ 0 (e.g. 0.005 on the 0–1 scale, 1 on the 255 scale)",
-            crate::check::answer::shorten(s, 40)
+            crate::text::number::shorten(s, 40)
         )),
     }
 }
@@ -97,17 +97,18 @@ fn whole(s: &str, lo: u64, hi: u64, what: &str) -> Result<u64, String> {
     let t = s.trim();
     let fix = format!("Fix: give {what} from {lo} to {hi}");
     if t.is_empty() || !t.bytes().all(|b| b.is_ascii_digit()) {
-        let hint = crate::check::answer::not_a_number_hint(t).unwrap_or("is not a whole number");
+        let hint = crate::check::answer::not_a_number_hint(t)
+            .unwrap_or_else(|| "is not a whole number".into());
         return Err(format!(
             "\"{}\" {hint}. {fix}",
-            crate::check::answer::shorten(s, 40)
+            crate::text::number::shorten(s, 40)
         ));
     }
     match t.parse::<u64>() {
         Ok(n) if (lo..=hi).contains(&n) => Ok(n),
         _ => Err(format!(
             "{} is outside {lo} to {hi}. {fix}",
-            crate::check::answer::shorten(t, 40)
+            crate::text::number::shorten(t, 40)
         )),
     }
 }
@@ -203,7 +204,7 @@ mod tests {
             "{e}"
         );
         assert!(!e.contains("1/255"), "{e}");
-        let pt = crate::report::messages::error_in(&e, crate::report::lang::Lang::Pt);
+        let pt = crate::report::messages::error_in(&e, crate::text::lang::Lang::Pt);
         assert_eq!(
             pt,
             "\"1,5\" não é um número de 0 a 1. Correção: dê uma fração dos pontos de 0 a 1, \

@@ -24,6 +24,7 @@ pub(crate) mod light;
 pub(crate) mod material;
 pub mod real;
 pub(crate) mod rounding;
+pub mod secondary;
 pub(crate) mod shade;
 pub(crate) mod vector;
 

@@ -37,7 +37,7 @@ use crate::problem::Problem;
 use crate::report::diagram;
 use crate::report::explain::{latex_math, nest, runs, Explanation, Node, Run, Shading, Step};
 use crate::report::html::{data_table, esc, STYLE};
-use crate::report::lang::Lang;
+use crate::text::lang::Lang;
 
 /// The tolerance of a channel when the key gives none (the 0–1 scale's default).
 pub(crate) const DEFAULT_TOLERANCE: f64 = 0.005;

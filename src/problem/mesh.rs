@@ -106,7 +106,7 @@ fn scan<R: Real>(text: &str) -> Result<Faces<R>, MeshError> {
     for (i, line) in text.lines().enumerate() {
         let n = i + 1;
         let mut words = line.split_whitespace();
-        let shown = || crate::check::answer::shorten(line.trim(), 60);
+        let shown = || crate::text::number::shorten(line.trim(), 60);
         match words.next() {
             Some("v") => {
                 let xyz: Vec<&str> = words.by_ref().take(3).collect();

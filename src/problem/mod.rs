@@ -5,6 +5,7 @@
 //! its inputs.
 
 pub(crate) mod error;
+pub(crate) mod faults;
 pub(crate) mod field;
 pub mod format;
 pub(crate) mod kinds;
@@ -28,6 +29,14 @@ use crate::core::Real;
 use crate::report::messages::both;
 use format::{LightSpec, LightType, SurfaceSpec, SurfaceType};
 use serde::Deserialize;
+
+/// Transitional: a fault written as English text (see [`error::Untranslated`]).
+pub(crate) fn untranslated(message: impl Into<String>, fix: impl Into<String>) -> error::FaultBox {
+    std::sync::Arc::new(error::Untranslated {
+        message: message.into(),
+        fix: fix.into(),
+    })
+}
 
 /// The largest problem file read: 64 MiB (a scene of a million spheres is about 100 MB; a
 /// chapter's exercise is 1 kB).
@@ -132,10 +141,11 @@ fn not_utf8(path: &Path, bytes: &[u8], e: std::str::Utf8Error) -> ProblemError {
         line: 1 + good.iter().filter(|&&b| b == b'\n').count(),
         column: 1 + good.len() - line_start,
         field: None,
-        message: format!("byte 0x{:02X} is not UTF-8 text", bytes[e.valid_up_to()]),
-        fix: "save the file as UTF-8 (JSON is UTF-8 text); the byte may come from another \
-              encoding, such as Latin-1, or from a file that is not a problem file"
-            .into(),
+        fault: untranslated(
+            format!("byte 0x{:02X} is not UTF-8 text", bytes[e.valid_up_to()]),
+            "save the file as UTF-8 (JSON is UTF-8 text); the byte may come from another \
+              encoding, such as Latin-1, or from a file that is not a problem file",
+        ),
     }
 }
 
@@ -199,17 +209,12 @@ fn parse_tracked(path: &Path, source: &str) -> Result<ProblemFile, ProblemError>
         } else {
             (message, fix)
         };
-        let message = match &field {
-            Some(f) => format!("{f}: {message}"),
-            None => message,
-        };
         ProblemError::Syntax {
             path: path.to_owned(),
             line: inner.line(),
             column: inner.column(),
             field,
-            message,
-            fix,
+            fault: untranslated(message, fix),
         }
     })
 }
@@ -237,10 +242,11 @@ fn not_an_object(path: &Path, text: &str) -> Result<(), ProblemError> {
         line: 1 + before.matches('\n').count(),
         column: 1 + at - line_start,
         field: None,
-        message: format!("the file is {kind}, and a problem file is one JSON object {{ … }}"),
-        fix: "write the problem's fields in one object, {\"lights\": [ … ], \"point\": { … }, …}; \
-              several problems go in several files (`phong schema` lists every field)"
-            .into(),
+        fault: untranslated(
+            format!("the file is {kind}, and a problem file is one JSON object {{ … }}"),
+            "write the problem's fields in one object, {\"lights\": [ … ], \"point\": { … }, …}; \
+              several problems go in several files (`phong schema` lists every field)",
+        ),
     })
 }
 
@@ -260,7 +266,7 @@ fn shorten_quoted(message: &str) -> String {
             out.push('`');
         }
         if i % 2 == 1 {
-            out.push_str(&crate::check::answer::shorten(part, LONGEST_NAME));
+            out.push_str(&crate::text::number::shorten(part, LONGEST_NAME));
         } else {
             out.push_str(part);
         }
@@ -278,7 +284,7 @@ fn field_path(path: &serde_path_to_error::Path) -> String {
                 if !out.is_empty() {
                     out.push('.');
                 }
-                out.push_str(&crate::check::answer::shorten(key, LONGEST_NAME));
+                out.push_str(&crate::text::number::shorten(key, LONGEST_NAME));
             }
             Segment::Unknown => {}
         }
@@ -414,7 +420,7 @@ fn decimal_comma_at(
         let key = before
             .strip_suffix('"')
             .and_then(|k| k.rsplit_once('"'))
-            .map(|(_, k)| crate::check::answer::shorten(k, LONGEST_NAME));
+            .map(|(_, k)| crate::text::number::shorten(k, LONGEST_NAME));
         let (message, fix) = said(&format!("{a},{b}"), &format!("{a}.{b}"));
         return Some(DecimalComma { key, message, fix });
     }
@@ -470,7 +476,7 @@ fn string_for_vector(message: &str) -> Option<String> {
     let numbers: Option<Vec<f64>> = text
         .split(|c: char| c.is_whitespace() || c == ';' || c == ',')
         .filter(|t| !t.is_empty())
-        .map(crate::check::answer::number)
+        .map(crate::text::number::number)
         .collect();
     Some(match numbers.filter(|n| n.len() == 3) {
         Some(n) => {
@@ -522,7 +528,7 @@ fn word_for_number(message: &str, field: Option<&str>) -> Option<String> {
             ),
         ));
     }
-    if let Some(x) = crate::check::answer::number(word.trim()) {
+    if let Some(x) = crate::text::number::number(word.trim()) {
         return Some(both(
             &format!("a number is written without quotes: {}", validate::show(x)),
             &format!("um número se escreve sem aspas: {}", validate::show(x)),
@@ -775,26 +781,27 @@ mod tests {
 
     #[test]
     fn a_fraction_or_a_word_where_a_number_belongs_gets_a_fix_in_both_languages() {
+        use crate::text::{Lang, Message};
         let path = Path::new("t.json");
         let e = parse_str(
             path,
             r#"{"point": {"normal": [3/5, 0, 4/5], "material": "M"}}"#,
         )
-        .unwrap_err()
-        .to_string();
+        .unwrap_err();
+        let (en, pt) = (e.text(Lang::En), e.text(Lang::Pt));
         // 3/5 = 0.6.
-        assert!(e.contains("write 3/5 as a decimal, 0.6"), "{e}");
-        assert!(e.contains("escreva 3/5 como decimal, 0.6"), "{e}");
+        assert!(en.contains("write 3/5 as a decimal, 0.6"), "{en}");
+        assert!(pt.contains("escreva 3/5 como decimal, 0.6"), "{pt}");
         let e = parse_str(
             path,
             r#"{"lights": [{"type": "point", "position": [0, 0, 1], "color": [1, 1, 1],
                 "falloff": "linear"}]}"#,
         )
-        .unwrap_err()
-        .to_string();
-        assert!(e.contains("lights[0].falloff"), "{e}");
-        assert!(e.contains("write 1 for \"linear\""), "{e}");
-        assert!(e.contains("escreva 1 para \"linear\""), "{e}");
+        .unwrap_err();
+        let (en, pt) = (e.text(Lang::En), e.text(Lang::Pt));
+        assert!(en.contains("lights[0].falloff"), "{en}");
+        assert!(en.contains("write 1 for \"linear\""), "{en}");
+        assert!(pt.contains("escreva 1 para \"linear\""), "{pt}");
         let e = parse_str(path, r#"{"viewer": ["1", 0, 0]}"#)
             .unwrap_err()
             .to_string();

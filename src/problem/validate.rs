@@ -7,6 +7,7 @@ use std::path::{Path, PathBuf};
 use std::sync::Arc;
 
 use super::error::Invalid;
+use super::faults::TargetFault;
 use super::field::Field;
 use super::format::{
     CameraSpec, ColorSpec, LightSpec, LightType, MaterialRef, MaterialSpec, ProblemFile,
@@ -52,21 +53,10 @@ pub fn validate_in<R: Real>(
 
     let target =
         match (&file.point, &file.ray) {
-            (Some(_), Some(_)) => {
-                return Err(Invalid::new(
-                    "ray",
-                    "the problem gives both \"point\" and \"ray\"",
-                    "give either a point (with its normal) or a ray with surfaces, not both",
-                ))
-            }
+            (Some(_), Some(_)) => return Err(Invalid::of("ray", TargetFault::PointAndRay)),
             (None, None) if file.camera.is_some() => {
                 if file.surfaces.is_empty() {
-                    return Err(Invalid::new(
-                        "surfaces",
-                        "missing: a scene needs at least one surface for its rays to hit",
-                        "add \"surfaces\": [{\"type\": \"sphere\", ...}], a plane, a triangle \
-                         or a mesh",
-                    ));
+                    return Err(Invalid::of("surfaces", TargetFault::SceneWithoutSurfaces));
                 }
                 let needs = Needs {
                     ambient: has_ambient,
@@ -81,23 +71,7 @@ pub fn validate_in<R: Real>(
             // Surfaces without a ray or a camera: a scene whose camera is missing (what `phong
             // render` needs), more likely than a point problem with surfaces.
             (None, None) if !file.surfaces.is_empty() => {
-                return Err(Invalid::new(
-                    "camera",
-                    crate::report::messages::both(
-                        "missing, and so is a ray (the file gives surfaces, with nothing to see \
-                         them)",
-                        "ausente, e também o raio (o arquivo dá superfícies, sem nada que as \
-                         veja)",
-                    ),
-                    crate::report::messages::both(
-                        "add \"camera\": {\"eye\": [x, y, z], \"look_at\": [x, y, z], \"fov\": \
-                         45, \"width\": 640, \"height\": 480} to render the scene, or a \"ray\" \
-                         to solve one ray",
-                        "acrescente \"camera\": {\"eye\": [x, y, z], \"look_at\": [x, y, z], \
-                         \"fov\": 45, \"width\": 640, \"height\": 480} para renderizar a cena, \
-                         ou um \"ray\" para resolver um raio",
-                    ),
-                ))
+                return Err(Invalid::of("camera", TargetFault::SurfacesWithoutCamera))
             }
             (None, None) => return Err(Invalid::new(
                 "point",

@@ -1,6 +1,6 @@
 //! Likely unit mistakes in a valid problem file: never an error (the file means something), but
 //! worth a word before a student trusts the result. `phong solve` and `phong check` print each
-//! on standard error (in the language of `--lang`: `report::messages::warning`) and put it in
+//! on standard error (in the language of `--lang`: its [`Message`]) and put it in
 //! their JSON (`warnings`).
 //!
 //! The rules (README "Warnings"):
@@ -19,6 +19,8 @@ use serde::Serialize;
 
 use super::field::Field;
 use super::format::{ColorSpec, LightType, MaterialRef, MaterialSpec, ProblemFile};
+use super::validate::show;
+use crate::text::{Lang, Message};
 
 /// What a warning is about.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize)]
@@ -135,11 +137,79 @@ pub(crate) fn warnings(file: &ProblemFile) -> Vec<Warning> {
     out
 }
 
+/// Three numbers as the file writes them.
+fn warning_triple(c: [f64; 3]) -> String {
+    format!("[{}, {}, {}]", show(c[0]), show(c[1]), show(c[2]))
+}
+
+/// A colour divided by 255, rounded to 3 decimals, as the fix writes it.
+fn over_255(c: [f64; 3]) -> String {
+    let r = |x: f64| show((x / 255.0 * 1000.0).round() / 1000.0);
+    format!("[{}, {}, {}]", r(c[0]), r(c[1]), r(c[2]))
+}
+
+/// A likely unit mistake in a problem file, with its fix, in `lang`.
+impl Message for Warning {
+    fn text(&self, lang: Lang) -> String {
+        let w = self;
+        let f = &w.field;
+        match (w.kind, lang) {
+            (WarningKind::MaterialColor0To255 { given }, Lang::En) => format!(
+                "{f}: {} looks like a 0–255 colour, but a material's colour is a fraction of the \
+                 light it reflects, from 0 to 1. Fix: divide by 255: {}",
+                warning_triple(given),
+                over_255(given)
+            ),
+            (WarningKind::MaterialColor0To255 { given }, Lang::Pt) => format!(
+                "{f}: {} parece uma cor de 0 a 255, mas a cor de um material é a fração da luz \
+                 que ele reflete, de 0 a 1. Correção: divida por 255: {}",
+                warning_triple(given),
+                over_255(given)
+            ),
+            (WarningKind::LightColor0To255 { given }, Lang::En) => format!(
+                "{f}: {} looks like a 0–255 colour, on a light that does not fall off with \
+                 distance, so it lights the point {} times too brightly if it was meant on the \
+                 0–1 scale. Fix: divide by 255: {} (a light brighter than 1 is fine with falloff)",
+                warning_triple(given),
+                show(255.0),
+                over_255(given)
+            ),
+            (WarningKind::LightColor0To255 { given }, Lang::Pt) => format!(
+                "{f}: {} parece uma cor de 0 a 255, numa luz sem decaimento com a distância: se \
+                 era na escala de 0 a 1, ilumina o ponto {} vezes demais. Correção: divida por \
+                 255: {} (uma luz acima de 1 é normal com decaimento)",
+                warning_triple(given),
+                show(255.0),
+                over_255(given)
+            ),
+            (WarningKind::SpotAngleRadians { given }, Lang::En) => format!(
+                "{f}: {} looks like an angle in radians ({}°), but the angle is read in degrees: \
+                 this cone's half-angle is {}°. Fix: write the angle in degrees, {}",
+                show(given),
+                show((given.to_degrees() * 100.0).round() / 100.0),
+                show(given),
+                show((given.to_degrees() * 100.0).round() / 100.0)
+            ),
+            (WarningKind::SpotAngleRadians { given }, Lang::Pt) => format!(
+                "{f}: {} parece um ângulo em radianos ({}°), mas o ângulo é lido em graus: o \
+                 semiângulo deste cone é {}°. Correção: escreva o ângulo em graus, {}",
+                show(given),
+                show((given.to_degrees() * 100.0).round() / 100.0),
+                show(given),
+                show((given.to_degrees() * 100.0).round() / 100.0)
+            ),
+        }
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::report::lang::Lang;
-    use crate::report::messages::warning as message;
+    use crate::text::lang::Lang;
+
+    fn message(w: &Warning, lang: Lang) -> String {
+        w.text(lang)
+    }
 
     fn of(json: &str) -> Vec<Warning> {
         let file = crate::problem::parse_str(std::path::Path::new("t.json"), json).unwrap();

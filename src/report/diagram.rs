@@ -16,8 +16,8 @@ use std::fmt::Write;
 
 use super::explain::Diagram;
 use super::formula::push_html_escaped;
-use super::lang::Lang;
 use super::messages::Phrase;
+use crate::text::lang::Lang;
 
 type V = [f64; 3];
 
@@ -587,7 +587,7 @@ pub fn figure(d: &Diagram, id: &str, lang: Lang) -> Figure {
             &[-std::f64::consts::FRAC_PI_2],
         );
         let s = if t > 0.0 { -1.0 } else { 1.0 };
-        let text = format!("t = {}", super::number::num(t).replace('-', "−"));
+        let text = format!("t = {}", crate::text::number::num(t).replace('-', "−"));
         placer.place(
             format!("{id}-t-label"),
             "note",

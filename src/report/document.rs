@@ -5,8 +5,8 @@
 //! [`super::html`] (`write_document`); this module only says what a document holds.
 
 use super::explain::Explanation;
-use super::lang::Lang;
 use super::messages::{pick, Phrase};
+use crate::text::lang::Lang;
 
 /// Which part of a problem set to write.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash, clap::ValueEnum)]

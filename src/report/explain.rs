@@ -8,7 +8,6 @@
 //! vectors and colours. Each renderer writes the pieces in its own notation.
 
 use super::formula::Formula;
-use super::lang::Lang;
 use super::messages::{self, pick, Phrase};
 use crate::core::real::to_f64_array;
 use crate::core::{Falloff, LightKind, LightSet, LightStatus, LightTerm, Real, SpecularStatus, V3};
@@ -17,6 +16,8 @@ use crate::problem::model::ReflectivitySource;
 use crate::problem::Problem;
 use crate::report::pixel::transmission_stop_in;
 use crate::solve::{Evaluation, Intersection, Secondary, Solution, ViewSource};
+use crate::text::lang::Lang;
+use crate::text::Message;
 use crate::tracer::Stop;
 
 /// One piece of a step's line.
@@ -257,11 +258,7 @@ pub fn explain<R: Real>(
             .collect(),
         ray: s.intersection.as_ref().map(|x| intersection(x, lang)),
         parts,
-        warnings: problem
-            .warnings
-            .iter()
-            .map(|w| messages::warning(w, lang))
-            .collect(),
+        warnings: problem.warnings.iter().map(|w| w.text(lang)).collect(),
     }
 }
 
@@ -565,12 +562,12 @@ fn data<R: Real>(problem: &Problem<R>, lang: Lang) -> Vec<DataRow> {
                     format!(
                         "maximum level {}, minimum weight {}",
                         s.max_level,
-                        super::number::num(s.min_weight.to_f64())
+                        crate::text::number::num(s.min_weight.to_f64())
                     ),
                     format!(
                         "nível máximo {}, peso mínimo {}",
                         s.max_level,
-                        super::number::num(s.min_weight.to_f64())
+                        crate::text::number::num(s.min_weight.to_f64())
                     ),
                 ))],
             );
@@ -656,7 +653,7 @@ fn secondary<R: Real>(x: &Secondary<R>, lang: Lang) -> Vec<Step> {
                  its weight > the minimum weight ({}).",
                 x.level,
                 x.level + 1,
-                super::number::num(min)
+                crate::text::number::num(min)
             ),
             format!(
                 "O raio do problema é um raio primário: nível {}, peso w_p = 1. Um raio gerado \
@@ -664,7 +661,7 @@ fn secondary<R: Real>(x: &Secondary<R>, lang: Lang) -> Vec<Step> {
                  e o seu peso for > o peso mínimo ({}).",
                 x.level,
                 x.level + 1,
-                super::number::num(min)
+                crate::text::number::num(min)
             ),
         ))],
         Some(Ref::Sec("4.4")),
@@ -692,8 +689,8 @@ fn secondary<R: Real>(x: &Secondary<R>, lang: Lang) -> Vec<Step> {
     );
     // Whether a child is traced, and the rule that says so.
     let verdict = |level: u32, weight: R, stop: Option<Stop>, adds: &str| {
-        let (l, w) = (level, super::number::num(weight.to_f64()));
-        let m = super::number::num(min);
+        let (l, w) = (level, crate::text::number::num(weight.to_f64()));
+        let m = crate::text::number::num(min);
         match stop {
             None => t(pick(
                 lang,
@@ -1391,7 +1388,7 @@ fn light<R: Real>(
 
 /// The text of the pieces in Unicode (the plain-text notation), without swatches.
 pub fn plain(line: &[Inline]) -> String {
-    use super::number::{num, vec3};
+    use crate::text::number::{num, vec3};
     let mut s = String::new();
     for piece in line {
         match piece {
@@ -1495,7 +1492,7 @@ pub(crate) use crate::core::color::rgb8 as to_rgb8;
 
 /// A number in LaTeX math: "1.5e9" becomes "1.5 \times 10^{9}".
 pub(crate) fn latex_number(x: f64) -> String {
-    let s = super::number::num(x);
+    let s = crate::text::number::num(x);
     match s.split_once('e') {
         Some((m, e)) => format!("{m} \\times 10^{{{e}}}"),
         None => s,

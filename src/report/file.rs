@@ -2,6 +2,7 @@
 //! explanation (text, Markdown, LaTeX, HTML), its text report, its JSON document, or the JSON
 //! document of why it could not be solved.
 
+use crate::text::Message;
 use std::path::Path;
 
 use crate::core::{Precision, Real};
@@ -9,7 +10,7 @@ use crate::problem::{ProblemError, Source};
 use crate::solve::solve_source;
 
 use super::explain::Explanation;
-use super::lang::Lang;
+use crate::text::lang::Lang;
 
 /// Solves one file and returns its explanation in `lang`, for the text, Markdown, LaTeX and
 /// HTML formats.
@@ -68,11 +69,7 @@ pub(crate) fn solve_json_warned(
     ) -> Result<(serde_json::Value, Vec<String>), ProblemError> {
         let (problem, solution) = solve_source::<R>(source)?;
         let doc = super::json::document(&source.name().display().to_string(), &problem, &solution);
-        let warnings = problem
-            .warnings
-            .iter()
-            .map(|w| super::messages::warning(w, lang))
-            .collect();
+        let warnings = problem.warnings.iter().map(|w| w.text(lang)).collect();
         Ok((
             serde_json::to_value(doc).expect("the solution serialises"),
             warnings,

@@ -12,9 +12,9 @@ use super::explain::{
     language_tag, nest, to_rgb8, DataRow, Explanation, Inline, Node, Shading, Step,
 };
 use super::formula::{push_html_escaped, unicode_to_html};
-use super::lang::Lang;
 use super::messages::Phrase;
-use super::number::{num, vec3};
+use crate::text::lang::Lang;
+use crate::text::number::{num, vec3};
 
 /// The page's stylesheet.
 pub(crate) const STYLE: &str = "\

@@ -156,14 +156,14 @@ pub(crate) fn transmitted<R: Real>(
         traced: stop.is_none(),
         stop,
         stop_message: stop
-            .map(|s| crate::report::pixel::transmission_stop_in(s, crate::report::lang::Lang::En)),
+            .map(|s| crate::report::pixel::transmission_stop_in(s, crate::text::lang::Lang::En)),
     }
 }
 
 /// The JSON form of a hit's secondary rays.
 fn secondary<R: Real>(x: &Secondary<R>) -> SecondaryOut<R> {
-    use crate::report::lang::Lang;
     use crate::report::pixel::stop_reason_in;
+    use crate::text::lang::Lang;
     SecondaryOut {
         level: x.level,
         weight: x.weight,
@@ -203,7 +203,7 @@ pub(crate) fn warnings_out(list: &[crate::problem::warnings::Warning]) -> Vec<Wa
     list.iter()
         .map(|w| WarningOut {
             warning: w.clone(),
-            message: messages::warning(w, crate::report::lang::Lang::En),
+            message: crate::text::Message::text(w, crate::text::lang::Lang::En),
         })
         .collect()
 }

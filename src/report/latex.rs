@@ -13,8 +13,8 @@ use super::document::{exercise_word, Document};
 use super::explain::{
     latex_math, nest, runs, DataRow, Explanation, Inline, Node, Run, Shading, Step,
 };
-use super::lang::Lang;
 use super::messages::Phrase;
+use crate::text::lang::Lang;
 
 /// A symbol with a subscript written in prose ("k_a", "P_l", "O_R"): a letter, `_`, letters
 /// and digits, standing alone as a word. Its length in characters, if `chars[i..]` starts one.

@@ -6,8 +6,8 @@ use super::document::{exercise_word, Document};
 use super::explain::{
     latex_math, nest, runs, DataRow, Explanation, Inline, Node, Run, Shading, Step,
 };
-use super::lang::Lang;
 use super::messages::Phrase;
+use crate::text::lang::Lang;
 
 /// Escapes text so that Markdown shows it as written.
 pub(crate) fn escape(s: &str) -> String {

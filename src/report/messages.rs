@@ -11,18 +11,17 @@
 //! especular, decaimento (linear, quadrático), fonte de luz, luz pontual, luz direcional, luz
 //! spot, observador, normal, cone, eixo, geratriz, raio, interseção.
 
-use super::lang::Lang;
-use super::number::num;
 use crate::core::{LightStatus, Real, SpecularStatus};
 use crate::problem::mesh::MAX_TRIANGLES;
 use crate::problem::model::MAX_LIGHTS;
-use crate::problem::validate::show;
-use crate::problem::warnings::{Warning, WarningKind};
+
 use crate::problem::Problem;
 use crate::solve::{
     ConeEdge, FarFromOrigin, Finding, FindingData, GateDecision, Omission, OmissionReason,
     ReadingCode, Side, Term,
 };
+use crate::text::lang::Lang;
+use crate::text::number::num;
 
 /// Chooses the text of a language; both texts must be given.
 pub fn pick<T>(lang: Lang, en: T, pt: T) -> T {
@@ -298,7 +297,7 @@ fn finding_with<R: Real>(problem: &Problem<R>, f: &Finding, lang: Lang, json: bo
             p_error_bound,
         } => {
             let relative = num(t_error_bound / t.abs());
-            let p_bound = super::number::vec3(p_error_bound);
+            let p_bound = crate::text::number::vec3(p_error_bound);
             pick(
                 lang,
                 format!(
@@ -1775,68 +1774,6 @@ pub fn surface_label(source: Option<crate::problem::SurfaceSource>, lang: Lang) 
                 Phrase::Triangle.get(lang)
             ),
         },
-    }
-}
-
-/// Three numbers as the file writes them.
-fn warning_triple(c: [f64; 3]) -> String {
-    format!("[{}, {}, {}]", show(c[0]), show(c[1]), show(c[2]))
-}
-
-/// A colour divided by 255, rounded to 3 decimals, as the fix writes it.
-fn over_255(c: [f64; 3]) -> String {
-    let r = |x: f64| show((x / 255.0 * 1000.0).round() / 1000.0);
-    format!("[{}, {}, {}]", r(c[0]), r(c[1]), r(c[2]))
-}
-
-/// A likely unit mistake in a problem file, with its fix, in `lang`.
-pub fn warning(w: &Warning, lang: Lang) -> String {
-    let f = &w.field;
-    match (w.kind, lang) {
-        (WarningKind::MaterialColor0To255 { given }, Lang::En) => format!(
-            "{f}: {} looks like a 0–255 colour, but a material's colour is a fraction of the \
-                 light it reflects, from 0 to 1. Fix: divide by 255: {}",
-            warning_triple(given),
-            over_255(given)
-        ),
-        (WarningKind::MaterialColor0To255 { given }, Lang::Pt) => format!(
-            "{f}: {} parece uma cor de 0 a 255, mas a cor de um material é a fração da luz \
-                 que ele reflete, de 0 a 1. Correção: divida por 255: {}",
-            warning_triple(given),
-            over_255(given)
-        ),
-        (WarningKind::LightColor0To255 { given }, Lang::En) => format!(
-            "{f}: {} looks like a 0–255 colour, on a light that does not fall off with \
-                 distance, so it lights the point {} times too brightly if it was meant on the \
-                 0–1 scale. Fix: divide by 255: {} (a light brighter than 1 is fine with falloff)",
-            warning_triple(given),
-            show(255.0),
-            over_255(given)
-        ),
-        (WarningKind::LightColor0To255 { given }, Lang::Pt) => format!(
-            "{f}: {} parece uma cor de 0 a 255, numa luz sem decaimento com a distância: se \
-                 era na escala de 0 a 1, ilumina o ponto {} vezes demais. Correção: divida por \
-                 255: {} (uma luz acima de 1 é normal com decaimento)",
-            warning_triple(given),
-            show(255.0),
-            over_255(given)
-        ),
-        (WarningKind::SpotAngleRadians { given }, Lang::En) => format!(
-            "{f}: {} looks like an angle in radians ({}°), but the angle is read in degrees: \
-                 this cone's half-angle is {}°. Fix: write the angle in degrees, {}",
-            show(given),
-            show((given.to_degrees() * 100.0).round() / 100.0),
-            show(given),
-            show((given.to_degrees() * 100.0).round() / 100.0)
-        ),
-        (WarningKind::SpotAngleRadians { given }, Lang::Pt) => format!(
-            "{f}: {} parece um ângulo em radianos ({}°), mas o ângulo é lido em graus: o \
-                 semiângulo deste cone é {}°. Correção: escreva o ângulo em graus, {}",
-            show(given),
-            show((given.to_degrees() * 100.0).round() / 100.0),
-            show(given),
-            show((given.to_degrees() * 100.0).round() / 100.0)
-        ),
     }
 }
 

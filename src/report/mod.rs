@@ -12,12 +12,12 @@ pub mod file;
 pub mod formula;
 pub mod html;
 pub mod json;
-pub mod lang;
 pub mod latex;
 pub mod layout;
 pub mod markdown;
 pub(crate) mod messages;
-pub(crate) mod number;
 pub mod pixel;
 pub mod text;
+/// The language of a report ([`crate::text::lang`], where it is declared).
+pub use crate::text::lang;
 pub use messages::catalogue;

@@ -8,13 +8,13 @@ use std::fmt::Write;
 use serde::Serialize;
 
 use super::explain::{plain, DataRow, Explanation};
-use super::lang::Lang;
 use super::messages::pick;
-use super::number::{num, vec3};
 use super::{json, text};
 use crate::core::real::to_f64_array;
 use crate::core::{Real, Vector, V3};
 use crate::problem::Problem;
+use crate::text::lang::Lang;
+use crate::text::number::{num, vec3};
 use crate::tracer::explain::{PixelExplanation, RayExplanation};
 use crate::tracer::trace::{RayKind, RayRecord, Stop, TransmissionRecord};
 

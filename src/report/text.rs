@@ -8,11 +8,11 @@ use std::fmt::Write;
 
 use super::document::Document;
 use super::explain::{explain, plain, Explanation, Inline, Shading, Step};
-use super::lang::Lang;
 use super::messages::Phrase;
 use crate::core::Real;
 use crate::problem::Problem;
 use crate::solve::Solution;
+use crate::text::lang::Lang;
 
 /// Column at which equation references start.
 const EQ_COLUMN: usize = 64;

@@ -33,7 +33,7 @@ use super::Shared;
 use crate::check;
 use crate::core::Precision;
 use crate::problem::{ProblemError, Source};
-use crate::report::lang::Lang;
+use crate::text::lang::Lang;
 
 /// The name a problem sent with a request has in messages and in the `file` field.
 pub(crate) const PROBLEM_NAME: &str = "problem";
@@ -469,7 +469,7 @@ fn broken_problem(text: &str) -> Option<Response> {
 
 /// Whether a syntax error is only the rest of the envelope after the problem.
 fn is_trailing(e: &ProblemError) -> bool {
-    matches!(e, ProblemError::Syntax { message, field: None, .. } if message.starts_with("trailing characters"))
+    matches!(e, ProblemError::Syntax { field: None, .. } if e.message().starts_with("trailing characters"))
 }
 
 /// The `lang` of a request: English unless `"pt"`.

@@ -17,7 +17,7 @@ use axum::response::Response;
 pub(crate) async fn request(request: Request, next: Next) -> Response {
     let start = Instant::now();
     let method = request.method().clone();
-    let path = crate::check::answer::shorten(request.uri().path(), 200);
+    let path = crate::text::number::shorten(request.uri().path(), 200);
     let response = next.run(request).await;
     let micros = start.elapsed().as_micros();
     // Control characters in a path are shown escaped: a request cannot forge a log line.

@@ -103,7 +103,7 @@ async fn method_not_allowed(
 
 /// A request's path as a message may quote it: at most 100 characters.
 fn shown_path(path: &str) -> String {
-    crate::check::answer::shorten(path, 100)
+    crate::text::number::shorten(path, 100)
 }
 
 /// Why the server could not start.

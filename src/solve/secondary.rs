@@ -11,12 +11,11 @@
 //! [`Refraction::at`]; R_V is computed with the tracer's expression, and a test holds both to
 //! the tracer's recorded rays, bit for bit.
 
+use crate::core::secondary::{Refraction, Stop};
 use crate::core::vector::normalize;
 use crate::core::{Material, Real, Transmission, Vector, V3};
 use crate::geometry::SurfaceHit;
 use crate::problem::model::RenderSettings;
-use crate::tracer::trace::Refraction;
-use crate::tracer::Stop;
 
 /// The level of a ray problem's own ray: it is a primary ray (docs/conventions.md, "Recursion
 /// level").

@@ -53,14 +53,14 @@ fn widen<R: Real>(v: <R as Real>::Vec3) -> [f64; 3] {
 fn load<R: Real>(case: &Case) -> Result<problem::Problem<R>, String> {
     let file = problem::parse_str(Path::new("case.json"), &case.to_json())
         .map_err(|e| format!("{}: {e}", case.name))?;
-    validate::validate::<R>(&file).map_err(|e| format!("{}: {}", e.field, e.message))
+    validate::validate::<R>(&file).map_err(|e| format!("{}: {}", e.field, e.message()))
 }
 
 /// Solves the case in precision R; `Err` carries phong's message when it refuses the problem.
 pub fn solve<R: Real>(case: &Case) -> Result<Out, String> {
     let problem = load::<R>(case)?;
     let solution =
-        phong::solve::solve(&problem).map_err(|e| format!("{}: {}", e.field, e.message))?;
+        phong::solve::solve(&problem).map_err(|e| format!("{}: {}", e.field, e.message()))?;
     let eval = solution.evaluation.ok_or("no evaluation")?;
     let lights = eval
         .lights

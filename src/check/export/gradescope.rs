@@ -10,7 +10,7 @@ use serde_json::{json, Value};
 use super::super::messages;
 use super::{submissions, Submission, Test};
 use crate::check::grade::Report;
-use crate::report::lang::Lang;
+use crate::text::lang::Lang;
 
 /// One submission's `results.json`.
 fn results(submission: &Submission, lang: Lang) -> Value {

@@ -10,7 +10,7 @@ use std::fmt::Write;
 use super::super::grade::Report;
 use super::super::messages;
 use super::Test;
-use crate::report::lang::Lang;
+use crate::text::lang::Lang;
 
 /// `text` escaped for XML text and attribute values.
 fn escape(text: &str) -> String {

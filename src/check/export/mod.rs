@@ -13,7 +13,7 @@ pub mod junit;
 use std::collections::BTreeMap;
 
 use super::grade::{natural_order, Report, RowOut};
-use crate::report::lang::Lang;
+use crate::text::lang::Lang;
 
 /// One test of a submission.
 pub(crate) enum Test<'a> {

@@ -38,7 +38,8 @@ pub(crate) struct CheckArgs {
     #[arg(long, value_enum, default_value_t = CheckFormat::Text)]
     pub(crate) format: CheckFormat,
     /// Language of the text output.
-    #[arg(long, value_enum, default_value_t = Lang::En)]
+    /// [default: the locale's language: pt where LC_ALL, LC_MESSAGES or LANG is pt_*, else en]
+    #[arg(long, value_enum, default_value_t = Lang::from_locale(), hide_default_value = true)]
     pub(crate) lang: Lang,
     /// Write the output to this file (atomically) instead of standard output.
     #[arg(short, long, value_name = "PATH")]
@@ -90,7 +91,8 @@ pub(crate) struct GradeArgs {
     #[arg(long, value_name = "PATH")]
     pub(crate) by_student: Option<PathBuf>,
     /// Language of the feedback column and of the platforms' reports.
-    #[arg(long, value_enum, default_value_t = Lang::En)]
+    /// [default: the locale's language: pt where LC_ALL, LC_MESSAGES or LANG is pt_*, else en]
+    #[arg(long, value_enum, default_value_t = Lang::from_locale(), hide_default_value = true)]
     pub(crate) lang: Lang,
     /// What the submissions are: the plain CSV, or Moodle's quiz Responses report downloaded
     /// as CSV ("Response 1", …; Cloze parts "part 1: …; part 2: …; part 3: …") [default:

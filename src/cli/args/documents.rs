@@ -20,7 +20,8 @@ pub(crate) struct NewArgs {
     pub(crate) output: Option<PathBuf>,
     /// With pt, each problem has its title and question in Portuguese too (`title_pt`,
     /// `question_pt`), for `--lang pt` in solve, check and moodle.
-    #[arg(long, value_enum, default_value_t = Lang::En)]
+    /// [default: the locale's language: pt where LC_ALL, LC_MESSAGES or LANG is pt_*, else en]
+    #[arg(long, value_enum, default_value_t = Lang::from_locale(), hide_default_value = true)]
     pub(crate) lang: Lang,
 }
 
@@ -40,7 +41,8 @@ pub(crate) struct MoodleArgs {
     )]
     pub(crate) category: String,
     /// Language of the questions, the feedback and the worked solutions.
-    #[arg(long, value_enum, default_value_t = Lang::En)]
+    /// [default: the locale's language: pt where LC_ALL, LC_MESSAGES or LANG is pt_*, else en]
+    #[arg(long, value_enum, default_value_t = Lang::from_locale(), hide_default_value = true)]
     pub(crate) lang: Lang,
 }
 
@@ -54,7 +56,8 @@ pub(crate) struct SolveArgs {
     #[arg(long, value_enum, default_value_t = Format::Text)]
     pub(crate) format: Format,
     /// Language of the explanation (text, markdown, latex, html); json is language-neutral.
-    #[arg(long, value_enum, default_value_t = Lang::En)]
+    /// [default: the locale's language: pt where LC_ALL, LC_MESSAGES or LANG is pt_*, else en]
+    #[arg(long, value_enum, default_value_t = Lang::from_locale(), hide_default_value = true)]
     pub(crate) lang: Lang,
     /// Colour in the text format: auto (on a terminal, unless NO_COLOR is set), always, never.
     #[arg(long, value_enum, default_value_t = ColorChoice::Auto)]

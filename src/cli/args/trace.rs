@@ -138,7 +138,8 @@ pub(crate) struct RenderArgs {
     #[arg(long, value_enum, default_value_t = Format::Text)]
     pub(crate) format: Format,
     /// Language of the explanation and of the errors (json is language-neutral).
-    #[arg(long, value_enum, default_value_t = Lang::En)]
+    /// [default: the locale's language: pt where LC_ALL, LC_MESSAGES or LANG is pt_*, else en]
+    #[arg(long, value_enum, default_value_t = Lang::from_locale(), hide_default_value = true)]
     pub(crate) lang: Lang,
     /// Print the number of rays traced and the time taken to stderr.
     #[arg(long)]

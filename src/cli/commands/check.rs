@@ -48,11 +48,11 @@ pub(crate) fn run(args: &CheckArgs) -> Result<Exit, CliError> {
         let c = check::check_file(path, &options);
         exit = exit.max(exit_of(c.status()));
         for w in &c.warnings {
-            let warning = crate::report::messages::warning(w, args.lang);
+            let warning = crate::text::Message::text(w, args.lang);
             error::warn_in(path, &warning, args.lang);
         }
         if let Err(f) = &c.outcome {
-            error::print_in(&f.message, args.lang);
+            error::print_english_in(&f.message, args.lang);
         }
         match args.format {
             CheckFormat::Text => {
@@ -150,7 +150,7 @@ fn with_steps(args: &CheckArgs, steps: &[check::steps::GivenStep]) -> Result<Exi
     let checked = check::steps::check_steps(path, steps, args.strict);
     let mut exit = exit_of(checked.status());
     for w in &checked.warnings {
-        let warning = crate::report::messages::warning(w, args.lang);
+        let warning = crate::text::Message::text(w, args.lang);
         error::warn_in(path, &warning, args.lang);
     }
     let answer = args.answer.as_ref().map(|_| {
@@ -165,12 +165,12 @@ fn with_steps(args: &CheckArgs, steps: &[check::steps::GivenStep]) -> Result<Exi
         )
     });
     if let Err(f) = &checked.outcome {
-        error::print_in(&f.message, args.lang);
+        error::print_english_in(&f.message, args.lang);
     }
     if let Some(c) = &answer {
         exit = exit.max(exit_of(c.status()));
         if let Err(f) = &c.outcome {
-            error::print_in(&f.message, args.lang);
+            error::print_english_in(&f.message, args.lang);
         }
     }
     let out = match args.format {

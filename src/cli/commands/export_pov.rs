@@ -22,8 +22,10 @@ pub(crate) fn run(args: &ExportPovArgs) -> Result<Exit, CliError> {
     let sdl = crate::export::pov::export(&problem).map_err(|e| ProblemError::Invalid {
         path: path.clone(),
         field: e.what,
-        message: format!("cannot be expressed in POV-Ray 3.7: {}", e.why),
-        fix: e.fix,
+        fault: crate::problem::untranslated(
+            format!("cannot be expressed in POV-Ray 3.7: {}", e.why),
+            e.fix,
+        ),
     })?;
     output::emit(args.output.as_deref(), &sdl)?;
     Ok(Exit::Success)

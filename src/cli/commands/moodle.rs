@@ -11,7 +11,7 @@ use crate::cli::exit::Exit;
 use crate::cli::output;
 use crate::export::moodle::{quiz, Entry, Set, DEFAULT_TOLERANCE};
 use crate::problem::{self, ProblemError, MAX_PROBLEM_BYTES};
-use crate::report::lang::Lang;
+use crate::text::lang::Lang;
 
 pub(crate) fn run(args: &MoodleArgs) -> Result<Exit, CliError> {
     let sets = args
@@ -48,9 +48,10 @@ fn read_set(path: &Path, lang: Lang) -> Result<Set, ProblemError> {
                 line: e.line(),
                 column: e.column(),
                 field: None,
-                message: e.to_string(),
-                fix: "give one problem, or an array of problems as `phong new --count N` prints"
-                    .into(),
+                fault: crate::problem::untranslated(
+                    e.to_string(),
+                    "give one problem, or an array of problems as `phong new --count N` prints",
+                ),
             })?;
         items
             .iter()

@@ -12,7 +12,7 @@ pub(crate) fn run(args: &NewArgs) -> Result<Exit, CliError> {
         args.kind,
         args.count,
         args.seed,
-        args.lang == crate::report::lang::Lang::Pt,
+        args.lang == crate::text::lang::Lang::Pt,
     );
     let Some(dir) = &args.output else {
         output::emit(None, &generate::text_of_all(&problems))?;

@@ -12,7 +12,7 @@ use crate::cli::output;
 use crate::core::{Precision, Real};
 use crate::problem::{self, Camera, Problem};
 use crate::report;
-use crate::report::lang::Lang;
+use crate::text::lang::Lang;
 use crate::tracer::output::ImageFormat;
 use crate::tracer::{self, Scene};
 

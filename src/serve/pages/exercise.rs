@@ -20,10 +20,10 @@ use crate::check::steps::{self, GivenStep, Name, StepVerdict, NAMES};
 use crate::check::{self, messages as said, CheckOptions, Scale, VerdictKind};
 use crate::core::Precision;
 use crate::report::html::{self, esc};
-use crate::report::lang::Lang;
 use crate::report::messages::{error_in, step_formula};
 use crate::serve::catalogue::Exercise;
 use crate::serve::Shared;
+use crate::text::lang::Lang;
 
 /// What the form sent (and is shown again in its boxes).
 #[derive(Debug, Default)]

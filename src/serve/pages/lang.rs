@@ -7,7 +7,7 @@
 
 use axum::http::{header, HeaderMap, Uri};
 
-use crate::report::lang::Lang;
+use crate::text::lang::Lang;
 
 /// The value of `key` in a URL's query (`?lang=pt&solution=1`), if present.
 pub(crate) fn query<'a>(uri: &'a Uri, key: &str) -> Option<&'a str> {

@@ -10,7 +10,7 @@ use axum::response::{IntoResponse, Response};
 use super::lang::{self, Text};
 use crate::report::explain::language_tag;
 use crate::report::html::esc;
-use crate::report::lang::Lang;
+use crate::text::lang::Lang;
 
 /// The stylesheet's version in its URL (`/static/phong.css?v=…`): a hash of its text, computed
 /// at compile time, so that the URL changes with the content and the file may be cached for a

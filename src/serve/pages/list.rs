@@ -10,8 +10,8 @@ use super::lang::{self, Text};
 use super::layout::{href, page};
 use crate::problem::ProblemFile;
 use crate::report::html::esc;
-use crate::report::lang::Lang;
 use crate::serve::Shared;
+use crate::text::lang::Lang;
 
 /// The exercise's title in `lang` (`title_pt` in Portuguese when given), else its id.
 pub(crate) fn title(file: &ProblemFile, id: &str, lang: Lang) -> String {

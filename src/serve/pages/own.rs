@@ -22,8 +22,8 @@ use crate::check::answer::{number, three};
 use crate::core::Precision;
 use crate::problem::Source;
 use crate::report::html::{self, esc};
-use crate::report::lang::Lang;
 use crate::report::messages::error_in;
+use crate::text::lang::Lang;
 
 /// The form's fields: name, label, and the value it starts with (exercise 4.2's data).
 const FIELDS: &[(&str, Text, &str)] = &[
