@@ -37,3 +37,6 @@ pub mod solve;
 pub mod text;
 pub mod tracer;
 pub(crate) mod tradeoff;
+
+#[cfg(test)]
+mod layers;

@@ -3,6 +3,8 @@
 //! with `messages!` or `faults!` and left out of [`walked!`]'s list fails
 //! `every_message_enum_is_walked`.
 
+#![cfg(test)]
+
 use strum::IntoEnumIterator;
 
 use super::{Fault, Lang, Message};
