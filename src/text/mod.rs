@@ -4,7 +4,7 @@
 //! This is the lowest layer of the crate beside [`crate::core`]: every other module may use it,
 //! and it uses none of them (ARCHITECTURE.md, "Layers").
 //!
-//! A message is data first (rustc's diagnostics are structs; docs/conventions.md, "Messages"):
+//! A message is data first (rustc's diagnostics are structs; ARCHITECTURE.md, "Messages"):
 //! a value holding its field, the value written, the bounds, the fix, rendered in a language
 //! only at the edge. Each message enum is declared with [`messages!`] or [`faults!`], whose
 //! every variant takes its English and its Portuguese text side by side: a missing
