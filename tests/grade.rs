@@ -603,3 +603,129 @@ fn an_output_that_cannot_be_written_stops_before_anything_is_and_says_no_graded_
         "the summary was written"
     );
 }
+
+/// `phong grade` run by `sh` under an address-space limit of `limit_mb` MiB (`ulimit -v`),
+/// standard output read as it comes: (exit code, the lines of standard output counted, standard
+/// error).
+fn grade_limited(limit_mb: u64, args: &[&std::ffi::OsStr]) -> (Option<i32>, usize, String) {
+    use std::io::Read;
+    let mut child = std::process::Command::new("sh")
+        .arg("-c")
+        .arg(format!("ulimit -v {}; exec \"$0\" \"$@\"", limit_mb * 1024))
+        .arg(assert_cmd::cargo::cargo_bin("phong"))
+        .arg("grade")
+        .args(args)
+        .stdout(std::process::Stdio::piped())
+        .stderr(std::process::Stdio::piped())
+        .spawn()
+        .unwrap();
+    let mut out = child.stdout.take().unwrap();
+    let mut lines = 0;
+    let mut buf = vec![0u8; 1 << 16];
+    loop {
+        let n = out.read(&mut buf).unwrap();
+        if n == 0 {
+            break;
+        }
+        lines += buf[..n].iter().filter(|&&b| b == b'\n').count();
+    }
+    let mut err = String::new();
+    child
+        .stderr
+        .take()
+        .unwrap()
+        .read_to_string(&mut err)
+        .unwrap();
+    (child.wait().unwrap().code(), lines, err)
+}
+
+/// README allows 1,000,000 rows: a header and 1,000,000 rows are graded (they were refused as
+/// "more than 1000000 rows": the header was counted), one row more is refused with exit 2.
+#[test]
+fn a_header_and_a_million_rows_are_graded_and_one_more_is_refused() {
+    let dir = exercises();
+    let work = tempfile::tempdir().unwrap();
+    // The cheapest row to grade: an exercise the folder does not have.
+    let mut csv = b"student,exercise,answer\n".to_vec();
+    for _ in 0..1_000_000 {
+        csv.extend_from_slice(b"s,x,1\n");
+    }
+    let million = work.path().join("million.csv");
+    std::fs::write(&million, &csv).unwrap();
+    let (code, lines, err) = grade_limited(
+        4096,
+        &[
+            million.as_os_str(),
+            "--exercises".as_ref(),
+            dir.path().as_os_str(),
+        ],
+    );
+    assert_eq!(code, Some(0), "{err}");
+    // The report's header and a line per row (no cell holds a line break).
+    assert_eq!(lines, 1 + 1_000_000);
+    assert!(err.contains("graded 1000000 rows"), "{err}");
+    // One row more, with or without the header: refused before anything is graded.
+    csv.extend_from_slice(b"s,x,1\n");
+    let over = work.path().join("over.csv");
+    std::fs::write(&over, &csv).unwrap();
+    let headless = work.path().join("headless.csv");
+    std::fs::write(&headless, &csv[b"student,exercise,answer\n".len()..]).unwrap();
+    for file in [&over, &headless] {
+        let out = phong()
+            .arg("grade")
+            .arg(file)
+            .arg("--exercises")
+            .arg(dir.path())
+            .output()
+            .unwrap();
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(2), "{err}");
+        assert!(err.contains("more than 1000000 rows"), "{err}");
+        assert!(out.stdout.is_empty());
+    }
+}
+
+/// The reports are written one row at a time: 250,000 rows of as many students are graded in
+/// every format within 400 MiB of address space (the whole report held in memory took about
+/// 2.5 kB a row for CSV and 10 kB for Gradescope's results: 600 MB to 2.5 GB here). Every row
+/// is in the report.
+#[test]
+fn a_large_class_is_graded_in_bounded_memory_in_every_format() {
+    let dir = exercises();
+    let work = tempfile::tempdir().unwrap();
+    let rows = 250_000;
+    let mut csv = String::from("student,exercise,answer\n");
+    for i in 0..rows {
+        // One student a row, and an exercise the folder does not have: each row a test of its
+        // own in the platforms' reports.
+        csv.push_str(&format!("student{i},x,0.5 0.5 0.5\n"));
+    }
+    let input = work.path().join("class.csv");
+    std::fs::write(&input, csv).unwrap();
+    for format in ["csv", "json", "junit", "gradescope"] {
+        let (code, lines, err) = grade_limited(
+            400,
+            &[
+                input.as_os_str(),
+                "--exercises".as_ref(),
+                dir.path().as_os_str(),
+                "--format".as_ref(),
+                format.as_ref(),
+            ],
+        );
+        assert_eq!(code, Some(0), "{format}: {err}");
+        assert!(
+            err.contains(&format!("graded {rows} rows")),
+            "{format}: {err}"
+        );
+        // Lines per row: CSV 1; JUnit a testsuite per student (2 lines) holding the row's
+        // testcase (no exercise was graded: x is none); JSON and Gradescope at least the
+        // row's fields, one a line.
+        let least = match format {
+            "csv" => rows + 1,
+            "junit" => rows * 3,
+            _ => rows * 10,
+        };
+        assert!(lines >= least, "{format}: {lines} lines for {rows} rows");
+    }
+}

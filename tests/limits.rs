@@ -622,3 +622,93 @@ fn a_grade_output_may_not_replace_an_exercise_it_grades_against() {
         original
     );
 }
+
+/// `sh -c script` in `dir` with `$PHONG` the binary and `$EX` exercise 4.1; its exit code.
+fn shell(dir: &Path, script: &str) -> Option<i32> {
+    Std::new("sh")
+        .arg("-c")
+        .arg(script)
+        .current_dir(dir)
+        .env("PHONG", assert_cmd::cargo::cargo_bin("phong"))
+        .env("EX", exercise("4.1.json"))
+        .env("SUBS", "subs.csv")
+        .stdin(Stdio::null())
+        .status()
+        .unwrap()
+        .code()
+}
+
+/// Issue 30, item 2: `-o /dev/stdout` (or `/dev/stderr`, `/proc/self/fd/N`, `-`) writes into the
+/// stream, after what it holds and in order with what comes next; it never replaces the file
+/// the stream is redirected to (`>> app.log` lost "old").
+#[test]
+fn an_output_naming_a_stream_is_written_into_it_in_order() {
+    let dir = TempDir::new().unwrap();
+    let report = phong()
+        .arg("solve")
+        .arg(exercise("4.1.json"))
+        .output()
+        .unwrap();
+    assert!(report.status.success());
+    let report = String::from_utf8(report.stdout).unwrap();
+    assert!(report.len() > 100, "{report}");
+    let read = |name: &str| std::fs::read_to_string(dir.path().join(name)).unwrap();
+    for (target, redirect) in [
+        ("/dev/stdout", ">>"),
+        ("-", ">>"),
+        ("/proc/self/fd/1", ">>"),
+        ("/dev/fd/1", ">>"),
+        ("/proc/self/fd/3", "3>>"),
+        ("/dev/stderr", "2>>"),
+    ] {
+        std::fs::write(dir.path().join("app.log"), "old\n").unwrap();
+        let code = shell(
+            dir.path(),
+            &format!("\"$PHONG\" solve \"$EX\" -o {target} {redirect} app.log"),
+        );
+        assert_eq!(code, Some(0), "-o {target} {redirect} app.log");
+        let got = read("app.log");
+        assert!(
+            got.starts_with("old\n") && got[4..].starts_with(&report),
+            "-o {target} {redirect} app.log: {got}"
+        );
+        if target != "/dev/stderr" {
+            assert_eq!(
+                got,
+                format!("old\n{report}"),
+                "-o {target} {redirect} app.log"
+            );
+        }
+    }
+    // A group's output, in order: the line before, the report, the line after.
+    let code = shell(
+        dir.path(),
+        "{ echo BEFORE; \"$PHONG\" solve \"$EX\" -o /dev/stdout; echo AFTER; } > c.txt",
+    );
+    assert_eq!(code, Some(0));
+    assert_eq!(read("c.txt"), format!("BEFORE\n{report}AFTER\n"));
+    // Two outputs of one run on the stream (standard output a file): both written, in order,
+    // not refused as one file replacing the other.
+    std::fs::write(
+        dir.path().join("subs.csv"),
+        "student,exercise,answer\nana,4.1,0.5 0.7 0.3\n",
+    )
+    .unwrap();
+    let code = shell(
+        dir.path(),
+        &format!(
+            "echo old > both.txt; \"$PHONG\" grade \"$SUBS\" --exercises {} -o /dev/stdout \
+             --summary /dev/stdout >> both.txt",
+            root().join("exercises").display()
+        ),
+    );
+    assert_eq!(code, Some(0));
+    let both = read("both.txt");
+    let lines: Vec<&str> = both.lines().collect();
+    assert_eq!(lines[0], "old", "{both}");
+    assert!(lines[1].starts_with("row,line,student,"), "{both}");
+    assert!(lines[2].starts_with("1,2,ana,4.1,"), "{both}");
+    assert!(lines[3].starts_with("exercise,rows,right,"), "{both}");
+    assert_eq!(lines[4], "4.1,1,1,0,0,0,", "{both}");
+    assert_eq!(lines.len(), 5, "{both}");
+}

@@ -515,3 +515,112 @@ fn the_request_log_has_one_line_per_request_and_no_answer() {
         "{all}"
     );
 }
+
+/// 64-bit FNV-1a of `bytes` (offset basis 0xcbf29ce484222325, prime 0x100000001b3), as the
+/// README documents the log's hashes: written here from the algorithm, not from phong.
+fn fnv1a(bytes: &[u8]) -> String {
+    let mut h: u64 = 0xcbf2_9ce4_8422_2325;
+    for &b in bytes {
+        h ^= u64::from(b);
+        h = h.wrapping_mul(0x0000_0100_0000_01b3);
+    }
+    format!("{h:016x}")
+}
+
+/// Issue 30, item 6: a line of the answers' log keeps at most the answer's first 64 characters,
+/// with its length in bytes and its hash (a 60,000-character answer added 60 kB a line).
+#[test]
+fn the_answers_log_keeps_a_prefix_the_length_and_the_hash_of_an_answer() {
+    let dir = tempfile::tempdir().unwrap();
+    let log = dir.path().join("answers.jsonl");
+    let server = Server::start(&["--log-answers", log.to_str().unwrap()]);
+    // 3 × 20,000 characters, "é" two bytes each: 80,000 bytes would pass the 64 kB body
+    // limit, so 9,000 of each: 27,000 characters, 36,000 bytes.
+    let answer = format!(
+        "{} {} {}",
+        "1".repeat(9000),
+        "é".repeat(9000),
+        "0".repeat(8998)
+    );
+    assert_eq!(answer.chars().count(), 27_000);
+    assert_eq!(answer.len(), 9000 + 1 + 18_000 + 1 + 8998);
+    let body = format!("{{\"exercise\": \"4.2\", \"answer\": \"{answer}\"}}");
+    // Not an answer phong can read (422), logged all the same.
+    assert_eq!(
+        http::post_json(server.addr, "/api/check", &body).status,
+        422
+    );
+    let short = "{\"exercise\": \"4.2\", \"answer\": \"0.245 0.28 0.21\"}";
+    assert_eq!(
+        http::post_json(server.addr, "/api/check", short).status,
+        200
+    );
+    let text = std::fs::read_to_string(&log).unwrap();
+    let lines: Vec<&str> = text.lines().collect();
+    assert_eq!(lines.len(), 2, "{text}");
+    assert!(lines[0].len() < 400, "a line of {} bytes", lines[0].len());
+    let long: Value = serde_json::from_str(lines[0]).unwrap();
+    assert_eq!(long["answer"], "1".repeat(64));
+    assert_eq!(long["answer_bytes"], 36_000);
+    assert_eq!(long["answer_hash"], fnv1a(answer.as_bytes()));
+    let short: Value = serde_json::from_str(lines[1]).unwrap();
+    assert_eq!(short["answer"], "0.245 0.28 0.21");
+    assert_eq!(short["answer_bytes"], 15);
+    assert_eq!(short["answer_hash"], fnv1a(b"0.245 0.28 0.21"));
+}
+
+/// Issue 30, item 6: `--log-answers-max KB` bounds the log: before a line would make it larger,
+/// it becomes `PATH.1` and a new file is begun; every line of both is whole.
+#[test]
+fn the_answers_log_is_rotated_before_it_passes_its_limit() {
+    let dir = tempfile::tempdir().unwrap();
+    let log = dir.path().join("answers.jsonl");
+    let older = dir.path().join("answers.jsonl.1");
+    let server = Server::start(&[
+        "--log-answers",
+        log.to_str().unwrap(),
+        "--log-answers-max",
+        "2",
+    ]);
+    let mut c = http::Client::connect(server.addr).unwrap();
+    // A long answer each time (its line about 200 bytes): 100 lines are about 20 kB, ten
+    // times the limit of 2 kB.
+    for i in 0..100 {
+        let body = format!(
+            "{{\"exercise\": \"4.2\", \"answer\": \"{i} {}\"}}",
+            "9".repeat(5000)
+        );
+        assert_eq!(c.post_json("/api/check", &body).unwrap().status, 422);
+    }
+    for file in [&log, &older] {
+        let text = std::fs::read_to_string(file).unwrap();
+        assert!(
+            text.len() <= 2000,
+            "{}: {} bytes",
+            file.display(),
+            text.len()
+        );
+        assert!(text.ends_with('\n'));
+        for line in text.lines() {
+            let v: Value = serde_json::from_str(line).expect("each line is JSON");
+            assert_eq!(
+                v["answer_bytes"].as_u64().unwrap() as usize,
+                line_answer_len(&v)
+            );
+        }
+    }
+    // The newest answer is the last line of the log.
+    let text = std::fs::read_to_string(&log).unwrap();
+    let last: Value = serde_json::from_str(text.lines().last().unwrap()).unwrap();
+    assert!(
+        last["answer"].as_str().unwrap().starts_with("99 999"),
+        "{last}"
+    );
+}
+
+/// The length of the answer a line of the rotation test stands for: "I " and 5,000 nines.
+fn line_answer_len(v: &Value) -> usize {
+    let prefix = v["answer"].as_str().unwrap();
+    let number = prefix.split(' ').next().unwrap();
+    number.len() + 1 + 5000
+}

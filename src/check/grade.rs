@@ -355,18 +355,23 @@ impl Cache<'_> {
     }
 }
 
-/// Grades the CSV file at `path` (`-`: standard input).
+/// Grades the CSV file at `path` (`-`: standard input), the whole report in memory (the
+/// command streams it instead: [`read_submissions`], [`Graded`]).
 pub fn grade_file(path: &Path, options: &Options) -> Result<Report, Unreadable> {
+    let bytes = read_submissions(path, options)?;
+    Ok(grade_bytes(&bytes, options))
+}
+
+/// The bytes of the submissions file at `path` (`-`: standard input), refused when larger than
+/// [`MAX_SUBMISSIONS_BYTES`] or when it has more than [`MAX_ROWS`] rows (a header is not a row:
+/// a header and 1,000,000 rows are read).
+pub fn read_submissions(path: &Path, options: &Options) -> Result<Vec<u8>, Unreadable> {
     let bytes = crate::problem::read_limited(path, MAX_SUBMISSIONS_BYTES, "a submissions file")
         .map_err(|source| Unreadable {
             path: path.to_owned(),
             source,
         })?;
-    // Each row costs a few hundred bytes in the report: a file of tiny rows is bounded by rows.
-    let rows = lines(&decode(&bytes))
-        .filter(|(_, l)| !l.iter().all(u8::is_ascii_whitespace))
-        .count();
-    if rows as u64 > MAX_ROWS {
+    if data_rows(&decode(&bytes), options) > MAX_ROWS {
         return Err(Unreadable {
             path: path.to_owned(),
             source: std::io::Error::new(
@@ -378,7 +383,27 @@ pub fn grade_file(path: &Path, options: &Options) -> Result<Report, Unreadable> 
             ),
         });
     }
-    Ok(grade_bytes(&bytes, options))
+    Ok(bytes)
+}
+
+/// The lines of `text` that hold data, but a header: a plain CSV's first such line when it
+/// names the columns, a Moodle export's header line.
+fn data_rows(text: &[u8], options: &Options) -> u64 {
+    let mut data = lines(text)
+        .map(|(_, l)| l)
+        .filter(|l| !l.iter().all(u8::is_ascii_whitespace));
+    let Some(first) = data.next() else {
+        return 0;
+    };
+    let moodle = match options.input {
+        Input::Moodle => true,
+        Input::Csv => false,
+        Input::Auto => super::moodle::is_responses(text),
+    };
+    let d = options.delimiter.unwrap_or_else(|| delimiter(text));
+    let is_header =
+        moodle || fields(first, d).is_ok_and(|f| matches!(header(&f), First::Header(_)));
+    1 + data.count() as u64 - u64::from(is_header)
 }
 
 /// The most rows a submissions file may have: 1,000,000 (a class of 1,000 students answering 50
@@ -714,76 +739,355 @@ fn visible(text: &str) -> String {
 
 /// Grades CSV text (bytes, so that a row of bad UTF-8 is reported rather than fatal). Every
 /// line that holds data is one row of the report, in order, whatever is wrong with it; blank
-/// lines and a header are not rows.
+/// lines and a header are not rows. The whole report is in memory; [`Graded`] gives the same
+/// rows one at a time.
 pub fn grade_bytes(bytes: &[u8], options: &Options) -> Report {
-    let decoded = decode(bytes);
-    let moodle = match options.input {
-        Input::Moodle => true,
-        Input::Csv => false,
-        Input::Auto => super::moodle::is_responses(&decoded),
-    };
-    let mut forced = options.delimiter;
-    let text = if moodle {
-        let questions = if options.questions.is_empty() {
-            folder_exercises(&options.exercises)
-        } else {
-            options.questions.clone()
+    Graded::new(bytes, options).report()
+}
+
+/// A row's place in the text, and the answers it is counted among.
+#[derive(Clone, Copy, Debug)]
+struct At {
+    /// The offset of the line in the text.
+    start: usize,
+    /// The line's number (from 1).
+    line: u64,
+    /// The line's length.
+    len: u32,
+    /// Its [`Group`], or [`NO_STUDENT`], or [`UNCOUNTED`].
+    group: u32,
+}
+
+/// A row without a student: it counts for no one.
+const NO_STUDENT: u32 = u32::MAX;
+/// A row that counts for no one from the start: a header phong refuses, a Moodle export that
+/// cannot be read.
+const UNCOUNTED: u32 = u32::MAX - 1;
+
+/// One student's answers to one exercise: the row that counts (`--duplicates`).
+#[derive(Clone, Copy, Debug)]
+struct Group {
+    student: u32,
+    /// The exercise (without `.json`), an index in [`Graded::exercise_names`].
+    exercise: u32,
+    /// The row that counts.
+    winner: u32,
+    /// Its points.
+    points: f64,
+    /// The student's next group ([`NO_STUDENT`]: none).
+    next: u32,
+}
+
+/// The students in the order they first appear: their names end to end (one allocation, not
+/// one per student), and while the rows are read, an index from a name's hash.
+#[derive(Debug, Default)]
+struct Students {
+    names: String,
+    ends: Vec<usize>,
+    /// Each student's first group ([`NO_STUDENT`]: none yet).
+    first_group: Vec<u32>,
+    by_hash: std::collections::HashMap<u64, u32>,
+    /// The students whose name's hash another name has.
+    collided: std::collections::HashMap<String, u32>,
+}
+
+impl Students {
+    fn len(&self) -> usize {
+        self.ends.len()
+    }
+
+    fn name(&self, s: usize) -> &str {
+        let start = if s == 0 { 0 } else { self.ends[s - 1] };
+        &self.names[start..self.ends[s]]
+    }
+
+    /// The student named `name`, added if new.
+    fn id(&mut self, name: &str) -> u32 {
+        use std::hash::{Hash, Hasher};
+        let mut h = std::collections::hash_map::DefaultHasher::new();
+        name.hash(&mut h);
+        let hash = h.finish();
+        match self.by_hash.get(&hash) {
+            Some(&s) if self.name(s as usize) == name => s,
+            Some(_) => match self.collided.get(name) {
+                Some(&s) => s,
+                None => {
+                    let s = self.push(name);
+                    self.collided.insert(name.to_owned(), s);
+                    s
+                }
+            },
+            None => {
+                let s = self.push(name);
+                self.by_hash.insert(hash, s);
+                s
+            }
+        }
+    }
+
+    fn push(&mut self, name: &str) -> u32 {
+        self.names.push_str(name);
+        self.ends.push(self.names.len());
+        self.first_group.push(NO_STUDENT);
+        (self.ends.len() - 1) as u32
+    }
+}
+
+/// The submissions graded, kept as little as the reports need: each row's place in the text
+/// (a row is graded again, from its line, when it is written), the row that counts for each
+/// student's exercise, the summary per exercise and the students. A report is then written one
+/// row at a time ([`Graded::row`]), in bounded memory whatever the number of rows: 1,000,000
+/// rows take tens of bytes each, not the kilobytes of their [`RowOut`].
+pub struct Graded<'a> {
+    options: &'a Options,
+    text: Cow<'a, [u8]>,
+    delimiter: u8,
+    layout: Layout,
+    /// Why the first line is a header phong refuses (row 1), or why the Moodle export cannot be
+    /// read (the only row).
+    refused: Option<String>,
+    cache: std::cell::RefCell<Cache<'a>>,
+    at: Vec<At>,
+    groups: Vec<Group>,
+    exercise_names: Vec<String>,
+    students: Students,
+    summary: Vec<SummaryOut>,
+    exercises: BTreeMap<String, f64>,
+    max_points: f64,
+}
+
+impl<'a> Graded<'a> {
+    /// Reads and grades `bytes` (the submissions file), as [`grade_bytes`] does.
+    pub fn new(bytes: &'a [u8], options: &'a Options) -> Graded<'a> {
+        let decoded = decode(bytes);
+        let moodle = match options.input {
+            Input::Moodle => true,
+            Input::Csv => false,
+            Input::Auto => super::moodle::is_responses(&decoded),
         };
-        forced = Some(b',');
-        match super::moodle::to_rows(&decoded, &questions) {
-            Ok(rows) => Cow::Owned(rows),
-            Err(why) => {
-                let mut row = blank_row(1, 1);
-                row.counted = false;
-                mark_invalid(&mut row, why, options.lang);
-                let rows = vec![row];
-                return Report {
-                    format_version: CHECK_FORMAT_VERSION,
-                    summary: summarise(&rows),
-                    rows,
-                    exercises: BTreeMap::new(),
-                    students: Vec::new(),
+        let mut forced = options.delimiter;
+        let mut refused = None;
+        let text = if moodle {
+            let questions = if options.questions.is_empty() {
+                folder_exercises(&options.exercises)
+            } else {
+                options.questions.clone()
+            };
+            forced = Some(b',');
+            match super::moodle::to_rows(&decoded, &questions) {
+                Ok(rows) => Cow::Owned(rows),
+                Err(why) => {
+                    refused = Some(why);
+                    Cow::Owned(Vec::new())
+                }
+            }
+        } else {
+            decoded
+        };
+        let d = forced.unwrap_or_else(|| delimiter(&text));
+        let mut graded = Graded {
+            options,
+            delimiter: d,
+            layout: Layout::default(),
+            cache: std::cell::RefCell::new(Cache {
+                options,
+                folder: std::fs::canonicalize(&options.exercises).ok(),
+                solved: BTreeMap::new(),
+            }),
+            at: Vec::new(),
+            groups: Vec::new(),
+            exercise_names: Vec::new(),
+            students: Students::default(),
+            summary: Vec::new(),
+            exercises: BTreeMap::new(),
+            max_points: 0.0,
+            refused: None,
+            text,
+        };
+        if let Some(why) = refused {
+            graded.refused = Some(why);
+            graded.at.push(At {
+                start: 0,
+                line: 1,
+                len: 0,
+                group: UNCOUNTED,
+            });
+        } else {
+            graded.find_rows();
+        }
+        graded.grade();
+        graded
+    }
+
+    /// Where each row is: every line that holds data, but a header.
+    fn find_rows(&mut self) {
+        let d = self.delimiter;
+        let text: &[u8] = &self.text;
+        let base = text.as_ptr() as usize;
+        let mut at = Vec::new();
+        let mut first = true;
+        for (line, content) in lines(text) {
+            if is_blank(content, d) {
+                continue;
+            }
+            let mut group = 0;
+            if std::mem::take(&mut first) {
+                match fields(content, d).as_ref().map(|f| header(f)) {
+                    Ok(First::Header(l)) => {
+                        self.layout = l;
+                        continue;
+                    }
+                    // Reported in the header's place (no line is dropped); the rows after it
+                    // are read as student, exercise, answer. It is no student's.
+                    Ok(First::BadHeader(why)) => {
+                        self.refused = Some(why);
+                        group = UNCOUNTED;
+                    }
+                    _ => {}
+                }
+            }
+            at.push(At {
+                start: content.as_ptr() as usize - base,
+                line,
+                len: u32::try_from(content.len()).unwrap_or(u32::MAX),
+                group,
+            });
+        }
+        self.at = at;
+    }
+
+    /// Grades every row once: the summary per exercise, the row that counts for each student's
+    /// exercise, the students and the exercises.
+    fn grade(&mut self) {
+        let mut tallies: BTreeMap<String, (SummaryOut, BTreeMap<Vec<Slip>, usize>)> =
+            BTreeMap::new();
+        let mut exercise_ids: BTreeMap<String, u32> = BTreeMap::new();
+        for i in 0..self.at.len() {
+            let r = self.graded_row(i);
+            // The summary.
+            let key = exercise_key(&r.exercise);
+            if !tallies.contains_key(key) {
+                let summary = SummaryOut {
+                    exercise: key.to_owned(),
+                    ..SummaryOut::default()
                 };
+                tallies.insert(key.to_owned(), (summary, BTreeMap::new()));
             }
-        }
-    } else {
-        decoded
-    };
-    let d = forced.unwrap_or_else(|| delimiter(&text));
-    let mut cache = Cache {
-        options,
-        folder: std::fs::canonicalize(&options.exercises).ok(),
-        solved: BTreeMap::new(),
-    };
-    let mut rows = Vec::new();
-    let mut layout = Layout::default();
-    let mut first = true;
-    for (line, content) in lines(&text) {
-        if is_blank(content, d) {
-            continue;
-        }
-        let parsed = fields(content, d);
-        if std::mem::take(&mut first) {
-            match parsed.as_ref().map(|f| header(f)) {
-                Ok(First::Header(l)) => {
-                    layout = l;
-                    continue;
-                }
-                // Reported in the header's place (no line is dropped); the rows after it are
-                // read as student, exercise, answer. It is no student's.
-                Ok(First::BadHeader(why)) => {
-                    let mut row = blank_row(rows.len() + 1, line);
-                    row.counted = false;
-                    mark_invalid(&mut row, why, options.lang);
-                    rows.push(row);
-                    continue;
-                }
-                _ => {}
+            let (summary, slips) = tallies.get_mut(key).expect("inserted above");
+            summary.rows += 1;
+            match r.verdict {
+                "right" => summary.right += 1,
+                "reading" => summary.reading += 1,
+                "wrong" => summary.wrong += 1,
+                _ => summary.invalid += 1,
             }
+            for d in &r.diagnosis {
+                match slips.get_mut(d.as_slice()) {
+                    Some(n) => *n += 1,
+                    None => {
+                        slips.insert(d.clone(), 1);
+                    }
+                }
+            }
+            // The row that counts.
+            if self.at[i].group == UNCOUNTED {
+                continue;
+            }
+            if r.student.is_empty() {
+                self.at[i].group = NO_STUDENT;
+                continue;
+            }
+            let student = self.students.id(&r.student);
+            let exercise = match exercise_ids.get(key) {
+                Some(&e) => e,
+                None => {
+                    let e = self.exercise_names.len() as u32;
+                    self.exercise_names.push(key.to_owned());
+                    exercise_ids.insert(key.to_owned(), e);
+                    e
+                }
+            };
+            let mut g = self.students.first_group[student as usize];
+            while g != NO_STUDENT && self.groups[g as usize].exercise != exercise {
+                g = self.groups[g as usize].next;
+            }
+            let row = i as u32;
+            if g == NO_STUDENT {
+                g = self.groups.len() as u32;
+                self.groups.push(Group {
+                    student,
+                    exercise,
+                    winner: row,
+                    points: r.points,
+                    next: self.students.first_group[student as usize],
+                });
+                self.students.first_group[student as usize] = g;
+            } else {
+                let group = &mut self.groups[g as usize];
+                let replaces = match self.options.duplicates {
+                    Duplicates::First => false,
+                    Duplicates::Last => true,
+                    // The most points; the first of those on a tie.
+                    Duplicates::Best => r.points > group.points,
+                };
+                if replaces {
+                    group.winner = row;
+                    group.points = r.points;
+                }
+            }
+            self.at[i].group = g;
         }
-        let mut row = blank_row(rows.len() + 1, line);
-        match parsed {
-            Ok(f) => grade_row(&mut row, &f, &layout, d, options, &mut cache),
+        self.students.by_hash = Default::default();
+        self.students.collided = Default::default();
+        let mut summary: Vec<SummaryOut> = tallies
+            .into_values()
+            .map(|(mut summary, slips)| {
+                let mut counts: Vec<SlipCount> = slips
+                    .into_iter()
+                    .map(|(slips, count)| SlipCount { slips, count })
+                    .collect();
+                // Most common first, then single slips before pairs, then the slips' order:
+                // stable.
+                counts.sort_by(|a, b| {
+                    (b.count, a.slips.len(), &a.slips).cmp(&(a.count, b.slips.len(), &b.slips))
+                });
+                summary.slips = counts;
+                summary
+            })
+            .collect();
+        summary.sort_by(|a, b| natural_order(&a.exercise, &b.exercise));
+        self.summary = summary;
+        let options = self.options;
+        let mut exercises: BTreeMap<String, f64> = self
+            .cache
+            .borrow()
+            .solved
+            .iter()
+            .filter(|(_, e)| e.is_ok())
+            .map(|(k, _)| (k.clone(), options.rubric.points_of(k)))
+            .collect();
+        for (k, &p) in &options.rubric.points {
+            exercises.insert(k.clone(), p);
+        }
+        self.max_points = exercises.values().sum();
+        self.exercises = exercises;
+    }
+
+    /// Row `i` graded from its line, before the students' answers are counted.
+    fn graded_row(&self, i: usize) -> RowOut {
+        let at = self.at[i];
+        let options = self.options;
+        let mut row = blank_row(i + 1, at.line);
+        if let (Some(why), UNCOUNTED) = (&self.refused, at.group) {
+            row.counted = false;
+            mark_invalid(&mut row, why.clone(), options.lang);
+            return row;
+        }
+        let content = &self.text[at.start..at.start + at.len as usize];
+        let d = self.delimiter;
+        let cache = &mut *self.cache.borrow_mut();
+        match fields(content, d) {
+            Ok(f) => grade_row(&mut row, &f, &self.layout, d, options, cache),
             Err(e) => {
                 // The student and the exercise as the line starts, so that the row stands under
                 // its student's exercise (in the totals and the platforms' reports) rather than
@@ -791,7 +1095,7 @@ pub fn grade_bytes(bytes: &[u8], options: &Options) -> Report {
                 let mut cells = content.split(|&b| b == d).map(unquote);
                 row.student = echo(cells.next().unwrap_or_default());
                 row.exercise = echo(cells.next().unwrap_or_default());
-                if let Some(point) = comma_exercise(&row.exercise, &mut cache) {
+                if let Some(point) = comma_exercise(&row.exercise, cache) {
                     row.exercise = point;
                 }
                 if !row.exercise.is_empty() && cache.get(&row.exercise).is_ok() {
@@ -801,98 +1105,172 @@ pub fn grade_bytes(bytes: &[u8], options: &Options) -> Report {
                 mark_invalid(&mut row, reason, options.lang);
             }
         }
-        rows.push(row);
+        row
     }
-    let summary = summarise(&rows);
-    let mut exercises: BTreeMap<String, f64> = cache
-        .solved
-        .iter()
-        .filter(|(_, e)| e.is_ok())
-        .map(|(k, _)| (k.clone(), options.rubric.points_of(k)))
-        .collect();
-    for (k, &p) in &options.rubric.points {
-        exercises.insert(k.clone(), p);
-    }
-    let students = count_duplicates(&mut rows, &exercises, options);
-    Report {
-        format_version: CHECK_FORMAT_VERSION,
-        rows,
-        summary,
-        exercises,
-        students,
-    }
-}
 
-/// Marks the rows that do not count (a student's other answers to an exercise, by
-/// `options.duplicates`; rows without a student) and sums each student's points.
-fn count_duplicates(
-    rows: &mut [RowOut],
-    exercises: &BTreeMap<String, f64>,
-    options: &Options,
-) -> Vec<StudentOut> {
-    let lang = options.lang;
-    // (student, exercise) → the indices of its rows, in order; students in order of appearance.
-    let mut groups: BTreeMap<(String, String), Vec<usize>> = BTreeMap::new();
-    let mut order: Vec<String> = Vec::new();
-    let mut seen: BTreeMap<String, usize> = BTreeMap::new();
-    for (i, r) in rows.iter_mut().enumerate() {
-        // A row that counts for no one from the start: a header phong refuses.
-        if !r.counted {
-            continue;
-        }
-        if r.student.is_empty() {
-            r.counted = false;
-            r.feedback.insert_str(0, messages::no_student(lang));
-            continue;
-        }
-        if !seen.contains_key(&r.student) {
-            seen.insert(r.student.clone(), order.len());
-            order.push(r.student.clone());
-        }
-        groups
-            .entry((r.student.clone(), exercise_key(&r.exercise).to_owned()))
-            .or_default()
-            .push(i);
+    /// The number of rows.
+    pub fn len(&self) -> usize {
+        self.at.len()
     }
-    let mut students: Vec<StudentOut> = order
-        .iter()
-        .map(|s| StudentOut {
-            student: s.clone(),
-            points: 0.0,
-            max_points: exercises.values().sum(),
-            exercises: exercises.keys().map(|k| (k.clone(), None)).collect(),
-            rows: BTreeMap::new(),
-        })
-        .collect();
-    for ((student, exercise), list) in groups {
-        let counts = match options.duplicates {
-            Duplicates::First => list[0],
-            Duplicates::Last => list[list.len() - 1],
-            // The most points; the first of those on a tie (`max_by` would keep the last).
-            Duplicates::Best => list.iter().copied().fold(list[0], |best, i| {
-                if rows[i].points > rows[best].points {
-                    i
-                } else {
-                    best
+
+    /// Whether there is no row.
+    pub fn is_empty(&self) -> bool {
+        self.at.is_empty()
+    }
+
+    /// Row `i` (from 0) as the report gives it: graded, and marked when it does not count (a
+    /// student's other answer to an exercise, by `--duplicates`; a row without a student).
+    pub fn row(&self, i: usize) -> RowOut {
+        let mut r = self.graded_row(i);
+        let lang = self.options.lang;
+        match self.at[i].group {
+            UNCOUNTED => {}
+            NO_STUDENT => {
+                r.counted = false;
+                r.feedback.insert_str(0, messages::no_student(lang));
+            }
+            g => {
+                let winner = self.groups[g as usize].winner as usize;
+                if winner != i {
+                    r.counted = false;
+                    let note =
+                        messages::not_counted(winner + 1, self.options.duplicates.word(), lang);
+                    r.feedback.insert_str(0, &note);
                 }
-            }),
-        };
-        for &i in &list {
-            if i != counts {
-                rows[i].counted = false;
-                let note = messages::not_counted(rows[counts].row, options.duplicates.word(), lang);
-                rows[i].feedback.insert_str(0, &note);
             }
         }
-        let s = &mut students[seen[&student]];
-        if exercises.contains_key(&exercise) {
-            s.points += rows[counts].points;
-            s.exercises
-                .insert(exercise.clone(), Some(rows[counts].points));
-            s.rows.insert(exercise, counts);
+        r
+    }
+
+    /// The rows, in input order, each graded as it is asked for.
+    pub fn rows(&self) -> impl Iterator<Item = RowOut> + use<'_, 'a> {
+        (0..self.len()).map(|i| self.row(i))
+    }
+
+    /// One entry per exercise, in natural order (4.2 before 4.10).
+    pub fn summary(&self) -> &[SummaryOut] {
+        &self.summary
+    }
+
+    /// The exercises graded, in name order, with their points.
+    pub fn exercises(&self) -> &BTreeMap<String, f64> {
+        &self.exercises
+    }
+
+    /// The number of students.
+    pub fn students(&self) -> usize {
+        self.students.len()
+    }
+
+    /// The name of student `s` (from 0, in the order they first appear).
+    pub fn student_name(&self, s: usize) -> &str {
+        self.students.name(s)
+    }
+
+    /// Student `s`'s total.
+    pub fn student(&self, s: usize) -> StudentOut {
+        // The student's exercises in name order: their points are added in that order.
+        let mut groups = Vec::new();
+        let mut g = self.students.first_group[s];
+        while g != NO_STUDENT {
+            groups.push(&self.groups[g as usize]);
+            g = self.groups[g as usize].next;
+        }
+        groups.sort_by(|a, b| {
+            self.exercise_names[a.exercise as usize].cmp(&self.exercise_names[b.exercise as usize])
+        });
+        let mut out = StudentOut {
+            student: self.students.name(s).to_owned(),
+            points: 0.0,
+            max_points: self.max_points,
+            exercises: self.exercises.keys().map(|k| (k.clone(), None)).collect(),
+            rows: BTreeMap::new(),
+        };
+        for group in groups {
+            let exercise = &self.exercise_names[group.exercise as usize];
+            if self.exercises.contains_key(exercise) {
+                out.points += group.points;
+                out.exercises.insert(exercise.clone(), Some(group.points));
+                out.rows.insert(exercise.clone(), group.winner as usize);
+            }
+        }
+        out
+    }
+
+    /// Each student's rows (the indices of their rows, in input order), and the rows without
+    /// a student.
+    pub(crate) fn rows_by_student(&self) -> (Vec<Vec<u32>>, Vec<u32>) {
+        let mut by: Vec<Vec<u32>> = vec![Vec::new(); self.students()];
+        let mut nobody = Vec::new();
+        for (i, at) in self.at.iter().enumerate() {
+            match at.group {
+                NO_STUDENT | UNCOUNTED => nobody.push(i as u32),
+                g => by[self.groups[g as usize].student as usize].push(i as u32),
+            }
+        }
+        (by, nobody)
+    }
+
+    /// The whole report in memory.
+    pub fn report(&self) -> Report {
+        Report {
+            format_version: CHECK_FORMAT_VERSION,
+            rows: self.rows().collect(),
+            summary: self.summary.clone(),
+            exercises: self.exercises.clone(),
+            students: (0..self.students()).map(|s| self.student(s)).collect(),
         }
     }
-    students
+
+    /// The report as JSON, as [`Report`] serialises, written to `w` one row at a time.
+    pub fn write_json(&self, w: &mut dyn std::io::Write) -> std::io::Result<()> {
+        /// A sequence serialised as its items are made.
+        struct Lazy<I>(std::cell::RefCell<Option<I>>);
+        impl<I: Iterator<Item = T>, T: Serialize> Serialize for Lazy<I> {
+            fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+                let items = self.0.borrow_mut().take().expect("serialised once");
+                s.collect_seq(items)
+            }
+        }
+        #[derive(Serialize)]
+        struct Streamed<'r, R: Serialize, S: Serialize> {
+            format_version: u32,
+            rows: R,
+            summary: &'r [SummaryOut],
+            exercises: &'r BTreeMap<String, f64>,
+            students: S,
+        }
+        let doc = Streamed {
+            format_version: CHECK_FORMAT_VERSION,
+            rows: Lazy(std::cell::RefCell::new(Some(self.rows()))),
+            summary: &self.summary,
+            exercises: &self.exercises,
+            students: Lazy(std::cell::RefCell::new(Some(
+                (0..self.students()).map(|s| self.student(s)),
+            ))),
+        };
+        serde_json::to_writer_pretty(&mut *w, &doc).map_err(std::io::Error::from)?;
+        w.write_all(b"\n")
+    }
+
+    /// The per-row report as CSV ([`rows_csv`]), written to `w` one row at a time.
+    pub fn write_rows_csv(&self, w: &mut dyn std::io::Write) -> std::io::Result<()> {
+        write_rows_csv(w, self.rows())
+    }
+
+    /// The summary per exercise as CSV.
+    pub fn write_summary_csv(&self, w: &mut dyn std::io::Write) -> std::io::Result<()> {
+        write_summary_csv(w, &self.summary)
+    }
+
+    /// Each student's total as CSV ([`students_csv`]), one student at a time.
+    pub fn write_students_csv(&self, w: &mut dyn std::io::Write) -> std::io::Result<()> {
+        write_students_csv(
+            w,
+            &self.exercises,
+            (0..self.students()).map(|s| self.student(s)),
+        )
+    }
 }
 
 /// A row that cannot be judged: its reason, and feedback saying so (with its exercise's points
@@ -1160,58 +1538,6 @@ fn looks_8bit(v: &[f64; 3]) -> bool {
         && v.iter().any(|&x| x > 1.0)
 }
 
-/// One exercise's rows as they are counted: the summary, and how often each diagnosis occurs.
-struct Tally<'a> {
-    summary: SummaryOut,
-    slips: BTreeMap<&'a [Slip], usize>,
-}
-
-/// One summary per exercise named by the rows, in natural order (4.2 before 4.10): its rows by
-/// verdict and its wrong rows' diagnoses, most common first.
-fn summarise(rows: &[RowOut]) -> Vec<SummaryOut> {
-    let mut by: BTreeMap<&str, Tally> = BTreeMap::new();
-    for r in rows {
-        let key = exercise_key(&r.exercise);
-        let Tally { summary, slips } = by.entry(key).or_insert_with(|| Tally {
-            summary: SummaryOut {
-                exercise: key.to_owned(),
-                ..SummaryOut::default()
-            },
-            slips: BTreeMap::new(),
-        });
-        summary.rows += 1;
-        match r.verdict {
-            "right" => summary.right += 1,
-            "reading" => summary.reading += 1,
-            "wrong" => summary.wrong += 1,
-            _ => summary.invalid += 1,
-        }
-        for d in &r.diagnosis {
-            *slips.entry(d.as_slice()).or_default() += 1;
-        }
-    }
-    let mut out = by
-        .into_values()
-        .map(|Tally { mut summary, slips }| {
-            let mut counts: Vec<SlipCount> = slips
-                .into_iter()
-                .map(|(k, count)| SlipCount {
-                    slips: k.to_vec(),
-                    count,
-                })
-                .collect();
-            // Most common first, then single slips before pairs, then the slips' order: stable.
-            counts.sort_by(|a, b| {
-                (b.count, a.slips.len(), &a.slips).cmp(&(a.count, b.slips.len(), &b.slips))
-            });
-            summary.slips = counts;
-            summary
-        })
-        .collect::<Vec<_>>();
-    out.sort_by(|a, b| natural_order(&a.exercise, &b.exercise));
-    out
-}
-
 fn codes(slips: &[Slip]) -> String {
     slips.iter().map(|s| s.code()).collect::<Vec<_>>().join("+")
 }
@@ -1235,7 +1561,17 @@ pub fn safe_cell(text: &str) -> String {
 
 /// The per-row report as CSV (a header, then one line per input row, in input order).
 pub fn rows_csv(report: &Report) -> Vec<u8> {
-    let mut w = csv::Writer::from_writer(Vec::new());
+    let mut out = Vec::new();
+    write_rows_csv(&mut out, report.rows.iter()).expect("writing to memory");
+    out
+}
+
+/// The per-row report as CSV ([`rows_csv`]) of `rows`, written to `out` as they come.
+fn write_rows_csv<R: std::borrow::Borrow<RowOut>>(
+    out: &mut dyn std::io::Write,
+    rows: impl Iterator<Item = R>,
+) -> std::io::Result<()> {
+    let mut w = csv::Writer::from_writer(out);
     let header = [
         "row",
         "line",
@@ -1263,8 +1599,9 @@ pub fn rows_csv(report: &Report) -> Vec<u8> {
         "step_verdicts",
         "first_wrong_step",
     ];
-    w.write_record(header).expect("writing to memory");
-    for r in &report.rows {
+    w.write_record(header)?;
+    for r in rows {
+        let r: &RowOut = r.borrow();
         let three = |v: Option<[f64; 3]>| {
             v.map_or([String::new(), String::new(), String::new()], |v| {
                 v.map(number)
@@ -1313,10 +1650,9 @@ pub fn rows_csv(report: &Report) -> Vec<u8> {
                 .as_ref()
                 .and_then(|s| s.first_wrong.as_ref())
                 .map_or(String::new(), |f| step_label(f.name, f.light)),
-        ])
-        .expect("writing to memory");
+        ])?;
     }
-    w.into_inner().expect("writing to memory")
+    w.flush()
 }
 
 /// A step's name with its light: `cos_theta[0]`.
@@ -1351,14 +1687,13 @@ fn step_verdicts(s: &StepsOut) -> String {
         .join("; ")
 }
 
-/// The summary per exercise as CSV.
-pub(crate) fn summary_csv(report: &Report) -> Vec<u8> {
-    let mut w = csv::Writer::from_writer(Vec::new());
+/// The summary per exercise as CSV, written to `out`.
+fn write_summary_csv(out: &mut dyn std::io::Write, summary: &[SummaryOut]) -> std::io::Result<()> {
+    let mut w = csv::Writer::from_writer(out);
     w.write_record([
         "exercise", "rows", "right", "reading", "wrong", "invalid", "slips",
-    ])
-    .expect("writing to memory");
-    for s in &report.summary {
+    ])?;
+    for s in summary {
         let slips = s
             .slips
             .iter()
@@ -1373,23 +1708,35 @@ pub(crate) fn summary_csv(report: &Report) -> Vec<u8> {
             s.wrong.to_string(),
             s.invalid.to_string(),
             slips,
-        ])
-        .expect("writing to memory");
+        ])?;
     }
-    w.into_inner().expect("writing to memory")
+    w.flush()
 }
 
 /// Each student's total as CSV: `student, points, max_points`, then one column per exercise in
 /// natural order, 4.2 before 4.10 (the points of the answer that counts; empty: no answer),
 /// students in the order they first appear.
 pub fn students_csv(report: &Report) -> Vec<u8> {
-    let mut w = csv::Writer::from_writer(Vec::new());
+    let mut out = Vec::new();
+    write_students_csv(&mut out, &report.exercises, report.students.iter())
+        .expect("writing to memory");
+    out
+}
+
+/// Each student's total as CSV ([`students_csv`]), written to `out` one student at a time.
+fn write_students_csv<S: std::borrow::Borrow<StudentOut>>(
+    out: &mut dyn std::io::Write,
+    exercises: &BTreeMap<String, f64>,
+    students: impl Iterator<Item = S>,
+) -> std::io::Result<()> {
+    let mut w = csv::Writer::from_writer(out);
     let mut header = vec!["student".to_owned(), "points".into(), "max_points".into()];
-    let mut exercises: Vec<&String> = report.exercises.keys().collect();
+    let mut exercises: Vec<&String> = exercises.keys().collect();
     exercises.sort_by(|a, b| natural_order(a, b));
     header.extend(exercises.iter().map(|k| safe_cell(k)));
-    w.write_record(&header).expect("writing to memory");
-    for s in &report.students {
+    w.write_record(&header)?;
+    for s in students {
+        let s: &StudentOut = s.borrow();
         let mut line = vec![
             safe_cell(&s.student),
             number(s.points),
@@ -1402,7 +1749,7 @@ pub fn students_csv(report: &Report) -> Vec<u8> {
                 .flatten()
                 .map_or(String::new(), number)
         }));
-        w.write_record(&line).expect("writing to memory");
+        w.write_record(&line)?;
     }
-    w.into_inner().expect("writing to memory")
+    w.flush()
 }

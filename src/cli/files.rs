@@ -1,6 +1,9 @@
-//! Output files written safely (README, "Limits and safety"): `-` is standard output; a
+//! Output files written safely (README, "Limits and safety"): `-` is standard output; a path
+//! that names one of the program's own streams (`/dev/stdout`, `/dev/stderr`, `/dev/fd/N`,
+//! `/proc/self/fd/N`, as given or through links) is written into that stream, after what it
+//! already holds, never replacing or truncating the file it may be redirected to; a
 //! symbolic link is followed and its target replaced; a target that is not a regular file (a
-//! device such as `/dev/null`, a FIFO, `/dev/stdout`) is written directly, never replaced; a
+//! device such as `/dev/null`, a FIFO) is written directly, never replaced; a
 //! folder is refused; a regular file is replaced atomically (a temporary file in the same folder,
 //! renamed into place, so a failure never leaves a half-written file); a new file gets the
 //! permissions the umask allows (0666 less the umask), an existing one keeps its own. The
@@ -45,23 +48,123 @@ fn is_a_folder() -> std::io::Error {
     )
 }
 
-/// Writes `bytes` to `path`: a regular file (or a new one) atomically, anything else directly.
-pub(crate) fn write_target(path: &Path, bytes: &[u8]) -> std::io::Result<()> {
+/// The file descriptor of this process that `path` names, as given or through its links:
+/// `/dev/stdin`, `/dev/stdout`, `/dev/stderr` (0, 1, 2), `/dev/fd/N`, `/proc/self/fd/N`,
+/// `/proc/thread-self/fd/N` or `/proc/PID/fd/N` with this process's PID. `None` for any other
+/// path.
+pub(crate) fn stream_of(path: &Path) -> Option<u32> {
+    let mut p = path.to_owned();
+    for _ in 0..40 {
+        if let Some(fd) = fd_named(&p) {
+            return Some(fd);
+        }
+        // A relative path, or one through `..`, named by its folder's real path.
+        if let (Some(dir), Some(name)) = (p.parent(), p.file_name()) {
+            let dir = if dir.as_os_str().is_empty() {
+                Path::new(".")
+            } else {
+                dir
+            };
+            if let Some(fd) = std::fs::canonicalize(dir)
+                .ok()
+                .and_then(|d| fd_named(&d.join(name)))
+            {
+                return Some(fd);
+            }
+        }
+        match std::fs::symlink_metadata(&p) {
+            Ok(m) if m.file_type().is_symlink() => {
+                let to = std::fs::read_link(&p).ok()?;
+                p = match p.parent() {
+                    Some(dir) if to.is_relative() => dir.join(to),
+                    _ => to,
+                };
+            }
+            _ => return None,
+        }
+    }
+    None
+}
+
+/// The file descriptor `path` names as written (see [`stream_of`]).
+fn fd_named(path: &Path) -> Option<u32> {
+    let text = path.to_str()?;
+    match text {
+        "/dev/stdin" => return Some(0),
+        "/dev/stdout" => return Some(1),
+        "/dev/stderr" => return Some(2),
+        _ => {}
+    }
+    let own = format!("/proc/{}/fd/", std::process::id());
+    let number = [
+        "/dev/fd/",
+        "/proc/self/fd/",
+        "/proc/thread-self/fd/",
+        own.as_str(),
+    ]
+    .iter()
+    .find_map(|prefix| text.strip_prefix(prefix))?;
+    if number.is_empty() || !number.bytes().all(|b| b.is_ascii_digit()) {
+        return None;
+    }
+    number.parse().ok()
+}
+
+/// Writes to the program's file descriptor `fd` whatever `write` writes: standard output and
+/// standard error through Rust's own handles (so that the bytes come in order with the
+/// program's other output), another descriptor opened for appending, so that what the file
+/// it may be redirected to holds is kept. A reader that has gone (EPIPE) is not an error of
+/// ours.
+fn to_stream(fd: u32, write: Writer<'_>) -> std::io::Result<()> {
+    let result = match fd {
+        1 => {
+            let mut out = std::io::BufWriter::new(std::io::stdout().lock());
+            write(&mut out).and_then(|()| out.flush())
+        }
+        2 => {
+            let mut out = std::io::BufWriter::new(std::io::stderr().lock());
+            write(&mut out).and_then(|()| out.flush())
+        }
+        n => {
+            let file = std::fs::OpenOptions::new()
+                .append(true)
+                .open(format!("/proc/self/fd/{n}"))?;
+            let mut out = std::io::BufWriter::new(file);
+            write(&mut out).and_then(|()| out.flush())
+        }
+    };
+    match result {
+        Err(e) if e.kind() == std::io::ErrorKind::BrokenPipe => Ok(()),
+        other => other,
+    }
+}
+
+/// What writes an output's bytes, to whatever it is given.
+pub(crate) type Writer<'a> = &'a mut dyn FnMut(&mut dyn Write) -> std::io::Result<()>;
+
+/// Writes to `path` what `write` writes, as it writes it: one of the program's own streams
+/// ([`stream_of`]) after what it holds; a regular file (or a new one) atomically, through a
+/// temporary file that an error removes; anything else (a device, a FIFO) directly.
+pub(crate) fn write_target_with(path: &Path, write: Writer<'_>) -> std::io::Result<()> {
+    if let Some(fd) = stream_of(path) {
+        return to_stream(fd, write);
+    }
     let target = through_links(path)?;
     match std::fs::metadata(&target) {
         Ok(m) if m.is_dir() => Err(is_a_folder()),
-        Ok(m) if m.is_file() => write_atomically(&target, bytes, Some(m.permissions())),
-        // A device, a FIFO, a terminal, /dev/stdout: written to, never replaced.
+        Ok(m) if m.is_file() => write_atomically(&target, write, Some(m.permissions())),
+        // A device, a FIFO, a terminal: written to, never replaced.
         Ok(_) => {
-            let mut f = std::fs::OpenOptions::new().write(true).open(&target)?;
-            f.write_all(bytes)?;
-            f.flush()
+            let f = std::fs::OpenOptions::new().write(true).open(&target)?;
+            let mut out = std::io::BufWriter::new(f);
+            write(&mut out)?;
+            out.flush()
         }
         Err(e) if e.kind() == std::io::ErrorKind::NotFound => {
             if path.as_os_str().to_string_lossy().ends_with('/') {
                 return Err(is_a_folder());
             }
-            write_atomically(&target, bytes, None)
+            write_atomically(&target, write, None)
         }
         Err(e) => Err(e),
     }
@@ -123,12 +226,12 @@ pub(crate) fn guard_signals() {
     }
 }
 
-/// Writes `bytes` to the regular file `path` through a temporary file in the same folder and a
-/// rename. `existing`: the permissions of the file replaced, kept; a new file is created with
+/// Writes what `write` writes to the regular file `path` through a temporary file in the same
+/// folder and a rename. `existing`: the permissions of the file replaced, kept; a new file is created with
 /// 0666 less the umask, as any program's.
 fn write_atomically(
     path: &Path,
-    bytes: &[u8],
+    write: Writer<'_>,
     existing: Option<std::fs::Permissions>,
 ) -> std::io::Result<()> {
     let dir = match path.parent() {
@@ -147,7 +250,11 @@ fn write_atomically(
         .tempfile_in(dir)
         .map_err(|e| not_in_folder(dir, e))?;
     let _pending = Pending::new(tmp.path());
-    tmp.write_all(bytes)?;
+    {
+        let mut out = std::io::BufWriter::new(tmp.as_file_mut());
+        write(&mut out)?;
+        out.flush()?;
+    }
     if let Some(p) = existing {
         tmp.as_file().set_permissions(p)?;
     }
@@ -227,10 +334,11 @@ enum FileKey {
     Path(PathBuf),
 }
 
-/// The key of a file given as an input or an output; `None` for `-` and for what is not a
-/// regular file (`/dev/null` may be given twice).
+/// The key of a file given as an input or an output; `None` for `-`, for the program's own
+/// streams (`/dev/stdout` twice writes both, in order) and for what is not a regular file
+/// (`/dev/null` may be given twice).
 fn file_key(path: &Path) -> Option<FileKey> {
-    if is_dash(path) {
+    if is_dash(path) || stream_of(path).is_some() {
         return None;
     }
     match std::fs::metadata(path) {

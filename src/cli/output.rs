@@ -34,10 +34,19 @@ pub(crate) fn emit(path: Option<&Path>, text: &str) -> Result<(), CliError> {
 /// Writes `bytes` to standard output (no path, or `-`), or atomically to `path`. A closed pipe
 /// (`phong solve … | head`) is not an error of ours.
 pub(crate) fn emit_bytes(path: Option<&Path>, bytes: &[u8]) -> Result<(), CliError> {
+    emit_with(path, &mut |w| w.write_all(bytes))
+}
+
+/// Writes to standard output (no path, or `-`), or to `path` by the rules of
+/// [`super::files`], what `write` writes, as it writes it (a report of a million rows is never
+/// whole in memory). A regular file is still replaced atomically: an error leaves it as it was.
+pub(crate) fn emit_with(
+    path: Option<&Path>,
+    write: super::files::Writer<'_>,
+) -> Result<(), CliError> {
     let result = match path {
-        None => to_stdout(bytes),
-        Some(p) if is_dash(p) => to_stdout(bytes),
-        Some(p) => super::files::write_target(p, bytes),
+        Some(p) if !is_dash(p) => super::files::write_target_with(p, write),
+        _ => to_stdout(write),
     };
     result.map_err(|e| CliError::Write {
         path: path.filter(|p| !is_dash(p)).map(Path::to_owned),
@@ -46,9 +55,9 @@ pub(crate) fn emit_bytes(path: Option<&Path>, bytes: &[u8]) -> Result<(), CliErr
 }
 
 /// Standard output; a reader that has gone (EPIPE) is not an error of ours.
-fn to_stdout(bytes: &[u8]) -> std::io::Result<()> {
-    let mut out = std::io::stdout().lock();
-    match out.write_all(bytes).and_then(|()| out.flush()) {
+fn to_stdout(write: super::files::Writer<'_>) -> std::io::Result<()> {
+    let mut out = std::io::BufWriter::new(std::io::stdout().lock());
+    match write(&mut out).and_then(|()| out.flush()) {
         Err(e) if e.kind() == std::io::ErrorKind::BrokenPipe => Ok(()),
         other => other,
     }

@@ -40,6 +40,8 @@ pub(crate) struct Config {
     pub(crate) exercises: Option<PathBuf>,
     /// Where to append each checked answer (JSON lines); without it no answer is kept.
     pub(crate) log_answers: Option<PathBuf>,
+    /// The most kB (1,000 bytes) the answers' log may hold before it is rotated to `PATH.1`.
+    pub(crate) log_answers_max_kb: u64,
     /// What one request may ask.
     pub(crate) limits: Limits,
 }
@@ -140,9 +142,11 @@ pub(crate) fn run(config: &Config) -> Result<(), StartError> {
     };
     let answers = match &config.log_answers {
         Some(path) => Some(
-            log::AnswerLog::open(path).map_err(|source| StartError::Log {
-                path: path.clone(),
-                source,
+            log::AnswerLog::open(path, config.log_answers_max_kb).map_err(|source| {
+                StartError::Log {
+                    path: path.clone(),
+                    source,
+                }
             })?,
         ),
         None => None,

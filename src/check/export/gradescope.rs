@@ -5,35 +5,37 @@
 //! exercise, an answer that does not count), its feedback saying why. Only fields of
 //! Gradescope's published list are written.
 
+use serde::ser::{SerializeMap, Serializer};
+use serde::Serialize;
 use serde_json::{json, Value};
 
 use super::super::messages;
-use super::{submissions, Submission, Test};
+use super::{Class, Submission, Submissions, Test};
 use crate::check::grade::Report;
 use crate::text::lang::Lang;
 
-/// One submission's `results.json`.
-fn results(submission: &Submission, lang: Lang) -> Value {
-    let tests: Vec<Value> = submission
-        .tests
-        .iter()
-        .map(|test| match test {
-            Test::Exercise { exercise, max, row } => {
-                let (score, passed, output) = match row {
-                    Some(r) => (r.points, r.accepted, r.feedback.clone()),
-                    None => (0.0, false, messages::no_answer(lang).to_owned()),
-                };
-                json!({
-                    "name": messages::exercise_name(exercise, lang),
-                    "number": exercise,
-                    "score": score,
-                    "max_score": max,
-                    "status": if passed { "passed" } else { "failed" },
-                    "output": output,
-                    "visibility": "visible",
-                })
-            }
-            Test::Row(r) => json!({
+/// One test of a submission, as `results.json` writes it.
+fn test_json<C: Class + ?Sized>(subs: &Submissions<C>, test: &Test, lang: Lang) -> Value {
+    let row = subs.row_of(test);
+    match test {
+        Test::Exercise { exercise, max, .. } => {
+            let (score, passed, output) = match row.as_deref() {
+                Some(r) => (r.points, r.accepted, r.feedback.clone()),
+                None => (0.0, false, messages::no_answer(lang).to_owned()),
+            };
+            json!({
+                "name": messages::exercise_name(exercise, lang),
+                "number": exercise,
+                "score": score,
+                "max_score": max,
+                "status": if passed { "passed" } else { "failed" },
+                "output": output,
+                "visibility": "visible",
+            })
+        }
+        Test::Row(_) => {
+            let r = row.as_deref().expect("a row");
+            json!({
                 "name": row_title(r, lang),
                 "number": r.exercise,
                 "score": 0.0,
@@ -41,19 +43,48 @@ fn results(submission: &Submission, lang: Lang) -> Value {
                 "status": if r.accepted && r.counted { "passed" } else { "failed" },
                 "output": r.feedback,
                 "visibility": "visible",
-            }),
-        })
-        .collect();
-    json!({
-        "score": submission.points,
-        "output": format!(
-            "{}: {}",
-            submission.student,
-            messages::total(submission.points, submission.max_points, lang)
-        ),
-        "visibility": "visible",
-        "tests": tests,
-    })
+            })
+        }
+    }
+}
+
+/// One submission's `results.json`, its tests made as they are written. Its keys in the order
+/// a `serde_json::Value` object writes them (sorted).
+struct Results<'s, 'a, C: Class + ?Sized> {
+    subs: &'s Submissions<'a, C>,
+    submission: Submission<'a>,
+    lang: Lang,
+}
+
+impl<C: Class + ?Sized> Serialize for Results<'_, '_, C> {
+    fn serialize<S: Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+        struct Tests<'r, 's, 'a, C: Class + ?Sized>(&'r Results<'s, 'a, C>);
+        impl<C: Class + ?Sized> Serialize for Tests<'_, '_, '_, C> {
+            fn serialize<S: Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+                let r = self.0;
+                serializer.collect_seq(
+                    r.submission
+                        .tests
+                        .iter()
+                        .map(|t| test_json(r.subs, t, r.lang)),
+                )
+            }
+        }
+        let s = &self.submission;
+        let mut map = serializer.serialize_map(Some(4))?;
+        map.serialize_entry(
+            "output",
+            &format!(
+                "{}: {}",
+                s.student,
+                messages::total(s.points, s.max_points, self.lang)
+            ),
+        )?;
+        map.serialize_entry("score", &json!(s.points))?;
+        map.serialize_entry("tests", &Tests(self))?;
+        map.serialize_entry("visibility", "visible")?;
+        map.end()
+    }
 }
 
 /// The name of a row's own test: `Exercise 4.9 (line 11)`, `Exercício 4.9 (linha 11)`, or
@@ -73,29 +104,97 @@ fn row_title(r: &crate::check::grade::RowOut, lang: Lang) -> String {
 /// keys are the students and whose values are their `results.json`, the rows without a
 /// student under the key `(no student)` (`(sem aluno)`).
 pub fn class(report: &Report, lang: Lang) -> Value {
-    let mut all = submissions(report, lang);
-    let students = report.students.len();
-    if students <= 1 && !all.is_empty() {
-        let mut first = all.remove(0);
-        for other in all {
-            first.tests.extend(other.tests);
+    let mut out = Vec::new();
+    write_class(report, lang, &mut out).expect("writing to memory");
+    serde_json::from_slice(&out).expect("the document is JSON")
+}
+
+/// The class ([`class`]) pretty-printed with a final newline, written to `out` one test at a
+/// time.
+pub(crate) fn write_class<C: Class + ?Sized>(
+    class: &C,
+    lang: Lang,
+    out: &mut dyn std::io::Write,
+) -> std::io::Result<()> {
+    let subs = Submissions::new(class, lang);
+    let mut ser = serde_json::Serializer::pretty(&mut *out);
+    if class.students() <= 1 && subs.len() > 0 {
+        let mut first = subs.get(0);
+        for k in 1..subs.len() {
+            first.tests.extend(subs.get(k).tests);
         }
-        return results(&first, lang);
+        Results {
+            subs: &subs,
+            submission: first,
+            lang,
+        }
+        .serialize(&mut ser)?;
+    } else {
+        // An object's keys in order; a student named as the rows without a student is replaced
+        // by them, as a key given twice is.
+        let label = super::no_student_label(lang);
+        let has_nobody = subs.len() > class.students();
+        let mut order: Vec<usize> = (0..subs.len())
+            .filter(|&k| subs.is_nobody(k) || !(has_nobody && subs.name(k) == label))
+            .collect();
+        order.sort_by(|&a, &b| subs.name(a).cmp(subs.name(b)));
+        let mut map = ser.serialize_map(Some(order.len()))?;
+        for k in order {
+            map.serialize_entry(
+                subs.name(k),
+                &Results {
+                    subs: &subs,
+                    submission: subs.get(k),
+                    lang,
+                },
+            )?;
+        }
+        map.end()?;
     }
-    let map: serde_json::Map<String, Value> = all
-        .iter()
-        .map(|s| (s.student.clone(), results(s, lang)))
-        .collect();
-    Value::Object(map)
+    out.write_all(b"\n")?;
+    out.flush()
 }
 
 /// One `results.json` per submission (`-o DIR/`): each student's, then the rows without a
 /// student's, each with its file name (without `.json`, [`super::file_names`]).
 pub fn files(report: &Report, lang: Lang) -> Vec<(String, Value)> {
-    let all = submissions(report, lang);
-    let names = super::file_names(all.iter().map(|s| s.student.as_str()));
-    names
-        .into_iter()
-        .zip(all.iter().map(|s| results(s, lang)))
-        .collect()
+    let mut out = Vec::new();
+    let _ = write_files(report, lang, |name, write| {
+        let mut bytes = Vec::new();
+        write(&mut bytes)?;
+        out.push((
+            name.to_owned(),
+            serde_json::from_slice(&bytes).expect("the document is JSON"),
+        ));
+        Ok::<(), std::io::Error>(())
+    });
+    out
+}
+
+/// One `results.json` per submission (`-o DIR/`), in the order of [`files`]: `each` is given
+/// the file's name (without `.json`) and what writes its text (pretty-printed, with a final
+/// newline); the first error stops.
+pub(crate) fn write_files<C: Class + ?Sized, E>(
+    class: &C,
+    lang: Lang,
+    mut each: impl FnMut(
+        &str,
+        &mut dyn FnMut(&mut dyn std::io::Write) -> std::io::Result<()>,
+    ) -> Result<(), E>,
+) -> Result<(), E> {
+    let subs = Submissions::new(class, lang);
+    let names = super::file_names((0..subs.len()).map(|k| subs.name(k)));
+    for (k, name) in names.iter().enumerate() {
+        each(name, &mut |out: &mut dyn std::io::Write| {
+            let results = Results {
+                subs: &subs,
+                submission: subs.get(k),
+                lang,
+            };
+            serde_json::to_writer_pretty(&mut *out, &results)?;
+            out.write_all(b"\n")?;
+            out.flush()
+        })?;
+    }
+    Ok(())
 }

@@ -5,11 +5,11 @@
 //! (an unknown exercise, an answer that does not count) are testcases of their own, and the rows
 //! without a student a testsuite of their own, so that no row is missing.
 
-use std::fmt::Write;
+use std::fmt::Write as _;
 
 use super::super::grade::Report;
 use super::super::messages;
-use super::Test;
+use super::{Class, Submissions, Test};
 use crate::text::lang::Lang;
 
 /// `text` escaped for XML text and attribute values.
@@ -30,30 +30,92 @@ fn escape(text: &str) -> String {
     out
 }
 
-/// The class as one JUnit XML document: a `testsuite` per submission ([`super::submissions`]:
+/// The class as one JUnit XML document: a `testsuite` per submission ([`super::Submissions`]:
 /// the students, then the rows without a student), a `testcase` per exercise of the class and
 /// one per other row (named `4.9 (line 11)`). A row that does not count (an answer another one
 /// replaces, a row without a student) is `skipped`, its feedback in `system-out`.
 pub fn class(report: &Report, lang: Lang) -> String {
-    let mut out = String::from("<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n");
-    let mut suites = String::new();
+    let mut out = Vec::new();
+    write(report, lang, &mut out).expect("writing to memory");
+    String::from_utf8(out).expect("the document is UTF-8")
+}
+
+/// What a testcase is.
+enum Case {
+    Passed,
+    Skipped,
+    Error,
+    Failure,
+}
+
+/// How a test of `subs` is reported.
+fn case<C: Class + ?Sized>(subs: &Submissions<C>, test: &Test) -> Case {
+    match subs.row_of(test) {
+        Some(r) if !r.counted => Case::Skipped,
+        Some(r) if r.verdict == "invalid" => Case::Error,
+        Some(r) if r.accepted => Case::Passed,
+        _ => Case::Failure,
+    }
+}
+
+/// The class as one JUnit XML document ([`class`]), written to `out` one testcase at a time.
+/// The counts come first in the document, so the tests are judged twice: once to count them,
+/// once to write them.
+pub(crate) fn write<C: Class + ?Sized>(
+    class: &C,
+    lang: Lang,
+    out: &mut dyn std::io::Write,
+) -> std::io::Result<()> {
+    let subs = Submissions::new(class, lang);
+    // (failures, errors, skipped) of each submission.
+    let mut counts: Vec<[usize; 3]> = Vec::with_capacity(subs.len());
     let (mut all, mut all_failures, mut all_errors) = (0, 0, 0);
-    for s in super::submissions(report, lang) {
-        let mut cases = String::new();
-        let (mut failures, mut errors, mut skipped) = (0, 0, 0);
+    for k in 0..subs.len() {
+        let s = subs.get(k);
+        let mut c = [0; 3];
         for test in &s.tests {
-            let (name, row) = match test {
-                Test::Exercise { exercise, row, .. } => (escape(exercise), *row),
-                Test::Row(r) => (escape(&super::row_name(r, lang)), Some(*r)),
+            match case(&subs, test) {
+                Case::Failure => c[0] += 1,
+                Case::Error => c[1] += 1,
+                Case::Skipped => c[2] += 1,
+                Case::Passed => {}
+            }
+        }
+        all += s.tests.len();
+        all_failures += c[0];
+        all_errors += c[1];
+        counts.push(c);
+    }
+    write!(
+        out,
+        "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n\
+         <testsuites name=\"phong grade\" tests=\"{all}\" failures=\"{all_failures}\" \
+         errors=\"{all_errors}\" time=\"0\">\n"
+    )?;
+    for (k, [failures, errors, skipped]) in counts.into_iter().enumerate() {
+        let s = subs.get(k);
+        let tests = s.tests.len();
+        writeln!(
+            out,
+            "  <testsuite name=\"{}\" tests=\"{tests}\" failures=\"{failures}\" \
+             errors=\"{errors}\" skipped=\"{skipped}\" time=\"0\">",
+            escape(&s.student)
+        )?;
+        let mut cases = String::new();
+        for test in &s.tests {
+            cases.clear();
+            let row = subs.row_of(test);
+            let name = match test {
+                Test::Exercise { exercise, .. } => escape(exercise),
+                Test::Row(_) => escape(&super::row_name(row.as_deref().expect("a row"), lang)),
             };
             let _ = write!(
                 cases,
                 "    <testcase classname=\"{}\" name=\"{name}\" time=\"0\">",
                 escape(&s.student)
             );
-            match row {
+            match row.as_deref() {
                 Some(r) if !r.counted => {
-                    skipped += 1;
                     let _ = write!(
                         cases,
                         "<skipped message=\"not counted\" type=\"not_counted\"/>\
@@ -62,7 +124,6 @@ pub fn class(report: &Report, lang: Lang) -> String {
                     );
                 }
                 Some(r) if r.verdict == "invalid" => {
-                    errors += 1;
                     let _ = write!(
                         cases,
                         "<error message=\"invalid\" type=\"invalid\">{}</error>",
@@ -73,7 +134,6 @@ pub fn class(report: &Report, lang: Lang) -> String {
                     let _ = write!(cases, "<system-out>{}</system-out>", escape(&r.feedback));
                 }
                 Some(r) => {
-                    failures += 1;
                     let _ = write!(
                         cases,
                         "<failure message=\"{}\" type=\"{}\">{}</failure>",
@@ -83,7 +143,6 @@ pub fn class(report: &Report, lang: Lang) -> String {
                     );
                 }
                 None => {
-                    failures += 1;
                     let _ = write!(
                         cases,
                         "<failure message=\"no answer\" type=\"no_answer\">{}</failure>",
@@ -92,22 +151,10 @@ pub fn class(report: &Report, lang: Lang) -> String {
                 }
             }
             cases.push_str("</testcase>\n");
+            out.write_all(cases.as_bytes())?;
         }
-        let tests = s.tests.len();
-        all += tests;
-        all_failures += failures;
-        all_errors += errors;
-        let _ = write!(
-            suites,
-            "  <testsuite name=\"{}\" tests=\"{tests}\" failures=\"{failures}\" \
-             errors=\"{errors}\" skipped=\"{skipped}\" time=\"0\">\n{cases}  </testsuite>\n",
-            escape(&s.student)
-        );
+        out.write_all(b"  </testsuite>\n")?;
     }
-    let _ = write!(
-        out,
-        "<testsuites name=\"phong grade\" tests=\"{all}\" failures=\"{all_failures}\" \
-         errors=\"{all_errors}\" time=\"0\">\n{suites}</testsuites>\n"
-    );
-    out
+    out.write_all(b"</testsuites>\n")?;
+    out.flush()
 }

@@ -10,10 +10,86 @@
 pub mod gradescope;
 pub mod junit;
 
+use std::borrow::Cow;
 use std::collections::BTreeMap;
 
-use super::grade::{natural_order, Report, RowOut};
+use super::grade::{natural_order, Graded, Report, RowOut, StudentOut};
 use crate::text::lang::Lang;
+
+/// A graded class as the platforms' reports read it: in memory ([`Report`]) or graded again
+/// row by row as it is written ([`Graded`]).
+pub(crate) trait Class {
+    /// The exercises graded, with their points.
+    fn exercises(&self) -> &BTreeMap<String, f64>;
+    /// The number of students.
+    fn students(&self) -> usize;
+    /// Student `s`'s name.
+    fn name(&self, s: usize) -> &str;
+    /// Student `s`'s total, and the rows that count for them.
+    fn student(&self, s: usize) -> Cow<'_, StudentOut>;
+    /// Row `i` (from 0).
+    fn row(&self, i: usize) -> Cow<'_, RowOut>;
+    /// Each student's rows, in input order, and the rows without a student.
+    fn rows_by_student(&self) -> (Vec<Vec<u32>>, Vec<u32>);
+}
+
+impl Class for Report {
+    fn exercises(&self) -> &BTreeMap<String, f64> {
+        &self.exercises
+    }
+    fn students(&self) -> usize {
+        self.students.len()
+    }
+    fn name(&self, s: usize) -> &str {
+        &self.students[s].student
+    }
+    fn student(&self, s: usize) -> Cow<'_, StudentOut> {
+        Cow::Borrowed(&self.students[s])
+    }
+    fn row(&self, i: usize) -> Cow<'_, RowOut> {
+        Cow::Borrowed(&self.rows[i])
+    }
+    fn rows_by_student(&self) -> (Vec<Vec<u32>>, Vec<u32>) {
+        let index: BTreeMap<&str, usize> = self
+            .students
+            .iter()
+            .enumerate()
+            .map(|(i, s)| (s.student.as_str(), i))
+            .collect();
+        let mut by: Vec<Vec<u32>> = vec![Vec::new(); self.students.len()];
+        let mut nobody = Vec::new();
+        for (i, r) in self.rows.iter().enumerate() {
+            match index.get(r.student.as_str()) {
+                Some(&s) if !r.student.is_empty() => by[s].push(i as u32),
+                // A student without a total: a row that counts for no one from the start.
+                None if !r.student.is_empty() => {}
+                _ => nobody.push(i as u32),
+            }
+        }
+        (by, nobody)
+    }
+}
+
+impl Class for Graded<'_> {
+    fn exercises(&self) -> &BTreeMap<String, f64> {
+        Graded::exercises(self)
+    }
+    fn students(&self) -> usize {
+        Graded::students(self)
+    }
+    fn name(&self, s: usize) -> &str {
+        self.student_name(s)
+    }
+    fn student(&self, s: usize) -> Cow<'_, StudentOut> {
+        Cow::Owned(Graded::student(self, s))
+    }
+    fn row(&self, i: usize) -> Cow<'_, RowOut> {
+        Cow::Owned(Graded::row(self, i))
+    }
+    fn rows_by_student(&self) -> (Vec<Vec<u32>>, Vec<u32>) {
+        Graded::rows_by_student(self)
+    }
+}
 
 /// One test of a submission.
 pub(crate) enum Test<'a> {
@@ -24,13 +100,13 @@ pub(crate) enum Test<'a> {
         exercise: &'a str,
         /// Its points.
         max: f64,
-        /// The row that counts.
-        row: Option<&'a RowOut>,
+        /// The row that counts (its index).
+        row: Option<usize>,
     },
     /// A row that judges no exercise of the class for its student: an unknown exercise, an
     /// answer another one replaces (`--duplicates`), a row without a student. It earns nothing
     /// and costs nothing (0 of 0 points); its feedback says why.
-    Row(&'a RowOut),
+    Row(usize),
 }
 
 /// One submission: a student's tests and total, or the rows without a student.
@@ -72,58 +148,97 @@ pub(crate) fn row_name(row: &RowOut, lang: Lang) -> String {
 
 /// The class as the platforms show it: each student in the order they first appear, then, when
 /// some rows have no student, one submission holding them. Every row of the report is one test
-/// of exactly one submission, or the row that counts for one of its exercises.
-pub(crate) fn submissions(report: &Report, lang: Lang) -> Vec<Submission<'_>> {
-    let mut exercises: Vec<(&String, &f64)> = report.exercises.iter().collect();
-    exercises.sort_by(|a, b| natural_order(a.0, b.0));
-    // Each student's rows, in input order; the rows without a student apart.
-    let mut by_student: BTreeMap<&str, Vec<&RowOut>> = BTreeMap::new();
-    let mut nobody: Vec<&RowOut> = Vec::new();
-    for r in &report.rows {
-        if r.student.is_empty() {
-            nobody.push(r);
-        } else {
-            by_student.entry(&r.student).or_default().push(r);
+/// of exactly one submission, or the row that counts for one of its exercises. Each submission
+/// is made when it is asked for ([`Submissions::get`]), so that a class is written one student
+/// at a time.
+pub(crate) struct Submissions<'a, C: Class + ?Sized> {
+    class: &'a C,
+    lang: Lang,
+    exercises: Vec<(&'a str, f64)>,
+    by_student: Vec<Vec<u32>>,
+    nobody: Vec<u32>,
+}
+
+impl<'a, C: Class + ?Sized> Submissions<'a, C> {
+    pub(crate) fn new(class: &'a C, lang: Lang) -> Self {
+        let mut exercises: Vec<(&str, f64)> = class
+            .exercises()
+            .iter()
+            .map(|(k, &v)| (k.as_str(), v))
+            .collect();
+        exercises.sort_by(|a, b| natural_order(a.0, b.0));
+        let (by_student, nobody) = class.rows_by_student();
+        Submissions {
+            class,
+            lang,
+            exercises,
+            by_student,
+            nobody,
         }
     }
-    let mut out: Vec<Submission> = report
-        .students
-        .iter()
-        .map(|s| {
-            let counted = |exercise: &str| s.rows.get(exercise).and_then(|&i| report.rows.get(i));
-            let mut tests: Vec<Test> = exercises
-                .iter()
-                .map(|&(exercise, &max)| Test::Exercise {
-                    exercise,
-                    max,
-                    row: counted(exercise),
-                })
-                .collect();
-            let theirs = by_student.get(s.student.as_str()).map_or(&[][..], |v| v);
-            let counting: Vec<usize> = s.rows.values().copied().collect();
-            tests.extend(
-                theirs
-                    .iter()
-                    .filter(|r| !counting.iter().any(|&i| report.rows[i].row == r.row))
-                    .map(|&r| Test::Row(r)),
-            );
-            Submission {
-                student: s.student.clone(),
-                points: s.points,
-                max_points: s.max_points,
-                tests,
-            }
-        })
-        .collect();
-    if !nobody.is_empty() {
-        out.push(Submission {
-            student: no_student_label(lang).to_owned(),
-            points: 0.0,
-            max_points: 0.0,
-            tests: nobody.into_iter().map(Test::Row).collect(),
-        });
+
+    /// The number of submissions: the students, and one for the rows without a student.
+    pub(crate) fn len(&self) -> usize {
+        self.class.students() + usize::from(!self.nobody.is_empty())
     }
-    out
+
+    /// Whether submission `k` is the rows without a student.
+    pub(crate) fn is_nobody(&self, k: usize) -> bool {
+        k == self.class.students()
+    }
+
+    /// The name submission `k` is shown under.
+    pub(crate) fn name(&self, k: usize) -> &str {
+        if self.is_nobody(k) {
+            no_student_label(self.lang)
+        } else {
+            self.class.name(k)
+        }
+    }
+
+    /// Submission `k`.
+    pub(crate) fn get(&self, k: usize) -> Submission<'a> {
+        if self.is_nobody(k) {
+            return Submission {
+                student: no_student_label(self.lang).to_owned(),
+                points: 0.0,
+                max_points: 0.0,
+                tests: self.nobody.iter().map(|&i| Test::Row(i as usize)).collect(),
+            };
+        }
+        let s = self.class.student(k);
+        let mut tests: Vec<Test> = self
+            .exercises
+            .iter()
+            .map(|&(exercise, max)| Test::Exercise {
+                exercise,
+                max,
+                row: s.rows.get(exercise).copied(),
+            })
+            .collect();
+        let counting: Vec<usize> = s.rows.values().copied().collect();
+        tests.extend(
+            self.by_student[k]
+                .iter()
+                .map(|&i| i as usize)
+                .filter(|i| !counting.contains(i))
+                .map(Test::Row),
+        );
+        Submission {
+            student: s.student.clone(),
+            points: s.points,
+            max_points: s.max_points,
+            tests,
+        }
+    }
+
+    /// The row of a test (`None`: an exercise not answered).
+    pub(crate) fn row_of(&self, test: &Test) -> Option<Cow<'a, RowOut>> {
+        match test {
+            Test::Exercise { row, .. } => row.map(|i| self.class.row(i)),
+            Test::Row(i) => Some(self.class.row(*i)),
+        }
+    }
 }
 
 /// A file name for each submission (`-o DIR/`), in the order of `names`: letters, digits, `.`,

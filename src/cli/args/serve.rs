@@ -12,10 +12,15 @@ pub(crate) struct ServeArgs {
     /// bundled exercises.
     #[arg(long, value_name = "DIR")]
     pub(crate) exercises: Option<PathBuf>,
-    /// Append each checked answer to this file, one JSON line each; without it, no answer is
-    /// kept.
+    /// Append each checked answer to this file, one JSON line each (the answer's first 64
+    /// characters, its length and its hash); without it, no answer is kept.
     #[arg(long, value_name = "PATH")]
     pub(crate) log_answers: Option<PathBuf>,
+    /// The most kB (1,000 bytes) the answers' log holds: before a line would pass it, PATH is
+    /// renamed PATH.1 (replacing the older one) and a new PATH begun, so the two hold at most
+    /// twice this. Default 65536 (64 MiB).
+    #[arg(long, value_name = "KB", default_value_t = 65_536, value_parser = clap::value_parser!(u64).range(1..=1_073_741_824))]
+    pub(crate) log_answers_max: u64,
     /// The most requests handled at once; more are refused with 503 at once.
     #[arg(long, value_name = "N", default_value_t = 256, value_parser = clap::value_parser!(u32).range(1..=65536))]
     pub(crate) max_concurrent: u32,

@@ -95,32 +95,30 @@ pub(crate) fn run(args: &GradeArgs) -> Result<Exit, CliError> {
         input: args.input,
         questions: args.questions.clone(),
     };
-    let report = check::grade::grade_file(&args.submissions, &options)?;
+    let bytes = check::grade::read_submissions(&args.submissions, &options)?;
+    // Each row is graded once to count the students' answers, then again as it is written: the
+    // reports are written one row at a time, never whole in memory.
+    let graded = check::grade::Graded::new(&bytes, &options);
     // The report first, then the summary and the totals, then the line on standard error. Their
     // folders were checked above; a write that fails all the same (a full disk) stops there, and
     // the `graded N rows` line, which reads as success, is not written.
+    let out = args.output.as_deref();
     let written = match args.format {
-        GradeFormat::Csv => {
-            output::emit_bytes(args.output.as_deref(), &check::grade::rows_csv(&report))
-        }
-        GradeFormat::Json => output::emit_bytes(
-            args.output.as_deref(),
-            output::json_pretty(&report).as_bytes(),
-        ),
-        GradeFormat::Junit => output::emit_bytes(
-            args.output.as_deref(),
-            check::export::junit::class(&report, args.lang).as_bytes(),
-        ),
-        GradeFormat::Gradescope => gradescope(&report, args),
+        GradeFormat::Csv => output::emit_with(out, &mut |w| graded.write_rows_csv(w)),
+        GradeFormat::Json => output::emit_with(out, &mut |w| graded.write_json(w)),
+        GradeFormat::Junit => output::emit_with(out, &mut |w| {
+            check::export::junit::write(&graded, args.lang, w)
+        }),
+        GradeFormat::Gradescope => gradescope(&graded, args),
     };
     let lang = args.lang;
     let written = written
         .and_then(|()| match &args.summary {
-            Some(summary) => output::emit_bytes(Some(summary), &check::grade::summary_csv(&report)),
+            Some(summary) => output::emit_with(Some(summary), &mut |w| graded.write_summary_csv(w)),
             None => Ok(()),
         })
         .and_then(|()| match &args.by_student {
-            Some(by) => output::emit_bytes(Some(by), &check::grade::students_csv(&report)),
+            Some(by) => output::emit_with(Some(by), &mut |w| graded.write_students_csv(w)),
             None => Ok(()),
         });
     let exit = error::carry_on_in(written, lang);
@@ -128,9 +126,9 @@ pub(crate) fn run(args: &GradeArgs) -> Result<Exit, CliError> {
         return Ok(exit);
     }
     let total =
-        |f: fn(&check::grade::SummaryOut) -> usize| report.summary.iter().map(f).sum::<usize>();
+        |f: fn(&check::grade::SummaryOut) -> usize| graded.summary().iter().map(f).sum::<usize>();
     output::say(&check::messages::graded(
-        report.rows.len(),
+        graded.len(),
         total(|s| s.right),
         total(|s| s.reading),
         total(|s| s.wrong),
@@ -144,7 +142,7 @@ pub(crate) fn run(args: &GradeArgs) -> Result<Exit, CliError> {
 /// several: an object keyed by student), or, with `-o DIR/` (a folder, or a path ending in
 /// `/`), one `DIR/STUDENT.json` per student (and `DIR/_no_student_.json`, `_sem_aluno_.json`
 /// in Portuguese, for the rows without a student).
-fn gradescope(report: &check::grade::Report, args: &GradeArgs) -> Result<(), CliError> {
+fn gradescope(graded: &check::grade::Graded, args: &GradeArgs) -> Result<(), CliError> {
     let to_folder = args.output.as_deref().filter(|o| {
         o.is_dir()
             || o.as_os_str()
@@ -152,20 +150,17 @@ fn gradescope(report: &check::grade::Report, args: &GradeArgs) -> Result<(), Cli
                 .ends_with(std::path::MAIN_SEPARATOR)
     });
     let Some(dir) = to_folder else {
-        let doc = check::export::gradescope::class(report, args.lang);
-        return output::emit_bytes(args.output.as_deref(), output::json_pretty(&doc).as_bytes());
+        return output::emit_with(args.output.as_deref(), &mut |w| {
+            check::export::gradescope::write_class(graded, args.lang, w)
+        });
     };
     std::fs::create_dir_all(dir).map_err(|source| CliError::CreateFolder {
         path: dir.to_owned(),
         source,
     })?;
-    for (name, doc) in check::export::gradescope::files(report, args.lang) {
-        output::emit_bytes(
-            Some(&dir.join(format!("{name}.json"))),
-            output::json_pretty(&doc).as_bytes(),
-        )?;
-    }
-    Ok(())
+    check::export::gradescope::write_files(graded, args.lang, |name, write| {
+        output::emit_with(Some(&dir.join(format!("{name}.json"))), write)
+    })
 }
 
 /// Refuses, before anything is written, an output `path` whose folder does not exist or is not

@@ -18,6 +18,7 @@ pub(crate) fn run(args: &ServeArgs) -> Result<Exit, CliError> {
         addr: args.addr,
         exercises: args.exercises.clone(),
         log_answers: args.log_answers.clone(),
+        log_answers_max_kb: args.log_answers_max,
         limits,
     };
     serve::run(&config)?;
