@@ -80,7 +80,8 @@ const ENGLISH: &[&str] = &[
 ];
 
 /// The prose of a message: without what stands between quotes or backticks (a field's name,
-/// an example), the file's name, and the field before a colon (`lights[0].exponent:`).
+/// an example), the file's name, and the field or flag before a colon (`lights[0].exponent:`,
+/// `--max-level:`).
 fn prose(message: &str) -> String {
     let mut out = String::new();
     let mut quote: Option<char> = None;
@@ -96,7 +97,7 @@ fn prose(message: &str) -> String {
         .filter(|w| {
             !(w.ends_with(':')
                 && w.chars()
-                    .all(|c| c.is_ascii_alphanumeric() || "_.[]:".contains(c)))
+                    .all(|c| c.is_ascii_alphanumeric() || "_.[]:-".contains(c)))
         })
         .collect::<Vec<_>>()
         .join(" ")
@@ -271,6 +272,30 @@ fn cases() -> Vec<(
                 "render.max_level: o nível máximo 21 com o peso mínimo 0 deixa a árvore de raios \
                  de uma amostra ter 2097151 raios",
                 "mais que os 1048576 (2^20)",
+            ],
+        ),
+        (
+            "a tree too large for the command line's settings",
+            {
+                let mut m = matte();
+                m["reflectivity"] = json!([1, 1, 1]);
+                m["transmissivity"] = json!([1, 1, 1]);
+                m["ior"] = json!(1.5);
+                scene(m, json!({}), (4, 3))
+            },
+            &[
+                "render",
+                "FILE",
+                "-o",
+                "out.png",
+                "--max-level",
+                "21",
+                "--min-weight",
+                "0",
+            ],
+            vec![
+                "--max-level: o nível máximo 21 com o peso mínimo 0 deixa a árvore de raios de \
+                 uma amostra ter 2097151 raios",
             ],
         ),
         (

@@ -473,7 +473,8 @@ static SURFACES: Field<'static> = Field::Name("surfaces");
 /// `lights`.
 static LIGHTS: Field<'static> = Field::Name("lights");
 
-/// `lights[1] (point)`, in English (the label of [`LightLabel`]).
+/// `lights[1] (point)`, in English. Transitional, for the solver's messages still written as
+/// English text; a message names a light by a [`LightLabel`], in its language.
 pub(crate) fn light_label(file_index: usize, kind: &str) -> String {
     format!("lights[{file_index}] ({kind})")
 }
