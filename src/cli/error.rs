@@ -85,12 +85,12 @@ fn destination(path: Option<&Path>) -> String {
 impl CliError {
     /// A setting refused by the library, named by its field (`max_level`, `min_weights`): the
     /// flag that gave it is that name in kebab case (`--max-level`, `--min-weights`).
+    /// Its fault is kept as a value, to be said in the user's language.
     pub(crate) fn setting(e: Invalid) -> CliError {
-        CliError::Usage {
+        CliError::Problem(ProblemError::Usage {
             flag: format!("--{}", e.field.replace('_', "-")),
-            message: e.message(),
-            fix: e.fix(),
-        }
+            fault: e.fault,
+        })
     }
 }
 

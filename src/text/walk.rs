@@ -62,6 +62,16 @@ macro_rules! walked {
 walked! {
     sentences crate::text::number::NotANumber;
     faults crate::problem::faults::TargetFault;
+    faults crate::problem::faults::CameraFault;
+    faults crate::problem::faults::SettingFault;
+    faults crate::problem::faults::LightFault;
+    faults crate::problem::faults::KindFault;
+    faults crate::problem::faults::SurfaceFault;
+    faults crate::problem::faults::MaterialFault;
+    faults crate::problem::faults::ColourFault;
+    faults crate::problem::faults::NumberFault;
+    sentences crate::problem::faults::DirectionOf;
+    sentences crate::problem::faults::Purpose;
 }
 
 /// English words that Portuguese never uses: one of them in a Portuguese rendering (outside
