@@ -2129,10 +2129,21 @@ fn load_bytes(bytes: &[u8]) -> (Workspace, Result<problem::Problem<f64>, Problem
 fn syntax_error(bytes: &[u8]) -> (usize, usize, String, String) {
     match load_bytes(bytes).1 {
         Err(e @ ProblemError::Syntax { .. }) => {
-            let ProblemError::Syntax { line, column, .. } = e else {
+            let ProblemError::Syntax {
+                line,
+                column,
+                ref field,
+                ..
+            } = e
+            else {
                 unreachable!()
             };
-            (line, column, e.message(), e.fix())
+            // The message as the user reads it: after its field, when the parser knows it.
+            let message = match field {
+                Some(f) => format!("{f}: {}", e.message()),
+                None => e.message(),
+            };
+            (line, column, message, e.fix())
         }
         other => panic!("expected a syntax error, got {other:?}"),
     }
