@@ -60,6 +60,11 @@ macro_rules! walked {
 walked! {
     sentences crate::text::number::NotANumber;
     faults crate::problem::faults::TargetFault;
+    sentences crate::cli::parse::Whole;
+    sentences crate::cli::parse::BadValue;
+    faults crate::cli::faults::CliFault;
+    sentences crate::cli::faults::CliText;
+    sentences crate::cli::usage::UsageText;
 }
 
 /// English words that Portuguese never uses: one of them in a Portuguese rendering (outside
