@@ -65,6 +65,9 @@ walked! {
     faults crate::cli::faults::CliFault;
     sentences crate::cli::faults::CliText;
     sentences crate::cli::usage::UsageText;
+    faults crate::tradeoff::sweep::SweepFault;
+    sentences crate::export::pov::Colour;
+    faults crate::export::pov::PovFault;
 }
 
 /// English words that Portuguese never uses: one of them in a Portuguese rendering (outside
