@@ -257,6 +257,62 @@ mod tests {
     }
 
     #[test]
+    fn each_variant_reads_as_before_in_english_and_wholly_in_portuguese() {
+        let cases = [
+            (
+                CliError::Bug {
+                    flag: "--plot",
+                    fault: CliFault::PlotFailed { error: "x".into() },
+                },
+                "--plot: the plot could not be drawn: x. Fix: report this as a bug; the table is \
+                 still written without --plot",
+                "--plot: o gráfico não pôde ser desenhado: x. Correção: relate isto como um \
+                 defeito; a tabela ainda é escrita sem --plot",
+            ),
+            (
+                CliError::usage("--threads", CliFault::ZeroThreads),
+                "--threads: 0 threads cannot render. Fix: give --threads 1 or more (or leave it \
+                 out: one per core)",
+                "--threads: 0 threads não renderizam. Correção: dê --threads 1 ou mais (ou omita: \
+                 uma por núcleo)",
+            ),
+            (
+                CliError::usage(
+                    "--size",
+                    CliFault::OutOfMemory {
+                        size: super::super::faults::memory_size(3_000_000_000),
+                    },
+                ),
+                "--size: out of memory: this needs about 3.0 GB. Fix: give a smaller image \
+                 (--size, or the camera's width and height)",
+                "--size: memória insuficiente: isto precisa de cerca de 3.0 GB. Correção: dê uma \
+                 imagem menor (--size, ou a largura e a altura da câmera)",
+            ),
+            (
+                CliError::Write {
+                    path: None,
+                    source: std::io::Error::from_raw_os_error(13),
+                },
+                "cannot write standard output: Permission denied (os error 13)",
+                "não é possível escrever na saída padrão: permissão negada (erro 13 do sistema)",
+            ),
+            (
+                CliError::CreateFolder {
+                    path: PathBuf::from("out"),
+                    source: std::io::Error::from_raw_os_error(13),
+                },
+                "out: cannot create the folder: Permission denied (os error 13)",
+                "out: não é possível criar a pasta: permissão negada (erro 13 do sistema)",
+            ),
+        ];
+        for (e, en, pt) in cases {
+            assert_eq!(e.to_string(), en);
+            assert_eq!(e.text(Lang::En), en);
+            assert_eq!(e.text(Lang::Pt), pt);
+        }
+    }
+
+    #[test]
     fn a_setting_is_named_by_its_flag() {
         let e = CliError::setting(Invalid::new("min_weights", "is empty", "give one"));
         assert_eq!(e.to_string(), "--min-weights: is empty. Fix: give one");
