@@ -1467,7 +1467,7 @@ fn render_tiny<R: Real>(mut problem: problem::Problem<R>, c: &Context) -> Result
         match phong::export::pov::export(&problem64) {
             Ok(sdl) => no_nan_text(&sdl, "the POV-Ray SDL", c)?,
             Err(e) => {
-                if e.what.is_empty() || e.why.is_empty() || e.fix.is_empty() {
+                if e.what.is_empty() || e.why().is_empty() || e.fix().is_empty() {
                     return Err(format!("export-pov: an unclear refusal: {e:?}"));
                 }
             }

@@ -72,6 +72,14 @@ walked! {
     faults crate::problem::faults::NumberFault;
     sentences crate::problem::faults::DirectionOf;
     sentences crate::problem::faults::Purpose;
+    sentences crate::cli::parse::Whole;
+    sentences crate::cli::parse::BadValue;
+    faults crate::cli::faults::CliFault;
+    sentences crate::cli::faults::CliText;
+    sentences crate::cli::usage::UsageText;
+    faults crate::tradeoff::sweep::SweepFault;
+    sentences crate::export::pov::Colour;
+    faults crate::export::pov::PovFault;
 }
 
 /// English words that Portuguese never uses: one of them in a Portuguese rendering (outside
