@@ -3,6 +3,7 @@
 //! one bumps the version; adding one does not.
 
 use std::fmt::Write;
+use std::sync::Arc;
 
 use serde::Serialize;
 
@@ -12,6 +13,7 @@ use crate::problem::ProblemError;
 use crate::solve::ReadingCode;
 use crate::text::lang::Lang;
 use crate::text::number::num;
+use crate::text::Message;
 
 /// The version of the JSON output of `phong check` and `phong grade`.
 pub const CHECK_FORMAT_VERSION: u32 = 1;
@@ -60,18 +62,84 @@ pub struct Failure {
     pub kind: FailureKind,
     /// The field of the problem file at fault, where there is one (`lights[1].falloff`).
     pub field: Option<String>,
-    /// The error as an English sentence, with its fix.
-    pub message: String,
+    /// The error, with its fix: rendered in a language where it is shown; the JSON has it in
+    /// English.
+    pub message: Said,
 }
 
 impl Failure {
     /// A problem file that cannot be read, parsed, validated or solved.
-    pub(crate) fn problem(e: &ProblemError) -> Self {
+    pub(crate) fn problem(e: ProblemError) -> Self {
         Failure {
-            kind: FailureKind::of(e),
+            kind: FailureKind::of(&e),
             field: e.field().map(str::to_owned),
-            message: e.to_string(),
+            message: Said::new(e),
         }
+    }
+}
+
+/// A sentence kept as a value and shared (a check's failure, carried into reports and
+/// documents): rendered in a language where it is shown, in English in the JSON (`Display`,
+/// `Serialize`). Two are equal when their English is.
+#[derive(Clone)]
+pub struct Said(Arc<dyn Message + Send + Sync>);
+
+impl Said {
+    /// `message`, kept.
+    pub fn new(message: impl Message + Send + Sync + 'static) -> Said {
+        Said(Arc::new(message))
+    }
+
+    /// `message` after `at` and a colon (`FILE: --answer: …`): `at` names files and flags, the
+    /// same in every language.
+    pub fn at(at: impl Into<String>, message: impl Message + Send + Sync + 'static) -> Said {
+        Said::new(At {
+            at: at.into(),
+            message: Said::new(message),
+        })
+    }
+}
+
+impl Message for Said {
+    fn text(&self, lang: Lang) -> String {
+        self.0.text(lang)
+    }
+}
+
+impl std::fmt::Debug for Said {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        self.0.fmt(f)
+    }
+}
+
+impl std::fmt::Display for Said {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(&self.text(Lang::En))
+    }
+}
+
+impl PartialEq for Said {
+    fn eq(&self, other: &Said) -> bool {
+        self.text(Lang::En) == other.text(Lang::En)
+    }
+}
+
+impl Serialize for Said {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        s.serialize_str(&self.text(Lang::En))
+    }
+}
+
+/// A sentence after where it is about (`FILE: --answer: SENTENCE`).
+#[derive(Debug)]
+struct At {
+    at: String,
+    message: Said,
+}
+
+impl Message for At {
+    fn text(&self, lang: Lang) -> String {
+        format!("{}: {}", self.at, self.message.text(lang))
     }
 }
 
@@ -172,7 +240,7 @@ pub fn text(c: &Checked, lang: Lang) -> String {
                 "{}: {}: {}",
                 c.file,
                 messages::invalid(lang),
-                f.message
+                f.message.text(lang)
             );
             return out;
         }
@@ -451,7 +519,7 @@ pub fn json(c: &Checked) -> CheckOut {
     };
     match &c.outcome {
         Err(f) => {
-            out.message = f.message.clone();
+            out.message = f.message.text(Lang::En);
             out.error = Some(f.clone());
         }
         Ok(Judged {

@@ -60,6 +60,11 @@ macro_rules! walked {
 walked! {
     sentences crate::text::number::NotANumber;
     faults crate::problem::faults::TargetFault;
+    faults crate::check::answer::AnswerFault;
+    faults crate::check::steps::StepFault;
+    faults crate::check::steps::StepMissing;
+    sentences crate::check::CheckMessage;
+    sentences crate::check::rubric::RubricError;
 }
 
 /// English words that Portuguese never uses: one of them in a Portuguese rendering (outside

@@ -52,7 +52,7 @@ pub(crate) fn run(args: &CheckArgs) -> Result<Exit, CliError> {
             error::warn_in(path, &warning, args.lang);
         }
         if let Err(f) = &c.outcome {
-            error::print_english_in(&f.message, args.lang);
+            error::print_in(&f.message, args.lang);
         }
         match args.format {
             CheckFormat::Text => {
@@ -133,9 +133,10 @@ fn given_steps(args: &CheckArgs) -> Result<Vec<check::steps::GivenStep>, CliErro
 
 /// A step that cannot be read, as a usage error: its own fix where it gives one, else `fix`.
 fn step_usage(flag: &str, prefix: &str, e: check::steps::BadStep, fix: &str) -> CliError {
-    let (message, fix) = match e.message.split_once(". Fix: ") {
-        Some((m, f)) => (m.to_owned(), f.to_owned()),
-        None => (e.message, fix.to_owned()),
+    use crate::text::{Fault, Lang};
+    let (message, fix) = match e.fix(Lang::En) {
+        f if f.is_empty() => (e.what(Lang::En), fix.to_owned()),
+        f => (e.what(Lang::En), f),
     };
     CliError::Usage {
         flag: flag.into(),
@@ -165,12 +166,12 @@ fn with_steps(args: &CheckArgs, steps: &[check::steps::GivenStep]) -> Result<Exi
         )
     });
     if let Err(f) = &checked.outcome {
-        error::print_english_in(&f.message, args.lang);
+        error::print_in(&f.message, args.lang);
     }
     if let Some(c) = &answer {
         exit = exit.max(exit_of(c.status()));
         if let Err(f) = &c.outcome {
-            error::print_english_in(&f.message, args.lang);
+            error::print_in(&f.message, args.lang);
         }
     }
     let out = match args.format {
