@@ -65,6 +65,7 @@ walked! {
     faults crate::check::steps::StepMissing;
     sentences crate::check::CheckMessage;
     sentences crate::check::rubric::RubricError;
+    sentences crate::check::Slip;
 }
 
 /// English words that Portuguese never uses: one of them in a Portuguese rendering (outside
