@@ -5,8 +5,8 @@
 use std::fmt;
 use std::path::PathBuf;
 
-use super::pending::CheckText;
 use crate::problem::error::what_and_fix;
+use crate::text::Said;
 use crate::text::{Lang, Show};
 
 crate::faults! {
@@ -65,16 +65,16 @@ crate::faults! {
             fix "check the path, and that the file exists and is UTF-8 text",
                 "confira o caminho, e que o arquivo existe e é texto UTF-8";
         /// A step that cannot be read, with its own fix.
-        Step { before: String, why: CheckText, fix: CheckText } =>
+        Step { before: String, why: Said, fix: Said } =>
             "{before}{why}", "{before}{why}";
             fix "{fix}", "{fix}";
         /// A step of `--step` that cannot be read.
-        StepFlag { why: CheckText } =>
+        StepFlag { why: Said } =>
             "{why}", "{why}";
             fix "write NAME=VALUE, such as --step cos_theta=0.98995 or --step R=0.6,0,0.8",
                 "escreva NOME=VALOR, como --step cos_theta=0.98995 ou --step R=0.6,0,0.8";
         /// The file of `--steps` that cannot be read as steps.
-        StepsFile { before: String, why: CheckText } =>
+        StepsFile { before: String, why: Said } =>
             "{before}{why}", "{before}{why}";
             fix "one JSON object of names and values, such as {{\"cos_theta\": 0.98995}}",
                 "um objeto JSON de nomes e valores, como {{\"cos_theta\": 0.98995}}";
@@ -84,16 +84,16 @@ crate::faults! {
             fix "give a rubric file as the README's Grading section shows",
                 "dê um arquivo de rubrica como mostra a seção \"Grading\" do README";
         /// The rubric file is not a rubric.
-        Rubric { why: CheckText } =>
+        Rubric { why: Said } =>
             "{why}", "{why}";
             fix "give a rubric file as the README's Grading section shows",
                 "dê um arquivo de rubrica como mostra a seção \"Grading\" do README";
         /// `--points` refused.
-        Points { why: CheckText } =>
+        Points { why: Said } =>
             "{why}", "{why}";
             fix "write --points 4.1=1,4.2=2", "escreva --points 4.1=1,4.2=2";
         /// `--reading-credit` refused.
-        Credit { why: CheckText } =>
+        Credit { why: Said } =>
             "{why}", "{why}";
             fix "give a share from 0 to 1 (0.5 for half the points)",
                 "dê uma fração de 0 a 1 (0.5 para metade dos pontos)";

@@ -2,16 +2,9 @@
 //! text (their typed values are being written in other branches), through the old table of
 //! substrings. Nothing else in `cli/` calls that table.
 
-use crate::check::answer::BadAnswer;
 use crate::check::grade::Unreadable;
 use crate::report::messages::error_in;
 use crate::text::{Lang, Message};
-
-impl Message for BadAnswer {
-    fn text(&self, lang: Lang) -> String {
-        error_in(&self.to_string(), lang)
-    }
-}
 
 impl Message for Unreadable {
     fn text(&self, lang: Lang) -> String {
@@ -23,16 +16,5 @@ impl Message for Unreadable {
 impl Message for crate::serve::StartError {
     fn text(&self, lang: Lang) -> String {
         error_in(&self.to_string(), lang)
-    }
-}
-
-/// English text written by `src/check` (a rubric's, a step's, a check's failure), shown by the
-/// command line.
-#[derive(Clone, Debug, Default, PartialEq)]
-pub(crate) struct CheckText(pub String);
-
-impl Message for CheckText {
-    fn text(&self, lang: Lang) -> String {
-        error_in(&self.0, lang)
     }
 }

@@ -16,7 +16,7 @@ pub mod message;
 pub mod number;
 
 pub use lang::Lang;
-pub use message::{Echo, Fault, In, Message, Num, Show};
+pub use message::{Echo, Fault, FixOf, In, Message, Num, Said, Show, WhatOf};
 
 #[cfg(test)]
 mod walk;

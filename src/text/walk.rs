@@ -80,6 +80,12 @@ walked! {
     faults crate::tradeoff::sweep::SweepFault;
     sentences crate::export::pov::Colour;
     faults crate::export::pov::PovFault;
+    faults crate::check::answer::AnswerFault;
+    faults crate::check::steps::StepFault;
+    faults crate::check::steps::StepMissing;
+    sentences crate::check::CheckMessage;
+    sentences crate::check::rubric::RubricError;
+    sentences crate::check::Slip;
 }
 
 /// English words that Portuguese never uses: one of them in a Portuguese rendering (outside

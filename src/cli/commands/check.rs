@@ -7,8 +7,8 @@ use crate::cli::error::{self, CliError};
 use crate::cli::exit::Exit;
 use crate::cli::faults::{CliFault, SystemError};
 use crate::cli::output;
-use crate::cli::pending::CheckText;
 use crate::problem;
+use crate::text::{FixOf, Said, WhatOf};
 
 pub(crate) fn run(args: &CheckArgs) -> Result<Exit, CliError> {
     let inputs: Vec<&std::path::Path> = args.files.iter().map(|p| p.as_path()).collect();
@@ -48,7 +48,7 @@ pub(crate) fn run(args: &CheckArgs) -> Result<Exit, CliError> {
             error::warn_in(path, &warning, args.lang);
         }
         if let Err(f) = &c.outcome {
-            error::print_in(&CheckText(f.message.clone()), args.lang);
+            error::print_in(&f.message, args.lang);
         }
         match args.format {
             CheckFormat::Text => {
@@ -128,15 +128,17 @@ fn step_usage(
     flag: &str,
     before: &str,
     e: check::steps::BadStep,
-    otherwise: impl Fn(CheckText) -> CliFault,
+    otherwise: impl Fn(Said) -> CliFault,
 ) -> CliError {
-    let fault = match e.message.split_once(". Fix: ") {
-        Some((m, f)) => CliFault::Step {
+    use crate::text::{Fault, Lang};
+    let fault = if e.fix(Lang::En).is_empty() {
+        otherwise(Said::new(WhatOf(e)))
+    } else {
+        CliFault::Step {
             before: before.to_owned(),
-            why: CheckText(m.to_owned()),
-            fix: CheckText(f.to_owned()),
-        },
-        None => otherwise(CheckText(e.message)),
+            why: Said::new(WhatOf(e.clone())),
+            fix: Said::new(FixOf(e)),
+        }
     };
     CliError::usage(flag, fault)
 }
@@ -162,12 +164,12 @@ fn with_steps(args: &CheckArgs, steps: &[check::steps::GivenStep]) -> Result<Exi
         )
     });
     if let Err(f) = &checked.outcome {
-        error::print_in(&CheckText(f.message.clone()), args.lang);
+        error::print_in(&f.message, args.lang);
     }
     if let Some(c) = &answer {
         exit = exit.max(exit_of(c.status()));
         if let Err(f) = &c.outcome {
-            error::print_in(&CheckText(f.message.clone()), args.lang);
+            error::print_in(&f.message, args.lang);
         }
     }
     let out = match args.format {

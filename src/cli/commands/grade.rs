@@ -9,7 +9,7 @@ use crate::cli::error::{self, CliError};
 use crate::cli::exit::Exit;
 use crate::cli::faults::{CliFault, SystemError};
 use crate::cli::output;
-use crate::cli::pending::CheckText;
+use crate::text::Said;
 
 pub(crate) fn run(args: &GradeArgs) -> Result<Exit, CliError> {
     if let Some(t) = args.tolerance {
@@ -70,32 +70,32 @@ pub(crate) fn run(args: &GradeArgs) -> Result<Exit, CliError> {
                         },
                     )
                 })?;
-            check::rubric::Rubric::from_json(&String::from_utf8_lossy(&bytes)).map_err(|why| {
+            check::rubric::Rubric::read_json(&String::from_utf8_lossy(&bytes)).map_err(|why| {
                 CliError::usage(
                     &flag,
                     CliFault::Rubric {
-                        why: CheckText(why),
+                        why: Said::new(why),
                     },
                 )
             })?
         }
     };
     if let Some(p) = &args.points {
-        rubric.add_points(p).map_err(|why| {
+        rubric.give_points(p).map_err(|why| {
             CliError::usage(
                 "--points",
                 CliFault::Points {
-                    why: CheckText(why),
+                    why: Said::new(why),
                 },
             )
         })?;
     }
     if let Some(c) = args.reading_credit {
-        rubric.reading_credit = check::rubric::check_credit(c).map_err(|why| {
+        rubric.reading_credit = check::rubric::credit(c).map_err(|why| {
             CliError::usage(
                 "--reading-credit",
                 CliFault::Credit {
-                    why: CheckText(why),
+                    why: Said::new(why),
                 },
             )
         })?;

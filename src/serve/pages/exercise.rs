@@ -451,7 +451,7 @@ fn verdict(ex: &Exercise, lang: Lang, input: &Input) -> (StatusCode, String) {
         }
         match steps::parse_named(label, value) {
             Ok(s) => given.push(s),
-            Err(e) => bad.push(e.message),
+            Err(e) => bad.push(e.to_string()),
         }
     }
     if answer.is_none() && given.is_empty() && bad.is_empty() {
@@ -465,7 +465,7 @@ fn verdict(ex: &Exercise, lang: Lang, input: &Input) -> (StatusCode, String) {
             Ok(j) => out.push_str(&judged(&c, j, lang)),
             Err(f) => {
                 status = StatusCode::UNPROCESSABLE_ENTITY;
-                out.push_str(&cannot(std::slice::from_ref(&f.message), lang));
+                out.push_str(&cannot(&[f.message.to_string()], lang));
             }
         }
     }
@@ -553,7 +553,7 @@ fn steps_verdict(ex: &Exercise, given: &[GivenStep], lang: Lang) -> (StatusCode,
         Err(f) => {
             return (
                 StatusCode::UNPROCESSABLE_ENTITY,
-                cannot(std::slice::from_ref(&f.message), lang),
+                cannot(&[f.message.to_string()], lang),
             )
         }
     };
