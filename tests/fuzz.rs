@@ -2125,14 +2125,19 @@ fn load_bytes(bytes: &[u8]) -> (Workspace, Result<problem::Problem<f64>, Problem
     (ws, loaded)
 }
 
-/// The syntax error of a file that must be rejected: (line, column, message, fix).
+/// The syntax error of a file that must be rejected: (line, column, message, fix), the
+/// message after its field when it has one (`viewer: too many elements: …`).
 fn syntax_error(bytes: &[u8]) -> (usize, usize, String, String) {
     match load_bytes(bytes).1 {
         Err(e @ ProblemError::Syntax { .. }) => {
             let ProblemError::Syntax { line, column, .. } = e else {
                 unreachable!()
             };
-            (line, column, e.message(), e.fix())
+            let message = match e.field() {
+                Some(field) => format!("{field}: {}", e.message()),
+                None => e.message(),
+            };
+            (line, column, message, e.fix())
         }
         other => panic!("expected a syntax error, got {other:?}"),
     }

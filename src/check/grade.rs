@@ -357,11 +357,15 @@ impl Cache<'_> {
 
 /// Grades the CSV file at `path` (`-`: standard input).
 pub fn grade_file(path: &Path, options: &Options) -> Result<Report, Unreadable> {
-    let bytes = crate::problem::read_limited(path, MAX_SUBMISSIONS_BYTES, "a submissions file")
-        .map_err(|source| Unreadable {
-            path: path.to_owned(),
-            source,
-        })?;
+    let bytes = crate::problem::read_limited(
+        path,
+        MAX_SUBMISSIONS_BYTES,
+        crate::problem::Input::Submissions,
+    )
+    .map_err(|source| Unreadable {
+        path: path.to_owned(),
+        source,
+    })?;
     // Each row costs a few hundred bytes in the report: a file of tiny rows is bounded by rows.
     let rows = lines(&decode(&bytes))
         .filter(|(_, l)| !l.iter().all(u8::is_ascii_whitespace))
@@ -373,7 +377,7 @@ pub fn grade_file(path: &Path, options: &Options) -> Result<Report, Unreadable> 
                 std::io::ErrorKind::InvalidData,
                 crate::problem::TooMany {
                     limit: MAX_ROWS,
-                    what: "rows",
+                    what: crate::problem::Counted::Rows,
                 },
             ),
         });

@@ -755,8 +755,12 @@ fn required<T>(
     what: &dyn fmt::Display,
 ) -> Result<T, Invalid> {
     value.ok_or_else(|| {
-        let purpose =
-            super::field_purpose(name).map_or(String::new(), |p| format!(": it gives {p}"));
+        let purpose = super::field_purpose(name).map_or(String::new(), |p| {
+            format!(
+                ": it gives {}",
+                crate::text::Message::text(&p, crate::text::Lang::En)
+            )
+        });
         Invalid::new(
             base.key(name),
             format!("missing: a {what} needs \"{name}\"{purpose}"),
@@ -876,13 +880,8 @@ fn surface<R: Real>(
             let (mat_field, material) = materials.resolve(file, mref, f("material"))?;
             needs.check(&material.spec, mat_field)?;
             let path = mesh_path(folder, name);
-            let triangles = mesh::load_obj::<R>(&path).map_err(|e| {
-                Invalid::new(
-                    f("file"),
-                    format!("{}: {}", path.display(), e.message),
-                    e.fix,
-                )
-            })?;
+            let triangles =
+                mesh::load_obj::<R>(&path).map_err(|e| Invalid::of(f("file"), e.at(&path)))?;
             if out.len() + triangles.len() > mesh::MAX_TRIANGLES {
                 return Err(Invalid::new(
                     f("file"),

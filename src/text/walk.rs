@@ -60,6 +60,19 @@ macro_rules! walked {
 walked! {
     sentences crate::text::number::NotANumber;
     faults crate::problem::faults::TargetFault;
+    sentences crate::problem::syntax::Found;
+    sentences crate::problem::syntax::Expected;
+    sentences crate::problem::syntax::JsonKind;
+    sentences crate::problem::syntax::Parse;
+    sentences crate::problem::syntax::Purpose;
+    sentences crate::problem::syntax::SyntaxFix;
+    sentences crate::problem::reading::Input;
+    sentences crate::problem::reading::Counted;
+    sentences crate::problem::reading::Limit;
+    sentences crate::problem::reading::ReadFix;
+    faults crate::problem::reading::ReadFault;
+    faults crate::problem::reading::SourceFault;
+    faults crate::problem::mesh_faults::MeshFault;
 }
 
 /// English words that Portuguese never uses: one of them in a Portuguese rendering (outside

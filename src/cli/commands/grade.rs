@@ -63,7 +63,7 @@ pub(crate) fn run(args: &GradeArgs) -> Result<Exit, CliError> {
                 message: why,
                 fix: "give a rubric file as the README's Grading section shows".into(),
             };
-            let bytes = crate::problem::read_limited(path, 1 << 20, "a rubric file")
+            let bytes = crate::problem::read_limited(path, 1 << 20, crate::problem::Input::Rubric)
                 .map_err(|e| bad(format!("cannot read the file: {e}")))?;
             check::rubric::Rubric::from_json(&String::from_utf8_lossy(&bytes)).map_err(bad)?
         }
