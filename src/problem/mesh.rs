@@ -14,7 +14,7 @@ use crate::text::Echo;
 
 pub use super::mesh_faults::{MeshError, MeshFault};
 use super::mesh_faults::{ObjError, Object, OrF64};
-use super::reading::{Cause, Input, Limit};
+use super::reading::{Cause, Input, Limit, ReadFix};
 
 /// The largest OBJ file read: 256 MiB (a million triangles are about 60 MB of text).
 pub const MAX_MESH_BYTES: u64 = 256 << 20;
@@ -204,11 +204,12 @@ fn scan<R: Real>(text: &str) -> Result<Faces<R>, MeshError> {
 /// smooth triangles ([`Triangle::normals`]).
 pub fn load_obj<R: Real>(path: &Path) -> Result<Vec<Triangle<R>>, MeshError> {
     let bytes = super::read_limited(path, MAX_MESH_BYTES, Input::Mesh).map_err(|e| {
-        let cause = Cause::of(&e);
-        MeshError::of(if cause.too_large() {
-            MeshFault::TooLarge { cause }
-        } else {
-            MeshFault::Unreadable { cause }
+        MeshError::of(MeshFault::Unreadable {
+            cause: Cause::of(&e),
+            fix: match ReadFix::of(&e) {
+                ReadFix::CheckPath => ReadFix::CheckMeshPath,
+                fix => fix,
+            },
         })
     })?;
     let text = String::from_utf8_lossy(&bytes);

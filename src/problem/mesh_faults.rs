@@ -4,7 +4,7 @@
 use std::fmt;
 use std::path::PathBuf;
 
-use super::reading::{Cause, Limit};
+use super::reading::{Cause, Limit, ReadFix};
 use crate::faults;
 use crate::text::{Echo, Fault, Lang, Show};
 
@@ -153,18 +153,10 @@ faults! {
                  Blender's Decimate modifier)",
                 "dê uma malha de até {max} triângulos (simplifique-a, por exemplo com o \
                  modificador Decimate do Blender)";
-        /// A file too large to read.
-        TooLarge { cause: Cause } =>
+        /// A file that cannot be read, and its fix.
+        Unreadable { cause: Cause, fix: ReadFix } =>
             "cannot be read: {cause}", "não pode ser lido: {cause}";
-            fix "give a smaller file (the limits are in README, \"Limits and safety\")",
-                "dê um arquivo menor (os limites estão na seção \"Limits and safety\" do README)";
-        /// A file that cannot be read.
-        Unreadable { cause: Cause } =>
-            "cannot be read: {cause}", "não pode ser lido: {cause}";
-            fix "check the path; it is relative to the scene file's folder (to the working \
-                 folder for a scene read from standard input)",
-                "confira o caminho; ele é relativo à pasta do arquivo da cena (à pasta de \
-                 trabalho para uma cena lida da entrada padrão)";
+            fix "{fix}", "{fix}";
         /// What the OBJ reader refused.
         NotObj { error: ObjError } =>
             "is not a valid Wavefront OBJ file: {error}",

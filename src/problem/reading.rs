@@ -179,6 +179,12 @@ messages! {
         CheckPath =>
             "check the path, and that the file exists and is readable",
             "verifique o caminho, e que o arquivo existe e pode ser lido";
+        /// A mesh's OBJ file not found, not readable.
+        CheckMeshPath =>
+            "check the path; it is relative to the scene file's folder (to the working folder \
+             for a scene read from standard input)",
+            "confira o caminho; ele é relativo à pasta do arquivo da cena (à pasta de trabalho \
+             para uma cena lida da entrada padrão)";
     }
 }
 
@@ -196,27 +202,19 @@ impl ReadFix {
 faults! {
     /// A problem file that cannot be read.
     pub enum ReadFault {
-        /// Too large.
-        TooLarge { cause: Cause } =>
+        /// Why, and the fix.
+        Unreadable { cause: Cause, fix: ReadFix } =>
             "cannot read the file: {cause}", "não é possível ler o arquivo: {cause}";
-            fix "give a smaller file (the limits are in README, \"Limits and safety\")",
-                "dê um arquivo menor (os limites estão na seção \"Limits and safety\" do README)";
-        /// Not found, not readable.
-        Unreadable { cause: Cause } =>
-            "cannot read the file: {cause}", "não é possível ler o arquivo: {cause}";
-            fix "check the path, and that the file exists and is readable",
-                "verifique o caminho, e que o arquivo existe e pode ser lido";
+            fix "{fix}", "{fix}";
     }
 }
 
 impl ReadFault {
     /// The fault of `e`.
     pub fn of(e: &std::io::Error) -> ReadFault {
-        let cause = Cause::of(e);
-        if cause.too_large() {
-            ReadFault::TooLarge { cause }
-        } else {
-            ReadFault::Unreadable { cause }
+        ReadFault::Unreadable {
+            cause: Cause::of(e),
+            fix: ReadFix::of(e),
         }
     }
 }
