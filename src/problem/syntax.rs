@@ -236,7 +236,17 @@ impl Expected {
             | Expected::Answer => "esperada",
             Expected::Render => "esperadas",
             Expected::NamedMaterials => "esperados",
-            _ => "esperado",
+            Expected::F64
+            | Expected::U32
+            | Expected::U8
+            | Expected::U64
+            | Expected::ANumber
+            | Expected::Boolean
+            | Expected::Text
+            | Expected::Point
+            | Expected::Ray
+            | Expected::Material
+            | Expected::MaterialRef => "esperado",
         }
     }
 }
@@ -833,6 +843,29 @@ mod tests {
             "control character (\\u0000-\\u001F) found while parsing a string",
         ] {
             assert!(!matches!(again(m), Parse::Other { .. }), "{m}");
+        }
+    }
+
+    #[test]
+    fn every_word_of_serde_and_of_the_format_reads_back_as_itself() {
+        use strum::IntoEnumIterator;
+        for e in Expected::iter() {
+            let e = match e {
+                Expected::Array { .. } => Expected::Array { len: 3 },
+                Expected::Words { .. } => Expected::Words {
+                    words: Quoted(vec!["point".into(), "spot".into()]),
+                },
+                e => e,
+            };
+            assert_eq!(Expected::read(&e.text(Lang::En)), Some(e.clone()), "{e:?}");
+        }
+        // serde_json's own messages: every variant without fields but phong's own.
+        for p in Parse::iter() {
+            let with_fields = format!("{p:?}").contains('{');
+            if with_fields || p == Parse::TooManyElements {
+                continue;
+            }
+            assert_eq!(Parse::read(&p.text(Lang::En)), p, "{p:?}");
         }
     }
 
