@@ -395,11 +395,7 @@ fn a_scenes_errors_are_wholly_portuguese_and_say_what_fits() {
             &["não é finito em f64", "dê coordenadas finitas"],
         ),
         // Over a million triangles: the fix in Portuguese too.
-        (
-            "big.json",
-            b"",
-            &["dê uma malha de no máximo 1000000 triângulos"],
-        ),
+        ("big.json", b"", &["dê uma malha de até 1000000 triângulos"]),
         // A scene on standard input: its mesh is relative to the working folder.
         (
             "-",

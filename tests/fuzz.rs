@@ -2126,7 +2126,8 @@ fn load_bytes(bytes: &[u8]) -> (Workspace, Result<problem::Problem<f64>, Problem
     (ws, loaded)
 }
 
-/// The syntax error of a file that must be rejected: (line, column, message, fix).
+/// The syntax error of a file that must be rejected: (line, column, message, fix), the
+/// message after its field when it has one (`viewer: too many elements: …`).
 fn syntax_error(bytes: &[u8]) -> (usize, usize, String, String) {
     match load_bytes(bytes).1 {
         Err(e @ ProblemError::Syntax { .. }) => {

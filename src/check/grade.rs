@@ -366,11 +366,15 @@ pub fn grade_file(path: &Path, options: &Options) -> Result<Report, Unreadable> 
 /// [`MAX_SUBMISSIONS_BYTES`] or when it has more than [`MAX_ROWS`] rows (a header is not a row:
 /// a header and 1,000,000 rows are read).
 pub fn read_submissions(path: &Path, options: &Options) -> Result<Vec<u8>, Unreadable> {
-    let bytes = crate::problem::read_limited(path, MAX_SUBMISSIONS_BYTES, "a submissions file")
-        .map_err(|source| Unreadable {
-            path: path.to_owned(),
-            source,
-        })?;
+    let bytes = crate::problem::read_limited(
+        path,
+        MAX_SUBMISSIONS_BYTES,
+        crate::problem::Input::Submissions,
+    )
+    .map_err(|source| Unreadable {
+        path: path.to_owned(),
+        source,
+    })?;
     if data_rows(&decode(&bytes), options) > MAX_ROWS {
         return Err(Unreadable {
             path: path.to_owned(),
@@ -378,7 +382,7 @@ pub fn read_submissions(path: &Path, options: &Options) -> Result<Vec<u8>, Unrea
                 std::io::ErrorKind::InvalidData,
                 crate::problem::TooMany {
                     limit: MAX_ROWS,
-                    what: "rows",
+                    what: crate::problem::Counted::Rows,
                 },
             ),
         });

@@ -7,9 +7,9 @@
 
 use std::path::PathBuf;
 
-use super::error::{FaultBox, Invalid};
+use super::error::Invalid;
 use super::format::{LightType, SurfaceType};
-use crate::text::{Fault, Lang, Message};
+use crate::text::{Lang, Message};
 use crate::{faults, messages};
 
 faults! {
@@ -458,67 +458,25 @@ messages! {
     }
 }
 
-messages! {
-    /// What a field a light or a surface needs gives, said after its name when it is missing
-    /// (`: it gives P_l, for L and d (Eq. 4.1)`); the English is the format's tables' (see
-    /// `super::field_purpose`).
-    #[derive(Default, Copy)]
-    pub enum Purpose {
-        /// A field with nothing to say.
-        #[default]
-        Nothing => "", "";
-        /// `color`.
-        Color => ": it gives the light's colour C_l (or a coefficient's colour O)",
-            ": dá a cor C_l da fonte de luz (ou a cor O de um coeficiente)";
-        /// `position`.
-        Position => ": it gives P_l, for L and d (Eq. 4.1)", ": dá P_l, para L e d (Eq. 4.1)";
-        /// `direction`.
-        Direction => ": it gives the direction of travel (L for a directional light, D for a ray)",
-            ": dá a direção de propagação (L de uma luz direcional, D de um raio)";
-        /// `axis`.
-        Axis => ": it gives the cone's axis D_l (Eq. 4.4)", ": dá o eixo D_l do cone (Eq. 4.4)";
-        /// `angle`.
-        Angle => ": it gives the cone's half-angle γ in degrees (Eq. 4.4)",
-            ": dá o ângulo γ do cone, em graus (Eq. 4.4)";
-        /// `exponent`.
-        Exponent => ": it gives the spot exponent e of cos(ψ)^e (Eq. 4.4)",
-            ": dá o expoente e do spot em cos(ψ)^e (Eq. 4.4)";
-        /// `falloff`.
-        Falloff => ": it gives f in I_l = C_l/d^f (Eq. 4.2, 4.3): 0 none, 1 linear, 2 quadratic",
-            ": dá f em I_l = C_l/d^f (Eq. 4.2, 4.3): 0 sem decaimento, 1 linear, 2 quadrático";
-        /// A plane's `point`.
-        Point => ": it gives a point of the plane", ": dá um ponto do plano";
-        /// A plane's `normal`.
-        Normal => ": it gives the plane's normal", ": dá a normal do plano";
-        /// A sphere's `center` and `radius`.
-        Sphere => ": it gives the sphere", ": dá a esfera";
-        /// A triangle's `vertices`.
-        Vertices => ": it gives the triangle's three corners", ": dá os três vértices do triângulo";
-        /// A mesh's `file`.
-        File => ": it gives the mesh's Wavefront OBJ file", ": dá o arquivo Wavefront OBJ da malha";
-        /// A surface's `material`.
-        Material => ": it gives the material at the point", ": dá o material do ponto";
-    }
-}
+/// What a missing field gives, after its name (`: it gives P_l, for L and d (Eq. 4.1)`), as
+/// the format's tables say it (`super::field_purpose`); nothing for a field they do not
+/// describe.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Purpose(Option<super::syntax::Purpose>);
 
 impl Purpose {
     /// What the field `name` of a light or a surface gives.
     pub(crate) fn of(name: &str) -> Purpose {
-        match name {
-            "color" => Purpose::Color,
-            "position" => Purpose::Position,
-            "direction" => Purpose::Direction,
-            "axis" => Purpose::Axis,
-            "angle" => Purpose::Angle,
-            "exponent" => Purpose::Exponent,
-            "falloff" => Purpose::Falloff,
-            "point" => Purpose::Point,
-            "normal" => Purpose::Normal,
-            "center" | "radius" => Purpose::Sphere,
-            "vertices" => Purpose::Vertices,
-            "file" => Purpose::File,
-            "material" => Purpose::Material,
-            _ => Purpose::Nothing,
+        Purpose(super::field_purpose(name))
+    }
+}
+
+impl Message for Purpose {
+    fn text(&self, lang: Lang) -> String {
+        match (&self.0, lang) {
+            (None, _) => String::new(),
+            (Some(p), Lang::En) => format!(": it gives {}", p.text(lang)),
+            (Some(p), Lang::Pt) => format!(": dá {}", p.text(lang)),
         }
     }
 }
@@ -634,37 +592,11 @@ impl Message for Bytes {
     }
 }
 
-/// An error in a mesh's OBJ file, said of the file: `PATH: WHAT`, with the mesh's own fix.
-#[derive(Clone, Debug)]
-pub struct MeshFileFault {
-    /// The OBJ file.
-    pub path: PathBuf,
-    /// What is wrong in it, and the fix.
-    pub inner: FaultBox,
-}
-
-impl Fault for MeshFileFault {
-    fn what(&self, lang: Lang) -> String {
-        format!("{}: {}", self.path.display(), self.inner.what(lang))
-    }
-
-    fn fix(&self, lang: Lang) -> String {
-        self.inner.fix(lang)
-    }
-
-    /// Transitional: an error of the mesh written as English text is translated, with its path,
-    /// as the whole error is (`ProblemError`'s `text`).
-    fn untranslated(&self) -> bool {
-        self.inner.untranslated()
-    }
-}
-
 #[cfg(test)]
 mod tests {
-    use std::sync::Arc;
 
     use super::*;
-    use crate::problem::error::what_and_fix;
+    use crate::text::Fault;
 
     #[test]
     fn a_light_label_names_the_kind_in_the_messages_language() {
@@ -717,12 +649,10 @@ mod tests {
             .flat_map(|k| k.fields())
             .chain(SurfaceType::ALL.iter().flat_map(|k| k.fields()));
         for name in names {
-            let table = crate::problem::field_purpose(name)
-                .map(|p| format!(": it gives {p}"))
-                .unwrap_or_default();
             let p = Purpose::of(name);
-            assert_eq!(p.text(Lang::En), table, "{name}");
-            assert_ne!(p, Purpose::Nothing, "{name}");
+            assert!(p.0.is_some(), "{name}");
+            assert!(p.text(Lang::En).starts_with(": it gives "), "{name}");
+            assert!(p.text(Lang::Pt).starts_with(": dá "), "{name}");
         }
     }
 
@@ -733,32 +663,5 @@ mod tests {
         assert_eq!(RayCount(u64::MAX).text(Lang::Pt), "mais de 2^63");
         assert_eq!(Bytes(2_100_000_000).text(Lang::En), "2.1 GB");
         assert_eq!(Bytes(10).text(Lang::Pt), "1 MB");
-    }
-
-    #[test]
-    fn a_mesh_files_fault_is_said_of_its_path_in_each_language() {
-        let f = MeshFileFault {
-            path: PathBuf::from("wing.obj"),
-            inner: Arc::new(SurfaceFault::MeshOutOfMemory {
-                size: Bytes(3_000_000),
-            }),
-        };
-        assert_eq!(
-            what_and_fix(&f, Lang::En),
-            "wing.obj: out of memory: this needs about 3 MB. Fix: give a smaller mesh, or free \
-             memory"
-        );
-        assert_eq!(
-            what_and_fix(&f, Lang::Pt),
-            "wing.obj: memória insuficiente: isto precisa de cerca de 3 MB. Correção: dê uma \
-             malha menor, ou libere memória"
-        );
-        assert!(!f.untranslated());
-        let old = MeshFileFault {
-            path: PathBuf::from("wing.obj"),
-            inner: crate::problem::untranslated("has no faces", "give a face"),
-        };
-        assert!(old.untranslated());
-        assert_eq!(old.what(Lang::En), "wing.obj: has no faces");
     }
 }

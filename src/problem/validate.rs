@@ -8,8 +8,7 @@ use std::sync::Arc;
 use super::error::Invalid;
 use super::faults::{
     Bytes, CameraFault, ColourFault, DirectionOf, Kind, KindFault, LightFault, LightLabel,
-    MaterialFault, MeshFileFault, NumberFault, Purpose, RayCount, SettingFault, SurfaceFault,
-    TargetFault,
+    MaterialFault, NumberFault, Purpose, RayCount, SettingFault, SurfaceFault, TargetFault,
 };
 use super::field::Field;
 use super::format::{
@@ -774,15 +773,8 @@ fn surface<R: Real>(
             let (mat_field, material) = materials.resolve(file, mref, f("material"))?;
             needs.check(&material.spec, mat_field)?;
             let path = mesh_path(folder, name);
-            let triangles = mesh::load_obj::<R>(&path).map_err(|e| {
-                Invalid::of(
-                    f("file"),
-                    MeshFileFault {
-                        path: path.clone(),
-                        inner: super::untranslated(e.message, e.fix),
-                    },
-                )
-            })?;
+            let triangles =
+                mesh::load_obj::<R>(&path).map_err(|e| Invalid::of(f("file"), e.at(&path)))?;
             if out.len() + triangles.len() > mesh::MAX_TRIANGLES {
                 return Err(Invalid::of(
                     f("file"),

@@ -469,7 +469,7 @@ fn broken_problem(text: &str) -> Option<Response> {
 
 /// Whether a syntax error is only the rest of the envelope after the problem.
 fn is_trailing(e: &ProblemError) -> bool {
-    matches!(e, ProblemError::Syntax { field: None, .. } if e.message().starts_with("trailing characters"))
+    e.is_trailing()
 }
 
 /// The `lang` of a request: English unless `"pt"`.

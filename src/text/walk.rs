@@ -71,7 +71,6 @@ walked! {
     faults crate::problem::faults::ColourFault;
     faults crate::problem::faults::NumberFault;
     sentences crate::problem::faults::DirectionOf;
-    sentences crate::problem::faults::Purpose;
     sentences crate::cli::parse::Whole;
     sentences crate::cli::parse::BadValue;
     faults crate::cli::faults::CliFault;
@@ -86,6 +85,19 @@ walked! {
     sentences crate::check::CheckMessage;
     sentences crate::check::rubric::RubricError;
     sentences crate::check::Slip;
+    sentences crate::problem::syntax::Found;
+    sentences crate::problem::syntax::Expected;
+    sentences crate::problem::syntax::JsonKind;
+    sentences crate::problem::syntax::Parse;
+    sentences crate::problem::syntax::Purpose;
+    sentences crate::problem::syntax::SyntaxFix;
+    sentences crate::problem::reading::Input;
+    sentences crate::problem::reading::Counted;
+    sentences crate::problem::reading::Limit;
+    sentences crate::problem::reading::ReadFix;
+    faults crate::problem::reading::ReadFault;
+    faults crate::problem::reading::SourceFault;
+    faults crate::problem::mesh_faults::MeshFault;
 }
 
 /// English words that Portuguese never uses: one of them in a Portuguese rendering (outside

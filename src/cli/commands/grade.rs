@@ -61,8 +61,8 @@ pub(crate) fn run(args: &GradeArgs) -> Result<Exit, CliError> {
         None => check::rubric::Rubric::default(),
         Some(path) => {
             let flag = format!("--rubric {}", path.display());
-            let bytes =
-                crate::problem::read_limited(path, 1 << 20, "a rubric file").map_err(|e| {
+            let bytes = crate::problem::read_limited(path, 1 << 20, crate::problem::Input::Rubric)
+                .map_err(|e| {
                     CliError::usage(
                         &flag,
                         CliFault::RubricUnreadable {
