@@ -60,7 +60,7 @@ crate::messages! {
             "the reading credit is {credit}: it is a share of the points, 0 to 1 (0.5 for half)",
             "o crédito da leitura é {credit}: é uma fração dos pontos, de 0 a 1 (0.5 para metade)";
         /// A rubric file that is not a rubric's JSON (`error`: the JSON parser's words).
-        NotARubric { error: String } =>
+        NotARubric { error: crate::problem::JsonError } =>
             "{error} (a rubric is {{\"points\": {{\"4.1\": 1, \"4.2\": 2}}, \"default\": 1, \
              \"reading_credit\": 0.5}}, every field optional)",
             "{error} (uma rubrica é {{\"points\": {{\"4.1\": 1, \"4.2\": 2}}, \"default\": 1, \
@@ -130,7 +130,7 @@ impl Rubric {
     /// Reads a rubric file's text.
     pub fn read_json(text: &str) -> Result<Rubric, RubricError> {
         let file: RubricFile = serde_json::from_str(text).map_err(|e| RubricError::NotARubric {
-            error: e.to_string(),
+            error: crate::problem::JsonError::of(&e),
         })?;
         let mut rubric = Rubric::default();
         for (name, p) in file.points {

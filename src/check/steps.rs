@@ -512,7 +512,7 @@ pub fn parse_cell(text: &str) -> Result<Vec<GivenStep>, UnreadCell> {
 pub fn parse_steps_json(text: &str) -> Result<Vec<GivenStep>, BadStep> {
     let doc: serde_json::Value = serde_json::from_str(text).map_err(|e| {
         bad(StepFault::NotJson {
-            error: e.to_string(),
+            error: crate::problem::JsonError::of(&e),
         })
     })?;
     let obj = doc.as_object().ok_or_else(|| bad(StepFault::NotAnObject))?;
@@ -1605,7 +1605,7 @@ crate::faults! {
             fix "separate the steps with ;, such as cos_theta=0.98995; n_dot_l=-0.98995",
                 "separe os passos com ;, como cos_theta=0.98995; n_dot_l=-0.98995";
         /// A `--steps` file that is not JSON (`error`: the JSON parser's words).
-        NotJson { error: String } =>
+        NotJson { error: crate::problem::JsonError } =>
             "not JSON: {error}",
             "não é JSON: {error}";
             fix "write one object of names and values, such as {{\"cos_theta\": 0.98995, \

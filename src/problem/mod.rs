@@ -14,6 +14,7 @@ pub(crate) mod mesh_faults;
 pub(crate) mod model;
 pub(crate) mod reading;
 pub(crate) mod syntax;
+pub use syntax::JsonError;
 pub mod validate;
 pub(crate) mod warnings;
 

@@ -478,6 +478,42 @@ messages! {
     }
 }
 
+/// serde_json's error on a text that is not the JSON asked for (a rubric, a steps file), read
+/// into a value: what is wrong ([`Parse`]) and where, `at line L column C` in English.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct JsonError {
+    what: Parse,
+    line: usize,
+    column: usize,
+}
+
+impl JsonError {
+    /// serde_json's error, read.
+    pub fn of(e: &serde_json::Error) -> JsonError {
+        let text = e.to_string();
+        JsonError {
+            what: Parse::read(
+                text.rsplit_once(" at line ")
+                    .map_or(text.as_str(), |(m, _)| m),
+            ),
+            line: e.line(),
+            column: e.column(),
+        }
+    }
+}
+
+impl Message for JsonError {
+    fn text(&self, lang: Lang) -> String {
+        let what = self.what.text(lang);
+        match (self.line, lang) {
+            // serde_json says no position for an error that has none (line 0).
+            (0, _) => what,
+            (l, Lang::En) => format!("{what} at line {l} column {}", self.column),
+            (l, Lang::Pt) => format!("{what} na linha {l}, coluna {}", self.column),
+        }
+    }
+}
+
 impl Parse {
     /// serde_json's message (without its " at line L column C"), read into a value; a message
     /// whose reading does not give back the text serde wrote (its names shortened, as
