@@ -626,8 +626,8 @@ pub(crate) fn solution(
     match explanation {
         Ok(x) => {
             out.push_str("<article class=\"problem\" id=\"problem-0\">\n");
-            // write_parts closes the article.
-            out.push_str(&html::write_parts(x, 0));
+            out.push_str(&html::write_parts(x, 0, 2));
+            out.push_str("</article>\n");
         }
         Err(e) => {
             let _ = writeln!(
