@@ -98,6 +98,8 @@ impl Message for CliError {
     fn text(&self, lang: Lang) -> String {
         match self {
             CliError::Problem(e) => e.text(lang),
+            #[cfg(feature = "serve")]
+            CliError::Serve(e) => e.text(lang),
             // Transitional: the variants not yet written as typed values are translated as a
             // whole by the old table.
             other => messages::error_in(&other.to_string(), lang),

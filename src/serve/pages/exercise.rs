@@ -24,6 +24,7 @@ use crate::report::messages::{error_in, step_formula};
 use crate::serve::catalogue::Exercise;
 use crate::serve::Shared;
 use crate::text::lang::Lang;
+use crate::text::Message;
 
 /// What the form sent (and is shown again in its boxes).
 #[derive(Debug, Default)]
@@ -634,7 +635,7 @@ pub(crate) fn solution(
                 out,
                 "<h2>{}</h2>\n<p>{}</p>",
                 Text::SolutionHeading.get(lang),
-                esc(&error_in(&e.to_string(), lang))
+                esc(&e.text(lang))
             );
         }
     }
