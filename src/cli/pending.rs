@@ -11,10 +11,3 @@ impl Message for Unreadable {
         error_in(&self.to_string(), lang)
     }
 }
-
-#[cfg(feature = "serve")]
-impl Message for crate::serve::StartError {
-    fn text(&self, lang: Lang) -> String {
-        error_in(&self.to_string(), lang)
-    }
-}

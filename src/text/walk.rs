@@ -49,10 +49,10 @@ fn faults<T: Fault + IntoEnumIterator>(enum_name: &str) -> Vec<Rendered> {
 /// Lists every message enum (`sentences` for `messages!`, `faults` for `faults!`), as the
 /// renderings of all their variants and as the names the source test compares with.
 macro_rules! walked {
-    ($($kind:ident $path:path;)*) => {
+    ($($(#[$cfg:meta])* $kind:ident $path:path;)*) => {
         fn every_rendering() -> Vec<Rendered> {
             let mut all = Vec::new();
-            $(all.extend($kind::<$path>(stringify!($path)));)*
+            $($(#[$cfg])* all.extend($kind::<$path>(stringify!($path)));)*
             all
         }
         const WALKED: &[&str] = &[$(stringify!($path)),*];
@@ -98,14 +98,27 @@ walked! {
     faults crate::problem::reading::ReadFault;
     faults crate::problem::reading::SourceFault;
     faults crate::problem::mesh_faults::MeshFault;
+    faults crate::solve::faults::SolveFault;
+    sentences crate::solve::faults::Overflowing;
+    sentences crate::solve::faults::Smaller;
+    faults crate::tracer::faults::TracerFault;
+    #[cfg(feature = "serve")]
+    sentences crate::serve::faults::ApiText;
+    #[cfg(feature = "serve")]
+    sentences crate::serve::faults::Items;
+    #[cfg(feature = "serve")]
+    faults crate::serve::faults::TooMany;
+    #[cfg(feature = "serve")]
+    sentences crate::serve::faults::StartText;
 }
 
 /// English words that Portuguese never uses: one of them in a Portuguese rendering (outside
 /// quotes and backticks, where a file's own field names stand) is an untranslated fragment.
+/// ("no" is not one: Portuguese says "no ponto", "no máximo".)
 const ENGLISH_ONLY: &[&str] = &[
     "the", "is", "are", "and", "not", "with", "give", "write", "must", "cannot", "Fix", "of",
     "which", "should", "an", "has", "have", "from", "to", "by", "it", "this", "that", "be", "or",
-    "for", "only", "than", "when", "where", "there", "its", "was", "were", "no",
+    "for", "only", "than", "when", "where", "there", "its", "was", "were",
 ];
 
 /// `text` without what stands between quotes or backticks (a field's name, an example).

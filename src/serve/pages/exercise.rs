@@ -24,6 +24,7 @@ use crate::report::messages::{error_in, step_formula};
 use crate::serve::catalogue::Exercise;
 use crate::serve::Shared;
 use crate::text::lang::Lang;
+use crate::text::Message;
 
 /// What the form sent (and is shown again in its boxes).
 #[derive(Debug, Default)]
@@ -626,15 +627,15 @@ pub(crate) fn solution(
     match explanation {
         Ok(x) => {
             out.push_str("<article class=\"problem\" id=\"problem-0\">\n");
-            // write_parts closes the article.
-            out.push_str(&html::write_parts(x, 0));
+            out.push_str(&html::write_parts(x, 0, 2));
+            out.push_str("</article>\n");
         }
         Err(e) => {
             let _ = writeln!(
                 out,
                 "<h2>{}</h2>\n<p>{}</p>",
                 Text::SolutionHeading.get(lang),
-                esc(&error_in(&e.to_string(), lang))
+                esc(&e.text(lang))
             );
         }
     }
