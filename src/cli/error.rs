@@ -125,15 +125,6 @@ impl Message for CliError {
             CliError::Submissions(e) => e.text(lang),
             #[cfg(feature = "serve")]
             CliError::Serve(e) => e.text(lang),
-            // Transitional: a setting's fault still written as English text by the library is
-            // said as a problem's error says it (the library's path, removed with that text).
-            CliError::Usage { flag, fault } if fault.untranslated() && lang != Lang::En => {
-                ProblemError::Usage {
-                    flag: flag.clone(),
-                    fault: fault.clone(),
-                }
-                .text(lang)
-            }
             CliError::Usage { flag, fault } => {
                 format!("{flag}: {}", what_fix(fault.as_ref(), lang))
             }
@@ -315,7 +306,17 @@ mod tests {
 
     #[test]
     fn a_setting_is_named_by_its_flag() {
-        let e = CliError::setting(Invalid::new("min_weights", "is empty", "give one"));
-        assert_eq!(e.to_string(), "--min-weights: is empty. Fix: give one");
+        let fault = crate::problem::faults::SettingFault::LevelZero { max: 20 };
+        let e = CliError::setting(Invalid::of("max_level", fault));
+        assert_eq!(
+            e.to_string(),
+            "--max-level: 0 traces nothing: the primary ray already has level 1. Fix: give a \
+             maximum level from 1 to 20 (1 = primary rays only)"
+        );
+        assert_eq!(
+            e.text(Lang::Pt),
+            "--max-level: 0 não traça nada: o raio primário já tem nível 1. Correção: dê um \
+             nível máximo de 1 a 20 (1 = só os raios primários)"
+        );
     }
 }

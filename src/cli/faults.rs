@@ -64,6 +64,11 @@ crate::faults! {
             "{file}: cannot read the file: {error}", "{file}: não é possível ler o arquivo: {error}";
             fix "check the path, and that the file exists and is UTF-8 text",
                 "confira o caminho, e que o arquivo existe e é texto UTF-8";
+        /// A file of `phong moodle` that starts as an array but is not JSON.
+        NotProblems { error: crate::problem::JsonError } =>
+            "{error}", "{error}";
+            fix "give one problem, or an array of problems as `phong new --count N` prints",
+                "dê um problema, ou uma lista de problemas como `phong new --count N` a imprime";
         /// A step that cannot be read, with its own fix.
         Step { before: String, why: Said, fix: Said } =>
             "{before}{why}", "{before}{why}";

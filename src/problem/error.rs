@@ -76,12 +76,6 @@ pub fn fix_word(lang: Lang) -> &'static str {
 
 impl Message for ProblemError {
     fn text(&self, lang: Lang) -> String {
-        if let Some(fault) = self.fault().filter(|f| f.untranslated()) {
-            // Transitional: a message not yet written as a typed value is translated as a
-            // whole by the old table (removed once every message is typed).
-            let _ = fault;
-            return crate::report::messages::error_in(&self.text_in(Lang::En), lang);
-        }
         self.text_in(lang)
     }
 }
@@ -193,31 +187,6 @@ impl ProblemError {
     }
 }
 
-/// A message written as English text only, translated as a whole by the old table of
-/// substrings: the state of every message before it is written as a typed value. Transitional;
-/// no new message may use it.
-#[derive(Debug, Clone, PartialEq)]
-pub struct Untranslated {
-    /// What is wrong, in English.
-    pub message: String,
-    /// What would fix it, in English.
-    pub fix: String,
-}
-
-impl Fault for Untranslated {
-    /// The English as written (with its "(Português: …)" asides, as before): the error it is
-    /// part of is translated as a whole ([`ProblemError`]'s `text`).
-    fn what(&self, _: Lang) -> String {
-        self.message.clone()
-    }
-    fn fix(&self, _: Lang) -> String {
-        self.fix.clone()
-    }
-    fn untranslated(&self) -> bool {
-        true
-    }
-}
-
 /// A validation failure before the file's path is attached.
 #[derive(Debug, Clone)]
 pub struct Invalid {
@@ -242,21 +211,6 @@ impl Invalid {
             field: field.into(),
             fault: Arc::new(fault),
         }
-    }
-
-    /// Transitional: a message written as English text (translated by the old table).
-    pub(crate) fn new(
-        field: impl Into<String>,
-        message: impl Into<String>,
-        fix: impl Into<String>,
-    ) -> Self {
-        Invalid::of(
-            field,
-            Untranslated {
-                message: message.into(),
-                fix: fix.into(),
-            },
-        )
     }
 
     /// What is wrong, in English (the JSON's words).

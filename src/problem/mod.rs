@@ -37,14 +37,6 @@ use reading::{Limit, SourceFault};
 use serde::Deserialize;
 use syntax::{Expected, JsonKind, Parse, Purpose, SyntaxFault, SyntaxFix, LONGEST_NAME};
 
-/// Transitional: a fault written as English text (see [`error::Untranslated`]).
-pub(crate) fn untranslated(message: impl Into<String>, fix: impl Into<String>) -> error::FaultBox {
-    std::sync::Arc::new(error::Untranslated {
-        message: message.into(),
-        fix: fix.into(),
-    })
-}
-
 /// The largest problem file read: 64 MiB (a scene of a million spheres is about 100 MB; a
 /// chapter's exercise is 1 kB).
 pub const MAX_PROBLEM_BYTES: u64 = 64 << 20;

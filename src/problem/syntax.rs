@@ -482,7 +482,8 @@ messages! {
 /// into a value: what is wrong ([`Parse`]) and where, `at line L column C` in English.
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct JsonError {
-    what: Parse,
+    /// Boxed: a JSON error sits inside faults that are themselves inside errors.
+    what: Box<Parse>,
     line: usize,
     column: usize,
 }
@@ -492,10 +493,10 @@ impl JsonError {
     pub fn of(e: &serde_json::Error) -> JsonError {
         let text = e.to_string();
         JsonError {
-            what: Parse::read(
+            what: Box::new(Parse::read(
                 text.rsplit_once(" at line ")
                     .map_or(text.as_str(), |(m, _)| m),
-            ),
+            )),
             line: e.line(),
             column: e.column(),
         }

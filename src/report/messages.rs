@@ -1616,17 +1616,6 @@ const ERRORS_PT: &[(&str, &str)] = &[
 /// [`both`].
 const ASIDE: &str = " (Português: ";
 
-/// A part of a message in both languages, as the code that makes it writes it: `"{en}
-/// (Português: {pt})"`, which the JSON documents keep whole (they are language-neutral). On
-/// the command line [`error_in`] shows one: in English `en` alone, in Portuguese `pt` in place
-/// of `en`, so a sentence written this way is never half translated by [`ERRORS_PT`].
-///
-/// `en` is a whole part of the message: a fix (all the text after `Fix: `), or the message
-/// itself after its field (`file: field: MESSAGE`), which must then hold no `: ` of its own.
-pub(crate) fn both(en: &str, pt: &str) -> String {
-    format!("{en}{ASIDE}{pt})")
-}
-
 /// An error message in `lang`: in English, without the Portuguese of the parts written in both
 /// languages ([`both`]); in Portuguese, each such part replaced by its Portuguese, and the common
 /// parts of the rest translated ([`ERRORS_PT`]). The word before it ("error", "erro") is
@@ -1849,34 +1838,6 @@ mod tests {
              Correção: o decaimento é o expoente \
              f de d^f (Eq. 4.3): escreva 1"
         );
-    }
-
-    #[test]
-    fn a_part_written_in_both_languages_is_its_portuguese_in_portuguese() {
-        // The message after its field, and the fix after "Fix: " (which may hold ": ").
-        let en = format!(
-            "x.json: viewer: {}. Fix: {}",
-            both(
-                "the viewer is at P, so V is undefined",
-                "o observador está em P"
-            ),
-            both(
-                "JSON has no fractions: write 0.6",
-                "o JSON não aceita frações (escreva 0.6)"
-            )
-        );
-        assert_eq!(
-            error_in(&en, Lang::Pt),
-            "x.json: viewer: o observador está em P. Correção: o JSON não aceita frações \
-             (escreva 0.6)"
-        );
-        assert_eq!(
-            error_in(&en, Lang::En),
-            "x.json: viewer: the viewer is at P, so V is undefined. Fix: JSON has no fractions: \
-             write 0.6"
-        );
-        // An aside that does not close is left as written.
-        assert_eq!(error_in("a (Português: b", Lang::Pt), "a (Português: b");
     }
 
     #[test]

@@ -167,7 +167,7 @@ fn checked(state: &Shared, headers: &HeaderMap, body: &Bytes) -> Result<Response
                 StatusCode::UNPROCESSABLE_ENTITY,
                 "usage",
                 Some("tolerance"),
-                translated(&format!("tolerance: {e}"), lang),
+                format!("tolerance: {}", e.text(lang)),
             ));
         }
     }
@@ -179,7 +179,7 @@ fn checked(state: &Shared, headers: &HeaderMap, body: &Bytes) -> Result<Response
                 StatusCode::UNPROCESSABLE_ENTITY,
                 "usage",
                 Some("steps"),
-                translated(&format!("steps: {e}"), lang),
+                format!("steps: {}", e.text(lang)),
             ))
         }
     };
@@ -232,15 +232,12 @@ fn checked(state: &Shared, headers: &HeaderMap, body: &Bytes) -> Result<Response
         });
     }
     if unchecked {
-        for key in ["error", "steps_error"] {
-            if let Some(e) = doc.get_mut(key) {
-                translate_error(e, lang);
-            }
-        }
-        if doc["verdict"] == "invalid" {
-            // An invalid verdict's message is the error's own sentence.
-            translate_error(&mut doc, lang);
-        }
+        let failures: Vec<&check::report::Failure> = answer
+            .iter()
+            .filter_map(|c| c.outcome.as_ref().err())
+            .chain(steps.iter().filter_map(|s| s.outcome.as_ref().err()))
+            .collect();
+        say_failures_in(&mut doc, &failures, lang);
         Ok(json_response(StatusCode::UNPROCESSABLE_ENTITY, &doc))
     } else {
         Ok(json_response(StatusCode::OK, &doc))
@@ -496,18 +493,29 @@ fn problem_error(e: &ProblemError, name: &Path, lang: Lang) -> Response {
     json_response(StatusCode::UNPROCESSABLE_ENTITY, &doc)
 }
 
-/// Transitional: an error object of `phong check`'s document (its message an English
-/// sentence, check::report::Failure) in `lang`, by the old table.
-fn translate_error(error: &mut serde_json::Value, lang: Lang) {
-    if let Some(m) = error.get_mut("message") {
-        if let Some(text) = m.as_str() {
-            *m = serde_json::Value::String(translated(text, lang));
+/// The sentences of `phong check`'s document that say why something could not be checked
+/// (`error.message`, `steps_error.message`, and an invalid verdict's `message`, which is the
+/// error's own sentence) in `lang`: each is the English of one of `failures`, said again.
+fn say_failures_in(doc: &mut serde_json::Value, failures: &[&check::report::Failure], lang: Lang) {
+    let places: [&[&str]; 3] = [
+        &["error", "message"],
+        &["steps_error", "message"],
+        &["message"],
+    ];
+    for place in places {
+        let Some(slot) = place.iter().try_fold(&mut *doc, |v, key| v.get_mut(*key)) else {
+            continue;
+        };
+        let said = slot.as_str().and_then(|english| {
+            failures
+                .iter()
+                .find(|f| f.message.text(Lang::En) == english)
+                .map(|f| f.message.text(lang))
+        });
+        if let Some(said) = said {
+            *slot = serde_json::Value::String(said);
         }
     }
-}
-
-fn translated(message: &str, lang: Lang) -> String {
-    crate::report::messages::error_in(message, lang)
 }
 
 /// An error of the API: `{"error": {"kind", "field", "message"}}` with `status`.

@@ -15,6 +15,8 @@ use axum::extract::Request;
 use axum::middleware::Next;
 use axum::response::Response;
 
+use crate::text::io::IoCause;
+
 /// Logs one request on standard error once it is answered: `GET /exercise/4.2 200 153µs`. The
 /// path only (a page's query may hold an answer); a path is cut to 200 characters.
 pub(crate) async fn request(request: Request, next: Next) -> Response {
@@ -122,37 +124,16 @@ impl<'a> Line<'a> {
     }
 }
 
-/// What the answers' log says on standard error, in English and Portuguese.
-enum LogMessage<'a> {
-    /// The log cannot be rotated: the line is not written, so that the file stays within its
-    /// limit.
-    CannotRotate {
-        path: &'a Path,
-        error: &'a std::io::Error,
-    },
-}
-
-impl LogMessage<'_> {
-    fn en(&self) -> String {
-        match self {
-            LogMessage::CannotRotate { path, error } => format!(
-                "--log-answers: cannot move {} to {}.1 ({error}): the answer is not logged, so \
-                 that the file stays within --log-answers-max",
-                path.display(),
-                path.display()
-            ),
-        }
-    }
-
-    fn pt(&self) -> String {
-        match self {
-            LogMessage::CannotRotate { path, error } => format!(
-                "--log-answers: não é possível mover {} para {}.1 ({error}): a resposta não é \
-                 registrada, para que o arquivo não passe de --log-answers-max",
-                path.display(),
-                path.display()
-            ),
-        }
+crate::messages! {
+    /// What the answers' log says on standard error.
+    pub(crate) enum LogMessage {
+        /// The log cannot be rotated: the line is not written, so that the file stays within
+        /// its limit.
+        CannotRotate { path: PathBuf, error: IoCause } =>
+            "--log-answers: cannot move {path} to {path}.1 ({error}): the answer is not logged, \
+             so that the file stays within --log-answers-max",
+            "--log-answers: não é possível mover {path} para {path}.1 ({error}): a resposta não \
+             é registrada, para que o arquivo não passe de --log-answers-max";
     }
 }
 
@@ -206,10 +187,12 @@ impl AnswerLog {
                 Ok(file) => *open = Open { file, size: 0 },
                 Err(error) => {
                     let m = LogMessage::CannotRotate {
-                        path: &self.path,
-                        error: &error,
+                        path: self.path.clone(),
+                        error: IoCause::of(&error),
                     };
-                    eprintln!("{}", crate::report::messages::both(&m.en(), &m.pt()));
+                    // The server's own language: the locale's (docs: "Serving the checker").
+                    let lang = crate::text::Lang::from_locale();
+                    eprintln!("{}", crate::text::Message::text(&m, lang));
                     return;
                 }
             }

@@ -30,11 +30,6 @@ pub trait Fault: fmt::Debug + Send + Sync {
     fn what(&self, lang: Lang) -> String;
     /// What would fix it, in `lang`; empty when nothing can be said.
     fn fix(&self, lang: Lang) -> String;
-    /// Transitional: whether the fault is English text translated by the old table of
-    /// substrings (problem::error::Untranslated) rather than a typed value.
-    fn untranslated(&self) -> bool {
-        false
-    }
 }
 
 /// A value written inside a message, in the message's language.

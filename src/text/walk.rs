@@ -110,6 +110,8 @@ walked! {
     faults crate::serve::faults::TooMany;
     #[cfg(feature = "serve")]
     sentences crate::serve::faults::StartText;
+    #[cfg(feature = "serve")]
+    sentences crate::serve::log::LogMessage;
 }
 
 /// English words that Portuguese never uses: one of them in a Portuguese rendering (outside

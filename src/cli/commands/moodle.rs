@@ -46,10 +46,9 @@ fn read_set(path: &Path, lang: Lang) -> Result<Set, ProblemError> {
                 line: e.line(),
                 column: e.column(),
                 field: None,
-                fault: crate::problem::untranslated(
-                    e.to_string(),
-                    "give one problem, or an array of problems as `phong new --count N` prints",
-                ),
+                fault: std::sync::Arc::new(crate::cli::faults::CliFault::NotProblems {
+                    error: crate::problem::JsonError::of(&e),
+                }),
             })?;
         items
             .iter()

@@ -20,7 +20,7 @@ use crate::check::steps::{self, GivenStep, Name, StepVerdict, NAMES};
 use crate::check::{self, messages as said, CheckOptions, Scale, VerdictKind};
 use crate::core::Precision;
 use crate::report::html::{self, esc};
-use crate::report::messages::{error_in, step_formula};
+use crate::report::messages::step_formula;
 use crate::serve::catalogue::Exercise;
 use crate::serve::Shared;
 use crate::text::lang::Lang;
@@ -452,7 +452,7 @@ fn verdict(ex: &Exercise, lang: Lang, input: &Input) -> (StatusCode, String) {
         }
         match steps::parse_named(label, value) {
             Ok(s) => given.push(s),
-            Err(e) => bad.push(e.to_string()),
+            Err(e) => bad.push(crate::text::Said::new(e)),
         }
     }
     if answer.is_none() && given.is_empty() && bad.is_empty() {
@@ -466,7 +466,7 @@ fn verdict(ex: &Exercise, lang: Lang, input: &Input) -> (StatusCode, String) {
             Ok(j) => out.push_str(&judged(&c, j, lang)),
             Err(f) => {
                 status = StatusCode::UNPROCESSABLE_ENTITY;
-                out.push_str(&cannot(&[f.message.to_string()], lang));
+                out.push_str(&cannot(std::slice::from_ref(&f.message), lang));
             }
         }
     }
@@ -485,14 +485,14 @@ fn verdict(ex: &Exercise, lang: Lang, input: &Input) -> (StatusCode, String) {
     (status, out)
 }
 
-/// What could not be checked, in `lang` (the command line's messages, through its catalogue).
-fn cannot(messages: &[String], lang: Lang) -> String {
+/// What could not be checked, in `lang` (the command line's messages).
+fn cannot(messages: &[crate::text::Said], lang: Lang) -> String {
     let mut out = format!(
         "<div class=\"verdict invalid\">\n<p class=\"headline\">{}</p>\n<ul class=\"errors\">\n",
         Text::CannotCheck.get(lang)
     );
     for m in messages {
-        let _ = writeln!(out, "<li>{}</li>", esc(&error_in(m, lang)));
+        let _ = writeln!(out, "<li>{}</li>", esc(&m.text(lang)));
     }
     out.push_str("</ul>\n</div>\n");
     out
@@ -554,7 +554,7 @@ fn steps_verdict(ex: &Exercise, given: &[GivenStep], lang: Lang) -> (StatusCode,
         Err(f) => {
             return (
                 StatusCode::UNPROCESSABLE_ENTITY,
-                cannot(&[f.message.to_string()], lang),
+                cannot(std::slice::from_ref(&f.message), lang),
             )
         }
     };
