@@ -283,7 +283,7 @@ kinds! {
             "o ângulo γ do cone, em graus (Eq. 4.4)",
         /// e_l ≥ 0.
         exponent: f64 => "the spot exponent e of cos(ψ)^e (Eq. 4.4)",
-            "o expoente de decaimento e de cos(ψ)^e (Eq. 4.4)",
+            "o expoente e do spot em cos(ψ)^e (Eq. 4.4)",
         // Read as any number, so that 1.5 is refused by validation with its reason.
         /// f: 0 none, 1 linear, 2 quadratic (Eq. 4.3).
         #[schemars(range(min = 0, max = 2))]
