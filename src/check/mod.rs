@@ -20,6 +20,7 @@ pub mod export;
 pub mod grade;
 pub(crate) mod messages;
 pub mod moodle;
+pub mod output;
 pub mod report;
 pub mod rubric;
 pub(crate) mod slips;

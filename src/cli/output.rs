@@ -68,22 +68,14 @@ pub(crate) fn write_file(path: &Path, bytes: &[u8]) -> Result<(), CliError> {
     emit_bytes(Some(path), bytes)
 }
 
-/// One JSON document, or an array for several, pretty-printed with a final newline.
-pub(crate) fn json_text(mut docs: Vec<serde_json::Value>) -> String {
-    let value = if docs.len() == 1 {
-        docs.swap_remove(0)
-    } else {
-        serde_json::Value::Array(docs)
-    };
-    json_pretty(&value)
+/// One JSON document, or an array for several ([`crate::report::json::documents_text`]).
+pub(crate) fn json_text(docs: Vec<serde_json::Value>) -> String {
+    crate::report::json::documents_text(docs)
 }
 
-/// `value` pretty-printed with a final newline (a struct's fields in their order, a
-/// [`serde_json::Value`]'s keys sorted).
+/// `value` pretty-printed with a final newline ([`crate::report::json::pretty`]).
 pub(crate) fn json_pretty(value: &impl serde::Serialize) -> String {
-    let mut s = serde_json::to_string_pretty(value).expect("the output serialises");
-    s.push('\n');
-    s
+    crate::report::json::pretty(value)
 }
 
 /// A progress bar on stderr when it is a terminal; hidden otherwise (and under CI). `work`, when

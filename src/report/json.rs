@@ -501,6 +501,25 @@ pub struct OmissionOut {
     pub message: String,
 }
 
+/// One JSON document, or an array for several, pretty-printed with a final newline: what
+/// `--format json` writes for the files of a run.
+pub fn documents_text(mut docs: Vec<serde_json::Value>) -> String {
+    let value = if docs.len() == 1 {
+        docs.swap_remove(0)
+    } else {
+        serde_json::Value::Array(docs)
+    };
+    pretty(&value)
+}
+
+/// `value` pretty-printed with a final newline (a struct's fields in their order, a
+/// [`serde_json::Value`]'s keys sorted).
+pub fn pretty(value: &impl Serialize) -> String {
+    let mut s = serde_json::to_string_pretty(value).expect("the output serialises");
+    s.push('\n');
+    s
+}
+
 /// Builds the JSON document of a solution.
 pub fn document<'a, R: Real>(
     file: &str,

@@ -35,8 +35,8 @@ pub(crate) struct CheckArgs {
     #[arg(long, conflicts_with_all = ["answer", "format", "step", "steps"])]
     pub(crate) slips: bool,
     /// Output format: text for people, json for scripts (stable field names, format_version).
-    #[arg(long, value_enum, default_value_t = CheckFormat::Text)]
-    pub(crate) format: CheckFormat,
+    #[arg(long, value_enum, default_value_t = check::output::Format::Text)]
+    pub(crate) format: check::output::Format,
     /// Language of the text output.
     /// [default: the locale's language: pt where LC_ALL, LC_MESSAGES or LANG is pt_*, else en]
     #[arg(long, value_enum, default_value_t = Lang::from_locale(), hide_default_value = true)]
@@ -116,12 +116,6 @@ pub(crate) struct GradeArgs {
     /// Also write the summary per exercise as CSV to this file (atomically).
     #[arg(long, value_name = "PATH")]
     pub(crate) summary: Option<PathBuf>,
-}
-
-#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
-pub(crate) enum CheckFormat {
-    Text,
-    Json,
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]

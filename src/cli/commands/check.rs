@@ -2,7 +2,7 @@
 //! one; with `--slips`, what each applicable slip gives instead, for an instructor.
 
 use crate::check;
-use crate::cli::args::{CheckArgs, CheckFormat};
+use crate::cli::args::CheckArgs;
 use crate::cli::error::{self, CliError};
 use crate::cli::exit::Exit;
 use crate::cli::faults::{CliFault, SystemError};
@@ -38,8 +38,7 @@ pub(crate) fn run(args: &CheckArgs) -> Result<Exit, CliError> {
         strict: args.strict,
     };
     let mut exit = Exit::Success;
-    let mut text = String::new();
-    let mut docs = Vec::new();
+    let mut writer = args.format.writer(args.lang);
     for path in &args.files {
         let c = check::check_file(path, &options);
         exit = exit.max(exit_of(c.status()));
@@ -50,19 +49,9 @@ pub(crate) fn run(args: &CheckArgs) -> Result<Exit, CliError> {
         if let Err(f) = &c.outcome {
             error::print_in(&f.message, args.lang);
         }
-        match args.format {
-            CheckFormat::Text => {
-                if c.outcome.is_ok() {
-                    text.push_str(&check::report::text(&c, args.lang));
-                }
-            }
-            CheckFormat::Json => docs.extend(check::report::document(Some(&c), None)),
-        }
+        writer.add(Some(&c), None);
     }
-    let out = match args.format {
-        CheckFormat::Text => text,
-        CheckFormat::Json => output::json_text(docs),
-    };
+    let out = writer.finish();
     // Nothing could be checked: no empty output file.
     if !out.is_empty() {
         output::emit(args.output.as_deref(), &out)?;
@@ -172,21 +161,9 @@ fn with_steps(args: &CheckArgs, steps: &[check::steps::GivenStep]) -> Result<Exi
             error::print_in(&f.message, args.lang);
         }
     }
-    let out = match args.format {
-        CheckFormat::Text => {
-            let mut text = String::new();
-            if let Some(c) = answer.as_ref().filter(|c| c.outcome.is_ok()) {
-                text.push_str(&check::report::text(c, args.lang));
-            }
-            text.push_str(&check::steps::text(&checked, args.lang));
-            text
-        }
-        CheckFormat::Json => output::json_text(
-            check::report::document(answer.as_ref(), Some(&checked))
-                .into_iter()
-                .collect(),
-        ),
-    };
+    let mut writer = args.format.writer(args.lang);
+    writer.add(answer.as_ref(), Some(&checked));
+    let out = writer.finish();
     if !out.is_empty() {
         output::emit(args.output.as_deref(), &out)?;
     }

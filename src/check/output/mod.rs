@@ -1,0 +1,48 @@
+//! The output formats of `phong check`, each in a file of its own behind one trait
+//! ([`Writer`]) and declared once in the list of `formats!` below: the `--format` values and
+//! their help, and the writer each gives. A new format is a new file here and a line in the
+//! list (hyperfine's `export/`, one `Exporter` per format).
+
+mod json;
+mod text;
+
+use super::report::Checked;
+use super::steps::StepsChecked;
+use crate::text::Lang;
+
+/// What a format writes of the checks of a run: each file's answer (when one was checked) and
+/// steps (when any were given), in order, then the whole output.
+pub trait Writer {
+    /// One file's check.
+    fn add(&mut self, answer: Option<&Checked>, steps: Option<&StepsChecked>);
+    /// The output; empty when there is nothing to write (nothing could be checked).
+    fn finish(self: Box<Self>) -> String;
+}
+
+/// Declares the formats: `Variant => module::Writer,`, its doc the help of its `--format` value
+/// (the value is the variant's name in lower case).
+macro_rules! formats {
+    ($($(#[$doc:meta])* $variant:ident => $module:ident::$writer:ident,)*) => {
+        /// An output format of `phong check` (`--format`).
+        #[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+        pub enum Format {
+            $($(#[$doc])* $variant,)*
+        }
+
+        impl Format {
+            /// A writer of this format; its words in `lang` (JSON has none).
+            pub fn writer(self, lang: Lang) -> Box<dyn Writer> {
+                match self {
+                    $(Format::$variant => Box::new($module::$writer::new(lang)),)*
+                }
+            }
+        }
+    };
+}
+
+formats! {
+    /// Text for people.
+    Text => text::TextWriter,
+    /// JSON for scripts (stable field names, format_version).
+    Json => json::JsonWriter,
+}
