@@ -481,19 +481,6 @@ impl Message for Purpose {
     }
 }
 
-/// A light's kind as the file names it, in `lang` (`point`, `pontual`).
-fn light_word(kind: LightType, lang: Lang) -> &'static str {
-    match lang {
-        Lang::En => kind.name(),
-        Lang::Pt => match kind {
-            LightType::Ambient => "ambiente",
-            LightType::Point => "pontual",
-            LightType::Directional => "direcional",
-            LightType::Spot => "spot",
-        },
-    }
-}
-
 /// A light named by its index in the file's `lights` and its kind: `lights[1] (point)`,
 /// `lights[1] (pontual)`.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -524,7 +511,7 @@ impl Default for LightLabel {
 
 impl Message for LightLabel {
     fn text(&self, lang: Lang) -> String {
-        format!("lights[{}] ({})", self.index, light_word(self.kind, lang))
+        format!("lights[{}] ({})", self.index, self.kind.word(lang))
     }
 }
 
@@ -549,7 +536,7 @@ impl Message for Kind {
     fn text(&self, lang: Lang) -> String {
         match (*self, lang) {
             (Kind::Light(k), Lang::En) => format!("a {} light", k.name()),
-            (Kind::Light(k), Lang::Pt) => format!("uma luz {}", light_word(k, lang)),
+            (Kind::Light(k), Lang::Pt) => format!("uma luz {}", k.word(lang)),
             (Kind::Surface(s), Lang::En) => format!("a {}", s.name()),
             (Kind::Surface(s), Lang::Pt) => match s {
                 SurfaceType::Plane => "um plano",

@@ -241,15 +241,15 @@ kinds! {
     }
     kinds {
         /// The plane through `point` with normal `normal` (used as given, normalised).
-        Plane "plane" [point, normal, material],
+        Plane "plane" "plano" [point, normal, material],
         /// The sphere with centre `center` and radius `radius` > 0; its normal points outward.
-        Sphere "sphere" [center, radius, material],
+        Sphere "sphere" "esfera" [center, radius, material],
         /// The triangle with corners `vertices` (not all on one line); its normal is
         /// (v1 − v0) × (v2 − v0), turned to face the incoming ray.
-        Triangle "triangle" [vertices, material],
+        Triangle "triangle" "triângulo" [vertices, material],
         /// The triangles of a Wavefront OBJ file (`file`, relative to this file's folder), all of
         /// one material; polygons are split into triangles.
-        Mesh "mesh" [file, material],
+        Mesh "mesh" "malha" [file, material],
     }
 }
 
@@ -292,14 +292,14 @@ kinds! {
     }
     kinds {
         /// Ambient light I_a (Eq. 4.5–4.6). Several ambient lights add up.
-        Ambient "ambient" [color],
+        Ambient "ambient" "ambiente" [color],
         /// A point light at `position` with colour C_l and falloff f ∈ {0, 1, 2} (Eq. 4.1–4.3).
-        Point "point" [position, color, falloff],
+        Point "point" "pontual" [position, color, falloff],
         /// A directional light travelling along `direction` (D_l), no falloff.
-        Directional "directional" [direction, color],
+        Directional "directional" "direcional" [direction, color],
         /// A spot light (Eq. 4.4): apex `position`, cone axis `axis` (D_l), half-angle `angle`
         /// γ in degrees (0–90), exponent e ≥ 0 and falloff f ∈ {0, 1, 2}.
-        Spot "spot" [position, axis, angle, exponent, color, falloff],
+        Spot "spot" "spot" [position, axis, angle, exponent, color, falloff],
     }
 }
 

@@ -51,7 +51,8 @@ use crate::text::{Lang, Message};
 /// }
 /// kinds {
 ///     /// doc of the kind (its description in the schema)
-///     Point "point" [position, color, falloff],   // variant, `type` word, required fields
+///     Point "point" "pontual" [position, color, falloff],
+///                          // variant, `type` word, its Portuguese, required fields
 ///     …
 /// }
 /// ```
@@ -75,7 +76,7 @@ macro_rules! kinds {
         kinds {
             $(
                 $(#[$kind_meta:meta])*
-                $Variant:ident $word:literal [$($takes:ident),* $(,)?],
+                $Variant:ident $word:literal $pt:literal [$($takes:ident),* $(,)?],
             )*
         }
     ) => {
@@ -100,6 +101,17 @@ macro_rules! kinds {
             pub fn name(self) -> &'static str {
                 match self {
                     $($Kind::$Variant => $word,)*
+                }
+            }
+
+            /// The kind's word in `lang`: the `type` word in English, its Portuguese
+            /// (`pontual`, `esfera`) in Portuguese.
+            pub fn word(self, lang: $crate::text::Lang) -> &'static str {
+                match lang {
+                    $crate::text::Lang::En => self.name(),
+                    $crate::text::Lang::Pt => match self {
+                        $($Kind::$Variant => $pt,)*
+                    },
                 }
             }
 

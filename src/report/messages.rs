@@ -182,26 +182,27 @@ phrases! {
     NoHitAnswer => "no hit: the ray hits nothing", "nenhuma interseção: o raio não atinge nada";
 }
 
-/// The word for a light's kind, as the file names it ("point", "directional", "spot").
+/// The word for a light's kind, as the file names it ("point", "directional", "spot"), in
+/// `lang`: the lights table's word (`problem::format`); "light" for a light of no kind.
 pub fn light_kind(kind: &str, lang: Lang) -> &str {
-    match kind {
-        "point" => pick(lang, "point", "pontual"),
-        "directional" => pick(lang, "directional", "direcional"),
-        "spot" => pick(lang, "spot", "spot"),
-        "ambient" => pick(lang, "ambient", "ambiente"),
-        "light" => pick(lang, "light", "luz"),
-        other => other,
+    match crate::problem::format::LightType::ALL
+        .iter()
+        .find(|k| k.name() == kind)
+    {
+        Some(k) => k.word(lang),
+        None if kind == "light" => pick(lang, "light", "luz"),
+        None => kind,
     }
 }
 
-/// The word for a surface kind ("plane", "sphere").
+/// The word for a surface kind ("plane", "sphere"), in `lang`: the surfaces table's word.
 pub fn surface_kind(kind: &str, lang: Lang) -> &str {
-    match kind {
-        "plane" => Phrase::Plane.get(lang),
-        "sphere" => Phrase::Sphere.get(lang),
-        "triangle" => Phrase::Triangle.get(lang),
-        "mesh" => Phrase::Mesh.get(lang),
-        other => other,
+    match crate::problem::format::SurfaceType::ALL
+        .iter()
+        .find(|k| k.name() == kind)
+    {
+        Some(k) => k.word(lang),
+        None => kind,
     }
 }
 
