@@ -62,6 +62,14 @@ macro_rules! walked {
 walked! {
     sentences crate::text::number::NotANumber;
     faults crate::problem::faults::TargetFault;
+    sentences crate::check::grade::NotCsv;
+    sentences crate::check::grade::FieldsHint;
+    sentences crate::check::grade::RowReason;
+    faults crate::check::grade::ExerciseFault;
+    faults crate::check::grade::SubmissionsFault;
+    faults crate::check::grade::HeaderFault;
+    sentences crate::check::grade::ExerciseNote;
+    sentences crate::check::moodle::MoodleError;
 }
 
 /// English words that Portuguese never uses: one of them in a Portuguese rendering (outside
