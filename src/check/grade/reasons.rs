@@ -419,3 +419,122 @@ impl From<super::super::moodle::MoodleError> for Reason {
         Reason::Moodle(m)
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::check::moodle::{Given, MoodleError};
+
+    fn both(m: &dyn Message) -> (String, String) {
+        (m.text(Lang::En), m.text(Lang::Pt))
+    }
+
+    #[test]
+    fn a_count_a_separator_and_a_width_are_said_in_each_language() {
+        let r = RowReason::Fields {
+            count: Fields(1),
+            expected: Width { steps: true },
+            hint: FieldsHint::OtherSeparator {
+                read: Sep(b';'),
+                found: Sep(b'\t'),
+                flag: "tab".into(),
+            },
+        };
+        assert_eq!(
+            both(&r),
+            (
+                "the row has 1 field, expected 4 (student, exercise, answer, steps); the fields \
+                 are read as separated by ';', and this row has a tab character: give \
+                 --delimiter tab"
+                    .into(),
+                "a linha tem 1 campo, e são esperados 4 (aluno, exercício, resposta, passos); os \
+                 campos são lidos como separados por ';', e esta linha tem uma tabulação: dê \
+                 --delimiter tab"
+                    .into()
+            )
+        );
+        let m = MoodleError::TooFewExercises {
+            slot: 3,
+            given: Given(2),
+        };
+        assert!(m.text(Lang::En).contains("only 2 exercises are given:"));
+        assert!(m.text(Lang::Pt).contains("mas só 2 exercícios são dados:"));
+    }
+
+    #[test]
+    fn a_reason_wraps_its_fault_and_joins_its_notes() {
+        let r = Reason::from(HeaderFault::Missing {
+            column: Column::Answer,
+        });
+        let (en, pt) = both(&r);
+        assert!(
+            en.starts_with("the header names no answer column. Fix: name the columns"),
+            "{en}"
+        );
+        assert!(
+            pt.starts_with("o cabeçalho não tem a coluna da resposta. Correção: nomeie"),
+            "{pt}"
+        );
+        assert_eq!(r.to_string(), en);
+        assert_eq!(serde_json::to_value(&r).unwrap(), en.as_str());
+        let notes = Reason::Note {
+            exercise: Some(ExerciseNote::Comma {
+                written: "4,1".into(),
+                point: "4.1".into(),
+            }),
+            answer: Some(AnswerNote::Unclamped),
+        };
+        let (en, pt) = both(&notes);
+        assert!(
+            en.ends_with(
+                "with a point to be sure); accepted as the colour before clamping; \
+                          displayed, it is clamped to [0, 1]"
+            ),
+            "{en}"
+        );
+        assert!(
+            pt.starts_with("o exercício está escrito \"4,1\", lido como 4.1 (uma vírgula decimal"),
+            "{pt}"
+        );
+        assert!(pt.ends_with("na tela ela é limitada a [0, 1]"), "{pt}");
+    }
+
+    #[test]
+    fn unreadable_submissions_are_said_whole_in_each_language() {
+        let e = crate::check::grade::Unreadable {
+            path: "turma.csv".into(),
+            source: std::io::Error::from_raw_os_error(2),
+        };
+        assert_eq!(
+            e.to_string(),
+            "turma.csv: cannot read the file: No such file or directory (os error 2). Fix: check \
+             the path, and that the file exists and is readable"
+        );
+        assert_eq!(
+            e.text(Lang::Pt),
+            "turma.csv: não é possível ler o arquivo: arquivo ou pasta inexistente (erro 2 do \
+             sistema). Correção: confira o caminho, e que o arquivo existe e pode ser lido"
+        );
+        let big = crate::check::grade::Unreadable {
+            path: "turma.csv".into(),
+            source: std::io::Error::new(
+                std::io::ErrorKind::InvalidData,
+                crate::problem::TooMany {
+                    limit: 1_000_000,
+                    what: "rows",
+                },
+            ),
+        };
+        assert_eq!(
+            big.to_string(),
+            "turma.csv: cannot read the file: it has more than 1000000 rows, the most phong \
+             takes. Fix: give a smaller file (the limits are in README, \"Limits and safety\")"
+        );
+        assert_eq!(
+            big.text(Lang::Pt),
+            "turma.csv: não é possível ler o arquivo: tem mais de 1000000 linhas, o máximo que \
+             phong aceita. Correção: dê um arquivo menor (os limites estão na seção \"Limits and \
+             safety\" do README)"
+        );
+    }
+}
