@@ -245,8 +245,8 @@ pub struct Report {
 }
 
 /// The CSV cannot be read at all (a row that cannot be read is reported in its place instead):
-/// `PATH: cannot read the file: WHY. Fix: FIX`, said in a language by its [`Message`]
-/// (crate::text::Message), in English by its `Display`.
+/// `PATH: cannot read the file: WHY. Fix: FIX`, said in a language by its
+/// [`Message`](crate::text::Message), in English by its `Display`.
 #[derive(Debug)]
 pub struct Unreadable {
     /// The submissions' path.
