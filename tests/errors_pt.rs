@@ -395,11 +395,7 @@ fn a_scenes_errors_are_wholly_portuguese_and_say_what_fits() {
             &["não é finito em f64", "dê coordenadas finitas"],
         ),
         // Over a million triangles: the fix in Portuguese too.
-        (
-            "big.json",
-            b"",
-            &["dê uma malha de no máximo 1000000 triângulos"],
-        ),
+        ("big.json", b"", &["dê uma malha de até 1000000 triângulos"]),
         // A scene on standard input: its mesh is relative to the working folder.
         (
             "-",
@@ -480,4 +476,345 @@ fn a_degenerate_obj_face_is_named_without_tobjs_placeholder() {
         b"",
     );
     assert!(stderr.contains("(objeto \"wing\")"), "{stderr}");
+}
+
+/// Runs phong from the crate's folder with `args` in the locale `lang` (`LANG`; `LC_ALL` and
+/// `LC_MESSAGES` unset): the exit code, standard output and standard error.
+fn phong_with_locale(lang: &str, args: &[&str]) -> (i32, String, String) {
+    let out = Command::cargo_bin("phong")
+        .unwrap()
+        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .env_remove("LC_ALL")
+        .env_remove("LC_MESSAGES")
+        .env("LANG", lang)
+        .args(args)
+        .output()
+        .unwrap();
+    (
+        out.status.code().unwrap_or(-1),
+        String::from_utf8_lossy(&out.stdout).into_owned(),
+        String::from_utf8_lossy(&out.stderr).into_owned(),
+    )
+}
+
+/// Issue 27: clap's usage errors are rebuilt in Portuguese from clap's context (the argument,
+/// the value, the valid values, the suggestion), one kind each; exit 2 as clap's own.
+#[test]
+fn clap_usage_errors_are_said_in_portuguese() {
+    const MORE: &str = "\n\nPara mais informações, tente '--help'.\n";
+    let cases: Vec<(Vec<&str>, String)> = vec![
+        // InvalidValue, with the valid values and clap's suggestion.
+        (
+            vec![
+                "solve",
+                "exercises/4.1.json",
+                "--format",
+                "jsn",
+                "--lang",
+                "pt",
+            ],
+            format!(
+                "erro: valor inválido 'jsn' para '--format <FORMAT>'\n  [valores possíveis: \
+                 text, markdown, latex, html, json]\n\n  dica: há um valor parecido: 'json'{MORE}"
+            ),
+        ),
+        // InvalidValue with no value at all.
+        (
+            vec!["check", "exercises/4.1.json", "--lang=pt", "--format"],
+            format!(
+                "erro: '--format <FORMAT>' precisa de um valor, e nenhum foi dado\n  [valores \
+                 possíveis: text, json]{MORE}"
+            ),
+        ),
+        // ValueValidation: phong's own parser's reason, in Portuguese.
+        (
+            vec![
+                "check",
+                "exercises/4.1.json",
+                "--answer",
+                "0 0 0",
+                "--tolerance",
+                "abc",
+                "--lang",
+                "pt",
+            ],
+            format!(
+                "erro: valor inválido 'abc' para '--tolerance <T>': \"abc\" não é uma \
+                 tolerância. Correção: dê a maior diferença aceita por canal, um número ≥ 0 (por \
+                 exemplo 0.005 na escala 0–1, 1 na escala 255){MORE}"
+            ),
+        ),
+        (
+            vec![
+                "render",
+                "scenes/4.3.json",
+                "--samples",
+                "0",
+                "-o",
+                "x.png",
+                "--lang",
+                "pt",
+            ],
+            format!(
+                "erro: valor inválido '0' para '--samples <N>': 0 está fora de 1 a 4096. \
+                 Correção: dê as amostras por pixel de 1 a 4096{MORE}"
+            ),
+        ),
+        (
+            vec![
+                "render",
+                "scenes/4.3.json",
+                "--explain-pixel",
+                "3,b",
+                "--lang",
+                "pt",
+            ],
+            format!(
+                "erro: valor inválido '3,b' para '--explain-pixel <X,Y>': \"b\" não é uma \
+                 coordenada de pixel (um número inteiro ≥ 0){MORE}"
+            ),
+        ),
+        // UnknownArgument, with clap's suggestion.
+        (
+            vec![
+                "check",
+                "exercises/4.1.json",
+                "--tolerence",
+                "1",
+                "--lang",
+                "pt",
+            ],
+            format!(
+                "erro: argumento inesperado '--tolerence'\n\n  dica: há um argumento parecido: \
+                 '--tolerance'{MORE}"
+            ),
+        ),
+        // MissingRequiredArgument.
+        (
+            vec!["render", "scenes/4.3.json", "--lang", "pt"],
+            format!("erro: faltam os argumentos obrigatórios:\n  --output <PATH>{MORE}"),
+        ),
+        // ArgumentConflict: with one flag, with several, and a flag given twice.
+        (
+            vec![
+                "check",
+                "exercises/4.1.json",
+                "--slips",
+                "--answer",
+                "0",
+                "--lang",
+                "pt",
+            ],
+            format!("erro: o argumento '--slips' não pode ser usado com '--answer <ANSWER>'{MORE}"),
+        ),
+        (
+            vec![
+                "check",
+                "exercises/4.1.json",
+                "--slips",
+                "--format",
+                "json",
+                "--answer",
+                "0",
+                "--lang",
+                "pt",
+            ],
+            format!(
+                "erro: o argumento '--slips' não pode ser usado com:\n  --format <FORMAT>\n  \
+                 --answer <ANSWER>{MORE}"
+            ),
+        ),
+        (
+            vec![
+                "check",
+                "exercises/4.1.json",
+                "--answer",
+                "0",
+                "--answer",
+                "1",
+                "--lang",
+                "pt",
+            ],
+            format!(
+                "erro: o argumento '--answer <ANSWER>' não pode ser usado mais de uma vez{MORE}"
+            ),
+        ),
+        // InvalidSubcommand, with clap's suggestions.
+        (
+            vec!["chek", "--lang", "pt"],
+            format!(
+                "erro: subcomando desconhecido 'chek'\n\n  dica: há subcomandos parecidos: \
+                 'schema', 'check'{MORE}"
+            ),
+        ),
+    ];
+    for (args, expected) in cases {
+        let (code, stdout, stderr) = phong_with_locale("C", &args);
+        assert_eq!(code, 2, "{args:?}: {stderr}");
+        assert_eq!(stdout, "", "{args:?}");
+        assert_eq!(stderr, expected, "{args:?}");
+        for english in ["error", "invalid", "tip:", "Usage", "argument '", "found"] {
+            assert!(
+                !stderr.contains(english),
+                "{args:?}: {english:?} in {stderr}"
+            );
+        }
+    }
+}
+
+/// Issue 27: without `--lang`, a Portuguese locale gives Portuguese and any other English
+/// (clap's own text, untouched); `--lang en` overrides a Portuguese locale. Help stays clap's.
+#[test]
+fn the_locale_chooses_the_language_and_lang_overrides_it() {
+    let args = ["check", "exercises/4.1.json", "--tolerence", "1"];
+    let english = "error: unexpected argument '--tolerence' found\n\n  tip: a similar argument \
+                   exists: '--tolerance'\n\nUsage: phong check --tolerance <T> <FILE>...\n\nFor \
+                   more information, try '--help'.\n";
+    let portuguese = "erro: argumento inesperado '--tolerence'\n\n  dica: há um argumento \
+                      parecido: '--tolerance'\n\nPara mais informações, tente '--help'.\n";
+    let (code, _, stderr) = phong_with_locale("pt_BR.UTF-8", &args);
+    assert_eq!((code, stderr.as_str()), (2, portuguese));
+    let (code, _, stderr) = phong_with_locale("C", &args);
+    assert_eq!((code, stderr.as_str()), (2, english));
+    let with_en = [&args[..], &["--lang", "en"]].concat();
+    let (code, _, stderr) = phong_with_locale("pt_BR.UTF-8", &with_en);
+    assert_eq!((code, stderr.as_str()), (2, english));
+
+    // A command's own error follows the locale too.
+    let render = ["render", "scenes/4.3.json", "-o", "x.jpg"];
+    let (code, _, stderr) = phong_with_locale("pt_BR.UTF-8", &render);
+    assert_eq!(code, 2);
+    assert_eq!(
+        stderr,
+        "erro: --output: x.jpg não termina em .png ou .ppm. Correção: dê à imagem um nome *.png \
+         ou *.ppm, ou dê --image-format png|ppm\n"
+    );
+    let (_, _, stderr) = phong_with_locale("C", &render);
+    assert_eq!(
+        stderr,
+        "error: --output: x.jpg does not end in .png or .ppm. Fix: name the image *.png or \
+         *.ppm, or give --image-format png|ppm\n"
+    );
+    let (_, _, stderr) =
+        phong_with_locale("pt_BR.UTF-8", &[&render[..], &["--lang", "en"]].concat());
+    assert!(
+        stderr.starts_with("error: --output: x.jpg does not end"),
+        "{stderr}"
+    );
+
+    // Help is clap's, in every locale.
+    let (code, help_pt, _) = phong_with_locale("pt_BR.UTF-8", &["check", "--help"]);
+    let (_, help_c, _) = phong_with_locale("C", &["check", "--help"]);
+    assert_eq!(code, 0);
+    assert_eq!(help_pt, help_c);
+}
+
+/// Issue 27: the command line's own errors (flags that do not go together, a flag's value
+/// refused after parsing, output that cannot be written, a folder that is not one) are typed
+/// values said wholly in Portuguese.
+#[test]
+fn command_line_errors_are_said_in_portuguese() {
+    let dir = tempfile::tempdir().unwrap();
+    let file = dir.path().join("file");
+    std::fs::write(&file, "x").unwrap();
+    let file = file.to_str().unwrap().to_owned();
+    let inside = format!("{file}/x.txt");
+    let input = dir.path().join("input.json");
+    std::fs::copy(
+        Path::new(env!("CARGO_MANIFEST_DIR")).join("exercises/4.1.json"),
+        &input,
+    )
+    .unwrap();
+    let input = input.to_str().unwrap().to_owned();
+    let cases: Vec<(Vec<&str>, String)> =
+        vec![
+        (
+            vec!["check", "exercises/4.1.json", "exercises/4.2.json", "--answer", "0"],
+            "erro: --answer confere um arquivo, e 2 foram dados. Correção: confira um arquivo \
+             por vez, ou ponha a resposta de cada arquivo em seu campo \"answer\" e tire --answer"
+                .into(),
+        ),
+        (
+            vec!["solve", "exercises/4.1.json", "--fragment"],
+            "erro: --fragment vale só para --format latex e html. Correção: tire --fragment, ou \
+             use --format latex ou html"
+                .into(),
+        ),
+        (
+            vec!["solve", &input, "-o", &input],
+            format!(
+                "erro: --output {input} é a entrada {input}: escrever nele substituiria o que \
+                 está sendo lido. Correção: dê outro arquivo a --output"
+            ),
+        ),
+        // 4.3's camera is 320×240: pixels 0 to 319 across, 0 to 239 down.
+        (
+            vec!["render", "scenes/4.3.json", "--explain-pixel", "5000,5000"],
+            "erro: --explain-pixel: o pixel 5000,5000 está fora da imagem 320×240. Correção: dê \
+             X de 0 a 319 e Y de 0 a 239"
+                .into(),
+        ),
+        (
+            vec!["grade", "x.csv", "--exercises", "README.md"],
+            "erro: README.md: --exercises: não é uma pasta. Correção: dê a pasta que tem os \
+             arquivos dos exercícios (o exercício 4.2 é DIR/4.2.json)"
+                .into(),
+        ),
+        (
+            vec!["grade", "x.csv", "--exercises", "exercises", "--rubric", &inside],
+            format!(
+                "erro: --rubric {inside}: não é possível ler o arquivo: não é uma pasta (erro 20 \
+                 do sistema). Correção: dê um arquivo de rubrica como mostra a seção \"Grading\" \
+                 do README"
+            ),
+        ),
+        (
+            vec!["check", "exercises/4.1.json", "--steps", &inside],
+            format!(
+                "erro: --steps: {inside}: não é possível ler o arquivo: não é uma pasta (erro 20 \
+                 do sistema). Correção: confira o caminho, e que o arquivo existe e é texto UTF-8"
+            ),
+        ),
+        (
+            vec!["solve", "exercises/4.1.json", "-o", &inside],
+            format!("erro: não é possível escrever {inside}: não é uma pasta (erro 20 do sistema)"),
+        ),
+        (
+            vec!["new", "--kind", "ambient", "-o", &file],
+            format!(
+                "erro: {file}: não é possível criar a pasta: o arquivo já existe (erro 17 do \
+                 sistema)"
+            ),
+        ),
+        // `tradeoff` and `export-pov` have no --lang: the locale decides.
+        (
+            vec!["tradeoff", "scenes/4.3.json", "--plot", "x.png"],
+            "erro: --plot: x.png não termina em .svg. Correção: dê ao gráfico um nome *.svg (ele \
+             é escrito em SVG)"
+                .into(),
+        ),
+        (
+            vec!["export-pov", "scenes/4.3.json", "--samples", "4"],
+            "erro: scenes/4.3.json: render.samples: não pode ser expresso em POV-Ray 3.7: phong \
+             faz a média de 4 amostras estratificadas por pixel, e o anti-aliasing do POV-Ray \
+             amostra de outro modo. Correção: exporte com --samples 1 (o POV-Ray então traça o \
+             centro de cada pixel, como phong faz)"
+                .into(),
+        ),
+    ];
+    for (args, expected) in cases {
+        let (code, _, stderr) = phong_with_locale("pt_BR.UTF-8", &args);
+        assert_eq!(code, 2, "{args:?}: {stderr}");
+        assert_eq!(stderr, format!("{expected}\n"), "{args:?}");
+        for english in [
+            " the ", " is ", " cannot ", "Fix:", "error", " and ", " give ",
+        ] {
+            assert!(
+                !stderr.contains(english),
+                "{args:?}: {english:?} in {stderr}"
+            );
+        }
+    }
+    // Nothing was written over the input, nor into the file taken for a folder.
+    assert_eq!(std::fs::read_to_string(&file).unwrap(), "x");
 }

@@ -1467,7 +1467,7 @@ fn render_tiny<R: Real>(mut problem: problem::Problem<R>, c: &Context) -> Result
         match phong::export::pov::export(&problem64) {
             Ok(sdl) => no_nan_text(&sdl, "the POV-Ray SDL", c)?,
             Err(e) => {
-                if e.what.is_empty() || e.why.is_empty() || e.fix.is_empty() {
+                if e.what.is_empty() || e.why().is_empty() || e.fix().is_empty() {
                     return Err(format!("export-pov: an unclear refusal: {e:?}"));
                 }
             }
@@ -1500,21 +1500,22 @@ fn check_path(c: &Context, tally: &Tally) -> Result<(), String> {
         }
         Err(f) => {
             let file = c.path.display().to_string();
+            let message = f.message.to_string();
             let known = ["read", "syntax", "invalid", "answer", "no_answer"];
             if !known.contains(&f.kind.code()) {
                 return Err(format!("check: unknown failure kind {:?}", f.kind));
             }
-            if !f.message.starts_with(&file) {
+            if !message.starts_with(&file) {
                 return Err(format!(
                     "check: the message does not start with the file: {f:?}"
                 ));
             }
-            if f.kind.code() == "answer" && !f.message.contains("answer") {
+            if f.kind.code() == "answer" && !message.contains("answer") {
                 return Err(format!(
                     "check: the message does not name the answer: {f:?}"
                 ));
             }
-            message_is_tidy(&f.message, c, "check")?;
+            message_is_tidy(&message, c, "check")?;
         }
     }
     Ok(())
@@ -2125,14 +2126,26 @@ fn load_bytes(bytes: &[u8]) -> (Workspace, Result<problem::Problem<f64>, Problem
     (ws, loaded)
 }
 
-/// The syntax error of a file that must be rejected: (line, column, message, fix).
+/// The syntax error of a file that must be rejected: (line, column, message, fix), the
+/// message after its field when it has one (`viewer: too many elements: …`).
 fn syntax_error(bytes: &[u8]) -> (usize, usize, String, String) {
     match load_bytes(bytes).1 {
         Err(e @ ProblemError::Syntax { .. }) => {
-            let ProblemError::Syntax { line, column, .. } = e else {
+            let ProblemError::Syntax {
+                line,
+                column,
+                ref field,
+                ..
+            } = e
+            else {
                 unreachable!()
             };
-            (line, column, e.message(), e.fix())
+            // The message as the user reads it: after its field, when the parser knows it.
+            let message = match field {
+                Some(f) => format!("{f}: {}", e.message()),
+                None => e.message(),
+            };
+            (line, column, message, e.fix())
         }
         other => panic!("expected a syntax error, got {other:?}"),
     }
@@ -2290,6 +2303,7 @@ fn an_answer_scale_of_1e300_is_written_1e300_not_301_digits() {
     assert!(
         failure
             .message
+            .to_string()
             .contains("answer.scale: 1e300 is not a scale"),
         "{}",
         failure.message
@@ -2640,7 +2654,11 @@ fn fuzz_answers_never_panic_and_their_errors_stay_short() {
                 Ok(a) => prop_assert!(a.values.iter().flatten().all(|v| v.is_finite()), "{:?}", a),
                 // The answer is echoed shortened: a message of at most a few hundred characters
                 // whatever was typed.
-                Err(e) => prop_assert!(e.message.chars().count() < 600, "{}", e.message.len()),
+                Err(e) => prop_assert!(
+                    e.to_string().chars().count() < 600,
+                    "{}",
+                    e.to_string().len()
+                ),
             }
             Ok(())
         })

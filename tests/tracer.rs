@@ -937,3 +937,53 @@ fn an_explained_smooth_mesh_pixel_says_which_normal_it_shades_with() {
         assert!(out.status.success() && text.contains(words), "{text}");
     }
 }
+
+/// The pixel's explanation through the same layout as `phong solve`'s: each ray's solver
+/// explanation sits below the ray's heading in every format (Markdown `#####` under `####`,
+/// HTML `<h4>` under `<h3>`, LaTeX `\paragraph*` under `\subsubsection*`), and the HTML's
+/// elements are balanced.
+#[test]
+fn a_pixels_explanation_nests_each_rays_solution_below_the_ray() {
+    let explain = |format: &str| {
+        let out = phong()
+            .arg("render")
+            .arg(repo("scenes/glass.json"))
+            .args(["--explain-pixel", "320,240", "--format", format])
+            .args(["--lang", "en"])
+            .output()
+            .unwrap();
+        assert!(out.status.success(), "{format}");
+        String::from_utf8(out.stdout).unwrap()
+    };
+    let md = explain("markdown");
+    let headings: Vec<&str> = md.lines().filter(|l| l.starts_with('#')).collect();
+    assert!(
+        headings[0].starts_with("## Pixel (320, 240)"),
+        "{headings:?}"
+    );
+    for h in &headings[1..] {
+        let level = h.chars().take_while(|&c| c == '#').count();
+        let expected = if h.starts_with("### Sample") {
+            3
+        } else if h.starts_with("#### Ray ") {
+            4
+        } else {
+            5
+        };
+        assert_eq!(level, expected, "{h}");
+    }
+    assert!(md.contains("\n##### Findings\n"));
+    let html = explain("html");
+    for tag in ["article", "section", "ul", "ol"] {
+        assert_eq!(
+            html.matches(&format!("<{tag}")).count(),
+            html.matches(&format!("</{tag}>")).count(),
+            "<{tag}>"
+        );
+    }
+    assert!(html.contains("<h4>Findings</h4>") && html.contains("<h5>Given</h5>"));
+    assert!(!html.contains("<h2>Findings</h2>"));
+    let latex = explain("latex");
+    assert!(latex.contains("\\paragraph*{Findings}") && latex.contains("\\subparagraph{Given}"));
+    assert!(!latex.contains("\\subsection*{Findings}"));
+}

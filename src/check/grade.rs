@@ -10,7 +10,7 @@
 //! `invalid` with the reason, and the batch goes on. A first line naming the three columns in
 //! English or Portuguese (`aluno;exercício;resposta`, in any order) is a header, not a row; it
 //! may name a fourth column, `steps` (`passos`), whose cell holds a row's step answers
-//! (`cos_theta=0.98995; n_dot_l=-0.98995`, read by [`super::steps::parse_cell`] and judged as
+//! (`cos_theta=0.98995; n_dot_l=-0.98995`, read by [`super::steps::read_cell`] and judged as
 //! `phong check --step` judges them; they change no points). Each exercise is solved once (with
 //! its slips) on first use, its steps' quantities when a row first gives steps; grading a row is
 //! then a few comparisons.
@@ -32,7 +32,7 @@ use crate::text::lang::Lang;
 mod reasons;
 pub use reasons::{
     AnswerNote, Column, ExerciseFault, ExerciseNote, Fields, FieldsHint, HeaderFault, NotCsv,
-    Reason, RowReason, Sep, SubmissionsFault, Untyped, Width,
+    Reason, RowReason, Said, Sep, Width,
 };
 
 /// How answers are read and judged.
@@ -257,15 +257,7 @@ pub struct Unreadable {
 
 impl crate::text::Message for Unreadable {
     fn text(&self, lang: Lang) -> String {
-        let cause = Untyped(self.source.to_string());
-        let too_large = self.source.get_ref().is_some_and(|inner| {
-            inner.is::<crate::problem::TooLarge>() || inner.is::<crate::problem::TooMany>()
-        });
-        let fault = if too_large {
-            SubmissionsFault::TooLarge { cause }
-        } else {
-            SubmissionsFault::Unreadable { cause }
-        };
+        let fault = crate::problem::reading::ReadFault::of(&self.source);
         format!(
             "{}: {}",
             self.path.display(),
@@ -353,7 +345,7 @@ impl Cache<'_> {
         }
         let real = std::fs::canonicalize(&path).map_err(|e| ExerciseFault::CannotFollow {
             path: path.clone(),
-            cause: Untyped(e.to_string()),
+            cause: crate::problem::reading::Cause::of(&e),
         })?;
         if !self.folder.as_ref().is_some_and(|d| real.starts_with(d)) {
             return Err(ExerciseFault::LinkOut {
@@ -391,11 +383,15 @@ pub fn grade_file(path: &Path, options: &Options) -> Result<Report, Unreadable> 
 /// [`MAX_SUBMISSIONS_BYTES`] or when it has more than [`MAX_ROWS`] rows (a header is not a row:
 /// a header and 1,000,000 rows are read).
 pub fn read_submissions(path: &Path, options: &Options) -> Result<Vec<u8>, Unreadable> {
-    let bytes = crate::problem::read_limited(path, MAX_SUBMISSIONS_BYTES, "a submissions file")
-        .map_err(|source| Unreadable {
-            path: path.to_owned(),
-            source,
-        })?;
+    let bytes = crate::problem::read_limited(
+        path,
+        MAX_SUBMISSIONS_BYTES,
+        crate::problem::Input::Submissions,
+    )
+    .map_err(|source| Unreadable {
+        path: path.to_owned(),
+        source,
+    })?;
     if data_rows(&decode(&bytes), options) > MAX_ROWS {
         return Err(Unreadable {
             path: path.to_owned(),
@@ -403,7 +399,7 @@ pub fn read_submissions(path: &Path, options: &Options) -> Result<Vec<u8>, Unrea
                 std::io::ErrorKind::InvalidData,
                 crate::problem::TooMany {
                     limit: MAX_ROWS,
-                    what: "rows",
+                    what: crate::problem::Counted::Rows,
                 },
             ),
         });
@@ -1407,7 +1403,7 @@ fn grade_row(
     let mut a = match answer::parse(&row.answer, options.scale) {
         Ok(a) => a,
         Err(e) => {
-            let why = Untyped(e.to_string());
+            let why = Said::of(e);
             return invalid(row, RowReason::Answer { why }.into());
         }
     };
@@ -1421,17 +1417,17 @@ fn grade_row(
     // or judged is the row's error, naming the row, the column, the step as written and the fix.
     let judged = match &layout.steps {
         Some((_, column)) if !row.steps_text.is_empty() => {
-            let at = |row: &RowOut, why: String| {
+            let at = |row: &RowOut, why: Said| {
                 Reason::from(RowReason::Steps {
                     row: row.row,
                     line: row.line,
                     column: column.clone(),
-                    why: Untyped(why),
+                    why,
                 })
             };
-            let given = match steps::parse_cell(&row.steps_text) {
+            let given = match steps::read_cell(&row.steps_text) {
                 Ok(g) => g,
-                Err(e) => return invalid(row, at(row, e.message)),
+                Err(e) => return invalid(row, at(row, Said::of(e))),
             };
             if given.is_empty() {
                 // Separators only (`;`): no steps.
@@ -1441,9 +1437,9 @@ fn grade_row(
                     Ok(x) => x,
                     Err(e) => return invalid(row, e.clone()),
                 };
-                match steps::judge_steps(x, &given, options.strict) {
+                match steps::judge(x, &given, options.strict) {
                     Ok(j) => Some(j),
-                    Err(e) => return invalid(row, at(row, e)),
+                    Err(e) => return invalid(row, at(row, Said::of(e))),
                 }
             }
         }

@@ -536,7 +536,7 @@ impl Prepared {
     pub fn of(source: Source<'_>) -> Prepared {
         let path = source.name();
         let loaded = Loaded::read(source)
-            .map_err(|e| Failure::problem(&e))
+            .map_err(Failure::problem)
             .map(|loaded| {
                 let warnings = loaded
                     .problem
@@ -544,8 +544,8 @@ impl Prepared {
                     .map_or_else(|_| Vec::new(), |p| p.warnings.clone());
                 let expected = loaded
                     .problem
-                    .map_err(|e| Failure::problem(&e))
-                    .and_then(|p| Expected::of(&p).map_err(|e| Failure::problem(&e.at(path))));
+                    .map_err(Failure::problem)
+                    .and_then(|p| Expected::of(&p).map_err(|e| Failure::problem(e.at(path))));
                 PreparedFile {
                     file: loaded.file,
                     warnings,
@@ -629,6 +629,7 @@ fn judge_loaded(
         field: Some(field.into()),
         message,
     };
+    use report::Said;
     let key = match (&options.answer, &loaded.file.answer) {
         (Some(text), file_key) => answer::parse(text, options.scale)
             .map(|answer| Key {
@@ -640,18 +641,15 @@ fn judge_loaded(
                     .and_then(|k| answer::from_key(k).ok())
                     .and_then(|k| k.tolerance_on(answer.scale)),
             })
-            .map_err(|e| answer_failure("--answer", format!("{file}: --answer: {e}")))?,
+            .map_err(|e| answer_failure("--answer", Said::at(format!("{file}: --answer"), e)))?,
         (None, Some(key)) => {
-            answer::from_key(key).map_err(|e| answer_failure("answer", format!("{file}: {e}")))?
+            answer::from_key(key).map_err(|e| answer_failure("answer", Said::at(file, e)))?
         }
         (None, None) => {
             return Err(Failure {
                 kind: FailureKind::NoAnswer,
                 field: Some("answer".into()),
-                message: format!(
-                    "{file}: answer: missing: the file has no answer key to check. Fix: pass \
-                     --answer \"r g b\", or add \"answer\": [r, g, b] to the file"
-                ),
+                message: Said::new(CheckMessage::NoAnswerKey { file: file.into() }),
             })
         }
     };
@@ -680,5 +678,19 @@ fn key_json(key: &crate::problem::format::AnswerSpec) -> serde_json::Value {
         AnswerSpec::Key(k) => serde_json::json!({
             "color": color(&k.color), "scale": k.scale, "tolerance": k.tolerance
         }),
+    }
+}
+
+crate::messages! {
+    /// What `phong check` says of an answer it cannot check (beside the answer's and the
+    /// problem file's own errors).
+    #[allow(missing_docs)]
+    pub enum CheckMessage {
+        /// No `--answer`, and the file has no key.
+        NoAnswerKey { file: String } =>
+            "{file}: answer: missing: the file has no answer key to check. Fix: pass --answer \
+             \"r g b\", or add \"answer\": [r, g, b] to the file",
+            "{file}: answer: ausente: o arquivo não tem gabarito para conferir. Correção: passe \
+             --answer \"r g b\", ou acrescente \"answer\": [r, g, b] ao arquivo";
     }
 }

@@ -12,6 +12,7 @@ use crate::problem::ProblemError;
 use crate::solve::ReadingCode;
 use crate::text::lang::Lang;
 use crate::text::number::num;
+use crate::text::Message;
 
 /// The version of the JSON output of `phong check` and `phong grade`.
 pub const CHECK_FORMAT_VERSION: u32 = 1;
@@ -60,20 +61,23 @@ pub struct Failure {
     pub kind: FailureKind,
     /// The field of the problem file at fault, where there is one (`lights[1].falloff`).
     pub field: Option<String>,
-    /// The error as an English sentence, with its fix.
-    pub message: String,
+    /// The error, with its fix: rendered in a language where it is shown; the JSON has it in
+    /// English.
+    pub message: Said,
 }
 
 impl Failure {
     /// A problem file that cannot be read, parsed, validated or solved.
-    pub(crate) fn problem(e: &ProblemError) -> Self {
+    pub(crate) fn problem(e: ProblemError) -> Self {
         Failure {
-            kind: FailureKind::of(e),
+            kind: FailureKind::of(&e),
             field: e.field().map(str::to_owned),
-            message: e.to_string(),
+            message: Said::new(e),
         }
     }
 }
+
+pub use crate::text::Said;
 
 /// What could not be checked, as the JSON's `error.kind` names it.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -172,7 +176,7 @@ pub fn text(c: &Checked, lang: Lang) -> String {
                 "{}: {}: {}",
                 c.file,
                 messages::invalid(lang),
-                f.message
+                f.message.text(lang)
             );
             return out;
         }
@@ -451,7 +455,7 @@ pub fn json(c: &Checked) -> CheckOut {
     };
     match &c.outcome {
         Err(f) => {
-            out.message = f.message.clone();
+            out.message = f.message.text(Lang::En);
             out.error = Some(f.clone());
         }
         Ok(Judged {

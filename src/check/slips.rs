@@ -22,122 +22,184 @@ use crate::problem::{GivenVector, NamedMaterial, Problem, Target as Shaded};
 use crate::solve::{mirror_lights, solve_with, Solution};
 
 use super::Target;
+use crate::text::{Lang, Message};
 
-/// A classic slip. The order is the order of application in a pair: the ray first (it decides
-/// P), the literal value last (it reads whatever the others computed).
-#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash, serde::Serialize)]
-#[serde(rename_all = "snake_case")]
-pub enum Slip {
+/// Declares the slips, one row each: its doc, variant, JSON code, the chapter's equation (or
+/// section) it is about, optionally its `group` (slips that exclude each other) and the factor it
+/// `truncate`s the final colour by, and its name in English and in Portuguese. The enum, its
+/// `ALL`, `code`, `name`, `group`, `reference` and `truncation` are generated from the rows; how a
+/// slip changes the problem is its arm of [`Variant::with`]'s `match`.
+macro_rules! slips {
+    ($(
+        $(#[doc = $doc:literal])*
+        $variant:ident = $code:literal, $reference:literal
+            $(group $group:literal)? $(truncate $factor:literal)? =>
+            $en:literal, $pt:literal;
+    )*) => {
+        /// A classic slip. The order is the order of application in a pair: the ray first (it
+        /// decides P), the literal value last (it reads whatever the others computed).
+        #[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
+        #[cfg_attr(test, derive(strum::EnumIter))]
+        pub enum Slip {
+            $($(#[doc = $doc])* $variant,)*
+        }
+
+        impl Slip {
+            /// Every slip, in the order of application.
+            pub const ALL: [Slip; [$(stringify!($variant)),*].len()] = [$(Slip::$variant),*];
+
+            /// The stable code (as in the JSON output).
+            pub fn code(self) -> &'static str {
+                match self {
+                    $(Slip::$variant => $code,)*
+                }
+            }
+
+            /// What the slip is, in a few words, in `lang`.
+            pub fn name(self, lang: Lang) -> &'static str {
+                match (self, lang) {
+                    $(
+                        (Slip::$variant, Lang::En) => $en,
+                        (Slip::$variant, Lang::Pt) => $pt,
+                    )*
+                }
+            }
+
+            /// The chapter's equation (or section) the slip is about: `Eq. 4.7`, `Sec. 4.4`.
+            pub fn reference(self) -> &'static str {
+                match self {
+                    $(Slip::$variant => $reference,)*
+                }
+            }
+
+            /// Slips that exclude each other (one falloff exponent at a time) share a group.
+            fn group(self) -> Option<u8> {
+                match self {
+                    $(Slip::$variant => None $(.or(Some($group)))?,)*
+                }
+            }
+
+            /// A truncation of the final colour's last step: ⌊k·c⌋/k, by this `k`.
+            fn truncation(self) -> Option<f64> {
+                match self {
+                    $(Slip::$variant => None $(.or(Some($factor)))?,)*
+                }
+            }
+        }
+    };
+}
+
+slips! {
     /// The ray's intersection taken behind its origin (t < 0): the ray reversed.
-    HitBehindOrigin,
+    HitBehindOrigin = "hit_behind_origin", "Eq. 4.17" =>
+        "the intersection taken behind the ray's origin (t < 0)",
+        "a interseção tomada atrás da origem do raio (t < 0)";
     /// L taken from the point to the light, the opposite of Eq. 4.1: the lights mirrored through P.
-    LightReversed,
+    LightReversed = "light_reversed", "Eq. 4.1" =>
+        "L reversed: taken from the point to the light, the opposite of Eq. 4.1",
+        "L invertido: tomado do ponto para a luz, o oposto da Eq. 4.1";
     /// V taken from the point to the eye, the opposite of Eq. 4.10: the viewer mirrored through P.
-    ViewerReversed,
+    ViewerReversed = "viewer_reversed", "Eq. 4.10" =>
+        "V reversed: taken from the point to the eye, the opposite of Eq. 4.10",
+        "V invertido: tomado do ponto para o observador, o oposto da Eq. 4.10";
     /// The normal reversed.
-    NormalReversed,
+    NormalReversed = "normal_reversed", "Eq. 4.7" =>
+        "the normal reversed",
+        "a normal invertida";
     /// cos θ taken as |N·L| (Eq. 4.7).
-    AbsCosTheta,
+    AbsCosTheta = "abs_cos_theta", "Eq. 4.7" =>
+        "|cos θ| taken: cos θ = |N·L| instead of −N·L (Eq. 4.7)",
+        "|cos θ| usado: cos θ = |N·L| em vez de −N·L (Eq. 4.7)";
     /// The normal used with the length it was given.
-    NormalNotNormalized,
+    NormalNotNormalized = "normal_not_normalized", "Eq. 4.7" =>
+        "the normal not normalised (used with the length it was given)",
+        "a normal não normalizada (usada com o comprimento dado)";
     /// The falloff forgotten: I_l = C_l (Eq. 4.2).
-    FalloffForgotten,
+    FalloffForgotten = "falloff_forgotten", "Eq. 4.2" group 0 =>
+        "the falloff forgotten (I_l = C_l instead of C_l/d^f, Eq. 4.2)",
+        "o decaimento esquecido (I_l = C_l em vez de C_l/d^f, Eq. 4.2)";
     /// Linear falloff where the problem says quadratic.
-    FalloffLinearNotQuadratic,
+    FalloffLinearNotQuadratic = "falloff_linear_not_quadratic", "Eq. 4.2" group 0 =>
+        "linear falloff where the problem says quadratic (Eq. 4.3)",
+        "decaimento linear onde o problema diz quadrático (Eq. 4.3)";
     /// Quadratic falloff where the problem says linear.
-    FalloffQuadraticNotLinear,
+    FalloffQuadraticNotLinear = "falloff_quadratic_not_linear", "Eq. 4.2" group 0 =>
+        "quadratic falloff where the problem says linear (Eq. 4.3)",
+        "decaimento quadrático onde o problema diz linear (Eq. 4.3)";
     /// The ambient term O_a I_a forgotten (Eq. 4.6).
-    AmbientForgotten,
+    AmbientForgotten = "ambient_forgotten", "Eq. 4.6" =>
+        "the ambient term O_a I_a forgotten (Eq. 4.6)",
+        "o termo de luz ambiente O_a I_a esquecido (Eq. 4.6)";
     /// An ambient term the problem does not give: a white ambient light I_a = (1, 1, 1) assumed,
     /// with the material's own O_a (Eq. 4.6).
-    AmbientAssumed,
+    AmbientAssumed = "ambient_assumed", "Eq. 4.6" =>
+        "an ambient term the problem does not give: a white ambient light I_a = (1, 1, 1) \
+                 assumed, with the material's O_a (Eq. 4.6)",
+        "um termo ambiente que o problema não dá: uma luz ambiente branca \
+                 I_a = (1, 1, 1) suposta, com o O_a do material (Eq. 4.6)";
     /// cos φ from Blinn's half-vector, N·H, instead of −R·V (Eq. 4.10).
-    HalfVector,
+    HalfVector = "half_vector", "Eq. 4.10" =>
+        "cos φ from Blinn's half-vector, N·H, instead of −R·V (Eq. 4.10)",
+        "cos φ pelo vetor médio de Blinn, N·H, em vez de −R·V (Eq. 4.10)";
     /// cos φ not raised to n_s (n_s taken as 1).
-    CosPhiNotRaised,
+    CosPhiNotRaised = "cos_phi_not_raised", "Eq. 4.10" =>
+        "cos φ not raised to n_s (Eq. 4.10)",
+        "cos φ não elevado a n_s (Eq. 4.10)";
     /// The spot light's cone ignored: the spot taken as a point light (Eq. 4.4).
-    SpotConeIgnored,
+    SpotConeIgnored = "spot_cone_ignored", "Eq. 4.4" =>
+        "the spot light's cone ignored (taken as a point light, Eq. 4.4)",
+        "o cone do spot ignorado (tomado como luz pontual, Eq. 4.4)";
     /// R_V with the sign of its N·V term flipped: V + 2(N·V)N for V − 2(N·V)N (Eq. 4.17).
-    ReflectionSignFlipped,
+    ReflectionSignFlipped = "reflection_sign_flipped", "Eq. 4.17" =>
+        "R_V with the sign of its N·V term flipped: V + 2(N·V)N instead of V − 2(N·V)N \
+                 (Eq. 4.17)",
+        "R_V com o sinal do termo em N·V trocado: V + 2(N·V)N em vez de V − 2(N·V)N \
+                 (Eq. 4.17)";
     /// Snell's law with η_i/η_t inverted (η_r = η_t/η_i): the material's η taken as 1/η.
-    EtaInverted,
+    EtaInverted = "eta_inverted", "Sec. 4.4" =>
+        "Snell's law with η_i/η_t inverted: η_r = η_t/η_i (from the medium beyond into \
+                 the medium the ray travels in)",
+        "a lei de Snell com η_i/η_t invertido: η_r = η_t/η_i (do meio além da superfície \
+                 para o meio em que o raio viaja)";
     /// Every intermediate (N, V, L, d, 1/d^f, I_l, N·L, R, cos φ, each term) rounded to two
     /// decimals before the next step uses it.
-    IntermediatesRounded,
+    IntermediatesRounded = "intermediates_rounded", "Eq. 4.16" =>
+        "intermediates rounded to 2 decimals (L, d, I_l, cos θ, R, V, cos φ, each term): \
+                 keep 4 significant digits until the end",
+        "valores intermediários arredondados a 2 casas decimais (L, d, I_l, cos θ, R, V, \
+                 cos φ, cada termo): mantenha 4 algarismos significativos até o fim";
     /// Negative cosines kept: Eq. 4.16 taken literally, without clamping cos θ and cos φ at 0.
-    NoClamping,
+    NoClamping = "no_clamping", "Eq. 4.16" =>
+        "negative cosines kept: Eq. 4.16 taken literally, cos θ and cos φ not clamped at 0",
+        "cossenos negativos mantidos: a Eq. 4.16 ao pé da letra, cos θ e cos φ sem o \
+                 limite em 0";
     /// The final colour truncated to two decimals instead of rounded (0.29 for 0.2992).
-    TruncatedDecimals,
+    TruncatedDecimals = "truncated_decimals", "Eq. 4.16" group 1 truncate 100.0 =>
+        "the colour truncated to 2 decimals instead of rounded (0.299 is 0.30, not 0.29)",
+        "a cor truncada a 2 casas decimais em vez de arredondada (0,299 é 0,30, não 0,29)";
     /// The 8-bit colour truncated, ⌊255·c⌋, instead of rounded, round(255·c).
-    TruncatedRgb8,
+    TruncatedRgb8 = "truncated_rgb8", "Eq. 4.16" group 1 truncate 255.0 =>
+        "the 8-bit value truncated, ⌊255·c⌋, instead of rounded, round(255·c)",
+        "o valor de 8 bits truncado, ⌊255·c⌋, em vez de arredondado, round(255·c)";
 }
 
 impl Slip {
-    /// Every slip, in the order of application.
-    pub const ALL: [Slip; 20] = [
-        Slip::HitBehindOrigin,
-        Slip::LightReversed,
-        Slip::ViewerReversed,
-        Slip::NormalReversed,
-        Slip::AbsCosTheta,
-        Slip::NormalNotNormalized,
-        Slip::FalloffForgotten,
-        Slip::FalloffLinearNotQuadratic,
-        Slip::FalloffQuadraticNotLinear,
-        Slip::AmbientForgotten,
-        Slip::AmbientAssumed,
-        Slip::HalfVector,
-        Slip::CosPhiNotRaised,
-        Slip::SpotConeIgnored,
-        Slip::ReflectionSignFlipped,
-        Slip::EtaInverted,
-        Slip::IntermediatesRounded,
-        Slip::NoClamping,
-        Slip::TruncatedDecimals,
-        Slip::TruncatedRgb8,
-    ];
-
-    /// The stable code (as in the JSON output).
-    pub fn code(self) -> &'static str {
-        match self {
-            Slip::HitBehindOrigin => "hit_behind_origin",
-            Slip::LightReversed => "light_reversed",
-            Slip::ViewerReversed => "viewer_reversed",
-            Slip::NormalReversed => "normal_reversed",
-            Slip::AbsCosTheta => "abs_cos_theta",
-            Slip::NormalNotNormalized => "normal_not_normalized",
-            Slip::FalloffForgotten => "falloff_forgotten",
-            Slip::FalloffLinearNotQuadratic => "falloff_linear_not_quadratic",
-            Slip::FalloffQuadraticNotLinear => "falloff_quadratic_not_linear",
-            Slip::AmbientForgotten => "ambient_forgotten",
-            Slip::AmbientAssumed => "ambient_assumed",
-            Slip::HalfVector => "half_vector",
-            Slip::CosPhiNotRaised => "cos_phi_not_raised",
-            Slip::SpotConeIgnored => "spot_cone_ignored",
-            Slip::ReflectionSignFlipped => "reflection_sign_flipped",
-            Slip::EtaInverted => "eta_inverted",
-            Slip::IntermediatesRounded => "intermediates_rounded",
-            Slip::NoClamping => "no_clamping",
-            Slip::TruncatedDecimals => "truncated_decimals",
-            Slip::TruncatedRgb8 => "truncated_rgb8",
-        }
-    }
-
-    /// Slips that exclude each other (one falloff exponent at a time) share a group.
-    fn group(self) -> Option<u8> {
-        match self {
-            Slip::FalloffForgotten
-            | Slip::FalloffLinearNotQuadratic
-            | Slip::FalloffQuadraticNotLinear => Some(0),
-            Slip::TruncatedDecimals | Slip::TruncatedRgb8 => Some(1),
-            _ => None,
-        }
-    }
-
     /// A slip of the final colour's last step (truncation), made on top of another outcome
     /// rather than as a change of the problem.
     pub fn is_truncation(self) -> bool {
-        matches!(self, Slip::TruncatedDecimals | Slip::TruncatedRgb8)
+        self.truncation().is_some()
+    }
+}
+
+impl serde::Serialize for Slip {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        s.serialize_str(self.code())
+    }
+}
+
+impl Message for Slip {
+    fn text(&self, lang: Lang) -> String {
+        self.name(lang).to_owned()
     }
 }
 
@@ -443,7 +505,7 @@ pub fn outcomes(problem: &Problem<f64>, base: Option<&Target>) -> Vec<Outcome> {
         if slips.len() > 1 {
             continue;
         }
-        for slip in [Slip::TruncatedDecimals, Slip::TruncatedRgb8] {
+        for slip in Slip::ALL.into_iter().filter(|s| s.is_truncation()) {
             let Some(t) = truncate(&target, slip) else {
                 continue;
             };
@@ -471,11 +533,7 @@ pub fn outcomes(problem: &Problem<f64>, base: Option<&Target>) -> Vec<Outcome> {
 /// literal value (no clamped colour) or a slip that is no truncation. A hair (1e-7) is added
 /// before cutting, so that a colour that is exactly 0.29 is not cut to 0.28 by its binary form.
 pub fn truncate(target: &Target, slip: Slip) -> Option<Target> {
-    let k = match slip {
-        Slip::TruncatedDecimals => 100.0,
-        Slip::TruncatedRgb8 => 255.0,
-        _ => return None,
-    };
+    let k = slip.truncation()?;
     let c = target.clamped?.map(|x| (x * k + 1e-7).floor() / k);
     Some(Target {
         unclamped: c,

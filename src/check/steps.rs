@@ -25,13 +25,15 @@ use std::path::Path;
 use serde::Serialize;
 
 use super::messages;
-use super::report::{Failure, FailureKind, CHECK_FORMAT_VERSION};
+use super::report::{Failure, FailureKind, Said, CHECK_FORMAT_VERSION};
 use super::slips::{self, Slip};
 use crate::core::{LightKind, Vector};
+use crate::problem::error::what_and_fix;
 use crate::problem::{self, Problem};
 use crate::solve::{Evaluation, Intersection, ReadingCode, Secondary, Solution};
 use crate::text::lang::Lang;
 use crate::text::number::num;
+use crate::text::{Fault, Message, Show};
 
 /// The relative tolerance of a step: 1 % of the quantity's size.
 pub const STEP_RELATIVE: f64 = 1e-2;
@@ -284,19 +286,56 @@ pub struct GivenStep {
     pub value: Value,
 }
 
-/// A step that cannot be read; the message says what was expected.
-#[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
-#[error("{message}")]
+/// A step that cannot be read: what is wrong and, where it can say, the fix; after the step as
+/// written in a cell or a file (`"cos_theta=abc": …`) when it is one of several. It is a
+/// [`Fault`]; its `Display` is the English `WHAT. Fix: FIX`.
+#[derive(Clone, Debug, PartialEq)]
 pub struct BadStep {
-    /// What was expected instead.
-    pub message: String,
+    /// The step as written, when the error is about one of several (a cell's, a file's).
+    pub at: Option<String>,
+    /// What is wrong, and what would fix it.
+    pub fault: StepFault,
 }
 
-fn bad(message: impl Into<String>) -> BadStep {
-    BadStep {
-        message: message.into(),
+fn bad(fault: StepFault) -> BadStep {
+    BadStep { at: None, fault }
+}
+
+impl BadStep {
+    /// The same error, about the step written `at`.
+    fn at(self, at: String) -> BadStep {
+        BadStep {
+            at: Some(at),
+            ..self
+        }
     }
 }
+
+impl Fault for BadStep {
+    fn what(&self, lang: Lang) -> String {
+        match &self.at {
+            Some(at) => format!("\"{at}\": {}", self.fault.what(lang)),
+            None => self.fault.what(lang),
+        }
+    }
+    fn fix(&self, lang: Lang) -> String {
+        self.fault.fix(lang)
+    }
+}
+
+impl Message for BadStep {
+    fn text(&self, lang: Lang) -> String {
+        what_and_fix(self, lang)
+    }
+}
+
+impl std::fmt::Display for BadStep {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(&what_and_fix(self, Lang::En))
+    }
+}
+
+impl std::error::Error for BadStep {}
 
 fn known_names() -> String {
     NAMES.iter().map(|n| n.name).collect::<Vec<_>>().join(", ")
@@ -308,36 +347,33 @@ pub fn parse_named(name_text: &str, value_text: &str) -> Result<GivenStep, BadSt
     let (base, light) = match name_text.strip_suffix(']').and_then(|s| s.split_once('[')) {
         Some((b, i)) => {
             let i = i.trim().parse::<usize>().map_err(|_| {
-                bad(format!(
-                    "\"{name_text}\": [{i}] is not a light's index: write the index of the light \
-                     in the file's \"lights\", from 0, such as cos_theta[1]"
-                ))
+                bad(StepFault::NotAnIndex {
+                    step: name_text.to_owned(),
+                    index: i.to_owned(),
+                })
             })?;
             (b, Some(i))
         }
         None => (name_text, None),
     };
     let name = lookup(base).ok_or_else(|| {
-        bad(format!(
-            "\"{base}\" is not the name of a step. Fix: use one of {} (a light's own with [i], \
-             such as cos_theta[1])",
-            known_names()
-        ))
+        bad(StepFault::UnknownName {
+            name: base.to_owned(),
+            names: known_names(),
+        })
     })?;
     if light.is_some() && !name.per_light {
-        return Err(bad(format!(
-            "\"{name_text}\": {} is not a quantity of one light. Fix: leave out the [i]",
-            name.name
-        )));
+        return Err(bad(StepFault::NotOfOneLight {
+            step: name_text.to_owned(),
+            name: name.name,
+        }));
     }
+    let value_text = value_text.trim();
+    let value_fault =
+        |fault: fn(String, &'static str) -> StepFault| bad(fault(value_text.to_owned(), name.name));
     if name.flag {
-        let value = parse_flag(value_text).ok_or_else(|| {
-            bad(format!(
-                "\"{}\" is not a value for {}: write yes or no (sim or não)",
-                value_text.trim(),
-                name.name
-            ))
-        })?;
+        let value = parse_flag(value_text)
+            .ok_or_else(|| value_fault(|value, name| StepFault::NotYesOrNo { value, name }))?;
         return Ok(GivenStep {
             text: name_text.to_owned(),
             name,
@@ -346,34 +382,18 @@ pub fn parse_named(name_text: &str, value_text: &str) -> Result<GivenStep, BadSt
         });
     }
     let value = parse_value(value_text).ok_or_else(|| {
-        bad(format!(
-            "\"{}\" is not a value for {}: write {}",
-            value_text.trim(),
-            name.name,
-            if name.vector {
-                "three numbers, such as 0.6,0,0.8 or \"(0.6, 0, 0.8)\""
-            } else {
-                "one number, such as 0.98995 or 3/5"
-            }
-        ))
+        if name.vector {
+            value_fault(|value, name| StepFault::NotThreeNumbers { value, name })
+        } else {
+            value_fault(|value, name| StepFault::NotOneNumber { value, name })
+        }
     })?;
     if value.is_vector() != name.vector {
-        return Err(bad(format!(
-            "{} is {}, and \"{}\" is {}. Fix: give {}",
-            name.name,
-            if name.vector { "a vector" } else { "a number" },
-            value_text.trim(),
-            if value.is_vector() {
-                "three numbers"
-            } else {
-                "one number"
-            },
-            if name.vector {
-                "three numbers, such as 0.6,0,0.8"
-            } else {
-                "one number"
-            }
-        )));
+        return Err(if name.vector {
+            value_fault(|value, name| StepFault::NumberForVector { value, name })
+        } else {
+            value_fault(|value, name| StepFault::VectorForNumber { value, name })
+        });
     }
     Ok(GivenStep {
         text: name_text.to_owned(),
@@ -414,10 +434,9 @@ fn parse_value(text: &str) -> Option<Value> {
 /// Reads `--step NAME=VALUE`.
 pub fn parse_step(text: &str) -> Result<GivenStep, BadStep> {
     let (name, value) = text.split_once('=').ok_or_else(|| {
-        bad(format!(
-            "\"{text}\" is not NAME=VALUE. Fix: write the step's name, =, and its value, such as \
-             cos_theta=0.98995 or R=0.6,0,0.8"
-        ))
+        bad(StepFault::NotNameValue {
+            text: text.to_owned(),
+        })
     })?;
     parse_named(name, value)
 }
@@ -429,7 +448,7 @@ pub fn parse_step(text: &str) -> Result<GivenStep, BadStep> {
 /// separator before the next step's name, one number (a decimal comma is read as a point) or
 /// three (spaces, commas, semicolons, brackets). An empty cell is no steps. An error quotes the
 /// step as written.
-pub fn parse_cell(text: &str) -> Result<Vec<GivenStep>, BadStep> {
+pub fn read_cell(text: &str) -> Result<Vec<GivenStep>, BadStep> {
     let sep = |c: char| c == ';' || c == ',' || c.is_whitespace();
     let cell = text.trim_matches(sep);
     if cell.is_empty() {
@@ -437,10 +456,9 @@ pub fn parse_cell(text: &str) -> Result<Vec<GivenStep>, BadStep> {
     }
     let parts: Vec<&str> = cell.split('=').collect();
     if parts.len() < 2 {
-        return Err(bad(format!(
-            "\"{cell}\" is not NAME=VALUE. Fix: write each step as its name, = and its value, \
-             separated by ;, such as cos_theta=0.98995; R=0.6 0 0.8"
-        )));
+        return Err(bad(StepFault::CellNotNameValue {
+            cell: cell.to_owned(),
+        }));
     }
     // parts[0] is the first name; every later part but the last is a value, a separator and
     // the next name; the last is a value.
@@ -459,20 +477,17 @@ pub fn parse_cell(text: &str) -> Result<Vec<GivenStep>, BadStep> {
                 names.push(&part[k + c.len_utf8()..]);
             }
             None => {
-                return Err(bad(format!(
-                    "\"{}={part}=…\": a value runs into the next step's name. Fix: separate \
-                     the steps with ;, such as cos_theta=0.98995; n_dot_l=-0.98995",
-                    names[names.len() - 1]
-                )))
+                return Err(bad(StepFault::RunsOn {
+                    name: names[names.len() - 1].to_owned(),
+                    part: part.to_owned(),
+                }))
             }
         }
     }
     names
         .iter()
         .zip(&values)
-        .map(|(name, value)| {
-            parse_named(name, value).map_err(|e| bad(format!("\"{name}={value}\": {e}")))
-        })
+        .map(|(name, value)| parse_named(name, value).map_err(|e| e.at(format!("{name}={value}"))))
         .collect()
 }
 
@@ -481,14 +496,11 @@ pub fn parse_cell(text: &str) -> Result<Vec<GivenStep>, BadStep> {
 /// 0.8], "cos_theta[1]": "3/5"}`.
 pub fn parse_steps_json(text: &str) -> Result<Vec<GivenStep>, BadStep> {
     let doc: serde_json::Value = serde_json::from_str(text).map_err(|e| {
-        bad(format!(
-            "not JSON: {e}. Fix: write one object of names and values, such as \
-             {{\"cos_theta\": 0.98995, \"R\": [0.6, 0, 0.8]}}"
-        ))
+        bad(StepFault::NotJson {
+            error: crate::problem::JsonError::of(&e),
+        })
     })?;
-    let obj = doc.as_object().ok_or_else(|| {
-        bad("the file is not one JSON object. Fix: write {\"cos_theta\": 0.98995, \"R\": [0.6, 0, 0.8]}")
-    })?;
+    let obj = doc.as_object().ok_or_else(|| bad(StepFault::NotAnObject))?;
     let mut out = Vec::new();
     for (k, v) in obj {
         let value = match v {
@@ -501,18 +513,16 @@ pub fn parse_steps_json(text: &str) -> Result<Vec<GivenStep>, BadStep> {
                 .collect::<Vec<_>>()
                 .join(" "),
             other => {
-                return Err(bad(format!(
-                    "\"{k}\": {other} is not a value. Fix: give a number, [x, y, z], or a string \
-                     such as \"3/5\""
-                )))
+                return Err(bad(StepFault::NotAValue {
+                    name: k.clone(),
+                    value: other.to_string(),
+                }))
             }
         };
-        out.push(parse_named(k, &value).map_err(|e| bad(format!("\"{k}\": {e}")))?);
+        out.push(parse_named(k, &value).map_err(|e| e.at(k.clone()))?);
     }
     if out.is_empty() {
-        return Err(bad(
-            "the file has no steps. Fix: write {\"cos_theta\": 0.98995, \"R\": [0.6, 0, 0.8]}",
-        ));
+        return Err(bad(StepFault::NoSteps));
     }
     Ok(out)
 }
@@ -826,39 +836,46 @@ impl StepsExpected {
     /// The light a step means (its `[i]`, or the first light that is not ambient), or why it
     /// means none, with the fix: the indices of the file's lights that are not ambient (or,
     /// where there is none, the ambient light's own steps).
-    fn light_of(&self, step: &GivenStep) -> Result<Option<usize>, String> {
+    fn light_of(&self, step: &GivenStep) -> Result<Option<usize>, StepMissing> {
         if !step.name.per_light {
             return Ok(None);
         }
         let name = step.name.name;
-        let no_light = || {
-            format!(
-                "{}: the problem has no light other than ambient light, so no {name}. Fix: check \
-                 a step of the ambient light: I_a or ambient",
-                step.text
-            )
+        let text = step.text.clone();
+        let no_light = || StepMissing::OnlyAmbient {
+            step: text.clone(),
+            name,
         };
         match step.light {
             None => self.first_light.map(Some).ok_or_else(no_light),
-            Some(i) if self.ambient_lights.contains(&i) => Err(format!(
-                "{}: lights[{i}] is an ambient light, which has no {name}. Fix: give the index of \
-                 a point, directional or spot light",
-                step.text
-            )),
+            Some(i) if self.ambient_lights.contains(&i) => Err(StepMissing::AmbientIndex {
+                step: text,
+                index: i,
+                name,
+            }),
             Some(_) if self.first_light.is_none() => Err(no_light()),
             Some(i) if i >= self.lights_in_file => {
                 let indexed: Vec<String> = (0..self.lights_in_file)
                     .filter(|k| !self.ambient_lights.contains(k))
                     .map(|k| format!("{name}[{k}]"))
                     .collect();
-                Err(format!(
-                    "{}: there is no lights[{i}]: the file has {} light{}, from lights[0]. Fix: \
-                     use {} or {name}",
-                    step.text,
-                    self.lights_in_file,
-                    if self.lights_in_file == 1 { "" } else { "s" },
-                    indexed.join(", ")
-                ))
+                let (count, indexed) = (self.lights_in_file, indexed.join(", "));
+                Err(if count == 1 {
+                    StepMissing::NoSuchLightOfOne {
+                        step: text,
+                        index: i,
+                        indexed,
+                        name,
+                    }
+                } else {
+                    StepMissing::NoSuchLight {
+                        step: text,
+                        index: i,
+                        count,
+                        indexed,
+                        name,
+                    }
+                })
             }
             Some(i) => Ok(Some(i)),
         }
@@ -929,11 +946,11 @@ pub struct StepsJudged {
 
 /// Judges the steps against a solved problem; a step that names a quantity this problem does
 /// not have is an error (the message says which it has).
-pub fn judge_steps(
+pub fn judge(
     x: &StepsExpected,
     given: &[GivenStep],
     strict: bool,
-) -> Result<StepsJudged, String> {
+) -> Result<StepsJudged, StepMissing> {
     let mut steps = Vec::new();
     for g in given {
         let light = x.light_of(g)?;
@@ -950,13 +967,12 @@ pub fn judge_steps(
                     v.dedup();
                     v
                 };
-                return Err(format!(
-                    "{}: this problem has no {} ({}). Fix: check a step it has: {}",
-                    g.text,
-                    g.name.name,
-                    g.name.formula,
-                    has.join(", ")
-                ));
+                return Err(StepMissing::NoSuchStep {
+                    step: g.text.clone(),
+                    name: g.name.name,
+                    formula: Formula(g.name.formula),
+                    has: has.join(", "),
+                });
             }
         };
         let mut j = JudgedStep {
@@ -1061,16 +1077,16 @@ pub fn check_steps_source(
     let mut warnings = Vec::new();
     let outcome = source
         .load::<f64>()
-        .map_err(|e| Failure::problem(&e))
+        .map_err(Failure::problem)
         .and_then(|(_, p)| {
             warnings.clone_from(&p.warnings);
-            StepsExpected::of(&p).map_err(|e| Failure::problem(&e.at(path)))
+            StepsExpected::of(&p).map_err(|e| Failure::problem(e.at(path)))
         })
         .and_then(|x| {
-            judge_steps(&x, given, strict).map_err(|m| Failure {
+            judge(&x, given, strict).map_err(|m| Failure {
                 kind: FailureKind::Answer,
                 field: Some("--step".into()),
-                message: format!("{file}: --step: {m}"),
+                message: Said::at(format!("{file}: --step"), m),
             })
         });
     StepsChecked {
@@ -1431,7 +1447,7 @@ mod tests {
     use super::*;
 
     fn names(cell: &str) -> Vec<(String, Value)> {
-        parse_cell(cell)
+        read_cell(cell)
             .unwrap()
             .into_iter()
             .map(|g| (g.text, g.value))
@@ -1470,7 +1486,16 @@ mod tests {
 
     #[test]
     fn a_bad_cell_quotes_the_step_as_written() {
-        let e = |cell: &str| parse_cell(cell).unwrap_err().message;
+        let e = |cell: &str| read_cell(cell).unwrap_err().to_string();
+        let pt = |cell: &str| read_cell(cell).unwrap_err().text(Lang::Pt);
+        assert_eq!(
+            pt("cos_theta=abc"),
+            "\"cos_theta=abc\": \"abc\" não é um valor para cos_theta: escreva um número, como \
+             0.98995 ou 3/5"
+        );
+        assert!(pt("cos_theta=0.9; cos_thet=0.5").starts_with(
+            "\"cos_thet=0.5\": \"cos_thet\" não é o nome de um passo. Correção: use um de t, P,"
+        ));
         let m = e("cos_theta=0.9; cos_thet=0.5");
         assert!(
             m.starts_with("\"cos_thet=0.5\": \"cos_thet\" is not the name"),
@@ -1481,5 +1506,163 @@ mod tests {
         assert!(e("0.98995").contains("is not NAME=VALUE"));
         assert!(e("cos_theta=0.9n_dot_l=1").contains("runs into the next step's name"));
         assert!(e("R=0.5").contains("R is a vector"));
+    }
+}
+
+crate::faults! {
+    /// Why a step as written cannot be read (`--step`, `--steps`, a cell of `phong grade`, a
+    /// form of `phong serve`). A fault whose fix is empty says what to write in its first half.
+    #[allow(missing_docs)]
+    pub enum StepFault {
+        /// `[i]` that is not an index.
+        NotAnIndex { step: String, index: String } =>
+            "\"{step}\": [{index}] is not a light's index: write the index of the light in the \
+             file's \"lights\", from 0, such as cos_theta[1]",
+            "\"{step}\": [{index}] não é o índice de uma fonte de luz: escreva o índice da fonte \
+             de luz em \"lights\" do arquivo, a partir de 0, como cos_theta[1]";
+            fix "", "";
+        /// A name that is no step's.
+        UnknownName { name: String, names: String } =>
+            "\"{name}\" is not the name of a step",
+            "\"{name}\" não é o nome de um passo";
+            fix "use one of {names} (a light's own with [i], such as cos_theta[1])",
+                "use um de {names} (o de uma fonte de luz com [i], como cos_theta[1])";
+        /// `[i]` after a quantity of the point.
+        NotOfOneLight { step: String, name: &'static str } =>
+            "\"{step}\": {name} is not a quantity of one light",
+            "\"{step}\": {name} não é uma grandeza de uma só fonte de luz";
+            fix "leave out the [i]", "tire o [i]";
+        /// A yes-or-no step given something else.
+        NotYesOrNo { value: String, name: &'static str } =>
+            "\"{value}\" is not a value for {name}: write yes or no (sim or não)",
+            "\"{value}\" não é um valor para {name}: escreva sim ou não";
+            fix "", "";
+        /// A number step given something that is not a number.
+        NotOneNumber { value: String, name: &'static str } =>
+            "\"{value}\" is not a value for {name}: write one number, such as 0.98995 or 3/5",
+            "\"{value}\" não é um valor para {name}: escreva um número, como 0.98995 ou 3/5";
+            fix "", "";
+        /// A vector step given something that is not three numbers.
+        NotThreeNumbers { value: String, name: &'static str } =>
+            "\"{value}\" is not a value for {name}: write three numbers, such as 0.6,0,0.8 or \
+             \"(0.6, 0, 0.8)\"",
+            "\"{value}\" não é um valor para {name}: escreva três números, como 0.6,0,0.8 ou \
+             \"(0.6, 0, 0.8)\"";
+            fix "", "";
+        /// A vector step given one number.
+        NumberForVector { value: String, name: &'static str } =>
+            "{name} is a vector, and \"{value}\" is one number",
+            "{name} é um vetor, e \"{value}\" é um número";
+            fix "give three numbers, such as 0.6,0,0.8", "dê três números, como 0.6,0,0.8";
+        /// A number step given three numbers.
+        VectorForNumber { value: String, name: &'static str } =>
+            "{name} is a number, and \"{value}\" is three numbers",
+            "{name} é um número, e \"{value}\" são três números";
+            fix "give one number", "dê um número";
+        /// `--step` without `=`.
+        NotNameValue { text: String } =>
+            "\"{text}\" is not NAME=VALUE",
+            "\"{text}\" não é NOME=VALOR";
+            fix "write the step's name, =, and its value, such as cos_theta=0.98995 or \
+                 R=0.6,0,0.8",
+                "escreva o nome do passo, =, e seu valor, como cos_theta=0.98995 ou R=0.6,0,0.8";
+        /// A cell of steps without `=`.
+        CellNotNameValue { cell: String } =>
+            "\"{cell}\" is not NAME=VALUE",
+            "\"{cell}\" não é NOME=VALOR";
+            fix "write each step as its name, = and its value, separated by ;, such as \
+                 cos_theta=0.98995; R=0.6 0 0.8",
+                "escreva cada passo como seu nome, = e seu valor, separados por ;, como \
+                 cos_theta=0.98995; R=0.6 0 0.8";
+        /// A value with no separator before the next step's name.
+        RunsOn { name: String, part: String } =>
+            "\"{name}={part}=…\": a value runs into the next step's name",
+            "\"{name}={part}=…\": um valor emenda com o nome do passo seguinte";
+            fix "separate the steps with ;, such as cos_theta=0.98995; n_dot_l=-0.98995",
+                "separe os passos com ;, como cos_theta=0.98995; n_dot_l=-0.98995";
+        /// A `--steps` file that is not JSON (`error`: the JSON parser's words).
+        NotJson { error: crate::problem::JsonError } =>
+            "not JSON: {error}",
+            "não é JSON: {error}";
+            fix "write one object of names and values, such as {{\"cos_theta\": 0.98995, \
+                 \"R\": [0.6, 0, 0.8]}}",
+                "escreva um objeto de nomes e valores, como {{\"cos_theta\": 0.98995, \
+                 \"R\": [0.6, 0, 0.8]}}";
+        /// A `--steps` file that is JSON but not one object.
+        NotAnObject =>
+            "the file is not one JSON object",
+            "o arquivo não é um objeto JSON";
+            fix "write {{\"cos_theta\": 0.98995, \"R\": [0.6, 0, 0.8]}}",
+                "escreva {{\"cos_theta\": 0.98995, \"R\": [0.6, 0, 0.8]}}";
+        /// A JSON value that is no step's value (`value`: as JSON writes it).
+        NotAValue { name: String, value: String } =>
+            "\"{name}\": {value} is not a value",
+            "\"{name}\": {value} não é um valor";
+            fix "give a number, [x, y, z], or a string such as \"3/5\"",
+                "dê um número, [x, y, z], ou um texto como \"3/5\"";
+        /// An empty object.
+        NoSteps =>
+            "the file has no steps",
+            "o arquivo não tem passos";
+            fix "write {{\"cos_theta\": 0.98995, \"R\": [0.6, 0, 0.8]}}",
+                "escreva {{\"cos_theta\": 0.98995, \"R\": [0.6, 0, 0.8]}}";
+    }
+}
+
+crate::faults! {
+    /// A step read that names a quantity the problem does not have (`step`: as written).
+    #[allow(missing_docs)]
+    pub enum StepMissing {
+        /// A light's step, and the problem has only ambient light.
+        OnlyAmbient { step: String, name: &'static str } =>
+            "{step}: the problem has no light other than ambient light, so no {name}",
+            "{step}: o problema não tem fonte de luz além da luz ambiente, e portanto não tem \
+             {name}";
+            fix "check a step of the ambient light: I_a or ambient",
+                "confira um passo da luz ambiente: I_a ou ambient";
+        /// A light's step of an ambient light.
+        AmbientIndex { step: String, index: usize, name: &'static str } =>
+            "{step}: lights[{index}] is an ambient light, which has no {name}",
+            "{step}: lights[{index}] é uma luz ambiente, que não tem {name}";
+            fix "give the index of a point, directional or spot light",
+                "dê o índice de uma luz pontual, direcional ou spot";
+        /// A light's index beyond the file's one light.
+        NoSuchLightOfOne { step: String, index: usize, indexed: String, name: &'static str } =>
+            "{step}: there is no lights[{index}]: the file has 1 light, from lights[0]",
+            "{step}: não há lights[{index}]: o arquivo tem 1 fonte de luz, a partir de lights[0]";
+            fix "use {indexed} or {name}", "use {indexed} ou {name}";
+        /// A light's index beyond the file's lights.
+        NoSuchLight {
+            step: String,
+            index: usize,
+            count: usize,
+            indexed: String,
+            name: &'static str,
+        } =>
+            "{step}: there is no lights[{index}]: the file has {count} lights, from lights[0]",
+            "{step}: não há lights[{index}]: o arquivo tem {count} fontes de luz, a partir de \
+             lights[0]";
+            fix "use {indexed} or {name}", "use {indexed} ou {name}";
+        /// A quantity the problem does not have (`has`: those it has).
+        NoSuchStep { step: String, name: &'static str, formula: Formula, has: String } =>
+            "{step}: this problem has no {name} ({formula})",
+            "{step}: este problema não tem {name} ({formula})";
+            fix "check a step it has: {has}", "confira um passo que ele tem: {has}";
+    }
+}
+
+impl Message for StepMissing {
+    fn text(&self, lang: Lang) -> String {
+        what_and_fix(self, lang)
+    }
+}
+
+/// A step's formula in a message, its words in the message's language.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Formula(pub &'static str);
+
+impl Show for Formula {
+    fn show(&self, lang: Lang, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(crate::report::messages::step_formula(self.0, lang))
     }
 }

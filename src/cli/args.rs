@@ -77,7 +77,7 @@ pub(crate) enum Command {
 
 impl Command {
     /// The language the command's messages (its errors included) are written in: `--lang`
-    /// where the command has it, else English.
+    /// where the command has it, else the locale's ([`Lang::from_locale`]).
     pub fn lang(&self) -> Lang {
         match self {
             Command::Solve(a) => a.lang,
@@ -86,7 +86,7 @@ impl Command {
             Command::Moodle(a) => a.lang,
             Command::New(a) => a.lang,
             Command::Grade(a) => a.lang,
-            _ => Lang::En,
+            _ => Lang::from_locale(),
         }
     }
 }

@@ -1,106 +1,199 @@
 //! What can go wrong at the command line's edge, as one type, and the one place an error is
 //! printed. Every error exits 2 ([`Exit::BadInput`]): exit 1 means a wrong answer.
 
-use std::fmt::Display;
+use std::fmt::{self, Display};
 use std::path::{Path, PathBuf};
 
 use super::exit::Exit;
+use super::faults::{CliFault, CliText, SystemError};
 use crate::check::answer::BadAnswer;
 use crate::check::grade::Unreadable;
+use crate::problem::error::{fix_word, FaultBox};
 use crate::problem::{Invalid, ProblemError};
 use crate::report::messages;
 use crate::text::lang::Lang;
 use crate::text::Message;
 
-/// Why a command failed (or, in a batch, why one of its steps did).
-#[derive(Debug, thiserror::Error)]
+/// Why a command failed (or, in a batch, why one of its steps did). Each variant keeps its
+/// values (the flag, the path, the fault, what the system said) until it is said in a
+/// language ([`Message`]); its `Display` is the English.
+#[derive(Debug)]
 pub(crate) enum CliError {
     /// A problem file that cannot be read, parsed or validated (or, for `export-pov`, expressed
     /// in POV-Ray).
-    #[error(transparent)]
-    Problem(#[from] ProblemError),
+    Problem(ProblemError),
     /// The submissions of `phong grade` cannot be read.
-    #[error(transparent)]
-    Submissions(#[from] Unreadable),
+    Submissions(Unreadable),
     /// `phong serve` could not start (its exercises, its address).
     #[cfg(feature = "serve")]
-    #[error(transparent)]
-    Serve(#[from] crate::serve::StartError),
-    /// A flag's value refused after parsing: out of range, or not what the command can do.
-    #[error("{flag}: {message}. Fix: {fix}")]
-    Usage {
-        flag: String,
-        message: String,
-        fix: String,
-    },
+    Serve(crate::serve::StartError),
+    /// A flag's value refused after parsing: out of range, or not what the command can do
+    /// (`FLAG: WHAT. Fix: FIX`).
+    Usage { flag: String, fault: FaultBox },
     /// A flag's value that is not a value of its kind (`--tolerance -1`); the message says what
     /// is expected.
-    #[error("{flag}: {source}")]
     Value {
         flag: &'static str,
-        #[source]
         source: BadAnswer,
     },
-    /// Flags or arguments that do not go together, said as one sentence.
-    #[error("{message}. Fix: {fix}")]
-    Conflict { message: String, fix: String },
-    /// A flag naming a folder gives something else.
-    #[error("{}: {flag}: not a folder. Fix: {fix}", path.display())]
+    /// Flags or arguments that do not go together, said as one sentence (`WHAT. Fix: FIX`).
+    Conflict { fault: FaultBox },
+    /// A flag naming a folder gives something else (`PATH: FLAG: not a folder. Fix: FIX`).
     NotAFolder {
         path: PathBuf,
         flag: &'static str,
-        fix: &'static str,
+        fault: CliFault,
     },
     /// Output that cannot be written: to a file, or (`None`) to standard output.
-    #[error("cannot write {}: {source}", destination(path.as_deref()))]
     Write {
         path: Option<PathBuf>,
-        #[source]
         source: std::io::Error,
     },
     /// A folder for the output files that cannot be created.
-    #[error("{}: cannot create the folder: {source}", path.display())]
     CreateFolder {
         path: PathBuf,
-        #[source]
         source: std::io::Error,
     },
     /// The system refused the worker threads.
-    #[error("--threads: cannot start the worker threads: {0}. Fix: give fewer --threads")]
-    Threads(#[source] rayon::ThreadPoolBuildError),
-    /// A bug of phong's own, found where `flag` is handled; `works` says what still works.
-    #[error("{flag}: {message}. Fix: report this as a bug; {works}")]
-    Bug {
-        flag: &'static str,
-        message: String,
-        works: &'static str,
-    },
-}
-
-/// Where output was going: a file, or standard output.
-fn destination(path: Option<&Path>) -> String {
-    path.map_or("standard output".into(), |p| p.display().to_string())
+    Threads(rayon::ThreadPoolBuildError),
+    /// A bug of phong's own, found where `flag` is handled; the fault's fix says to report it
+    /// and what still works.
+    Bug { flag: &'static str, fault: CliFault },
 }
 
 impl CliError {
     /// A setting refused by the library, named by its field (`max_level`, `min_weights`): the
     /// flag that gave it is that name in kebab case (`--max-level`, `--min-weights`).
+    /// Its fault is kept as a value, to be said in the user's language.
     pub(crate) fn setting(e: Invalid) -> CliError {
-        CliError::Usage {
+        CliError::Problem(ProblemError::Usage {
             flag: format!("--{}", e.field.replace('_', "-")),
-            message: e.message(),
-            fix: e.fix(),
+            fault: e.fault,
+        })
+    }
+
+    /// A flag's value refused, with what is wrong and what would fix it.
+    pub(crate) fn usage(flag: impl Into<String>, fault: CliFault) -> CliError {
+        CliError::Usage {
+            flag: flag.into(),
+            fault: std::sync::Arc::new(fault),
         }
     }
+
+    /// Flags or arguments that do not go together.
+    pub(crate) fn conflict(fault: CliFault) -> CliError {
+        CliError::Conflict {
+            fault: std::sync::Arc::new(fault),
+        }
+    }
+}
+
+impl From<ProblemError> for CliError {
+    fn from(e: ProblemError) -> Self {
+        CliError::Problem(e)
+    }
+}
+
+impl From<Unreadable> for CliError {
+    fn from(e: Unreadable) -> Self {
+        CliError::Submissions(e)
+    }
+}
+
+#[cfg(feature = "serve")]
+impl From<crate::serve::StartError> for CliError {
+    fn from(e: crate::serve::StartError) -> Self {
+        CliError::Serve(e)
+    }
+}
+
+/// `WHAT. Fix: FIX` in `lang`, the fix written even when empty (as the command line always
+/// wrote it).
+fn what_fix(fault: &dyn crate::text::Fault, lang: Lang) -> String {
+    format!(
+        "{}. {}: {}",
+        fault.what(lang),
+        fix_word(lang),
+        fault.fix(lang)
+    )
 }
 
 impl Message for CliError {
     fn text(&self, lang: Lang) -> String {
         match self {
             CliError::Problem(e) => e.text(lang),
-            // Transitional: the variants not yet written as typed values are translated as a
-            // whole by the old table.
-            other => messages::error_in(&other.to_string(), lang),
+            CliError::Submissions(e) => e.text(lang),
+            #[cfg(feature = "serve")]
+            CliError::Serve(e) => e.text(lang),
+            // Transitional: a setting's fault still written as English text by the library is
+            // said as a problem's error says it (the library's path, removed with that text).
+            CliError::Usage { flag, fault } if fault.untranslated() && lang != Lang::En => {
+                ProblemError::Usage {
+                    flag: flag.clone(),
+                    fault: fault.clone(),
+                }
+                .text(lang)
+            }
+            CliError::Usage { flag, fault } => {
+                format!("{flag}: {}", what_fix(fault.as_ref(), lang))
+            }
+            CliError::Value { flag, source } => format!("{flag}: {}", source.text(lang)),
+            CliError::Conflict { fault } => what_fix(fault.as_ref(), lang),
+            CliError::NotAFolder { path, flag, fault } => {
+                format!("{}: {flag}: {}", path.display(), what_fix(fault, lang))
+            }
+            CliError::Write { path, source } => {
+                let error = SystemError::of(source);
+                match path {
+                    Some(path) => CliText::CannotWrite {
+                        path: path.clone(),
+                        error,
+                    },
+                    None => CliText::CannotWriteStdout { error },
+                }
+                .text(lang)
+            }
+            CliError::CreateFolder { path, source } => CliText::CannotCreateFolder {
+                path: path.clone(),
+                error: SystemError::of(source),
+            }
+            .text(lang),
+            CliError::Threads(e) => CliText::Threads {
+                error: e.to_string(),
+            }
+            .text(lang),
+            CliError::Bug { flag, fault } => format!("{flag}: {}", what_fix(fault, lang)),
+        }
+    }
+}
+
+impl fmt::Display for CliError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            CliError::Problem(e) => Display::fmt(e, f),
+            CliError::Submissions(e) => Display::fmt(e, f),
+            #[cfg(feature = "serve")]
+            CliError::Serve(e) => Display::fmt(e, f),
+            CliError::Value { flag, source } => write!(f, "{flag}: {source}"),
+            other => f.write_str(&other.text(Lang::En)),
+        }
+    }
+}
+
+impl std::error::Error for CliError {
+    fn source(&self) -> Option<&(dyn std::error::Error + 'static)> {
+        match self {
+            CliError::Problem(e) => e.source(),
+            CliError::Submissions(e) => e.source(),
+            #[cfg(feature = "serve")]
+            CliError::Serve(e) => e.source(),
+            CliError::Value { source, .. } => Some(source),
+            CliError::Write { source, .. } | CliError::CreateFolder { source, .. } => Some(source),
+            CliError::Threads(e) => Some(e),
+            CliError::Usage { .. } | CliError::Conflict { .. } | CliError::NotAFolder { .. } => {
+                None
+            }
+            CliError::Bug { .. } => None,
         }
     }
 }
@@ -114,48 +207,6 @@ pub(crate) fn print_in(error: &dyn Message, lang: Lang) {
         messages::error_word(lang),
         error.text(lang)
     ));
-}
-
-/// Transitional: prints an error written as English text, translated by the old table.
-pub(crate) fn print_english_in(error: &dyn Display, lang: Lang) {
-    super::output::say(&format_args!(
-        "{}: {}",
-        messages::error_word(lang),
-        messages::error_in(&error.to_string(), lang)
-    ));
-}
-
-/// A command line that clap refuses. With `--lang pt`, a flag's value that its parser refuses
-/// (`--tolerance abc`, `--samples 0`, `--format foo`) is said in Portuguese, its parser's message
-/// through the catalogue of [`crate::report::messages::error_in`]; clap's other usage errors (an
-/// unknown flag, a missing argument) stay in clap's English, which has no localisation.
-pub(crate) fn refused(e: &clap::Error, args: &[std::ffi::OsString]) -> Option<Exit> {
-    use clap::error::ErrorKind;
-    let pt = args.windows(2).any(|w| w[0] == "--lang" && w[1] == "pt")
-        || args.iter().any(|a| a == "--lang=pt");
-    if !pt
-        || !matches!(
-            e.kind(),
-            ErrorKind::ValueValidation | ErrorKind::InvalidValue
-        )
-    {
-        return None;
-    }
-    let text = e.render().to_string();
-    let text = text
-        .replacen("error: invalid value '", "valor inválido '", 1)
-        .replacen("' for '", "' para '", 1)
-        .replace("[possible values: ", "[valores possíveis: ")
-        .replace(
-            "tip: a similar value exists: ",
-            "dica: há um valor parecido: ",
-        )
-        .replace(
-            "For more information, try '--help'.",
-            "Para mais informações, tente '--help'.",
-        );
-    print_english_in(&text.trim_end(), Lang::Pt);
-    Some(Exit::BadInput)
 }
 
 /// Prints a warning (a likely mistake that is not an error) about the file at `file`, already
@@ -204,6 +255,62 @@ mod tests {
             warning_line(Path::new("c255.json"), &"materials.M.diffuse: x", Lang::Pt),
             "aviso: c255.json: materials.M.diffuse: x"
         );
+    }
+
+    #[test]
+    fn each_variant_reads_as_before_in_english_and_wholly_in_portuguese() {
+        let cases = [
+            (
+                CliError::Bug {
+                    flag: "--plot",
+                    fault: CliFault::PlotFailed { error: "x".into() },
+                },
+                "--plot: the plot could not be drawn: x. Fix: report this as a bug; the table is \
+                 still written without --plot",
+                "--plot: o gráfico não pôde ser desenhado: x. Correção: relate isto como um \
+                 defeito; a tabela ainda é escrita sem --plot",
+            ),
+            (
+                CliError::usage("--threads", CliFault::ZeroThreads),
+                "--threads: 0 threads cannot render. Fix: give --threads 1 or more (or leave it \
+                 out: one per core)",
+                "--threads: 0 threads não renderizam. Correção: dê --threads 1 ou mais (ou omita: \
+                 uma por núcleo)",
+            ),
+            (
+                CliError::usage(
+                    "--size",
+                    CliFault::OutOfMemory {
+                        size: super::super::faults::memory_size(3_000_000_000),
+                    },
+                ),
+                "--size: out of memory: this needs about 3.0 GB. Fix: give a smaller image \
+                 (--size, or the camera's width and height)",
+                "--size: memória insuficiente: isto precisa de cerca de 3.0 GB. Correção: dê uma \
+                 imagem menor (--size, ou a largura e a altura da câmera)",
+            ),
+            (
+                CliError::Write {
+                    path: None,
+                    source: std::io::Error::from_raw_os_error(13),
+                },
+                "cannot write standard output: Permission denied (os error 13)",
+                "não é possível escrever na saída padrão: permissão negada (erro 13 do sistema)",
+            ),
+            (
+                CliError::CreateFolder {
+                    path: PathBuf::from("out"),
+                    source: std::io::Error::from_raw_os_error(13),
+                },
+                "out: cannot create the folder: Permission denied (os error 13)",
+                "out: não é possível criar a pasta: permissão negada (erro 13 do sistema)",
+            ),
+        ];
+        for (e, en, pt) in cases {
+            assert_eq!(e.to_string(), en);
+            assert_eq!(e.text(Lang::En), en);
+            assert_eq!(e.text(Lang::Pt), pt);
+        }
     }
 
     #[test]

@@ -16,6 +16,7 @@ use std::path::{Path, PathBuf};
 use std::sync::Mutex;
 
 use super::error::CliError;
+use super::faults::{CliFault, OutputFault};
 use super::output::is_dash;
 
 /// The file a path names once its symbolic links are followed (the link's target is what is
@@ -35,17 +36,15 @@ fn through_links(path: &Path) -> std::io::Result<PathBuf> {
             _ => return Ok(p),
         }
     }
-    Err(std::io::Error::other(
-        "too many levels of symbolic links (a loop?)",
+    Err(OutputFault::io(
+        std::io::ErrorKind::Other,
+        CliFault::LinkLoop,
     ))
 }
 
 /// `-o` names a folder.
 fn is_a_folder() -> std::io::Error {
-    std::io::Error::other(
-        "it is a folder. Fix: give a file name in it (e.g. -o DIR/report.csv), or - for \
-         standard output",
-    )
+    OutputFault::io(std::io::ErrorKind::Other, CliFault::IsAFolder)
 }
 
 /// The file descriptor of this process that `path` names, as given or through its links:
@@ -283,44 +282,19 @@ fn not_in_folder(dir: &Path, e: std::io::Error) -> std::io::Error {
 }
 
 /// Why no file can be written in `dir`, when it is missing or is not a folder: the folder the
-/// user named, with its fix, in English and in Portuguese (`None` when it is a folder). A
-/// command that writes several files asks this of each one's folder before writing any.
+/// user named, with its fix, said in the user's language where it is shown
+/// ([`super::faults::SystemError`]; `None` when it is a folder). A command that writes several
+/// files asks this of each one's folder before writing any.
 pub(crate) fn folder_problem(dir: &Path) -> Option<std::io::Error> {
-    use crate::report::messages::both;
-    let shown = dir.display();
+    let folder = dir.to_owned();
     match std::fs::metadata(dir) {
-        Err(m) if m.kind() == std::io::ErrorKind::NotFound => Some(std::io::Error::new(
+        Err(m) if m.kind() == std::io::ErrorKind::NotFound => Some(OutputFault::io(
             std::io::ErrorKind::NotFound,
-            format!(
-                "{}. Fix: {}",
-                both(
-                    &format!("the folder {shown} does not exist"),
-                    &format!("a pasta {shown} não existe"),
-                ),
-                both(
-                    &format!(
-                        "create it first (mkdir -p {shown}), or give a path in a folder that \
-                         exists"
-                    ),
-                    &format!(
-                        "crie-a antes (mkdir -p {shown}), ou dê um caminho numa pasta que existe"
-                    ),
-                )
-            ),
+            CliFault::NoFolder { folder },
         )),
-        Ok(m) if !m.is_dir() => Some(std::io::Error::new(
+        Ok(m) if !m.is_dir() => Some(OutputFault::io(
             std::io::ErrorKind::NotADirectory,
-            format!(
-                "{}. Fix: {}",
-                both(
-                    &format!("{shown} is not a folder"),
-                    &format!("{shown} não é uma pasta"),
-                ),
-                both(
-                    "give a path in a folder that exists",
-                    "dê um caminho numa pasta que existe",
-                )
-            ),
+            CliFault::NotAFolder { folder },
         )),
         _ => None,
     }
@@ -378,23 +352,18 @@ pub(crate) fn distinct(
         .collect();
     for (i, (flag, out, key)) in outs.iter().enumerate() {
         if let Some(input) = inputs.iter().find(|p| file_key(p).as_ref() == Some(key)) {
-            return Err(CliError::Conflict {
-                message: format!(
-                    "{flag} {} is the input {}: writing it would replace what is being read",
-                    out.display(),
-                    input.display()
-                ),
-                fix: format!("give {flag} another file"),
-            });
+            return Err(CliError::conflict(CliFault::OutputIsInput {
+                flag: (*flag).to_owned(),
+                output: out.to_path_buf(),
+                input: input.to_path_buf(),
+            }));
         }
         if let Some((other, _, _)) = outs[..i].iter().find(|(_, _, k)| k == key) {
-            return Err(CliError::Conflict {
-                message: format!(
-                    "{other} and {flag} are the same file, {}: one would replace the other",
-                    out.display()
-                ),
-                fix: format!("give {flag} another file"),
-            });
+            return Err(CliError::conflict(CliFault::SameOutput {
+                other: (*other).to_owned(),
+                flag: (*flag).to_owned(),
+                output: out.to_path_buf(),
+            }));
         }
     }
     Ok(())

@@ -8,9 +8,11 @@ pub(crate) mod args;
 mod commands;
 pub(crate) mod error;
 pub(crate) mod exit;
+pub(crate) mod faults;
 mod files;
 mod output;
-mod parse;
+pub(crate) mod parse;
+pub(crate) mod usage;
 
 use std::process::ExitCode;
 
@@ -37,7 +39,7 @@ pub fn main() -> ExitCode {
             }
             run(&cli).into()
         }
-        Err(e) => match error::refused(&e, &args) {
+        Err(e) => match usage::refused(&e, &args) {
             Some(exit) => exit.into(),
             None => e.exit(),
         },

@@ -107,24 +107,7 @@ fn slip_text(slip: Slip, lang: Lang) -> String {
     if text.contains("Eq.") {
         return text.to_owned();
     }
-    let eq = match slip {
-        Slip::HitBehindOrigin => "4.17",
-        Slip::LightReversed => "4.1",
-        Slip::ViewerReversed => "4.10",
-        Slip::NormalReversed | Slip::NormalNotNormalized | Slip::AbsCosTheta => "4.7",
-        Slip::FalloffForgotten
-        | Slip::FalloffLinearNotQuadratic
-        | Slip::FalloffQuadraticNotLinear => "4.2",
-        Slip::AmbientForgotten | Slip::AmbientAssumed => "4.6",
-        Slip::HalfVector | Slip::CosPhiNotRaised => "4.10",
-        Slip::SpotConeIgnored => "4.4",
-        Slip::IntermediatesRounded | Slip::NoClamping | Slip::TruncatedDecimals => "4.16",
-        Slip::TruncatedRgb8 => "4.16",
-        Slip::ReflectionSignFlipped => "4.17",
-        // Snell's law is not one of the chapter's numbered equations.
-        Slip::EtaInverted => return format!("{text} (Sec. 4.4)"),
-    };
-    format!("{text} (Eq. {eq})")
+    format!("{text} ({})", slip.reference())
 }
 
 /// Escapes text for a Cloze answer or feedback (see the module's notes).

@@ -72,29 +72,231 @@ use crate::core::material::Transmission;
 use crate::core::Material;
 use crate::geometry::{Shape, Triangle};
 use crate::problem::{Problem, Surface};
+use crate::text::{Fault, Lang, Num, Show};
 use crate::tracer::camera::CameraRays;
 
 /// Why a scene cannot be written as POV-Ray SDL that computes the same image.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
-#[error("{what} cannot be expressed in POV-Ray 3.7: {why}. Fix: {fix}")]
+#[error("{what} cannot be expressed in POV-Ray 3.7: {}. Fix: {}", .fault.what(Lang::En), .fault.fix(Lang::En))]
 pub struct Unexpressible {
     /// The part of the scene (a material, a light, a setting).
     pub what: String,
-    /// Why POV-Ray cannot compute it as phong does.
-    pub why: String,
-    /// What would make the scene expressible.
-    pub fix: String,
+    /// Why POV-Ray cannot compute it as phong does, and what would make the scene expressible.
+    pub fault: PovFault,
 }
 
-fn refuse(
-    what: impl Into<String>,
-    why: impl Into<String>,
-    fix: impl Into<String>,
-) -> Unexpressible {
+impl Unexpressible {
+    /// Why POV-Ray cannot compute it as phong does, in English.
+    pub fn why(&self) -> String {
+        self.fault.what(Lang::En)
+    }
+
+    /// What would make the scene expressible, in English.
+    pub fn fix(&self) -> String {
+        self.fault.fix(Lang::En)
+    }
+}
+
+fn refuse(what: impl Into<String>, fault: PovFault) -> Unexpressible {
     Unexpressible {
         what: what.into(),
-        why: why.into(),
-        fix: fix.into(),
+        fault,
+    }
+}
+
+/// A part of a scene that cannot be expressed in POV-Ray, as a problem's error says it:
+/// `cannot be expressed in POV-Ray 3.7: WHY`, and the fix.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Unexpressed(pub PovFault);
+
+impl Fault for Unexpressed {
+    fn what(&self, lang: Lang) -> String {
+        match lang {
+            Lang::En => format!("cannot be expressed in POV-Ray 3.7: {}", self.0.what(lang)),
+            Lang::Pt => format!(
+                "não pode ser expresso em POV-Ray 3.7: {}",
+                self.0.what(lang)
+            ),
+        }
+    }
+
+    fn fix(&self, lang: Lang) -> String {
+        self.0.fix(lang)
+    }
+}
+
+/// Total internal reflection, and why it differs between POV-Ray and phong.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Tir;
+
+impl Show for Tir {
+    fn show(&self, lang: Lang, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(match lang {
+            Lang::En => {
+                "total internal reflection, where POV-Ray traces a reflection ray in place of \
+                 the transmitted one and phong adds nothing"
+            }
+            Lang::Pt => {
+                "reflexão interna total, onde o POV-Ray traça um raio de reflexão em lugar do \
+                 transmitido e phong não acrescenta nada"
+            }
+        })
+    }
+}
+
+crate::messages! {
+    /// A colour of a material, named in an error.
+    #[derive(Default)]
+    pub enum Colour {
+        /// O_a.
+        #[default]
+        Ambient => "ambient", "ambiente";
+        /// O_d.
+        Diffuse => "diffuse", "difusa";
+        /// O_s.
+        Specular => "specular", "especular";
+        /// O_t.
+        Transmissivity => "transmissivity", "de transmissão";
+    }
+}
+
+crate::faults! {
+    /// Why POV-Ray cannot compute a part of a scene as phong does, and what would (the
+    /// fields are the values the sentences hold).
+    #[allow(missing_docs)]
+    pub enum PovFault {
+        /// No camera.
+        NoCamera =>
+            "it has no camera", "ela não tem câmera";
+            fix "add \"camera\" to the file", "acrescente \"camera\" ao arquivo";
+        /// More than one sample per pixel.
+        Samples { samples: u32 } =>
+            "phong averages {samples} stratified samples per pixel, and POV-Ray's anti-aliasing \
+             samples differently",
+            "phong faz a média de {samples} amostras estratificadas por pixel, e o anti-aliasing \
+             do POV-Ray amostra de outro modo";
+            fix "export with --samples 1 (POV-Ray then traces each pixel's centre, as phong does)",
+                "exporte com --samples 1 (o POV-Ray então traça o centro de cada pixel, como \
+                 phong faz)";
+        /// A scene beyond POV-Ray's largest distance.
+        TooLarge { radius: Num } =>
+            "it spans {radius} units around its centre, and POV-Ray ignores intersections \
+             farther than 1e7 units",
+            "ela se estende por {radius} unidades em torno do seu centro, e o POV-Ray ignora \
+             interseções a mais de 1e7 unidades";
+            fix "scale the scene down (below 2.5e6 units)",
+                "reduza a escala da cena (abaixo de 2.5e6 unidades)";
+        /// A minimum weight that stops POV-Ray's primary rays.
+        MinWeight { weight: Num, most: Num } =>
+            "a minimum weight of {weight} ≥ 1 stops POV-Ray's primary rays, yet phong traces \
+             reflection rays of weight up to {most}",
+            "um peso mínimo de {weight} ≥ 1 detém os raios primários do POV-Ray, mas phong \
+             traça raios de reflexão de peso até {most}";
+            fix "give a minimum weight below 1", "dê um peso mínimo abaixo de 1";
+        /// Reflections deeper than POV-Ray traces.
+        MaxLevel { level: u32, most: u32 } =>
+            "phong may trace reflections to level {level}, and POV-Ray stops at {most}",
+            "phong pode traçar reflexões até o nível {level}, e o POV-Ray para em {most}";
+            fix "give a maximum level of at most {most}, or a larger minimum weight",
+                "dê um nível máximo de até {most}, ou um peso mínimo maior";
+        /// A light with falloff on a surface.
+        LightOnSurface =>
+            "it touches a surface, so its falloff C/d^f grows without bound there, and \
+             POV-Ray's fade 2/(1 + (d/D₀)^p) cannot follow it",
+            "ela toca uma superfície, então seu decaimento C/d^f cresce sem limite ali, e o \
+             fade 2/(1 + (d/D₀)^p) do POV-Ray não consegue acompanhá-lo";
+            fix "move the light off the surface", "afaste a fonte de luz da superfície";
+        /// A light too bright for the falloff emulation.
+        LightOverflow =>
+            "its colour scaled for the falloff emulation (C/(2·D₀^f)) overflows POV-Ray's f32 \
+             colours",
+            "sua cor escalada para emular o decaimento (C/(2·D₀^f)) excede as cores f32 do \
+             POV-Ray";
+            fix "use a dimmer light or a scene of another scale",
+                "use uma fonte de luz mais fraca ou uma cena de outra escala";
+        /// An index of refraction below 1.
+        IorBelowOne { ior: Num, tir: Tir } =>
+            "an index of refraction {ior} below 1 gives {tir}, already where a ray enters it",
+            "um índice de refração {ior} abaixo de 1 dá {tir}, já onde um raio entra nele";
+            fix "give an \"ior\" of at least 1, or export with --max-level 1",
+                "dê um \"ior\" de pelo menos 1, ou exporte com --max-level 1";
+        /// A transmitting triangle or mesh.
+        OpenSurface { material: String, tir: Tir } =>
+            "a triangle or mesh with a transmitting material ({material}) may show {tir}, and a \
+             ray through an open surface has no inside that POV-Ray's stack of media agrees on",
+            "um triângulo ou uma malha com material que transmite ({material}) pode mostrar \
+             {tir}, e um raio através de uma superfície aberta não tem um interior com que a \
+             pilha de meios do POV-Ray concorde";
+            fix "make the transmitting surface a sphere or a plane, or give its material no \
+                 \"transmissivity\"",
+                "faça da superfície que transmite uma esfera ou um plano, ou tire \
+                 \"transmissivity\" do seu material";
+        /// The eye inside a transmitting sphere.
+        EyeInSphere { material: String, tir: Tir } =>
+            "the eye is inside this transmitting sphere ({material}), whose rays may show {tir}",
+            "o olho está dentro desta esfera que transmite ({material}), cujos raios podem \
+             mostrar {tir}";
+            fix "move the eye outside the sphere", "ponha o olho fora da esfera";
+        /// A reflecting surface inside a transmitting sphere.
+        InsideSphere { material: String, tir: Tir } =>
+            "a reflecting or transmitting surface reaches inside this transmitting sphere \
+             ({material}): a ray reflected from it inside may show {tir}, and POV-Ray's stack \
+             of media reads nested media otherwise than phong",
+            "uma superfície que reflete ou transmite entra nesta esfera que transmite \
+             ({material}): um raio refletido por ela lá dentro pode mostrar {tir}, e a pilha de \
+             meios do POV-Ray lê meios aninhados de outro modo que phong";
+            fix "move the other reflecting or transmitting surfaces out of the sphere (touching \
+                 it is fine; matte opaque ones may stay)",
+                "tire da esfera as outras superfícies que refletem ou transmitem (tocá-la não \
+                 tem problema; as foscas opacas podem ficar)";
+        /// The eye behind a transmitting plane.
+        EyeBehindPlane { material: String, tir: Tir } =>
+            "the eye is behind this transmitting plane ({material}), in its material, where its \
+             rays may show {tir}",
+            "o olho está atrás deste plano que transmite ({material}), dentro do seu material, \
+             onde seus raios podem mostrar {tir}";
+            fix "put the eye on the side the plane's normal points to",
+                "ponha o olho do lado para onde aponta a normal do plano";
+        /// A reflecting surface behind a transmitting plane.
+        BehindPlane { material: String, tir: Tir } =>
+            "a reflecting or transmitting surface reaches behind this transmitting plane \
+             ({material}), into its material: a ray reflected from it there may show {tir}",
+            "uma superfície que reflete ou transmite chega atrás deste plano que transmite \
+             ({material}), dentro do seu material: um raio refletido por ela ali pode mostrar \
+             {tir}";
+            fix "keep every other reflecting or transmitting surface on the side the plane's \
+                 normal points to (another plane only parallel to it and in front); matte \
+                 opaque ones may be behind it",
+                "mantenha toda outra superfície que reflete ou transmite do lado para onde aponta \
+                 a normal do plano (outro plano, só paralelo a ele e à frente); as foscas opacas \
+                 podem ficar atrás dele";
+        /// A transmissivity whose greyscale POV-Ray does not trace.
+        Greyscale { o_t: String, grey: Num } =>
+            "POV-Ray traces a refracted ray only where the greyscale 0.297·R + 0.589·G + \
+             0.114·B of O_t = {o_t} exceeds the minimum weight, and it is {grey}; phong traces \
+             it while w·max(O_t) exceeds it",
+            "o POV-Ray traça um raio refratado só onde o tom de cinza 0.297·R + 0.589·G + \
+             0.114·B de O_t = {o_t} excede o peso mínimo, e ele é {grey}; phong o traça \
+             enquanto w·max(O_t) o excede";
+            fix "give a transmissivity whose greyscale is above the minimum weight, or a larger \
+                 minimum weight",
+                "dê uma transmissividade cujo tom de cinza esteja acima do peso mínimo, ou um \
+                 peso mínimo maior";
+        /// A colour beyond POV-Ray's f32 colours.
+        ColourOverflow { colour: Colour, value: String } =>
+            "its {colour} colour {value} overflows POV-Ray's f32 colours",
+            "sua cor {colour} {value} excede as cores f32 do POV-Ray";
+            fix "use colours below 1e32", "use cores abaixo de 1e32";
+        /// A coloured specular colour with a zero channel where the material transmits.
+        ZeroSpecular { specular: String, o_t: String } =>
+            "its specular colour {specular} is zero where its transmissivity {o_t} is not, and \
+             the layers POV-Ray needs for a coloured specular colour then pass no light in that \
+             channel",
+            "sua cor especular {specular} é zero onde sua transmissividade {o_t} não é, e as \
+             camadas de que o POV-Ray precisa para uma cor especular colorida então não deixam \
+             passar luz nesse canal";
+            fix "give the specular colour no zero component, or make it grey",
+                "dê à cor especular componentes diferentes de zero, ou torne-a cinza";
     }
 }
 
@@ -138,23 +340,17 @@ pub fn povray_args(width: u32, height: u32) -> Vec<String> {
 /// The scene as POV-Ray 3.7 SDL, with the problem's render settings (already overridden by
 /// the command line, if at all).
 pub fn export(problem: &Problem<f64>) -> Result<String, Unexpressible> {
-    let camera = problem.camera.as_ref().ok_or_else(|| {
-        refuse(
-            "the scene",
-            "it has no camera",
-            "add \"camera\" to the file",
-        )
-    })?;
+    let camera = problem
+        .camera
+        .as_ref()
+        .ok_or_else(|| refuse("the scene", PovFault::NoCamera))?;
     let settings = problem.render;
     if settings.samples != 1 {
         return Err(refuse(
             "render.samples",
-            format!(
-                "phong averages {} stratified samples per pixel, and POV-Ray's anti-aliasing \
-                 samples differently",
-                settings.samples
-            ),
-            "export with --samples 1 (POV-Ray then traces each pixel's centre, as phong does)",
+            PovFault::Samples {
+                samples: settings.samples,
+            },
         ));
     }
     let surfaces = problem.surfaces();
@@ -162,12 +358,9 @@ pub fn export(problem: &Problem<f64>) -> Result<String, Unexpressible> {
     if extent.radius * 4.0 > POV_MAX_DISTANCE {
         return Err(refuse(
             "the scene",
-            format!(
-                "it spans {} units around its centre, and POV-Ray ignores intersections \
-                 farther than {POV_MAX_DISTANCE:e} units",
-                num(extent.radius)
-            ),
-            "scale the scene down (below 2.5e6 units)",
+            PovFault::TooLarge {
+                radius: Num(extent.radius),
+            },
         ));
     }
 
@@ -188,13 +381,10 @@ pub fn export(problem: &Problem<f64>) -> Result<String, Unexpressible> {
         if reflective_max > mw {
             return Err(refuse(
                 "render.min_weight",
-                format!(
-                    "a minimum weight of {} ≥ 1 stops POV-Ray's primary rays, yet phong traces \
-                     reflection rays of weight up to {}",
-                    num(mw),
-                    num(reflective_max)
-                ),
-                "give a minimum weight below 1",
+                PovFault::MinWeight {
+                    weight: Num(mw),
+                    most: Num(reflective_max),
+                },
             ));
         }
         // No reflection ray passes the weight rule: none is traced in either renderer.
@@ -462,13 +652,10 @@ fn effective_max_level(
     }
     Err(refuse(
         "render.max_level",
-        format!(
-            "phong may trace reflections to level {max_level}, and POV-Ray stops at \
-             {POV_MAX_TRACE_LEVEL}"
-        ),
-        format!(
-            "give a maximum level of at most {POV_MAX_TRACE_LEVEL}, or a larger minimum weight"
-        ),
+        PovFault::MaxLevel {
+            level: max_level,
+            most: POV_MAX_TRACE_LEVEL,
+        },
     ))
 }
 
@@ -544,23 +731,13 @@ fn fade(
     }
     let nearest = nearest_surface(position, surfaces);
     if !(nearest > 0.0 && nearest.is_finite()) {
-        return Err(refuse(
-            name,
-            "it touches a surface, so its falloff C/d^f grows without bound there, and \
-             POV-Ray's fade 2/(1 + (d/D₀)^p) cannot follow it",
-            "move the light off the surface",
-        ));
+        return Err(refuse(name, PovFault::LightOnSurface));
     }
     let pf = f64::from(f);
     let d0 = nearest * FALLOFF_RELATIVE_ERROR.powf(1.0 / pf);
     let scaled = color / (2.0 * d0.powf(pf));
     if scaled.max_element() > f64::from(f32::MAX) / 4.0 || (d0 / nearest).powf(pf) > 1e-6 {
-        return Err(refuse(
-            name,
-            "its colour scaled for the falloff emulation (C/(2·D₀^f)) overflows POV-Ray's f32 \
-             colours",
-            "use a dimmer light or a scene of another scale",
-        ));
+        return Err(refuse(name, PovFault::LightOverflow));
     }
     Ok((scaled, format!(" fade_distance {} fade_power {f}", num(d0))))
 }
@@ -638,16 +815,13 @@ fn check_transmission(
     let what = material_name(s);
     let surface = format!("surfaces[{}]", s.source.index);
     let t = transmission(&s.material.material).expect("a transmitting surface");
-    let tir = "total internal reflection, where POV-Ray traces a reflection ray in place of the \
-               transmitted one and phong adds nothing";
     if t.eta < 1.0 {
         return Err(refuse(
             format!("{what}: \"ior\""),
-            format!(
-                "an index of refraction {} below 1 gives {tir}, already where a ray enters it",
-                num(t.eta)
-            ),
-            "give an \"ior\" of at least 1, or export with --max-level 1",
+            PovFault::IorBelowOne {
+                ior: Num(t.eta),
+                tir: Tir,
+            },
         ));
     }
     let eye = problem.camera.as_ref().map(|c| c.eye);
@@ -665,33 +839,29 @@ fn check_transmission(
     match s.shape {
         Shape::Triangle(_) => Err(refuse(
             surface,
-            format!(
-                "a triangle or mesh with a transmitting material ({what}) may show {tir}, and a \
-                 ray through an open surface has no inside that POV-Ray's stack of media agrees on"
-            ),
-            "make the transmitting surface a sphere or a plane, or give its material no \
-             \"transmissivity\"",
+            PovFault::OpenSurface {
+                material: what.clone(),
+                tir: Tir,
+            },
         )),
         Shape::Sphere(sp) => {
             if eye.is_some_and(|e| (e - sp.center).length() <= sp.radius) {
                 return Err(refuse(
                     surface,
-                    format!("the eye is inside this transmitting sphere ({what}), whose rays may show {tir}"),
-                    "move the eye outside the sphere",
+                    PovFault::EyeInSphere {
+                        material: what.clone(),
+                        tir: Tir,
+                    },
                 ));
             }
             for o in others {
                 if enters_ball(o, sp.center, sp.radius) {
                     return Err(refuse(
                         surface,
-                        format!(
-                            "a reflecting or transmitting surface reaches inside this \
-                             transmitting sphere ({what}): a ray reflected from it inside may \
-                             show {tir}, and POV-Ray's stack of media reads nested media \
-                             otherwise than phong"
-                        ),
-                        "move the other reflecting or transmitting surfaces out of the sphere (touching \
-                         it is fine; matte opaque ones may stay)",
+                        PovFault::InsideSphere {
+                            material: what.clone(),
+                            tir: Tir,
+                        },
                     ));
                 }
             }
@@ -702,11 +872,10 @@ fn check_transmission(
             if eye.is_some_and(|e| front(e) <= 0.0) {
                 return Err(refuse(
                     surface,
-                    format!(
-                        "the eye is behind this transmitting plane ({what}), in its material, \
-                         where its rays may show {tir}"
-                    ),
-                    "put the eye on the side the plane's normal points to",
+                    PovFault::EyeBehindPlane {
+                        material: what.clone(),
+                        tir: Tir,
+                    },
                 ));
             }
             for o in others {
@@ -720,14 +889,10 @@ fn check_transmission(
                 if behind {
                     return Err(refuse(
                         surface,
-                        format!(
-                            "a reflecting or transmitting surface reaches behind this \
-                             transmitting plane ({what}), into its material: a ray reflected \
-                             from it there may show {tir}"
-                        ),
-                        "keep every other reflecting or transmitting surface on the side the \
-                         plane's normal points to (another plane only parallel to it and in \
-                         front); matte opaque ones may be behind it",
+                        PovFault::BehindPlane {
+                            material: what.clone(),
+                            tir: Tir,
+                        },
                     ));
                 }
             }
@@ -740,15 +905,10 @@ fn check_transmission(
     if traced_by_phong && pov_greyscale(t.o_t) <= adc {
         return Err(refuse(
             format!("{what}: \"transmissivity\""),
-            format!(
-                "POV-Ray traces a refracted ray only where the greyscale \
-                 0.297·R + 0.589·G + 0.114·B of O_t = {} exceeds the minimum weight, \
-                 and it is {}; phong traces it while w·max(O_t) exceeds it",
-                vec3(t.o_t),
-                num(pov_greyscale(t.o_t))
-            ),
-            "give a transmissivity whose greyscale is above the minimum weight, or a larger \
-             minimum weight",
+            PovFault::Greyscale {
+                o_t: vec3(t.o_t),
+                grey: Num(pov_greyscale(t.o_t)),
+            },
         ));
     }
     Ok(())
@@ -799,21 +959,20 @@ fn texture(
     let phong = |s: f64| format!(" phong {} phong_size {}", num(s), num(m.n_s));
     // The largest colour component written: POV-Ray's colours are f32, with room to add up.
     let limit = f64::from(f32::MAX) / 1e6;
-    for (name, v) in [
-        ("ambient", amb),
-        ("diffuse", diffuse),
-        ("specular", specular),
-        ("transmissivity", o_t),
+    for (colour, v) in [
+        (Colour::Ambient, amb),
+        (Colour::Diffuse, diffuse),
+        (Colour::Specular, specular),
+        (Colour::Transmissivity, o_t),
     ] {
         if let Some(v) = v {
             if v.max_element() > limit {
                 return Err(refuse(
                     what,
-                    format!(
-                        "its {name} colour {} overflows POV-Ray's f32 colours",
-                        vec3(v)
-                    ),
-                    "use colours below 1e32",
+                    PovFault::ColourOverflow {
+                        colour,
+                        value: vec3(v),
+                    },
                 ));
             }
         }
@@ -929,14 +1088,10 @@ fn texture(
             if passed[i] <= 0.0 || o[i] / passed[i] > limit {
                 return Err(refuse(
                     what,
-                    format!(
-                        "its specular colour {} is zero where its transmissivity {} is not, \
-                         and the layers POV-Ray needs for a coloured specular colour then pass \
-                         no light in that channel",
-                        vec3(specular.unwrap_or(DVec3::ZERO)),
-                        vec3(o)
-                    ),
-                    "give the specular colour no zero component, or make it grey",
+                    PovFault::ZeroSpecular {
+                        specular: vec3(specular.unwrap_or(DVec3::ZERO)),
+                        o_t: vec3(o),
+                    },
                 ));
             }
             c[i] = o[i] / passed[i];
@@ -987,6 +1142,40 @@ fn sanitize(s: &str) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_refusal_reads_as_before_in_english_and_wholly_in_portuguese() {
+        // The sentences write POV-Ray's limits as figures.
+        assert_eq!(format!("{POV_MAX_DISTANCE:e}"), "1e7");
+        let e = refuse(
+            "surfaces[1]",
+            PovFault::EyeInSphere {
+                material: "material \"glass\"".into(),
+                tir: Tir,
+            },
+        );
+        assert_eq!(
+            e.to_string(),
+            "surfaces[1] cannot be expressed in POV-Ray 3.7: the eye is inside this transmitting \
+             sphere (material \"glass\"), whose rays may show total internal reflection, where \
+             POV-Ray traces a reflection ray in place of the transmitted one and phong adds \
+             nothing. Fix: move the eye outside the sphere"
+        );
+        let fault = Unexpressed(e.fault.clone());
+        assert_eq!(
+            fault.what(Lang::En),
+            format!("cannot be expressed in POV-Ray 3.7: {}", e.why())
+        );
+        assert_eq!(
+            fault.what(Lang::Pt),
+            "não pode ser expresso em POV-Ray 3.7: o olho está dentro desta esfera que transmite \
+             (material \"glass\"), cujos raios podem mostrar reflexão interna total, onde o \
+             POV-Ray traça um raio de reflexão em lugar do transmitido e phong não acrescenta \
+             nada"
+        );
+        assert_eq!(fault.fix(Lang::Pt), "ponha o olho fora da esfera");
+        assert_eq!(fault.fix(Lang::En), e.fix());
+    }
 
     #[test]
     fn the_bailout_is_the_next_f32_above_the_minimum_weight() {

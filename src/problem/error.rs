@@ -6,6 +6,7 @@ use std::fmt;
 use std::path::PathBuf;
 use std::sync::Arc;
 
+use super::reading::ReadFault;
 use crate::text::{Fault, Lang, Message};
 
 /// A fault kept as a shared value, so that an error carrying it can be cloned and compared.
@@ -163,47 +164,6 @@ impl std::error::Error for ProblemError {
     }
 }
 
-/// Why a file cannot be read, and the fix: a smaller file when it is too large, else the path.
-#[derive(Debug)]
-struct ReadFault<'a>(&'a std::io::Error);
-
-impl<'a> ReadFault<'a> {
-    fn of(e: &'a std::io::Error) -> Self {
-        ReadFault(e)
-    }
-}
-
-impl Fault for ReadFault<'_> {
-    fn what(&self, lang: Lang) -> String {
-        match lang {
-            Lang::En => format!("cannot read the file: {}", self.0),
-            Lang::Pt => format!(
-                "não é possível ler o arquivo: {}",
-                crate::report::messages::error_in(&self.0.to_string(), lang)
-            ),
-        }
-    }
-
-    fn fix(&self, lang: Lang) -> String {
-        let too_large = self
-            .0
-            .get_ref()
-            .is_some_and(|inner| inner.is::<super::TooLarge>() || inner.is::<super::TooMany>());
-        match (too_large, lang) {
-            (true, Lang::En) => {
-                "give a smaller file (the limits are in README, \"Limits and safety\")".into()
-            }
-            (true, Lang::Pt) => {
-                "dê um arquivo menor (os limites estão no README, \"Limits and safety\")".into()
-            }
-            (false, Lang::En) => "check the path, and that the file exists and is readable".into(),
-            (false, Lang::Pt) => {
-                "verifique o caminho, e que o arquivo existe e pode ser lido".into()
-            }
-        }
-    }
-}
-
 impl ProblemError {
     /// A stable machine-readable kind for the JSON output: "read", "syntax", "invalid" or "usage".
     pub(crate) fn kind(&self) -> &'static str {
@@ -213,6 +173,13 @@ impl ProblemError {
             ProblemError::Invalid { .. } => "invalid",
             ProblemError::Usage { .. } => "usage",
         }
+    }
+
+    /// Whether this is a syntax error of text after the end of the document (serde_json's
+    /// "trailing characters" at the top level, with no field).
+    pub fn is_trailing(&self) -> bool {
+        matches!(self, ProblemError::Syntax { field: None, fault, .. }
+            if fault.what(Lang::En) == super::syntax::Parse::TrailingCharacters.text(Lang::En))
     }
 
     /// The field the error is about, when there is one.

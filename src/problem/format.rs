@@ -15,6 +15,8 @@ use serde::de::{self, MapAccess, SeqAccess, Visitor};
 use serde::{Deserialize, Deserializer};
 
 use super::kinds::kinds;
+use super::syntax::{Expected, Parse};
+use crate::text::{Echo, Lang, Message};
 
 /// An RGB colour or a 3-vector, `[x, y, z]`.
 pub type Triple = [f64; 3];
@@ -226,15 +228,16 @@ kinds! {
     optional {}
     fields {
         // Boxed, as the vertices below: a scene holds a plane or two and many spheres.
-        point: Box<Triple> as Triple => "a point of the plane",
-        normal: Box<Triple> as Triple => "the plane's normal",
-        center: Triple => "the sphere",
-        radius: f64 => "the sphere",
+        point: Box<Triple> as Triple => "a point of the plane", "um ponto do plano",
+        normal: Box<Triple> as Triple => "the plane's normal", "a normal do plano",
+        center: Triple => "the sphere", "a esfera",
+        radius: f64 => "the sphere", "a esfera",
         // Boxed (as a written-in-place material is): a scene of 100,000 spheres holds 100,000
         // of these as read, and the few triangles should not make each of them 72 bytes larger.
         vertices: Box<[Triple; 3]> as [Triple; 3] => "the triangle's three corners",
-        file: String => "the mesh's Wavefront OBJ file",
-        material: MaterialRef => "the material at the point",
+            "os três vértices do triângulo",
+        file: String => "the mesh's Wavefront OBJ file", "o arquivo Wavefront OBJ da malha",
+        material: MaterialRef => "the material at the point", "o material no ponto",
     }
     kinds {
         /// The plane through `point` with normal `normal` (used as given, normalised).
@@ -269,18 +272,23 @@ kinds! {
     fields {
         // Also the purpose of `color` in a scaled colour and an answer key.
         color: Triple => "the light's colour C_l (or a coefficient's colour O)",
-        position: Triple => "P_l, for L and d (Eq. 4.1)",
+            "a cor C_l da fonte de luz (ou a cor O de um coeficiente)",
+        position: Triple => "P_l, for L and d (Eq. 4.1)", "P_l, para L e d (Eq. 4.1)",
         // Also the purpose of `ray.direction`.
         direction: Triple => "the direction of travel (L for a directional light, D for a ray)",
-        axis: Triple => "the cone's axis D_l (Eq. 4.4)",
+            "a direção de propagação (L de uma luz direcional, D de um raio)",
+        axis: Triple => "the cone's axis D_l (Eq. 4.4)", "o eixo D_l do cone (Eq. 4.4)",
         /// γ_l in degrees, between the axis and the cone's side, 0 ≤ γ ≤ 90.
         angle: f64 => "the cone's half-angle γ in degrees (Eq. 4.4)",
+            "o ângulo γ do cone, em graus (Eq. 4.4)",
         /// e_l ≥ 0.
         exponent: f64 => "the spot exponent e of cos(ψ)^e (Eq. 4.4)",
+            "o expoente de decaimento e de cos(ψ)^e (Eq. 4.4)",
         // Read as any number, so that 1.5 is refused by validation with its reason.
         /// f: 0 none, 1 linear, 2 quadratic (Eq. 4.3).
         #[schemars(range(min = 0, max = 2))]
         falloff: f64 as u8 => "f in I_l = C_l/d^f (Eq. 4.2, 4.3): 0 none, 1 linear, 2 quadratic",
+            "f em I_l = C_l/d^f (Eq. 4.2, 4.3): 0 sem decaimento, 1 linear, 2 quadrático",
     }
     kinds {
         /// Ambient light I_a (Eq. 4.5–4.6). Several ambient lights add up.
@@ -405,38 +413,38 @@ pub enum MaterialRef {
 
 /// What an object of the format is, for the error when something else is found.
 trait Described {
-    const WHAT: &'static str;
+    const WHAT: Expected;
 }
 
 impl Described for PointSpec {
-    const WHAT: &'static str = "the point: an object {\"position\": [x, y, z], \"normal\": \
-                                [x, y, z], \"material\": …}";
+    const WHAT: Expected = Expected::Point;
 }
 impl Described for RaySpec {
-    const WHAT: &'static str =
-        "the ray: an object {\"origin\": [x, y, z], \"direction\": [x, y, z]}";
+    const WHAT: Expected = Expected::Ray;
 }
 impl Described for CameraSpec {
-    const WHAT: &'static str = "the camera: an object {\"eye\": [x, y, z], \"look_at\": \
-                                [x, y, z], \"fov\": 45, \"width\": 640, \"height\": 480}";
+    const WHAT: Expected = Expected::Camera;
 }
 impl Described for RenderSpec {
-    const WHAT: &'static str =
-        "the render settings: an object {\"max_level\": 5, \"shadows\": true, …}";
+    const WHAT: Expected = Expected::Render;
 }
 impl Described for GeneratedSpec {
-    const WHAT: &'static str = "where a generated problem came from: an object {\"kind\": \
-                                \"point\", \"seed\": 1, \"index\": 1}";
+    const WHAT: Expected = Expected::Generated;
 }
 impl Described for LightSpec {
-    const WHAT: &'static str = "a light: an object {\"type\": \"point\", …}";
+    const WHAT: Expected = Expected::Light;
 }
 impl Described for SurfaceSpec {
-    const WHAT: &'static str = "a surface: an object {\"type\": \"sphere\", …}";
+    const WHAT: Expected = Expected::Surface;
 }
 impl Described for MaterialSpec {
-    const WHAT: &'static str =
-        "a material: an object {\"ambient\": [r, g, b], \"diffuse\": [r, g, b], …}";
+    const WHAT: Expected = Expected::Material;
+}
+
+/// Writes what the parser expects, as serde's message says it (in English: the message is
+/// read back into a value where the error is made, problem::syntax).
+fn expecting(f: &mut fmt::Formatter, what: Expected) -> fmt::Result {
+    f.write_str(&what.text(Lang::En))
 }
 
 /// A struct of the format, read only from a JSON object.
@@ -448,7 +456,7 @@ impl<'de, T: Deserialize<'de> + Described> Deserialize<'de> for Object<T> {
         impl<'de, T: Deserialize<'de> + Described> Visitor<'de> for V<T> {
             type Value = Object<T>;
             fn expecting(&self, f: &mut fmt::Formatter) -> fmt::Result {
-                f.write_str(T::WHAT)
+                expecting(f, T::WHAT)
             }
             fn visit_map<A: MapAccess<'de>>(self, map: A) -> Result<Object<T>, A::Error> {
                 T::deserialize(de::value::MapAccessDeserializer::new(map)).map(Object)
@@ -482,15 +490,16 @@ fn materials<'de, D: Deserializer<'de>>(d: D) -> Result<BTreeMap<String, Materia
     impl<'de> Visitor<'de> for V {
         type Value = BTreeMap<String, MaterialSpec>;
         fn expecting(&self, f: &mut fmt::Formatter) -> fmt::Result {
-            f.write_str("the named materials: an object {\"name\": {\"ambient\": …}, …}")
+            expecting(f, Expected::NamedMaterials)
         }
         fn visit_map<A: MapAccess<'de>>(self, mut map: A) -> Result<Self::Value, A::Error> {
             let mut out = BTreeMap::new();
             while let Some(name) = map.next_key::<String>()? {
                 if out.contains_key(&name) {
-                    return Err(de::Error::custom(format_args!(
-                        "duplicate material `{name}`"
-                    )));
+                    let duplicate = Parse::DuplicateMaterial {
+                        name: Echo::new(&name, usize::MAX),
+                    };
+                    return Err(de::Error::custom(duplicate.text(Lang::En)));
                 }
                 let Object(m) = map.next_value::<Object<MaterialSpec>>()?;
                 out.insert(name, m);
@@ -510,7 +519,7 @@ impl<'de> Deserialize<'de> for ColorSpec {
         impl<'de> Visitor<'de> for V {
             type Value = ColorSpec;
             fn expecting(&self, f: &mut fmt::Formatter) -> fmt::Result {
-                f.write_str("a colour [r, g, b] or {\"k\": k, \"color\": [r, g, b]}")
+                expecting(f, Expected::Colour)
             }
             fn visit_seq<A: SeqAccess<'de>>(self, seq: A) -> Result<ColorSpec, A::Error> {
                 Triple::deserialize(de::value::SeqAccessDeserializer::new(seq)).map(ColorSpec::Rgb)
@@ -530,7 +539,7 @@ impl<'de> Deserialize<'de> for ReflectivitySpec {
         impl<'de> Visitor<'de> for V {
             type Value = ReflectivitySpec;
             fn expecting(&self, f: &mut fmt::Formatter) -> fmt::Result {
-                f.write_str("a colour [r, g, b] or the word \"specular\"")
+                expecting(f, Expected::Reflectivity)
             }
             fn visit_seq<A: SeqAccess<'de>>(self, seq: A) -> Result<ReflectivitySpec, A::Error> {
                 Triple::deserialize(de::value::SeqAccessDeserializer::new(seq))
@@ -554,7 +563,7 @@ impl<'de> Deserialize<'de> for AnswerColor {
         impl<'de> Visitor<'de> for V {
             type Value = AnswerColor;
             fn expecting(&self, f: &mut fmt::Formatter) -> fmt::Result {
-                f.write_str("a colour [r, g, b] or \"#RRGGBB\"")
+                expecting(f, Expected::AnswerColour)
             }
             fn visit_seq<A: SeqAccess<'de>>(self, seq: A) -> Result<AnswerColor, A::Error> {
                 Triple::deserialize(de::value::SeqAccessDeserializer::new(seq))
@@ -574,9 +583,7 @@ impl<'de> Deserialize<'de> for AnswerSpec {
         impl<'de> Visitor<'de> for V {
             type Value = AnswerSpec;
             fn expecting(&self, f: &mut fmt::Formatter) -> fmt::Result {
-                f.write_str(
-                    "an answer: [r, g, b], \"#RRGGBB\" or {\"color\": …, \"scale\": …, \"tolerance\": …}",
-                )
+                expecting(f, Expected::Answer)
             }
             fn visit_seq<A: SeqAccess<'de>>(self, seq: A) -> Result<AnswerSpec, A::Error> {
                 Triple::deserialize(de::value::SeqAccessDeserializer::new(seq))
@@ -600,7 +607,7 @@ impl<'de> Deserialize<'de> for MaterialRef {
         impl<'de> Visitor<'de> for V {
             type Value = MaterialRef;
             fn expecting(&self, f: &mut fmt::Formatter) -> fmt::Result {
-                f.write_str("the name of a material in \"materials\", or a material object")
+                expecting(f, Expected::MaterialRef)
             }
             fn visit_str<E: de::Error>(self, s: &str) -> Result<MaterialRef, E> {
                 Ok(MaterialRef::Name(s.to_owned()))

@@ -28,6 +28,9 @@ use std::fmt;
 use serde::de::{self, Visitor};
 use serde::Deserializer;
 
+use super::syntax::{Expected, Quoted};
+use crate::text::{Lang, Message};
+
 /// Declares a family of kinds (lights, surfaces). The table, in this order:
 ///
 /// ```text
@@ -43,6 +46,7 @@ use serde::Deserializer;
 ///     /// description in the schema (optional), schemars attributes (optional)
 ///     #[schemars(range(min = 0, max = 2))]
 ///     falloff: f64 as u8 => "what it gives, for the message when it is missing",
+///                           "o que ele dá, em português",
 ///     …                                  // `as T`: the schema's type, when not the parsed one
 /// }
 /// kinds {
@@ -65,7 +69,7 @@ macro_rules! kinds {
         fields {
             $(
                 $(#[$field_meta:meta])*
-                $field:ident: $ty:ty $(as $schema_ty:ty)? => $purpose:literal,
+                $field:ident: $ty:ty $(as $schema_ty:ty)? => $purpose:literal, $purpose_pt:literal,
             )*
         }
         kinds {
@@ -76,7 +80,8 @@ macro_rules! kinds {
         }
     ) => {
         $crate::problem::kinds::kinds!(
-            @spec [$(#[$spec_doc])*] $Spec $Kind $optional [$($field: $ty => $purpose,)*]
+            @spec [$(#[$spec_doc])*] $Spec $Kind $optional
+            [$($field: $ty => $purpose, $purpose_pt,)*]
         );
 
         $(#[$kind_doc])*
@@ -166,7 +171,7 @@ macro_rules! kinds {
     (
         @spec [$(#[$spec_doc:meta])*] $Spec:ident $Kind:ident
         { $($(#[$opt_meta:meta])* $opt:ident: $opt_ty:ty),* $(,)? }
-        [$($field:ident: $ty:ty => $purpose:literal,)*]
+        [$($field:ident: $ty:ty => $purpose:literal, $purpose_pt:literal,)*]
     ) => {
         $(#[$spec_doc])*
         #[derive(Debug, Clone, ::serde::Deserialize)]
@@ -212,12 +217,15 @@ macro_rules! kinds {
                     .flatten()
             }
 
-            /// What a field of the table gives, to say why it is needed.
-            pub fn purpose(name: &str) -> Option<&'static str> {
-                match name {
-                    $(stringify!($field) => Some($purpose),)*
-                    _ => None,
-                }
+            /// What a field of the table gives, to say why it is needed, in both languages.
+            pub fn purpose(name: &str) -> Option<$crate::problem::syntax::Purpose> {
+                let (en, pt) = match name {
+                    $(stringify!($field) => ($purpose, $purpose_pt),)*
+                    _ => return None,
+                };
+                Some($crate::problem::syntax::Purpose::Table {
+                    text: $crate::problem::syntax::Bilingual { en, pt },
+                })
             }
         }
     };
@@ -284,8 +292,11 @@ pub(crate) fn type_word<'de, D: Deserializer<'de>, T: Copy + 'static>(
     impl<'de, T: Copy> Visitor<'de> for V<T> {
         type Value = T;
         fn expecting(&self, f: &mut fmt::Formatter) -> fmt::Result {
-            let quoted: Vec<String> = self.names.iter().map(|n| format!("\"{n}\"")).collect();
-            write!(f, "one of the words {}", quoted.join(", "))
+            let words = self.names.iter().map(|n| (*n).to_owned()).collect();
+            let expected = Expected::Words {
+                words: Quoted(words),
+            };
+            f.write_str(&expected.text(Lang::En))
         }
         fn visit_str<E: de::Error>(self, s: &str) -> Result<T, E> {
             match self.names.iter().position(|n| *n == s) {

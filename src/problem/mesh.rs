@@ -10,14 +10,11 @@ use std::path::Path;
 use crate::core::vector::normalize;
 use crate::core::{Real, Vector, V3};
 use crate::geometry::Triangle;
-use crate::report::messages::both;
+use crate::text::Echo;
 
-/// Why a mesh could not be used: a message and how to fix it.
-#[derive(Debug)]
-pub struct MeshError {
-    pub message: String,
-    pub fix: String,
-}
+pub use super::mesh_faults::{MeshError, MeshFault};
+use super::mesh_faults::{ObjError, Object, OrF64};
+use super::reading::{Cause, Input, Limit, ReadFix};
 
 /// The largest OBJ file read: 256 MiB (a million triangles are about 60 MB of text).
 pub const MAX_MESH_BYTES: u64 = 256 << 20;
@@ -53,41 +50,10 @@ impl<R: Real> Faces<R> {
     }
 }
 
-/// A mistake on line `line` of the OBJ file.
-/// The fix for a vertex that is not finite in `R`: f32's range is the one a coordinate can
-/// leave while finite in f64, so only in f32 is the other precision a way out.
-fn finite_fix<R: Real>() -> &'static str {
-    if R::NAME == "f32" {
-        "give finite coordinates (or use --precision f64)"
-    } else {
-        "give finite coordinates"
-    }
-}
-
-fn at_line(line: usize, message: String, fix: &str) -> MeshError {
-    MeshError {
-        message: format!("line {line}: {message}"),
-        fix: fix.into(),
-    }
-}
-
-/// The fix for a vertex normal that is zero (or too small) in `R`, in both languages.
-fn zero_normal_fix<R: Real>() -> String {
-    let (en, pt) = if R::NAME == "f32" {
-        (" (or use --precision f64)", " (ou use --precision f64)")
-    } else {
-        ("", "")
-    };
-    both(
-        &format!(
-            "give each `vn` a direction of nonzero length{en}, or remove the mesh's `vn` lines \
-             and the faces' `//n` parts for flat shading"
-        ),
-        &format!(
-            "dê a cada `vn` uma direção de comprimento não nulo{pt}, ou remova as linhas `vn` \
-             da malha e as partes `//n` das faces para um sombreamento plano"
-        ),
-    )
+/// Whether precision `R` is f32, whose range a coordinate can leave while finite in f64: only
+/// there is the other precision a way out.
+fn or_f64<R: Real>() -> OrF64 {
+    OrF64(R::NAME == "f32")
 }
 
 /// The first pass: every vertex is three numbers finite in `R`, every vertex normal three
@@ -106,7 +72,9 @@ fn scan<R: Real>(text: &str) -> Result<Faces<R>, MeshError> {
     for (i, line) in text.lines().enumerate() {
         let n = i + 1;
         let mut words = line.split_whitespace();
-        let shown = || crate::text::number::shorten(line.trim(), 60);
+        let v = || Echo::new(line.trim(), 60);
+        let refuse = |fault: MeshFault| Err(MeshError::at_line(n, fault));
+        let precision = || R::NAME.to_owned();
         match words.next() {
             Some("v") => {
                 let xyz: Vec<&str> = words.by_ref().take(3).collect();
@@ -114,24 +82,17 @@ fn scan<R: Real>(text: &str) -> Result<Faces<R>, MeshError> {
                     .then(|| xyz.iter().map(|w| w.parse::<f64>().ok()).collect())
                     .flatten();
                 let Some(numbers) = numbers else {
-                    return Err(at_line(
-                        n,
-                        format!(
-                            "the vertex \"{}\" is not `v x y z` (three numbers)",
-                            shown()
-                        ),
-                        "write each vertex as `v x y z`",
-                    ));
+                    return refuse(MeshFault::VertexNotXyz { v: v() });
                 };
                 if numbers
                     .iter()
                     .any(|&x| !(x.is_finite() && R::from_f64(x).is_finite()))
                 {
-                    return Err(at_line(
-                        n,
-                        format!("the vertex \"{}\" is not finite in {}", shown(), R::NAME),
-                        finite_fix::<R>(),
-                    ));
+                    return refuse(MeshFault::VertexNotFinite {
+                        v: v(),
+                        precision: precision(),
+                        or_f64: or_f64::<R>(),
+                    });
                 }
                 vertices += 1;
             }
@@ -141,97 +102,39 @@ fn scan<R: Real>(text: &str) -> Result<Faces<R>, MeshError> {
                     .then(|| xyz.iter().map(|w| w.parse::<f64>().ok()).collect())
                     .flatten();
                 let Some(numbers) = numbers else {
-                    return Err(at_line(
-                        n,
-                        both(
-                            &format!(
-                                "the vertex normal \"{}\" is not `vn x y z` (three numbers)",
-                                shown()
-                            ),
-                            &format!(
-                                "a normal de vértice \"{}\" não é `vn x y z` (três números)",
-                                shown()
-                            ),
-                        ),
-                        &both(
-                            "write each vertex normal as `vn x y z`",
-                            "escreva cada normal de vértice como `vn x y z`",
-                        ),
-                    ));
+                    return refuse(MeshFault::NormalNotXyz { v: v() });
                 };
                 if numbers
                     .iter()
                     .any(|&x| !(x.is_finite() && R::from_f64(x).is_finite()))
                 {
-                    return Err(at_line(
-                        n,
-                        both(
-                            &format!(
-                                "the vertex normal \"{}\" is not finite in {}",
-                                shown(),
-                                R::NAME
-                            ),
-                            &format!(
-                                "a normal de vértice \"{}\" não é finita em {}",
-                                shown(),
-                                R::NAME
-                            ),
-                        ),
-                        &both(
-                            "give each `vn` three finite numbers, a direction such as `vn 0 1 0`",
-                            "dê a cada `vn` três números finitos, uma direção como `vn 0 1 0`",
-                        ),
-                    ));
+                    return refuse(MeshFault::NormalNotFinite {
+                        v: v(),
+                        precision: precision(),
+                    });
                 }
-                let v = V3::<R>::new(
+                let normal = V3::<R>::new(
                     R::from_f64(numbers[0]),
                     R::from_f64(numbers[1]),
                     R::from_f64(numbers[2]),
                 );
-                let Some(unit) = normalize::<R>(v) else {
-                    return Err(at_line(
-                        n,
-                        both(
-                            &format!(
-                                "the vertex normal \"{}\" has length zero in {}, so it has no \
-                                 direction",
-                                shown(),
-                                R::NAME
-                            ),
-                            &format!(
-                                "a normal de vértice \"{}\" tem comprimento zero em {}, então \
-                                 não tem direção",
-                                shown(),
-                                R::NAME
-                            ),
-                        ),
-                        &zero_normal_fix::<R>(),
-                    ));
+                let Some(unit) = normalize::<R>(normal) else {
+                    return refuse(MeshFault::NormalZero {
+                        v: v(),
+                        precision: precision(),
+                        or_f64: or_f64::<R>(),
+                    });
                 };
                 faces.normals.push(unit.unit);
             }
-            Some("l") => {
-                return Err(at_line(
-                    n,
-                    format!(
-                        "\"{}\" is a line element, which has no surface to hit",
-                        shown()
-                    ),
-                    "remove the `l` lines (faces are `f i j k`)",
-                ))
-            }
+            Some("l") => return refuse(MeshFault::LineElement { v: v() }),
             Some("f") => {
                 let refs: Vec<&str> = words.collect();
                 if refs.len() < 3 {
-                    return Err(at_line(
-                        n,
-                        format!(
-                            "the face \"{}\" has {} vertices, and a face needs at least 3",
-                            shown(),
-                            refs.len()
-                        ),
-                        "give each face three or more vertices (`f i j k`)",
-                    ));
+                    return refuse(MeshFault::FewVertices {
+                        v: v(),
+                        n: refs.len(),
+                    });
                 }
                 // Each vertex's normal index (`v//vn`, `v/vt/vn`), when it gives one.
                 let mut vn: Vec<Option<u32>> = Vec::with_capacity(refs.len());
@@ -247,84 +150,38 @@ fn scan<R: Real>(text: &str) -> Result<Faces<R>, MeshError> {
                         .map(|k| if k < 0 { known + 1 + k } else { k })
                         .filter(|&k| k >= 1 && k <= known);
                     let Some(k) = resolved else {
-                        return Err(at_line(
-                            n,
-                            both(
-                                &format!(
-                                    "the face \"{}\" refers to vertex normal {word} (in {r}), \
-                                     and {known} vertex normals come before it",
-                                    shown()
-                                ),
-                                &format!(
-                                    "a face \"{}\" se refere à normal de vértice {word} (em \
-                                     {r}), e {known} normais de vértice vêm antes dela",
-                                    shown()
-                                ),
-                            ),
-                            &both(
-                                "correct the face's normal indices (the third number of \
-                                 `v/vt/vn`; 1 is the first `vn` line)",
-                                "corrija os índices de normais da face (o terceiro número de \
-                                 `v/vt/vn`; 1 é a primeira linha `vn`)",
-                            ),
-                        ));
+                        return refuse(MeshFault::NormalIndex {
+                            v: v(),
+                            word: word.to_owned(),
+                            r: (*r).to_owned(),
+                            known,
+                        });
                     };
                     vn.push(Some((k - 1) as u32));
                 }
                 let given = vn.iter().flatten().count();
                 if given != 0 && given != vn.len() {
-                    return Err(at_line(
-                        n,
-                        both(
-                            &format!(
-                                "the face \"{}\" gives vertex normals for {given} of its {} \
-                                 vertices; a face is smooth with a normal at every corner, or \
-                                 flat with none",
-                                shown(),
-                                vn.len()
-                            ),
-                            &format!(
-                                "a face \"{}\" dá normais de vértice para {given} de seus {} \
-                                 vértices; uma face é suave com uma normal em cada vértice, ou \
-                                 plana sem nenhuma",
-                                shown(),
-                                vn.len()
-                            ),
-                        ),
-                        &both(
-                            "give every vertex of the face a normal (`v//vn`), or none (`v`)",
-                            "dê uma normal a cada vértice da face (`v//vn`), ou a nenhum (`v`)",
-                        ),
-                    ));
+                    return refuse(MeshFault::PartialNormals {
+                        v: v(),
+                        given,
+                        n: vn.len(),
+                    });
                 }
                 for r in &refs {
                     let index = r.split('/').next().and_then(|v| v.parse::<i64>().ok());
                     // Negative indices count back from the last vertex so far (-1 is the last).
                     let resolved = index.map(|k| if k < 0 { vertices as i64 + 1 + k } else { k });
                     if !resolved.is_some_and(|k| k >= 1 && k <= vertices as i64) {
-                        return Err(at_line(
-                            n,
-                            format!(
-                                "the face \"{}\" refers to vertex {r}, and {vertices} vertices \
-                                 come before it",
-                                shown()
-                            ),
-                            "correct the face's vertex indices (1 is the first vertex)",
-                        ));
+                        return refuse(MeshFault::VertexIndex {
+                            v: v(),
+                            r: (*r).to_owned(),
+                            vertices,
+                        });
                     }
                 }
                 triangles += refs.len() - 2;
                 if triangles > MAX_TRIANGLES {
-                    return Err(at_line(
-                        n,
-                        format!("the mesh has more than {MAX_TRIANGLES} triangles"),
-                        &both(
-                            "give a mesh of at most 1000000 triangles (simplify it, for example \
-                             with Blender's Decimate modifier)",
-                            "dê uma malha de no máximo 1000000 triângulos (simplifique-a, por \
-                             exemplo com o modificador Decimate do Blender)",
-                        ),
-                    ));
+                    return refuse(MeshFault::TooManyTriangles { max: MAX_TRIANGLES });
                 }
                 faces.lines.push((n, refs.len() - 2));
                 // The fan tobj splits the face into: (0, i, i + 1).
@@ -346,15 +203,14 @@ fn scan<R: Real>(text: &str) -> Result<Faces<R>, MeshError> {
 /// Reads the triangles of an OBJ file, in the file's order; a face with vertex normals gives
 /// smooth triangles ([`Triangle::normals`]).
 pub fn load_obj<R: Real>(path: &Path) -> Result<Vec<Triangle<R>>, MeshError> {
-    let bytes = super::read_limited(path, MAX_MESH_BYTES, "a mesh").map_err(|e| MeshError {
-        message: format!("cannot be read: {e}"),
-        fix: if super::read_fix(&e).starts_with("check") {
-            "check the path; it is relative to the scene file's folder (to the working folder \
-             for a scene read from standard input)"
-                .into()
-        } else {
-            super::read_fix(&e).into()
-        },
+    let bytes = super::read_limited(path, MAX_MESH_BYTES, Input::Mesh).map_err(|e| {
+        MeshError::of(MeshFault::Unreadable {
+            cause: Cause::of(&e),
+            fix: match ReadFix::of(&e) {
+                ReadFix::CheckPath => ReadFix::CheckMeshPath,
+                fix => fix,
+            },
+        })
     })?;
     let text = String::from_utf8_lossy(&bytes);
     let faces = scan::<R>(&text)?;
@@ -365,25 +221,27 @@ pub fn load_obj<R: Real>(path: &Path) -> Result<Vec<Triangle<R>>, MeshError> {
     };
     // The material loader is never asked to read anything: `.mtl` files are ignored.
     let (models, _) =
-        tobj::load_obj_buf(&mut text.as_bytes(), &options, |_| Ok(Default::default())).map_err(
-            |e| MeshError {
-                message: format!("is not a valid Wavefront OBJ file: {e}"),
-                fix: "give an OBJ file with `v x y z` vertices and `f i j k` faces".into(),
-            },
-        )?;
+        tobj::load_obj_buf(&mut text.as_bytes(), &options, |_| Ok(Default::default()))
+            .map_err(|e| MeshError::of(MeshFault::NotObj { error: ObjError(e) }))?;
     let mut out = Vec::new();
     let count: usize = faces.lines.iter().map(|&(_, n)| n).sum();
-    out.try_reserve_exact(count).map_err(|_| MeshError {
-        message: super::out_of_memory(count.saturating_mul(std::mem::size_of::<Triangle<R>>())),
-        fix: "give a smaller mesh, or free memory".into(),
+    out.try_reserve_exact(count).map_err(|_| {
+        MeshError::of(MeshFault::OutOfMemory {
+            memory: Limit::Memory {
+                needs: super::reading::Bytes(
+                    count.saturating_mul(std::mem::size_of::<Triangle<R>>()),
+                ),
+            },
+        })
     })?;
     for model in &models {
         let pos = &model.mesh.positions;
         let corner = |i: u32| -> Result<V3<R>, MeshError> {
             let k = 3 * i as usize;
-            let xyz = pos.get(k..k + 3).ok_or_else(|| MeshError {
-                message: format!("a face refers to vertex {} which does not exist", i + 1),
-                fix: "correct the face's vertex indices".into(),
+            let xyz = pos.get(k..k + 3).ok_or_else(|| {
+                MeshError::of(MeshFault::MissingVertex {
+                    index: i as usize + 1,
+                })
             })?;
             let v = V3::<R>::new(
                 R::from_f64(xyz[0]),
@@ -391,10 +249,11 @@ pub fn load_obj<R: Real>(path: &Path) -> Result<Vec<Triangle<R>>, MeshError> {
                 R::from_f64(xyz[2]),
             );
             if !crate::core::Vector::is_finite(v) {
-                return Err(MeshError {
-                    message: format!("vertex {} is not finite in {}", i + 1, R::NAME),
-                    fix: finite_fix::<R>().into(),
-                });
+                return Err(MeshError::of(MeshFault::CornerNotFinite {
+                    index: i as usize + 1,
+                    precision: R::NAME.to_owned(),
+                    or_f64: or_f64::<R>(),
+                }));
             }
             Ok(v)
         };
@@ -412,29 +271,24 @@ pub fn load_obj<R: Real>(path: &Path) -> Result<Vec<Triangle<R>>, MeshError> {
             if t.normal().is_none() {
                 // The object's name when the file gives one (`o name`); tobj's placeholder for
                 // a file without `o` lines is not the user's word.
-                let object = match model.name.as_str() {
-                    "unnamed_object" | "" => String::new(),
-                    name => format!(" (object \"{name}\")"),
-                };
-                return Err(MeshError {
-                    message: format!(
-                        "line {}: the face's triangle {}{object} is degenerate in {}: its corners \
-                         lie on one line",
-                        faces.line_of(out.len()),
-                        out.len(),
-                        R::NAME
-                    ),
-                    fix: "remove the degenerate face from the OBJ file".into(),
+                let object = Object(match model.name.as_str() {
+                    "unnamed_object" | "" => None,
+                    name => Some(name.to_owned()),
                 });
+                return Err(MeshError::at_line(
+                    faces.line_of(out.len()),
+                    MeshFault::Degenerate {
+                        k: out.len(),
+                        object,
+                        precision: R::NAME.to_owned(),
+                    },
+                ));
             }
             out.push(t);
         }
     }
     if out.is_empty() {
-        return Err(MeshError {
-            message: "has no faces".into(),
-            fix: "give an OBJ file with at least one face (`f i j k`)".into(),
-        });
+        return Err(MeshError::of(MeshFault::NoFaces));
     }
     Ok(out)
 }
@@ -442,6 +296,7 @@ pub fn load_obj<R: Real>(path: &Path) -> Result<Vec<Triangle<R>>, MeshError> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::text::{Fault, Lang};
 
     /// The error message of scanning `text` in precision `R`.
     fn refused<R: Real>(text: &str) -> MeshError {
@@ -473,41 +328,49 @@ mod tests {
     #[test]
     fn bad_vertex_normals_are_refused_naming_the_line_and_the_fix() {
         let zero = refused::<f64>(&format!("{CORNERS}vn 0 0 0\nf 1//1 2//1 3//1\n"));
-        assert!(zero.message.starts_with("line 5: "), "{}", zero.message);
-        assert!(zero.message.contains("length zero"), "{}", zero.message);
-        assert!(zero.fix.contains("nonzero length"), "{}", zero.fix);
+        assert!(zero.message().starts_with("line 5: "), "{}", zero.message());
+        assert!(zero.message().contains("length zero"), "{}", zero.message());
+        assert!(
+            zero.fix(Lang::En).contains("nonzero length"),
+            "{}",
+            zero.fix(Lang::En)
+        );
         let nan = refused::<f64>(&format!("{CORNERS}vn nan 0 1\n"));
         assert!(nan
-            .message
+            .message()
             .contains("line 5: the vertex normal \"vn nan 0 1\" is not finite"));
         let inf = refused::<f64>(&format!("{CORNERS}vn 0 inf 1\n"));
         assert!(
-            inf.message.contains("is not finite in f64"),
+            inf.message().contains("is not finite in f64"),
             "{}",
-            inf.message
+            inf.message()
         );
         let short = refused::<f64>(&format!("{CORNERS}vn 0 1\n"));
         assert!(
-            short.message.contains("is not `vn x y z`"),
+            short.message().contains("is not `vn x y z`"),
             "{}",
-            short.message
+            short.message()
         );
         // Finite in f64 but not in f32; nonzero in f64 but zero in f32.
         assert!(scan::<f64>(&format!("{CORNERS}vn 0 1e39 1\n")).is_ok());
         let big = refused::<f32>(&format!("{CORNERS}vn 0 1e39 1\n"));
         assert!(
-            big.message.contains("is not finite in f32"),
+            big.message().contains("is not finite in f32"),
             "{}",
-            big.message
+            big.message()
         );
         assert!(scan::<f64>(&format!("{CORNERS}vn 0 1e-50 0\n")).is_ok());
         let tiny = refused::<f32>(&format!("{CORNERS}vn 0 1e-50 0\n"));
         assert!(
-            tiny.message.contains("length zero in f32"),
+            tiny.message().contains("length zero in f32"),
             "{}",
-            tiny.message
+            tiny.message()
         );
-        assert!(tiny.fix.contains("--precision f64"), "{}", tiny.fix);
+        assert!(
+            tiny.fix(Lang::En).contains("--precision f64"),
+            "{}",
+            tiny.fix(Lang::En)
+        );
     }
 
     #[test]
@@ -515,28 +378,38 @@ mod tests {
         let missing = refused::<f64>(&format!("{CORNERS}vn 0 0 1\nf 1//1 2//2 3//1\n"));
         assert!(
             missing
-                .message
+                .message()
                 .contains("line 6: the face \"f 1//1 2//2 3//1\" refers to vertex normal 2"),
             "{}",
-            missing.message
+            missing.message()
         );
-        assert!(missing.message.contains("1 vertex normals come before it"));
+        assert!(missing
+            .message()
+            .contains("1 vertex normals come before it"));
         let ahead = refused::<f64>(&format!("{CORNERS}f 1//1 2//1 3//1\nvn 0 0 1\n"));
-        assert!(ahead.message.starts_with("line 5: "), "{}", ahead.message);
+        assert!(
+            ahead.message().starts_with("line 5: "),
+            "{}",
+            ahead.message()
+        );
         let partial = refused::<f64>(&format!("{CORNERS}vn 0 0 1\nf 1//1 2 3//1\n"));
         assert!(
             partial
-                .message
+                .message()
                 .contains("gives vertex normals for 2 of its 3 vertices"),
             "{}",
-            partial.message
+            partial.message()
         );
         assert!(
-            partial.message.starts_with("line 6: "),
+            partial.message().starts_with("line 6: "),
             "{}",
-            partial.message
+            partial.message()
         );
-        assert!(partial.fix.contains("or none"), "{}", partial.fix);
+        assert!(
+            partial.fix(Lang::En).contains("or none"),
+            "{}",
+            partial.fix(Lang::En)
+        );
         // A texture coordinate without a normal is not a normal.
         let faces = scan::<f64>(&format!("{CORNERS}f 1/1 2/1 3/1\n")).unwrap();
         assert_eq!(faces.triangle_normals, vec![None]);

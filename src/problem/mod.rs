@@ -10,7 +10,11 @@ pub(crate) mod field;
 pub mod format;
 pub(crate) mod kinds;
 pub(crate) mod mesh;
+pub(crate) mod mesh_faults;
 pub(crate) mod model;
+pub(crate) mod reading;
+pub(crate) mod syntax;
+pub use syntax::JsonError;
 pub mod validate;
 pub(crate) mod warnings;
 
@@ -26,9 +30,12 @@ pub use model::{
 pub use warnings::{Warning, WarningKind};
 
 use crate::core::Real;
-use crate::report::messages::both;
+use crate::text::{Lang, Message};
 use format::{LightSpec, LightType, SurfaceSpec, SurfaceType};
+pub use reading::{Counted, Input, ReadFix, TooLarge, TooMany};
+use reading::{Limit, SourceFault};
 use serde::Deserialize;
+use syntax::{Expected, JsonKind, Parse, Purpose, SyntaxFault, SyntaxFix, LONGEST_NAME};
 
 /// Transitional: a fault written as English text (see [`error::Untranslated`]).
 pub(crate) fn untranslated(message: impl Into<String>, fix: impl Into<String>) -> error::FaultBox {
@@ -42,42 +49,15 @@ pub(crate) fn untranslated(message: impl Into<String>, fix: impl Into<String>) -
 /// chapter's exercise is 1 kB).
 pub const MAX_PROBLEM_BYTES: u64 = 64 << 20;
 
-/// A file over the size phong reads for its kind, the error inside an [`std::io::Error`].
-#[derive(Debug, thiserror::Error)]
-#[error("it is larger than {} MiB, the most phong reads for {what}", .limit >> 20)]
-pub struct TooLarge {
-    /// The limit, in bytes.
-    pub limit: u64,
-    /// What the file is ("a problem file").
-    pub what: &'static str,
-}
-
-/// An input of more items than phong takes (`rows` of a submissions file), the error inside an
-/// [`std::io::Error`].
-#[derive(Debug, thiserror::Error)]
-#[error("it has more than {limit} {what}, the most phong takes")]
-pub struct TooMany {
-    /// The limit.
-    pub limit: u64,
-    /// What is counted ("rows").
-    pub what: &'static str,
-}
-
-/// The fix for an input that cannot be read: a smaller file when it is too large, else the
-/// path.
-pub fn read_fix(e: &std::io::Error) -> &'static str {
-    if e.get_ref()
-        .is_some_and(|inner| inner.is::<TooLarge>() || inner.is::<TooMany>())
-    {
-        "give a smaller file (the limits are in README, \"Limits and safety\")"
-    } else {
-        "check the path, and that the file exists and is readable"
-    }
+/// The fix for an input that cannot be read, in English (for the messages not yet typed): a
+/// smaller file when it is too large, else the path ([`ReadFix`]).
+pub fn read_fix(e: &std::io::Error) -> String {
+    ReadFix::of(e).text(Lang::En)
 }
 
 /// The bytes of the file at `path` (standard input for `-`), refusing a file of more than
 /// `limit` bytes with [`TooLarge`] (`/dev/zero` given as a file ends there, not out of memory).
-pub fn read_limited(path: &Path, limit: u64, what: &'static str) -> std::io::Result<Vec<u8>> {
+pub fn read_limited(path: &Path, limit: u64, what: Input) -> std::io::Result<Vec<u8>> {
     use std::io::Read;
     let mut bytes = Vec::new();
     if path.as_os_str() == "-" {
@@ -104,24 +84,20 @@ pub fn read_limited(path: &Path, limit: u64, what: &'static str) -> std::io::Res
     Ok(bytes)
 }
 
-/// "out of memory: this needs about 2.1 GB" (or MB), for an allocation of `bytes` refused.
+/// "out of memory: this needs about 2.1 GB" (or MB), for an allocation of `bytes` refused, in
+/// English (for the messages not yet typed; [`Limit::Memory`] is the value).
 pub fn out_of_memory(bytes: usize) -> String {
-    let b = bytes as f64;
-    if b >= 1e9 {
-        format!("out of memory: this needs about {:.1} GB", b / 1e9)
-    } else {
-        format!(
-            "out of memory: this needs about {:.0} MB",
-            (b / 1e6).max(1.0)
-        )
+    Limit::Memory {
+        needs: reading::Bytes(bytes),
     }
+    .text(Lang::En)
 }
 
 /// Reads and parses a problem file (no validation). A leading byte order mark is skipped, as
 /// editors on Windows write one.
 /// A file `-` is standard input.
 pub(crate) fn parse_file(path: &Path) -> Result<ProblemFile, ProblemError> {
-    let bytes = read_limited(path, MAX_PROBLEM_BYTES, "a problem file").map_err(|source| {
+    let bytes = read_limited(path, MAX_PROBLEM_BYTES, Input::ProblemFile).map_err(|source| {
         ProblemError::Read {
             path: path.to_owned(),
             source,
@@ -132,21 +108,38 @@ pub(crate) fn parse_file(path: &Path) -> Result<ProblemFile, ProblemError> {
     parse_str(path, text.strip_prefix('\u{feff}').unwrap_or(&text))
 }
 
+/// A syntax error at `line`:`column` of the file at `path`.
+fn syntax(
+    path: &Path,
+    line: usize,
+    column: usize,
+    field: Option<String>,
+    what: Parse,
+    fix: SyntaxFix,
+) -> ProblemError {
+    ProblemError::Syntax {
+        path: path.to_owned(),
+        line,
+        column,
+        field,
+        fault: std::sync::Arc::new(SyntaxFault { what, fix }),
+    }
+}
+
 /// A file that is not UTF-8 text: the line and column (in bytes) of its first bad byte.
 fn not_utf8(path: &Path, bytes: &[u8], e: std::str::Utf8Error) -> ProblemError {
     let good = &bytes[..e.valid_up_to()];
     let line_start = good.iter().rposition(|&b| b == b'\n').map_or(0, |i| i + 1);
-    ProblemError::Syntax {
-        path: path.to_owned(),
-        line: 1 + good.iter().filter(|&&b| b == b'\n').count(),
-        column: 1 + good.len() - line_start,
-        field: None,
-        fault: untranslated(
-            format!("byte 0x{:02X} is not UTF-8 text", bytes[e.valid_up_to()]),
-            "save the file as UTF-8 (JSON is UTF-8 text); the byte may come from another \
-              encoding, such as Latin-1, or from a file that is not a problem file",
-        ),
-    }
+    syntax(
+        path,
+        1 + good.iter().filter(|&&b| b == b'\n').count(),
+        1 + good.len() - line_start,
+        None,
+        Parse::NotUtf8 {
+            byte: syntax::Hex(bytes[e.valid_up_to()]),
+        },
+        SyntaxFix::Utf8,
+    )
 }
 
 /// Parses the text of a problem file; `path` is only used in error messages.
@@ -165,7 +158,8 @@ pub fn parse_str(path: &Path, source: &str) -> Result<ProblemFile, ProblemError>
     parse_tracked(path, source)
 }
 
-/// [`parse_str`] with the field path tracked, for the error of a file that failed.
+/// [`parse_str`] with the field path tracked, for the error of a file that failed. serde's
+/// message is read into a value ([`Parse::read`]) here, once.
 fn parse_tracked(path: &Path, source: &str) -> Result<ProblemFile, ProblemError> {
     let mut de = serde_json::Deserializer::from_str(source);
     let result = serde_path_to_error::deserialize(&mut de)
@@ -173,14 +167,14 @@ fn parse_tracked(path: &Path, source: &str) -> Result<ProblemFile, ProblemError>
         .and_then(|f| de.end().map(|()| f).map_err(|e| (String::new(), e)));
     result.map_err(|(field, inner)| {
         let text = inner.to_string();
-        let message = shorten_quoted(
+        let what = Parse::read(
             text.rsplit_once(" at line ")
                 .map_or(text.as_str(), |(m, _)| m),
         );
-        let fix = syntax_fix(&inner, &message);
+        let fix = syntax_fix(&inner, &what);
         let mut field = (!field.is_empty()).then_some(field);
-        let comma = decimal_comma_at(source, inner.line(), inner.column(), &message);
-        let (message, fix) = if let Some(c) = comma {
+        let comma = decimal_comma_at(source, inner.line(), inner.column(), &what);
+        let (what, fix) = if let Some(c) = comma {
             if let Some(key) = c.key {
                 field = Some(match field {
                     Some(f) if !f.ends_with(&key) => format!("{f}.{key}"),
@@ -188,34 +182,27 @@ fn parse_tracked(path: &Path, source: &str) -> Result<ProblemFile, ProblemError>
                     None => key,
                 });
             }
-            (c.message, c.fix)
-        } else if message == "trailing characters" && field.is_some() {
+            (c.what, c.fix)
+        } else if what == Parse::TrailingCharacters && field.is_some() {
             // serde_json's words for an array longer than the [x, y, z] it was read into.
-            (
-                "too many elements: expected an array of length 3".to_owned(),
-                "give exactly three numbers [x, y, z] (a triangle: three vertices)".to_owned(),
-            )
+            (Parse::TooManyElements, SyntaxFix::ThreeNumbers)
         } else if let Some(word) = non_number_at(source, inner.line(), inner.column()) {
             (
-                message,
-                format!("JSON has no {word}: every number must be finite, such as 0 or 1e300"),
+                what,
+                SyntaxFix::NotFinite {
+                    word: word.to_owned(),
+                },
             )
-        } else if let Some(fix) = string_for_vector(&message) {
-            (message, fix)
+        } else if let Some(fix) = string_for_vector(&what) {
+            (what, fix)
         } else if let Some(fix) = fraction_at(source, inner.line(), inner.column()) {
-            (message, fix)
-        } else if let Some(fix) = word_for_number(&message, field.as_deref()) {
-            (message, fix)
+            (what, fix)
+        } else if let Some(fix) = word_for_number(&what, field.as_deref()) {
+            (what, fix)
         } else {
-            (message, fix)
+            (what, fix)
         };
-        ProblemError::Syntax {
-            path: path.to_owned(),
-            line: inner.line(),
-            column: inner.column(),
-            field,
-            fault: untranslated(message, fix),
-        }
+        syntax(path, inner.line(), inner.column(), field, what, fix)
     })
 }
 
@@ -227,53 +214,29 @@ fn not_an_object(path: &Path, text: &str) -> Result<(), ProblemError> {
     };
     let rest = &text[at..];
     let kind = match rest.as_bytes()[0] {
-        b'[' => "an array [ … ]",
-        b'"' => "a string",
-        b'-' | b'0'..=b'9' => "a number",
-        _ if rest.starts_with("true") || rest.starts_with("false") => "a boolean",
-        _ if rest.starts_with("null") => "null",
+        b'[' => JsonKind::Array,
+        b'"' => JsonKind::Text,
+        b'-' | b'0'..=b'9' => JsonKind::Number,
+        _ if rest.starts_with("true") || rest.starts_with("false") => JsonKind::Boolean,
+        _ if rest.starts_with("null") => JsonKind::Null,
         // `{`, or not JSON at all: the parser says what it finds.
         _ => return Ok(()),
     };
     let before = &text[..at];
     let line_start = before.rfind('\n').map_or(0, |i| i + 1);
-    Err(ProblemError::Syntax {
-        path: path.to_owned(),
-        line: 1 + before.matches('\n').count(),
-        column: 1 + at - line_start,
-        field: None,
-        fault: untranslated(
-            format!("the file is {kind}, and a problem file is one JSON object {{ … }}"),
-            "write the problem's fields in one object, {\"lights\": [ … ], \"point\": { … }, …}; \
-              several problems go in several files (`phong schema` lists every field)",
-        ),
-    })
+    Err(syntax(
+        path,
+        1 + before.matches('\n').count(),
+        1 + at - line_start,
+        None,
+        Parse::NotAnObject { kind },
+        SyntaxFix::OneObject,
+    ))
 }
 
 /// The field where the parser stopped, as `lights[1].falloff`; empty at the top level. (The
 /// path's own Display writes "." for the top level and "?" for a position it does not know,
 /// and a field may itself be named "a.?".)
-/// The longest name (a key, a `type` word) a message repeats in full; a longer one is shown
-/// shortened, with its length, so that a message stays a few lines whatever was written.
-const LONGEST_NAME: usize = 60;
-
-/// `message` with each name it quotes between backticks (serde's `unknown field `…``, `unknown
-/// variant `…``) shortened to [`LONGEST_NAME`].
-fn shorten_quoted(message: &str) -> String {
-    let mut out = String::with_capacity(message.len().min(1024));
-    for (i, part) in message.split('`').enumerate() {
-        if i > 0 {
-            out.push('`');
-        }
-        if i % 2 == 1 {
-            out.push_str(&crate::text::number::shorten(part, LONGEST_NAME));
-        } else {
-            out.push_str(part);
-        }
-    }
-    out
-}
-
 fn field_path(path: &serde_path_to_error::Path) -> String {
     use serde_path_to_error::Segment;
     let mut out = String::new();
@@ -312,9 +275,8 @@ fn non_number_at(source: &str, line: usize, column: usize) -> Option<&str> {
 }
 
 /// A fraction such as `3/5` at (or just before) the error's position: JSON has none. The fix
-/// gives the decimal, in English and in Portuguese (a parse error is written before any
-/// `--lang` applies).
-fn fraction_at(source: &str, line: usize, column: usize) -> Option<String> {
+/// gives the decimal.
+fn fraction_at(source: &str, line: usize, column: usize) -> Option<SyntaxFix> {
     let text = source.lines().nth(line.checked_sub(1)?)?;
     let bytes = text.as_bytes();
     let at = column.checked_sub(1)?.min(bytes.len());
@@ -337,11 +299,11 @@ fn fraction_at(source: &str, line: usize, column: usize) -> Option<String> {
     if y == 0.0 {
         return None;
     }
-    let decimal = six_decimals(x / y);
-    Some(both(
-        &format!("JSON has no fractions: write {a}/{b} as a decimal, {decimal}"),
-        &format!("o JSON não aceita frações: escreva {a}/{b} como decimal, {decimal}"),
-    ))
+    Some(SyntaxFix::Fraction {
+        a: a.to_owned(),
+        b: b.to_owned(),
+        decimal: six_decimals(x / y),
+    })
 }
 
 /// `x` rounded to six decimals, as a fix writes a fraction's decimal (`3/7` → 0.428571).
@@ -355,10 +317,10 @@ struct DecimalComma {
     /// The key of the value, when the comma cut an object's value (`shininess`): the parser
     /// stopped at the object, not at its field.
     key: Option<String>,
-    /// What is wrong, in English and in Portuguese.
-    message: String,
-    /// What would fix it, in English and in Portuguese.
-    fix: String,
+    /// What is wrong.
+    what: Parse,
+    /// What would fix it.
+    fix: SyntaxFix,
 }
 
 /// A decimal comma where the parser stopped, the likeliest mistake of a file written in
@@ -370,39 +332,14 @@ fn decimal_comma_at(
     source: &str,
     line: usize,
     column: usize,
-    message: &str,
+    what: &Parse,
 ) -> Option<DecimalComma> {
     let text = source.lines().nth(line.checked_sub(1)?)?;
     let bytes = text.as_bytes();
     let at = column.checked_sub(1)?.min(bytes.len());
     let digit = |i: usize| bytes.get(i).is_some_and(u8::is_ascii_digit);
-    let said = |written: &str, fixed: &str| {
-        let (en, pt) = if written.starts_with('[') {
-            (
-                "has numbers written with a decimal comma",
-                "tem números escritos com vírgula decimal",
-            )
-        } else {
-            (
-                "is written with a decimal comma",
-                "está escrito com vírgula decimal",
-            )
-        };
-        (
-            both(
-                &format!(
-                    "{written} {en}, and JSON reads a comma as the separator of fields and of a \
-                     list's items (a JSON number takes a decimal point)"
-                ),
-                &format!(
-                    "{written} {pt}, e o JSON lê a vírgula como separador de campos e de itens \
-                     de uma lista (um número JSON leva ponto decimal)"
-                ),
-            ),
-            both(&format!("write {fixed}"), &format!("escreva {fixed}")),
-        )
-    };
-    if message == "key must be a string" {
+    let fix = |fixed: String| SyntaxFix::DecimalPoint { fixed };
+    if *what == Parse::KeyMustBeAString {
         // The comma is just before where the parser stopped, between two digits.
         let comma = (at.saturating_sub(2)..(at + 1).min(bytes.len()))
             .find(|&i| bytes[i] == b',' && i > 0 && digit(i - 1) && digit(i + 1))?;
@@ -421,10 +358,15 @@ fn decimal_comma_at(
             .strip_suffix('"')
             .and_then(|k| k.rsplit_once('"'))
             .map(|(_, k)| crate::text::number::shorten(k, LONGEST_NAME));
-        let (message, fix) = said(&format!("{a},{b}"), &format!("{a}.{b}"));
-        return Some(DecimalComma { key, message, fix });
+        return Some(DecimalComma {
+            key,
+            what: Parse::DecimalComma {
+                written: format!("{a},{b}"),
+            },
+            fix: fix(format!("{a}.{b}")),
+        });
     }
-    if message != "trailing characters" {
+    if *what != Parse::TrailingCharacters {
         return None;
     }
     let open = text[..at].rfind('[')?;
@@ -455,59 +397,46 @@ fn decimal_comma_at(
         return None;
     }
     let fixed: Vec<String> = items.iter().map(|t| t.replace(',', ".")).collect();
-    let fixed = format!("[{}]", fixed.join(", "));
-    let (message, fix) = said(&format!("[{}]", inner.trim()), &fixed);
     Some(DecimalComma {
         key: None,
-        message,
-        fix,
+        what: Parse::DecimalCommas {
+            written: format!("[{}]", inner.trim()),
+        },
+        fix: fix(format!("[{}]", fixed.join(", "))),
     })
 }
 
 /// A string where an array of three numbers belongs (`"normal": "3/5 0 4/5"`, `"color":
 /// "white"`): the array to write, every number (and fraction) of the string in it when it
-/// holds three, in English and in Portuguese.
-fn string_for_vector(message: &str) -> Option<String> {
-    let rest = message.strip_prefix("invalid type: string \"")?;
-    let (text, expected) = rest.rsplit_once("\", expected ")?;
-    if expected != "an array of length 3" {
-        return None;
-    }
+/// holds three.
+fn string_for_vector(what: &Parse) -> Option<SyntaxFix> {
+    let text = what.string_for(|e| *e == Expected::Array { len: 3 })?;
     let numbers: Option<Vec<f64>> = text
         .split(|c: char| c.is_whitespace() || c == ';' || c == ',')
         .filter(|t| !t.is_empty())
         .map(crate::text::number::number)
         .collect();
     Some(match numbers.filter(|n| n.len() == 3) {
-        Some(n) => {
-            let array = format!(
+        Some(n) => SyntaxFix::AsArray {
+            array: format!(
                 "[{}, {}, {}]",
                 six_decimals(n[0]),
                 six_decimals(n[1]),
                 six_decimals(n[2])
-            );
-            both(
-                &format!("write the three numbers as a JSON array, without quotes, {array}"),
-                &format!("escreva os três números como uma lista JSON, sem aspas, {array}"),
-            )
-        }
-        None => both(
-            "give three numbers in brackets, such as [1, 1, 1] (a colour: red, green and blue \
-             from 0 to 1)",
-            "dê três números entre colchetes, como [1, 1, 1] (uma cor: vermelho, verde e azul \
-             de 0 a 1)",
-        ),
+            ),
+        },
+        None => SyntaxFix::InBrackets,
     })
 }
 
-/// A word (a string) where a number belongs: the number it likely means, in plain words, in
-/// English and in Portuguese.
-fn word_for_number(message: &str, field: Option<&str>) -> Option<String> {
-    let rest = message.strip_prefix("invalid type: string \"")?;
-    let (word, expected) = rest.split_once("\", expected ")?;
-    if !matches!(expected, "f64" | "u8" | "u32" | "a number") {
-        return None;
-    }
+/// A word (a string) where a number belongs: the number it likely means, in plain words.
+fn word_for_number(what: &Parse, field: Option<&str>) -> Option<SyntaxFix> {
+    let word = what.string_for(|e| {
+        matches!(
+            e,
+            Expected::F64 | Expected::U8 | Expected::U32 | Expected::ANumber
+        )
+    })?;
     let is_falloff = field.is_some_and(|f| f.ends_with("falloff"));
     let w = word.trim().to_lowercase();
     let falloff = match w.as_str() {
@@ -517,85 +446,54 @@ fn word_for_number(message: &str, field: Option<&str>) -> Option<String> {
         _ => None,
     };
     if let (true, Some(f)) = (is_falloff, falloff) {
-        return Some(both(
-            &format!(
-                "the falloff is the exponent f of d^f, a number: write {f} for \"{word}\" (0 \
-                 none, 1 linear, 2 quadratic)"
-            ),
-            &format!(
-                "o decaimento é o expoente f de d^f, um número: escreva {f} para \"{word}\" (0 \
-                 sem decaimento, 1 linear, 2 quadrático)"
-            ),
-        ));
+        return Some(SyntaxFix::FalloffWord {
+            f,
+            word: word.to_owned(),
+        });
     }
     if let Some(x) = crate::text::number::number(word.trim()) {
-        return Some(both(
-            &format!("a number is written without quotes: {}", validate::show(x)),
-            &format!("um número se escreve sem aspas: {}", validate::show(x)),
-        ));
+        return Some(SyntaxFix::Unquoted {
+            number: validate::show(x),
+        });
     }
+    let word = word.to_owned();
     Some(if is_falloff {
-        both(
-            &format!(
-                "a number belongs here, not the word \"{word}\": the falloff is 0 (none), 1 \
-                 (linear) or 2 (quadratic)"
-            ),
-            &format!(
-                "aqui vai um número, não a palavra \"{word}\": o decaimento é 0 (sem \
-                 decaimento), 1 (linear) ou 2 (quadrático)"
-            ),
-        )
+        SyntaxFix::NotFalloffWord { word }
     } else {
-        both(
-            &format!("a number belongs here, not the word \"{word}\""),
-            &format!("aqui vai um número, não a palavra \"{word}\""),
-        )
+        SyntaxFix::NotWord { word }
     })
 }
 
-fn syntax_fix(e: &serde_json::Error, message: &str) -> String {
+fn syntax_fix(e: &serde_json::Error, what: &Parse) -> SyntaxFix {
     use serde_json::error::Category;
     match e.classify() {
-        Category::Eof => "the file ends too early: close every { and [".into(),
-        Category::Syntax if message.starts_with("number out of range") => {
-            "the number is beyond the range of f64 (about ±1.8e308); every number must be finite"
-                .into()
-        }
-        Category::Syntax => "check the JSON just before this position (a missing comma, \
-                             quote, bracket or brace, or a trailing comma)"
-            .into(),
-        Category::Io => String::new(),
-        Category::Data => {
-            if message.starts_with("unknown field") {
-                "remove the field or correct its spelling (`phong schema` lists every field)".into()
-            } else if message.starts_with("duplicate field") {
-                "give the field once: remove one of the two (the parser does not pick one)".into()
-            } else if message.starts_with("duplicate material") {
-                "give each material its own name, or remove one of the two".into()
-            } else if let Some(fix) = message
-                .strip_prefix("unknown variant `")
-                .and_then(|s| s.split('`').next())
-                .and_then(kind_in_portuguese)
-            {
-                fix
-            } else if let Some(name) = message
-                .strip_prefix("missing field `")
-                .and_then(|s| s.split('`').next())
-            {
-                match field_purpose(name) {
-                    Some(p) => format!("add \"{name}\": it gives {p}"),
-                    None => format!("add \"{name}\""),
-                }
-            } else {
-                "see `phong schema` for the expected form".into()
+        Category::Eof => SyntaxFix::EndsEarly,
+        Category::Syntax if *what == Parse::NumberOutOfRange => SyntaxFix::OutOfRange,
+        Category::Syntax => SyntaxFix::CheckJson,
+        Category::Io => SyntaxFix::Nothing,
+        Category::Data => match what {
+            Parse::UnknownField { .. } => SyntaxFix::UnknownField,
+            Parse::DuplicateField { .. } => SyntaxFix::DuplicateField,
+            Parse::DuplicateMaterial { .. } => SyntaxFix::DuplicateMaterial,
+            Parse::UnknownVariant { name, .. } => {
+                kind_in_portuguese(&crate::text::In(name, Lang::En).to_string())
+                    .unwrap_or(SyntaxFix::SeeSchema)
             }
-        }
+            Parse::MissingField { name } => {
+                let name = crate::text::In(name, Lang::En).to_string();
+                match field_purpose(&name) {
+                    Some(purpose) => SyntaxFix::AddFor { name, purpose },
+                    None => SyntaxFix::Add { name },
+                }
+            }
+            _ => SyntaxFix::SeeSchema,
+        },
     }
 }
 
 /// A light's or a surface's kind written in Portuguese (`"type": "pontual"`): the file's word
-/// for it, in English and in Portuguese.
-fn kind_in_portuguese(word: &str) -> Option<String> {
+/// for it.
+fn kind_in_portuguese(word: &str) -> Option<SyntaxFix> {
     let kind = match word.trim().to_lowercase().as_str() {
         "pontual" | "ponto" => "point",
         "direcional" => "directional",
@@ -607,44 +505,29 @@ fn kind_in_portuguese(word: &str) -> Option<String> {
         "malha" => "mesh",
         _ => return None,
     };
-    Some(both(
-        &format!("a kind is written in English in the file: write \"{kind}\" for \"{word}\""),
-        &format!("o tipo se escreve em inglês no arquivo: escreva \"{kind}\" para \"{word}\""),
-    ))
+    Some(SyntaxFix::KindInEnglish {
+        kind: kind.to_owned(),
+        word: word.to_owned(),
+    })
 }
 
 /// What a required field of the format is used for, to say why it is needed. A light's and a
 /// surface's fields say it in their tables ([`format::LightSpec`], [`format::SurfaceSpec`]); a
 /// name means the same wherever it appears (`direction` of a ray, `color` of a coefficient).
-pub(crate) fn field_purpose(name: &str) -> Option<String> {
+pub(crate) fn field_purpose(name: &str) -> Option<Purpose> {
     if let Some(p) = LightSpec::purpose(name).or_else(|| SurfaceSpec::purpose(name)) {
-        return Some(p.to_owned());
+        return Some(p);
     }
-    Some(
-        match name {
-            "origin" => "the ray's origin",
-            "k" => "the coefficient k of k·O",
-            "type" => {
-                return Some(format!(
-                    "the kind: {} (lights); {} (surfaces)",
-                    or_list(LightType::WORDS),
-                    or_list(SurfaceType::WORDS)
-                ))
-            }
-            "eye" | "look_at" | "fov" | "width" | "height" => "the camera",
-            _ => return None,
-        }
-        .to_owned(),
-    )
-}
-
-/// "a, b or c".
-fn or_list(words: &[&str]) -> String {
-    match words.split_last() {
-        Some((last, [])) => (*last).to_owned(),
-        Some((last, rest)) => format!("{} or {last}", rest.join(", ")),
-        None => String::new(),
-    }
+    Some(match name {
+        "origin" => Purpose::Origin,
+        "k" => Purpose::K,
+        "type" => Purpose::Kind {
+            lights: syntax::OrList(LightType::WORDS),
+            surfaces: syntax::OrList(SurfaceType::WORDS),
+        },
+        "eye" | "look_at" | "fov" | "width" | "height" => Purpose::Camera,
+        _ => return None,
+    })
 }
 
 /// Where a problem comes from: a file, or text held in memory.
@@ -710,11 +593,9 @@ fn no_mesh(file: &ProblemFile) -> Result<(), Invalid> {
         .iter()
         .position(|s| s.kind == SurfaceType::Mesh)
     {
-        Some(i) => Err(Invalid::new(
+        Some(i) => Err(Invalid::of(
             format!("surfaces[{i}].file"),
-            "a problem sent as text cannot name a mesh file: no file is read on its behalf",
-            "give the mesh's triangles as surfaces of \"type\": \"triangle\", or solve the \
-             file with the phong command, which reads a mesh beside the problem file",
+            SourceFault::MeshInText,
         )),
         None => Ok(()),
     }
@@ -752,21 +633,10 @@ pub(crate) fn load_scene<R: Real>(path: &Path) -> Result<SceneFile<R>, ProblemEr
     let (file, problem) = load::<R>(path)?;
     let meshes = mesh_files(&file, path);
     let Some(camera) = problem.camera else {
-        return Err(Invalid::new(
-            "camera",
-            "missing: rendering needs a camera",
-            "add \"camera\": {\"eye\": [x, y, z], \"look_at\": [x, y, z], \"fov\": 45, \
-             \"width\": 640, \"height\": 480}",
-        )
-        .at(path));
+        return Err(Invalid::of("camera", SourceFault::NoCamera).at(path));
     };
     if problem.surfaces().is_empty() {
-        return Err(Invalid::new(
-            "surfaces",
-            "missing: a scene needs surfaces for its rays to hit (this is a point problem)",
-            "add \"surfaces\" and a \"camera\", or solve it with `phong solve`",
-        )
-        .at(path));
+        return Err(Invalid::of("surfaces", SourceFault::NoSurfaces).at(path));
     }
     Ok(SceneFile {
         problem,
@@ -810,25 +680,45 @@ mod tests {
 
     #[test]
     fn the_purpose_of_type_names_every_kind_of_each_table() {
+        let p = field_purpose("type").unwrap();
         assert_eq!(
-            field_purpose("type").as_deref(),
-            Some(
-                "the kind: ambient, point, directional or spot (lights); plane, sphere, triangle \
-                 or mesh (surfaces)"
-            )
+            p.text(Lang::En),
+            "the kind: ambient, point, directional or spot (lights); plane, sphere, triangle or \
+             mesh (surfaces)"
         );
-        assert_eq!(or_list(&["a"]), "a");
-        assert_eq!(or_list(&["a", "b", "c"]), "a, b or c");
+        assert_eq!(
+            p.text(Lang::Pt),
+            "o tipo: ambient, point, directional ou spot (fontes de luz); plane, sphere, \
+             triangle ou mesh (superfícies)"
+        );
     }
 
     #[test]
     fn a_field_of_a_table_gives_its_purpose_and_others_keep_theirs() {
+        let en = |name: &str| field_purpose(name).map(|p| p.text(Lang::En));
         assert_eq!(
-            field_purpose("falloff").as_deref(),
+            en("falloff").as_deref(),
             Some("f in I_l = C_l/d^f (Eq. 4.2, 4.3): 0 none, 1 linear, 2 quadratic")
         );
-        assert_eq!(field_purpose("radius").as_deref(), Some("the sphere"));
-        assert_eq!(field_purpose("fov").as_deref(), Some("the camera"));
-        assert_eq!(field_purpose("name"), None);
+        assert_eq!(en("radius").as_deref(), Some("the sphere"));
+        assert_eq!(en("fov").as_deref(), Some("the camera"));
+        assert_eq!(en("name"), None);
+        assert_eq!(
+            field_purpose("falloff").unwrap().text(Lang::Pt),
+            "f em I_l = C_l/d^f (Eq. 4.2, 4.3): 0 sem decaimento, 1 linear, 2 quadrático"
+        );
+    }
+
+    #[test]
+    fn every_field_of_the_tables_gives_its_purpose_in_portuguese() {
+        let fields = LightType::ALL
+            .iter()
+            .flat_map(|k| k.fields())
+            .chain(SurfaceType::ALL.iter().flat_map(|k| k.fields()));
+        for name in fields {
+            let p = field_purpose(name).unwrap();
+            let (en, pt) = (p.text(Lang::En), p.text(Lang::Pt));
+            assert!(!pt.is_empty() && pt != en, "{name}: {en} / {pt}");
+        }
     }
 }

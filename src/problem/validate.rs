@@ -2,12 +2,14 @@
 //! field is wrong and how to fix it. Every number is checked to be finite in `R`; every vector
 //! that is used as a direction to be non-zero; every term the question needs to have its inputs.
 
-use std::fmt;
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
 
 use super::error::Invalid;
-use super::faults::TargetFault;
+use super::faults::{
+    Bytes, CameraFault, ColourFault, DirectionOf, Kind, KindFault, LightFault, LightLabel,
+    MaterialFault, NumberFault, Purpose, RayCount, SettingFault, SurfaceFault, TargetFault,
+};
 use super::field::Field;
 use super::format::{
     CameraSpec, ColorSpec, LightSpec, LightType, MaterialRef, MaterialSpec, ProblemFile,
@@ -48,131 +50,113 @@ pub fn validate_in<R: Real>(
         .transpose()?;
     let first_light = light_info
         .first()
-        .map(|i| light_label(i.file_index, i.kind));
+        .and_then(|i| LightLabel::of(i.file_index, i.kind));
     let has_ambient = !ambient_info.is_empty();
 
-    let target =
-        match (&file.point, &file.ray) {
-            (Some(_), Some(_)) => return Err(Invalid::of("ray", TargetFault::PointAndRay)),
-            (None, None) if file.camera.is_some() => {
-                if file.surfaces.is_empty() {
-                    return Err(Invalid::of("surfaces", TargetFault::SceneWithoutSurfaces));
-                }
-                let needs = Needs {
-                    ambient: has_ambient,
-                    diffuse: first_light.clone(),
-                    // Every camera ray gives V: specular always has one.
-                    specular: first_light.clone(),
-                };
-                Target::Scene {
-                    surfaces: surfaces::<R>(file, base, &needs)?,
-                }
+    let target = match (&file.point, &file.ray) {
+        (Some(_), Some(_)) => return Err(Invalid::of("ray", TargetFault::PointAndRay)),
+        (None, None) if file.camera.is_some() => {
+            if file.surfaces.is_empty() {
+                return Err(Invalid::of("surfaces", TargetFault::SceneWithoutSurfaces));
             }
-            // Surfaces without a ray or a camera: a scene whose camera is missing (what `phong
-            // render` needs), more likely than a point problem with surfaces.
-            (None, None) if !file.surfaces.is_empty() => {
-                return Err(Invalid::of("camera", TargetFault::SurfacesWithoutCamera))
+            let needs = Needs {
+                ambient: has_ambient,
+                diffuse: first_light,
+                // Every camera ray gives V: specular always has one.
+                specular: first_light,
+            };
+            Target::Scene {
+                surfaces: surfaces::<R>(file, base, &needs)?,
             }
-            (None, None) => return Err(Invalid::new(
-                "point",
-                "the problem has nothing to shade",
-                "give \"point\" (with \"material\", and \"position\" and \"normal\" where lights \
-                 need them), \"ray\" with \"surfaces\", or a \"camera\" with \"surfaces\"",
-            )),
-            (Some(point), None) => {
-                if !file.surfaces.is_empty() {
-                    return Err(Invalid::new(
-                        "surfaces",
-                        "surfaces are only used by a ray problem, and this problem gives a point",
-                        "remove \"surfaces\", or replace \"point\" with a \"ray\"",
+        }
+        // Surfaces without a ray or a camera: a scene whose camera is missing (what `phong
+        // render` needs), more likely than a point problem with surfaces.
+        (None, None) if !file.surfaces.is_empty() => {
+            return Err(Invalid::of("camera", TargetFault::SurfacesWithoutCamera))
+        }
+        (None, None) => return Err(Invalid::of("point", TargetFault::NothingToShade)),
+        (Some(point), None) => {
+            if !file.surfaces.is_empty() {
+                return Err(Invalid::of("surfaces", TargetFault::SurfacesWithPoint));
+            }
+            let position = point
+                .position
+                .map(|p| vector::<R>(p, Field::Name("point.position")))
+                .transpose()?;
+            let normal = point
+                .normal
+                .map(|n| direction::<R>(n, Field::Name("point.normal"), DirectionOf::Normal))
+                .transpose()?;
+            let (mat_field, material) =
+                resolve_material::<R>(file, &point.material, Field::Name("point.material"))?;
+            let needs = Needs {
+                ambient: has_ambient,
+                diffuse: first_light,
+                specular: viewer.and(first_light),
+            };
+            needs.check(&material.spec, mat_field)?;
+            // Point and normal: only where the question needs them.
+            let positional = light_info
+                .iter()
+                .zip(&lights.lights)
+                .find(|(_, l)| l.position().is_some());
+            if position.is_none() {
+                if let Some(light) =
+                    positional.and_then(|(info, _)| LightLabel::of(info.file_index, info.kind))
+                {
+                    return Err(Invalid::of(
+                        "point.position",
+                        TargetFault::PositionForLight { light },
                     ));
                 }
-                let position = point
-                    .position
-                    .map(|p| vector::<R>(p, Field::Name("point.position")))
-                    .transpose()?;
-                let normal = point
-                    .normal
-                    .map(|n| direction::<R>(n, Field::Name("point.normal"), "the normal N"))
-                    .transpose()?;
-                let (mat_field, material) =
-                    resolve_material::<R>(file, &point.material, Field::Name("point.material"))?;
-                let needs = Needs {
-                    ambient: has_ambient,
-                    diffuse: first_light.clone(),
-                    specular: viewer.and(first_light.clone()),
-                };
-                needs.check(&material.spec, mat_field)?;
-                // Point and normal: only where the question needs them.
-                let positional = light_info
-                    .iter()
-                    .zip(&lights.lights)
-                    .find(|(_, l)| l.position().is_some());
-                if position.is_none() {
-                    if let Some((info, _)) = positional {
-                        return Err(Invalid::new(
-                            "point.position",
-                            format!(
-                                "missing: {} needs P for L and d (Eq. 4.1)",
-                                light_label(info.file_index, info.kind)
-                            ),
-                            "add \"position\": [x, y, z] to \"point\"",
-                        ));
-                    }
-                    if viewer.is_some() {
-                        return Err(Invalid::new(
-                            "point.position",
-                            "missing: the viewer needs P for V = (P − E)/‖P − E‖",
-                            "add \"position\": [x, y, z] to \"point\", or remove \"viewer\"",
-                        ));
-                    }
-                }
-                if normal.is_none() {
-                    if let Some(l) = &first_light {
-                        return Err(Invalid::new(
-                            "point.normal",
-                            format!("missing: {l} needs N for cos θ = −N·L (Eq. 4.7)"),
-                            "add \"normal\": [x, y, z] to \"point\"",
-                        ));
-                    }
-                }
-                Target::Point {
-                    position,
-                    normal,
-                    material,
-                }
-            }
-            (None, Some(ray)) => {
-                let origin = vector::<R>(ray.origin, Field::Name("ray.origin"))?;
-                let dir = direction::<R>(
-                    ray.direction,
-                    Field::Name("ray.direction"),
-                    "the ray's direction",
-                )?;
-                if file.surfaces.is_empty() {
-                    return Err(Invalid::new(
-                        "surfaces",
-                        "missing: a ray problem needs at least one surface for the ray to hit",
-                        "add \"surfaces\": [{\"type\": \"plane\", ...}] or a sphere",
+                if viewer.is_some() {
+                    return Err(Invalid::of(
+                        "point.position",
+                        TargetFault::PositionForViewer,
                     ));
                 }
-                let needs = Needs {
-                    ambient: has_ambient,
-                    diffuse: first_light.clone(),
-                    // V comes from the viewer, or from the ray itself: specular always has one.
-                    specular: first_light.clone(),
-                };
-                let surfaces = surfaces::<R>(file, base, &needs)?;
-                Target::Ray {
-                    ray: Ray {
-                        origin,
-                        direction: dir.unit,
-                    },
-                    direction: dir,
-                    surfaces,
+            }
+            if normal.is_none() {
+                if let Some(light) = first_light {
+                    return Err(Invalid::of(
+                        "point.normal",
+                        TargetFault::NormalForLight { light },
+                    ));
                 }
             }
-        };
+            Target::Point {
+                position,
+                normal,
+                material,
+            }
+        }
+        (None, Some(ray)) => {
+            let origin = vector::<R>(ray.origin, Field::Name("ray.origin"))?;
+            let dir = direction::<R>(
+                ray.direction,
+                Field::Name("ray.direction"),
+                DirectionOf::RayDirection,
+            )?;
+            if file.surfaces.is_empty() {
+                return Err(Invalid::of("surfaces", TargetFault::RayWithoutSurfaces));
+            }
+            let needs = Needs {
+                ambient: has_ambient,
+                diffuse: first_light,
+                // V comes from the viewer, or from the ray itself: specular always has one.
+                specular: first_light,
+            };
+            let surfaces = surfaces::<R>(file, base, &needs)?;
+            Target::Ray {
+                ray: Ray {
+                    origin,
+                    direction: dir.unit,
+                },
+                direction: dir,
+                surfaces,
+            }
+        }
+    };
 
     let camera = file.camera.as_ref().map(camera::<R>).transpose()?;
     let render = render_settings::<R>(file.render.as_ref())?;
@@ -212,24 +196,15 @@ fn camera<R: Real>(c: &CameraSpec) -> Result<Camera<R>, Invalid> {
     let look_at = vector::<R>(c.look_at, Field::Name("camera.look_at"))?;
     let up = vector::<R>(c.up.unwrap_or([0.0, 1.0, 0.0]), Field::Name("camera.up"))?;
     let Some(forward) = between::<R>(eye, look_at) else {
-        return Err(Invalid::new(
-            "camera.look_at",
-            "the camera looks at its own eye: no line of sight",
-            "give a look_at point different from eye",
-        ));
+        return Err(Invalid::of("camera.look_at", CameraFault::LooksAtEye));
     };
     if normalize::<R>(Vector::cross(forward.unit, up)).is_none() {
-        return Err(Invalid::new(
-            "camera.up",
-            "up is zero or along the line of sight, so the image has no up direction",
-            "give an up vector not parallel to look_at − eye, such as [0, 1, 0] or [0, 0, 1]",
-        ));
+        return Err(Invalid::of("camera.up", CameraFault::NoUp));
     }
     if !(c.fov > 0.0 && c.fov < 180.0) {
-        return Err(Invalid::new(
+        return Err(Invalid::of(
             "camera.fov",
-            format!("{} degrees is not a field of view", show(c.fov)),
-            "give the vertical field of view in degrees, 0 < fov < 180 (e.g. 45)",
+            CameraFault::NotAFov { fov: show(c.fov) },
         ));
     }
     // The image plane's half-height tan(fov/2), as the tracer computes it: in f32,
@@ -238,30 +213,32 @@ fn camera<R: Real>(c: &CameraSpec) -> Result<Camera<R>, Invalid> {
     let fov = number::<R>(c.fov, Field::Name("camera.fov"))?;
     let half_height = (fov.to_radians() / R::TWO).tan();
     if !(half_height > R::ZERO && half_height.is_finite()) {
-        let (what, fix) = if c.fov < 90.0 {
-            (
-                "too small",
-                "give a larger field of view, or use --precision f64",
-            )
+        let (fov, precision) = (show(c.fov), R::NAME);
+        let fault = if c.fov < 90.0 {
+            CameraFault::FovTooSmall { fov, precision }
         } else {
-            (
-                "too close to 180",
-                "give a field of view of at most 179 degrees, or use --precision f64",
-            )
+            CameraFault::FovNear180 { fov, precision }
         };
-        return Err(Invalid::new(
-            "camera.fov",
-            format!("{} degrees is {what} for {}", show(c.fov), R::NAME),
-            fix,
-        ));
+        return Err(Invalid::of("camera.fov", fault));
     }
-    for (name, side) in [("width", c.width), ("height", c.height)] {
+    let max = MAX_IMAGE_SIDE;
+    for (name, side, fault) in [
+        (
+            "width",
+            c.width,
+            CameraFault::WidthOutside { side: c.width, max },
+        ),
+        (
+            "height",
+            c.height,
+            CameraFault::HeightOutside {
+                side: c.height,
+                max,
+            },
+        ),
+    ] {
         if side == 0 || side > MAX_IMAGE_SIDE {
-            return Err(Invalid::new(
-                format!("camera.{name}"),
-                format!("{side} pixels is outside 1 to {MAX_IMAGE_SIDE}"),
-                format!("give the image {name} in pixels, 1 to {MAX_IMAGE_SIDE}"),
-            ));
+            return Err(Invalid::of(format!("camera.{name}"), fault));
         }
     }
     Ok(Camera {
@@ -296,64 +273,44 @@ fn render_settings<R: Real>(r: Option<&RenderSpec>) -> Result<RenderSettings<R>,
     Ok(s)
 }
 
-/// Why a setting (given in a file or on the command line) is refused, and what would fix it.
-#[derive(Clone, Debug, PartialEq)]
-pub(crate) struct SettingError {
-    pub message: String,
-    pub fix: String,
-}
-
-impl SettingError {
-    fn new(message: impl Into<String>, fix: impl Into<String>) -> Self {
-        SettingError {
-            message: message.into(),
-            fix: fix.into(),
-        }
-    }
-
-    /// The error of the setting named `field` (`render.samples` in a file, `samples` among a
-    /// command line's overrides).
-    pub(crate) fn at(self, field: impl Into<String>) -> Invalid {
-        Invalid::new(field, self.message, self.fix)
-    }
-}
-
 /// The maximum level must let at least the primary rays through, and is at most [`MAX_LEVEL`].
-pub(crate) fn check_max_level(level: u32) -> Result<(), SettingError> {
+pub(crate) fn check_max_level(level: u32) -> Result<(), SettingFault> {
     if level == 0 {
-        return Err(SettingError::new(
-            "0 traces nothing: the primary ray already has level 1",
-            format!("give a maximum level from 1 to {MAX_LEVEL} (1 = primary rays only)"),
-        ));
+        return Err(SettingFault::LevelZero { max: MAX_LEVEL });
     }
     if level > MAX_LEVEL {
-        return Err(SettingError::new(
-            format!("{level} is outside 1 to {MAX_LEVEL}"),
-            format!(
-                "give a maximum level from 1 to {MAX_LEVEL}: past {MAX_LEVEL} reflections a path \
-                 cannot change an 8-bit pixel unless its surfaces reflect more than 99%"
-            ),
-        ));
+        return Err(SettingFault::LevelOutside {
+            level,
+            max: MAX_LEVEL,
+        });
     }
     Ok(())
 }
 
 /// A render's primary rays, width × height × samples, are at most [`MAX_PIXEL_SAMPLES`].
-pub(crate) fn check_work(width: u32, height: u32, samples: u32) -> Result<(), SettingError> {
+pub(crate) fn check_work(width: u32, height: u32, samples: u32) -> Result<(), SettingFault> {
     let work = u64::from(width) * u64::from(height) * u64::from(samples);
     if work > MAX_PIXEL_SAMPLES {
         let most = MAX_PIXEL_SAMPLES / (u64::from(width) * u64::from(height)).max(1);
-        return Err(SettingError::new(
-            format!(
-                "{width}×{height} pixels × {samples} samples is {work} primary rays, more than \
-                 the {MAX_PIXEL_SAMPLES} (2^30) a render may trace (hours of work)"
-            ),
-            if most >= 1 {
-                format!("give at most {most} samples per pixel at this size, or a smaller image")
-            } else {
-                "give a smaller image".to_owned()
-            },
-        ));
+        let max = MAX_PIXEL_SAMPLES;
+        return Err(if most >= 1 {
+            SettingFault::TooMuchWork {
+                width,
+                height,
+                samples,
+                work,
+                max,
+                most,
+            }
+        } else {
+            SettingFault::ImageTooLarge {
+                width,
+                height,
+                samples,
+                work,
+                max,
+            }
+        });
     }
     Ok(())
 }
@@ -418,60 +375,34 @@ pub(crate) fn check_tree<R: Real>(
     problem: &Problem<R>,
     max_level: u32,
     min_weight: f64,
-) -> Result<(), SettingError> {
+) -> Result<(), SettingFault> {
     let rays = tree_rays(problem, max_level, min_weight);
     if rays > MAX_TREE_RAYS {
-        let shown = if rays == u64::MAX {
-            "more than 2^63".to_owned()
-        } else {
-            rays.to_string()
-        };
-        use crate::report::messages::both;
-        let w = show(min_weight);
-        return Err(SettingError::new(
-            both(
-                &format!(
-                    "maximum level {max_level} with minimum weight {w} lets one sample's ray \
-                     tree hold {shown} rays (a material both reflects and transmits, so each \
-                     hit can spawn two rays), more than the {MAX_TREE_RAYS} (2^20) a tree may \
-                     hold"
-                ),
-                &format!(
-                    "o nível máximo {max_level} com o peso mínimo {w} deixa a árvore de raios \
-                     de uma amostra ter {shown} raios (um material reflete e transmite, e cada \
-                     interseção pode gerar dois raios), mais que os {MAX_TREE_RAYS} (2^20) que \
-                     uma árvore pode ter"
-                ),
-            ),
-            both(
-                "give a maximum level of at most 20, or a larger minimum weight (e.g. 0.01), \
-                 which stops the rays whose weight w = w_p·max(O) has fallen below it",
-                "dê um nível máximo de no máximo 20, ou um peso mínimo maior (por exemplo \
-                 0.01), que para os raios cujo peso w = w_p·max(O) caiu abaixo dele",
-            ),
-        ));
+        return Err(SettingFault::TreeTooLarge {
+            level: max_level,
+            weight: show(min_weight),
+            rays: RayCount(rays),
+            max: MAX_TREE_RAYS,
+        });
     }
     Ok(())
 }
 
 /// The minimum weight is a finite number ≥ 0.
-pub(crate) fn check_min_weight(w: f64) -> Result<(), SettingError> {
+pub(crate) fn check_min_weight(w: f64) -> Result<(), SettingFault> {
     if !(w.is_finite() && w >= 0.0) {
-        return Err(SettingError::new(
-            format!("{} is not a weight", show(w)),
-            "give a minimum weight ≥ 0 (0 traces every reflection up to the maximum level)",
-        ));
+        return Err(SettingFault::NotAWeight { weight: show(w) });
     }
     Ok(())
 }
 
 /// Samples per pixel: 1 to [`MAX_SAMPLES`].
-pub(crate) fn check_samples(n: u32) -> Result<(), SettingError> {
+pub(crate) fn check_samples(n: u32) -> Result<(), SettingFault> {
     if n == 0 || n > MAX_SAMPLES {
-        return Err(SettingError::new(
-            format!("{n} samples per pixel is outside 1 to {MAX_SAMPLES}"),
-            format!("give 1 to {MAX_SAMPLES} samples per pixel"),
-        ));
+        return Err(SettingFault::SamplesOutside {
+            samples: n,
+            max: MAX_SAMPLES,
+        });
     }
     Ok(())
 }
@@ -487,13 +418,11 @@ fn surfaces<R: Real>(
     for (i, s) in file.surfaces.iter().enumerate() {
         surface::<R>(file, base, s, i, needs, &mut materials, &mut out)?;
         if out.len() > mesh::MAX_TRIANGLES {
-            return Err(Invalid::new(
+            return Err(Invalid::of(
                 format!("surfaces[{i}]"),
-                format!(
-                    "the scene has more than {} surfaces (a mesh's triangles each count)",
-                    mesh::MAX_TRIANGLES
-                ),
-                "give at most 1,000,000 surfaces and triangles in all",
+                SurfaceFault::TooMany {
+                    max: mesh::MAX_TRIANGLES,
+                },
             ));
         }
     }
@@ -543,7 +472,8 @@ static SURFACES: Field<'static> = Field::Name("surfaces");
 /// `lights`.
 static LIGHTS: Field<'static> = Field::Name("lights");
 
-/// `lights[1] (point)`.
+/// `lights[1] (point)`, in English. Transitional, for the solver's messages still written as
+/// English text; a message names a light by a [`LightLabel`], in its language.
 pub(crate) fn light_label(file_index: usize, kind: &str) -> String {
     format!("lights[{file_index}] ({kind})")
 }
@@ -552,47 +482,38 @@ pub(crate) fn light_label(file_index: usize, kind: &str) -> String {
 struct Needs {
     ambient: bool,
     /// The first light that needs O_d, if any.
-    diffuse: Option<String>,
+    diffuse: Option<LightLabel>,
     /// The first light that needs O_s and n_s (there is a viewer), if any.
-    specular: Option<String>,
+    specular: Option<LightLabel>,
 }
 
 impl Needs {
     fn check(&self, m: &MaterialSpec, field: Field<'_>) -> Result<(), Invalid> {
-        const COLOR_FORM: &str = "[r, g, b] (or {\"k\": k, \"color\": [r, g, b]})";
         if self.ambient && m.ambient.is_none() {
-            return Err(Invalid::new(
+            return Err(Invalid::of(
                 field.key("ambient"),
-                "missing: the ambient term O_a I_a (Eq. 4.6) needs it, since the problem has an \
-                 ambient light",
-                format!("add \"ambient\": {COLOR_FORM}; [0, 0, 0] if the surface reflects no ambient light"),
+                MaterialFault::AmbientMissing,
             ));
         }
-        if let Some(l) = &self.diffuse {
+        if let Some(light) = self.diffuse {
             if m.diffuse.is_none() {
-                return Err(Invalid::new(
+                return Err(Invalid::of(
                     field.key("diffuse"),
-                    format!("missing: the diffuse term O_d I_l cos θ (Eq. 4.8) of {l} needs it"),
-                    format!("add \"diffuse\": {COLOR_FORM}; [0, 0, 0] for no diffuse reflection"),
+                    MaterialFault::DiffuseMissing { light },
                 ));
             }
         }
-        if let Some(l) = &self.specular {
+        if let Some(light) = self.specular {
             if m.specular.is_none() {
-                return Err(Invalid::new(
+                return Err(Invalid::of(
                     field.key("specular"),
-                    format!(
-                        "missing: the specular term O_s I_l (cos φ)^n_s (Eq. 4.10) of {l} needs it, \
-                         since the problem has a viewer"
-                    ),
-                    format!("add \"specular\": {COLOR_FORM}; [0, 0, 0] for a matte surface"),
+                    MaterialFault::SpecularMissing { light },
                 ));
             }
             if m.shininess.is_none() {
-                return Err(Invalid::new(
+                return Err(Invalid::of(
                     field.key("shininess"),
-                    format!("missing: the specular term (Eq. 4.10) of {l} needs the exponent n_s"),
-                    "add \"shininess\": n_s (a number ≥ 0)",
+                    MaterialFault::ShininessMissing { light },
                 ));
             }
         }
@@ -614,13 +535,12 @@ fn lights<R: Real>(specs: &[LightSpec]) -> Result<Lights<R>, Invalid> {
         lights: Vec::new(),
     };
     if specs.len() > MAX_LIGHTS {
-        return Err(Invalid::new(
+        return Err(Invalid::of(
             "lights",
-            format!(
-                "{} lights are more than the {MAX_LIGHTS} a problem may have",
-                specs.len()
-            ),
-            format!("give at most {MAX_LIGHTS} lights"),
+            LightFault::TooMany {
+                count: specs.len(),
+                max: MAX_LIGHTS,
+            },
         ));
     }
     let mut info = Vec::new();
@@ -628,13 +548,13 @@ fn lights<R: Real>(specs: &[LightSpec]) -> Result<Lights<R>, Invalid> {
     for (i, spec) in specs.iter().enumerate() {
         let base = LIGHTS.index(i);
         let f = |name: &'static str| Field::Key(&base, name);
-        let what = LightWhat(spec.kind);
+        let what = Kind::Light(spec.kind);
         if spec.present_mask() & !spec.kind.fields_mask() != 0 {
-            check_fields(base, &what, spec.kind.fields(), spec.present())?;
+            check_fields(base, what, spec.kind.fields(), spec.present())?;
         }
         let name = spec.name.clone();
         let c = color::<R>(
-            required(spec.color, base, "color", &what)?,
+            required(spec.color, base, "color", what)?,
             f("color"),
             ColorRange::Light,
         )?;
@@ -651,38 +571,37 @@ fn lights<R: Real>(specs: &[LightSpec]) -> Result<Lights<R>, Invalid> {
                 continue;
             }
             LightType::Point => {
-                let (position, falloff) = position_and_falloff::<R>(spec, base, &what)?;
+                let (position, falloff) = position_and_falloff::<R>(spec, base, what)?;
                 LightKind::Point { position, falloff }
             }
             LightType::Directional => {
-                let d = required(spec.direction, base, "direction", &what)?;
-                let d = direction::<R>(d, f("direction"), "the light's direction D_l")?;
+                let d = required(spec.direction, base, "direction", what)?;
+                let d = direction::<R>(d, f("direction"), DirectionOf::LightDirection)?;
                 direction_length = (!is_unit_length(d.length)).then_some(d.length);
                 LightKind::Directional { direction: d.unit }
             }
             LightType::Spot => {
-                let axis = required(spec.axis, base, "axis", &what)?;
-                let axis = direction::<R>(axis, f("axis"), "the cone's axis D_l")?;
+                let axis = required(spec.axis, base, "axis", what)?;
+                let axis = direction::<R>(axis, f("axis"), DirectionOf::ConeAxis)?;
                 direction_length = (!is_unit_length(axis.length)).then_some(axis.length);
-                let angle = required(spec.angle, base, "angle", &what)?;
+                let angle = required(spec.angle, base, "angle", what)?;
                 if !(0.0..=90.0).contains(&angle) {
-                    return Err(Invalid::new(
+                    return Err(Invalid::of(
                         f("angle"),
-                        format!("{}° is outside [0°, 90°]", show(angle)),
-                        "γ is the angle between the cone's axis and its side, 0 ≤ γ ≤ 90 degrees \
-                         (Eq. 4.4)",
+                        LightFault::AngleOutside { angle: show(angle) },
                     ));
                 }
-                let exponent = required(spec.exponent, base, "exponent", &what)?;
+                let exponent = required(spec.exponent, base, "exponent", what)?;
                 let e = number::<R>(exponent, f("exponent"))?;
                 if e < R::ZERO {
-                    return Err(Invalid::new(
+                    return Err(Invalid::of(
                         f("exponent"),
-                        format!("{} is negative", show(exponent)),
-                        "the spot exponent e of cos(ψ)^e (Eq. 4.4) must be ≥ 0, e.g. 0, 1 or 2",
+                        LightFault::NegativeExponent {
+                            exponent: show(exponent),
+                        },
                     ));
                 }
-                let (position, falloff) = position_and_falloff::<R>(spec, base, &what)?;
+                let (position, falloff) = position_and_falloff::<R>(spec, base, what)?;
                 LightKind::Spot {
                     position,
                     falloff,
@@ -706,20 +625,11 @@ fn lights<R: Real>(specs: &[LightSpec]) -> Result<Lights<R>, Invalid> {
     })
 }
 
-/// A light's kind as messages write it, `point light`, written out only for an error.
-struct LightWhat(LightType);
-
-impl fmt::Display for LightWhat {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(f, "{} light", self.0.name())
-    }
-}
-
 /// P_l and f of a point or spot light.
 fn position_and_falloff<R: Real>(
     spec: &LightSpec,
     base: Field<'_>,
-    what: &dyn fmt::Display,
+    what: Kind,
 ) -> Result<(V3<R>, Falloff), Invalid> {
     let position = required(spec.position, base, "position", what)?;
     let f = required(spec.falloff, base, "falloff", what)?;
@@ -733,34 +643,33 @@ fn position_and_falloff<R: Real>(
 /// file gives, in the table's order).
 fn check_fields(
     base: Field<'_>,
-    what: &dyn fmt::Display,
+    kind: Kind,
     takes: &[&str],
     mut present: impl Iterator<Item = &'static str>,
 ) -> Result<(), Invalid> {
     match present.find(|f| !takes.contains(f)) {
-        Some(extra) => Err(Invalid::new(
+        Some(extra) => Err(Invalid::of(
             base.key(extra),
-            format!("a {what} has no \"{extra}\""),
-            format!("remove it; a {what} takes {}", quoted(takes)),
+            KindFault::NotTaken {
+                kind,
+                extra: extra.to_owned(),
+                takes: quoted(takes),
+            },
         )),
         None => Ok(()),
     }
 }
 
 /// A field the type requires: its value, or an error naming it and what it is for.
-fn required<T>(
-    value: Option<T>,
-    base: Field<'_>,
-    name: &str,
-    what: &dyn fmt::Display,
-) -> Result<T, Invalid> {
+fn required<T>(value: Option<T>, base: Field<'_>, name: &str, kind: Kind) -> Result<T, Invalid> {
     value.ok_or_else(|| {
-        let purpose =
-            super::field_purpose(name).map_or(String::new(), |p| format!(": it gives {p}"));
-        Invalid::new(
+        Invalid::of(
             base.key(name),
-            format!("missing: a {what} needs \"{name}\"{purpose}"),
-            format!("add \"{name}\""),
+            KindFault::Missing {
+                kind,
+                name: name.to_owned(),
+                purpose: Purpose::of(name),
+            },
         )
     })
 }
@@ -785,13 +694,7 @@ fn falloff(x: f64, field: Field<'_>) -> Result<Falloff, Invalid> {
     } else {
         None
     };
-    f.ok_or_else(|| {
-        Invalid::new(
-            field,
-            format!("{} is not a falloff exponent", show(x)),
-            "use 0 (no falloff), 1 (linear) or 2 (quadratic), Eq. 4.3",
-        )
-    })
+    f.ok_or_else(|| Invalid::of(field, LightFault::NotAFalloff { falloff: show(x) }))
 }
 
 fn surface<R: Real>(
@@ -805,17 +708,17 @@ fn surface<R: Real>(
 ) -> Result<(), Invalid> {
     let base = SURFACES.index(i);
     let f = |name: &'static str| Field::Key(&base, name);
-    let what = s.kind.name();
+    let what = Kind::Surface(s.kind);
     if s.present_mask() & !s.kind.fields_mask() != 0 {
-        check_fields(base, &what, s.kind.fields(), s.present())?;
+        check_fields(base, what, s.kind.fields(), s.present())?;
     }
     let (shape, normal) = match s.kind {
         SurfaceType::Plane => {
-            let n = required(s.normal.as_deref().copied(), base, "normal", &what)?;
-            let n = direction::<R>(n, f("normal"), "the plane's normal")?;
+            let n = required(s.normal.as_deref().copied(), base, "normal", what)?;
+            let n = direction::<R>(n, f("normal"), DirectionOf::PlaneNormal)?;
             let plane = Plane {
                 point: vector::<R>(
-                    required(s.point.as_deref().copied(), base, "point", &what)?,
+                    required(s.point.as_deref().copied(), base, "point", what)?,
                     f("point"),
                 )?,
                 normal: n.unit,
@@ -823,34 +726,33 @@ fn surface<R: Real>(
             (Shape::Plane(plane), Some(n))
         }
         SurfaceType::Sphere => {
-            let radius = required(s.radius, base, "radius", &what)?;
+            let radius = required(s.radius, base, "radius", what)?;
             let r = number::<R>(radius, f("radius"))?;
             if radius > 0.0 && r == R::ZERO {
-                return Err(Invalid::new(
+                return Err(Invalid::of(
                     f("radius"),
-                    format!(
-                        "{} is too small for {}: it rounds to 0",
-                        show(radius),
-                        R::NAME
-                    ),
-                    "use --precision f64, or scale the problem",
+                    SurfaceFault::RadiusRoundsToZero {
+                        radius: show(radius),
+                        precision: R::NAME,
+                    },
                 ));
             }
             if r <= R::ZERO {
-                return Err(Invalid::new(
+                return Err(Invalid::of(
                     f("radius"),
-                    format!("{} is not a radius", show(radius)),
-                    "give the sphere a radius > 0",
+                    SurfaceFault::NotARadius {
+                        radius: show(radius),
+                    },
                 ));
             }
             let sphere = Sphere {
-                center: vector::<R>(required(s.center, base, "center", &what)?, f("center"))?,
+                center: vector::<R>(required(s.center, base, "center", what)?, f("center"))?,
                 radius: r,
             };
             (Shape::Sphere(sphere), None)
         }
         SurfaceType::Triangle => {
-            let v = required(s.vertices.as_deref(), base, "vertices", &what)?;
+            let v = required(s.vertices.as_deref(), base, "vertices", what)?;
             let vertices = f("vertices");
             let mut p = [V3::<R>::ZERO; 3];
             for (k, corner) in v.iter().enumerate() {
@@ -858,52 +760,38 @@ fn surface<R: Real>(
             }
             let t = Triangle { p, normals: None };
             if t.normal().is_none() {
-                return Err(Invalid::new(
+                return Err(Invalid::of(
                     f("vertices"),
-                    format!(
-                        "the triangle is degenerate in {}: its corners lie on one line, so it \
-                         has no area and no normal",
-                        R::NAME
-                    ),
-                    "give three corners that are not on one line",
+                    SurfaceFault::Degenerate { precision: R::NAME },
                 ));
             }
             (Shape::Triangle(t), None)
         }
         SurfaceType::Mesh => {
-            let name = required(s.file.as_ref(), base, "file", &what)?;
-            let mref = required(s.material.as_ref(), base, "material", &what)?;
+            let name = required(s.file.as_ref(), base, "file", what)?;
+            let mref = required(s.material.as_ref(), base, "material", what)?;
             let (mat_field, material) = materials.resolve(file, mref, f("material"))?;
             needs.check(&material.spec, mat_field)?;
             let path = mesh_path(folder, name);
-            let triangles = mesh::load_obj::<R>(&path).map_err(|e| {
-                Invalid::new(
-                    f("file"),
-                    format!("{}: {}", path.display(), e.message),
-                    e.fix,
-                )
-            })?;
+            let triangles =
+                mesh::load_obj::<R>(&path).map_err(|e| Invalid::of(f("file"), e.at(&path)))?;
             if out.len() + triangles.len() > mesh::MAX_TRIANGLES {
-                return Err(Invalid::new(
+                return Err(Invalid::of(
                     f("file"),
-                    format!(
-                        "{}: its {} triangles take the scene past {} surfaces",
-                        path.display(),
-                        triangles.len(),
-                        mesh::MAX_TRIANGLES
-                    ),
-                    "give at most 1,000,000 surfaces and triangles in all",
+                    SurfaceFault::MeshTooLarge {
+                        path,
+                        triangles: triangles.len(),
+                        max: mesh::MAX_TRIANGLES,
+                    },
                 ));
             }
             out.try_reserve(triangles.len()).map_err(|_| {
-                Invalid::new(
+                let bytes = triangles
+                    .len()
+                    .saturating_mul(std::mem::size_of::<Surface<R>>());
+                Invalid::of(
                     f("file"),
-                    super::out_of_memory(
-                        triangles
-                            .len()
-                            .saturating_mul(std::mem::size_of::<Surface<R>>()),
-                    ),
-                    "give a smaller mesh, or free memory",
+                    SurfaceFault::MeshOutOfMemory { size: Bytes(bytes) },
                 )
             })?;
             out.extend(triangles.into_iter().enumerate().map(|(k, t)| Surface {
@@ -918,7 +806,7 @@ fn surface<R: Real>(
             return Ok(());
         }
     };
-    let mref = required(s.material.as_ref(), base, "material", &what)?;
+    let mref = required(s.material.as_ref(), base, "material", what)?;
     let (mat_field, material) = materials.resolve(file, mref, f("material"))?;
     needs.check(&material.spec, mat_field)?;
     out.push(Surface {
@@ -946,19 +834,16 @@ fn resolve_material<'a, R: Real>(
             Some(spec) => (MATERIALS.key(name), Some(name.clone()), spec),
             None => {
                 let known: Vec<_> = file.materials.keys().map(|k| format!("\"{k}\"")).collect();
-                let fix = if known.is_empty() {
-                    "define it under \"materials\", or write the material in place".to_owned()
+                let name = name.clone();
+                let fault = if known.is_empty() {
+                    MaterialFault::NoSuchMaterial { name }
                 } else {
-                    format!(
-                        "use one of {}, or define it under \"materials\"",
-                        known.join(", ")
-                    )
+                    MaterialFault::NoSuchMaterialOf {
+                        name,
+                        known: known.join(", "),
+                    }
                 };
-                return Err(Invalid::new(
-                    field,
-                    format!("there is no material named \"{name}\""),
-                    fix,
-                ));
+                return Err(Invalid::of(field, fault));
             }
         },
     };
@@ -981,10 +866,9 @@ fn material<R: Real>(spec: &MaterialSpec, field: Field<'_>) -> Result<NamedMater
         Some(x) => {
             let n = number::<R>(x, f("shininess"))?;
             if n < R::ZERO {
-                return Err(Invalid::new(
+                return Err(Invalid::of(
                     f("shininess"),
-                    format!("{} is negative", show(x)),
-                    "the specular exponent n_s (Eq. 4.9) must be ≥ 0",
+                    MaterialFault::NegativeShininess { shininess: show(x) },
                 ));
             }
             n
@@ -1000,10 +884,9 @@ fn material<R: Real>(spec: &MaterialSpec, field: Field<'_>) -> Result<NamedMater
         Some(ReflectivitySpec::Same(_)) => match o_s {
             Some(s) => (Some(s), Some(ReflectivitySource::Specular)),
             None => {
-                return Err(Invalid::new(
+                return Err(Invalid::of(
                     f("reflectivity"),
-                    "is \"specular\" but the material has no specular colour",
-                    "give \"specular\", or give the reflectivity as [r, g, b]",
+                    MaterialFault::ReflectivityWithoutSpecular,
                 ))
             }
         },
@@ -1031,51 +914,20 @@ fn transmission<R: Real>(
     field: &Field<'_>,
 ) -> Result<Option<Transmission<R>>, Invalid> {
     let f = |name: &'static str| Field::Key(field, name);
-    use crate::report::messages::both;
     match (spec.transmissivity, spec.ior) {
         (None, None) => Ok(None),
-        (Some(_), None) => Err(Invalid::new(
-            f("ior"),
-            both(
-                "is missing, and the material has a transmissivity",
-                "falta, e o material tem uma transmissividade",
-            ),
-            both(
-                "give the index of refraction of the material's inside, e.g. \"ior\": 1.5 for \
-                 glass (the outside's is 1); Snell's law needs it to bend the transmitted ray",
-                "dê o índice de refração do interior do material, por exemplo \"ior\": 1.5 \
-                 para o vidro (o do exterior é 1); a lei de Snell precisa dele para desviar o \
-                 raio transmitido",
-            ),
-        )),
-        (None, Some(_)) => Err(Invalid::new(
+        (Some(_), None) => Err(Invalid::of(f("ior"), MaterialFault::IorMissing)),
+        (None, Some(_)) => Err(Invalid::of(
             f("transmissivity"),
-            both(
-                "is missing, and the material has an index of refraction",
-                "falta, e o material tem um índice de refração",
-            ),
-            both(
-                "give the transmissivity O_t as [r, g, b] (e.g. [0.9, 0.9, 0.9]), or remove \
-                 \"ior\": without O_t no ray is transmitted",
-                "dê a transmissividade O_t como [r, g, b] (por exemplo [0.9, 0.9, 0.9]), ou \
-                 retire \"ior\": sem O_t nenhum raio é transmitido",
-            ),
+            MaterialFault::TransmissivityMissing,
         )),
         (Some(o_t), Some(eta)) => {
             let o_t = color::<R>(o_t, f("transmissivity"), ColorRange::Material)?;
             let value = number::<R>(eta, f("ior"))?;
             if eta <= 0.0 || value <= R::ZERO {
-                return Err(Invalid::new(
+                return Err(Invalid::of(
                     f("ior"),
-                    both(
-                        &format!("{} is not a positive number", show(eta)),
-                        &format!("{} não é um número positivo", show(eta)),
-                    ),
-                    both(
-                        "an index of refraction is > 0 (1 for air, 1.33 for water, 1.5 for glass)",
-                        "um índice de refração é > 0 (1 para o ar, 1.33 para a água, 1.5 para o \
-                         vidro)",
-                    ),
+                    MaterialFault::IorNotPositive { ior: show(eta) },
                 ));
             }
             Ok(Some(Transmission { o_t, eta: value }))
@@ -1086,11 +938,9 @@ fn transmission<R: Real>(
 fn material_color<R: Real>(c: &ColorSpec, field: Field<'_>) -> Result<V3<R>, Invalid> {
     if let ColorSpec::Scaled(ScaledColor { k, color: o }) = c {
         if !(0.0..=1.0).contains(k) {
-            return Err(Invalid::new(
+            return Err(Invalid::of(
                 field.key("k"),
-                format!("{} is outside [0, 1]", show(*k)),
-                "the chapter's coefficients k_a, k_d, k_s lie in [0, 1] (Eq. 4.5, 4.7, 4.9); \
-                 give the product as one colour [r, g, b] if you mean something else",
+                MaterialFault::CoefficientOutside { k: show(*k) },
             ));
         }
         color::<R>(*o, field.key("color"), ColorRange::Material)?;
@@ -1108,18 +958,14 @@ enum ColorRange {
 fn color<R: Real>(c: Triple, field: Field<'_>, range: ColorRange) -> Result<V3<R>, Invalid> {
     let v = vector::<R>(c, field)?;
     if c.iter().any(|&x| x < 0.0) {
-        let what = match range {
-            ColorRange::Light => "a light's colour",
-            ColorRange::Material => "a material colour",
-            ColorRange::Background => "the background colour",
-        };
         // The numbers as the file writes them (2, not 2.0; 1e39, not 40 digits).
         let [r, g, b] = c.map(show);
-        return Err(Invalid::new(
-            field,
-            format!("{what} has a negative component: [{r}, {g}, {b}]"),
-            "colour components must be ≥ 0",
-        ));
+        let fault = match range {
+            ColorRange::Light => ColourFault::Light { r, g, b },
+            ColorRange::Material => ColourFault::Material { r, g, b },
+            ColorRange::Background => ColourFault::Background { r, g, b },
+        };
+        return Err(Invalid::of(field, fault));
     }
     Ok(v)
 }
@@ -1127,13 +973,16 @@ fn color<R: Real>(c: Triple, field: Field<'_>, range: ColorRange) -> Result<V3<R
 fn number<R: Real>(x: f64, field: Field<'_>) -> Result<R, Invalid> {
     let r = R::from_f64(x);
     if !x.is_finite() || !r.is_finite() {
-        return Err(Invalid::new(
+        let value = show(x);
+        return Err(Invalid::of(
             field,
-            format!("{} is not a finite {} number", show(x), R::NAME),
             if R::NAME == "f32" {
-                "use a number within ±3.4e38, or --precision f64"
+                NumberFault::NotFiniteF32 { value }
             } else {
-                "use a finite number"
+                NumberFault::NotFinite {
+                    value,
+                    precision: R::NAME,
+                }
             },
         ));
     }
@@ -1147,18 +996,23 @@ fn vector<R: Real>(a: Triple, field: Field<'_>) -> Result<V3<R>, Invalid> {
     Ok(V3::<R>::new(x, y, z))
 }
 
-fn direction<R: Real>(a: Triple, field: Field<'_>, what: &str) -> Result<GivenVector<R>, Invalid> {
+fn direction<R: Real>(
+    a: Triple,
+    field: Field<'_>,
+    of: DirectionOf,
+) -> Result<GivenVector<R>, Invalid> {
     let v = vector::<R>(a, field)?;
     match normalize::<R>(v) {
         // Its length is reported (and a length beyond the precision's range would be infinity).
-        Some(n) if !n.length.is_finite() => Err(Invalid::new(
+        Some(n) if !n.length.is_finite() => Err(Invalid::of(
             field,
-            format!("{what} is too long for {}: its length overflows", R::NAME),
             if R::NAME == "f32" {
-                "give a shorter vector in the same direction (only the direction is used), or use \
-                 --precision f64"
+                NumberFault::TooLongF32 { vector: of }
             } else {
-                "give a shorter vector in the same direction (only the direction is used)"
+                NumberFault::TooLong {
+                    vector: of,
+                    precision: R::NAME,
+                }
             },
         )),
         // A vector of length 1 within rounding is used as given, so that a direction written
@@ -1168,13 +1022,12 @@ fn direction<R: Real>(a: Triple, field: Field<'_>, what: &str) -> Result<GivenVe
             length: n.length,
             unit: if is_unit_length(n.length) { v } else { n.unit },
         }),
-        None => Err(Invalid::new(
+        None => Err(Invalid::of(
             field,
-            format!(
-                "{what} is the zero vector (in {}), which has no direction",
-                R::NAME
-            ),
-            "give a non-zero vector",
+            NumberFault::ZeroVector {
+                vector: of,
+                precision: R::NAME,
+            },
         )),
     }
 }

@@ -123,7 +123,7 @@ fn list(out: &mut String, nodes: &[Node], numbered: bool, lang: Lang) {
     let _ = writeln!(out, "</{tag}>");
 }
 
-fn shading(out: &mut String, sh: &Shading, lang: Lang, id: &str) {
+fn shading(out: &mut String, sh: &Shading, lang: Lang, id: &str, level: usize) {
     // The result first: the colour, large.
     let total = sh
         .total
@@ -154,7 +154,8 @@ fn shading(out: &mut String, sh: &Shading, lang: Lang, id: &str) {
         (Phrase::SecondaryRays, &sh.secondary, false),
     ] {
         if !steps.is_empty() {
-            let _ = writeln!(out, "<h3>{}</h3>", heading.get(lang));
+            let h = level + 1;
+            let _ = writeln!(out, "<h{h}>{}</h{h}>", heading.get(lang));
             list(out, &nest(steps), numbered, lang);
         }
     }
@@ -166,34 +167,41 @@ pub(crate) fn write_article(x: &Explanation, index: usize) -> String {
 }
 
 fn article(x: &Explanation, index: usize, heading: &str) -> String {
-    let mut out = String::new();
-    let _ = writeln!(out, "<article class=\"problem\" id=\"problem-{index}\">");
-    let _ = writeln!(
-        out,
-        "<h1>{}</h1>\n<p class=\"source\">{}</p>",
-        esc(heading),
-        esc(&x.source())
+    let mut out = format!("<article class=\"problem\" id=\"problem-{index}\">\n");
+    out.push_str(&head(heading, &x.source(), x.question.as_deref()));
+    out.push_str(&write_parts(x, index, 2));
+    out.push_str("</article>\n");
+    out
+}
+
+/// The head of a document: its title (`<h1>`), its source, and its question quoted.
+pub(crate) fn head(title: &str, source: &str, question: Option<&str>) -> String {
+    let mut out = format!(
+        "<h1>{}</h1>\n<p class=\"source\">{}</p>\n",
+        esc(title),
+        esc(source)
     );
-    if let Some(q) = &x.question {
+    if let Some(q) = question {
         let _ = writeln!(
             out,
             "<blockquote class=\"question\">{}</blockquote>",
             esc(q)
         );
     }
-    out.push_str(&write_parts(x, index));
     out
 }
 
 /// The findings, the ray and the parts of an explanation, without its title and question
-/// (a pixel's rays share their scene's); `index` makes its ids unique in the page.
-pub(crate) fn write_parts(x: &Explanation, index: usize) -> String {
+/// (a pixel's rays share their scene's), their headings at `level` (`<h2>` under an
+/// explanation's own `<h1>`); `index` makes its ids unique in the page.
+pub(crate) fn write_parts(x: &Explanation, index: usize, level: usize) -> String {
     let lang = x.lang;
+    let h = level;
     let mut out = String::new();
     if !x.findings.is_empty() {
         let _ = writeln!(
             out,
-            "<section class=\"findings\">\n<h2>{}</h2>\n<ul>",
+            "<section class=\"findings\">\n<h{h}>{}</h{h}>\n<ul>",
             Phrase::Findings.get(lang)
         );
         for f in &x.findings {
@@ -204,7 +212,7 @@ pub(crate) fn write_parts(x: &Explanation, index: usize) -> String {
     if let Some(ray) = &x.ray {
         let _ = writeln!(
             out,
-            "<section class=\"ray\">\n<h2>{}</h2>",
+            "<section class=\"ray\">\n<h{h}>{}</h{h}>",
             Phrase::Ray.get(lang)
         );
         list(&mut out, &nest(ray), false, lang);
@@ -214,7 +222,7 @@ pub(crate) fn write_parts(x: &Explanation, index: usize) -> String {
         let id = format!("diagram-{index}-{i}");
         let _ = writeln!(
             out,
-            "<section class=\"part\" id=\"part-{index}-{i}\">\n<h2>{}</h2>",
+            "<section class=\"part\" id=\"part-{index}-{i}\">\n<h{h}>{}</h{h}>",
             esc(&part.heading)
         );
         if let Some(e) = &part.explanation {
@@ -224,14 +232,13 @@ pub(crate) fn write_parts(x: &Explanation, index: usize) -> String {
             list(&mut out, &nest(ray), false, lang);
         }
         match &part.shading {
-            Some(sh) => shading(&mut out, sh, lang, &id),
+            Some(sh) => shading(&mut out, sh, lang, &id, level),
             None => {
                 let _ = writeln!(out, "<p>{}</p>", esc(Phrase::NothingToShade.get(lang)));
             }
         }
         out.push_str("</section>\n");
     }
-    out.push_str("</article>\n");
     out
 }
 

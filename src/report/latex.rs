@@ -164,19 +164,54 @@ fn list(out: &mut String, nodes: &[Node], numbered: bool, lang: Lang, depth: usi
     out.push_str(&format!("{pad}\\end{{{env}}}\n"));
 }
 
-fn block(out: &mut String, heading: Phrase, steps: &[Step], numbered: bool, lang: Lang) {
+/// The sectioning command of a heading of `level` (1 for a document's title, `section*`).
+pub(crate) fn sectioning(level: usize) -> &'static str {
+    match level {
+        0 | 1 => "section*",
+        2 => "subsection*",
+        3 => "subsubsection*",
+        4 => "paragraph*",
+        _ => "subparagraph*",
+    }
+}
+
+/// The run-in heading of a block of steps ("Given", "Steps") under a heading of `level`:
+/// `\paragraph` under a `\subsection*`, `\subparagraph` under a `\paragraph*`.
+fn run_in(level: usize) -> &'static str {
+    if level <= 3 {
+        "paragraph"
+    } else {
+        "subparagraph"
+    }
+}
+
+fn block(
+    out: &mut String,
+    heading: Phrase,
+    steps: &[Step],
+    numbered: bool,
+    lang: Lang,
+    level: usize,
+) {
     if steps.is_empty() {
         return;
     }
-    out.push_str(&format!("\\paragraph{{{}}}\n", heading.get(lang)));
+    out.push_str(&format!("\\{}{{{}}}\n", run_in(level), heading.get(lang)));
     list(out, &nest(steps), numbered, lang, 0);
 }
 
-fn shading(out: &mut String, sh: &Shading, lang: Lang) {
-    block(out, Phrase::Given, &sh.given, false, lang);
-    block(out, Phrase::Steps, &sh.steps, true, lang);
-    block(out, Phrase::Total, &sh.total, false, lang);
-    block(out, Phrase::SecondaryRays, &sh.secondary, false, lang);
+fn shading(out: &mut String, sh: &Shading, lang: Lang, level: usize) {
+    block(out, Phrase::Given, &sh.given, false, lang, level);
+    block(out, Phrase::Steps, &sh.steps, true, lang, level);
+    block(out, Phrase::Total, &sh.total, false, lang, level);
+    block(
+        out,
+        Phrase::SecondaryRays,
+        &sh.secondary,
+        false,
+        lang,
+        level,
+    );
     for d in &sh.diagrams {
         out.push_str(&super::diagram::tikz(d, lang));
     }
@@ -188,29 +223,37 @@ pub(crate) fn write_body(x: &Explanation) -> String {
 }
 
 fn body(x: &Explanation, heading: &str) -> String {
-    let mut out = String::new();
-    out.push_str(&format!("\\section*{{{}}}\n", escape(heading)));
-    out.push_str(&format!("\\noindent\\emph{{{}}}\n\n", escape(&x.source())));
-    if let Some(q) = &x.question {
+    let mut out = head(heading, &x.source(), x.question.as_deref());
+    out.push_str(&write_parts(x, 2));
+    out
+}
+
+/// The head of a document: its title (`\section*`), its source in italics, and its question
+/// quoted.
+pub(crate) fn head(title: &str, source: &str, question: Option<&str>) -> String {
+    let mut out = format!("\\{}{{{}}}\n", sectioning(1), escape(title));
+    out.push_str(&format!("\\noindent\\emph{{{}}}\n\n", escape(source)));
+    if let Some(q) = question {
         out.push_str(&format!(
             "\\begin{{quote}}\\raggedright\n{}\n\\end{{quote}}\n\n",
             escape(q)
         ));
     }
-    out.push_str(&write_parts(x));
     out
 }
 
 /// The findings, the ray and the parts of an explanation, without its title and question
-/// (a pixel's rays share their scene's). Ragged right: a step with a long value breaks its line
-/// early instead of running into the margin (the equation number stays at the right).
-pub(crate) fn write_parts(x: &Explanation) -> String {
+/// (a pixel's rays share their scene's), their headings at `level` (2 under an explanation's
+/// own title). Ragged right: a step with a long value breaks its line early instead of running
+/// into the margin (the equation number stays at the right).
+pub(crate) fn write_parts(x: &Explanation, level: usize) -> String {
     let lang = x.lang;
+    let h = sectioning(level);
     let mut out = String::new();
     out.push_str("\\begingroup\\raggedright\n");
     if !x.findings.is_empty() {
         out.push_str(&format!(
-            "\\subsection*{{{}}}\n\\begin{{itemize}}\n",
+            "\\{h}{{{}}}\n\\begin{{itemize}}\n",
             Phrase::Findings.get(lang)
         ));
         for f in &x.findings {
@@ -219,12 +262,12 @@ pub(crate) fn write_parts(x: &Explanation) -> String {
         out.push_str("\\end{itemize}\n\n");
     }
     if let Some(ray) = &x.ray {
-        out.push_str(&format!("\\subsection*{{{}}}\n", Phrase::Ray.get(lang)));
+        out.push_str(&format!("\\{h}{{{}}}\n", Phrase::Ray.get(lang)));
         list(&mut out, &nest(ray), false, lang, 0);
         out.push('\n');
     }
     for part in &x.parts {
-        out.push_str(&format!("\\subsection*{{{}}}\n", escape(&part.heading)));
+        out.push_str(&format!("\\{h}{{{}}}\n", escape(&part.heading)));
         if let Some(e) = &part.explanation {
             out.push_str(&format!("\\emph{{{}}}\n\n", escape(e)));
         }
@@ -232,7 +275,7 @@ pub(crate) fn write_parts(x: &Explanation) -> String {
             list(&mut out, &nest(ray), false, lang, 0);
         }
         match &part.shading {
-            Some(sh) => shading(&mut out, sh, lang),
+            Some(sh) => shading(&mut out, sh, lang, level),
             None => out.push_str(&format!("{}\n", escape(Phrase::NothingToShade.get(lang)))),
         }
         out.push('\n');

@@ -99,35 +99,48 @@ pub fn write_explanation(x: &Explanation) -> String {
 
 /// One explanation under `heading`; `index` makes its diagrams' ids unique in the document.
 fn explanation(x: &Explanation, heading: &str, index: usize) -> String {
-    let mut out = String::new();
-    out.push_str(&format!("## {}\n\n", escape(heading)));
-    out.push_str(&format!("*{}*\n\n", escape(&x.source())));
-    if let Some(q) = &x.question {
-        out.push_str(&format!("> {}\n\n", escape(q)));
-    }
-    out.push_str(&write_parts(x, index));
+    let mut out = head(heading, &x.source(), x.question.as_deref());
+    out.push_str(&write_parts(x, index, 2));
     out
 }
 
+/// The head of a document: its title (a level-1 heading, `##`), its source in italics, and
+/// its question quoted.
+pub(crate) fn head(title: &str, source: &str, question: Option<&str>) -> String {
+    let mut out = format!("{} {}\n\n", hashes(1), escape(title));
+    out.push_str(&format!("*{}*\n\n", escape(source)));
+    if let Some(q) = question {
+        out.push_str(&format!("> {}\n\n", escape(q)));
+    }
+    out
+}
+
+/// The marker of a heading of `level` (1 for a document's title, `##`).
+pub(crate) fn hashes(level: usize) -> String {
+    "#".repeat(level + 1)
+}
+
 /// The findings, the ray and the parts of an explanation, without its title and question
-/// (a pixel's rays share their scene's).
-pub(crate) fn write_parts(x: &Explanation, index: usize) -> String {
+/// (a pixel's rays share their scene's), their headings at `level` (2 under an explanation's
+/// own title).
+pub(crate) fn write_parts(x: &Explanation, index: usize, level: usize) -> String {
     let lang = x.lang;
+    let h = hashes(level);
     let mut out = String::new();
     if !x.findings.is_empty() {
-        out.push_str(&format!("### {}\n\n", Phrase::Findings.get(lang)));
+        out.push_str(&format!("{h} {}\n\n", Phrase::Findings.get(lang)));
         for f in &x.findings {
             out.push_str(&format!("- **!** {}\n", escape(f)));
         }
         out.push('\n');
     }
     if let Some(ray) = &x.ray {
-        out.push_str(&format!("### {}\n\n", Phrase::Ray.get(lang)));
+        out.push_str(&format!("{h} {}\n\n", Phrase::Ray.get(lang)));
         list(&mut out, &nest(ray), 0, false, lang);
         out.push('\n');
     }
     for (i, part) in x.parts.iter().enumerate() {
-        out.push_str(&format!("### {}\n\n", escape(&part.heading)));
+        out.push_str(&format!("{h} {}\n\n", escape(&part.heading)));
         if let Some(e) = &part.explanation {
             out.push_str(&format!("*{}*\n\n", escape(e)));
         }

@@ -3,13 +3,12 @@
 //! equivalent ray problem, the scene said once: as text, Markdown, LaTeX or HTML for people
 //! (in English or Portuguese, [`report`] then `write_*`) and JSON for scripts ([`document`]).
 
-use std::fmt::Write;
-
 use serde::Serialize;
 
-use super::explain::{plain, DataRow, Explanation};
+use super::explain::{DataRow, Explanation};
+use super::json;
+use super::layout::{self, Layout};
 use super::messages::pick;
-use super::{json, text};
 use crate::core::real::to_f64_array;
 use crate::core::{Real, Vector, V3};
 use crate::problem::Problem;
@@ -628,179 +627,53 @@ pub fn render_text<R: Real>(file: &str, problem: &Problem<R>, e: &PixelExplanati
     write_text(&report(file, problem, e, Lang::En))
 }
 
+/// A pixel's explanation through `layout`, walked once: the scene (level 1), each sample
+/// (level 2) and each of its rays (level 3), a ray's hit explained by the solver with its
+/// headings at level 4.
+pub fn write(layout: &dyn Layout, p: &PixelReport) -> String {
+    let mut out = layout.open(1, "pixel");
+    out.push_str(&layout.head(&p.title, &p.source, p.question.as_deref()));
+    out.push_str(&layout.data(&p.scene, p.lang));
+    out.push_str(&layout.paragraph(1, &p.settings));
+    let mut index = 0;
+    for sample in &p.samples {
+        out.push_str(&layout.heading(2, &sample.heading));
+        for ray in &sample.rays {
+            out.push_str(&layout.open(3, "ray"));
+            out.push_str(&layout.heading(3, &ray.heading));
+            out.push_str(&layout.list(3, &ray.origin));
+            if let Some(x) = &ray.explanation {
+                out.push_str(&layout.parts(x, 4, index));
+                index += 1;
+            }
+            out.push_str(&layout.list(3, &ray.after));
+            out.push_str(&layout.close(3));
+        }
+        out.push_str(&layout.strong(2, &sample.color));
+    }
+    out.push_str(&layout.strong(1, &p.result));
+    out.push_str(&layout.close(1));
+    layout.finish(out, &p.title, p.lang)
+}
+
 /// A pixel's explanation as text.
 pub fn write_text(p: &PixelReport) -> String {
-    let mut out = String::new();
-    let _ = writeln!(out, "{}  ({})", p.title, p.source);
-    if let Some(q) = &p.question {
-        for line in text::wrap(q, 92) {
-            let _ = writeln!(out, "  {line}");
-        }
-    }
-    for row in &p.scene {
-        let _ = writeln!(out, "  {}: {}", plain(&row.what), plain(&row.value));
-    }
-    for line in text::wrap(&p.settings, 92) {
-        let _ = writeln!(out, "{line}");
-    }
-    for sample in &p.samples {
-        let _ = writeln!(out, "\n{}", sample.heading);
-        for ray in &sample.rays {
-            let _ = writeln!(out, "\n  {}", ray.heading);
-            for l in &ray.origin {
-                let _ = writeln!(out, "    {l}");
-            }
-            if let Some(x) = &ray.explanation {
-                for line in text::write_parts(x, false).lines() {
-                    if line.is_empty() {
-                        out.push('\n');
-                    } else {
-                        let _ = writeln!(out, "    │ {line}");
-                    }
-                }
-            }
-            for l in &ray.after {
-                let _ = writeln!(out, "    {l}");
-            }
-        }
-        let _ = writeln!(out, "\n  {}", sample.color);
-    }
-    let _ = writeln!(out, "\n{}", p.result);
-    out
+    write(&layout::Text { color: false }, p)
 }
 
 /// A pixel's explanation as Markdown.
 pub fn write_markdown(p: &PixelReport) -> String {
-    use super::markdown::escape;
-    let mut out = format!("## {}\n\n*{}*\n\n", escape(&p.title), escape(&p.source));
-    if let Some(q) = &p.question {
-        let _ = writeln!(out, "> {}\n", escape(q));
-    }
-    out.push_str(&super::markdown::data_table(&p.scene, p.lang));
-    let _ = writeln!(out, "{}\n", escape(&p.settings));
-    let mut index = 0;
-    for sample in &p.samples {
-        let _ = writeln!(out, "### {}\n", escape(&sample.heading));
-        for ray in &sample.rays {
-            let _ = writeln!(out, "#### {}\n", escape(&ray.heading));
-            for l in &ray.origin {
-                let _ = writeln!(out, "- {}", escape(l));
-            }
-            out.push('\n');
-            if let Some(x) = &ray.explanation {
-                out.push_str(&super::markdown::write_parts(x, index).replace("\n### ", "\n##### "));
-                index += 1;
-            }
-            for l in &ray.after {
-                let _ = writeln!(out, "- {}", escape(l));
-            }
-            out.push('\n');
-        }
-        let _ = writeln!(out, "**{}**\n", escape(&sample.color));
-    }
-    let _ = writeln!(out, "**{}**", escape(&p.result));
-    out
+    write(&layout::Markdown, p)
 }
 
 /// A pixel's explanation as LaTeX: a document, or (`fragment`) its body.
 pub fn write_latex(p: &PixelReport, options: super::latex::LatexOptions) -> String {
-    use super::latex::escape;
-    let mut out = format!(
-        "\\section*{{{}}}\n\\noindent\\emph{{{}}}\n\n",
-        escape(&p.title),
-        escape(&p.source)
-    );
-    if let Some(q) = &p.question {
-        let _ = writeln!(
-            out,
-            "\\begin{{quote}}\\raggedright\n{}\n\\end{{quote}}\n",
-            escape(q)
-        );
-    }
-    out.push_str(&super::latex::data_table(&p.scene, p.lang));
-    let _ = writeln!(out, "{}\n", escape(&p.settings));
-    for sample in &p.samples {
-        let _ = writeln!(out, "\\subsection*{{{}}}", escape(&sample.heading));
-        for ray in &sample.rays {
-            let _ = writeln!(
-                out,
-                "\\subsubsection*{{{}}}\n\\begin{{itemize}}",
-                escape(&ray.heading)
-            );
-            for l in &ray.origin {
-                let _ = writeln!(out, "  \\item {}", escape(l));
-            }
-            out.push_str("\\end{itemize}\n");
-            if let Some(x) = &ray.explanation {
-                out.push_str(
-                    &super::latex::write_parts(x)
-                        .replace("\\subsection*{", "\\paragraph*{")
-                        .replace("\\paragraph{", "\\subparagraph{"),
-                );
-            }
-            out.push_str("\\begin{itemize}\n");
-            for l in &ray.after {
-                let _ = writeln!(out, "  \\item {}", escape(l));
-            }
-            out.push_str("\\end{itemize}\n");
-        }
-        let _ = writeln!(out, "\\textbf{{{}}}\n", escape(&sample.color));
-    }
-    let _ = writeln!(out, "\\textbf{{{}}}", escape(&p.result));
-    super::latex::wrap(&out, options, p.lang)
+    write(&layout::Latex(options), p)
 }
 
 /// A pixel's explanation as HTML: a page, or (`fragment`) its body.
 pub fn write_html(p: &PixelReport, options: super::html::HtmlOptions) -> String {
-    use super::html::esc;
-    let mut out = format!(
-        "<article class=\"pixel\">\n<h1>{}</h1>\n<p class=\"source\">{}</p>\n",
-        esc(&p.title),
-        esc(&p.source)
-    );
-    if let Some(q) = &p.question {
-        let _ = writeln!(
-            out,
-            "<blockquote class=\"question\">{}</blockquote>",
-            esc(q)
-        );
-    }
-    out.push_str(&super::html::data_table(&p.scene, p.lang));
-    let _ = writeln!(out, "<p>{}</p>", esc(&p.settings));
-    let mut index = 0;
-    for sample in &p.samples {
-        let _ = writeln!(out, "<h2>{}</h2>", esc(&sample.heading));
-        for ray in &sample.rays {
-            let _ = writeln!(
-                out,
-                "<section class=\"ray\">\n<h3>{}</h3>\n<ul>",
-                esc(&ray.heading)
-            );
-            for l in &ray.origin {
-                let _ = writeln!(out, "<li>{}</li>", esc(l));
-            }
-            out.push_str("</ul>\n");
-            if let Some(x) = &ray.explanation {
-                out.push_str(&super::html::write_parts(x, index));
-                index += 1;
-            }
-            out.push_str("<ul>\n");
-            for l in &ray.after {
-                let _ = writeln!(out, "<li>{}</li>", esc(l));
-            }
-            out.push_str("</ul>\n</section>\n");
-        }
-        let _ = writeln!(out, "<p><strong>{}</strong></p>", esc(&sample.color));
-    }
-    let _ = writeln!(
-        out,
-        "<p><strong>{}</strong></p>\n</article>",
-        esc(&p.result)
-    );
-    if options.fragment {
-        return out;
-    }
-    super::html::page(&esc(&p.title), &out, p.lang)
+    write(&layout::Html(options), p)
 }
 
 /// The JSON document.

@@ -7,7 +7,7 @@
 use std::fmt::Write;
 
 use super::document::Document;
-use super::explain::{explain, plain, Explanation, Inline, Shading, Step};
+use super::explain::{explain, plain, DataRow, Explanation, Inline, Shading, Step};
 use super::messages::Phrase;
 use crate::core::Real;
 use crate::problem::Problem;
@@ -60,15 +60,56 @@ pub fn write_explanation(x: &Explanation, color: bool) -> String {
 }
 
 fn explanation(x: &Explanation, heading: &str, color: bool) -> String {
+    let mut out = head(heading, &x.source(), x.question.as_deref(), color);
+    out.push_str(&write_parts(x, color));
+    out
+}
+
+/// The head of a document: its title (bold when `color`) and source on one line, then its
+/// question, indented.
+pub(crate) fn head(title: &str, source: &str, question: Option<&str>, color: bool) -> String {
     let style = Style { on: color };
-    let mut out = String::new();
-    let _ = writeln!(out, "{}  ({})", style.bold(heading), x.source());
-    if let Some(q) = &x.question {
+    let mut out = format!("{}  ({source})\n", style.bold(title));
+    if let Some(q) = question {
         for line in wrap(q, 92) {
             let _ = writeln!(out, "  {line}");
         }
     }
-    out.push_str(&write_parts(x, color));
+    out
+}
+
+/// A problem's data, a row a line: `  what: value`.
+pub(crate) fn data(rows: &[DataRow]) -> String {
+    let mut out = String::new();
+    for row in rows {
+        let _ = writeln!(out, "  {}: {}", plain(&row.what), plain(&row.value));
+    }
+    out
+}
+
+/// Text of a heading of `level` (1 for a document's title, 2 for its sections): a blank line,
+/// then the heading indented two spaces a level below 2, bold when `color`.
+pub(crate) fn heading(level: usize, text: &str, color: bool) -> String {
+    let indent = 2 * level.saturating_sub(2);
+    format!("\n{:indent$}{}\n", "", Style { on: color }.bold(text))
+}
+
+/// The explanation's parts under a heading of `level - 1`: as [`write_parts`] writes them
+/// at level 2, and below that each line set off by a bar, indented as the headings of `level`.
+pub(crate) fn parts(x: &Explanation, level: usize, color: bool) -> String {
+    let body = write_parts(x, color);
+    if level <= 2 {
+        return body;
+    }
+    let indent = 2 * (level - 2);
+    let mut out = String::new();
+    for line in body.lines() {
+        if line.is_empty() {
+            out.push('\n');
+        } else {
+            let _ = writeln!(out, "{:indent$}│ {line}", "");
+        }
+    }
     out
 }
 
@@ -178,9 +219,7 @@ pub fn write_document(doc: &Document, color: bool) -> String {
                     let _ = writeln!(b, "  {line}");
                 }
             }
-            for row in &x.data {
-                let _ = writeln!(b, "  {}: {}", plain(&row.what), plain(&row.value));
-            }
+            b.push_str(&data(&x.data));
             blocks.push(b);
         }
     }

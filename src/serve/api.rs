@@ -28,12 +28,14 @@ use axum::Router;
 use serde::Deserialize;
 use serde_json::value::RawValue;
 
+use super::faults::{ApiText, Items, TooMany};
 use super::log::{problem_hash, AnswerEntry};
 use super::Shared;
 use crate::check;
 use crate::core::Precision;
 use crate::problem::{ProblemError, Source};
 use crate::text::lang::Lang;
+use crate::text::{Echo, Message};
 
 /// The name a problem sent with a request has in messages and in the `file` field.
 pub(crate) const PROBLEM_NAME: &str = "problem";
@@ -116,14 +118,14 @@ fn solved(state: &Shared, headers: &HeaderMap, body: &Bytes) -> Result<Response,
                 StatusCode::BAD_REQUEST,
                 "usage",
                 Some("precision"),
-                format!(
-                    "precision: \"{}\" is not a precision: give \"f64\" (the default) or \"f32\"",
-                    check::answer::shorten(other, 40)
-                ),
+                ApiText::NotAPrecision {
+                    value: Echo::new(other, 40),
+                }
+                .text(lang),
             ))
         }
     };
-    let problem = Problem::of(state, request.problem, request.exercise.as_deref())?;
+    let problem = Problem::of(state, request.problem, request.exercise.as_deref(), lang)?;
     let source = problem.source();
     if let Err(e) = problem.admit(state) {
         return Err(problem_error(&e, source.name(), lang));
@@ -155,7 +157,7 @@ fn checked(state: &Shared, headers: &HeaderMap, body: &Bytes) -> Result<Response
                 StatusCode::BAD_REQUEST,
                 "usage",
                 Some("scale"),
-                "scale: give 1 (components on [0, 1], the default) or 255 (8-bit integers)".into(),
+                ApiText::NotAScale.text(lang),
             ))
         }
     };
@@ -181,7 +183,7 @@ fn checked(state: &Shared, headers: &HeaderMap, body: &Bytes) -> Result<Response
             ))
         }
     };
-    let problem = Problem::of(state, request.problem, request.exercise.as_deref())?;
+    let problem = Problem::of(state, request.problem, request.exercise.as_deref(), lang)?;
     let source = problem.source();
     if let Err(e) = problem.admit(state) {
         return Err(problem_error(&e, source.name(), lang));
@@ -216,7 +218,7 @@ fn checked(state: &Shared, headers: &HeaderMap, body: &Bytes) -> Result<Response
             StatusCode::INTERNAL_SERVER_ERROR,
             "internal",
             None,
-            "nothing was checked".into(),
+            ApiText::NothingChecked.text(lang),
         ));
     };
     if let Some(log) = &state.answers {
@@ -264,11 +266,12 @@ enum Problem<'a> {
 }
 
 impl<'a> Problem<'a> {
-    /// The problem of `problem` or `exercise` (exactly one of them).
+    /// The problem of `problem` or `exercise` (exactly one of them); a refusal in `lang`.
     fn of(
         state: &'a super::State,
         problem: Option<&'a RawValue>,
         exercise: Option<&str>,
+        lang: Lang,
     ) -> Result<Problem<'a>, Response> {
         match (problem, exercise) {
             (Some(p), None) => Ok(Problem::Sent(p.get())),
@@ -287,29 +290,24 @@ impl<'a> Problem<'a> {
                         StatusCode::NOT_FOUND,
                         "usage",
                         Some("exercise"),
-                        format!(
-                            "exercise: this server has no exercise \"{}\"; it has {} (GET \
-                             /api/exercises lists them)",
-                            check::answer::shorten(id, 40),
-                            ids.join(", ")
-                        ),
+                        ApiText::NoSuchExercise {
+                            id: Echo::new(id, 40),
+                            ids: ids.join(", "),
+                        }
+                        .text(lang),
                     )
                 }),
             (Some(_), Some(_)) => Err(error(
                 StatusCode::BAD_REQUEST,
                 "usage",
                 Some("exercise"),
-                "give either \"problem\" (a problem file's JSON) or \"exercise\" (the id of one \
-                 of this server's exercises), not both"
-                    .into(),
+                ApiText::ProblemAndExercise.text(lang),
             )),
             (None, None) => Err(error(
                 StatusCode::BAD_REQUEST,
                 "usage",
                 Some("problem"),
-                "the request names no problem: give \"problem\" (a problem file's JSON, such as \
-                 {\"problem\": {\"lights\": […], …}}) or \"exercise\" (such as \"4.2\")"
-                    .into(),
+                ApiText::NoProblem.text(lang),
             )),
         }
     }
@@ -350,22 +348,24 @@ impl<'a> Problem<'a> {
             return Ok(());
         };
         let limits = &state.limits;
-        let over = |what: &str, n: usize, max: usize| {
-            crate::problem::Invalid::new(
-                what.to_owned(),
-                format!("{n} {what} are more than the {max} this server solves in one request"),
-                format!(
-                    "give at most {max} {what}, or solve the problem with the phong command, \
-                     which has no such limit"
-                ),
-            )
-            .at(source.name())
+        let over = |field: &str, what: Items, n: usize, max: usize| {
+            crate::problem::Invalid::of(field, TooMany::Items { n, what, max }).at(source.name())
         };
         if file.lights.len() > limits.lights {
-            return Err(over("lights", file.lights.len(), limits.lights));
+            return Err(over(
+                "lights",
+                Items::Lights,
+                file.lights.len(),
+                limits.lights,
+            ));
         }
         if file.surfaces.len() > limits.surfaces {
-            return Err(over("surfaces", file.surfaces.len(), limits.surfaces));
+            return Err(over(
+                "surfaces",
+                Items::Surfaces,
+                file.surfaces.len(),
+                limits.surfaces,
+            ));
         }
         Ok(())
     }
@@ -379,11 +379,12 @@ const CHECK_SHAPE: &str = "{\"problem\": {…a problem file…}, \"answer\": \"0
                            \"steps\": {\"cos_theta\": \"0.98995\"}} or {\"exercise\": \"4.2\", …}";
 
 /// The request's JSON body read into `T`: 415 when it is not JSON's content type, 400 when it
-/// is not the API's JSON (the message names the line, the column and what was expected).
+/// is not the API's JSON (the message names the line, the column and what was expected). The
+/// request's `lang` is not read yet: these refusals are in English.
 fn envelope<'a, T: Deserialize<'a>>(
     headers: &HeaderMap,
     body: &'a [u8],
-    shape: &str,
+    shape: &'static str,
 ) -> Result<T, Response> {
     let json = headers
         .get(header::CONTENT_TYPE)
@@ -398,10 +399,7 @@ fn envelope<'a, T: Deserialize<'a>>(
             StatusCode::UNSUPPORTED_MEDIA_TYPE,
             "usage",
             None,
-            format!(
-                "the request body must be JSON, sent with the header Content-Type: \
-                 application/json, such as {shape}"
-            ),
+            ApiText::NotJson { shape }.text(Lang::En),
         ));
     }
     let text = std::str::from_utf8(body).map_err(|e| {
@@ -409,14 +407,14 @@ fn envelope<'a, T: Deserialize<'a>>(
             StatusCode::BAD_REQUEST,
             "syntax",
             None,
-            format!(
-                "the request body is not UTF-8 text (byte {} is not): JSON is UTF-8 text",
-                e.valid_up_to()
-            ),
+            ApiText::NotUtf8 {
+                byte: e.valid_up_to(),
+            }
+            .text(Lang::En),
         )
     })?;
     let refused = |field: Option<String>, inner: &serde_json::Error| {
-        let message = match &field {
+        let reason = match &field {
             Some(f) => format!("{f}: {inner}"),
             None => inner.to_string(),
         };
@@ -424,7 +422,7 @@ fn envelope<'a, T: Deserialize<'a>>(
             StatusCode::BAD_REQUEST,
             "syntax",
             field.as_deref(),
-            format!("the request is not the API's JSON: {message}. Fix: send {shape}"),
+            ApiText::NotTheApis { reason, shape }.text(Lang::En),
         )
     };
     if !text.trim_start().starts_with('{') {
@@ -432,7 +430,7 @@ fn envelope<'a, T: Deserialize<'a>>(
             StatusCode::BAD_REQUEST,
             "syntax",
             None,
-            format!("the request body must be one JSON object, such as {shape}"),
+            ApiText::NotAnObject { shape }.text(Lang::En),
         ));
     }
     let mut de = serde_json::Deserializer::from_str(text);
@@ -469,10 +467,10 @@ fn broken_problem(text: &str) -> Option<Response> {
 
 /// Whether a syntax error is only the rest of the envelope after the problem.
 fn is_trailing(e: &ProblemError) -> bool {
-    matches!(e, ProblemError::Syntax { field: None, .. } if e.message().starts_with("trailing characters"))
+    e.is_trailing()
 }
 
-/// The `lang` of a request: English unless `"pt"`.
+/// The `lang` of a request: English unless `"pt"` (a code that is none is refused in English).
 fn lang(text: Option<&str>) -> Result<Lang, Response> {
     match text {
         None => Ok(Lang::En),
@@ -481,23 +479,25 @@ fn lang(text: Option<&str>) -> Result<Lang, Response> {
                 StatusCode::BAD_REQUEST,
                 "usage",
                 Some("lang"),
-                format!(
-                    "lang: \"{}\" is not a language: give \"en\" (the default) or \"pt\"",
-                    check::answer::shorten(code, 40)
-                ),
+                ApiText::NotALanguage {
+                    code: Echo::new(code, 40),
+                }
+                .text(Lang::En),
             )
         }),
     }
 }
 
-/// A problem that cannot be solved, as `phong solve --format json` writes it (422).
+/// A problem that cannot be solved, as `phong solve --format json` writes it (422), its
+/// message in `lang`.
 fn problem_error(e: &ProblemError, name: &Path, lang: Lang) -> Response {
     let mut doc = crate::report::file::error_json(name, e);
-    translate_error(&mut doc["error"], lang);
+    doc["error"]["message"] = serde_json::Value::String(e.text(lang));
     json_response(StatusCode::UNPROCESSABLE_ENTITY, &doc)
 }
 
-/// An error object's message in `lang`, where the CLI has the sentence in it.
+/// Transitional: an error object of `phong check`'s document (its message an English
+/// sentence, check::report::Failure) in `lang`, by the old table.
 fn translate_error(error: &mut serde_json::Value, lang: Lang) {
     if let Some(m) = error.get_mut("message") {
         if let Some(text) = m.as_str() {

@@ -16,6 +16,7 @@
 
 pub(crate) mod api;
 pub(crate) mod catalogue;
+pub(crate) mod faults;
 pub(crate) mod limits;
 pub(crate) mod log;
 pub(crate) mod pages;

@@ -4,6 +4,7 @@
 //! has a surprising property, the result of its likely intended reading, labelled as such.
 
 mod conditioning;
+pub(crate) mod faults;
 mod file;
 mod findings;
 mod rounding;
@@ -19,7 +20,7 @@ use crate::core::{
 use crate::geometry::{Aggregate, Ray, Shape, SmoothNormal, SurfaceHit};
 use crate::problem::validate::{light_label, show};
 use crate::problem::{GivenVector, Invalid, NamedMaterial, Problem, SurfaceSource, Target};
-use crate::report::messages::both;
+use faults::{Overflowing, Smaller, SolveFault};
 
 pub use file::{solve_file, solve_source};
 pub use findings::{ConeEdge, Finding, FindingData, GateDecision};
@@ -346,14 +347,7 @@ pub(crate) fn solve_with<R: Real, F: Formulas>(
                 true,
             );
         }
-        Target::Scene { .. } => {
-            return Err(Invalid::new(
-                "ray",
-                "this file is a scene (a camera and surfaces): it has no point or ray to solve",
-                "render it with `phong render FILE -o image.png` (and explain one pixel with \
-                 --explain-pixel X,Y), or add a \"ray\" to solve one ray",
-            ))
-        }
+        Target::Scene { .. } => return Err(Invalid::of("ray", SolveFault::Scene)),
     }
     let query = findings::Query {
         viewer: problem.viewer,
@@ -613,14 +607,9 @@ pub(crate) fn solve_ray_with<R: Real, F: Formulas>(
     };
     // The nearest hit in front of the origin, Section 4.4 (t > 0).
     let unresolved = |i: usize| {
-        Invalid::new(
+        Invalid::of(
             format!("surfaces[{}]", surfaces[i].source.index),
-            format!(
-                "the hit point cannot be told from the sphere's centre in {}: the radius is \
-                 below the rounding of the coordinates",
-                R::NAME
-            ),
-            "use --precision f64, a larger radius, or coordinates nearer the origin",
+            SolveFault::HitAtCentre { precision: R::NAME },
         )
     };
     let mut starts_on_surface = false;
@@ -758,36 +747,12 @@ fn evaluate<R: Real, F: Formulas, Vis: Visibility<R>>(
     // The viewing direction V, from the eye to the point (Eq. 4.10).
     let viewer = match (viewer, p, ray) {
         (Some(e), Some(p), _) => {
-            let v = between::<R>(e, p).ok_or_else(|| {
-                Invalid::new(
-                    "viewer",
-                    both(
-                        "the viewer is exactly at the point being shaded, so V is undefined",
-                        "o observador está exatamente no ponto iluminado, e V fica indefinido",
-                    ),
-                    both(
-                        "move the viewer away from the point",
-                        "afaste o observador do ponto",
-                    ),
-                )
-            })?;
+            let v = between::<R>(e, p)
+                .ok_or_else(|| Invalid::of("viewer", SolveFault::ViewerAtPoint))?;
             if !v.length.is_finite() {
-                return Err(Invalid::new(
+                return Err(Invalid::of(
                     "viewer",
-                    both(
-                        &format!(
-                            "the distance from the viewer to the point overflows {}",
-                            R::NAME
-                        ),
-                        &format!(
-                            "a distância do observador ao ponto passa do alcance de {}",
-                            R::NAME
-                        ),
-                    ),
-                    both(
-                        "bring the coordinates into a smaller range",
-                        "use coordenadas de ordem de grandeza menor",
-                    ),
+                    SolveFault::ViewerTooFar { precision: R::NAME },
                 ));
             }
             Some((Some(e), ViewSource::Viewer, v.unit))
@@ -817,18 +782,9 @@ fn evaluate<R: Real, F: Formulas, Vis: Visibility<R>>(
     if let Some(p) = p {
         for (l, info) in set.lights.iter().zip(&problem.light_info) {
             if l.position() == Some(p) {
-                return Err(Invalid::new(
+                return Err(Invalid::of(
                     format!("lights[{}].position", info.file_index),
-                    both(
-                        "the light is exactly at the point being shaded, so \
-                         L = (P − P_l)/‖P − P_l‖ (Eq. 4.1) is undefined",
-                        "a fonte de luz está exatamente no ponto iluminado, e \
-                         L = (P − P_l)/‖P − P_l‖ (Eq. 4.1) fica indefinido",
-                    ),
-                    both(
-                        "move the light or the point",
-                        "mude de lugar a fonte de luz ou o ponto",
-                    ),
+                    SolveFault::LightAtPoint,
                 ));
             }
         }
@@ -897,9 +853,9 @@ fn check_finite<R: Real>(
     lights: &[LightTerm<R>],
 ) -> Result<(), Invalid> {
     let fix = if R::NAME == "f32" {
-        "use --precision f64, or bring the numbers into a smaller range"
+        Smaller::Precision
     } else {
-        "bring the numbers (colours, distances, coordinates) into a smaller range"
+        Smaller::Numbers
     };
     for (t, info) in lights.iter().zip(&problem.light_info) {
         let a = &t.arrival;
@@ -911,42 +867,45 @@ fn check_finite<R: Real>(
                 .map_or(String::new(), |d| format!(" (d = {})", show(d.to_f64())))
         };
         let what = if !a.distance.is_none_or(|d| d.is_finite()) {
-            Some(format!("the distance from {} to the point", name()))
+            Some(Overflowing::Distance { light: name() })
         } else if !a.falloff_factor.is_finite() {
-            Some(format!(
-                "the falloff factor 1/d^f of {}{}",
-                name(),
-                distance()
-            ))
+            Some(Overflowing::Falloff {
+                light: name(),
+                distance: distance(),
+            })
         } else if !a.i_l.is_finite() {
-            Some(format!(
-                "the light I_l arriving from {}{}",
-                name(),
-                distance()
-            ))
+            Some(Overflowing::Arriving {
+                light: name(),
+                distance: distance(),
+            })
         } else if !(t.diffuse.is_none_or(|d| d.is_finite())
             && t.diffuse_literal.is_none_or(|d| d.is_finite())
             && t.specular.term.is_finite()
             && t.specular.literal.is_none_or(|d| d.is_finite()))
         {
-            Some(format!("the diffuse or specular term of {}", name()))
+            Some(Overflowing::Terms { light: name() })
         } else {
             None
         };
         if let Some(what) = what {
-            return Err(Invalid::new(
+            return Err(Invalid::of(
                 format!("lights[{}]", info.file_index),
-                format!("{what} overflows {}", R::NAME),
-                fix,
+                SolveFault::LightOverflows {
+                    what,
+                    precision: R::NAME,
+                    fix: fix.clone(),
+                },
             ));
         }
     }
     let literal_ok = shade.literal.is_none_or(|l| l.is_finite());
     if !shade.color.is_finite() || !literal_ok {
-        return Err(Invalid::new(
+        return Err(Invalid::of(
             "lights",
-            format!("the total colour overflows {}", R::NAME),
-            fix,
+            SolveFault::TotalOverflows {
+                precision: R::NAME,
+                fix,
+            },
         ));
     }
     Ok(())

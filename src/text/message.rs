@@ -8,6 +8,9 @@
 //! with its length said in that language).
 
 use std::fmt;
+use std::sync::Arc;
+
+use serde::Serialize;
 
 use super::lang::Lang;
 use super::number::num;
@@ -130,6 +133,108 @@ impl Show for Echo {
             (Some(n), Lang::En) => write!(f, "{}… ({n} characters)", self.head),
             (Some(n), Lang::Pt) => write!(f, "{}… ({n} caracteres)", self.head),
         }
+    }
+}
+
+/// A sentence kept as a value and shared (a check's failure carried into reports and
+/// documents, a step's error inside a command-line error): rendered in a language where it is shown, in English in the JSON (`Display`,
+/// `Serialize`). Two are equal when their English is.
+#[derive(Clone)]
+pub struct Said(Arc<dyn Message + Send + Sync>);
+
+impl Said {
+    /// `message`, kept.
+    pub fn new(message: impl Message + Send + Sync + 'static) -> Said {
+        Said(Arc::new(message))
+    }
+
+    /// `message` after `at` and a colon (`FILE: --answer: …`): `at` names files and flags, the
+    /// same in every language.
+    pub fn at(at: impl Into<String>, message: impl Message + Send + Sync + 'static) -> Said {
+        Said::new(At {
+            at: at.into(),
+            message: Said::new(message),
+        })
+    }
+}
+
+impl Message for Said {
+    fn text(&self, lang: Lang) -> String {
+        self.0.text(lang)
+    }
+}
+
+impl std::fmt::Debug for Said {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        self.0.fmt(f)
+    }
+}
+
+impl std::fmt::Display for Said {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(&self.text(Lang::En))
+    }
+}
+
+impl PartialEq for Said {
+    fn eq(&self, other: &Said) -> bool {
+        self.text(Lang::En) == other.text(Lang::En)
+    }
+}
+
+impl Serialize for Said {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        s.serialize_str(&self.text(Lang::En))
+    }
+}
+
+/// A sentence after where it is about (`FILE: --answer: SENTENCE`).
+#[derive(Debug)]
+struct At {
+    at: String,
+    message: Said,
+}
+
+impl Message for At {
+    fn text(&self, lang: Lang) -> String {
+        format!("{}: {}", self.at, self.message.text(lang))
+    }
+}
+
+impl Default for Said {
+    /// Nothing said (the empty sentence).
+    fn default() -> Said {
+        Said::new(Nothing)
+    }
+}
+
+/// The empty sentence.
+#[derive(Debug)]
+struct Nothing;
+
+impl Message for Nothing {
+    fn text(&self, _: Lang) -> String {
+        String::new()
+    }
+}
+
+/// What is wrong, of a fault, as a sentence of its own.
+#[derive(Debug)]
+pub struct WhatOf<F>(pub F);
+
+impl<F: Fault> Message for WhatOf<F> {
+    fn text(&self, lang: Lang) -> String {
+        self.0.what(lang)
+    }
+}
+
+/// What would fix it, of a fault, as a sentence of its own.
+#[derive(Debug)]
+pub struct FixOf<F>(pub F);
+
+impl<F: Fault> Message for FixOf<F> {
+    fn text(&self, lang: Lang) -> String {
+        self.0.fix(lang)
     }
 }
 

@@ -11,12 +11,14 @@
 //! translation does not compile. Every variant of every message enum is walked in both
 //! languages by this module's tests (the enums derive `strum::EnumIter` under test).
 
+pub mod io;
 pub mod lang;
 pub mod message;
 pub mod number;
 
+pub use io::IoCause;
 pub use lang::Lang;
-pub use message::{Echo, Fault, In, Message, Num, Show};
+pub use message::{Echo, Fault, FixOf, In, Message, Num, Said, Show, WhatOf};
 
 #[cfg(test)]
 mod walk;

@@ -49,10 +49,10 @@ fn faults<T: Fault + IntoEnumIterator>(enum_name: &str) -> Vec<Rendered> {
 /// Lists every message enum (`sentences` for `messages!`, `faults` for `faults!`), as the
 /// renderings of all their variants and as the names the source test compares with.
 macro_rules! walked {
-    ($($kind:ident $path:path;)*) => {
+    ($($(#[$cfg:meta])* $kind:ident $path:path;)*) => {
         fn every_rendering() -> Vec<Rendered> {
             let mut all = Vec::new();
-            $(all.extend($kind::<$path>(stringify!($path)));)*
+            $($(#[$cfg])* all.extend($kind::<$path>(stringify!($path)));)*
             all
         }
         const WALKED: &[&str] = &[$(stringify!($path)),*];
@@ -62,11 +62,58 @@ macro_rules! walked {
 walked! {
     sentences crate::text::number::NotANumber;
     faults crate::problem::faults::TargetFault;
+    faults crate::problem::faults::CameraFault;
+    faults crate::problem::faults::SettingFault;
+    faults crate::problem::faults::LightFault;
+    faults crate::problem::faults::KindFault;
+    faults crate::problem::faults::SurfaceFault;
+    faults crate::problem::faults::MaterialFault;
+    faults crate::problem::faults::ColourFault;
+    faults crate::problem::faults::NumberFault;
+    sentences crate::problem::faults::DirectionOf;
+    sentences crate::cli::parse::Whole;
+    sentences crate::cli::parse::BadValue;
+    faults crate::cli::faults::CliFault;
+    sentences crate::cli::faults::CliText;
+    sentences crate::cli::usage::UsageText;
+    faults crate::tradeoff::sweep::SweepFault;
+    sentences crate::export::pov::Colour;
+    faults crate::export::pov::PovFault;
+    faults crate::check::answer::AnswerFault;
+    faults crate::check::steps::StepFault;
+    faults crate::check::steps::StepMissing;
+    sentences crate::check::CheckMessage;
+    sentences crate::check::rubric::RubricError;
+    sentences crate::check::Slip;
+    sentences crate::problem::syntax::Found;
+    sentences crate::problem::syntax::Expected;
+    sentences crate::problem::syntax::JsonKind;
+    sentences crate::problem::syntax::Parse;
+    sentences crate::problem::syntax::Purpose;
+    sentences crate::problem::syntax::SyntaxFix;
+    sentences crate::problem::reading::Input;
+    sentences crate::problem::reading::Counted;
+    sentences crate::problem::reading::Limit;
+    sentences crate::problem::reading::ReadFix;
+    faults crate::problem::reading::ReadFault;
+    faults crate::problem::reading::SourceFault;
+    faults crate::problem::mesh_faults::MeshFault;
+    faults crate::solve::faults::SolveFault;
+    sentences crate::solve::faults::Overflowing;
+    sentences crate::solve::faults::Smaller;
+    faults crate::tracer::faults::TracerFault;
+    #[cfg(feature = "serve")]
+    sentences crate::serve::faults::ApiText;
+    #[cfg(feature = "serve")]
+    sentences crate::serve::faults::Items;
+    #[cfg(feature = "serve")]
+    faults crate::serve::faults::TooMany;
+    #[cfg(feature = "serve")]
+    sentences crate::serve::faults::StartText;
     sentences crate::check::grade::NotCsv;
     sentences crate::check::grade::FieldsHint;
     sentences crate::check::grade::RowReason;
     faults crate::check::grade::ExerciseFault;
-    faults crate::check::grade::SubmissionsFault;
     faults crate::check::grade::HeaderFault;
     sentences crate::check::grade::ExerciseNote;
     sentences crate::check::moodle::MoodleError;
@@ -74,10 +121,11 @@ walked! {
 
 /// English words that Portuguese never uses: one of them in a Portuguese rendering (outside
 /// quotes and backticks, where a file's own field names stand) is an untranslated fragment.
+/// ("no" is not one: Portuguese says "no ponto", "no máximo".)
 const ENGLISH_ONLY: &[&str] = &[
     "the", "is", "are", "and", "not", "with", "give", "write", "must", "cannot", "Fix", "of",
     "which", "should", "an", "has", "have", "from", "to", "by", "it", "this", "that", "be", "or",
-    "for", "only", "than", "when", "where", "there", "its", "was", "were", "no",
+    "for", "only", "than", "when", "where", "there", "its", "was", "were",
 ];
 
 /// `text` without what stands between quotes or backticks (a field's name, an example).

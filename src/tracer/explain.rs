@@ -3,6 +3,7 @@
 //! problem, so a student reads a pixel the way they read an exercise.
 
 use super::camera::CameraRays;
+use super::faults::TracerFault;
 use super::render::{clamped, to_rgb8};
 use super::sampler::sample;
 use super::trace::{Counts, RayRecord, Scene, Tracer};
@@ -143,25 +144,18 @@ fn overflowed<R: Real>(problem: &Problem<R>, rays: &[RayExplanation<R>]) -> Inva
     let transmitted = rays
         .get(k)
         .is_some_and(|r| r.record.kind == super::trace::RayKind::Transmission);
-    let (adds, fix) = if transmitted {
-        (
-            "O_t·C_t (Section 4.4)",
-            "bring the transmissivity O_t and the colours into a smaller range (a transmissivity \
-             lies in [0, 1])",
-        )
+    let fault = if transmitted {
+        TracerFault::TransmittedOverflows {
+            level,
+            precision: R::NAME,
+            material,
+        }
     } else {
-        (
-            "O_r·C_r (Eq. 4.17)",
-            "bring the reflectivity O_r and the colours into a smaller range (a reflectivity lies \
-             in [0, 1])",
-        )
+        TracerFault::ReflectedOverflows {
+            level,
+            precision: R::NAME,
+            material,
+        }
     };
-    Invalid::new(
-        field,
-        format!(
-            "the colour this pixel's ray of level {level} adds, {adds}, overflows {}{material}",
-            R::NAME
-        ),
-        fix,
-    )
+    Invalid::of(field, fault)
 }

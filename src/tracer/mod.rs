@@ -14,6 +14,7 @@
 
 pub(crate) mod camera;
 pub(crate) mod explain;
+pub(crate) mod faults;
 pub mod output;
 pub mod render;
 pub(crate) mod sampler;

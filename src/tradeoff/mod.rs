@@ -16,7 +16,7 @@
 
 pub(crate) mod plot;
 pub(crate) mod report;
-mod sweep;
+pub(crate) mod sweep;
 
 use std::time::Instant;
 

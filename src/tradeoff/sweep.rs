@@ -56,11 +56,7 @@ impl Sweep {
             ("samples", samples.is_empty()),
         ] {
             if empty {
-                return Err(Invalid::new(
-                    field,
-                    "is empty: there is nothing to sweep",
-                    "give at least one value",
-                ));
+                return Err(Invalid::of(field, SweepFault::Empty));
             }
         }
         for &l in levels.iter().chain([&reference.max_level]) {
@@ -74,14 +70,16 @@ impl Sweep {
         }
         check_samples(reference.samples).map_err(|e| e.at("reference_samples"))?;
         if runs == 0 || runs > MAX_RUNS {
-            return Err(Invalid::new(
+            return Err(Invalid::of(
                 "runs",
                 if runs == 0 {
-                    "0 runs measure nothing".to_owned()
+                    SweepFault::NoRuns { most: MAX_RUNS }
                 } else {
-                    format!("{runs} runs are more than {MAX_RUNS}")
+                    SweepFault::TooManyRuns {
+                        runs,
+                        most: MAX_RUNS,
+                    }
                 },
-                format!("give --runs from 1 to {MAX_RUNS} (3 or 5 for a steadier median)"),
             ));
         }
         Ok(Sweep {
@@ -227,5 +225,25 @@ mod tests {
         assert_eq!(s.levels, [2, 1]);
         assert_eq!(s.min_weights, [0.0, 0.0]);
         assert_eq!(s.samples, [4]);
+    }
+}
+
+crate::faults! {
+    /// A sweep's lists and runs refused ([`Sweep::new`]).
+    pub enum SweepFault {
+        /// A list with nothing in it.
+        Empty =>
+            "is empty: there is nothing to sweep", "está vazia: não há nada a varrer";
+            fix "give at least one value", "dê pelo menos um valor";
+        /// No run.
+        NoRuns { most: u32 } =>
+            "0 runs measure nothing", "0 execuções não medem nada";
+            fix "give --runs from 1 to {most} (3 or 5 for a steadier median)",
+                "dê --runs de 1 a {most} (3 ou 5 para uma mediana mais estável)";
+        /// More runs than the most.
+        TooManyRuns { runs: u32, most: u32 } =>
+            "{runs} runs are more than {most}", "{runs} execuções são mais que {most}";
+            fix "give --runs from 1 to {most} (3 or 5 for a steadier median)",
+                "dê --runs de 1 a {most} (3 ou 5 para uma mediana mais estável)";
     }
 }

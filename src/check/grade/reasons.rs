@@ -7,6 +7,7 @@ use std::path::PathBuf;
 use std::sync::Arc;
 
 use crate::problem::error::what_and_fix;
+use crate::problem::reading::Cause;
 use crate::problem::ProblemError;
 use crate::text::{Lang, Message, Show};
 use crate::{faults, messages};
@@ -114,17 +115,32 @@ impl Show for Sep {
     }
 }
 
-/// Transitional: English text another module still writes as a `String` (an answer's error
-/// from check::answer, a step's from check::steps, what the system said of a link), said in
-/// Portuguese through the old table of substrings until that module gives it as a value.
-#[derive(Clone, Debug, Default, PartialEq)]
-pub struct Untyped(pub String);
+/// A sentence another module says, carried whole in a reason: an answer's error
+/// ([`BadAnswer`](crate::check::answer::BadAnswer)), a step's
+/// ([`BadStep`](crate::check::steps::BadStep), [`StepMissing`](crate::check::steps::StepMissing)).
+/// Two are equal when they say the same in English.
+#[derive(Clone, Debug, Default)]
+pub struct Said(Option<Arc<dyn Message + Send + Sync>>);
 
-impl Show for Untyped {
+impl Said {
+    /// `m`, carried.
+    pub fn of(m: impl Message + Send + Sync + 'static) -> Said {
+        Said(Some(Arc::new(m)))
+    }
+}
+
+impl PartialEq for Said {
+    fn eq(&self, other: &Said) -> bool {
+        let en = |s: &Said| s.0.as_ref().map(|m| m.text(Lang::En));
+        en(self) == en(other)
+    }
+}
+
+impl Show for Said {
     fn show(&self, lang: Lang, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        match lang {
-            Lang::En => f.write_str(&self.0),
-            Lang::Pt => f.write_str(&crate::report::messages::error_in(&self.0, lang)),
+        match &self.0 {
+            Some(m) => f.write_str(&m.text(lang)),
+            None => Ok(()),
         }
     }
 }
@@ -206,11 +222,11 @@ messages! {
             "the {column} field is empty",
             "o campo {column} está vazio";
         /// An answer that cannot be read.
-        Answer { why: Untyped } =>
+        Answer { why: Said } =>
             "the answer cannot be read: {why}",
             "a resposta não pode ser lida: {why}";
         /// A steps cell that cannot be read or judged.
-        Steps { row: usize, line: u64, column: String, why: Untyped } =>
+        Steps { row: usize, line: u64, column: String, why: Said } =>
             "the steps of row {row} (line {line}, column \"{column}\"): {why}",
             "os passos da resposta {row} (linha {line}, coluna \"{column}\"): {why}";
     }
@@ -228,7 +244,7 @@ faults! {
                 "dê o nome do arquivo do exercício sem .json (por exemplo 4.2 para \
                  {dir}/4.2.json)";
         /// A link that cannot be followed.
-        CannotFollow { path: PathBuf, cause: Untyped } =>
+        CannotFollow { path: PathBuf, cause: Cause } =>
             "{path}: the exercise file cannot be followed: {cause}",
             "{path}: o arquivo do exercício não pode ser seguido: {cause}";
             fix "replace the link by the file", "troque o link pelo arquivo";
@@ -245,23 +261,6 @@ faults! {
             "{path}: o exercício não é um arquivo comum (uma pasta, um FIFO ou um dispositivo)";
             fix "put the exercise's problem file there",
                 "ponha ali o arquivo de problema do exercício";
-    }
-}
-
-faults! {
-    /// Why the submissions file cannot be read (after its path).
-    #[allow(missing_docs)] // each field is named by its sentences
-    pub enum SubmissionsFault {
-        /// Not there, not readable.
-        Unreadable { cause: Untyped } =>
-            "cannot read the file: {cause}", "não é possível ler o arquivo: {cause}";
-            fix "check the path, and that the file exists and is readable",
-                "confira o caminho, e que o arquivo existe e pode ser lido";
-        /// Larger than phong reads, or of more rows than it takes.
-        TooLarge { cause: Untyped } =>
-            "cannot read the file: {cause}", "não é possível ler o arquivo: {cause}";
-            fix "give a smaller file (the limits are in README, \"Limits and safety\")",
-                "dê um arquivo menor (os limites estão na seção \"Limits and safety\" do README)";
     }
 }
 
@@ -513,7 +512,7 @@ mod tests {
         assert_eq!(
             e.text(Lang::Pt),
             "turma.csv: não é possível ler o arquivo: arquivo ou pasta inexistente (erro 2 do \
-             sistema). Correção: confira o caminho, e que o arquivo existe e pode ser lido"
+             sistema). Correção: verifique o caminho, e que o arquivo existe e pode ser lido"
         );
         let big = crate::check::grade::Unreadable {
             path: "turma.csv".into(),
@@ -521,7 +520,7 @@ mod tests {
                 std::io::ErrorKind::InvalidData,
                 crate::problem::TooMany {
                     limit: 1_000_000,
-                    what: "rows",
+                    what: crate::problem::Counted::Rows,
                 },
             ),
         };

@@ -5,22 +5,18 @@ use crate::check;
 use crate::cli::args::{CheckArgs, CheckFormat};
 use crate::cli::error::{self, CliError};
 use crate::cli::exit::Exit;
+use crate::cli::faults::{CliFault, SystemError};
 use crate::cli::output;
 use crate::problem;
+use crate::text::{FixOf, Said, WhatOf};
 
 pub(crate) fn run(args: &CheckArgs) -> Result<Exit, CliError> {
     let inputs: Vec<&std::path::Path> = args.files.iter().map(|p| p.as_path()).collect();
     output::distinct(&inputs, &[("--output", args.output.as_deref())])?;
     if args.answer.is_some() && args.files.len() > 1 {
-        return Err(CliError::Conflict {
-            message: format!(
-                "--answer checks one file, and {} were given",
-                args.files.len()
-            ),
-            fix: "check one file at a time, or put each file's answer in its \"answer\" field \
-                  and leave out --answer"
-                .into(),
-        });
+        return Err(CliError::conflict(CliFault::AnswerOneFile {
+            given: args.files.len(),
+        }));
     }
     if let Some(t) = args.tolerance {
         check::answer::check_tolerance(t).map_err(|source| CliError::Value {
@@ -52,7 +48,7 @@ pub(crate) fn run(args: &CheckArgs) -> Result<Exit, CliError> {
             error::warn_in(path, &warning, args.lang);
         }
         if let Err(f) = &c.outcome {
-            error::print_english_in(&f.message, args.lang);
+            error::print_in(&f.message, args.lang);
         }
         match args.format {
             CheckFormat::Text => {
@@ -87,13 +83,9 @@ fn exit_of(status: check::report::Status) -> Exit {
 fn given_steps(args: &CheckArgs) -> Result<Vec<check::steps::GivenStep>, CliError> {
     let by_flag = !args.step.is_empty() || args.steps.is_some();
     if by_flag && args.files.len() > 1 {
-        return Err(CliError::Conflict {
-            message: format!(
-                "--step and --steps check one file, and {} were given",
-                args.files.len()
-            ),
-            fix: "check one file's steps at a time".into(),
-        });
+        return Err(CliError::conflict(CliFault::StepsOneFile {
+            given: args.files.len(),
+        }));
     }
     let mut out = Vec::new();
     // A step is of the one file checked: its error names that file, as a judged step's does.
@@ -102,46 +94,53 @@ fn given_steps(args: &CheckArgs) -> Result<Vec<check::steps::GivenStep>, CliErro
         None => "--step".to_owned(),
     };
     for text in &args.step {
-        out.push(check::steps::parse_step(text).map_err(|e| {
-            step_usage(
-                &step_flag,
-                "",
-                e,
-                "write NAME=VALUE, such as --step cos_theta=0.98995 or --step R=0.6,0,0.8",
-            )
-        })?);
+        out.push(
+            check::steps::parse_step(text)
+                .map_err(|e| step_usage(&step_flag, "", e, |why| CliFault::StepFlag { why }))?,
+        );
     }
     if let Some(path) = &args.steps {
         let shown = path.display();
-        let text = std::fs::read_to_string(path).map_err(|e| CliError::Usage {
-            flag: "--steps".into(),
-            message: format!("{shown}: cannot read the file: {e}"),
-            fix: "check the path, and that the file exists and is UTF-8 text".into(),
-        })?;
-        let read = check::steps::parse_steps_json(&text).map_err(|e| {
-            step_usage(
+        let text = std::fs::read_to_string(path).map_err(|e| {
+            CliError::usage(
                 "--steps",
-                &format!("{shown}: "),
-                e,
-                "one JSON object of names and values, such as {\"cos_theta\": 0.98995}",
+                CliFault::StepsUnreadable {
+                    file: path.clone(),
+                    error: SystemError::of(&e),
+                },
             )
+        })?;
+        let before = format!("{shown}: ");
+        let read = check::steps::parse_steps_json(&text).map_err(|e| {
+            step_usage("--steps", &before, e, |why| CliFault::StepsFile {
+                before: before.clone(),
+                why,
+            })
         })?;
         out.extend(read);
     }
     Ok(out)
 }
 
-/// A step that cannot be read, as a usage error: its own fix where it gives one, else `fix`.
-fn step_usage(flag: &str, prefix: &str, e: check::steps::BadStep, fix: &str) -> CliError {
-    let (message, fix) = match e.message.split_once(". Fix: ") {
-        Some((m, f)) => (m.to_owned(), f.to_owned()),
-        None => (e.message, fix.to_owned()),
+/// A step that cannot be read, as a usage error: its own fix where it gives one, else the
+/// fault `otherwise` makes of it (`before` the message: the file it is in).
+fn step_usage(
+    flag: &str,
+    before: &str,
+    e: check::steps::BadStep,
+    otherwise: impl Fn(Said) -> CliFault,
+) -> CliError {
+    use crate::text::{Fault, Lang};
+    let fault = if e.fix(Lang::En).is_empty() {
+        otherwise(Said::new(WhatOf(e)))
+    } else {
+        CliFault::Step {
+            before: before.to_owned(),
+            why: Said::new(WhatOf(e.clone())),
+            fix: Said::new(FixOf(e)),
+        }
     };
-    CliError::Usage {
-        flag: flag.into(),
-        message: format!("{prefix}{message}"),
-        fix,
-    }
+    CliError::usage(flag, fault)
 }
 
 /// `phong check FILE --step …`: the steps judged (and the answer, when one is given too).
@@ -165,12 +164,12 @@ fn with_steps(args: &CheckArgs, steps: &[check::steps::GivenStep]) -> Result<Exi
         )
     });
     if let Err(f) = &checked.outcome {
-        error::print_english_in(&f.message, args.lang);
+        error::print_in(&f.message, args.lang);
     }
     if let Some(c) = &answer {
         exit = exit.max(exit_of(c.status()));
         if let Err(f) = &c.outcome {
-            error::print_english_in(&f.message, args.lang);
+            error::print_in(&f.message, args.lang);
         }
     }
     let out = match args.format {

@@ -22,10 +22,7 @@ pub(crate) fn run(args: &ExportPovArgs) -> Result<Exit, CliError> {
     let sdl = crate::export::pov::export(&problem).map_err(|e| ProblemError::Invalid {
         path: path.clone(),
         field: e.what,
-        fault: crate::problem::untranslated(
-            format!("cannot be expressed in POV-Ray 3.7: {}", e.why),
-            e.fix,
-        ),
+        fault: std::sync::Arc::new(crate::export::pov::Unexpressed(e.fault)),
     })?;
     output::emit(args.output.as_deref(), &sdl)?;
     Ok(Exit::Success)

@@ -7,7 +7,9 @@ use crate::check;
 use crate::cli::args::{GradeArgs, GradeFormat};
 use crate::cli::error::{self, CliError};
 use crate::cli::exit::Exit;
+use crate::cli::faults::{CliFault, SystemError};
 use crate::cli::output;
+use crate::text::Said;
 
 pub(crate) fn run(args: &GradeArgs) -> Result<Exit, CliError> {
     if let Some(t) = args.tolerance {
@@ -20,7 +22,7 @@ pub(crate) fn run(args: &GradeArgs) -> Result<Exit, CliError> {
         return Err(CliError::NotAFolder {
             path: args.exercises.clone(),
             flag: "--exercises",
-            fix: "give the folder that holds the exercise files (exercise 4.2 is DIR/4.2.json)",
+            fault: CliFault::ExercisesNotAFolder,
         });
     }
     let mut inputs: Vec<&Path> = vec![&args.submissions];
@@ -58,28 +60,44 @@ pub(crate) fn run(args: &GradeArgs) -> Result<Exit, CliError> {
     let mut rubric = match &args.rubric {
         None => check::rubric::Rubric::default(),
         Some(path) => {
-            let bad = |why: String| CliError::Usage {
-                flag: format!("--rubric {}", path.display()),
-                message: why,
-                fix: "give a rubric file as the README's Grading section shows".into(),
-            };
-            let bytes = crate::problem::read_limited(path, 1 << 20, "a rubric file")
-                .map_err(|e| bad(format!("cannot read the file: {e}")))?;
-            check::rubric::Rubric::from_json(&String::from_utf8_lossy(&bytes)).map_err(bad)?
+            let flag = format!("--rubric {}", path.display());
+            let bytes = crate::problem::read_limited(path, 1 << 20, crate::problem::Input::Rubric)
+                .map_err(|e| {
+                    CliError::usage(
+                        &flag,
+                        CliFault::RubricUnreadable {
+                            error: SystemError::of(&e),
+                        },
+                    )
+                })?;
+            check::rubric::Rubric::read_json(&String::from_utf8_lossy(&bytes)).map_err(|why| {
+                CliError::usage(
+                    &flag,
+                    CliFault::Rubric {
+                        why: Said::new(why),
+                    },
+                )
+            })?
         }
     };
     if let Some(p) = &args.points {
-        rubric.add_points(p).map_err(|why| CliError::Usage {
-            flag: "--points".into(),
-            message: why,
-            fix: "write --points 4.1=1,4.2=2".into(),
+        rubric.give_points(p).map_err(|why| {
+            CliError::usage(
+                "--points",
+                CliFault::Points {
+                    why: Said::new(why),
+                },
+            )
         })?;
     }
     if let Some(c) = args.reading_credit {
-        rubric.reading_credit = check::rubric::check_credit(c).map_err(|why| CliError::Usage {
-            flag: "--reading-credit".into(),
-            message: why,
-            fix: "give a share from 0 to 1 (0.5 for half the points)".into(),
+        rubric.reading_credit = check::rubric::credit(c).map_err(|why| {
+            CliError::usage(
+                "--reading-credit",
+                CliFault::Credit {
+                    why: Said::new(why),
+                },
+            )
         })?;
     }
     let options = check::grade::Options {

@@ -17,6 +17,7 @@ pub(crate) mod tradeoff;
 
 use super::args::{Switch, TraceSettings};
 use super::error::CliError;
+use super::faults::CliFault;
 use crate::problem::RenderOverrides;
 
 /// The command line's tracer settings, to put over a scene's.
@@ -34,10 +35,13 @@ fn overrides(s: &TraceSettings) -> RenderOverrides {
 /// the allocation that follows would not abort the program.
 fn memory(bytes: usize, flag: &'static str) -> Result<(), CliError> {
     let mut probe: Vec<u8> = Vec::new();
-    probe.try_reserve_exact(bytes).map_err(|_| CliError::Usage {
-        flag: flag.into(),
-        message: crate::problem::out_of_memory(bytes),
-        fix: "give a smaller image (--size, or the camera's width and height)".into(),
+    probe.try_reserve_exact(bytes).map_err(|_| {
+        CliError::usage(
+            flag,
+            CliFault::OutOfMemory {
+                size: super::faults::memory_size(bytes),
+            },
+        )
     })
 }
 
@@ -46,11 +50,7 @@ fn thread_pool(threads: Option<usize>) -> Result<rayon::ThreadPool, CliError> {
     let mut b = rayon::ThreadPoolBuilder::new();
     if let Some(n) = threads {
         if n == 0 {
-            return Err(CliError::Usage {
-                flag: "--threads".into(),
-                message: "0 threads cannot render".into(),
-                fix: "give --threads 1 or more (or leave it out: one per core)".into(),
-            });
+            return Err(CliError::usage("--threads", CliFault::ZeroThreads));
         }
         b = b.num_threads(n);
     }

@@ -26,12 +26,10 @@ pub(crate) fn run(args: &MoodleArgs) -> Result<Exit, CliError> {
 
 /// One file: a problem, or an array of problems (as `phong new --count N` prints them).
 fn read_set(path: &Path, lang: Lang) -> Result<Set, ProblemError> {
-    let bytes =
-        problem::read_limited(path, MAX_PROBLEM_BYTES, "a problem file").map_err(|source| {
-            ProblemError::Read {
-                path: path.to_owned(),
-                source,
-            }
+    let bytes = problem::read_limited(path, MAX_PROBLEM_BYTES, problem::Input::ProblemFile)
+        .map_err(|source| ProblemError::Read {
+            path: path.to_owned(),
+            source,
         })?;
     let text = String::from_utf8_lossy(&bytes);
     let text = text.strip_prefix('\u{feff}').unwrap_or(&text);

@@ -8,6 +8,7 @@ use std::time::{Duration, Instant};
 use crate::cli::args::{Format, RenderArgs};
 use crate::cli::error::CliError;
 use crate::cli::exit::Exit;
+use crate::cli::faults::CliFault;
 use crate::cli::output;
 use crate::core::{Precision, Real};
 use crate::problem::{self, Camera, Problem};
@@ -46,10 +47,13 @@ fn render<R: Real>(args: &RenderArgs) -> Result<Exit, CliError> {
     let image_format = match (&args.output, args.image_format) {
         _ if args.explain_pixel.is_some() => None,
         (_, Some(f)) => Some(f),
-        (Some(out), None) => Some(ImageFormat::from_path(out).ok_or_else(|| CliError::Usage {
-            flag: "--output".into(),
-            message: format!("{} does not end in .png or .ppm", out.display()),
-            fix: "name the image *.png or *.ppm, or give --image-format png|ppm".into(),
+        (Some(out), None) => Some(ImageFormat::from_path(out).ok_or_else(|| {
+            CliError::usage(
+                "--output",
+                CliFault::ImageExtension {
+                    output: out.clone(),
+                },
+            )
         })?),
         (None, None) => None,
     };
@@ -152,18 +156,17 @@ fn explain_pixel<R: Real>(
     (x, y): (u32, u32),
 ) -> Result<Exit, CliError> {
     if x >= camera.width || y >= camera.height {
-        return Err(CliError::Usage {
-            flag: "--explain-pixel".into(),
-            message: format!(
-                "pixel {x},{y} is outside the {}×{} image",
-                camera.width, camera.height
-            ),
-            fix: format!(
-                "give X from 0 to {} and Y from 0 to {}",
-                camera.width - 1,
-                camera.height - 1
-            ),
-        });
+        return Err(CliError::usage(
+            "--explain-pixel",
+            CliFault::PixelOutside {
+                x,
+                y,
+                width: camera.width,
+                height: camera.height,
+                last_x: camera.width - 1,
+                last_y: camera.height - 1,
+            },
+        ));
     }
     let path: &Path = &args.scene;
     let e = tracer::explain_pixel(problem, camera, scene, x, y).map_err(|e| e.at(path))?;

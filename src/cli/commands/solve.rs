@@ -8,6 +8,7 @@ use std::path::Path;
 use crate::cli::args::{Format, SolveArgs};
 use crate::cli::error::{self, CliError};
 use crate::cli::exit::Exit;
+use crate::cli::faults::CliFault;
 use crate::cli::output;
 use crate::problem::Source;
 use crate::report;
@@ -38,10 +39,7 @@ pub(crate) fn run(args: &SolveArgs) -> Result<Exit, CliError> {
         output::distinct(&meshes, &[("--output", args.output.as_deref())])?;
     }
     if args.fragment && !matches!(args.format, Format::Latex | Format::Html) {
-        return Err(CliError::Conflict {
-            message: "--fragment applies to --format latex and html only".into(),
-            fix: "drop --fragment, or use --format latex or html".into(),
-        });
+        return Err(CliError::conflict(CliFault::Fragment));
     }
     let header = Header {
         course: args.course.clone(),
@@ -50,13 +48,7 @@ pub(crate) fn run(args: &SolveArgs) -> Result<Exit, CliError> {
         author: args.author.clone(),
     };
     if args.format == Format::Json && (args.part != Contents::Solution || !header.is_empty()) {
-        return Err(CliError::Conflict {
-            message: "--part and the header flags apply to the documents, not to --format json"
-                .into(),
-            fix: "drop --part, --course, --title, --date and --author, or choose --format text, \
-                  markdown, latex or html"
-                .into(),
-        });
+        return Err(CliError::conflict(CliFault::JsonNoDocument));
     }
     let folder = args.output.as_deref().filter(|p| is_folder(p));
     let mut failed = false;

@@ -6,6 +6,7 @@ use std::path::{Path, PathBuf};
 use crate::cli::args::{TradeoffArgs, TradeoffFormat};
 use crate::cli::error::CliError;
 use crate::cli::exit::Exit;
+use crate::cli::faults::CliFault;
 use crate::cli::output;
 use crate::core::{Precision, Real};
 use crate::problem::{self, ProblemError, SceneFile};
@@ -36,11 +37,10 @@ pub(crate) fn run(args: &TradeoffArgs) -> Result<Exit, CliError> {
             .extension()
             .is_some_and(|e| e.eq_ignore_ascii_case("svg"))
         {
-            return Err(CliError::Usage {
-                flag: "--plot".into(),
-                message: format!("{} does not end in .svg", plot.display()),
-                fix: "name the plot *.svg (it is written as SVG)".into(),
-            });
+            return Err(CliError::usage(
+                "--plot",
+                CliFault::PlotNotSvg { plot: plot.clone() },
+            ));
         }
     }
     let SceneFile {
@@ -67,15 +67,15 @@ pub(crate) fn run(args: &TradeoffArgs) -> Result<Exit, CliError> {
     let (w, h) = (f64_scene.1.width, f64_scene.1.height);
     let work = sweep.work(u64::from(w) * u64::from(h));
     if work > tradeoff::MAX_SWEEP_RAYS {
-        return Err(CliError::Usage {
-            flag: "--size".into(),
-            message: format!(
-                "the sweep at {w}×{h} is {work:.2e} primary rays (the reference, and every \
-                 setting's samples × --runs), more than the {:.2e} (2^34) a sweep may trace",
-                tradeoff::MAX_SWEEP_RAYS as f64
-            ),
-            fix: "give a smaller --size, fewer --runs, --samples or --reference-samples".into(),
-        });
+        return Err(CliError::usage(
+            "--size",
+            CliFault::SweepTooLarge {
+                width: w,
+                height: h,
+                work: format!("{work:.2e}"),
+                most: format!("{:.2e}", tradeoff::MAX_SWEEP_RAYS as f64),
+            },
+        ));
     }
     // The deepest trees it traces: the reference's (minimum weight 0), and the sweep's largest
     // level with its smallest weight.
@@ -86,25 +86,14 @@ pub(crate) fn run(args: &TradeoffArgs) -> Result<Exit, CliError> {
     if !fits(reference, 0.0) {
         let most = (1..reference).rev().find(|&l| fits(l, 0.0)).unwrap_or(1);
         let limit = crate::problem::validate::MAX_TREE_RAYS;
-        return Err(CliError::Usage {
-            flag: "--reference-level".into(),
-            message: crate::report::messages::both(
-                &format!(
-                    "the reference (maximum level {reference}, minimum weight 0) would let one \
-                     sample's ray tree hold more than {limit} rays, since a material of the \
-                     scene both reflects and transmits and each hit can spawn two rays"
-                ),
-                &format!(
-                    "a referência (nível máximo {reference}, peso mínimo 0) deixaria a árvore de \
-                     raios de uma amostra ter mais de {limit} raios, pois um material da cena \
-                     reflete e transmite e cada interseção pode gerar dois raios"
-                ),
-            ),
-            fix: crate::report::messages::both(
-                &format!("give --reference-level {most} or lower (the deepest whose tree fits)"),
-                &format!("dê --reference-level {most} ou menos (o mais profundo cuja árvore cabe)"),
-            ),
-        });
+        return Err(CliError::usage(
+            "--reference-level",
+            CliFault::ReferenceTree {
+                level: reference,
+                limit,
+                most,
+            },
+        ));
     }
     if let (Some(&level), Some(weight)) = (
         sweep.levels.iter().max(),
@@ -139,10 +128,9 @@ pub(crate) fn run(args: &TradeoffArgs) -> Result<Exit, CliError> {
     let file = args.scene.display().to_string();
     let summary = report::Summary::new(&file, &outcome, args.metric, args.budget);
     if let Some(plot) = &args.plot {
-        let svg = tradeoff::plot::svg(&summary).map_err(|e| CliError::Bug {
+        let svg = tradeoff::plot::svg(&summary).map_err(|error| CliError::Bug {
             flag: "--plot",
-            message: format!("the plot could not be drawn: {e}"),
-            works: "the table is still written without --plot",
+            fault: CliFault::PlotFailed { error },
         })?;
         output::write_file(plot, svg.as_bytes())?;
     }

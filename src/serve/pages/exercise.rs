@@ -24,6 +24,7 @@ use crate::report::messages::{error_in, step_formula};
 use crate::serve::catalogue::Exercise;
 use crate::serve::Shared;
 use crate::text::lang::Lang;
+use crate::text::Message;
 
 /// What the form sent (and is shown again in its boxes).
 #[derive(Debug, Default)]
@@ -451,7 +452,7 @@ fn verdict(ex: &Exercise, lang: Lang, input: &Input) -> (StatusCode, String) {
         }
         match steps::parse_named(label, value) {
             Ok(s) => given.push(s),
-            Err(e) => bad.push(e.message),
+            Err(e) => bad.push(e.to_string()),
         }
     }
     if answer.is_none() && given.is_empty() && bad.is_empty() {
@@ -465,7 +466,7 @@ fn verdict(ex: &Exercise, lang: Lang, input: &Input) -> (StatusCode, String) {
             Ok(j) => out.push_str(&judged(&c, j, lang)),
             Err(f) => {
                 status = StatusCode::UNPROCESSABLE_ENTITY;
-                out.push_str(&cannot(std::slice::from_ref(&f.message), lang));
+                out.push_str(&cannot(&[f.message.to_string()], lang));
             }
         }
     }
@@ -553,7 +554,7 @@ fn steps_verdict(ex: &Exercise, given: &[GivenStep], lang: Lang) -> (StatusCode,
         Err(f) => {
             return (
                 StatusCode::UNPROCESSABLE_ENTITY,
-                cannot(std::slice::from_ref(&f.message), lang),
+                cannot(&[f.message.to_string()], lang),
             )
         }
     };
@@ -626,15 +627,15 @@ pub(crate) fn solution(
     match explanation {
         Ok(x) => {
             out.push_str("<article class=\"problem\" id=\"problem-0\">\n");
-            // write_parts closes the article.
-            out.push_str(&html::write_parts(x, 0));
+            out.push_str(&html::write_parts(x, 0, 2));
+            out.push_str("</article>\n");
         }
         Err(e) => {
             let _ = writeln!(
                 out,
                 "<h2>{}</h2>\n<p>{}</p>",
                 Text::SolutionHeading.get(lang),
-                esc(&error_in(&e.to_string(), lang))
+                esc(&e.text(lang))
             );
         }
     }

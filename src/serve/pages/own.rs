@@ -22,8 +22,8 @@ use crate::check::answer::{number, three};
 use crate::core::Precision;
 use crate::problem::Source;
 use crate::report::html::{self, esc};
-use crate::report::messages::error_in;
 use crate::text::lang::Lang;
+use crate::text::Message;
 
 /// The form's fields: name, label, and the value it starts with (exercise 4.2's data).
 const FIELDS: &[(&str, Text, &str)] = &[
@@ -264,7 +264,7 @@ pub(crate) async fn post(
                  <div class=\"verdict invalid\">\n<h2 id=\"verdict-h\" class=\"headline\">{}</h2>\n\
                  <p class=\"error\">{}</p>\n</div>\n</section>",
                 t(Text::BadForm),
-                esc(&error_in(&e.to_string(), lang))
+                esc(&e.text(lang))
             );
             StatusCode::UNPROCESSABLE_ENTITY
         }
