@@ -10,7 +10,7 @@
 //! `invalid` with the reason, and the batch goes on. A first line naming the three columns in
 //! English or Portuguese (`aluno;exercício;resposta`, in any order) is a header, not a row; it
 //! may name a fourth column, `steps` (`passos`), whose cell holds a row's step answers
-//! (`cos_theta=0.98995; n_dot_l=-0.98995`, read by [`super::steps::parse_cell`] and judged as
+//! (`cos_theta=0.98995; n_dot_l=-0.98995`, read by [`super::steps::read_cell`] and judged as
 //! `phong check --step` judges them; they change no points). Each exercise is solved once (with
 //! its slips) on first use, its steps' quantities when a row first gives steps; grading a row is
 //! then a few comparisons.
@@ -28,6 +28,12 @@ use super::steps::{self, StepsExpected, StepsOut};
 use super::{answer, judge, messages, Expected, Scale, Slip, Verdict, VerdictKind};
 use crate::solve::ReadingCode;
 use crate::text::lang::Lang;
+
+mod reasons;
+pub use reasons::{
+    AnswerNote, Column, ExerciseFault, ExerciseNote, Fields, FieldsHint, HeaderFault, NotCsv,
+    Reason, RowReason, Said, Sep, Width,
+};
 
 /// How answers are read and judged.
 #[derive(Clone, Debug)]
@@ -155,8 +161,9 @@ pub struct RowOut {
     pub reading: Option<ReadingCode>,
     /// The slips (or pairs of slips) whose colour the answer matches.
     pub diagnosis: Vec<Vec<Slip>>,
-    /// Why the row is invalid, or a note.
-    pub reason: Option<String>,
+    /// Why the row is invalid, or a note: a value, said in English in the CSV's `reason` column
+    /// and the JSON, in the chosen language in the feedback.
+    pub reason: Option<Reason>,
     /// The answer's whole numbers were read as 8-bit values (per-row scale detection).
     pub scale_detected: bool,
     /// The points the answer earns: the exercise's for `right`, the reading credit's share of
@@ -237,15 +244,38 @@ pub struct Report {
     pub students: Vec<StudentOut>,
 }
 
-/// The CSV cannot be read at all (a row that cannot be read is reported in its place instead).
-#[derive(Debug, thiserror::Error)]
-#[error("{path}: cannot read the file: {source}. Fix: {}", crate::problem::read_fix(.source))]
+/// The CSV cannot be read at all (a row that cannot be read is reported in its place instead):
+/// `PATH: cannot read the file: WHY. Fix: FIX`, said in a language by its
+/// [`Message`](crate::text::Message), in English by its `Display`.
+#[derive(Debug)]
 pub struct Unreadable {
     /// The submissions' path.
     pub path: PathBuf,
     /// Why.
-    #[source]
     pub source: std::io::Error,
+}
+
+impl crate::text::Message for Unreadable {
+    fn text(&self, lang: Lang) -> String {
+        let fault = crate::problem::reading::ReadFault::of(&self.source);
+        format!(
+            "{}: {}",
+            self.path.display(),
+            crate::problem::error::what_and_fix(&fault, lang)
+        )
+    }
+}
+
+impl std::fmt::Display for Unreadable {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(&crate::text::Message::text(self, Lang::En))
+    }
+}
+
+impl std::error::Error for Unreadable {
+    fn source(&self) -> Option<&(dyn std::error::Error + 'static)> {
+        Some(&self.source)
+    }
 }
 
 /// An exercise solved once: what answers are judged against, and its answer key's own
@@ -258,14 +288,13 @@ struct Exercise {
     /// The exercise file, for errors.
     path: PathBuf,
     /// The quantities steps are judged against, solved when a row first gives steps.
-    steps: OnceCell<Result<StepsExpected, String>>,
+    steps: OnceCell<Result<StepsExpected, Reason>>,
 }
 
 impl Exercise {
-    fn steps(&self) -> &Result<StepsExpected, String> {
-        self.steps.get_or_init(|| {
-            StepsExpected::of(&self.problem).map_err(|e| e.at(&self.path).to_string())
-        })
+    fn steps(&self) -> &Result<StepsExpected, Reason> {
+        self.steps
+            .get_or_init(|| StepsExpected::of(&self.problem).map_err(|e| e.at(&self.path).into()))
     }
 }
 
@@ -277,7 +306,7 @@ struct Cache<'a> {
     options: &'a Options,
     /// The exercises folder with its links resolved (`None` if it cannot be).
     folder: Option<PathBuf>,
-    solved: BTreeMap<String, Result<Exercise, String>>,
+    solved: BTreeMap<String, Result<Exercise, Reason>>,
 }
 
 /// An exercise's name without `.json`: `4.2` and `4.2.json` are one exercise.
@@ -286,7 +315,7 @@ fn exercise_key(exercise: &str) -> &str {
 }
 
 impl Cache<'_> {
-    fn get(&mut self, exercise: &str) -> &Result<Exercise, String> {
+    fn get(&mut self, exercise: &str) -> &Result<Exercise, Reason> {
         let key = exercise_key(exercise);
         if !self.solved.contains_key(key) {
             let result = self.solve(key);
@@ -298,7 +327,7 @@ impl Cache<'_> {
     /// Exercise `name` is the regular file `DIR/name.json`, inside the folder once links are
     /// followed (a link out of the folder is refused: the folder is what the instructor vouches
     /// for).
-    fn solve(&self, name: &str) -> Result<Exercise, String> {
+    fn solve(&self, name: &str) -> Result<Exercise, Reason> {
         let dir = &self.options.exercises;
         let safe = !name.is_empty()
             && !name.starts_with('.')
@@ -307,42 +336,30 @@ impl Cache<'_> {
                 .all(|c| c.is_alphanumeric() || matches!(c, '.' | '-' | '_'));
         let file = format!("{name}.json");
         let path = dir.join(&file);
-        let unknown = || {
-            format!(
-                "unknown exercise: there is no {} in the exercises folder {}. Fix: name an \
-                 exercise by its file name without .json (e.g. 4.2 for {}/4.2.json)",
-                file,
-                dir.display(),
-                dir.display()
-            )
-        };
         if !safe || std::fs::symlink_metadata(&path).is_err() {
-            return Err(unknown());
+            return Err(ExerciseFault::Unknown {
+                file,
+                dir: dir.clone(),
+            }
+            .into());
         }
-        let real = std::fs::canonicalize(&path).map_err(|e| {
-            format!(
-                "{}: the exercise file cannot be followed: {e}. Fix: replace the link by the file",
-                path.display()
-            )
+        let real = std::fs::canonicalize(&path).map_err(|e| ExerciseFault::CannotFollow {
+            path: path.clone(),
+            cause: crate::problem::reading::Cause::of(&e),
         })?;
         if !self.folder.as_ref().is_some_and(|d| real.starts_with(d)) {
-            return Err(format!(
-                "{}: the exercise file is a link out of the exercises folder (to {}), which is \
-                 refused. Fix: copy the file into {}",
-                path.display(),
-                real.display(),
-                dir.display()
-            ));
+            return Err(ExerciseFault::LinkOut {
+                path,
+                real,
+                dir: dir.clone(),
+            }
+            .into());
         }
         if !std::fs::metadata(&real).is_ok_and(|m| m.is_file()) {
-            return Err(format!(
-                "{}: the exercise is not a regular file (a folder, a FIFO or a device). Fix: put \
-                 the exercise's problem file there",
-                path.display()
-            ));
+            return Err(ExerciseFault::NotRegular { path }.into());
         }
-        let (file, problem) = crate::problem::load::<f64>(&path).map_err(|e| e.to_string())?;
-        let expected = Expected::of(&problem).map_err(|e| e.at(&path).to_string())?;
+        let (file, problem) = crate::problem::load::<f64>(&path)?;
+        let expected = Expected::of(&problem).map_err(|e| e.at(&path))?;
         // A key that cannot be read judges nothing here (`phong check` reports it).
         let key = file.answer.as_ref().and_then(|k| answer::from_key(k).ok());
         Ok(Exercise {
@@ -458,15 +475,12 @@ pub fn lines(text: &[u8]) -> impl Iterator<Item = (u64, &[u8])> {
     })
 }
 
-/// Why a line's fields cannot be read.
-type FieldError = String;
-
 /// The fields of one line separated by `delimiter`. A field may be quoted (`"0.5, 0.5, 0.5"`,
 /// `""` for a quote inside); a quote must close on its line (a row is one line: no answer
 /// spans lines), and nothing but spaces may follow a closing quote (`"s2"x` is refused, not read
 /// as `s2x`). A quote inside an unquoted field is kept as written. Empty fields after the third
 /// are dropped (a spreadsheet writes its empty columns as trailing separators).
-pub fn fields(line: &[u8], delimiter: u8) -> Result<Vec<Vec<u8>>, FieldError> {
+pub fn fields(line: &[u8], delimiter: u8) -> Result<Vec<Vec<u8>>, NotCsv> {
     let mut out: Vec<Vec<u8>> = Vec::new();
     let mut i = 0;
     loop {
@@ -481,12 +495,7 @@ pub fn fields(line: &[u8], delimiter: u8) -> Result<Vec<Vec<u8>>, FieldError> {
             let mut k = j + 1;
             loop {
                 match line.get(k) {
-                    None => {
-                        return Err(format!(
-                            "field {n} opens a quote \" that is not closed on its line (a row \
-                             is one line)"
-                        ))
-                    }
+                    None => return Err(NotCsv::Unclosed { field: n }),
                     Some(b'"') if line.get(k + 1) == Some(&b'"') => {
                         field.push(b'"');
                         k += 2;
@@ -514,14 +523,13 @@ pub fn fields(line: &[u8], delimiter: u8) -> Result<Vec<Vec<u8>>, FieldError> {
                     i = k + 1;
                 }
                 Some(_) => {
-                    return Err(format!(
-                        "field {n} has text after its closing quote (\"{}\"): quote the whole \
-                         field, with \"\" for a quote inside",
-                        visible(&String::from_utf8_lossy(&line[k..]))
+                    return Err(NotCsv::AfterQuote {
+                        field: n,
+                        after: visible(&String::from_utf8_lossy(&line[k..]))
                             .chars()
                             .take(20)
-                            .collect::<String>()
-                    ))
+                            .collect(),
+                    })
                 }
             }
         } else {
@@ -561,14 +569,6 @@ const HEADER_NAMES: [&[&str]; 4] = [
     &["answer", "resposta"],
     &["steps", "passos", "etapas"],
 ];
-
-/// The columns, as the reports name them.
-const COLUMNS: [&str; 4] = ["student", "exercise", "answer", "steps"];
-
-/// The fix of a header that is not one.
-const HEADER_FIX: &str = "Fix: name the columns `student` (or `aluno`), `exercise` \
-                          (`exercício`) and `answer` (`resposta`), and, if the rows give steps, \
-                          `steps` (`passos`), each once, in any order";
 
 /// Where each column is in a row: student, exercise and answer, and the optional steps
 /// column with its name as the header writes it.
@@ -629,7 +629,7 @@ enum First {
     /// A header: the columns it names, in its order.
     Header(Layout),
     /// Column names only, but not a header phong can read (a column missing or twice): why.
-    BadHeader(String),
+    BadHeader(HeaderFault),
     /// A row of data.
     Row,
 }
@@ -660,16 +660,14 @@ fn header(fields: &[Vec<u8>]) -> First {
         return First::Row;
     }
     if let Some(twice) = (0..4).find(|c| columns.iter().filter(|&x| x == c).count() > 1) {
-        return First::BadHeader(format!(
-            "the header names the {} column twice. {HEADER_FIX}",
-            COLUMNS[twice]
-        ));
+        return First::BadHeader(HeaderFault::Twice {
+            column: Column::ALL[twice],
+        });
     }
     if let Some(missing) = (0..3).find(|c| !columns.contains(c)) {
-        return First::BadHeader(format!(
-            "the header names no {} column. {HEADER_FIX}",
-            COLUMNS[missing]
-        ));
+        return First::BadHeader(HeaderFault::Missing {
+            column: Column::ALL[missing],
+        });
     }
     let position = |column: usize| columns.iter().position(|&c| c == column);
     First::Header(Layout {
@@ -849,7 +847,7 @@ pub struct Graded<'a> {
     layout: Layout,
     /// Why the first line is a header phong refuses (row 1), or why the Moodle export cannot be
     /// read (the only row).
-    refused: Option<String>,
+    refused: Option<Reason>,
     cache: std::cell::RefCell<Cache<'a>>,
     at: Vec<At>,
     groups: Vec<Group>,
@@ -881,7 +879,7 @@ impl<'a> Graded<'a> {
             match super::moodle::to_rows(&decoded, &questions) {
                 Ok(rows) => Cow::Owned(rows),
                 Err(why) => {
-                    refused = Some(why);
+                    refused = Some(Reason::from(why));
                     Cow::Owned(Vec::new())
                 }
             }
@@ -944,7 +942,7 @@ impl<'a> Graded<'a> {
                     // Reported in the header's place (no line is dropped); the rows after it
                     // are read as student, exercise, answer. It is no student's.
                     Ok(First::BadHeader(why)) => {
-                        self.refused = Some(why);
+                        self.refused = Some(why.into());
                         group = UNCOUNTED;
                     }
                     _ => {}
@@ -1105,7 +1103,7 @@ impl<'a> Graded<'a> {
                 if !row.exercise.is_empty() && cache.get(&row.exercise).is_ok() {
                     row.max_points = Some(options.rubric.points_of(&row.exercise));
                 }
-                let reason = format!("the row cannot be read as CSV: {e}");
+                let reason = RowReason::NotCsv { why: e }.into();
                 mark_invalid(&mut row, reason, options.lang);
             }
         }
@@ -1279,11 +1277,11 @@ impl<'a> Graded<'a> {
 
 /// A row that cannot be judged: its reason, and feedback saying so (with its exercise's points
 /// when the exercise is known).
-fn mark_invalid(row: &mut RowOut, reason: String, lang: Lang) {
+fn mark_invalid(row: &mut RowOut, reason: Reason, lang: Lang) {
     row.feedback = messages::feedback(
         &messages::RowFacts {
             verdict: None,
-            reason: Some(&reason),
+            reason: Some(&reason as &dyn crate::text::Message),
             tolerance: 0.0,
             read_as_8bit: false,
             points: row.max_points.map(|m| (0.0, m)),
@@ -1342,74 +1340,57 @@ fn grade_row(
     if layout.steps.is_some() {
         row.steps_text = echo(cell(3));
     }
-    let invalid = |row: &mut RowOut, reason: String| mark_invalid(row, reason, options.lang);
+    let invalid = |row: &mut RowOut, reason: Reason| mark_invalid(row, reason, options.lang);
     let width = layout.width();
     let Some(cells) = &cells else {
-        let name = |d: u8| match d {
-            b'\t' => "a tab character".to_owned(),
-            d => format!("'{}'", d as char),
-        };
         let other = [b',', b';', b'\t']
             .into_iter()
             .find(|&o| o != delimiter && fields.iter().any(|f| f.contains(&o)));
         let hint = match other {
-            Some(o) if fields.len() < width => format!(
-                "; the fields are read as separated by {}, and this row has {}: give \
-                 --delimiter {}",
-                name(delimiter),
-                name(o),
-                if o == b'\t' {
+            Some(o) if fields.len() < width => FieldsHint::OtherSeparator {
+                read: Sep(delimiter),
+                found: Sep(o),
+                flag: if o == b'\t' {
                     "tab".to_owned()
                 } else {
                     (o as char).to_string()
-                }
-            ),
-            _ if fields.len() > width && width == 3 => format!(
-                "; an answer written with {} must be quoted: \"0.52, 0.03, 0\"",
-                name(delimiter)
-            ),
-            _ if fields.len() > width => format!(
-                "; an answer or a steps cell written with {} must be quoted: \"0.52, 0.03, 0\"",
-                name(delimiter)
-            ),
-            _ => String::new(),
+                },
+            },
+            _ if fields.len() > width && width == 3 => FieldsHint::QuoteAnswer {
+                sep: Sep(delimiter),
+            },
+            _ if fields.len() > width => FieldsHint::QuoteAnswerOrSteps {
+                sep: Sep(delimiter),
+            },
+            _ => FieldsHint::Nothing,
         };
-        let expected = if width == 3 {
-            "expected 3 (student, exercise, answer)"
-        } else {
-            "expected 4 (student, exercise, answer, steps)"
+        let reason = RowReason::Fields {
+            count: Fields(fields.len()),
+            expected: Width { steps: width != 3 },
+            hint,
         };
-        return invalid(
-            row,
-            format!(
-                "the row has {} field{}, {expected}{hint}",
-                fields.len(),
-                if fields.len() == 1 { "" } else { "s" }
-            ),
-        );
+        return invalid(row, reason.into());
     };
-    for (name, f) in COLUMNS.iter().zip(cells) {
+    for (&column, f) in Column::ALL.iter().zip(cells) {
         if std::str::from_utf8(f).is_err() {
-            return invalid(row, format!("the {name} field is not valid UTF-8"));
+            return invalid(row, RowReason::NotUtf8 { column }.into());
         }
         if f.contains(&0) {
-            return invalid(
-                row,
-                format!(
-                    "the {name} field holds a NUL byte (shown as U+FFFD): is the file UTF-16 \
-                     without a byte order mark? Save it as UTF-8 (CSV UTF-8 in a spreadsheet)"
-                ),
-            );
+            return invalid(row, RowReason::Nul { column }.into());
         }
     }
     let empty = [&row.student, &row.exercise, &row.answer]
         .iter()
         .position(|v| v.is_empty());
     if let Some(i) = empty {
-        return invalid(row, format!("the {} field is empty", COLUMNS[i]));
+        let column = Column::ALL[i];
+        return invalid(row, RowReason::Empty { column }.into());
     }
     let note = comma_exercise(&row.exercise, cache).map(|point| {
-        let note = comma_note(&row.exercise, &point);
+        let note = ExerciseNote::Comma {
+            written: row.exercise.clone(),
+            point: point.clone(),
+        };
         row.exercise = point;
         note
     });
@@ -1421,7 +1402,10 @@ fn grade_row(
     row.max_points = Some(options.rubric.points_of(&row.exercise));
     let mut a = match answer::parse(&row.answer, options.scale) {
         Ok(a) => a,
-        Err(e) => return invalid(row, format!("the answer cannot be read: {e}")),
+        Err(e) => {
+            let why = Said::of(e);
+            return invalid(row, RowReason::Answer { why }.into());
+        }
     };
     if options.detect_scale && a.scale == Scale::Unit && a.values.is_some_and(|v| looks_8bit(&v)) {
         if let Ok(b) = answer::parse(&row.answer, Scale::Bits8) {
@@ -1433,15 +1417,17 @@ fn grade_row(
     // or judged is the row's error, naming the row, the column, the step as written and the fix.
     let judged = match &layout.steps {
         Some((_, column)) if !row.steps_text.is_empty() => {
-            let at = |row: &RowOut, why: String| {
-                format!(
-                    "the steps of row {} (line {}, column \"{column}\"): {why}",
-                    row.row, row.line
-                )
+            let at = |row: &RowOut, why: Said| {
+                Reason::from(RowReason::Steps {
+                    row: row.row,
+                    line: row.line,
+                    column: column.clone(),
+                    why,
+                })
             };
-            let given = match steps::parse_cell(&row.steps_text) {
+            let given = match steps::read_cell(&row.steps_text) {
                 Ok(g) => g,
-                Err(e) => return invalid(row, at(row, e.message)),
+                Err(e) => return invalid(row, at(row, Said::of(e))),
             };
             if given.is_empty() {
                 // Separators only (`;`): no steps.
@@ -1451,9 +1437,9 @@ fn grade_row(
                     Ok(x) => x,
                     Err(e) => return invalid(row, e.clone()),
                 };
-                match steps::judge_steps(x, &given, options.strict) {
+                match steps::judge(x, &given, options.strict) {
                     Ok(j) => Some(j),
-                    Err(e) => return invalid(row, at(row, e)),
+                    Err(e) => return invalid(row, at(row, Said::of(e))),
                 }
             }
         }
@@ -1475,20 +1461,22 @@ fn grade_row(
     row.difference = v.comparison.map(|c| c.difference);
     row.reading = v.reading.as_ref().map(|r| r.code);
     row.diagnosis = v.diagnosis.iter().map(|d| d.slips.clone()).collect();
-    if v.looks_8bit {
-        row.reason = Some(messages::looks_8bit(Lang::En).to_owned());
+    let answer_note = if v.looks_8bit {
+        Some(AnswerNote::Looks8bit)
     } else if row.scale_detected {
-        row.reason = Some(messages::read_as_8bit(Lang::En).to_owned());
+        Some(AnswerNote::ReadAs8bit)
     } else if v.kind == VerdictKind::Right
         && v.comparison
             .is_some_and(|c| c.against == super::Against::Unclamped)
     {
-        row.reason = Some(messages::unclamped_note(Lang::En).to_owned());
-    }
-    if let Some(n) = note {
-        row.reason = Some(match row.reason.take() {
-            Some(r) => format!("{n}; {r}"),
-            None => n,
+        Some(AnswerNote::Unclamped)
+    } else {
+        None
+    };
+    if note.is_some() || answer_note.is_some() {
+        row.reason = Some(Reason::Note {
+            exercise: note,
+            answer: answer_note,
         });
     }
     let max = options.rubric.points_of(&row.exercise);
@@ -1524,15 +1512,6 @@ fn comma_exercise(written: &str, cache: &mut Cache) -> Option<String> {
     }
     let point = written.replace(',', ".");
     cache.get(&point).is_ok().then_some(point)
-}
-
-/// The reason's note for an exercise read with a decimal comma: what was written and how it was
-/// read (English, as every `reason`).
-fn comma_note(written: &str, point: &str) -> String {
-    format!(
-        "the exercise is written \"{written}\", read as {point} (a decimal comma, as a \
-         spreadsheet writes the number {point}; write {point} with a point to be sure)"
-    )
 }
 
 /// Three whole numbers 0–255, one of them above 1: 8-bit values rather than a 0–1 colour.
@@ -1643,7 +1622,7 @@ fn write_rows_csv<R: std::borrow::Borrow<RowOut>>(
             db,
             reading,
             diagnosis,
-            r.reason.clone().unwrap_or_default(),
+            r.reason.as_ref().map_or(String::new(), Reason::to_string),
             number(r.points),
             r.max_points.map_or(String::new(), number),
             r.counted.to_string(),

@@ -591,8 +591,8 @@ pub fn step_tolerance(relative: f64, absolute: f64, lang: Lang) -> String {
 pub(crate) struct RowFacts<'a> {
     /// The verdict, `None` for a row that cannot be judged.
     pub verdict: Option<&'a super::Verdict>,
-    /// Why the row cannot be judged (English; the reasons name files and fields).
-    pub reason: Option<&'a str>,
+    /// Why the row cannot be judged, said in the feedback's language.
+    pub reason: Option<&'a dyn crate::text::Message>,
     /// The tolerance the answer was judged with.
     pub tolerance: f64,
     /// A whole-number triple on the 0–1 scale read as 8-bit values.
@@ -608,10 +608,8 @@ pub(crate) fn feedback(f: &RowFacts, lang: Lang) -> String {
     match f.verdict {
         None => {
             parts.push(invalid(lang).to_owned());
-            // The reason is English (the report's `reason` column); the feedback says it in
-            // `lang`, through the errors' catalogue.
             if let Some(r) = f.reason {
-                parts.push(crate::report::messages::error_in(r, lang));
+                parts.push(r.text(lang));
             }
         }
         Some(v) => {

@@ -10,6 +10,11 @@
 //! exercise files of the folder in name order). A response "-" or empty (not answered) and the
 //! report's "Overall average" line are not rows.
 
+use std::fmt;
+
+use crate::messages;
+use crate::text::{Lang, Show};
+
 /// The file is Moodle's Responses export: a header with a "Response 1" (or "Resposta 1")
 /// column.
 pub fn is_responses(text: &[u8]) -> bool {
@@ -59,34 +64,31 @@ fn quoted(text: &str) -> String {
     format!("\"{}\"", text.replace('"', "\"\""))
 }
 
-/// What the CSV reader found wrong, in words the errors' catalogue translates: text that is not
-/// UTF-8 (the reader's only error on text in memory read flexibly), else the reader's own words.
-fn csv_error(e: &csv::Error) -> String {
-    match e.kind() {
-        csv::ErrorKind::Utf8 { pos, .. } => format!(
-            "line {} is not UTF-8 text. Fix: save the export as UTF-8 (CSV UTF-8)",
-            pos.as_ref().map_or(0, csv::Position::line)
-        ),
-        _ => e.to_string(),
+/// What the CSV reader found wrong: text that is not UTF-8 (the reader's only error on text in
+/// memory read flexibly), else the reader's own words.
+fn csv_error(e: &csv::Error, header: bool) -> MoodleError {
+    match (e.kind(), header) {
+        (csv::ErrorKind::Utf8 { pos, .. }, header) => {
+            let line = pos.as_ref().map_or(0, csv::Position::line);
+            if header {
+                MoodleError::HeaderNotUtf8 { line }
+            } else {
+                MoodleError::NotUtf8 { line }
+            }
+        }
+        (_, true) => MoodleError::Header { why: e.to_string() },
+        (_, false) => MoodleError::Unreadable { why: e.to_string() },
     }
 }
 
 /// The export as `student,exercise,answer` CSV text (a header, then a row per answered
 /// question); `questions[N-1]` is the exercise of slot N. Errors say what is missing.
-pub fn to_rows(text: &[u8], questions: &[String]) -> Result<Vec<u8>, String> {
+pub fn to_rows(text: &[u8], questions: &[String]) -> Result<Vec<u8>, MoodleError> {
     let mut reader = csv::ReaderBuilder::new()
         .has_headers(true)
         .flexible(true)
         .from_reader(text);
-    let header = reader
-        .headers()
-        .map_err(|e| {
-            format!(
-                "the Moodle export's header cannot be read: {}",
-                csv_error(&e)
-            )
-        })?
-        .clone();
+    let header = reader.headers().map_err(|e| csv_error(&e, true))?.clone();
     let find = |names: &[&str]| {
         header
             .iter()
@@ -106,16 +108,11 @@ pub fn to_rows(text: &[u8], questions: &[String]) -> Result<Vec<u8>, String> {
         .filter_map(|(at, h)| response_slot(h).map(|n| (at, n)))
         .collect();
     if slots.is_empty() {
-        return Err(
-            "the Moodle export has no \"Response 1\" column. Fix: download the quiz's \
-                    Responses report as CSV, or give --input csv for a plain CSV"
-                .into(),
-        );
+        return Err(MoodleError::NoResponse);
     }
     let mut out = String::from("student,exercise,answer\n");
     for record in reader.records() {
-        let record =
-            record.map_err(|e| format!("the Moodle export cannot be read: {}", csv_error(&e)))?;
+        let record = record.map_err(|e| csv_error(&e, false))?;
         let cell = |at: Option<usize>| at.and_then(|a| record.get(a)).unwrap_or("").trim();
         let name = format!("{} {}", cell(first), cell(surname));
         let student = match cell(email) {
@@ -131,13 +128,9 @@ pub fn to_rows(text: &[u8], questions: &[String]) -> Result<Vec<u8>, String> {
             if response.is_empty() || response == "-" {
                 continue;
             }
-            let exercise = questions.get(n - 1).ok_or_else(|| {
-                format!(
-                    "the Moodle export has a \"Response {n}\" column but only {} exercise{} \
-                     given: name one per question slot with --questions",
-                    questions.len(),
-                    if questions.len() == 1 { " is" } else { "s are" }
-                )
+            let exercise = questions.get(n - 1).ok_or(MoodleError::TooFewExercises {
+                slot: n,
+                given: Given(questions.len()),
             })?;
             out.push_str(&format!(
                 "{},{},{}\n",
@@ -148,6 +141,63 @@ pub fn to_rows(text: &[u8], questions: &[String]) -> Result<Vec<u8>, String> {
         }
     }
     Ok(out.into_bytes())
+}
+
+/// A number of exercises given: `1 exercise is given`, `2 exercises are given` (`1 exercício
+/// é dado`, `2 exercícios são dados`).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Given(pub usize);
+
+impl Show for Given {
+    fn show(&self, lang: Lang, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let n = self.0;
+        match (lang, n) {
+            (Lang::En, 1) => f.write_str("1 exercise is given"),
+            (Lang::En, _) => write!(f, "{n} exercises are given"),
+            (Lang::Pt, 1) => f.write_str("1 exercício é dado"),
+            (Lang::Pt, _) => write!(f, "{n} exercícios são dados"),
+        }
+    }
+}
+
+messages! {
+    /// Why a Moodle Responses export cannot be read (the report's only row says it).
+    #[allow(missing_docs)] // each field is named by its sentences
+    pub enum MoodleError {
+        /// The header's line is not UTF-8.
+        HeaderNotUtf8 { line: u64 } =>
+            "the Moodle export's header cannot be read: line {line} is not UTF-8 text. Fix: \
+             save the export as UTF-8 (CSV UTF-8)",
+            "o cabeçalho da exportação do Moodle não pode ser lido: a linha {line} não é texto \
+             UTF-8. Correção: salve a exportação como UTF-8 (CSV UTF-8)";
+        /// The header cannot be read, in the CSV reader's own words.
+        Header { why: String } =>
+            "the Moodle export's header cannot be read: {why}",
+            "o cabeçalho da exportação do Moodle não pode ser lido: {why}";
+        /// A line that is not UTF-8.
+        NotUtf8 { line: u64 } =>
+            "the Moodle export cannot be read: line {line} is not UTF-8 text. Fix: save the \
+             export as UTF-8 (CSV UTF-8)",
+            "a exportação do Moodle não pode ser lida: a linha {line} não é texto UTF-8. \
+             Correção: salve a exportação como UTF-8 (CSV UTF-8)";
+        /// A line that cannot be read, in the CSV reader's own words.
+        Unreadable { why: String } =>
+            "the Moodle export cannot be read: {why}",
+            "a exportação do Moodle não pode ser lida: {why}";
+        /// No question slot.
+        NoResponse =>
+            "the Moodle export has no \"Response 1\" column. Fix: download the quiz's \
+             Responses report as CSV, or give --input csv for a plain CSV",
+            "a exportação do Moodle não tem a coluna \"Response 1\". Correção: baixe o \
+             relatório \"Responses\" do questionário como CSV, ou dê --input csv para um CSV \
+             simples";
+        /// A question slot beyond the exercises given.
+        TooFewExercises { slot: usize, given: Given } =>
+            "the Moodle export has a \"Response {slot}\" column but only {given}: name one per \
+             question slot with --questions",
+            "a exportação do Moodle tem uma coluna \"Response {slot}\", mas só {given}: dê um \
+             por pergunta com --questions";
+    }
 }
 
 #[cfg(test)]

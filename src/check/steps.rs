@@ -337,14 +337,6 @@ impl std::fmt::Display for BadStep {
 
 impl std::error::Error for BadStep {}
 
-/// Transitional, for `phong grade` (check/grade.rs): a cell of steps that cannot be read, in
-/// English. [`read_cell`] gives the typed [`BadStep`].
-#[derive(Clone, Debug, PartialEq, Eq)]
-pub struct UnreadCell {
-    /// The error in English, with its fix.
-    pub message: String,
-}
-
 fn known_names() -> String {
     NAMES.iter().map(|n| n.name).collect::<Vec<_>>().join(", ")
 }
@@ -497,13 +489,6 @@ pub fn read_cell(text: &str) -> Result<Vec<GivenStep>, BadStep> {
         .zip(&values)
         .map(|(name, value)| parse_named(name, value).map_err(|e| e.at(format!("{name}={value}"))))
         .collect()
-}
-
-/// Transitional, for `phong grade`: [`read_cell`], its error in English.
-pub fn parse_cell(text: &str) -> Result<Vec<GivenStep>, UnreadCell> {
-    read_cell(text).map_err(|e| UnreadCell {
-        message: e.to_string(),
-    })
 }
 
 /// Reads a `--steps` file: one JSON object of names and values, a value a number, an array of
@@ -957,15 +942,6 @@ pub struct StepsJudged {
     pub first_wrong: Option<usize>,
     /// Exit 0: every step right, or right in the likely intended reading without `--strict`.
     pub accepted: bool,
-}
-
-/// Transitional, for `phong grade` (check/grade.rs): [`judge`], its error in English.
-pub fn judge_steps(
-    x: &StepsExpected,
-    given: &[GivenStep],
-    strict: bool,
-) -> Result<StepsJudged, String> {
-    judge(x, given, strict).map_err(|e| e.text(Lang::En))
 }
 
 /// Judges the steps against a solved problem; a step that names a quantity this problem does
@@ -1471,7 +1447,7 @@ mod tests {
     use super::*;
 
     fn names(cell: &str) -> Vec<(String, Value)> {
-        parse_cell(cell)
+        read_cell(cell)
             .unwrap()
             .into_iter()
             .map(|g| (g.text, g.value))
@@ -1510,7 +1486,7 @@ mod tests {
 
     #[test]
     fn a_bad_cell_quotes_the_step_as_written() {
-        let e = |cell: &str| parse_cell(cell).unwrap_err().message;
+        let e = |cell: &str| read_cell(cell).unwrap_err().to_string();
         let pt = |cell: &str| read_cell(cell).unwrap_err().text(Lang::Pt);
         assert_eq!(
             pt("cos_theta=abc"),

@@ -12,7 +12,6 @@ pub(crate) mod faults;
 mod files;
 mod output;
 pub(crate) mod parse;
-mod pending;
 pub(crate) mod usage;
 
 use std::process::ExitCode;

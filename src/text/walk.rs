@@ -112,6 +112,13 @@ walked! {
     sentences crate::serve::faults::StartText;
     #[cfg(feature = "serve")]
     sentences crate::serve::log::LogMessage;
+    sentences crate::check::grade::NotCsv;
+    sentences crate::check::grade::FieldsHint;
+    sentences crate::check::grade::RowReason;
+    faults crate::check::grade::ExerciseFault;
+    faults crate::check::grade::HeaderFault;
+    sentences crate::check::grade::ExerciseNote;
+    sentences crate::check::moodle::MoodleError;
 }
 
 /// English words that Portuguese never uses: one of them in a Portuguese rendering (outside
