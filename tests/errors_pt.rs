@@ -141,9 +141,8 @@ fn the_errors_of_finding_1_are_wholly_portuguese() {
 }
 
 #[test]
-fn the_portuguese_aside_is_the_portuguese_fix() {
-    // The code writes "(Português: o JSON não aceita frações: escreva 3/5 como decimal, 0.6)":
-    // that sentence is the fix in Portuguese, and the English half is not kept.
+fn a_fraction_s_fix_is_wholly_portuguese_and_wholly_english() {
+    // The fix is one value with both languages: the Portuguese says it all, the English too.
     let (_, pt) = solve(
         "frac.json",
         &exercise_with(r#""position": [3, 1, 3]"#, r#""position": [3/5, 1, 3]"#),
