@@ -638,6 +638,22 @@ fn clap_usage_errors_are_said_in_portuguese() {
                 "erro: o argumento '--answer <ANSWER>' não pode ser usado mais de uma vez{MORE}"
             ),
         ),
+        // A whole number outside the range of one of clap's own parsers (`new --count`: 1 to
+        // 10000), and not a whole number at all.
+        (
+            vec!["new", "--count", "0", "--lang", "pt"],
+            format!(
+                "erro: valor inválido '0' para '--count <COUNT>': 0 está fora do intervalo de 1 \
+                 a 10000{MORE}"
+            ),
+        ),
+        (
+            vec!["new", "--count", "abc", "--lang", "pt"],
+            format!(
+                "erro: valor inválido 'abc' para '--count <COUNT>': há um caractere que não é \
+                 um algarismo: dê um número inteiro{MORE}"
+            ),
+        ),
         // InvalidSubcommand, with clap's suggestions.
         (
             vec!["chek", "--lang", "pt"],

@@ -26,6 +26,10 @@ crate::messages! {
         ValueValidation { value: String, arg: String, why: Refused } =>
             "invalid value '{value}' for '{arg}': {why}",
             "valor inválido '{value}' para '{arg}': {why}";
+        /// A flag's value refused by one of clap's own parsers (a whole number in a range).
+        ValueRefused { value: String, arg: String, why: ClapReason } =>
+            "invalid value '{value}' for '{arg}': {why}",
+            "valor inválido '{value}' para '{arg}': {why}";
         /// A flag or argument the command does not take.
         UnknownArgument { arg: String } =>
             "unexpected argument '{arg}' found", "argumento inesperado '{arg}'";
@@ -192,13 +196,19 @@ fn sentence(e: &clap::Error) -> Option<UsageText> {
             (arg, value) => UsageText::InvalidValue { value, arg },
         },
         ErrorKind::ValueValidation => {
-            // Only the reasons of phong's own parsers are known in Portuguese.
+            // The reasons of phong's own parsers, and of clap's whole numbers in a range.
             let source = std::error::Error::source(e)?;
-            let why = source.downcast_ref::<BadValue>()?.clone();
-            UsageText::ValueValidation {
-                value: value()?,
-                arg: arg()?,
-                why: Refused(why),
+            match source.downcast_ref::<BadValue>() {
+                Some(why) => UsageText::ValueValidation {
+                    value: value()?,
+                    arg: arg()?,
+                    why: Refused(why.clone()),
+                },
+                None => UsageText::ValueRefused {
+                    value: value()?,
+                    arg: arg()?,
+                    why: ClapReason::read(&source.to_string())?,
+                },
             }
         }
         ErrorKind::UnknownArgument => UsageText::UnknownArgument { arg: arg()? },
@@ -328,5 +338,49 @@ mod tests {
             ])),
             Lang::En
         );
+    }
+}
+
+crate::messages! {
+    /// Why one of clap's own value parsers (`value_parser!(u32).range(…)`) refuses a value, read
+    /// back from its English (which it keeps as text only).
+    #[derive(Default)]
+    pub(crate) enum ClapReason {
+        /// A whole number outside the flag's range.
+        NotInRange { n: String, lo: String, hi: String } =>
+            "{n} is not in {lo}..={hi}", "{n} está fora do intervalo de {lo} a {hi}";
+        /// Not a whole number.
+        #[default]
+        InvalidDigit =>
+            "invalid digit found in string",
+            "há um caractere que não é um algarismo: dê um número inteiro";
+        /// Nothing where a whole number belongs.
+        Empty =>
+            "cannot parse integer from empty string", "vazio: dê um número inteiro";
+        /// A whole number beyond the type.
+        TooLarge =>
+            "number too large to fit in target type", "número grande demais";
+    }
+}
+
+impl ClapReason {
+    /// clap's reason read into a value, when it is one of these and reads back exactly as
+    /// clap wrote it; `None` otherwise (the error is then clap's own, in English).
+    fn read(text: &str) -> Option<ClapReason> {
+        let reason = match text {
+            "invalid digit found in string" => ClapReason::InvalidDigit,
+            "cannot parse integer from empty string" => ClapReason::Empty,
+            "number too large to fit in target type" => ClapReason::TooLarge,
+            _ => {
+                let (n, range) = text.split_once(" is not in ")?;
+                let (lo, hi) = range.split_once("..=")?;
+                ClapReason::NotInRange {
+                    n: n.to_owned(),
+                    lo: lo.to_owned(),
+                    hi: hi.to_owned(),
+                }
+            }
+        };
+        (reason.text(Lang::En) == text).then_some(reason)
     }
 }

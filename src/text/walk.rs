@@ -76,6 +76,7 @@ walked! {
     faults crate::cli::faults::CliFault;
     sentences crate::cli::faults::CliText;
     sentences crate::cli::usage::UsageText;
+    sentences crate::cli::usage::ClapReason;
     faults crate::tradeoff::sweep::SweepFault;
     sentences crate::export::pov::Colour;
     faults crate::export::pov::PovFault;
