@@ -116,8 +116,9 @@ pub struct Name {
     pub flag: bool,
     /// The chapter's equation, when it numbers one.
     pub equation: Option<&'static str>,
-    /// The formula, in the chapter's symbols.
-    pub formula: &'static str,
+    /// The formula, in the chapter's symbols (and, for a yes-or-no step, its words in both
+    /// languages).
+    pub formula: Formula,
 }
 
 const fn name(
@@ -133,29 +134,49 @@ const fn name(
         vector,
         flag: false,
         equation,
-        formula,
+        formula: Formula::symbols(formula),
+    }
+}
+
+/// `n` with its formula's words in Portuguese (`O + tD on the surface`, `sobre a superfície`).
+const fn in_portuguese(n: Name, pt: &'static str) -> Name {
+    Name {
+        formula: Formula {
+            en: n.formula.en,
+            pt,
+        },
+        ..n
     }
 }
 
 /// A yes-or-no quantity of the point (whether a secondary ray is traced).
-const fn flag(name: &'static str, formula: &'static str) -> Name {
+const fn flag(name: &'static str, en: &'static str, pt: &'static str) -> Name {
     Name {
         name,
         per_light: false,
         vector: false,
         flag: true,
         equation: None,
-        formula,
+        formula: Formula { en, pt },
     }
 }
 
 /// Every step that can be checked, in the order of the solution (as `phong solve` shows it).
 pub const NAMES: [Name; 30] = [
-    name("t", false, false, None, "O + tD on the surface"),
+    in_portuguese(
+        name("t", false, false, None, "O + tD on the surface"),
+        "O + tD sobre a superfície",
+    ),
     name("P", false, true, None, "P = O + tD"),
-    name("N", false, true, None, "N, of unit length"),
+    in_portuguese(
+        name("N", false, true, None, "N, of unit length"),
+        "N, de comprimento 1",
+    ),
     name("V", false, true, Some("4.10"), "V = (P − E)/‖P − E‖"),
-    name("I_a", false, true, None, "I_a = Σ ambient lights"),
+    in_portuguese(
+        name("I_a", false, true, None, "I_a = Σ ambient lights"),
+        "I_a = Σ das luzes ambientes",
+    ),
     name("ambient", false, true, Some("4.6"), "O_a I_a"),
     name("L", true, true, Some("4.1"), "L = (P − P_l)/‖P − P_l‖"),
     name("d", true, false, None, "d = ‖P − P_l‖"),
@@ -197,6 +218,7 @@ pub const NAMES: [Name; 30] = [
     flag(
         "reflection_traced",
         "the reflection ray is traced: level ≤ maximum level and w_s > minimum weight",
+        "o raio de reflexão é traçado: nível ≤ nível máximo e w_s > peso mínimo",
     ),
     name("cos_theta_i", false, false, None, "cos θ_i = −N·V"),
     name(
@@ -223,6 +245,7 @@ pub const NAMES: [Name; 30] = [
     flag(
         "transmission_traced",
         "the transmission ray is traced: k ≥ 0, level ≤ maximum level and w_t > minimum weight",
+        "o raio de transmissão é traçado: k ≥ 0, nível ≤ nível máximo e w_t > peso mínimo",
     ),
 ];
 
@@ -970,7 +993,7 @@ pub fn judge(
                 return Err(StepMissing::NoSuchStep {
                     step: g.text.clone(),
                     name: g.name.name,
-                    formula: Formula(g.name.formula),
+                    formula: g.name.formula,
                     has: has.join(", "),
                 });
             }
@@ -1102,7 +1125,7 @@ pub(crate) fn equation(q: &Quantity, lang: Lang) -> String {
         Lang::En => "Eq.",
         Lang::Pt => "Eq.",
     };
-    let formula = crate::report::messages::step_formula(q.name.formula, lang);
+    let formula = q.name.formula.get(lang);
     match q.equation {
         Some(n) => format!("{eq} {n}: {formula}"),
         None => formula.to_owned(),
@@ -1358,7 +1381,7 @@ pub fn steps_json(j: &StepsJudged) -> StepsOut {
                 light: s.light,
                 text: s.given.text.clone(),
                 equation: s.expected.equation,
-                formula: s.given.name.formula,
+                formula: s.given.name.formula.en,
                 given: s.given.value,
                 expected: s.expected.value,
                 expected_source: if s.expected_from_reading.is_some() {
@@ -1381,7 +1404,7 @@ pub fn steps_json(j: &StepsJudged) -> StepsOut {
                 name: s.given.name.name,
                 light: s.light,
                 equation: s.expected.equation,
-                formula: s.given.name.formula,
+                formula: s.given.name.formula.en,
             }
         }),
     }
@@ -1657,12 +1680,32 @@ impl Message for StepMissing {
     }
 }
 
-/// A step's formula in a message, its words in the message's language.
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
-pub struct Formula(pub &'static str);
+/// A step's formula, its words (where it has any) in both languages side by side.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Formula {
+    /// In English (the JSON's).
+    pub en: &'static str,
+    /// In Portuguese.
+    pub pt: &'static str,
+}
+
+impl Formula {
+    /// A formula of symbols only, the same in every language.
+    const fn symbols(f: &'static str) -> Formula {
+        Formula { en: f, pt: f }
+    }
+
+    /// The formula in `lang`.
+    pub fn get(self, lang: Lang) -> &'static str {
+        match lang {
+            Lang::En => self.en,
+            Lang::Pt => self.pt,
+        }
+    }
+}
 
 impl Show for Formula {
     fn show(&self, lang: Lang, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        f.write_str(crate::report::messages::step_formula(self.0, lang))
+        f.write_str(self.get(lang))
     }
 }

@@ -820,27 +820,6 @@ pub fn reading_explanation_given(code: ReadingCode, lang: Lang, viewer: bool) ->
     }
 }
 
-/// The formulas of `phong check --step` that hold words (check/steps.rs's `NAMES`), in
-/// `lang`; the others are symbols only and the same in both languages.
-pub fn step_formula(formula: &'static str, lang: Lang) -> &'static str {
-    match (formula, lang) {
-        (_, Lang::En) => formula,
-        ("O + tD on the surface", Lang::Pt) => "O + tD sobre a superfície",
-        ("N, of unit length", Lang::Pt) => "N, de comprimento 1",
-        ("I_a = Σ ambient lights", Lang::Pt) => "I_a = Σ das luzes ambientes",
-        (
-            "the reflection ray is traced: level ≤ maximum level and w_s > minimum weight",
-            Lang::Pt,
-        ) => "o raio de reflexão é traçado: nível ≤ nível máximo e w_s > peso mínimo",
-        (
-            "the transmission ray is traced: k ≥ 0, level ≤ maximum level and w_t > minimum \
-             weight",
-            Lang::Pt,
-        ) => "o raio de transmissão é traçado: k ≥ 0, nível ≤ nível máximo e w_t > peso mínimo",
-        (other, Lang::Pt) => other,
-    }
-}
-
 /// "yes"/"no" or "sim"/"não": a yes-or-no step's value (whether a secondary ray is traced).
 pub fn yes_no(b: bool, lang: Lang) -> &'static str {
     match (b, lang) {

@@ -20,7 +20,6 @@ use crate::check::steps::{self, GivenStep, Name, StepVerdict, NAMES};
 use crate::check::{self, messages as said, CheckOptions, Scale, VerdictKind};
 use crate::core::Precision;
 use crate::report::html::{self, esc};
-use crate::report::messages::step_formula;
 use crate::serve::catalogue::Exercise;
 use crate::serve::Shared;
 use crate::text::lang::Lang;
@@ -404,7 +403,7 @@ fn form(ex: &Exercise, lang: Lang, input: &Input) -> String {
                 .iter()
                 .find(|(l, _)| *l == b.label)
                 .map_or("", |(_, v)| v.as_str());
-            let formula = step_formula(b.name.formula, lang);
+            let formula = b.name.formula.get(lang);
             let eq = b.name.equation.map_or(String::new(), |e| {
                 format!(" <span class=\"eq\">Eq. {e}</span>")
             });
