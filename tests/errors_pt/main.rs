@@ -2,6 +2,14 @@
 //! Portuguese (no English word of the message survives, and the Portuguese the code writes as
 //! an aside is used), and a decimal comma in a problem file is named as such, with its fix.
 
+// One test binary for every message said in Portuguese (one crate links once): the modules
+// below are each area's, beside this file's own tests of a problem file's errors.
+mod check_pt;
+mod grade_reasons;
+mod parse_pt;
+mod solve_serve_pt;
+mod validate_pt;
+
 use std::path::Path;
 
 use assert_cmd::Command;

@@ -7,10 +7,10 @@ use std::path::Path;
 use assert_cmd::Command;
 
 #[cfg(feature = "serve")]
-#[path = "support/http.rs"]
+#[path = "../support/http.rs"]
 mod http;
 #[cfg(feature = "serve")]
-#[path = "support/server.rs"]
+#[path = "../support/server.rs"]
 #[allow(dead_code)]
 mod server;
 
