@@ -548,7 +548,11 @@ fn check_cost(case: &Case, f32_inputs: &Case, input: Option<&str>, far_from_tole
             case.name
         );
     }
-    assert!(cost_finding(&d64).is_none(), "{}: a finding in f64", case.name);
+    assert!(
+        cost_finding(&d64).is_none(),
+        "{}: a finding in f64",
+        case.name
+    );
     assert!(d64.get("versus_f64").is_none(), "{}", case.name);
 
     let d32 = solve_doc(case, Precision::F32);
@@ -562,10 +566,19 @@ fn check_cost(case: &Case, f32_inputs: &Case, input: Option<&str>, far_from_tole
         } else {
             (c32[i] - e).abs() <= 1e-5 * e.abs().max(1e-3)
         };
-        assert!(ok, "{}: f32 {c32:?}, exact of its inputs {exact_f32:?}", case.name);
+        assert!(
+            ok,
+            "{}: f32 {c32:?}, exact of its inputs {exact_f32:?}",
+            case.name
+        );
     }
     let off = max_diff(c32, exact);
-    assert_eq!(off > phong::solve::CHECK_TOLERANCE, far_from_tolerance, "{}: {off}", case.name);
+    assert_eq!(
+        off > phong::solve::CHECK_TOLERANCE,
+        far_from_tolerance,
+        "{}: {off}",
+        case.name
+    );
     let f = cost_finding(&d32).unwrap_or_else(|| panic!("{}: no finding in f32", case.name));
     assert_eq!(f["values"]["input"].as_str(), input, "{}: {f}", case.name);
     assert_eq!(
@@ -583,7 +596,11 @@ fn check_cost(case: &Case, f32_inputs: &Case, input: Option<&str>, far_from_tole
     let diff: [f64; 3] = std::array::from_fn(|i| v["color"][i].as_f64().unwrap());
     let f64_color: [f64; 3] = std::array::from_fn(|i| v["f64_color"][i].as_f64().unwrap());
     for i in 0..3 {
-        assert!((f64_color[i] - exact[i]).abs() <= 1e-9 * exact[i].abs(), "{}", case.name);
+        assert!(
+            (f64_color[i] - exact[i]).abs() <= 1e-9 * exact[i].abs(),
+            "{}",
+            case.name
+        );
         let want = c32[i] - exact[i];
         assert!(
             (diff[i] - want).abs() <= 1e-9 * want.abs().max(1e-300) + 1e-12 * exact[i].abs(),
@@ -604,7 +621,12 @@ fn f32_says_when_a_grazing_directional_light_loses_its_specular_term() {
     assert!(s.lights[0].specular_lit);
     let exact = s.color.each_ref().map(to_f64);
     assert!(max_diff(exact, [0.2, 0.3, 0.4]) < 1e-6, "{exact:?}");
-    check_cost(&case, &case.rounded_to_f32(), Some("lights[0].direction[2]"), true);
+    check_cost(
+        &case,
+        &case.rounded_to_f32(),
+        Some("lights[0].direction[2]"),
+        true,
+    );
     let d32 = solve_doc(&case, phong::core::Precision::F32);
     let f = cost_finding(&d32).unwrap();
     assert_eq!(f["values"]["gate"], "cos_theta", "{f}");
@@ -615,10 +637,19 @@ fn f32_says_when_a_grazing_directional_light_loses_its_specular_term() {
 #[test]
 fn f32_says_when_a_near_light_is_read_nearer() {
     let case = near_light();
-    let exact = Reference::default().shade(&case).color.each_ref().map(to_f64);
+    let exact = Reference::default()
+        .shade(&case)
+        .color
+        .each_ref()
+        .map(to_f64);
     // I_l = 1e-12/(1e-6)² = 1 to the rounding of 3.000001 − 3 in f64 (1.9e-10 relative).
     assert!(max_diff(exact, [0.5, 0.6, 0.7]) < 1e-9, "{exact:?}");
-    check_cost(&case, &case.rounded_to_f32(), Some("lights[0].position[2]"), true);
+    check_cost(
+        &case,
+        &case.rounded_to_f32(),
+        Some("lights[0].position[2]"),
+        true,
+    );
     let d32 = solve_doc(&case, phong::core::Precision::F32);
     let off = max_diff(color_of(&d32), exact) / 0.7;
     assert!((0.09..0.11).contains(&off), "relative error {off}");
@@ -627,7 +658,11 @@ fn f32_says_when_a_near_light_is_read_nearer() {
 #[test]
 fn f32_says_when_a_tiny_channel_is_zeroed() {
     let case = tiny_colours();
-    let exact = Reference::default().shade(&case).color.each_ref().map(to_f64);
+    let exact = Reference::default()
+        .shade(&case)
+        .color
+        .each_ref()
+        .map(to_f64);
     assert!((exact[2] / 2.6e-60 - 1.0).abs() < 1e-12, "{exact:?}");
     // Every input reads as a normal f32: no number lost its digits, f32's range did; the
     // reference of the case as given (f32's inputs are within 1e-7 of it) is 1e-60, f32's 0.
