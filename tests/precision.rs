@@ -410,3 +410,287 @@ fn the_suite_holds_every_extreme_of_issue_5() {
         }
     }
 }
+
+// What f32 cost (issue 34): three problems whose answer f32 loses, each solved by phong in f32
+// and f64 and measured against the 256-bit reference of the problem as given (and of the
+// problem with its numbers rounded to f32, as `--precision f32` reads it).
+
+/// A point problem with one light and the material given, no ambient light.
+fn cost_case(
+    name: &str,
+    point: [f64; 3],
+    normal: [f64; 3],
+    viewer: Option<[f64; 3]>,
+    lights: Vec<LightIn>,
+    material: MaterialIn,
+) -> Case {
+    Case {
+        group: "cost",
+        name: name.into(),
+        point,
+        normal,
+        viewer,
+        lights,
+        material,
+    }
+}
+
+/// A directional light 1e-8 above the tangent plane (N = (0,1,1), D_l = (0, 1, −1 − 2e-8):
+/// cos θ = 1e-8) with a specular material and the viewer near the mirror direction. f32 reads
+/// D_l's −1.00000002 as −1: the light in the tangent plane, the specular term gone.
+fn directional_grazing() -> Case {
+    cost_case(
+        "directional light 1e-8 above the tangent plane",
+        [0.0; 3],
+        [0.0, 1.0, 1.0],
+        Some([0.0, 1.0, -0.99999996]),
+        vec![LightIn::Directional {
+            direction: [0.0, 1.0, -1.00000002],
+            color: [1.0; 3],
+        }],
+        MaterialIn {
+            ambient: [0.0; 3],
+            diffuse: [0.0; 3],
+            specular: [0.2, 0.3, 0.4],
+            shininess: 1.0,
+        },
+    )
+}
+
+/// A point light 1e-6 above the point (1, 2, 3), C_l = 1e-12 with f = 2 (I_l = 1): f32 reads
+/// 3.000001 as 3.00000095367…, 4.6 % nearer, and the colour is 9.9 % too bright.
+fn near_light() -> Case {
+    cost_case(
+        "point light 1e-6 from (1, 2, 3)",
+        [1.0, 2.0, 3.0],
+        [0.0, 0.0, 1.0],
+        None,
+        vec![LightIn::Point {
+            position: [1.0, 2.0, 3.000001],
+            color: [1e-12; 3],
+            falloff: 2,
+        }],
+        MaterialIn {
+            ambient: [0.0; 3],
+            diffuse: [0.5, 0.6, 0.7],
+            specular: [0.0; 3],
+            shininess: 1.0,
+        },
+    )
+}
+
+/// Colours of 1e-30: O_a I_a of order 1e-60, below f32's range (it becomes 0), though every
+/// input reads as a normal f32.
+fn tiny_colours() -> Case {
+    cost_case(
+        "colours of 1e-30",
+        [0.0; 3],
+        [0.0, 0.0, 1.0],
+        None,
+        vec![LightIn::Ambient {
+            color: [1e-30, 2e-30, 2.6e-30],
+        }],
+        MaterialIn {
+            ambient: [1e-30; 3],
+            diffuse: [0.0; 3],
+            specular: [0.0; 3],
+            shininess: 1.0,
+        },
+    )
+}
+
+/// phong's JSON document of a case in `precision`.
+fn solve_doc(case: &Case, precision: phong::core::Precision) -> serde_json::Value {
+    let text = case.to_json();
+    phong::report::file::solve_json_source(
+        phong::problem::Source::Text {
+            name: std::path::Path::new("case.json"),
+            text: &text,
+        },
+        precision,
+    )
+    .unwrap_or_else(|e| panic!("{}: {e}", case.name))
+}
+
+fn color_of(doc: &serde_json::Value) -> [f64; 3] {
+    let c = &doc["solution"]["color"]["unclamped"];
+    std::array::from_fn(|i| c[i].as_f64().expect("a number"))
+}
+
+fn cost_finding(doc: &serde_json::Value) -> Option<&serde_json::Value> {
+    doc["findings"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .find(|f| f["code"] == "f32_differs_from_f64")
+}
+
+fn max_diff(a: [f64; 3], b: [f64; 3]) -> f64 {
+    (0..3).map(|i| (a[i] - b[i]).abs()).fold(0.0, f64::max)
+}
+
+/// Checks one case: f64 agrees with the reference and says nothing; f32 is what the reference
+/// gives for `f32_inputs` (the problem as f32 reads it, or as given where f32's own
+/// computation loses the answer), carries the finding with `input`, and its `versus_f64` holds
+/// the difference from f64.
+fn check_cost(case: &Case, f32_inputs: &Case, input: Option<&str>, far_from_tolerance: bool) {
+    use phong::core::Precision;
+    let mut reference = Reference::default();
+    let exact = reference.shade(case).color.each_ref().map(to_f64);
+    let exact_f32 = reference.shade(f32_inputs).color.each_ref().map(to_f64);
+
+    let d64 = solve_doc(case, Precision::F64);
+    let c64 = color_of(&d64);
+    for i in 0..3 {
+        assert!(
+            (c64[i] - exact[i]).abs() <= 1e-9 * exact[i].abs(),
+            "{}: f64 {c64:?}, exact {exact:?}",
+            case.name
+        );
+    }
+    assert!(
+        cost_finding(&d64).is_none(),
+        "{}: a finding in f64",
+        case.name
+    );
+    assert!(d64.get("versus_f64").is_none(), "{}", case.name);
+
+    let d32 = solve_doc(case, Precision::F32);
+    let c32 = color_of(&d32);
+    // f32's colour is the exact colour of the inputs it read, to f32's own rounding (or 0,
+    // where those are below its range).
+    for i in 0..3 {
+        let e = exact_f32[i];
+        let ok = if e.abs() < 1e-38 {
+            c32[i] == 0.0
+        } else {
+            (c32[i] - e).abs() <= 1e-5 * e.abs().max(1e-3)
+        };
+        assert!(
+            ok,
+            "{}: f32 {c32:?}, exact of its inputs {exact_f32:?}",
+            case.name
+        );
+    }
+    let off = max_diff(c32, exact);
+    assert_eq!(
+        off > phong::solve::CHECK_TOLERANCE,
+        far_from_tolerance,
+        "{}: {off}",
+        case.name
+    );
+    let f = cost_finding(&d32).unwrap_or_else(|| panic!("{}: no finding in f32", case.name));
+    assert_eq!(f["values"]["input"].as_str(), input, "{}: {f}", case.name);
+    assert_eq!(
+        d32["findings"][0]["code"], "f32_differs_from_f64",
+        "{}: the finding comes first",
+        case.name
+    );
+    let message = f["message"].as_str().unwrap();
+    assert!(message.contains("--precision f64"), "{message}");
+    if let Some(field) = input {
+        assert!(message.contains(field), "{message}");
+    }
+    // The difference reported is f32's colour minus f64's, and f64's colour is the exact one.
+    let v = &d32["versus_f64"];
+    let diff: [f64; 3] = std::array::from_fn(|i| v["color"][i].as_f64().unwrap());
+    let f64_color: [f64; 3] = std::array::from_fn(|i| v["f64_color"][i].as_f64().unwrap());
+    for i in 0..3 {
+        assert!(
+            (f64_color[i] - exact[i]).abs() <= 1e-9 * exact[i].abs(),
+            "{}",
+            case.name
+        );
+        let want = c32[i] - exact[i];
+        assert!(
+            (diff[i] - want).abs() <= 1e-9 * want.abs().max(1e-300) + 1e-12 * exact[i].abs(),
+            "{}: versus_f64.color {diff:?}, f32 − exact {want}",
+            case.name
+        );
+    }
+    assert_eq!(v["tolerance"].as_f64(), Some(phong::solve::CHECK_TOLERANCE));
+}
+
+#[test]
+fn f32_says_when_a_grazing_directional_light_loses_its_specular_term() {
+    let case = directional_grazing();
+    // The reference: the light lit (cos θ = 1e-8 > 0, decided exactly), the viewer in the
+    // reflection's direction to within 1e-8: about (0.2, 0.3, 0.4).
+    let s = Reference::default().shade(&case);
+    assert_eq!(s.lights[0].status, Status::Lit);
+    assert!(s.lights[0].specular_lit);
+    let exact = s.color.each_ref().map(to_f64);
+    assert!(max_diff(exact, [0.2, 0.3, 0.4]) < 1e-6, "{exact:?}");
+    check_cost(
+        &case,
+        &case.rounded_to_f32(),
+        Some("lights[0].direction[2]"),
+        true,
+    );
+    let d32 = solve_doc(&case, phong::core::Precision::F32);
+    let f = cost_finding(&d32).unwrap();
+    assert_eq!(f["values"]["gate"], "cos_theta", "{f}");
+    assert_eq!(f["values"]["given"].as_f64(), Some(-1.00000002));
+    assert_eq!(f["values"]["read"].as_f64(), Some(-1.0));
+}
+
+#[test]
+fn f32_says_when_a_near_light_is_read_nearer() {
+    let case = near_light();
+    let exact = Reference::default()
+        .shade(&case)
+        .color
+        .each_ref()
+        .map(to_f64);
+    // I_l = 1e-12/(1e-6)² = 1 to the rounding of 3.000001 − 3 in f64 (1.9e-10 relative).
+    assert!(max_diff(exact, [0.5, 0.6, 0.7]) < 1e-9, "{exact:?}");
+    check_cost(
+        &case,
+        &case.rounded_to_f32(),
+        Some("lights[0].position[2]"),
+        true,
+    );
+    let d32 = solve_doc(&case, phong::core::Precision::F32);
+    let off = max_diff(color_of(&d32), exact) / 0.7;
+    assert!((0.09..0.11).contains(&off), "relative error {off}");
+}
+
+#[test]
+fn f32_says_when_a_tiny_channel_is_zeroed() {
+    let case = tiny_colours();
+    let exact = Reference::default()
+        .shade(&case)
+        .color
+        .each_ref()
+        .map(to_f64);
+    assert!((exact[2] / 2.6e-60 - 1.0).abs() < 1e-12, "{exact:?}");
+    // Every input reads as a normal f32: no number lost its digits, f32's range did; the
+    // reference of the case as given (f32's inputs are within 1e-7 of it) is 1e-60, f32's 0.
+    check_cost(&case, &case, None, false);
+    let d32 = solve_doc(&case, phong::core::Precision::F32);
+    assert_eq!(color_of(&d32), [0.0; 3]);
+    assert_eq!(cost_finding(&d32).unwrap()["values"]["zeroed"], true);
+}
+
+#[test]
+fn the_bundled_exercises_in_f32_agree_with_f64() {
+    let mut solved = 0;
+    for entry in std::fs::read_dir("exercises").unwrap() {
+        let path = entry.unwrap().path();
+        if path.extension().is_none_or(|e| e != "json") {
+            continue;
+        }
+        let Ok(doc) = phong::report::file::solve_json(&path, phong::core::Precision::F32) else {
+            continue;
+        };
+        solved += 1;
+        assert!(cost_finding(&doc).is_none(), "{}: {doc}", path.display());
+        let v = &doc["versus_f64"];
+        if let Some(c) = v["color"].as_array() {
+            for x in c {
+                assert!(x.as_f64().unwrap().abs() <= 1e-6, "{}: {v}", path.display());
+            }
+        }
+    }
+    assert!(solved >= 10, "{solved}");
+}

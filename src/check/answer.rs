@@ -42,7 +42,7 @@ impl Scale {
     ///   255·c itself may sit on a rounding midpoint (0.7·255 = 178.5).
     pub fn default_tolerance(self) -> f64 {
         match self {
-            Scale::Unit => 0.005,
+            Scale::Unit => crate::solve::CHECK_TOLERANCE,
             Scale::Bits8 => 1.0,
         }
     }

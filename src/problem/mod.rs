@@ -89,15 +89,20 @@ pub fn out_of_memory(bytes: usize) -> String {
 /// editors on Windows write one.
 /// A file `-` is standard input.
 pub(crate) fn parse_file(path: &Path) -> Result<ProblemFile, ProblemError> {
+    let text = read_text(path)?;
+    parse_str(path, text.strip_prefix('\u{feff}').unwrap_or(&text))
+}
+
+/// The text of a problem file, read within its size limit and checked to be UTF-8 (a byte
+/// order mark kept). A file `-` is standard input.
+fn read_text(path: &Path) -> Result<String, ProblemError> {
     let bytes = read_limited(path, MAX_PROBLEM_BYTES, Input::ProblemFile).map_err(|source| {
         ProblemError::Read {
             path: path.to_owned(),
             source,
         }
     })?;
-    let text =
-        String::from_utf8(bytes).map_err(|e| not_utf8(path, e.as_bytes(), e.utf8_error()))?;
-    parse_str(path, text.strip_prefix('\u{feff}').unwrap_or(&text))
+    String::from_utf8(bytes).map_err(|e| not_utf8(path, e.as_bytes(), e.utf8_error()))
 }
 
 /// A syntax error at `line`:`column` of the file at `path`.
@@ -555,6 +560,26 @@ impl<'a> Source<'a> {
                 parse_str(name, text.strip_prefix('\u{feff}').unwrap_or(text))
             }
         }
+    }
+
+    /// Reads the problem's text once (a file's bytes as UTF-8, standard input for `-`),
+    /// without a leading byte order mark: for a caller that parses it and also needs the text
+    /// itself (the f32 solver reads its numbers again, one by one, to find which one lost its
+    /// digits). [`Source::parse_text`] parses it as [`Source::parse`] would.
+    pub fn text(&self) -> Result<String, ProblemError> {
+        let text = match *self {
+            Source::File(path) => read_text(path)?,
+            Source::Text { text, .. } => text.to_owned(),
+        };
+        Ok(match text.strip_prefix('\u{feff}') {
+            Some(rest) => rest.to_owned(),
+            None => text,
+        })
+    }
+
+    /// Parses text that [`Source::text`] read (no validation).
+    pub fn parse_text(&self, text: &str) -> Result<ProblemFile, ProblemError> {
+        parse_str(self.name(), text)
     }
 
     /// Reads, parses and validates the problem in precision `R`.

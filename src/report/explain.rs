@@ -214,12 +214,22 @@ pub fn explain<R: Real>(
         heading: Phrase::AsWritten.get(lang).to_owned(),
         explanation: None,
         ray: None,
-        shading: s.evaluation.as_ref().map(|e| Shading {
-            secondary: s
-                .secondary
-                .as_ref()
-                .map_or_else(Vec::new, |x| secondary(x, lang)),
-            ..shading(problem, e, lang, ray_mark(s.intersection.as_ref()))
+        shading: s.evaluation.as_ref().map(|e| {
+            let mut sh = shading(problem, e, lang, ray_mark(s.intersection.as_ref()));
+            if let Some(line) = s.versus_f64.as_ref().and_then(|x| versus_f64(x, lang)) {
+                sh.total.push(Step {
+                    depth: 0,
+                    line,
+                    eq: None,
+                });
+            }
+            Shading {
+                secondary: s
+                    .secondary
+                    .as_ref()
+                    .map_or_else(Vec::new, |x| secondary(x, lang)),
+                ..sh
+            }
         }),
     })
     .chain(s.readings.iter().map(|r| Part {
@@ -260,6 +270,20 @@ pub fn explain<R: Real>(
         parts,
         warnings: problem.warnings.iter().map(|w| w.text(lang)).collect(),
     }
+}
+
+/// The line a problem solved in f32 adds under its colour: f32 − f64 of the colour, f64's
+/// colour, and the check's tolerance; `None` where f64 shades nothing.
+fn versus_f64(x: &crate::solve::VersusF64, lang: Lang) -> Option<Vec<Inline>> {
+    let (d, c) = (x.color?, x.f64_color?);
+    Some(vec![
+        p(Phrase::VersusF64, lang),
+        Vector(d),
+        p(Phrase::VersusF64Gives, lang),
+        Vector(c),
+        p(Phrase::VersusF64Tolerance, lang),
+        Num(x.tolerance),
+    ])
 }
 
 impl Explanation {

@@ -50,6 +50,10 @@ pub struct Document<'a, R: Real> {
     /// with neither O_r nor O_t.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub secondary_rays: Option<SecondaryOut<R>>,
+    /// Solved in f32: f32 − f64 of the problem as written (the colour, and each intermediate
+    /// both computed), with f64's colour and the check's tolerance; absent in f64.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub versus_f64: Option<&'a crate::solve::VersusF64>,
 }
 
 /// `secondary_rays`: the rays a ray problem's hit spawns (docs/conventions.md, "Recursion
@@ -555,6 +559,7 @@ pub fn document<'a, R: Real>(
             .collect(),
         warnings: warnings_out(&problem.warnings),
         secondary_rays: s.secondary.as_ref().map(secondary),
+        versus_f64: s.versus_f64.as_ref(),
     }
 }
 

@@ -15,11 +15,12 @@ use crate::core::{LightStatus, Real, SpecularStatus};
 
 use crate::problem::Problem;
 use crate::solve::{
-    ConeEdge, FarFromOrigin, Finding, FindingData, GateDecision, Omission, OmissionReason,
-    ReadingCode, Side, Term,
+    ConeEdge, F32Differs, FarFromOrigin, Finding, FindingData, Gate, GateDecision, Omission,
+    OmissionReason, ReadingCode, Side, Term,
 };
 use crate::text::lang::Lang;
 use crate::text::number::num;
+use crate::text::{Message, Num, Show};
 
 /// Chooses the text of a language; both texts must be given.
 pub fn pick<T>(lang: Lang, en: T, pt: T) -> T {
@@ -144,6 +145,10 @@ phrases! {
     ClampedTo => " clamped to [0, 1]; 8-bit ", " limitada a [0, 1]; 8 bits ";
     LiteralTotal => "Eq. 4.16 taken literally (no gating): ",
         "Eq. 4.16 tomada literalmente (sem descartar termos): ";
+    /// The line under the colour of a problem solved in f32 (`solve::versus`).
+    VersusF64 => "f32 − f64 of the colour: ", "f32 − f64 da cor: ";
+    VersusF64Gives => " (f64 gives ", " (f64 dá ";
+    VersusF64Tolerance => "); the check's tolerance: ", "); tolerância da verificação: ";
     // Equation references.
     EqAbbrev => "Eq.", "Eq.";
     SecAbbrev => "Sec.", "Seç.";
@@ -253,7 +258,8 @@ fn finding_with<R: Real>(problem: &Problem<R>, f: &Finding, lang: Lang, json: bo
         .light
         .map(|i| light_label(problem, i, lang, json))
         .unwrap_or_default();
-    match f.data {
+    match f.data.clone() {
+        FindingData::F32DiffersFromF64(d) => f32_cost(&d, lang),
         FindingData::HitBehindOrigin { t } => pick(
             lang,
             format!(
@@ -605,6 +611,130 @@ fn finding_with<R: Real>(problem: &Problem<R>, f: &Finding, lang: Lang, json: bo
         )
         .into(),
     }
+}
+
+crate::messages! {
+    /// The parts of the finding `f32_differs_from_f64` (f32's answer is not f64's): what
+    /// differs, why, and what answers it; [`f32_cost`] joins them.
+    pub enum F32Cost {
+        /// The lead: the precision the problem was solved in.
+        InF32 => "in f32", "em f32";
+        /// Two parts of what differs, joined.
+        And => "and", "e";
+        /// A channel of the colour differs by more than the check's tolerance.
+        Differs { difference: Num, tolerance: Num } =>
+            "the colour differs from f64's by {difference}, more than the check's tolerance \
+             ({tolerance})",
+            "a cor difere da cor em f64 em {difference}, mais que a tolerância da verificação \
+             ({tolerance})";
+        /// A gate goes the other way.
+        Gate { gate: GateName } =>
+            "{gate} goes the other way than in f64",
+            "{gate} dá o resultado oposto ao de f64";
+        /// A channel is 0 in one precision and not in the other.
+        Zeroed =>
+            "a channel of the colour is 0 where f64's is not, or the reverse",
+            "um canal da cor é 0 onde o de f64 não é, ou o contrário";
+        /// The number of the file that lost its digits when read.
+        Read { field: String, given: Digits, read: Digits } =>
+            "{field} = {given} in the file reads as {read} in f32, which loses the digits that \
+             decide the answer",
+            "{field} = {given} no arquivo é lido como {read} em f32, que perde os algarismos \
+             que decidem a resposta";
+        /// No number of the file did.
+        Computed =>
+            "no number of the file lost its digits when read in f32: f32's own range and \
+             rounding in the computation did",
+            "nenhum número do arquivo perdeu algarismos ao ser lido em f32: foram o alcance e o \
+             arredondamento do próprio f32 no cálculo";
+        /// What answers it.
+        Fix => "--precision f64 answers it", "--precision f64 dá a resposta certa";
+    }
+}
+
+crate::messages! {
+    /// A gate of the model, as the finding `f32_differs_from_f64` names it.
+    #[derive(Default)]
+    pub enum GateName {
+        /// cos θ > 0.
+        #[default]
+        CosTheta =>
+            "the gate cos θ > 0 (which side of the surface a light is on)",
+            "o teste cos θ > 0 (de que lado da superfície está a fonte de luz)";
+        /// cos φ > 0.
+        CosPhi =>
+            "the gate cos φ > 0 (whether the reflection points towards the viewer)",
+            "o teste cos φ > 0 (se a reflexão aponta para o observador)";
+        /// ψ ≤ γ.
+        Cone => "the spot light's cone test (ψ ≤ γ)", "o teste do cone da luz spot (ψ ≤ γ)";
+        /// t > 0.
+        Hit => "the ray's hit (t > 0)", "a interseção do raio (t > 0)";
+        /// The shadow ray.
+        Shadow => "the shadow test", "o teste de sombra";
+    }
+}
+
+impl From<Gate> for GateName {
+    fn from(g: Gate) -> GateName {
+        match g {
+            Gate::CosTheta => GateName::CosTheta,
+            Gate::CosPhi => GateName::CosPhi,
+            Gate::Cone => GateName::Cone,
+            Gate::Hit => GateName::Hit,
+            Gate::Shadow => GateName::Shadow,
+        }
+    }
+}
+
+/// A number of the file written with every digit it has (the shortest text that reads back
+/// as the same f64), so that a number and its f32 reading can be told apart.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Digits(pub f64);
+
+impl Show for Digits {
+    fn show(&self, _: Lang, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        let a = self.0.abs();
+        if a != 0.0 && !(1e-4..1e7).contains(&a) {
+            write!(f, "{:e}", self.0)
+        } else {
+            write!(f, "{}", self.0)
+        }
+    }
+}
+
+/// The sentence of the finding `f32_differs_from_f64`.
+fn f32_cost(d: &F32Differs, lang: Lang) -> String {
+    let mut what = Vec::new();
+    if let Some(g) = d.gate {
+        what.push(F32Cost::Gate { gate: g.into() }.text(lang));
+    }
+    if let Some(x) = d.difference.filter(|&x| x > d.tolerance) {
+        what.push(
+            F32Cost::Differs {
+                difference: Num(x),
+                tolerance: Num(d.tolerance),
+            }
+            .text(lang),
+        );
+    }
+    if d.zeroed && what.is_empty() {
+        what.push(F32Cost::Zeroed.text(lang));
+    }
+    let cause = match (&d.input, d.given, d.read) {
+        (Some(field), Some(given), Some(read)) => F32Cost::Read {
+            field: field.clone(),
+            given: Digits(given),
+            read: Digits(read),
+        },
+        _ => F32Cost::Computed,
+    };
+    format!(
+        "{}, {}: {}; {}",
+        F32Cost::InF32.text(lang),
+        what.join(&format!(" {} ", F32Cost::And.text(lang))),
+        cause.text(lang),
+        F32Cost::Fix.text(lang)
+    )
 }
 
 /// The sentence for a light's status, in English (as the JSON has it).

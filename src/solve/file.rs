@@ -17,7 +17,15 @@ pub fn solve_file<R: Real>(path: &Path) -> Result<(Problem<R>, Solution<R>), Pro
 pub fn solve_source<R: Real>(
     source: Source<'_>,
 ) -> Result<(Problem<R>, Solution<R>), ProblemError> {
-    let (_, problem) = source.load::<R>()?;
-    let solution = solve(&problem).map_err(|e| e.at(source.name()))?;
+    if R::NAME == <f64 as Real>::NAME {
+        let (_, problem) = source.load::<R>()?;
+        let solution = solve(&problem).map_err(|e| e.at(source.name()))?;
+        return Ok((problem, solution));
+    }
+    // f32: solved in f64 too, from the same text, to say what f32 cost.
+    let text = source.text()?;
+    let problem = source.validate::<R>(&source.parse_text(&text)?)?;
+    let mut solution = solve(&problem).map_err(|e| e.at(source.name()))?;
+    super::versus::compare(&source, &text, &problem, &mut solution);
     Ok((problem, solution))
 }

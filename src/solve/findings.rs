@@ -23,7 +23,7 @@ pub struct Finding {
 }
 
 impl Finding {
-    fn new(data: FindingData) -> Self {
+    pub(super) fn new(data: FindingData) -> Self {
         Finding { data, light: None }
     }
     fn light(mut self, i: usize) -> Self {
@@ -34,9 +34,13 @@ impl Finding {
 
 /// What kind of finding, each with the numbers that back it (the JSON's `values`, named as the
 /// fields are).
-#[derive(Clone, Copy, Debug, PartialEq, serde::Serialize)]
+#[derive(Clone, Debug, PartialEq, serde::Serialize)]
 #[serde(rename_all = "snake_case", tag = "code", content = "values")]
 pub enum FindingData {
+    /// Solved in f32, the answer is not f64's: a channel differs by more than the check's
+    /// tolerance, a gate goes the other way, or a channel is 0 in one and not in the other;
+    /// with the number of the file that lost its digits when read in f32 (`solve::versus`).
+    F32DiffersFromF64(super::versus::F32Differs),
     /// The ray meets a surface only behind its origin (t ≤ 0): no hit.
     HitBehindOrigin {
         /// The t of the meeting along the ray's line, ≤ 0.

@@ -9,6 +9,7 @@ mod file;
 mod findings;
 mod rounding;
 mod secondary;
+mod versus;
 
 use crate::core::color::{self, clamp01};
 use crate::core::real::to_f64_array;
@@ -25,6 +26,7 @@ use faults::{Overflowing, Smaller, SolveFault};
 pub use file::{solve_file, solve_source};
 pub use findings::{ConeEdge, Finding, FindingData, GateDecision};
 pub use secondary::{ReflectionRay, Secondary, TransmittedRay, PROBLEM_RAY_LEVEL};
+pub use versus::{F32Differs, Gate, LightVersus, TotalsVersus, VersusF64, CHECK_TOLERANCE};
 
 /// Everything the solver found out about one problem.
 #[derive(Clone, Debug)]
@@ -44,6 +46,9 @@ pub struct Solution<R: Real> {
     /// For a ray problem whose ray hits a surface that reflects or transmits: the secondary
     /// rays of Section 4.4 at the hit (shown, not traced).
     pub secondary: Option<Secondary<R>>,
+    /// Solved in f32 from a file: f32 − f64 of the problem as written (`solve::versus`);
+    /// `None` in f64.
+    pub versus_f64: Option<VersusF64>,
 }
 
 /// Where a ray problem's ray meets its surfaces.
@@ -260,6 +265,7 @@ impl<R: Real> Solution<R> {
             evaluation: None,
             readings: Vec::new(),
             secondary: None,
+            versus_f64: None,
         }
     }
 }

@@ -103,6 +103,8 @@ walked! {
     sentences crate::solve::faults::Overflowing;
     sentences crate::solve::faults::Smaller;
     faults crate::tracer::faults::TracerFault;
+    sentences crate::report::messages::F32Cost;
+    sentences crate::report::messages::GateName;
     #[cfg(feature = "serve")]
     sentences crate::serve::faults::ApiText;
     #[cfg(feature = "serve")]
