@@ -987,3 +987,99 @@ fn a_pixels_explanation_nests_each_rays_solution_below_the_ray() {
     assert!(latex.contains("\\paragraph*{Findings}") && latex.contains("\\subparagraph{Given}"));
     assert!(!latex.contains("\\subsection*{Findings}"));
 }
+
+/// The pixel's colour from its explanation's samples alone: the mean of each sample's colour
+/// clamped to [0, 1].
+fn pixel_color(e: &Value) -> [f64; 3] {
+    let samples = e["samples"].as_array().unwrap();
+    let mut sum = [0.0; 3];
+    for s in samples {
+        for (k, c) in s["color"].as_array().unwrap().iter().enumerate() {
+            sum[k] += c.as_f64().unwrap().clamp(0.0, 1.0);
+        }
+    }
+    sum.map(|c| c / samples.len() as f64)
+}
+
+fn explain_text(scene: &Path, pixel: &str, args: &[&str]) -> String {
+    let out = phong()
+        .arg("render")
+        .arg(scene)
+        .args(["--explain-pixel", pixel])
+        .args(args)
+        .output()
+        .unwrap();
+    assert!(out.status.success());
+    String::from_utf8(out.stdout).unwrap().replace('\n', " ")
+}
+
+#[test]
+fn a_pixel_explained_in_f32_shows_its_difference_from_f64() {
+    // The classic scene's pixel 320,300 hits the floor and reflects; four samples. Its f64
+    // colour and f32 − f64 are recomputed here from each run's own samples.
+    let scene = repo("scenes/classic.json");
+    let args = ["--samples", "4"];
+    let e32 = explain_json(
+        &scene,
+        320,
+        300,
+        &[&args[..], &["--precision", "f32"]].concat(),
+    );
+    let e64 = explain_json(&scene, 320, 300, &args);
+    assert!(e64.get("versus_f64").is_none(), "f64 has no versus_f64");
+    let v = &e32["versus_f64"];
+    let tolerance = v["tolerance"].as_f64().unwrap();
+    assert_eq!(tolerance, phong::solve::CHECK_TOLERANCE);
+    let (c32, c64) = (pixel_color(&e32), pixel_color(&e64));
+    for k in 0..3 {
+        let f64_color = v["f64_color"][k].as_f64().unwrap();
+        assert!((f64_color - c64[k]).abs() < 1e-15, "f64 colour {k}");
+        let d = v["color"][k].as_f64().unwrap();
+        assert!((d - (c32[k] - c64[k])).abs() < 1e-15, "difference {k}");
+        assert!(d.abs() <= tolerance, "within the tolerance: {d}");
+        // The 8-bit colours: f64's is round(255·c) of its colour, and their difference.
+        let rgb64 = (255.0 * c64[k]).round() as i64;
+        assert_eq!(v["f64_rgb8"][k].as_i64().unwrap(), rgb64);
+        assert_eq!(e64["rgb8"][k].as_i64().unwrap(), rgb64);
+        let rgb32 = e32["rgb8"][k].as_i64().unwrap();
+        assert_eq!(v["rgb8"][k].as_i64().unwrap(), rgb32 - rgb64);
+    }
+    // The text says the difference under the colour, in both languages, and no warning.
+    for (lang, line, warning) in [
+        (
+            "en",
+            "f32 − f64 of the colour: (",
+            "--precision f64 answers it",
+        ),
+        (
+            "pt",
+            "f32 − f64 da cor: (",
+            "--precision f64 dá a resposta certa",
+        ),
+    ] {
+        let f32_text = explain_text(&scene, "320,300", &["--precision", "f32", "--lang", lang]);
+        assert!(f32_text.contains(line), "{lang}: {f32_text}");
+        assert!(!f32_text.contains(warning), "{lang}: {f32_text}");
+        let f64_text = explain_text(&scene, "320,300", &["--lang", lang]);
+        assert!(!f64_text.contains(line), "{lang}: {f64_text}");
+        assert!(!f64_text.contains("f32 − f64"), "{lang}: {f64_text}");
+    }
+}
+
+#[test]
+fn a_pixel_explained_in_f64_says_nothing_of_f32_in_any_format() {
+    let scene = repo("scenes/classic.json");
+    for format in ["text", "markdown", "latex", "html", "json"] {
+        let out = phong()
+            .arg("render")
+            .arg(&scene)
+            .args(["--explain-pixel", "160,150", "--format", format])
+            .output()
+            .unwrap();
+        assert!(out.status.success());
+        let text = String::from_utf8(out.stdout).unwrap();
+        assert!(!text.contains("versus_f64"), "{format}");
+        assert!(!text.contains("f32 − f64"), "{format}");
+        assert!(!text.contains("f32 &minus; f64"), "{format}");
+    }
+}

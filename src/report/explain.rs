@@ -331,7 +331,7 @@ fn file_name(file: &str) -> String {
 }
 
 /// The text with its first letter in capitals ("likely …" becomes "Likely …").
-fn capitalised(s: &str) -> String {
+pub(crate) fn capitalised(s: &str) -> String {
     let mut c = s.chars();
     match c.next() {
         Some(first) => first.to_uppercase().chain(c).collect(),

@@ -649,6 +649,10 @@ crate::messages! {
              arredondamento do próprio f32 no cálculo";
         /// What answers it.
         Fix => "--precision f64 answers it", "--precision f64 dá a resposta certa";
+        /// The one channel of a pixel's colour that differs by more than the tolerance.
+        Channel { channel: String } => "in channel {channel}", "no canal {channel}";
+        /// The channels of a pixel's colour that differ by more than the tolerance.
+        Channels { channels: String } => "in channels {channels}", "nos canais {channels}";
     }
 }
 

@@ -8,11 +8,13 @@ use serde::Serialize;
 use super::explain::{DataRow, Explanation};
 use super::json;
 use super::layout::{self, Layout};
-use super::messages::pick;
+use super::messages::{pick, F32Cost, Phrase};
 use crate::core::real::to_f64_array;
 use crate::core::{Real, Vector, V3};
 use crate::problem::Problem;
+use crate::solve::CHECK_TOLERANCE;
 use crate::text::lang::Lang;
+use crate::text::message::{Message, Num};
 use crate::text::number::{num, vec3};
 use crate::tracer::explain::{PixelExplanation, RayExplanation};
 use crate::tracer::trace::{RayKind, RayRecord, Stop, TransmissionRecord};
@@ -107,6 +109,92 @@ pub struct PixelReport {
     pub samples: Vec<SampleReport>,
     /// How the pixel's colour comes from its samples.
     pub result: String,
+    /// In f32: f32 − f64 of the pixel's colour, f64's colour and the check's tolerance
+    /// ([`PixelReport::versus`]); `None` in f64.
+    pub versus_f64: Option<String>,
+    /// In f32, where a channel of the pixel's colour differs from f64's by more than the
+    /// check's tolerance: which, by how much, and that `--precision f64` answers it.
+    pub warning: Option<String>,
+}
+
+/// A pixel explained in f32 against the same pixel explained in f64: the JSON's `versus_f64`.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct PixelVersus {
+    /// The check's tolerance on the 0–1 scale, [`CHECK_TOLERANCE`].
+    pub tolerance: f64,
+    /// f64's colour of the pixel: the mean of its samples' colours, each clamped to [0, 1].
+    pub f64_color: [f64; 3],
+    /// f64's 8-bit colour of the pixel.
+    pub f64_rgb8: [u8; 3],
+    /// f32 − f64 of the pixel's colour.
+    pub color: [f64; 3],
+    /// f32 − f64 of the pixel's 8-bit colour.
+    pub rgb8: [i16; 3],
+}
+
+/// The pixel `e` (explained in f32) against the same pixel `f` explained in f64.
+pub fn versus<R: Real>(e: &PixelExplanation<R>, f: &PixelExplanation<f64>) -> PixelVersus {
+    PixelVersus {
+        tolerance: CHECK_TOLERANCE,
+        f64_color: f.color,
+        f64_rgb8: f.rgb8,
+        color: std::array::from_fn(|i| e.color[i] - f.color[i]),
+        rgb8: std::array::from_fn(|i| i16::from(e.rgb8[i]) - i16::from(f.rgb8[i])),
+    }
+}
+
+impl PixelVersus {
+    /// The channels (R, G, B) whose difference exceeds the tolerance.
+    pub fn beyond(&self) -> Vec<&'static str> {
+        ["R", "G", "B"]
+            .into_iter()
+            .zip(self.color)
+            .filter(|(_, d)| d.abs() > self.tolerance)
+            .map(|(name, _)| name)
+            .collect()
+    }
+}
+
+impl PixelReport {
+    /// The report with the line under the pixel's colour that compares it with f64's, and the
+    /// warning where a channel differs by more than the check's tolerance.
+    pub fn versus(mut self, x: &PixelVersus) -> PixelReport {
+        let lang = self.lang;
+        self.versus_f64 = Some(format!(
+            "{}{}{}{}{}{}",
+            Phrase::VersusF64.get(lang),
+            vec3(x.color),
+            Phrase::VersusF64Gives.get(lang),
+            vec3(x.f64_color),
+            Phrase::VersusF64Tolerance.get(lang),
+            num(x.tolerance)
+        ));
+        let beyond = x.beyond();
+        if !beyond.is_empty() {
+            let difference = x.color.iter().fold(0.0f64, |m, d| m.max(d.abs()));
+            let channels = match beyond.as_slice() {
+                [one] => F32Cost::Channel {
+                    channel: (*one).to_owned(),
+                },
+                [rest @ .., last] => F32Cost::Channels {
+                    channels: format!("{} {} {last}", rest.join(", "), F32Cost::And.text(lang)),
+                },
+                [] => unreachable!("a channel differs"),
+            };
+            let differs = F32Cost::Differs {
+                difference: Num(difference),
+                tolerance: Num(x.tolerance),
+            };
+            self.warning = Some(super::explain::capitalised(&format!(
+                "{}, {} {}; {}",
+                F32Cost::InF32.text(lang),
+                differs.text(lang),
+                channels.text(lang),
+                F32Cost::Fix.text(lang)
+            )));
+        }
+        self
+    }
 }
 
 /// One sample of a pixel: its rays and the path's colour.
@@ -306,6 +394,8 @@ pub fn report<R: Real>(
         settings,
         samples,
         result,
+        versus_f64: None,
+        warning: None,
     }
 }
 
@@ -652,6 +742,9 @@ pub fn write(layout: &dyn Layout, p: &PixelReport) -> String {
         out.push_str(&layout.strong(2, &sample.color));
     }
     out.push_str(&layout.strong(1, &p.result));
+    for line in [&p.versus_f64, &p.warning].into_iter().flatten() {
+        out.push_str(&layout.paragraph(1, line));
+    }
     out.push_str(&layout.close(1));
     layout.finish(out, &p.title, p.lang)
 }
@@ -695,6 +788,10 @@ pub struct PixelOut<'a, R: Real> {
     pub rgb8: [u8; 3],
     /// How many rays of each kind the pixel's samples traced.
     pub rays: crate::tracer::Counts,
+    /// In f32 only: the same pixel explained in f64, its colour and f32 − f64 of the pixel's
+    /// colour and 8-bit colour, with the check's tolerance; absent in f64.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub versus_f64: Option<PixelVersus>,
 }
 
 /// `settings`: how rays were traced (Section 4.4).
@@ -846,5 +943,72 @@ pub fn document<'a, R: Real>(
             .collect(),
         rgb8: e.rgb8,
         rays: e.counts,
+        versus_f64: None,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn empty(lang: Lang) -> PixelReport {
+        PixelReport {
+            lang,
+            title: String::new(),
+            source: String::new(),
+            question: None,
+            scene: Vec::new(),
+            settings: String::new(),
+            samples: Vec::new(),
+            result: String::new(),
+            versus_f64: None,
+            warning: None,
+        }
+    }
+
+    fn differing(color: [f64; 3]) -> PixelVersus {
+        PixelVersus {
+            tolerance: CHECK_TOLERANCE,
+            f64_color: [0.5; 3],
+            f64_rgb8: [128; 3],
+            color,
+            rgb8: [0; 3],
+        }
+    }
+
+    #[test]
+    fn a_channel_beyond_the_tolerance_is_warned_of_by_name() {
+        let t = CHECK_TOLERANCE;
+        let one = differing([0.0, -2.0 * t, t]);
+        assert_eq!(one.beyond(), ["G"]);
+        let en = empty(Lang::En).versus(&one);
+        let warning = en.warning.expect("a warning");
+        assert!(warning.starts_with("In f32, the colour differs from f64's by"));
+        assert!(
+            warning.contains("in channel G; --precision f64 answers it"),
+            "{warning}"
+        );
+        let pt = empty(Lang::Pt).versus(&differing([3.0 * t, 0.0, -2.0 * t]));
+        let warning = pt.warning.expect("um aviso");
+        assert!(warning.contains("nos canais R e B;"), "{warning}");
+        assert!(
+            warning.ends_with("--precision f64 dá a resposta certa"),
+            "{warning}"
+        );
+        // Within the tolerance: the line under the colour, no warning.
+        let within = empty(Lang::En).versus(&differing([t, -t, 0.0]));
+        assert!(within.warning.is_none());
+        let line = within.versus_f64.expect("the line");
+        assert!(line.starts_with("f32 − f64 of the colour: ("), "{line}");
+    }
+
+    #[test]
+    fn the_warning_follows_the_line_under_the_pixels_colour_in_every_format() {
+        let p = empty(Lang::En).versus(&differing([0.0, 0.0, 0.5]));
+        for out in [write_text(&p), write_markdown(&p)] {
+            let line = out.find("f32 − f64 of the colour").expect("the line");
+            let warning = out.find("In f32, the colour differs").expect("the warning");
+            assert!(line < warning, "{out}");
+        }
     }
 }

@@ -4,7 +4,7 @@
 
 use super::camera::CameraRays;
 use super::faults::TracerFault;
-use super::render::{clamped, to_rgb8};
+use super::render::{clamped, mean, to_rgb8};
 use super::sampler::sample;
 use super::trace::{Counts, RayRecord, Scene, Tracer};
 use crate::core::{Real, Vector, V3};
@@ -20,6 +20,8 @@ pub struct PixelExplanation<R: Real> {
     pub y: u32,
     /// Each sample of the pixel, with its path.
     pub samples: Vec<SampleExplanation<R>>,
+    /// The pixel's colour: the mean of its samples' colours, each clamped to [0, 1].
+    pub color: [f64; 3],
     /// The pixel's 8-bit colour, as in the image.
     pub rgb8: [u8; 3],
     /// How many rays of each kind the pixel's samples traced.
@@ -109,6 +111,7 @@ pub fn explain_pixel<R: Real>(
         x,
         y,
         samples,
+        color: mean(sum, n),
         rgb8: to_rgb8(sum, n),
         counts,
     })

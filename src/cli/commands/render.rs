@@ -63,7 +63,7 @@ fn render<R: Real>(args: &RenderArgs) -> Result<Exit, CliError> {
     let built = building.elapsed();
 
     if let Some((x, y)) = args.explain_pixel {
-        return explain_pixel(args, &problem, &camera, &scene, (x, y));
+        return explain_pixel(args, &problem, &camera, &scene, (x, y), &pool);
     }
 
     let out = args.output.as_deref().expect("clap requires --output here");
@@ -154,6 +154,7 @@ fn explain_pixel<R: Real>(
     camera: &Camera<R>,
     scene: &Scene<R>,
     (x, y): (u32, u32),
+    pool: &rayon::ThreadPool,
 ) -> Result<Exit, CliError> {
     if x >= camera.width || y >= camera.height {
         return Err(CliError::usage(
@@ -170,8 +171,19 @@ fn explain_pixel<R: Real>(
     }
     let path: &Path = &args.scene;
     let e = tracer::explain_pixel(problem, camera, scene, x, y).map_err(|e| e.at(path))?;
+    // In f32, the same pixel explained in f64 too, to show what f32 cost; nothing more in f64.
+    let versus = match R::NAME {
+        "f64" => None,
+        _ => pixel_in_f64(args, (x, y), pool).map(|f| report::pixel::versus(&e, &f)),
+    };
     let file = path.display().to_string();
-    let pixel = || report::pixel::report(&file, problem, &e, args.lang);
+    let pixel = || {
+        let p = report::pixel::report(&file, problem, &e, args.lang);
+        match &versus {
+            Some(v) => p.versus(v),
+            None => p,
+        }
+    };
     let out = match args.format {
         Format::Text => report::pixel::write_text(&pixel()),
         Format::Markdown => report::pixel::write_markdown(&pixel()),
@@ -180,10 +192,34 @@ fn explain_pixel<R: Real>(
         }
         Format::Html => report::pixel::write_html(&pixel(), report::html::HtmlOptions::default()),
         Format::Json => output::json_pretty(
-            &serde_json::to_value(report::pixel::document(&file, problem, &e))
-                .expect("the explanation serialises"),
+            &serde_json::to_value(report::pixel::PixelOut {
+                versus_f64: versus,
+                ..report::pixel::document(&file, problem, &e)
+            })
+            .expect("the explanation serialises"),
         ),
     };
     output::emit(args.output.as_deref(), &out)?;
     Ok(Exit::Success)
+}
+
+/// The pixel `(x, y)` of the scene read in f64, with the same settings, explained: what an f32
+/// explanation is compared with. `None` where the scene does not load or the pixel does not
+/// trace in f64 (f32 did, so that is a limit of f32's range already reported, or none).
+fn pixel_in_f64(
+    args: &RenderArgs,
+    (x, y): (u32, u32),
+    pool: &rayon::ThreadPool,
+) -> Option<tracer::explain::PixelExplanation<f64>> {
+    let problem::SceneFile {
+        mut problem,
+        camera,
+        ..
+    } = problem::load_scene::<f64>(&args.scene).ok()?;
+    problem.render = problem
+        .render
+        .with(&super::overrides(&args.settings))
+        .ok()?;
+    let scene = pool.install(|| Scene::new(&problem));
+    tracer::explain_pixel(&problem, &camera, &scene, x, y).ok()
 }
