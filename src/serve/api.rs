@@ -108,8 +108,8 @@ async fn solve(State(state): State<Shared>, headers: HeaderMap, body: Bytes) -> 
 
 /// [`solve`]'s answer, or the response that refuses the request.
 fn solved(state: &Shared, headers: &HeaderMap, body: &Bytes) -> Result<Response, Response> {
-    let request: SolveRequest<'_> = envelope(headers, body, SOLVE_SHAPE)?;
-    let lang = lang(request.lang.as_deref())?;
+    let request: SolveRequest<'_> = envelope(headers, body, Shape::Solve)?;
+    let lang = lang(request.lang.as_deref(), headers)?;
     let precision = match request.precision.as_deref() {
         None | Some("f64") => Precision::F64,
         Some("f32") => Precision::F32,
@@ -144,8 +144,8 @@ async fn check(State(state): State<Shared>, headers: HeaderMap, body: Bytes) -> 
 
 /// [`check`]'s answer, or the response that refuses the request.
 fn checked(state: &Shared, headers: &HeaderMap, body: &Bytes) -> Result<Response, Response> {
-    let request: CheckRequest<'_> = envelope(headers, body, CHECK_SHAPE)?;
-    let lang = lang(request.lang.as_deref())?;
+    let request: CheckRequest<'_> = envelope(headers, body, Shape::Check)?;
+    let lang = lang(request.lang.as_deref(), headers)?;
     let scale = match &request.scale {
         None => check::Scale::Unit,
         Some(ScaleField::Number(1)) => check::Scale::Unit,
@@ -368,21 +368,18 @@ impl<'a> Problem<'a> {
     }
 }
 
-/// What the body of a solve request looks like, for the messages.
-const SOLVE_SHAPE: &str =
-    "{\"problem\": {…a problem file…}, \"lang\": \"pt\"} or {\"exercise\": \"4.2\"}";
-/// What the body of a check request looks like, for the messages.
-const CHECK_SHAPE: &str = "{\"problem\": {…a problem file…}, \"answer\": \"0.245 0.28 0.21\", \
-                           \"steps\": {\"cos_theta\": \"0.98995\"}} or {\"exercise\": \"4.2\", …}";
+use super::faults::Shape;
 
 /// The request's JSON body read into `T`: 415 when it is not JSON's content type, 400 when it
 /// is not the API's JSON (the message names the line, the column and what was expected). The
-/// request's `lang` is not read yet: these refusals are in English.
+/// request's `lang` is not read yet: these refusals are in the language of its
+/// `Accept-Language` header, as the pages choose theirs (English without one).
 fn envelope<'a, T: Deserialize<'a>>(
     headers: &HeaderMap,
     body: &'a [u8],
-    shape: &'static str,
+    shape: Shape,
 ) -> Result<T, Response> {
+    let lang = header_lang(headers);
     let json = headers
         .get(header::CONTENT_TYPE)
         .and_then(|v| v.to_str().ok())
@@ -396,7 +393,7 @@ fn envelope<'a, T: Deserialize<'a>>(
             StatusCode::UNSUPPORTED_MEDIA_TYPE,
             "usage",
             None,
-            ApiText::NotJson { shape }.text(Lang::En),
+            ApiText::NotJson { shape }.text(lang),
         ));
     }
     let text = std::str::from_utf8(body).map_err(|e| {
@@ -407,19 +404,19 @@ fn envelope<'a, T: Deserialize<'a>>(
             ApiText::NotUtf8 {
                 byte: e.valid_up_to(),
             }
-            .text(Lang::En),
+            .text(lang),
         )
     })?;
     let refused = |field: Option<String>, inner: &serde_json::Error| {
-        let reason = match &field {
-            Some(f) => format!("{f}: {inner}"),
-            None => inner.to_string(),
+        let reason = Reason {
+            field: field.clone(),
+            error: crate::problem::JsonError::of(inner),
         };
         error(
             StatusCode::BAD_REQUEST,
             "syntax",
             field.as_deref(),
-            ApiText::NotTheApis { reason, shape }.text(Lang::En),
+            ApiText::NotTheApis { reason, shape }.text(lang),
         )
     };
     if !text.trim_start().starts_with('{') {
@@ -427,14 +424,14 @@ fn envelope<'a, T: Deserialize<'a>>(
             StatusCode::BAD_REQUEST,
             "syntax",
             None,
-            ApiText::NotAnObject { shape }.text(Lang::En),
+            ApiText::NotAnObject { shape }.text(lang),
         ));
     }
     let mut de = serde_json::Deserializer::from_str(text);
     let value: T = serde_path_to_error::deserialize(&mut de).map_err(|e| {
         let field = e.path().to_string();
         if field == "problem" || field.starts_with("problem.") || field.starts_with("problem[") {
-            if let Some(refusal) = broken_problem(text) {
+            if let Some(refusal) = broken_problem(text, lang) {
                 return refusal;
             }
         }
@@ -449,16 +446,43 @@ fn envelope<'a, T: Deserialize<'a>>(
 /// no NaN`), its line and column counted from the problem's first line (a file's lines, when
 /// the file was sent as it is). `None` when the problem reads well (the envelope is what is
 /// broken, after it).
-fn broken_problem(text: &str) -> Option<Response> {
+fn broken_problem(text: &str, lang: Lang) -> Option<Response> {
     let key = text.find("\"problem\"")?;
     let rest = text[key + "\"problem\"".len()..].trim_start();
     let rest = rest.strip_prefix(':')?.trim_start();
     let name = Path::new(PROBLEM_NAME);
     match crate::problem::parse_str(name, rest) {
         Err(e @ ProblemError::Syntax { .. }) if !is_trailing(&e) => {
-            Some(problem_error(&e, name, Lang::En))
+            Some(problem_error(&e, name, lang))
         }
         _ => None,
+    }
+}
+
+/// The language of a request's `Accept-Language` header (English without one): what the
+/// refusals said before its `lang` is read speak.
+fn header_lang(headers: &HeaderMap) -> Lang {
+    headers
+        .get(header::ACCEPT_LANGUAGE)
+        .and_then(|v| v.to_str().ok())
+        .and_then(super::pages::lang::accept_language)
+        .unwrap_or(Lang::En)
+}
+
+/// Why a body is not the API's JSON: serde's words read into a value, after the field where
+/// the reading stopped (`exercise: invalid type: …`).
+#[derive(Clone, Debug, Default, PartialEq)]
+pub(crate) struct Reason {
+    field: Option<String>,
+    error: crate::problem::JsonError,
+}
+
+impl Message for Reason {
+    fn text(&self, lang: Lang) -> String {
+        match &self.field {
+            Some(f) => format!("{f}: {}", self.error.text(lang)),
+            None => self.error.text(lang),
+        }
     }
 }
 
@@ -467,8 +491,9 @@ fn is_trailing(e: &ProblemError) -> bool {
     e.is_trailing()
 }
 
-/// The `lang` of a request: English unless `"pt"` (a code that is none is refused in English).
-fn lang(text: Option<&str>) -> Result<Lang, Response> {
+/// The `lang` of a request: English unless `"pt"` (a code that is none is refused in the
+/// language of its `Accept-Language`).
+fn lang(text: Option<&str>, headers: &HeaderMap) -> Result<Lang, Response> {
     match text {
         None => Ok(Lang::En),
         Some(code) => Lang::from_code(code).ok_or_else(|| {
@@ -479,7 +504,7 @@ fn lang(text: Option<&str>) -> Result<Lang, Response> {
                 ApiText::NotALanguage {
                     code: Echo::new(code, 40),
                 }
-                .text(Lang::En),
+                .text(header_lang(headers)),
             )
         }),
     }

@@ -13,7 +13,7 @@ messages! {
     /// The API's own refusals: the request, not the problem, is wrong.
     pub enum ApiText {
         /// The body is not sent as JSON.
-        NotJson { shape: &'static str } =>
+        NotJson { shape: Shape } =>
             "the request body must be JSON, sent with the header Content-Type: \
              application/json, such as {shape}",
             "o corpo da requisição deve ser JSON, enviado com o cabeçalho Content-Type: \
@@ -23,11 +23,11 @@ messages! {
             "the request body is not UTF-8 text (byte {byte} is not): JSON is UTF-8 text",
             "o corpo da requisição não é texto UTF-8 (o byte {byte} não é): JSON é texto UTF-8";
         /// The body is not one JSON object.
-        NotAnObject { shape: &'static str } =>
+        NotAnObject { shape: Shape } =>
             "the request body must be one JSON object, such as {shape}",
             "o corpo da requisição deve ser um único objeto JSON, como {shape}";
         /// The body's JSON is not the API's (the parser's words in `reason`).
-        NotTheApis { reason: String, shape: &'static str } =>
+        NotTheApis { reason: super::api::Reason, shape: Shape } =>
             "the request is not the API's JSON: {reason}. Fix: send {shape}",
             "a requisição não é o JSON da API: {reason}. Correção: envie {shape}";
         /// `lang` names no language.
@@ -229,5 +229,24 @@ mod tests {
             "{}",
             e.text(Lang::Pt)
         );
+    }
+}
+
+messages! {
+    /// What the body of a request looks like, for the messages that refuse one.
+    #[derive(Default, Copy)]
+    pub(crate) enum Shape {
+        /// `POST /api/solve`.
+        #[default]
+        Solve =>
+            "{{\"problem\": {{…a problem file…}}, \"lang\": \"pt\"}} or {{\"exercise\": \"4.2\"}}",
+            "{{\"problem\": {{…um arquivo de problema…}}, \"lang\": \"pt\"}} ou \
+             {{\"exercise\": \"4.2\"}}";
+        /// `POST /api/check`.
+        Check =>
+            "{{\"problem\": {{…a problem file…}}, \"answer\": \"0.245 0.28 0.21\", \
+             \"steps\": {{\"cos_theta\": \"0.98995\"}}}} or {{\"exercise\": \"4.2\", …}}",
+            "{{\"problem\": {{…um arquivo de problema…}}, \"answer\": \"0.245 0.28 0.21\", \
+             \"steps\": {{\"cos_theta\": \"0.98995\"}}}} ou {{\"exercise\": \"4.2\", …}}";
     }
 }

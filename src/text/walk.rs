@@ -114,6 +114,8 @@ walked! {
     #[cfg(feature = "serve")]
     sentences crate::serve::faults::StartText;
     #[cfg(feature = "serve")]
+    sentences crate::serve::faults::Shape;
+    #[cfg(feature = "serve")]
     sentences crate::serve::log::LogMessage;
     sentences crate::check::grade::NotCsv;
     sentences crate::check::grade::FieldsHint;

@@ -317,3 +317,64 @@ fn the_apis_errors_with_lang_pt_hold_no_english() {
         assert_eq!(r.json()["error"]["message"], en);
     }
 }
+
+/// A request sent as written, with its own headers, on a connection of its own.
+#[cfg(feature = "serve")]
+fn raw(addr: std::net::SocketAddr, head: &str, body: &str) -> http::Response {
+    use std::io::Write;
+    let mut stream = std::net::TcpStream::connect(addr).unwrap();
+    let request = format!(
+        "{head}Host: {addr}\r\nContent-Length: {}\r\nConnection: close\r\n\r\n{body}",
+        body.len()
+    );
+    stream.write_all(request.as_bytes()).unwrap();
+    http::read_response(&mut std::io::BufReader::new(stream)).unwrap()
+}
+
+/// Issue 27: a refusal said before the request's `lang` is read (its body is not JSON, or not
+/// the API's) speaks the language of its `Accept-Language`, as the pages choose theirs.
+#[cfg(feature = "serve")]
+#[test]
+fn a_refusal_before_the_body_is_read_speaks_the_accept_language() {
+    let server = server::Server::start(&[]);
+    let not_json = "POST /api/solve HTTP/1.1\r\nContent-Type: text/plain\r\n";
+    let pt = raw(
+        server.addr,
+        &format!("{not_json}Accept-Language: pt-BR,pt;q=0.9,en;q=0.5\r\n"),
+        "{}",
+    );
+    assert_eq!(pt.status, 415, "{}", pt.text());
+    let message = pt.json()["error"]["message"].as_str().unwrap().to_owned();
+    assert!(
+        message.starts_with("o corpo da requisição deve ser JSON, enviado com o cabeçalho"),
+        "{message}"
+    );
+    assert_eq!(english_in(&message, &[]), Vec::<String>::new());
+    let en = raw(server.addr, not_json, "{}");
+    let message = en.json()["error"]["message"].as_str().unwrap().to_owned();
+    assert!(
+        message.starts_with("the request body must be JSON, sent with the header"),
+        "{message}"
+    );
+    // A body that is not the API's JSON: serde's words are said in Portuguese too.
+    let json = "POST /api/solve HTTP/1.1\r\nContent-Type: application/json\r\n";
+    let pt = raw(
+        server.addr,
+        &format!("{json}Accept-Language: pt\r\n"),
+        "{\"exercise\": 4.2}",
+    );
+    assert_eq!(pt.status, 400, "{}", pt.text());
+    let message = pt.json()["error"]["message"].as_str().unwrap().to_owned();
+    assert!(
+        message.starts_with("a requisição não é o JSON da API: exercise: "),
+        "{message}"
+    );
+    assert!(message.contains("na linha 1, coluna "), "{message}");
+    let en = raw(server.addr, json, "{\"exercise\": 4.2}");
+    let message = en.json()["error"]["message"].as_str().unwrap().to_owned();
+    assert!(
+        message.starts_with("the request is not the API's JSON: exercise: invalid type: "),
+        "{message}"
+    );
+    assert!(message.contains(" at line 1 column "), "{message}");
+}
