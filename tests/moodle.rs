@@ -655,3 +655,182 @@ fn cloze_syntax_in_a_problems_text_stays_text() {
         );
     }
 }
+
+/// Every alternative of a NUMERICAL part but `*`: its number and its tolerance.
+fn numbers(sub: &Sub) -> Vec<(f64, f64, &str)> {
+    sub.alts
+        .iter()
+        .filter(|a| a.answer != "*")
+        .map(|a| {
+            (
+                a.answer.parse::<f64>().unwrap(),
+                a.tolerance.unwrap(),
+                a.feedback.as_str(),
+            )
+        })
+        .collect()
+}
+
+/// Issue 28. Moodle grades a NUMERICAL part by the first alternative within its tolerance
+/// (`question/type/numerical/question.php`: `get_matching_answer` walks the answers in order;
+/// `within_tolerance` is `min <= value <= max`, the interval the answer ± its tolerance plus
+/// 1e-14·max(1, |answer|)). So an alternative whose number lies in an earlier one's interval,
+/// or whose interval holds an earlier one's number, names a slip the student is never shown
+/// (or shows it for the wrong one). Every kind `phong new` makes, seeds 1 to 30.
+#[test]
+fn no_two_alternatives_of_a_part_lie_within_its_tolerance() {
+    let kinds = [
+        "ambient",
+        "point",
+        "ray-plane",
+        "directional",
+        "spot",
+        "several",
+        "sphere",
+        "secondary",
+    ];
+    let mut parts = 0;
+    for kind in kinds {
+        let problems: Vec<Value> = (1..=30)
+            .map(|seed| serde_json::from_slice(&new(kind, 1, seed, None)).unwrap())
+            .collect();
+        let input = serde_json::to_vec(&problems).unwrap();
+        let xml = moodle(&[PathBuf::from("-")], "en", Some(&input));
+        let questions = validate(&xml).unwrap_or_else(|e| panic!("{kind}: {e}"));
+        assert_eq!(questions.len(), 30, "{kind}");
+        for (i, subs) in questions.iter().enumerate() {
+            for sub in subs.iter().filter(|s| s.kind == "NUMERICAL") {
+                parts += 1;
+                let alts = numbers(sub);
+                let tolerance = alts[0].1;
+                for (j, &(a, ta, fa)) in alts.iter().enumerate() {
+                    assert_eq!(ta, tolerance, "{kind} seed {}: one tolerance", i + 1);
+                    for &(b, _, fb) in &alts[j + 1..] {
+                        let reach = tolerance + 1e-14 * a.abs().max(b.abs()).max(1.0);
+                        assert!(
+                            (a - b).abs() > reach,
+                            "{kind} seed {}: {a} ({fa}) and {b} ({fb}) lie within {tolerance}",
+                            i + 1
+                        );
+                    }
+                }
+            }
+        }
+    }
+    assert!(parts > 400, "only {parts} parts");
+}
+
+/// Issue 28's example: in `phong new --kind point --count 30 --seed 16`'s first problem, the
+/// red part's "cos φ not raised to n_s" lies within the tolerance of "Blinn's half vector",
+/// which comes first: one alternative, whose feedback names both slips.
+#[test]
+fn slips_within_the_tolerance_share_one_alternative_naming_each() {
+    let dir = tempfile::tempdir().unwrap();
+    phong()
+        .args([
+            "new", "--kind", "point", "--count", "30", "--seed", "16", "-o",
+        ])
+        .arg(dir.path())
+        .assert()
+        .code(0);
+    let xml = moodle(&[dir.path().join("point-16-001.json")], "en", None);
+    let questions = validate(&xml).unwrap();
+    let red = &questions[0][0];
+    let named = |words: &str| {
+        red.alts
+            .iter()
+            .filter(|a| a.feedback.contains(words))
+            .count()
+    };
+    assert_eq!(named("Blinn"), 1, "{red:?}");
+    assert_eq!(named("not raised to n_s"), 1, "{red:?}");
+    let blinn = red
+        .alts
+        .iter()
+        .find(|a| a.feedback.contains("Blinn"))
+        .unwrap();
+    assert!(blinn.feedback.contains("not raised to n_s"), "{red:?}");
+    assert_eq!(blinn.fraction, 0.0);
+}
+
+/// A category path as Moodle's importer splits it (`question/format.php`,
+/// `split_category_path`): at each `/` with no `/` on either side; then each `//` is one `/`
+/// and each name is trimmed.
+fn moodle_category_names(path: &str) -> Vec<String> {
+    let chars: Vec<char> = path.chars().collect();
+    let mut names = vec![String::new()];
+    for (i, &c) in chars.iter().enumerate() {
+        let lone = c == '/'
+            && (i == 0 || chars[i - 1] != '/')
+            && chars.get(i + 1).is_none_or(|&n| n != '/');
+        if lone {
+            names.push(String::new());
+        } else {
+            names.last_mut().unwrap().push(c);
+        }
+    }
+    names
+        .iter()
+        .map(|n| n.replace("//", "/").trim().to_owned())
+        .collect()
+}
+
+fn category_of(xml: &str) -> Vec<String> {
+    let path = between(xml, "<category><text>", "</text>").unwrap();
+    let path = path
+        .replace("&lt;", "<")
+        .replace("&gt;", ">")
+        .replace("&amp;", "&");
+    moodle_category_names(&path)
+}
+
+/// Issue 28: `--category 'A/B 50%'` is one category named "A/B 50%", not "A" › "B 50%"; so is
+/// a name that starts or ends with `/`, and the default name is unchanged.
+#[test]
+fn a_category_name_with_slashes_is_one_category() {
+    // The splitter against Moodle's own test of its path functions
+    // (question/tests/importexport_test.php).
+    assert_eq!(
+        moodle_category_names(
+            "$course$/Tim's questions/Tricky things like // //// and so on/Category name ending in // / // and one that starts with one"
+        ),
+        [
+            "$course$",
+            "Tim's questions",
+            "Tricky things like / // and so on",
+            "Category name ending in /",
+            "/ and one that starts with one"
+        ]
+    );
+    let file = root().join("exercises/4.2.json");
+    for (name, expected) in [
+        ("A/B 50%", "A/B 50%"),
+        ("/a//b/", "/a//b/"),
+        (
+            "Cap. 4 - Modelos de Iluminação",
+            "Cap. 4 - Modelos de Iluminação",
+        ),
+    ] {
+        let out = phong()
+            .args(["moodle", "--lang", "en", "--category", name])
+            .arg(&file)
+            .assert()
+            .code(0)
+            .get_output()
+            .stdout
+            .clone();
+        let xml = String::from_utf8(out).unwrap();
+        validate(&xml).unwrap();
+        assert_eq!(
+            category_of(&xml),
+            ["$course$", "top", expected, "4.2"],
+            "{name}"
+        );
+    }
+    // The default: the course's chapter, then the file's name.
+    let xml = moodle(&[file], "en", None);
+    assert_eq!(
+        category_of(&xml),
+        ["$course$", "top", "Cap. 4 - Modelos de Iluminação", "4.2"]
+    );
+}

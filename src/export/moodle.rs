@@ -11,9 +11,12 @@
 //!   the clamp to [0, 1], as `phong check` does;
 //! - the likely intended reading of a problem, where it has one, is a `%50%` alternative;
 //! - each classic slip's colour (the same machinery as `phong check`'s diagnosis, single slips
-//!   only) is a `%0%` alternative whose feedback names the slip and its equation; an
-//!   alternative that the right answer (or the reading) would shadow is left out, and slips
-//!   giving the same number share one alternative;
+//!   only) is a `%0%` alternative whose feedback names the slip and its equation; Moodle
+//!   grades a part by the *first* alternative within its tolerance
+//!   (`question/type/numerical/question.php`, `get_matching_answer`), so no two alternatives
+//!   lie within the tolerance of each other: a slip that the right answer (or the reading)
+//!   would shadow is left out, and slips whose numbers lie within the tolerance of an earlier
+//!   slip's share that alternative, whose feedback names every one of them;
 //! - a `*` catch-all closes every part;
 //! - a problem whose ray hits nothing as written (exercise 4.3) asks one `SHORTANSWER` part of
 //!   weight 3 that accepts "nenhuma", "none" and "no hit" (case-insensitive in Moodle), since no
@@ -26,6 +29,10 @@
 //!   syntax written there (`{2:SHORTANSWER:=x}`, LaTeX braces) is shown, never parsed: only
 //!   phong's own sub-questions match the grammar;
 //! - fractions come from Moodle's fixed list only (100, 50, 0);
+//! - the category path is split by Moodle's importer (`question/format.php`,
+//!   `split_category_path`) at each `/` that is not part of `//`, and `//` is a literal `/`,
+//!   each name trimmed: each name is written as `assemble_category_path` writes it
+//!   ([`category_name`]), so that `--category 'A/B 50%'` is one category, not two;
 //! - the worked solution is the general feedback, in HTML with MathJax's `\( … \)` (a single `$`
 //!   is no delimiter in Moodle), and each diagram an SVG `<file>` in base64 shown by
 //!   `<img src="@@PLUGINFILE@@/…">`.
@@ -170,24 +177,32 @@ fn channel(c: usize, expected: &Expected, tolerance: f64, lang: Lang) -> Option<
         tolerance: Some(tolerance),
         feedback: vec![w.right.to_owned()],
     }];
-    // An alternative within the tolerance of an earlier one (inclusive, with slack for the
-    // rounding of the difference: 0.675 − 0.67 is 0.005000000000000004) would never be reached.
-    let shadowed = |v: f64, t: f64| (v - t).abs() <= tolerance * (1.0 + 1e-9) + 1e-12;
+    // Moodle grades by the first alternative within its tolerance (`get_matching_answer`),
+    // inclusive and with a slack of 1e-14: an alternative within the tolerance of an earlier
+    // one, as written, would never be reached. Within, here, is inclusive with a larger slack
+    // (that of `phong check`'s comparison: 0.675 − 0.67 is 0.005000000000000004), measured
+    // from the number written to the value's number as written and as computed, so that the
+    // written alternatives lie more than the tolerance apart and `phong check` finds every
+    // slip an alternative names within the tolerance of its number.
+    let within = |a: f64, b: f64| (a - b).abs() <= tolerance * (1.0 + 1e-9) + 1e-12;
+    let written = |v: f64| number(v).parse::<f64>().unwrap_or(v);
+    let shadowed = |v: f64, t: f64| within(t, v) || within(t, written(v));
+    let right = written(right);
     let mut taken = vec![right];
     // `phong check` accepts the colour before the clamp to [0, 1] too (a channel above 1).
     let unclamped = expected.solution?.unclamped[c];
-    if unclamped.is_finite() && !shadowed(unclamped, right) {
+    if unclamped.is_finite() && !taken.iter().any(|&t| shadowed(unclamped, t)) {
         alts.push(Alt {
             fraction: "=",
             answer: number(unclamped),
             tolerance: Some(tolerance),
             feedback: vec![w.unclamped.to_owned()],
         });
-        taken.push(unclamped);
+        taken.push(written(unclamped));
     }
     if let Some(r) = expected.readings.iter().find(|r| r.likely_intended) {
         let v = value(&r.target)[c];
-        if !shadowed(v, right) {
+        if v.is_finite() && !taken.iter().any(|&t| shadowed(v, t)) {
             alts.push(Alt {
                 fraction: "%50%",
                 answer: number(v),
@@ -198,27 +213,37 @@ fn channel(c: usize, expected: &Expected, tolerance: f64, lang: Lang) -> Option<
                     check_messages::reading(r.code, lang)
                 )],
             });
-            taken.push(v);
+            taken.push(written(v));
         }
     }
-    let first_slip = alts.len();
+    // Each slip's number: left out where the right answer (or the reading) is met first;
+    // joined to the first slip alternative within the tolerance of it, as Moodle would show
+    // that one, whose feedback then names every slip that gives it.
+    let mut slips: Vec<(f64, Alt)> = Vec::new();
     for o in expected.outcomes.iter().filter(|o| o.slips.len() == 1) {
         let v = value(&o.target)[c];
         if !v.is_finite() || taken.iter().any(|&t| shadowed(v, t)) {
             continue;
         }
         let text = format!("{} {}.", w.slip, slip_text(o.slips[0], lang));
-        let answer = number(v);
-        match alts[first_slip..].iter_mut().find(|a| a.answer == answer) {
-            Some(a) => a.feedback.push(text),
-            None => alts.push(Alt {
-                fraction: "%0%",
-                answer,
-                tolerance: Some(tolerance),
-                feedback: vec![text],
-            }),
+        match slips.iter_mut().find(|(t, _)| shadowed(v, *t)) {
+            Some((_, a)) => {
+                if !a.feedback.contains(&text) {
+                    a.feedback.push(text);
+                }
+            }
+            None => slips.push((
+                written(v),
+                Alt {
+                    fraction: "%0%",
+                    answer: number(v),
+                    tolerance: Some(tolerance),
+                    feedback: vec![text],
+                },
+            )),
         }
     }
+    alts.extend(slips.into_iter().map(|(_, a)| a));
     alts.push(Alt {
         fraction: "",
         answer: "*".into(),
@@ -405,6 +430,21 @@ fn cdata(s: &str) -> String {
     format!("<![CDATA[{}]]>", s.replace("]]>", "]]]]><![CDATA[>"))
 }
 
+/// A category's name as one name of a Moodle category path: each `/` doubled, and a space
+/// before a leading `/` and after a trailing one (which Moodle's importer trims), as Moodle's
+/// own `assemble_category_path` writes it, so that its `split_category_path` gives the name
+/// back whole.
+pub(crate) fn category_name(name: &str) -> String {
+    let mut escaped = name.replace('/', "//");
+    if escaped.starts_with('/') {
+        escaped.insert(0, ' ');
+    }
+    if escaped.ends_with('/') {
+        escaped.push(' ');
+    }
+    escaped
+}
+
 /// Text escaped for an XML element.
 fn xml(s: &str) -> String {
     s.replace('&', "&amp;")
@@ -422,7 +462,11 @@ pub(crate) fn quiz(
     let mut out = String::from("<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<quiz>\n");
     let mut q = 0;
     for set in sets {
-        let path = format!("$course$/top/{parent}/{}", set.category.replace('/', "-"));
+        let path = format!(
+            "$course$/top/{}/{}",
+            category_name(parent),
+            category_name(&set.category)
+        );
         let _ = writeln!(
             out,
             "<question type=\"category\">\n<category><text>{}</text></category>\n</question>",
@@ -532,6 +576,28 @@ mod tests {
         assert_eq!(
             cloze_inert("a {2:SHORTANSWER:=x} \\frac{1}{2}"),
             "a &#123;2:SHORTANSWER:=x&#125; \\frac&#123;1&#125;&#123;2&#125;"
+        );
+    }
+
+    #[test]
+    fn category_names_are_written_as_moodles_assemble_category_path_writes_them() {
+        // Moodle's own test of its path functions (question/tests/importexport_test.php).
+        assert_eq!(
+            category_name("Tricky things like / // and so on"),
+            "Tricky things like // //// and so on"
+        );
+        assert_eq!(
+            category_name("Category name ending in /"),
+            "Category name ending in // "
+        );
+        assert_eq!(
+            category_name("/ and one that starts with one"),
+            " // and one that starts with one"
+        );
+        assert_eq!(category_name("A/B 50%"), "A//B 50%");
+        assert_eq!(
+            category_name("Cap. 4 - Modelos de Iluminação"),
+            "Cap. 4 - Modelos de Iluminação"
         );
     }
 
