@@ -170,14 +170,15 @@ pub fn to_rows(text: &[u8], questions: &[String]) -> Result<Vec<u8>, MoodleError
         .from_reader(text);
     let header = reader.headers().map_err(|e| csv_error(&e, true))?.clone();
     // The report's column names are Moodle's language strings, in the language of the teacher
-    // who downloads it. English, then pt_br as AMOS translates them (lang/pt_br from Moodle
-    // 3.11's language pack): "Response {$a}" / "Resposta {$a}" (quiz_responses `responsex`),
-    // "Right answer {$a}" / "Resposta correta {$a}" (`rightanswerx`), "Surname" / "Sobrenome"
-    // (core `lastname`), "First name" / "Nome" (`firstname`), "Email address" (`email`; a
-    // Portuguese site's "Endereço de email", or "e-mail" by its own customisation), "State" /
-    // "Estado" (quiz `attemptstate`), "Overall average" / "Média geral" (grades
-    // `overallaverage`). The other columns ("Started on" / "Iniciado em", "Completed", the
-    // grade) are not read.
+    // who downloads it: English, and pt_br as AMOS's language pack translates them (read in
+    // lang/pt_br of Moodle 3.5 and 3.11 sites' packs): "Response {$a}" / "Resposta {$a}"
+    // (quiz_responses `responsex`), "Right answer {$a}" / "Resposta correta {$a}"
+    // (`rightanswerx`), "Surname" / "Sobrenome" (core `lastname`), "First name" / "Nome"
+    // (`firstname`), "Email address" / "Endereço de email" (`email`; "e-mail" and plain
+    // "Email" where a site customises it), "Overall average" / "Média geral" (grades
+    // `overallaverage`). The columns not read: "State" / "Estado" (quiz `attemptstate`),
+    // "Started on" / "Iniciado em" (`startedon`), "Completed" / "Completo" (`timecompleted`),
+    // "Time taken" / "Tempo empregado" (`timetaken`), the grade.
     let find = |names: &[&str]| {
         header
             .iter()
