@@ -501,6 +501,91 @@ fn moodle_responses_export_is_read() {
     }
 }
 
+/// Moodle 4.x's Responses report as it downloads it as CSV (`tests/data/moodle-responses-*.csv`,
+/// fields quoted as PHP's `fputcsv` quotes them: those with a space or a comma), in an English
+/// and a Brazilian Portuguese Moodle: every Cloze response written `part 1: …; part 2: …` (pt_br
+/// `parte 1: …`), a one-part one too (4.3's), a blank part as `part 2: `.
+///
+/// Reasoned row for row (4.1 is (0.5, 0.7, 0.3); 4.2 (0, 0, 0), its reading (0.299, 0.361,
+/// 0.318); 4.3 no hit, "nenhuma"/"none"; points 4.1=1, 4.2=2, 4.3=3, a reading half): every
+/// response but "-" is one row, in the file's order. Ana is right three times (6 points). Rui's
+/// 4.1 leaves part 2 blank: wrong, incomplete, 0 (not invalid); his 4.2 is blank in every part:
+/// invalid; his 4.3 is "-": no row. Caio's 4.1 leaves parts 1 and 3 blank: wrong; his 4.2 is
+/// the reading (1 of 2); his 4.3 "part 1: none" is right (3): 4 points.
+#[test]
+fn moodle_4_responses_are_read_in_both_languages() {
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data");
+    let cases = [
+        (
+            "moodle-responses-en.csv",
+            "en",
+            "part 2 of 3 left blank",
+            "parts 1 and 3 of 3",
+        ),
+        (
+            "moodle-responses-pt.csv",
+            "pt",
+            "parte 2 de 3 em branco",
+            "partes 1 e 3 de 3",
+        ),
+    ];
+    for (file, lang, rui, caio) in cases {
+        for input in [&[][..], &["--input", "moodle"]] {
+            let mut extra = vec!["--format", "json", "--lang", lang];
+            extra.extend_from_slice(input);
+            let out = grade(&dir.join(file), &extra);
+            assert_eq!(out.status.code(), Some(0), "{file}");
+            let report: Value = serde_json::from_slice(&out.stdout).unwrap();
+            let rows = report["rows"].as_array().unwrap();
+            let got: Vec<(&str, &str, &str, f64)> = rows
+                .iter()
+                .map(|r| {
+                    (
+                        r["student"].as_str().unwrap(),
+                        r["exercise"].as_str().unwrap(),
+                        r["verdict"].as_str().unwrap(),
+                        r["points"].as_f64().unwrap(),
+                    )
+                })
+                .collect();
+            assert_eq!(
+                got,
+                [
+                    ("ana@ufms.br", "4.1", "right", 1.0),
+                    ("ana@ufms.br", "4.2", "right", 2.0),
+                    ("ana@ufms.br", "4.3", "right", 3.0),
+                    ("rui@ufms.br", "4.1", "wrong", 0.0),
+                    ("rui@ufms.br", "4.2", "invalid", 0.0),
+                    ("caio@ufms.br", "4.1", "wrong", 0.0),
+                    ("caio@ufms.br", "4.2", "reading", 1.0),
+                    ("caio@ufms.br", "4.3", "right", 3.0),
+                ],
+                "{file}"
+            );
+            // The blank parts named, in the feedback's language; the reason in English.
+            let feedback = |i: usize| rows[i]["feedback"].as_str().unwrap();
+            assert!(feedback(3).contains(rui), "{file}: {}", feedback(3));
+            assert!(feedback(5).contains(caio), "{file}: {}", feedback(5));
+            assert_eq!(
+                rows[3]["reason"],
+                "part 2 of 3 left blank in the Moodle response: a blank part is no answer for \
+                 its channel, so the colour is incomplete"
+            );
+            assert_eq!(
+                rows[4]["reason"],
+                "every part of the Moodle response is blank: there is no answer to check"
+            );
+            let points: Vec<f64> = report["students"]
+                .as_array()
+                .unwrap()
+                .iter()
+                .map(|s| s["points"].as_f64().unwrap())
+                .collect();
+            assert_eq!(points, [6.0, 0.0, 4.0], "{file}");
+        }
+    }
+}
+
 /// A class whose rows are not all answers the exercises judge (QA finding 3), `;` and decimal
 /// commas, graded with --points 4.1=1,4.2=2,4.3=3 (so the class's exercises are 4.1, 4.2, 4.3):
 /// line 2 is ana's 4.1 that her line 3 replaces (`--duplicates last`); line 4 names an exercise

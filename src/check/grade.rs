@@ -1400,6 +1400,40 @@ fn grade_row(
     };
     let Exercise { expected, key, .. } = exercise;
     row.max_points = Some(options.rubric.points_of(&row.exercise));
+    // A Cloze response from Moodle with blank parts (`part 1: 0,5; part 2: ; part 3: 0,3`): a
+    // blank part is no answer for its channel, so the colour is incomplete and the row wrong,
+    // its feedback naming the blank parts; every part blank is nothing to judge (invalid).
+    // Why, in super::moodle::blank.
+    match super::moodle::blank(&row.answer) {
+        None => {}
+        Some(all @ super::moodle::Blank::All) => return invalid(row, Reason::Cloze(all)),
+        Some(some) => {
+            let tolerance = options
+                .tolerance
+                .or_else(|| key.and_then(|k| k.tolerance_on(options.scale)))
+                .unwrap_or_else(|| options.scale.default_tolerance());
+            let max = options.rubric.points_of(&row.exercise);
+            row.verdict = verdict_code(VerdictKind::Wrong);
+            row.accepted = false;
+            row.scale = Some(scale_number(options.scale));
+            row.tolerance = Some(tolerance);
+            row.points = 0.0;
+            let lang = options.lang;
+            let mut text = [
+                messages::verdict(VerdictKind::Wrong, false, lang).to_owned(),
+                crate::text::Message::text(&some, lang),
+                messages::total(0.0, max, lang),
+            ]
+            .join("; ");
+            if let Some(first) = text.chars().next() {
+                text.replace_range(..first.len_utf8(), &first.to_uppercase().to_string());
+            }
+            text.push('.');
+            row.feedback = text;
+            row.reason = Some(Reason::Cloze(some));
+            return;
+        }
+    }
     let mut a = match answer::parse(&row.answer, options.scale) {
         Ok(a) => a,
         Err(e) => {

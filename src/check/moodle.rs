@@ -2,7 +2,10 @@
 //! per attempt with the student's columns ("Surname", "First name", "Email address", …) and,
 //! per question slot N, "Response N" and "Right answer N" (Portuguese sites: "Resposta N",
 //! "Resposta correta N"). A Cloze response is its parts joined with `; `: `part 1: 0.52; part 2:
-//! 0.03; part 3: 0` (`parte 1: 0,52; …` in Portuguese), read as the colour `0.52 0.03 0`.
+//! 0.03; part 3: 0` (`parte 1: 0,52; …` in Portuguese), read as the colour `0.52 0.03 0`; a
+//! one-part response, `part 1: nenhuma`, as `nenhuma`. A response with a blank part (`part 2: `)
+//! is judged wrong, the blank parts named ([`blank`] says why); one whose every part is blank is
+//! invalid.
 //!
 //! The export becomes the plain `student, exercise, answer` rows that [`super::grade`] reads:
 //! the student is the e-mail address where there is one, else "First name Surname"; question
@@ -35,27 +38,104 @@ fn response_slot(cell: &str) -> Option<usize> {
     rest.trim().parse().ok()
 }
 
+/// A Cloze response's parts, blank ones as `""`: Moodle 4.x writes every Cloze response, one
+/// part too, as `part 1: …; part 2: …` (`qtype_multianswer_question::summarise_response`
+/// joins its subquestions' summaries with `; `, each as the string `subqresponse`: English
+/// `part {$a->i}: {$a->response}`, pt_br `parte {$a->i}: {$a->response}` (AMOS's
+/// lang/pt_br/qtype_multianswer.php), French `partie {$a->i} : …`), and a part left blank as
+/// `part 2: ` (its summary is empty). `None` when the response is not in that form: parts
+/// numbered from 1, in order.
+pub fn cloze_parts(response: &str) -> Option<Vec<&str>> {
+    let mut values = Vec::new();
+    for (i, segment) in response.split(';').enumerate() {
+        let (label, value) = segment.trim().split_once(':')?;
+        let label = label.trim().to_lowercase();
+        let number = ["part ", "parte ", "partie "]
+            .iter()
+            .find_map(|w| label.strip_prefix(w))?;
+        if number.trim().parse::<usize>().ok()? != i + 1 {
+            return None;
+        }
+        values.push(value.trim());
+    }
+    Some(values)
+}
+
 /// A Cloze response's parts as one answer: `part 1: 0.52; part 2: 0.03; part 3: 0` → `0.52
-/// 0.03 0`; anything else as it is.
+/// 0.03 0`, `part 1: nenhuma` → `nenhuma`; a response with a blank part, and anything else, as
+/// it is (trimmed): [`blank`] judges the blank parts of the row.
 pub fn join_parts(response: &str) -> String {
-    let parts: Vec<&str> = response.split(';').map(str::trim).collect();
-    let values: Option<Vec<&str>> = parts
-        .iter()
-        .map(|p| {
-            let lower = p.to_lowercase();
-            let is_part = ["part ", "parte ", "partie "]
-                .iter()
-                .any(|w| lower.starts_with(w));
-            if is_part {
-                p.split_once(':').map(|(_, v)| v.trim())
-            } else {
-                None
-            }
-        })
-        .collect();
-    match values {
-        Some(v) if parts.len() > 1 => v.join(" "),
+    match cloze_parts(response) {
+        Some(v) if v.iter().all(|p| !p.is_empty()) => v.join(" "),
         _ => response.trim().to_owned(),
+    }
+}
+
+/// The blank parts of a Cloze response (`part 1: 0,5; part 2: ; part 3: 0,3`), `None` when it
+/// has none or is not a Cloze response.
+///
+/// How a blank part counts: Moodle grades each part of a Cloze question on its own, a blank
+/// part earning nothing and the others their own credit. phong judges an answer as one colour
+/// (`phong check`, `/api/check` and a plain `grade` row alike: right, a reading, or wrong), and
+/// a colour with a channel missing is none of the colours it could be compared with. So a blank
+/// part is no answer for its channel: the row is judged, and it is wrong (incomplete), 0 points,
+/// its feedback naming the blank parts. It is not "invalid" (the student answered the
+/// question); only a response whose every part is blank is, as there is then nothing to judge.
+pub fn blank(response: &str) -> Option<Blank> {
+    let parts = cloze_parts(response)?;
+    let blank: Vec<usize> = (1..=parts.len())
+        .filter(|&n| parts[n - 1].is_empty())
+        .collect();
+    if blank.is_empty() {
+        None
+    } else if blank.len() == parts.len() {
+        Some(Blank::All)
+    } else {
+        Some(Blank::Some {
+            parts: Parts(blank),
+            of: parts.len(),
+        })
+    }
+}
+
+/// Numbered parts of a Cloze response: `part 2`, `parts 1 and 3`, `parts 1, 2 and 4` (`parte
+/// 2`, `partes 1 e 3`).
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct Parts(pub Vec<usize>);
+
+impl Show for Parts {
+    fn show(&self, lang: Lang, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let (one, many, and) = match lang {
+            Lang::En => ("part", "parts", "and"),
+            Lang::Pt => ("parte", "partes", "e"),
+        };
+        match self.0.as_slice() {
+            [] => f.write_str(many),
+            [n] => write!(f, "{one} {n}"),
+            [init @ .., last] => {
+                let init: Vec<String> = init.iter().map(usize::to_string).collect();
+                write!(f, "{many} {} {and} {last}", init.join(", "))
+            }
+        }
+    }
+}
+
+messages! {
+    /// A Cloze response with blank parts ([`blank`]): the note of a row judged wrong, or why a
+    /// row with every part blank is invalid.
+    #[allow(missing_docs)] // each field is named by its sentences
+    pub enum Blank {
+        /// Some parts are blank: the colour is incomplete.
+        Some { parts: Parts, of: usize } =>
+            "{parts} of {of} left blank in the Moodle response: a blank part is no answer for \
+             its channel, so the colour is incomplete",
+            "{parts} de {of} em branco na resposta do Moodle: uma parte em branco é um canal \
+             sem resposta, então a cor está incompleta";
+        /// Every part is blank.
+        All =>
+            "every part of the Moodle response is blank: there is no answer to check",
+            "todas as partes da resposta do Moodle estão em branco: não há resposta a \
+             verificar";
     }
 }
 
@@ -89,6 +169,16 @@ pub fn to_rows(text: &[u8], questions: &[String]) -> Result<Vec<u8>, MoodleError
         .flexible(true)
         .from_reader(text);
     let header = reader.headers().map_err(|e| csv_error(&e, true))?.clone();
+    // The report's column names are Moodle's language strings, in the language of the teacher
+    // who downloads it: English, and pt_br as AMOS's language pack translates them (read in
+    // lang/pt_br of Moodle 3.5 and 3.11 sites' packs): "Response {$a}" / "Resposta {$a}"
+    // (quiz_responses `responsex`), "Right answer {$a}" / "Resposta correta {$a}"
+    // (`rightanswerx`), "Surname" / "Sobrenome" (core `lastname`), "First name" / "Nome"
+    // (`firstname`), "Email address" / "Endereço de email" (`email`; "e-mail" and plain
+    // "Email" where a site customises it), "Overall average" / "Média geral" (grades
+    // `overallaverage`). The columns not read: "State" / "Estado" (quiz `attemptstate`),
+    // "Started on" / "Iniciado em" (`startedon`), "Completed" / "Completo" (`timecompleted`),
+    // "Time taken" / "Tempo empregado" (`timetaken`), the grade.
     let find = |names: &[&str]| {
         header
             .iter()
@@ -216,6 +306,59 @@ mod tests {
         );
         assert_eq!(join_parts("none"), "none");
         assert_eq!(join_parts("0.52; 0.03; 0"), "0.52; 0.03; 0");
+    }
+
+    #[test]
+    fn one_part_and_blank_parts() {
+        // Moodle 4.x writes a one-part Cloze response as `part 1: …` too.
+        assert_eq!(join_parts("part 1: nenhuma"), "nenhuma");
+        assert_eq!(join_parts("parte 1: nenhuma"), "nenhuma");
+        assert_eq!(join_parts("partie 1 : aucune"), "aucune");
+        // Parts out of order, or text that only looks like a label, are not a Cloze response.
+        assert_eq!(cloze_parts("part 2: 0.5"), None);
+        assert_eq!(cloze_parts("part one: 0.5"), None);
+        assert_eq!(cloze_parts("0.5; 0.3"), None);
+        // A blank part stays in the answer, for the row to say which part it was.
+        let blank_2 = "part 1: 0,5; part 2: ; part 3: 0,3";
+        assert_eq!(cloze_parts(blank_2), Some(vec!["0,5", "", "0,3"]));
+        assert_eq!(join_parts(blank_2), blank_2);
+        assert_eq!(
+            blank(blank_2),
+            Some(Blank::Some {
+                parts: Parts(vec![2]),
+                of: 3
+            })
+        );
+        // The CSV cell trimmed: the last part's blank is `part 3:`.
+        assert_eq!(
+            blank("parte 1: ; parte 2: 0,7; parte 3:"),
+            Some(Blank::Some {
+                parts: Parts(vec![1, 3]),
+                of: 3
+            })
+        );
+        assert_eq!(blank("part 1: ; part 2: ; part 3:"), Some(Blank::All));
+        assert_eq!(blank("part 1:"), Some(Blank::All));
+        assert_eq!(blank("part 1: 0.5; part 2: 0.7; part 3: 0.3"), None);
+        assert_eq!(blank("0.5 0.7 0.3"), None);
+    }
+
+    #[test]
+    fn blank_parts_are_named() {
+        let text = |parts: Vec<usize>, lang| {
+            crate::text::Message::text(
+                &Blank::Some {
+                    parts: Parts(parts),
+                    of: 3,
+                },
+                lang,
+            )
+        };
+        assert!(text(vec![2], Lang::En).starts_with("part 2 of 3 left blank"));
+        assert!(text(vec![1, 3], Lang::En).starts_with("parts 1 and 3 of 3 left blank"));
+        assert!(text(vec![1, 2, 3], Lang::En).starts_with("parts 1, 2 and 3 of 3"));
+        assert!(text(vec![2], Lang::Pt).starts_with("parte 2 de 3 em branco"));
+        assert!(text(vec![1, 3], Lang::Pt).starts_with("partes 1 e 3 de 3 em branco"));
     }
 
     #[test]

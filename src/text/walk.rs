@@ -124,6 +124,7 @@ walked! {
     faults crate::check::grade::HeaderFault;
     sentences crate::check::grade::ExerciseNote;
     sentences crate::check::moodle::MoodleError;
+    sentences crate::check::moodle::Blank;
 }
 
 /// English words that Portuguese never uses: one of them in a Portuguese rendering (outside

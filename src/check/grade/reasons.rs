@@ -345,6 +345,9 @@ pub enum Reason {
     Header(HeaderFault),
     /// The Moodle export cannot be read.
     Moodle(super::super::moodle::MoodleError),
+    /// A Cloze response with blank parts: the note of a row judged wrong (incomplete), or why
+    /// a row whose every part is blank is invalid.
+    Cloze(super::super::moodle::Blank),
     /// A graded row's notes: its exercise written with a decimal comma, then how its answer
     /// was judged (`NOTE; NOTE`).
     Note {
@@ -363,6 +366,7 @@ impl Message for Reason {
             Reason::Problem(e) => e.text(lang),
             Reason::Header(f) => what_and_fix(f, lang),
             Reason::Moodle(m) => m.text(lang),
+            Reason::Cloze(b) => b.text(lang),
             Reason::Note { exercise, answer } => {
                 let notes: Vec<String> = exercise
                     .iter()
