@@ -304,3 +304,99 @@ fn two_generated_ambient_lights_are_named_apart() {
         "seed 7 draws a problem with two ambient lights (QA's ambient-7-001)"
     );
 }
+
+// Issue 28, item 4. 4.3's ray, O = (8, 4, 6), D = (0.8, 0, −0.6), meets the plane
+// x + y + z = 0 where (O + tD)·(1, 1, 1) = 18 + 0.2 t = 0: t = −90, behind the origin. The
+// ray reversed, O − tD, meets it at t = +90. A student who gives t = 90 took that reversed
+// ray's hit: the message says so and that the sign is reversed, never "t < 0" of a positive t.
+#[test]
+fn a_positive_t_of_the_reversed_ray_is_told_its_sign_is_reversed() {
+    let (code, out, _) = run(&["check", "exercises/4.3.json", "--step", "t=90"]);
+    assert_eq!(code, 1, "{out}");
+    assert!(
+        out.contains(
+            "it is what this slip gives: the hit of the ray reversed (O − tD, t > 0), which \
+             along D is at t = -90, behind the ray's origin: the sign of 90 is reversed"
+        ),
+        "{out}"
+    );
+    assert!(!out.contains("t < 0"), "{out}");
+    let (_, json, _) = run(&[
+        "check",
+        "exercises/4.3.json",
+        "--step",
+        "t=90",
+        "--format",
+        "json",
+    ]);
+    assert!(!json.contains("t < 0"), "{json}");
+    assert!(json.contains("the sign of 90 is reversed"), "{json}");
+}
+
+// Black where the ray hits nothing (4.3, as above) is the background: the answer is "none".
+// The verdict stays wrong (exit 1, not accepted); what explains it is the background, not
+// the nearest dark slip ("the ambient term forgotten" in the intended reading).
+#[test]
+fn black_where_the_ray_hits_nothing_is_the_background() {
+    let (code, out, _) = run(&["check", "exercises/4.3.json", "--answer", "0 0 0"]);
+    assert_eq!(code, 1, "{out}");
+    assert!(out.starts_with("exercises/4.3.json: wrong\n"), "{out}");
+    assert!(
+        out.contains(
+            "\n  black is the background, the colour a ray that meets nothing shows: as \
+             written the ray hits nothing (t > 0), so there is no colour to give, and the \
+             answer is \"none\" (no hit)\n"
+        ),
+        "{out}"
+    );
+    assert!(
+        !out.contains("ambient term") && !out.contains("closest"),
+        "{out}"
+    );
+    let (code, json, _) = run(&[
+        "check",
+        "exercises/4.3.json",
+        "--answer",
+        "#000000",
+        "--format",
+        "json",
+    ]);
+    assert_eq!(code, 1, "{json}");
+    let doc: serde_json::Value = serde_json::from_str(&json).unwrap();
+    assert_eq!(doc["verdict"], "wrong");
+    assert_eq!(doc["accepted"], false);
+    assert!(doc.get("nearest").is_none(), "{json}");
+    assert!(
+        doc["message"]
+            .as_str()
+            .unwrap()
+            .starts_with("the answer is wrong; black is the background"),
+        "{json}"
+    );
+}
+
+// A near miss of the colour the "expected" line shows is told it is one. 4.3's likely
+// intended reading takes the hit at t = −90, P = (−64, 4, 60): L = (P − P_l)/‖·‖ with
+// P_l = (0, 0, 5), (−64, 4, 55)/84.4808; N = (1, 1, 1)/√3 (O, the light and the viewer are on
+// its side); cos θ = −N·L = 5/(√3·84.4808) = 0.034171; diffuse (0.7, 0.8, 0)·0.034171 =
+// (0.023920, 0.027337, 0); ambient (0.5, 0.4, 0.6)·(1, 0, 0) = (0.5, 0, 0); R·V > 0 with
+// V = (P − E)/‖·‖, so cos φ < 0 and no specular: (0.523920, 0.027337, 0). The answer
+// (0.53, 0.03, 0) is 0.00608 off in red: outside ±0.005, a near miss of that reading.
+#[test]
+fn a_near_miss_of_the_expected_reading_names_it() {
+    let (code, out, _) = run(&["check", "exercises/4.3.json", "--answer", "0.53 0.03 0"]);
+    assert_eq!(code, 1, "{out}");
+    let line = out
+        .lines()
+        .find(|l| l.starts_with("  close to "))
+        .unwrap_or_else(|| panic!("no near miss told:\n{out}"));
+    let rest = line
+        .strip_prefix(
+            "  close to the likely intended reading \"the line's hit behind the ray's origin\": ",
+        )
+        .unwrap_or_else(|| panic!("{line}"));
+    let (away, tail) = rest.split_once(' ').unwrap();
+    let away: f64 = away.parse().unwrap();
+    assert!((away - 0.00608).abs() < 1e-5, "{line}");
+    assert_eq!(tail, "away at most per channel (tolerance ±0.005)");
+}

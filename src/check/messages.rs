@@ -5,6 +5,7 @@
 use super::{Against, Slip, VerdictKind};
 use crate::solve::ReadingCode;
 use crate::text::lang::Lang;
+use crate::text::{Message, Num};
 
 /// What a slip is, in a few words (its row of `slips!`, check/slips.rs).
 pub fn slip(s: Slip, lang: Lang) -> &'static str {
@@ -140,8 +141,7 @@ pub fn nearest(c: &super::Candidate, distance: f64, tolerance: f64, lang: Lang) 
             format!("{}{within}", slips(&mistakes, lang))
         }
     };
-    // Within ten tolerances (a few hundredths on the 0–1 scale) it is a near miss.
-    let near = distance <= 10.0 * tolerance;
+    let near = super::near_miss(distance, tolerance);
     match (lang, near) {
         (Lang::En, true) => format!(
             "close to {what}: {} away at most per channel (tolerance ±{})",
@@ -207,6 +207,54 @@ pub fn per_channel(scale: super::Scale, lang: Lang) -> &'static str {
         (Lang::En, super::Scale::Bits8) => "per channel, 0–255 scale",
         (Lang::Pt, super::Scale::Unit) => "por canal, escala 0–1",
         (Lang::Pt, super::Scale::Bits8) => "por canal, escala 0–255",
+    }
+}
+
+crate::messages! {
+    /// Feedback that depends on what the answer (or the step) given is: black where the ray
+    /// hits nothing, the reversed ray's hit given as t.
+    #[allow(missing_docs)]
+    pub enum Feedback {
+        /// Black (within the tolerance) as the colour of a problem whose ray, as written, hits
+        /// nothing: black is what such a ray shows, not a colour of the point.
+        Background =>
+            "black is the background, the colour a ray that meets nothing shows: as written \
+             the ray hits nothing (t > 0), so there is no colour to give, and the answer is \
+             \"none\" (no hit)",
+            "preto é o fundo, a cor vista por um raio que não encontra nada: como enunciado o \
+             raio não atinge nada (t > 0), então não há cor a dar, e a resposta é \"nenhuma\" \
+             (nenhuma interseção)";
+        /// The file's own background colour (not black) given where the ray hits nothing.
+        BackgroundColour { colour: String } =>
+            "{colour} is the problem's background, the colour a ray that meets nothing shows: \
+             as written the ray hits nothing (t > 0), so there is no colour to give, and the \
+             answer is \"none\" (no hit)",
+            "{colour} é o fundo do problema, a cor vista por um raio que não encontra nada: \
+             como enunciado o raio não atinge nada (t > 0), então não há cor a dar, e a \
+             resposta é \"nenhuma\" (nenhuma interseção)";
+        /// A positive t that is the hit of the ray reversed (O − tD): along D that point is at
+        /// −t, behind the ray's origin, so the value's sign is reversed.
+        ReversedRayHit { given: Num, along: Num } =>
+            "the hit of the ray reversed (O − tD, t > 0), which along D is at t = {along}, \
+             behind the ray's origin: the sign of {given} is reversed",
+            "a interseção do raio invertido (O − tD, t > 0), que ao longo de D está em \
+             t = {along}, atrás da origem do raio: o sinal de {given} está trocado";
+    }
+}
+
+/// What the background colour given as the answer means where the ray hits nothing.
+pub(crate) fn background(colour: [f64; 3], lang: Lang) -> String {
+    use crate::text::number::num;
+    if colour == [0.0; 3] {
+        Feedback::Background.text(lang)
+    } else {
+        let colour = format!(
+            "({}, {}, {})",
+            num(colour[0]),
+            num(colour[1]),
+            num(colour[2])
+        );
+        Feedback::BackgroundColour { colour }.text(lang)
     }
 }
 
@@ -496,9 +544,9 @@ pub fn step_other_reading(code: ReadingCode, lang: Lang) -> String {
     }
 }
 
-/// The given value is what these slips give.
-pub fn step_slips(list: &[Slip], lang: Lang) -> String {
-    let each: Vec<&str> = list.iter().map(|s| slip(*s, lang)).collect();
+/// The given value is what these slips give (each said as [`super::steps`] says it of the
+/// value: its name, or what it means for that value).
+pub fn step_slips(each: &[String], lang: Lang) -> String {
     match lang {
         Lang::En => format!("it is what this slip gives: {}", each.join("; or ")),
         Lang::Pt => format!("é o que este erro dá: {}", each.join("; ou ")),
@@ -623,6 +671,8 @@ pub(crate) fn feedback(f: &RowFacts, lang: Lang) -> String {
             if v.kind == VerdictKind::Wrong {
                 if let Some((_, ray)) = v.has_colour {
                     parts.push(has_colour(ray, lang).to_owned());
+                } else if let Some(colour) = v.background {
+                    parts.push(background(colour, lang));
                 } else if v.written.is_none() && v.comparison.is_some() {
                     parts.push(nothing_to_shade(lang).to_owned());
                 }
@@ -638,7 +688,7 @@ pub(crate) fn feedback(f: &RowFacts, lang: Lang) -> String {
                         .collect::<Vec<_>>()
                         .join(or);
                     parts.push(format!("{} {list}", diagnosis_intro(v.pairs, lang)));
-                } else if v.has_colour.is_none() && !v.looks_8bit {
+                } else if v.has_colour.is_none() && !v.looks_8bit && v.background.is_none() {
                     // As `phong check`'s text: no slip line for 8-bit numbers on the 0–1 scale.
                     parts.push(no_diagnosis(lang).to_owned());
                 }

@@ -162,6 +162,8 @@ pub(crate) struct Expected {
     pub outcomes: Vec<Outcome>,
     /// The problem has a ray (a ray problem), rather than a point.
     pub ray: bool,
+    /// What a ray that hits nothing shows: the file's `background` (black unless it says).
+    pub background: [f64; 3],
 }
 
 impl Expected {
@@ -183,6 +185,10 @@ impl Expected {
             readings,
             outcomes: slips::outcomes(problem, base.as_ref()),
             ray: matches!(problem.target, crate::problem::Target::Ray { .. }),
+            background: {
+                use crate::core::Vector;
+                problem.background.to_array()
+            },
         })
     }
 
@@ -282,6 +288,12 @@ pub struct Verdict {
     /// For an answer "no hit" to a problem that has a colour: that colour (clamped, on the
     /// answer's scale), and whether the problem has a ray at all.
     pub has_colour: Option<([f64; 3], bool)>,
+    /// A wrong answer that is the background colour (within the tolerance; black unless the
+    /// file says otherwise) of a problem whose ray, as written, hits nothing: that is what such
+    /// a ray shows, and the answer is "no hit". The report says so in place of the nearest slip
+    /// (a slip of the likely intended reading that happens to be dark says nothing of what
+    /// black means there). The background's colour, on the 0–1 scale.
+    pub background: Option<[f64; 3]>,
 }
 
 /// Judges an answer.
@@ -298,6 +310,7 @@ pub(crate) fn judge(expected: &Expected, answer: &Answer, tolerance: f64, strict
         looks_8bit: false,
         nearest: None,
         has_colour: None,
+        background: None,
     };
     if answer.values.is_none() {
         // "No hit": right exactly when the problem as written has nothing to shade.
@@ -395,14 +408,36 @@ pub(crate) fn judge(expected: &Expected, answer: &Answer, tolerance: f64, strict
     // as written or a reading, and near (a few hundredths on the 0–1 scale).
     if !v.diagnosis.is_empty() {
         v.nearest = nearest_reading(expected, answer, tolerance)
-            .filter(|n| n.comparison.distance() <= 10.0 * tolerance);
+            .filter(|n| near_miss(n.comparison.distance(), tolerance));
     }
     // 8-bit numbers read on the 0–1 scale: every distance is measured on the wrong scale (76
     // is "75 away" from a 0.3), so no near miss is told; the hint to use --scale 255 is.
     if v.looks_8bit {
         v.nearest = None;
     }
+    // The background (black) where the ray hits nothing: the report explains it instead of
+    // naming the nearest dark slip.
+    let background = Target {
+        unclamped: expected.background,
+        clamped: Some(expected.background.map(|x| x.clamp(0.0, 1.0))),
+    };
+    v.background = (expected.solution.is_none()
+        && expected.ray
+        && compare(answer, &background, tolerance).is_some_and(|c| c.within))
+    .then_some(expected.background);
+    if v.background.is_some() {
+        v.nearest = None;
+    }
     v
+}
+
+/// A wrong answer within this many tolerances of a colour (a few hundredths on the 0–1 scale)
+/// is a near miss of it: the report says "close to" that colour.
+pub(crate) const NEAR_MISS_TOLERANCES: f64 = 10.0;
+
+/// `distance` (on the answer's scale) is a near miss under `tolerance`.
+pub(crate) fn near_miss(distance: f64, tolerance: f64) -> bool {
+    distance <= NEAR_MISS_TOLERANCES * tolerance
 }
 
 /// [`nearest`] among the problem as written and its readings only.
@@ -693,5 +728,236 @@ crate::messages! {
              \"r g b\", or add \"answer\": [r, g, b] to the file",
             "{file}: answer: ausente: o arquivo não tem gabarito para conferir. Correção: passe \
              --answer \"r g b\", ou acrescente \"answer\": [r, g, b] ao arquivo";
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::text::{Lang, Message};
+
+    fn exercise(name: &str) -> std::path::PathBuf {
+        Path::new(env!("CARGO_MANIFEST_DIR"))
+            .join("exercises")
+            .join(name)
+    }
+
+    fn check(name: &str, answer: &str, scale: Scale) -> Checked {
+        check_file(
+            &exercise(name),
+            &CheckOptions {
+                answer: Some(answer.into()),
+                scale,
+                tolerance: None,
+                strict: false,
+            },
+        )
+    }
+
+    fn verdict(c: &Checked) -> &Verdict {
+        &c.outcome.as_ref().unwrap().verdict
+    }
+
+    // 4.3's ray, O = (8, 4, 6), D = (0.8, 0, −0.6), meets the plane x + y + z = 0 where
+    // 18 + 0.2 t = 0, t = −90: behind its origin, so as written it hits nothing and shows the
+    // background. Black (within ±0.005, on either scale) is that background, not a colour the
+    // point has; the verdict stays "wrong" (the answer is "none"), only what explains it changes.
+    #[test]
+    fn black_where_the_ray_hits_nothing_is_told_it_is_the_background() {
+        for (answer, scale) in [
+            ("0 0 0", Scale::Unit),
+            ("0.004 0 0.003", Scale::Unit),
+            ("0 0 0", Scale::Bits8),
+            ("#000000", Scale::Unit),
+        ] {
+            let c = check("4.3.json", answer, scale);
+            let v = verdict(&c);
+            assert_eq!(v.kind, VerdictKind::Wrong, "{answer}");
+            assert!(!v.accepted, "{answer}");
+            assert_eq!(v.background, Some([0.0; 3]), "{answer}");
+            assert_eq!(v.nearest, None, "{answer}");
+            let en = report::text(&c, Lang::En);
+            assert!(
+                en.contains(
+                    "  black is the background, the colour a ray that meets nothing shows: as \
+                     written the ray hits nothing (t > 0), so there is no colour to give, and \
+                     the answer is \"none\" (no hit)\n"
+                ),
+                "{en}"
+            );
+            assert!(!en.contains("ambient") && !en.contains("closest"), "{en}");
+            assert!(!en.contains("no classic slip"), "{en}");
+            let pt = report::text(&c, Lang::Pt);
+            assert!(
+                pt.contains(
+                    "  preto é o fundo, a cor vista por um raio que não encontra nada: como \
+                     enunciado o raio não atinge nada (t > 0), então não há cor a dar, e a \
+                     resposta é \"nenhuma\" (nenhuma interseção)\n"
+                ),
+                "{pt}"
+            );
+            assert!(
+                !pt.contains("ambiente") && !pt.contains("mais perto"),
+                "{pt}"
+            );
+        }
+        // `phong grade`'s feedback on the row says the same, and names no slip.
+        let c = check("4.3.json", "0 0 0", Scale::Unit);
+        for (lang, background, wrong) in [
+            (Lang::En, "black is the background", "Wrong; "),
+            (Lang::Pt, "preto é o fundo", "Errada; "),
+        ] {
+            let row = messages::feedback(
+                &messages::RowFacts {
+                    verdict: Some(verdict(&c)),
+                    reason: None,
+                    tolerance: 0.005,
+                    read_as_8bit: false,
+                    points: None,
+                },
+                lang,
+            );
+            assert!(row.starts_with(&format!("{wrong}{background}")), "{row}");
+            assert!(
+                !row.contains("O_a I_a") && !row.contains("phong solve"),
+                "{row}"
+            );
+        }
+        // Not black: 0.006 is outside the tolerance of black, and 4.1's ray-less point has
+        // no background to show.
+        assert_eq!(
+            verdict(&check("4.3.json", "0.006 0 0", Scale::Unit)).background,
+            None
+        );
+        assert_eq!(
+            verdict(&check("4.1.json", "0 0 0", Scale::Unit)).background,
+            None
+        );
+    }
+
+    // A file may give its own background: then that colour, not black, is what 4.3's ray
+    // shows, and black is judged as any other colour (its nearest candidate is named).
+    #[test]
+    fn a_files_own_background_is_the_one_told() {
+        let text = std::fs::read_to_string(exercise("4.3.json"))
+            .unwrap()
+            .replacen(
+                "\"answer\"",
+                "\"background\": [0.2, 0.3, 0.4], \"answer\"",
+                1,
+            );
+        let name = Path::new("grey.json");
+        let check = |answer: &str| {
+            check_source(
+                crate::problem::Source::Text { name, text: &text },
+                &CheckOptions {
+                    answer: Some(answer.into()),
+                    scale: Scale::Unit,
+                    tolerance: None,
+                    strict: false,
+                },
+            )
+        };
+        let c = check("0.2 0.3 0.4");
+        assert_eq!(verdict(&c).kind, VerdictKind::Wrong);
+        assert_eq!(verdict(&c).background, Some([0.2, 0.3, 0.4]));
+        let en = report::text(&c, Lang::En);
+        assert!(
+            en.contains(
+                "  (0.2, 0.3, 0.4) is the problem's background, the colour a ray that meets \
+                 nothing shows: as written the ray hits nothing (t > 0), so there is no colour \
+                 to give, and the answer is \"none\" (no hit)\n"
+            ),
+            "{en}"
+        );
+        let pt = report::text(&c, Lang::Pt);
+        assert!(
+            pt.contains("  (0.2, 0.3, 0.4) é o fundo do problema, a cor vista por um raio"),
+            "{pt}"
+        );
+        let black = check("0 0 0");
+        assert_eq!(verdict(&black).background, None);
+        assert!(verdict(&black).nearest.is_some());
+    }
+
+    // Every colour a wrong answer can be near (the problem as written, each reading, each
+    // slip and pair but the truncations), moved 0.006 off in one channel: just outside the
+    // tolerance ±0.005 of it, well within ten tolerances. Where that answer matches nothing
+    // (no slip, no reading), the report says it is close to something, and names it, in
+    // both languages, even when the colour it misses is the one the "expected" line shows.
+    #[test]
+    fn a_near_miss_is_told_what_it_is_close_to() {
+        let mut told = 0;
+        for name in ["4.1.json", "4.2.json", "4.3.json"] {
+            let (_, problem) = crate::problem::Source::File(&exercise(name))
+                .load::<f64>()
+                .unwrap();
+            let x = Expected::of(&problem).unwrap();
+            let colours = x
+                .solution
+                .iter()
+                .copied()
+                .chain(x.readings.iter().map(|r| r.target))
+                .chain(
+                    x.outcomes
+                        .iter()
+                        .filter(|o| !o.slips.iter().any(|s| s.is_truncation()))
+                        .map(|o| o.target),
+                );
+            for t in colours {
+                let c = t.clamped.unwrap_or(t.unclamped);
+                for k in 0..3 {
+                    let mut a = c;
+                    a[k] += if c[k] > 0.5 { -0.006 } else { 0.006 };
+                    let text = format!("{} {} {}", a[0], a[1], a[2]);
+                    let checked = check(name, &text, Scale::Unit);
+                    let v = verdict(&checked);
+                    if v.kind != VerdictKind::Wrong
+                        || !v.diagnosis.is_empty()
+                        || v.reading.is_some()
+                    {
+                        continue;
+                    }
+                    let n = v
+                        .nearest
+                        .as_ref()
+                        .expect("a near miss has a nearest colour");
+                    assert!(n.comparison.distance() <= 0.006 + 1e-9, "{name} {text}");
+                    for lang in [Lang::En, Lang::Pt] {
+                        let out = report::text(&checked, lang);
+                        let said =
+                            messages::nearest(&n.candidate, n.comparison.distance(), 0.005, lang);
+                        let close = match lang {
+                            Lang::En => "close to ",
+                            Lang::Pt => "perto d",
+                        };
+                        assert!(said.starts_with(close), "{said}");
+                        assert!(out.contains(&said), "{name} {text}:\n{out}");
+                    }
+                    told += 1;
+                }
+            }
+        }
+        assert!(told > 0);
+    }
+
+    // The sentences of this module's typed messages render in both languages (walk.rs checks
+    // them all; this names the two of issue 28).
+    #[test]
+    fn the_feedback_messages_render() {
+        let m = messages::Feedback::ReversedRayHit {
+            given: crate::text::Num(90.0),
+            along: crate::text::Num(-90.0),
+        };
+        assert_eq!(
+            m.text(Lang::En),
+            "the hit of the ray reversed (O − tD, t > 0), which along D is at t = -90, behind \
+             the ray's origin: the sign of 90 is reversed"
+        );
+        assert_eq!(
+            m.text(Lang::Pt),
+            "a interseção do raio invertido (O − tD, t > 0), que ao longo de D está em t = -90, \
+             atrás da origem do raio: o sinal de 90 está trocado"
+        );
     }
 }

@@ -256,14 +256,17 @@ pub fn text(c: &Checked, lang: Lang) -> String {
             }
         }
     }
-    if v.kind == VerdictKind::Wrong && v.written.is_none() && answer.values.is_some() {
+    if let Some(colour) = v.background {
+        let _ = writeln!(out, "  {}", messages::background(colour, lang));
+    } else if v.kind == VerdictKind::Wrong && v.written.is_none() && answer.values.is_some() {
         let _ = writeln!(out, "  {}", messages::nothing_to_shade(lang));
     }
     if v.kind == VerdictKind::Wrong {
         // "No classic slip gives it" only where there is a value compared on its own scale: not
         // for an answer "none" (no value), nor for 8-bit numbers read on the 0–1 scale (the
         // hint to use --scale 255 below is what helps).
-        let compared = answer.values.is_some() && !v.looks_8bit;
+        // Nor for black where the ray hits nothing: the background, said above.
+        let compared = answer.values.is_some() && !v.looks_8bit && v.background.is_none();
         if v.diagnosis.is_empty() {
             if compared {
                 let _ = writeln!(out, "  {}", messages::no_diagnosis(lang));
@@ -287,14 +290,21 @@ pub fn text(c: &Checked, lang: Lang) -> String {
         if v.looks_8bit {
             let _ = writeln!(out, "  {}", messages::looks_8bit(lang));
         }
-        if let Some(n) = v.nearest.as_ref().filter(|n| worth_showing(n, v)) {
-            let _ = writeln!(
-                out,
-                "  {}{}  {}",
-                label(Line::Closest),
-                triple(n.comparison.expected, num),
-                messages::nearest(&n.candidate, n.comparison.distance(), *tolerance, lang)
-            );
+        if let Some(n) = &v.nearest {
+            let said = messages::nearest(&n.candidate, n.comparison.distance(), *tolerance, lang);
+            if worth_showing(n, v) {
+                let _ = writeln!(
+                    out,
+                    "  {}{}  {}",
+                    label(Line::Closest),
+                    triple(n.comparison.expected, num),
+                    said
+                );
+            } else if super::near_miss(n.comparison.distance(), *tolerance) {
+                // A near miss of the colour the "expected" line shows: that line has the
+                // colour; this says it is a near miss, and of what.
+                let _ = writeln!(out, "  {said}");
+            }
         }
     }
     out
@@ -469,6 +479,13 @@ pub fn json(c: &Checked) -> CheckOut {
             out.verdict = verdict_code(v.kind);
             out.accepted = v.accepted;
             out.message = messages::summary(v.kind, v.accepted, v.reading.as_ref().map(|r| r.code));
+            if let Some(colour) = v.background {
+                out.message = format!(
+                    "{}; {}",
+                    out.message,
+                    messages::background(colour, Lang::En)
+                );
+            }
             out.expected = v
                 .comparison
                 .as_ref()

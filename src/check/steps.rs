@@ -1176,7 +1176,8 @@ pub fn step_message(s: &JudgedStep, lang: Lang) -> String {
             parts.push(messages::step_other_reading(c, lang));
         }
         if !s.slips.is_empty() {
-            parts.push(messages::step_slips(&s.slips, lang));
+            let each: Vec<String> = s.slips.iter().map(|&k| slip_in_step(s, k, lang)).collect();
+            parts.push(messages::step_slips(&each, lang));
         }
     }
     if !parts.is_empty() {
@@ -1184,6 +1185,22 @@ pub fn step_message(s: &JudgedStep, lang: Lang) -> String {
         out.push_str(&parts.join("; "));
     }
     out
+}
+
+/// What a slip is, said of the value given for a step: its name, except where the name would
+/// contradict the value. The hit behind the origin is the ray reversed, whose own t is
+/// positive: a t given as +90 is that hit, and is told so (its sign reversed), never "t < 0".
+fn slip_in_step(s: &JudgedStep, slip: Slip, lang: Lang) -> String {
+    match (slip, s.given.name.name, s.given.value) {
+        (Slip::HitBehindOrigin, "t", Value::Scalar(t)) if t > 0.0 => {
+            messages::Feedback::ReversedRayHit {
+                given: crate::text::Num(t),
+                along: crate::text::Num(-t),
+            }
+            .text(lang)
+        }
+        _ => slip.name(lang).to_owned(),
+    }
 }
 
 /// The text report of one file's steps.

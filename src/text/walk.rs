@@ -84,6 +84,7 @@ walked! {
     faults crate::check::steps::StepFault;
     faults crate::check::steps::StepMissing;
     sentences crate::check::CheckMessage;
+    sentences crate::check::messages::Feedback;
     sentences crate::check::rubric::RubricError;
     sentences crate::check::Slip;
     sentences crate::problem::syntax::Found;

@@ -217,3 +217,74 @@ fn a_step_that_cannot_be_read_or_judged_is_portuguese() {
         )
     );
 }
+
+/// `phong ARGS --lang pt`: exit code and standard output.
+fn out_pt(args: &[&str]) -> (i32, String) {
+    let out = Command::cargo_bin("phong")
+        .unwrap()
+        .args(args)
+        .args(["--lang", "pt"])
+        .output()
+        .unwrap();
+    (
+        out.status.code().unwrap_or(-1),
+        String::from_utf8_lossy(&out.stdout).into_owned(),
+    )
+}
+
+// Issue 28, item 4, in Portuguese. 4.3's ray meets its plane at t = −90 (18 + 0.2 t = 0):
+// the reversed ray's hit is at t = +90, and black is the background of a ray that hits
+// nothing, whose answer is "nenhuma".
+#[test]
+fn black_and_the_reversed_ray_are_said_in_portuguese() {
+    let e = exercise("4.3.json");
+    let (code, out) = out_pt(&["check", &e, "--answer", "0 0 0"]);
+    assert_eq!(code, 1, "{out}");
+    assert!(out.contains(": errada\n"), "{out}");
+    assert!(
+        out.contains(
+            "\n  preto é o fundo, a cor vista por um raio que não encontra nada: como enunciado \
+             o raio não atinge nada (t > 0), então não há cor a dar, e a resposta é \
+             \"nenhuma\" (nenhuma interseção)\n"
+        ),
+        "{out}"
+    );
+    assert!(
+        !out.contains("ambiente") && !out.contains("mais perto"),
+        "{out}"
+    );
+    let (code, out) = out_pt(&["check", &e, "--step", "t=90"]);
+    assert_eq!(code, 1, "{out}");
+    assert!(
+        out.contains(
+            "é o que este erro dá: a interseção do raio invertido (O − tD, t > 0), que ao longo \
+             de D está em t = -90, atrás da origem do raio: o sinal de 90 está trocado"
+        ),
+        "{out}"
+    );
+    assert!(!out.contains("t < 0"), "{out}");
+}
+
+// A near miss of 4.3's likely intended reading, (0.523920, 0.027337, 0) by hand (see
+// tests/check_fixsteps.rs): (0.53, 0.03, 0) is 0.00608 off, just outside ±0.005.
+#[test]
+fn a_near_miss_names_the_reading_in_portuguese() {
+    let (code, out) = out_pt(&["check", &exercise("4.3.json"), "--answer", "0.53 0.03 0"]);
+    assert_eq!(code, 1, "{out}");
+    let line = out
+        .lines()
+        .find(|l| l.starts_with("  perto "))
+        .unwrap_or_else(|| panic!("{out}"));
+    let rest = line
+        .strip_prefix(
+            "  perto da leitura provavelmente pretendida \"a interseção da reta atrás da origem \
+             do raio\": no máximo ",
+        )
+        .unwrap_or_else(|| panic!("{line}"));
+    let (away, tail) = rest.split_once(' ').unwrap();
+    assert!(
+        (away.parse::<f64>().unwrap() - 0.00608).abs() < 1e-5,
+        "{line}"
+    );
+    assert_eq!(tail, "de diferença por canal (tolerância ±0.005)");
+}
