@@ -273,17 +273,7 @@ macro_rules! messages {
         impl $crate::text::Message for $name {
             #[allow(unused_variables)]
             fn text(&self, lang: $crate::text::Lang) -> String {
-                match self {
-                    $(
-                        $name::$variant $({ $($field),* })? => {
-                            $($(let $field = $crate::text::In($field, lang);)*)?
-                            match lang {
-                                $crate::text::Lang::En => format!($en),
-                                $crate::text::Lang::Pt => format!($pt),
-                            }
-                        }
-                    )*
-                }
+                $crate::said!(self, lang, $name { $($variant $({ $($field),* })? => $en, $pt;)* })
             }
         }
     };
@@ -329,33 +319,41 @@ macro_rules! faults {
         impl $crate::text::Fault for $name {
             #[allow(unused_variables)]
             fn what(&self, lang: $crate::text::Lang) -> String {
-                match self {
-                    $(
-                        $name::$variant $({ $($field),* })? => {
-                            $($(let $field = $crate::text::In($field, lang);)*)?
-                            match lang {
-                                $crate::text::Lang::En => format!($en),
-                                $crate::text::Lang::Pt => format!($pt),
-                            }
-                        }
-                    )*
-                }
+                $crate::said!(self, lang, $name { $($variant $({ $($field),* })? => $en, $pt;)* })
             }
 
             #[allow(unused_variables)]
             fn fix(&self, lang: $crate::text::Lang) -> String {
-                match self {
-                    $(
-                        $name::$variant $({ $($field),* })? => {
-                            $($(let $field = $crate::text::In($field, lang);)*)?
-                            match lang {
-                                $crate::text::Lang::En => format!($fix_en),
-                                $crate::text::Lang::Pt => format!($fix_pt),
-                            }
-                        }
-                    )*
-                }
+                $crate::said!(
+                    self,
+                    lang,
+                    $name { $($variant $({ $($field),* })? => $fix_en, $fix_pt;)* }
+                )
             }
         }
     };
+}
+
+/// The one `match` behind [`messages!`](crate::messages) and [`faults!`](crate::faults): the
+/// variant of `$value` written in `$lang`, each field through [`Show`] in that language.
+#[doc(hidden)]
+#[macro_export]
+macro_rules! said {
+    (
+        $value:expr, $lang:expr,
+        $name:ident { $($variant:ident $({ $($field:ident),* })? => $en:literal, $pt:literal;)* }
+    ) => {{
+        let lang: $crate::text::Lang = $lang;
+        match $value {
+            $(
+                $name::$variant $({ $($field),* })? => {
+                    $($(let $field = $crate::text::In($field, lang);)*)?
+                    match lang {
+                        $crate::text::Lang::En => format!($en),
+                        $crate::text::Lang::Pt => format!($pt),
+                    }
+                }
+            )*
+        }
+    }};
 }

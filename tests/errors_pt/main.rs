@@ -97,7 +97,8 @@ const ENGLISH: &[&str] = &[
 ];
 
 /// The prose of a message: what is between quotes or backticks (the file's own words, such as
-/// `pontual` or "white"), the file's name and the field (`point.position:`) left out.
+/// `pontual` or "white"), the file's name and the field (`point.position:`,
+/// `lights[0].type:`) left out.
 fn prose(message: &str, file: &str) -> String {
     let mut out = String::new();
     let mut quote: Option<char> = None;
@@ -113,7 +114,7 @@ fn prose(message: &str, file: &str) -> String {
         .filter(|w| {
             !(w.ends_with(':')
                 && w.chars()
-                    .all(|c| c.is_ascii_alphanumeric() || "_.[]:".contains(c)))
+                    .all(|c| c.is_ascii_alphanumeric() || "_.[]:?".contains(c)))
         })
         .collect::<Vec<_>>()
         .join(" ")

@@ -121,28 +121,7 @@ const ENGLISH: &[&str] = &[
     "form",
 ];
 
-/// The prose of a message: without what stands between quotes or backticks, the file's name
-/// and the field before a colon (`lights[0].type:`).
-fn prose(message: &str, file: &str) -> String {
-    let mut out = String::new();
-    let mut quote: Option<char> = None;
-    for c in message.replace(file, " ").chars() {
-        match quote {
-            Some(q) if c == q => quote = None,
-            Some(_) => {}
-            None if c == '"' || c == '`' => quote = Some(c),
-            None => out.push(c),
-        }
-    }
-    out.split_whitespace()
-        .filter(|w| {
-            !(w.ends_with(':')
-                && w.chars()
-                    .all(|c| c.is_ascii_alphanumeric() || "_.[]:?".contains(c)))
-        })
-        .collect::<Vec<_>>()
-        .join(" ")
-}
+use super::prose;
 
 /// The words of [`ENGLISH`] in the prose of `message`.
 fn english_in(message: &str, file: &str) -> Vec<String> {
