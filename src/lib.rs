@@ -40,3 +40,5 @@ pub(crate) mod tradeoff;
 
 #[cfg(test)]
 mod layers;
+#[cfg(test)]
+mod walk;

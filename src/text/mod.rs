@@ -9,7 +9,7 @@
 //! only at the edge. Each message enum is declared with [`messages!`] or [`faults!`], whose
 //! every variant takes its English and its Portuguese text side by side: a missing
 //! translation does not compile. Every variant of every message enum is walked in both
-//! languages by this module's tests (the enums derive `strum::EnumIter` under test).
+//! languages by the crate's test `src/walk.rs` (the enums derive `strum::EnumIter` under test).
 
 pub mod io;
 pub mod lang;
@@ -19,6 +19,3 @@ pub mod number;
 pub use io::IoCause;
 pub use lang::Lang;
 pub use message::{Echo, Fault, FixOf, In, Message, Num, Said, Show, WhatOf};
-
-#[cfg(test)]
-mod walk;

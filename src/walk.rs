@@ -7,7 +7,7 @@
 
 use strum::IntoEnumIterator;
 
-use super::{Fault, Lang, Message};
+use crate::text::{Fault, Lang, Message};
 
 /// One rendering of a variant: its enum and variant, then the English and the Portuguese.
 struct Rendered {
@@ -225,7 +225,7 @@ fn every_message_enum_is_walked() {
         .collect();
     assert!(
         missing.is_empty(),
-        "message enums missing from src/text/walk.rs's list: {missing:?}"
+        "message enums missing from src/walk.rs's list: {missing:?}"
     );
     assert!(!declared.is_empty());
 }
