@@ -28,11 +28,12 @@ use super::steps::{self, StepsExpected, StepsOut};
 use super::{answer, judge, messages, Expected, Scale, Slip, Verdict, VerdictKind};
 use crate::solve::ReadingCode;
 use crate::text::lang::Lang;
+use crate::text::Said;
 
 mod reasons;
 pub use reasons::{
     AnswerNote, Column, ExerciseFault, ExerciseNote, Fields, FieldsHint, HeaderFault, NotCsv,
-    Reason, RowReason, Said, Sep, Width,
+    Reason, RowReason, Sep, Width,
 };
 
 /// How answers are read and judged.
@@ -1437,7 +1438,7 @@ fn grade_row(
     let mut a = match answer::parse(&row.answer, options.scale) {
         Ok(a) => a,
         Err(e) => {
-            let why = Said::of(e);
+            let why = Said::new(e);
             return invalid(row, RowReason::Answer { why }.into());
         }
     };
@@ -1461,7 +1462,7 @@ fn grade_row(
             };
             let given = match steps::read_cell(&row.steps_text) {
                 Ok(g) => g,
-                Err(e) => return invalid(row, at(row, Said::of(e))),
+                Err(e) => return invalid(row, at(row, Said::new(e))),
             };
             if given.is_empty() {
                 // Separators only (`;`): no steps.
@@ -1473,7 +1474,7 @@ fn grade_row(
                 };
                 match steps::judge(x, &given, options.strict) {
                     Ok(j) => Some(j),
-                    Err(e) => return invalid(row, at(row, Said::of(e))),
+                    Err(e) => return invalid(row, at(row, Said::new(e))),
                 }
             }
         }

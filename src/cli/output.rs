@@ -68,16 +68,6 @@ pub(crate) fn write_file(path: &Path, bytes: &[u8]) -> Result<(), CliError> {
     emit_bytes(Some(path), bytes)
 }
 
-/// One JSON document, or an array for several ([`crate::report::json::documents_text`]).
-pub(crate) fn json_text(docs: Vec<serde_json::Value>) -> String {
-    crate::report::json::documents_text(docs)
-}
-
-/// `value` pretty-printed with a final newline ([`crate::report::json::pretty`]).
-pub(crate) fn json_pretty(value: &impl serde::Serialize) -> String {
-    crate::report::json::pretty(value)
-}
-
 /// A progress bar on stderr when it is a terminal; hidden otherwise (and under CI). `work`, when
 /// given, is the estimate shown beside it (`about 2.1e9 rays`), with the time left.
 pub(crate) fn progress_bar(rows: u64, work: Option<&str>) -> indicatif::ProgressBar {

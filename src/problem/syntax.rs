@@ -329,9 +329,9 @@ impl Show for OneOf {
 /// A message of the parser phong does not know, as written: in Portuguese, quoted as the
 /// parser's words.
 #[derive(Clone, Debug, Default, PartialEq)]
-pub struct Said(pub String);
+pub struct ParserWords(pub String);
 
-impl Show for Said {
+impl Show for ParserWords {
     fn show(&self, lang: Lang, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match lang {
             _ if self.0.is_empty() => Ok(()),
@@ -452,7 +452,7 @@ messages! {
             "invalid length {len}, {expected}",
             "comprimento {len} inválido, {expected}";
         /// A message of the parser this list does not know, as written.
-        Other { text: Said } => "{text}", "{text}";
+        Other { text: ParserWords } => "{text}", "{text}";
         /// A byte that is not UTF-8.
         NotUtf8 { byte: Hex } => "byte {byte} is not UTF-8 text", "o byte {byte} não é texto UTF-8";
         /// A document that is not an object.
@@ -524,7 +524,7 @@ impl Parse {
         match Parse::classify(message) {
             Some(p) if p.text(Lang::En) == written => p,
             _ => Parse::Other {
-                text: Said(written),
+                text: ParserWords(written),
             },
         }
     }
@@ -921,7 +921,7 @@ mod tests {
         assert_eq!(
             p,
             Parse::Other {
-                text: Said("float key must be finite (got NaN or +/-inf)".into())
+                text: ParserWords("float key must be finite (got NaN or +/-inf)".into())
             }
         );
         assert_eq!(

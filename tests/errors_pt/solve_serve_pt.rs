@@ -131,6 +131,18 @@ fn a_scene_given_to_solve_is_refused_in_portuguese_by_flag_and_by_locale() {
     assert_eq!(by_locale, pt);
 }
 
+/// `phong ARGS` run in `dir`, refused (exit 2): its standard error.
+fn refused_in(dir: &Path, args: &[&str]) -> String {
+    let out = Command::cargo_bin("phong")
+        .unwrap()
+        .current_dir(dir)
+        .args(args)
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(2));
+    String::from_utf8(out.stderr).unwrap()
+}
+
 #[test]
 fn a_falloff_that_overflows_f32_is_said_in_portuguese() {
     // A light 1e-20 from P with quadratic falloff: 1/d² = 1e40, beyond f32's 3.4e38.
@@ -147,14 +159,10 @@ fn a_falloff_that_overflows_f32_is_said_in_portuguese() {
     )
     .unwrap();
     let run = |lang: &str| {
-        let out = Command::cargo_bin("phong")
-            .unwrap()
-            .current_dir(dir.path())
-            .args(["solve", "near.json", "--precision", "f32", "--lang", lang])
-            .output()
-            .unwrap();
-        assert_eq!(out.status.code(), Some(2));
-        String::from_utf8(out.stderr).unwrap()
+        refused_in(
+            dir.path(),
+            &["solve", "near.json", "--precision", "f32", "--lang", lang],
+        )
     };
     let en = run("en");
     assert!(
@@ -195,15 +203,17 @@ fn a_pixel_whose_reflection_overflows_is_refused_in_portuguese() {
     let dir = tempfile::tempdir().unwrap();
     std::fs::write(dir.path().join("hot.json"), text).unwrap();
     let run = |lang: &str| {
-        let out = Command::cargo_bin("phong")
-            .unwrap()
-            .current_dir(dir.path())
-            .args(["render", "hot.json", "--explain-pixel", "320,240"])
-            .args(["--lang", lang])
-            .output()
-            .unwrap();
-        assert_eq!(out.status.code(), Some(2));
-        String::from_utf8(out.stderr).unwrap()
+        refused_in(
+            dir.path(),
+            &[
+                "render",
+                "hot.json",
+                "--explain-pixel",
+                "320,240",
+                "--lang",
+                lang,
+            ],
+        )
     };
     let en = run("en");
     assert!(

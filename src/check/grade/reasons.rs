@@ -9,7 +9,7 @@ use std::sync::Arc;
 use crate::problem::error::what_and_fix;
 use crate::problem::reading::Cause;
 use crate::problem::ProblemError;
-use crate::text::{Lang, Message, Show};
+use crate::text::{Lang, Message, Said, Show};
 use crate::{faults, messages};
 
 /// A column of the submissions: `student` in English (the column's name), `do aluno` in
@@ -111,36 +111,6 @@ impl Show for Sep {
             (b'\t', Lang::En) => f.write_str("a tab character"),
             (b'\t', Lang::Pt) => f.write_str("uma tabulação"),
             (d, _) => write!(f, "'{}'", d as char),
-        }
-    }
-}
-
-/// A sentence another module says, carried whole in a reason: an answer's error
-/// ([`BadAnswer`](crate::check::answer::BadAnswer)), a step's
-/// ([`BadStep`](crate::check::steps::BadStep), [`StepMissing`](crate::check::steps::StepMissing)).
-/// Two are equal when they say the same in English.
-#[derive(Clone, Debug, Default)]
-pub struct Said(Option<Arc<dyn Message + Send + Sync>>);
-
-impl Said {
-    /// `m`, carried.
-    pub fn of(m: impl Message + Send + Sync + 'static) -> Said {
-        Said(Some(Arc::new(m)))
-    }
-}
-
-impl PartialEq for Said {
-    fn eq(&self, other: &Said) -> bool {
-        let en = |s: &Said| s.0.as_ref().map(|m| m.text(Lang::En));
-        en(self) == en(other)
-    }
-}
-
-impl Show for Said {
-    fn show(&self, lang: Lang, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        match &self.0 {
-            Some(m) => f.write_str(&m.text(lang)),
-            None => Ok(()),
         }
     }
 }

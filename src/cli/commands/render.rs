@@ -191,7 +191,7 @@ fn explain_pixel<R: Real>(
             report::pixel::write_latex(&pixel(), report::latex::LatexOptions::default())
         }
         Format::Html => report::pixel::write_html(&pixel(), report::html::HtmlOptions::default()),
-        Format::Json => output::json_pretty(
+        Format::Json => report::json::pretty(
             &serde_json::to_value(report::pixel::PixelOut {
                 versus_f64: versus,
                 ..report::pixel::document(&file, problem, &e)

@@ -103,7 +103,7 @@ pub(crate) fn run(args: &SolveArgs) -> Result<Exit, CliError> {
             for (i, path) in solved.iter().enumerate() {
                 let file = dir.join(format!("{}.{ext}", stem(path)));
                 let out = match args.format {
-                    Format::Json => output::json_text(vec![docs[i].clone()]),
+                    Format::Json => report::json::documents_text(vec![docs[i].clone()]),
                     _ => write(args, &header, std::slice::from_ref(&explanations[i]), i + 1),
                 };
                 output::emit(Some(&file), &out)?;
@@ -111,7 +111,7 @@ pub(crate) fn run(args: &SolveArgs) -> Result<Exit, CliError> {
         }
         None => {
             let out = match args.format {
-                Format::Json => output::json_text(docs),
+                Format::Json => report::json::documents_text(docs),
                 _ => write(args, &header, &explanations, 1),
             };
             output::emit(args.output.as_deref(), &out)?;

@@ -136,7 +136,7 @@ pub(crate) fn run(args: &TradeoffArgs) -> Result<Exit, CliError> {
     }
     let text = match args.format {
         TradeoffFormat::Text => report::text(&summary),
-        TradeoffFormat::Json => output::json_pretty(&report::json(&summary)),
+        TradeoffFormat::Json => crate::report::json::pretty(&report::json(&summary)),
         TradeoffFormat::Csv => report::csv(&summary),
     };
     output::emit(args.output.as_deref(), &text)?;
