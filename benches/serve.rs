@@ -35,9 +35,8 @@ fn main() {
     // In process: the library call a request makes.
     let options = phong::check::CheckOptions {
         answer: Some("0.245 0.28 0.21".into()),
-        scale: phong::check::Scale::Unit,
-        tolerance: None,
-        strict: false,
+        scale: Some(phong::check::Scale::Unit),
+        ..Default::default()
     };
     let source = phong::problem::Source::Text {
         name: Path::new("problem"),

@@ -85,7 +85,8 @@ walked! {
     faults crate::check::steps::StepMissing;
     sentences crate::check::CheckMessage;
     sentences crate::check::messages::Feedback;
-    sentences crate::check::rubric::RubricError;
+    sentences crate::check::policy::PolicyError;
+    sentences crate::check::messages::Credit;
     sentences crate::check::Slip;
     sentences crate::problem::syntax::Found;
     sentences crate::problem::syntax::Expected;

@@ -1480,9 +1480,8 @@ fn render_tiny<R: Real>(mut problem: problem::Problem<R>, c: &Context) -> Result
 fn check_path(c: &Context, tally: &Tally) -> Result<(), String> {
     let options = CheckOptions {
         answer: None,
-        scale: Scale::Unit,
-        tolerance: None,
-        strict: false,
+        scale: Some(Scale::Unit),
+        ..Default::default()
     };
     let checked = guarded("check", || check::check_file(c.path, &options))?;
     match &checked.outcome {
@@ -2293,9 +2292,8 @@ fn an_answer_scale_of_1e300_is_written_1e300_not_301_digits() {
     fs::write(&ws.case, json.text()).expect("written");
     let options = CheckOptions {
         answer: None,
-        scale: Scale::Unit,
-        tolerance: None,
-        strict: false,
+        scale: Some(Scale::Unit),
+        ..Default::default()
     };
     let failure = check::check_file(&ws.case, &options)
         .outcome
@@ -2669,9 +2667,7 @@ fn fuzz_answers_never_panic_and_their_errors_stay_short() {
 fn fuzz_grading_arbitrary_bytes_never_panics_and_keeps_every_line() {
     let options = check::grade::Options {
         exercises: std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("exercises"),
-        scale: Scale::Unit,
-        tolerance: None,
-        strict: false,
+        scale: None,
         delimiter: None,
         ..check::grade::Options::default()
     };
@@ -2739,9 +2735,8 @@ fn serve_api_answers_every_generated_problem_with_json_and_never_a_5xx() {
     ];
     let options = CheckOptions {
         answer: Some("0.245 0.28 0.21".into()),
-        scale: Scale::Unit,
-        tolerance: None,
-        strict: false,
+        scale: Some(Scale::Unit),
+        ..Default::default()
     };
     fuzz("serve", strategy, CASES_SERVE, |input| {
         let mut c = client.lock().unwrap_or_else(|p| p.into_inner());

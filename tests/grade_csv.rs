@@ -8,7 +8,6 @@ use std::path::{Path, PathBuf};
 
 use assert_cmd::Command;
 use phong::check::grade::{grade_bytes, rows_csv, Options, Report, RowOut};
-use phong::check::Scale;
 use proptest::prelude::*;
 use proptest::test_runner::{Config, FileFailurePersistence, RngSeed, TestRunner};
 
@@ -19,9 +18,7 @@ fn folder() -> PathBuf {
 fn options(delimiter: Option<u8>) -> Options {
     Options {
         exercises: folder(),
-        scale: Scale::Unit,
-        tolerance: None,
-        strict: false,
+        scale: None,
         delimiter,
         ..Options::default()
     }

@@ -39,9 +39,8 @@ fn text_is_checked_as_its_file_is() {
     // point here; any answer gives the same verdict from the file and from its text.
     let options = CheckOptions {
         answer: Some("0.245 0.28 0.21".into()),
-        scale: Scale::Unit,
-        tolerance: None,
-        strict: false,
+        scale: Some(Scale::Unit),
+        ..Default::default()
     };
     let path = Path::new("exercises/4.2.json");
     let text = text_of("exercises/4.2.json");

@@ -69,7 +69,7 @@ impl Answer {
 
 /// The words (accents, case, spaces, hyphens and underscores aside) that answer "the ray hits
 /// nothing", in English and Portuguese.
-const NO_HIT_WORDS: [&str; 22] = [
+pub(crate) const NO_HIT_WORDS: [&str; 22] = [
     "none",
     "no hit",
     "nohit",
@@ -98,6 +98,11 @@ const NO_HIT_WORDS: [&str; 22] = [
 /// without accents ("sem interseção", "Sem intersecao", "NENHUMA", "no-hit"), or a dash alone
 /// ("—", "–", "-").
 pub(crate) fn is_no_hit(text: &str) -> bool {
+    is_no_hit_in(text, &NO_HIT_WORDS)
+}
+
+/// [`is_no_hit`] with a course's own words (folded, [`fold`]).
+pub(crate) fn is_no_hit_in<S: AsRef<str>>(text: &str, words: &[S]) -> bool {
     let t = text
         .trim()
         .trim_matches(|c: char| matches!(c, '"' | '\'' | '(' | ')' | '[' | ']' | '.' | '!'))
@@ -105,7 +110,15 @@ pub(crate) fn is_no_hit(text: &str) -> bool {
     if matches!(t, "—" | "–" | "-" | "--" | "∅") {
         return true;
     }
-    let folded: String = t
+    let folded = fold(t);
+    words.iter().any(|w| w.as_ref() == folded)
+}
+
+/// A word as the no-hit words are compared: lower case, without accents, hyphens and
+/// underscores as spaces, single spaces.
+pub(crate) fn fold(text: &str) -> String {
+    let folded: String = text
+        .trim()
         .to_lowercase()
         .chars()
         .map(|c| match c {
@@ -119,8 +132,7 @@ pub(crate) fn is_no_hit(text: &str) -> bool {
             c => c,
         })
         .collect();
-    let words = folded.split_whitespace().collect::<Vec<_>>().join(" ");
-    NO_HIT_WORDS.contains(&words.as_str())
+    folded.split_whitespace().collect::<Vec<_>>().join(" ")
 }
 
 /// Why an answer cannot be read: what is wrong and the forms an answer may take, and the field
@@ -171,11 +183,20 @@ impl std::error::Error for BadAnswer {}
 
 /// Reads an answer written on `scale` (a `#RRGGBB` answer is always on the 255 scale).
 pub fn parse(text: &str, scale: Scale) -> Result<Answer, BadAnswer> {
+    parse_with(text, scale, &NO_HIT_WORDS)
+}
+
+/// [`parse`] with a course's own words for "no hit" (folded, [`fold`]).
+pub fn parse_with<S: AsRef<str>>(
+    text: &str,
+    scale: Scale,
+    no_hit: &[S],
+) -> Result<Answer, BadAnswer> {
     let t = text.trim();
     if t.is_empty() {
         return Err(bad(AnswerFault::Empty { forms: Forms }));
     }
-    if is_no_hit(t) {
+    if is_no_hit_in(t, no_hit) {
         return Ok(Answer::no_hit(scale));
     }
     if let Some(hex) = t.strip_prefix('#') {

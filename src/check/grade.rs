@@ -23,7 +23,7 @@ use std::path::{Path, PathBuf};
 use serde::Serialize;
 
 use super::report::{scale_number, verdict_code, CHECK_FORMAT_VERSION};
-use super::rubric::{Duplicates, Rubric};
+use super::policy::{Duplicates, Policy};
 use super::steps::{self, StepsExpected, StepsOut};
 use super::{answer, judge, messages, Expected, Scale, Slip, Verdict, VerdictKind};
 use crate::solve::ReadingCode;
@@ -41,23 +41,14 @@ pub use reasons::{
 pub struct Options {
     /// The folder of exercise files: exercise `4.2` is `DIR/4.2.json`.
     pub exercises: PathBuf,
-    /// The scale of answers that are not `#RRGGBB`.
-    pub scale: Scale,
-    /// The tolerance; `None` for each exercise key's own, else the scale's default (0.005, or 1
-    /// on the 255 scale).
-    pub tolerance: Option<f64>,
-    /// Only the problem as written is right (a likely intended reading is not accepted).
-    pub strict: bool,
+    /// The scale of answers that are not `#RRGGBB`; `None` for the 0–1 scale, with 8-bit
+    /// values read as the course policy says.
+    pub scale: Option<Scale>,
     /// The fields' separator (`b','`, `b';'` or `b'\t'`); `None` to detect it ([`delimiter`]).
     pub delimiter: Option<u8>,
-    /// Per-row scale detection: on the 0–1 scale, an answer of three whole numbers 0–255 (one of
-    /// them above 1) is read as 8-bit values, and its feedback says so. Off when the scale is
-    /// given (`--scale 1`).
-    pub detect_scale: bool,
-    /// The points of each exercise and the share a reading earns.
-    pub rubric: Rubric,
-    /// Which answer counts when a student answers an exercise more than once.
-    pub duplicates: Duplicates,
+    /// The course policy: tolerances, strictness, 8-bit reading, no-hit words, points, the
+    /// reading's credit and which answer counts when a student answers an exercise twice.
+    pub policy: Policy,
     /// The language of the `feedback` column.
     pub lang: Lang,
     /// What the submissions file is.
@@ -115,13 +106,9 @@ impl Default for Options {
     fn default() -> Self {
         Options {
             exercises: PathBuf::new(),
-            scale: Scale::Unit,
-            tolerance: None,
-            strict: false,
+            scale: None,
             delimiter: None,
-            detect_scale: true,
-            rubric: Rubric::default(),
-            duplicates: Duplicates::default(),
+            policy: Policy::default(),
             lang: Lang::En,
             input: Input::Auto,
             questions: Vec::new(),
@@ -1027,7 +1014,7 @@ impl<'a> Graded<'a> {
                 self.students.first_group[student as usize] = g;
             } else {
                 let group = &mut self.groups[g as usize];
-                let replaces = match self.options.duplicates {
+                let replaces = match self.options.policy.duplicates {
                     Duplicates::First => false,
                     Duplicates::Last => true,
                     // The most points; the first of those on a tie.
@@ -1067,9 +1054,9 @@ impl<'a> Graded<'a> {
             .solved
             .iter()
             .filter(|(_, e)| e.is_ok())
-            .map(|(k, _)| (k.clone(), options.rubric.points_of(k)))
+            .map(|(k, _)| (k.clone(), options.policy.points_of(k)))
             .collect();
-        for (k, &p) in &options.rubric.points {
+        for (k, &p) in &options.policy.points {
             exercises.insert(k.clone(), p);
         }
         self.max_points = exercises.values().sum();
@@ -1102,7 +1089,7 @@ impl<'a> Graded<'a> {
                     row.exercise = point;
                 }
                 if !row.exercise.is_empty() && cache.get(&row.exercise).is_ok() {
-                    row.max_points = Some(options.rubric.points_of(&row.exercise));
+                    row.max_points = Some(options.policy.points_of(&row.exercise));
                 }
                 let reason = RowReason::NotCsv { why: e }.into();
                 mark_invalid(&mut row, reason, options.lang);
@@ -1137,7 +1124,7 @@ impl<'a> Graded<'a> {
                 if winner != i {
                     r.counted = false;
                     let note =
-                        messages::not_counted(winner + 1, self.options.duplicates.word(), lang);
+                        messages::not_counted(winner + 1, self.options.policy.duplicates.word(), lang);
                     r.feedback.insert_str(0, &note);
                 }
             }
@@ -1400,7 +1387,7 @@ fn grade_row(
         Err(e) => return invalid(row, e.clone()),
     };
     let Exercise { expected, key, .. } = exercise;
-    row.max_points = Some(options.rubric.points_of(&row.exercise));
+    row.max_points = Some(options.policy.points_of(&row.exercise));
     // A Cloze response from Moodle with blank parts (`part 1: 0,5; part 2: ; part 3: 0,3`): a
     // blank part is no answer for its channel, so the colour is incomplete and the row wrong,
     // its feedback naming the blank parts; every part blank is nothing to judge (invalid).
@@ -1409,14 +1396,14 @@ fn grade_row(
         None => {}
         Some(all @ super::moodle::Blank::All) => return invalid(row, Reason::Cloze(all)),
         Some(some) => {
+            let scale = options.scale.unwrap_or(Scale::Unit);
             let tolerance = options
-                .tolerance
-                .or_else(|| key.and_then(|k| k.tolerance_on(options.scale)))
-                .unwrap_or_else(|| options.scale.default_tolerance());
-            let max = options.rubric.points_of(&row.exercise);
+                .policy
+                .tolerance(scale, key.and_then(|k| k.tolerance_on(scale)));
+            let max = options.policy.points_of(&row.exercise);
             row.verdict = verdict_code(VerdictKind::Wrong);
             row.accepted = false;
-            row.scale = Some(scale_number(options.scale));
+            row.scale = Some(scale_number(scale));
             row.tolerance = Some(tolerance);
             row.points = 0.0;
             let lang = options.lang;
@@ -1435,19 +1422,16 @@ fn grade_row(
             return;
         }
     }
-    let mut a = match answer::parse(&row.answer, options.scale) {
-        Ok(a) => a,
+    let a = match options.policy.read(&row.answer, options.scale) {
+        Ok(read) => {
+            row.scale_detected = read.as_8bit;
+            read.answer
+        }
         Err(e) => {
             let why = Said::new(e);
             return invalid(row, RowReason::Answer { why }.into());
         }
     };
-    if options.detect_scale && a.scale == Scale::Unit && a.values.is_some_and(|v| looks_8bit(&v)) {
-        if let Ok(b) = answer::parse(&row.answer, Scale::Bits8) {
-            a = b;
-            row.scale_detected = true;
-        }
-    }
     // The steps, read and judged against the exercise's quantities; a step that cannot be read
     // or judged is the row's error, naming the row, the column, the step as written and the fix.
     let judged = match &layout.steps {
@@ -1472,7 +1456,7 @@ fn grade_row(
                     Ok(x) => x,
                     Err(e) => return invalid(row, e.clone()),
                 };
-                match steps::judge(x, &given, options.strict) {
+                match steps::judge(x, &given, options.policy.strict) {
                     Ok(j) => Some(j),
                     Err(e) => return invalid(row, at(row, Said::new(e))),
                 }
@@ -1481,10 +1465,9 @@ fn grade_row(
         _ => None,
     };
     let tolerance = options
-        .tolerance
-        .or_else(|| key.and_then(|k| k.tolerance_on(a.scale)))
-        .unwrap_or_else(|| a.scale.default_tolerance());
-    let v: Verdict = judge(expected, &a, tolerance, options.strict);
+        .policy
+        .tolerance(a.scale, key.and_then(|k| k.tolerance_on(a.scale)));
+    let v: Verdict = judge(expected, &a, tolerance, options.policy.strict);
     row.verdict = verdict_code(v.kind);
     row.accepted = v.accepted;
     row.scale = Some(scale_number(a.scale));
@@ -1514,12 +1497,8 @@ fn grade_row(
             answer: answer_note,
         });
     }
-    let max = options.rubric.points_of(&row.exercise);
-    row.points = match v.kind {
-        VerdictKind::Right => max,
-        VerdictKind::Reading if !options.strict => max * options.rubric.reading_credit,
-        _ => 0.0,
-    };
+    let max = options.policy.points_of(&row.exercise);
+    row.points = max * options.policy.credit(v.kind);
     row.feedback = messages::feedback(
         &messages::RowFacts {
             verdict: Some(&v),
@@ -1547,13 +1526,6 @@ fn comma_exercise(written: &str, cache: &mut Cache) -> Option<String> {
     }
     let point = written.replace(',', ".");
     cache.get(&point).is_ok().then_some(point)
-}
-
-/// Three whole numbers 0–255, one of them above 1: 8-bit values rather than a 0–1 colour.
-fn looks_8bit(v: &[f64; 3]) -> bool {
-    v.iter()
-        .all(|x| x.fract() == 0.0 && (0.0..=255.0).contains(x))
-        && v.iter().any(|&x| x > 1.0)
 }
 
 fn codes(slips: &[Slip]) -> String {

@@ -65,6 +65,7 @@ pub enum Line {
     Difference,
     Tolerance,
     Closest,
+    Credit,
 }
 
 pub fn line(l: Line, lang: Lang) -> &'static str {
@@ -79,6 +80,8 @@ pub fn line(l: Line, lang: Lang) -> &'static str {
         (Lang::Pt, Line::Tolerance) => "tolerância",
         (Lang::En, Line::Closest) => "closest",
         (Lang::Pt, Line::Closest) => "mais perto",
+        (Lang::En, Line::Credit) => "credit",
+        (Lang::Pt, Line::Credit) => "crédito",
     }
 }
 
@@ -797,5 +800,36 @@ mod tests {
         assert_eq!(de("os erros"), "dos erros");
         assert_eq!(de("as cores"), "das cores");
         assert_eq!(de("erro de sinal"), "de erro de sinal");
+    }
+}
+
+crate::messages! {
+    /// What a verdict earns under the course policy, and which policy that is.
+    #[allow(missing_docs)]
+    pub enum Credit {
+        /// By the policy of a file.
+        InFile { percent: crate::text::Num, file: std::path::PathBuf } =>
+            "{percent}% of the exercise's points in this course (course policy: {file})",
+            "{percent}% dos pontos do exercício neste curso (política do curso: {file})";
+        /// By the default policy.
+        Default { percent: crate::text::Num } =>
+            "{percent}% of the exercise's points in this course (the default course policy: \
+             no course-policy.json beside the exercises)",
+            "{percent}% dos pontos do exercício neste curso (a política padrão do curso: não há \
+             course-policy.json junto aos exercícios)";
+    }
+}
+
+impl Credit {
+    /// The credit `share` (0 to 1) by the policy of `file` (`None`: the default).
+    pub(crate) fn of(share: f64, file: Option<&std::path::Path>) -> Credit {
+        let percent = crate::text::Num(share * 100.0);
+        match file {
+            Some(f) => Credit::InFile {
+                percent,
+                file: f.to_owned(),
+            },
+            None => Credit::Default { percent },
+        }
     }
 }

@@ -21,8 +21,8 @@ pub mod grade;
 pub(crate) mod messages;
 pub mod moodle;
 pub mod output;
+pub mod policy;
 pub mod report;
-pub mod rubric;
 pub(crate) mod slips;
 pub(crate) mod steps;
 
@@ -398,11 +398,7 @@ pub(crate) fn judge(expected: &Expected, answer: &Answer, tolerance: f64, strict
         v.pairs = !v.diagnosis.is_empty();
     }
     let values = answer.values.unwrap_or_default();
-    v.looks_8bit = answer.scale == Scale::Unit
-        && values
-            .iter()
-            .all(|x| x.fract() == 0.0 && (0.0..=255.0).contains(x))
-        && values.iter().any(|&x| x > 1.0);
+    v.looks_8bit = answer.scale == Scale::Unit && policy::looks_8bit(&values);
     v.nearest = nearest(expected, answer, tolerance, &intended);
     // Where slips explain the answer, the nearest other colour is news only if it is the problem
     // as written or a reading, and near (a few hundredths on the 0–1 scale).
@@ -524,16 +520,15 @@ fn nearest(
 }
 
 /// How `phong check` reads and judges an answer.
-#[derive(Clone, Debug)]
+#[derive(Clone, Debug, Default)]
 pub struct CheckOptions {
     /// The answer as written; `None` to check the file's answer key.
     pub answer: Option<String>,
-    /// The scale of an answer that is not `#RRGGBB`.
-    pub scale: Scale,
-    /// `None`: the key's tolerance, or the scale's default.
-    pub tolerance: Option<f64>,
-    /// Only the problem as written is right.
-    pub strict: bool,
+    /// The scale of an answer that is not `#RRGGBB`; `None` for the 0–1 scale, with 8-bit
+    /// values read as the course policy says.
+    pub scale: Option<Scale>,
+    /// The course policy (its tolerances, strictness, 8-bit reading, no-hit words, credit).
+    pub policy: std::sync::Arc<policy::Policy>,
 }
 
 /// Checks one problem file's answer (given, or its key). Never fails: a bad file or answer is
@@ -666,16 +661,22 @@ fn judge_loaded(
         message,
     };
     use report::Said;
+    let policy = &options.policy;
+    let mut as_8bit = false;
     let key = match (&options.answer, &loaded.file.answer) {
-        (Some(text), file_key) => answer::parse(text, options.scale)
-            .map(|answer| Key {
-                answer,
-                // The file's key says how closely its exercise is judged: an answer given on
-                // the command line is judged so too (on its own scale).
-                tolerance: file_key
-                    .as_ref()
-                    .and_then(|k| answer::from_key(k).ok())
-                    .and_then(|k| k.tolerance_on(answer.scale)),
+        (Some(text), file_key) => policy
+            .read(text, options.scale)
+            .map(|read| {
+                as_8bit = read.as_8bit;
+                Key {
+                    answer: read.answer,
+                    // The file's key says how closely its exercise is judged: an answer given
+                    // on the command line is judged so too (on its own scale).
+                    tolerance: file_key
+                        .as_ref()
+                        .and_then(|k| answer::from_key(k).ok())
+                        .and_then(|k| k.tolerance_on(read.answer.scale)),
+                }
             })
             .map_err(|e| answer_failure("--answer", Said::at(format!("{file}: --answer"), e)))?,
         (None, Some(key)) => {
@@ -690,14 +691,14 @@ fn judge_loaded(
         }
     };
     let expected = loaded.expected.as_ref().map_err(Clone::clone)?;
-    let tolerance = options
-        .tolerance
-        .or(key.tolerance)
-        .unwrap_or_else(|| key.answer.scale.default_tolerance());
-    let verdict = judge(expected, &key.answer, tolerance, options.strict);
+    let tolerance = policy.tolerance(key.answer.scale, key.tolerance);
+    let verdict = judge(expected, &key.answer, tolerance, policy.strict);
     Ok(Judged {
         answer: key.answer,
         tolerance,
+        credit: policy.credit(verdict.kind),
+        as_8bit,
+        policy: policy.source.clone(),
         verdict,
     })
 }
@@ -747,9 +748,8 @@ mod tests {
             &exercise(name),
             &CheckOptions {
                 answer: Some(answer.into()),
-                scale,
-                tolerance: None,
-                strict: false,
+                scale: Some(scale),
+                ..Default::default()
             },
         )
     }
@@ -852,9 +852,8 @@ mod tests {
                 crate::problem::Source::Text { name, text: &text },
                 &CheckOptions {
                     answer: Some(answer.into()),
-                    scale: Scale::Unit,
-                    tolerance: None,
-                    strict: false,
+                    scale: Some(Scale::Unit),
+                    ..Default::default()
                 },
             )
         };

@@ -50,6 +50,12 @@ pub struct Judged {
     pub answer: Answer,
     /// The largest difference accepted per channel, on the answer's scale.
     pub tolerance: f64,
+    /// The share of the exercise's points the verdict earns under the course policy.
+    pub credit: f64,
+    /// The answer's numbers, written without a scale, were read as 8-bit values.
+    pub as_8bit: bool,
+    /// The course policy's file; `None` for the defaults.
+    pub policy: Option<std::path::PathBuf>,
     /// The verdict, with the comparisons and the diagnosis behind it.
     pub verdict: Verdict,
 }
@@ -169,6 +175,9 @@ pub fn text(c: &Checked, lang: Lang) -> String {
         answer,
         tolerance,
         verdict: v,
+        credit,
+        as_8bit,
+        policy,
     } = match &c.outcome {
         Err(f) => {
             let _ = writeln!(
@@ -194,6 +203,9 @@ pub fn text(c: &Checked, lang: Lang) -> String {
         None => messages::no_hit_answer(lang).to_owned(),
     };
     let _ = writeln!(out, "  {}{shown}", label(Line::Answer));
+    if *as_8bit {
+        let _ = writeln!(out, "  {}", messages::read_as_8bit(lang));
+    }
     match &v.comparison {
         Some(cmp) => {
             let _ = writeln!(
@@ -231,6 +243,12 @@ pub fn text(c: &Checked, lang: Lang) -> String {
         label(Line::Tolerance),
         num(*tolerance),
         messages::per_channel(answer.scale, lang)
+    );
+    let _ = writeln!(
+        out,
+        "  {}{}",
+        label(Line::Credit),
+        messages::Credit::of(*credit, policy.as_deref()).text(lang)
     );
     if v.comparison
         .is_some_and(|c| c.within && c.against == super::Against::Unclamped)
@@ -344,6 +362,9 @@ pub struct AnswerOut {
     pub scale: Option<u32>,
     /// The three numbers read, on `scale`; `null` when the answer could not be checked.
     pub values: Option<[f64; 3]>,
+    /// Written without a scale, its numbers were read as 8-bit values (the course policy's
+    /// `eight_bit`).
+    pub read_as_8bit: bool,
 }
 
 /// `reading`: a reading of the problem the answer matches.
@@ -388,6 +409,11 @@ pub struct CheckOut {
     pub verdict: &'static str,
     /// Exit code 0: right, or a likely intended reading without --strict.
     pub accepted: bool,
+    /// The share of the exercise's points the verdict earns under the course policy (1, the
+    /// reading credit, or 0); `null` when the answer cannot be checked.
+    pub credit: Option<f64>,
+    /// The course policy's file; `null` for the default policy (or when nothing was checked).
+    pub policy: Option<String>,
     /// The verdict (or the error) as an English sentence.
     pub message: String,
     /// The colour the answer was compared with; `null` when there is none.
@@ -450,8 +476,11 @@ pub fn json(c: &Checked) -> CheckOut {
             source: c.source,
             scale: None,
             values: None,
+            read_as_8bit: false,
         },
         tolerance: None,
+        credit: None,
+        policy: None,
         verdict: "invalid",
         accepted: false,
         message: String::new(),
@@ -472,8 +501,14 @@ pub fn json(c: &Checked) -> CheckOut {
             answer,
             tolerance,
             verdict: v,
+            credit,
+            as_8bit,
+            policy,
         }) => {
             out.answer.scale = Some(scale_number(answer.scale));
+            out.answer.read_as_8bit = *as_8bit;
+            out.credit = Some(*credit);
+            out.policy = policy.as_ref().map(|p| p.display().to_string());
             out.answer.values = answer.values;
             out.tolerance = Some(*tolerance);
             out.verdict = verdict_code(v.kind);

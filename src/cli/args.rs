@@ -65,6 +65,11 @@ pub(crate) enum Command {
     /// Write problem files (or what `phong new` prints, `-` for standard input) as a Moodle XML
     /// quiz: one Cloze question per problem, the slips as 0 % answers, the solution as feedback.
     Moodle(MoodleArgs),
+    /// Print the course policy in force (tolerances, the reading's credit, 8-bit answers, the
+    /// words for "no hit", points, duplicates) as a policy file writes it: the folder's
+    /// course-policy.json over the defaults. `phong policy > exercises/course-policy.json`
+    /// starts one.
+    Policy(PolicyCmdArgs),
     /// Measure what each tracer setting (precision, level, minimum weight, samples) costs in
     /// time and buys in accuracy against a reference render; name the fastest within a budget.
     Tradeoff(TradeoffArgs),

@@ -83,16 +83,13 @@ crate::faults! {
             "{before}{why}", "{before}{why}";
             fix "one JSON object of names and values, such as {{\"cos_theta\": 0.98995}}",
                 "um objeto JSON de nomes e valores, como {{\"cos_theta\": 0.98995}}";
-        /// The rubric file cannot be read.
-        RubricUnreadable { error: SystemError } =>
-            "cannot read the file: {error}", "não é possível ler o arquivo: {error}";
-            fix "give a rubric file as the README's Grading section shows",
-                "dê um arquivo de rubrica como mostra a seção \"Grading\" do README";
-        /// The rubric file is not a rubric.
-        Rubric { why: Said } =>
+        /// The course policy (`--policy`, or the file beside the exercises) is refused.
+        Policy { why: Said } =>
             "{why}", "{why}";
-            fix "give a rubric file as the README's Grading section shows",
-                "dê um arquivo de rubrica como mostra a seção \"Grading\" do README";
+            fix "correct the file as docs/course-policy.md shows (`phong policy` prints the \
+                 policy in force, every field with its value)",
+                "corrija o arquivo como mostra docs/course-policy.md (`phong policy` imprime a \
+                 política em vigor, cada campo com seu valor)";
         /// `--points` refused.
         Points { why: Said } =>
             "{why}", "{why}";

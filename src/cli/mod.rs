@@ -58,6 +58,7 @@ pub(crate) fn run(cli: &Cli) -> Exit {
         Command::Grade(args) => commands::grade::run(args),
         Command::New(args) => commands::new::run(args),
         Command::Moodle(args) => commands::moodle::run(args),
+        Command::Policy(args) => commands::policy::run(args),
         #[cfg(feature = "serve")]
         Command::Serve(args) => commands::serve::run(args),
     };

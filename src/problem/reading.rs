@@ -16,8 +16,8 @@ messages! {
         ProblemFile => "a problem file", "um arquivo de problema";
         /// A mesh's OBJ file.
         Mesh => "a mesh", "uma malha";
-        /// `phong grade`'s rubric.
-        Rubric => "a rubric file", "um arquivo de rubrica";
+        /// The course policy (`course-policy.json`, `--policy`).
+        Policy => "a course policy", "uma política do curso";
         /// `phong grade`'s submissions.
         Submissions => "a submissions file", "um arquivo de respostas";
     }

@@ -18,6 +18,7 @@
 #![allow(clippy::result_large_err)]
 
 use std::path::Path;
+use std::sync::Arc;
 
 use axum::body::Bytes;
 use axum::extract::State;
@@ -146,12 +147,13 @@ async fn check(State(state): State<Shared>, headers: HeaderMap, body: Bytes) -> 
 fn checked(state: &Shared, headers: &HeaderMap, body: &Bytes) -> Result<Response, Response> {
     let request: CheckRequest<'_> = envelope(headers, body, Shape::Check)?;
     let lang = lang(request.lang.as_deref(), headers)?;
+    // No scale: the 0–1 scale, with 8-bit values read as the course policy says.
     let scale = match &request.scale {
-        None => check::Scale::Unit,
-        Some(ScaleField::Number(1)) => check::Scale::Unit,
-        Some(ScaleField::Number(255)) => check::Scale::Bits8,
-        Some(ScaleField::Text(t)) if t == "1" => check::Scale::Unit,
-        Some(ScaleField::Text(t)) if t == "255" => check::Scale::Bits8,
+        None => None,
+        Some(ScaleField::Number(1)) => Some(check::Scale::Unit),
+        Some(ScaleField::Number(255)) => Some(check::Scale::Bits8),
+        Some(ScaleField::Text(t)) if t == "1" => Some(check::Scale::Unit),
+        Some(ScaleField::Text(t)) if t == "255" => Some(check::Scale::Bits8),
         Some(_) => {
             return Err(error(
                 StatusCode::BAD_REQUEST,
@@ -188,11 +190,20 @@ fn checked(state: &Shared, headers: &HeaderMap, body: &Bytes) -> Result<Response
     if let Err(e) = problem.admit(state) {
         return Err(problem_error(&e, source.name(), lang));
     }
+    // The request's `tolerance` and `strict` go over the course policy, as the flags do.
+    let policy = if request.tolerance.is_some() || request.strict {
+        let mut p = (*state.policy).clone();
+        p.tolerance_forced = request.tolerance.or(p.tolerance_forced);
+        p.strict |= request.strict;
+        Arc::new(p)
+    } else {
+        state.policy.clone()
+    };
+    let strict = policy.strict;
     let options = check::CheckOptions {
         answer: request.answer.clone(),
         scale,
-        tolerance: request.tolerance,
-        strict: request.strict,
+        policy,
     };
     // One of the server's exercises was solved once, at start-up; a problem sent is solved now.
     let check_answer = || match problem {
@@ -203,7 +214,7 @@ fn checked(state: &Shared, headers: &HeaderMap, body: &Bytes) -> Result<Response
     let (answer, steps) = if steps.is_empty() {
         (Some(check_answer()), None)
     } else {
-        let judged = check::steps::check_steps_source(source, &steps, request.strict);
+        let judged = check::steps::check_steps_source(source, &steps, strict);
         let answer = options.answer.is_some().then(check_answer);
         (answer, Some(judged))
     };

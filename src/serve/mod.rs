@@ -45,6 +45,8 @@ pub(crate) struct Config {
     pub(crate) log_answers_max_kb: u64,
     /// What one request may ask.
     pub(crate) limits: Limits,
+    /// The course policy answers are judged by.
+    pub(crate) policy: Arc<crate::check::policy::Policy>,
 }
 
 /// What every request may read (never write: no state is kept between requests).
@@ -56,6 +58,8 @@ pub(crate) struct State {
     pub(crate) limits: Limits,
     /// Where checked answers are appended (`--log-answers`); `None`: none is kept.
     pub(crate) answers: Option<log::AnswerLog>,
+    /// The course policy answers are judged by.
+    pub(crate) policy: Arc<crate::check::policy::Policy>,
 }
 
 /// Shared by the handlers.
@@ -156,6 +160,7 @@ pub(crate) fn run(config: &Config) -> Result<(), StartError> {
         catalogue,
         limits: config.limits.clone(),
         answers,
+        policy: config.policy.clone(),
     });
     let runtime = tokio::runtime::Builder::new_multi_thread()
         .enable_all()

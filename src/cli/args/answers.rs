@@ -11,16 +11,21 @@ pub(crate) struct CheckArgs {
     /// three integers 0–255 with --scale 255. Only with one FILE.
     #[arg(long, value_name = "ANSWER", allow_hyphen_values = true)]
     pub(crate) answer: Option<String>,
-    /// The answer's scale: 1 (components on [0, 1]) or 255 (8-bit integers). "#RRGGBB" is 255.
-    #[arg(long, value_enum, default_value = "1")]
-    pub(crate) scale: check::Scale,
+    /// The answer's scale: 1 (components on [0, 1]) or 255 (8-bit integers). "#RRGGBB" is 255
+    /// [default: 1, but three whole numbers 0–255, one above 1, are read as 8-bit values
+    /// unless the course policy says "eight_bit": "hint"].
+    #[arg(long, value_enum)]
+    pub(crate) scale: Option<check::Scale>,
     /// The largest difference accepted per channel, on the answer's scale [default: the key's
-    /// own, else 0.005 on the 0–1 scale, 1 on the 255 scale].
+    /// own, else the course policy's: 0.005 on the 0–1 scale, 1 on the 255 scale].
     #[arg(long, value_name = "T", allow_hyphen_values = true, value_parser = parse_tolerance)]
     pub(crate) tolerance: Option<f64>,
-    /// Accept only the problem as written, not its likely intended reading.
+    /// Accept only the problem as written, not its likely intended reading (over the course
+    /// policy's "strict").
     #[arg(long)]
     pub(crate) strict: bool,
+    #[command(flatten)]
+    pub(crate) policy: PolicyArg,
     /// Check an intermediate step, NAME=VALUE (repeatable): cos_theta=0.98995, R=0.6,0,0.8,
     /// cos_theta[1]=0.5 for lights[1]. Names: t, P, N, V, I_a, ambient, L, d, falloff_factor,
     /// cos_psi, spot_factor, I_l, n_dot_l, cos_theta, diffuse, R, cos_phi, cos_phi_pow,
@@ -69,23 +74,24 @@ pub(crate) struct GradeArgs {
     #[arg(long, value_enum, default_value_t = GradeFormat::Csv)]
     pub(crate) format: GradeFormat,
     /// The scale of answers that are not "#RRGGBB" [default: 0–1, but a row of three whole
-    /// numbers 0–255, one above 1, is read as 8-bit, and its feedback says so].
+    /// numbers 0–255, one above 1, is read as 8-bit, and its feedback says so, unless the
+    /// course policy says "eight_bit": "hint"].
     #[arg(long, value_enum)]
     pub(crate) scale: Option<check::Scale>,
-    /// Points per exercise, e.g. 4.1=1,4.2=2 (over a --rubric file's) [default: 1 each].
+    /// Points per exercise, e.g. 4.1=1,4.2=2 (over the course policy's) [default: the
+    /// policy's, else 1 each].
     #[arg(long, value_name = "EX=P,...")]
     pub(crate) points: Option<String>,
-    /// A rubric file: {"points": {"4.1": 1, "4.2": 2}, "default": 1, "reading_credit": 0.5}.
-    #[arg(long, value_name = "PATH")]
-    pub(crate) rubric: Option<PathBuf>,
+    #[command(flatten)]
+    pub(crate) policy: PolicyArg,
     /// The share of an exercise's points an answer in its likely intended reading earns, 0 to 1
-    /// (over the rubric's) [default: 0.5; nothing under --strict].
+    /// (over the course policy's) [default: the policy's, else 0.5; nothing under --strict].
     #[arg(long, value_name = "SHARE", value_parser = parse_share)]
     pub(crate) reading_credit: Option<f64>,
     /// Which answer counts when a student answers an exercise more than once (the others stay
-    /// in the report with counted false).
-    #[arg(long, value_enum, default_value_t = check::rubric::Duplicates::Last)]
-    pub(crate) duplicates: check::rubric::Duplicates,
+    /// in the report with counted false) [default: the course policy's, else last].
+    #[arg(long, value_enum)]
+    pub(crate) duplicates: Option<check::policy::Duplicates>,
     /// Also write each student's total as CSV to this file (student, points, max_points, then
     /// one column per exercise).
     #[arg(long, value_name = "PATH")]
@@ -103,11 +109,12 @@ pub(crate) struct GradeArgs {
     /// exercise files of --exercises in name order].
     #[arg(long, value_name = "EX,...", value_delimiter = ',')]
     pub(crate) questions: Vec<String>,
-    /// The largest difference accepted per channel [default: each exercise key's own, else
-    /// 0.005 on the 0–1 scale, 1 on the 255 scale].
+    /// The largest difference accepted per channel [default: each exercise key's own, else the
+    /// course policy's: 0.005 on the 0–1 scale, 1 on the 255 scale].
     #[arg(long, value_name = "T", allow_hyphen_values = true, value_parser = parse_tolerance)]
     pub(crate) tolerance: Option<f64>,
-    /// Accept only the problem as written, not its likely intended reading.
+    /// Accept only the problem as written, not its likely intended reading (over the course
+    /// policy's "strict").
     #[arg(long)]
     pub(crate) strict: bool,
     /// Write the report to this file (atomically) instead of standard output.
@@ -124,4 +131,27 @@ pub(crate) enum GradeFormat {
     Json,
     Gradescope,
     Junit,
+}
+
+/// `--policy`: the course policy file, for every command that judges answers.
+#[derive(Debug, Args)]
+pub(crate) struct PolicyArg {
+    /// The course policy (JSON: tolerances, the reading's credit, 8-bit answers, the words for
+    /// "no hit", points; docs/course-policy.md) [default: course-policy.json in the exercises'
+    /// folder, else the defaults].
+    #[arg(long, value_name = "FILE", alias = "rubric")]
+    pub(crate) policy: Option<PathBuf>,
+}
+
+/// `phong policy`: the course policy in force.
+#[derive(Debug, Args)]
+pub(crate) struct PolicyCmdArgs {
+    /// The exercises' folder whose course-policy.json is read [default: the current folder].
+    #[arg(value_name = "DIR")]
+    pub(crate) folder: Option<PathBuf>,
+    #[command(flatten)]
+    pub(crate) policy: PolicyArg,
+    /// Write the policy to this file (atomically) instead of standard output.
+    #[arg(short, long, value_name = "PATH")]
+    pub(crate) output: Option<PathBuf>,
 }

@@ -40,6 +40,11 @@ pub(crate) struct MoodleArgs {
         default_value = "Cap. 4 - Modelos de Iluminação"
     )]
     pub(crate) category: String,
+    /// The course policy the quiz grades by (tolerances, the reading's credit, 8-bit answers,
+    /// the words for "no hit") [default: course-policy.json beside the first FILE, else the
+    /// defaults].
+    #[arg(long, value_name = "FILE")]
+    pub(crate) policy: Option<PathBuf>,
     /// Language of the questions, the feedback and the worked solutions.
     /// [default: the locale's language: pt where LC_ALL, LC_MESSAGES or LANG is pt_*, else en]
     #[arg(long, value_enum, default_value_t = Lang::from_locale(), hide_default_value = true)]

@@ -12,6 +12,10 @@ pub(crate) struct ServeArgs {
     /// bundled exercises.
     #[arg(long, value_name = "DIR")]
     pub(crate) exercises: Option<PathBuf>,
+    /// The course policy answers are judged by [default: course-policy.json in --exercises,
+    /// else the defaults].
+    #[arg(long, value_name = "FILE")]
+    pub(crate) policy: Option<PathBuf>,
     /// Append each checked answer to this file, one JSON line each (the answer's first 64
     /// characters, its length and its hash); without it, no answer is kept.
     #[arg(long, value_name = "PATH")]

@@ -31,15 +31,14 @@ pub(crate) fn run(args: &CheckArgs) -> Result<Exit, CliError> {
     if !steps.is_empty() {
         return with_steps(args, &steps);
     }
-    let options = check::CheckOptions {
-        answer: args.answer.clone(),
-        scale: args.scale,
-        tolerance: args.tolerance,
-        strict: args.strict,
-    };
     let mut exit = Exit::Success;
     let mut writer = args.format.writer(args.lang);
     for path in &args.files {
+        let options = check::CheckOptions {
+            answer: args.answer.clone(),
+            scale: args.scale,
+            policy: std::sync::Arc::new(policy_of(args, path)?),
+        };
         let c = check::check_file(path, &options);
         exit = exit.max(exit_of(c.status()));
         for w in &c.warnings {
@@ -57,6 +56,24 @@ pub(crate) fn run(args: &CheckArgs) -> Result<Exit, CliError> {
         output::emit(args.output.as_deref(), &out)?;
     }
     Ok(exit)
+}
+
+/// The course policy `path` is judged by (`--policy`, else the one beside it), with the flags
+/// over it.
+fn policy_of(args: &CheckArgs, path: &std::path::Path) -> Result<check::policy::Policy, CliError> {
+    let folder = path.parent().map(|p| {
+        if p.as_os_str().is_empty() {
+            std::path::Path::new(".")
+        } else {
+            p
+        }
+    });
+    let mut policy = super::course_policy(args.policy.policy.as_deref(), folder)?;
+    if args.tolerance.is_some() {
+        policy.tolerance_forced = args.tolerance;
+    }
+    policy.strict |= args.strict;
+    Ok(policy)
 }
 
 /// A check's exit: 0 accepted, 1 refused, 2 not checked.
@@ -135,20 +152,21 @@ fn step_usage(
 /// `phong check FILE --step …`: the steps judged (and the answer, when one is given too).
 fn with_steps(args: &CheckArgs, steps: &[check::steps::GivenStep]) -> Result<Exit, CliError> {
     let path = &args.files[0];
-    let checked = check::steps::check_steps(path, steps, args.strict);
+    let policy = policy_of(args, path)?;
+    let checked = check::steps::check_steps(path, steps, policy.strict);
     let mut exit = exit_of(checked.status());
     for w in &checked.warnings {
         let warning = crate::text::Message::text(w, args.lang);
         error::warn_in(path, &warning, args.lang);
     }
+    let policy = std::sync::Arc::new(policy);
     let answer = args.answer.as_ref().map(|_| {
         check::check_file(
             path,
             &check::CheckOptions {
                 answer: args.answer.clone(),
                 scale: args.scale,
-                tolerance: args.tolerance,
-                strict: args.strict,
+                policy: policy.clone(),
             },
         )
     });

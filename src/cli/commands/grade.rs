@@ -7,7 +7,7 @@ use crate::check;
 use crate::cli::args::{GradeArgs, GradeFormat};
 use crate::cli::error::{self, CliError};
 use crate::cli::exit::Exit;
-use crate::cli::faults::{CliFault, SystemError};
+use crate::cli::faults::CliFault;
 use crate::cli::output;
 use crate::text::Said;
 
@@ -25,8 +25,9 @@ pub(crate) fn run(args: &GradeArgs) -> Result<Exit, CliError> {
             fault: CliFault::ExercisesNotAFolder,
         });
     }
+    let mut policy = super::course_policy(args.policy.policy.as_deref(), Some(&args.exercises))?;
     let mut inputs: Vec<&Path> = vec![&args.submissions];
-    if let Some(r) = &args.rubric {
+    if let Some(r) = &policy.source {
         inputs.push(r);
     }
     // The exercise files are inputs too: `-o exercises/4.2.json` would replace one.
@@ -57,31 +58,9 @@ pub(crate) fn run(args: &GradeArgs) -> Result<Exit, CliError> {
             folder_exists(path)?;
         }
     }
-    let mut rubric = match &args.rubric {
-        None => check::rubric::Rubric::default(),
-        Some(path) => {
-            let flag = format!("--rubric {}", path.display());
-            let bytes = crate::problem::read_limited(path, 1 << 20, crate::problem::Input::Rubric)
-                .map_err(|e| {
-                    CliError::usage(
-                        &flag,
-                        CliFault::RubricUnreadable {
-                            error: SystemError::of(&e),
-                        },
-                    )
-                })?;
-            check::rubric::Rubric::read_json(&String::from_utf8_lossy(&bytes)).map_err(|why| {
-                CliError::usage(
-                    &flag,
-                    CliFault::Rubric {
-                        why: Said::new(why),
-                    },
-                )
-            })?
-        }
-    };
+    // The flags over the course policy.
     if let Some(p) = &args.points {
-        rubric.give_points(p).map_err(|why| {
+        policy.give_points(p).map_err(|why| {
             CliError::usage(
                 "--points",
                 CliFault::Points {
@@ -91,7 +70,7 @@ pub(crate) fn run(args: &GradeArgs) -> Result<Exit, CliError> {
         })?;
     }
     if let Some(c) = args.reading_credit {
-        rubric.reading_credit = check::rubric::credit(c).map_err(|why| {
+        policy.reading_credit = check::policy::credit(c).map_err(|why| {
             CliError::usage(
                 "--reading-credit",
                 CliFault::Credit {
@@ -100,15 +79,18 @@ pub(crate) fn run(args: &GradeArgs) -> Result<Exit, CliError> {
             )
         })?;
     }
+    if args.tolerance.is_some() {
+        policy.tolerance_forced = args.tolerance;
+    }
+    policy.strict |= args.strict;
+    if let Some(d) = args.duplicates {
+        policy.duplicates = d;
+    }
     let options = check::grade::Options {
         exercises: args.exercises.clone(),
-        scale: args.scale.unwrap_or(check::Scale::Unit),
-        tolerance: args.tolerance,
-        strict: args.strict,
+        scale: args.scale,
         delimiter: args.delimiter,
-        detect_scale: args.scale.is_none(),
-        rubric,
-        duplicates: args.duplicates,
+        policy,
         lang: args.lang,
         input: args.input,
         questions: args.questions.clone(),

@@ -8,6 +8,7 @@ pub(crate) mod export_pov;
 pub(crate) mod grade;
 pub(crate) mod moodle;
 pub(crate) mod new;
+pub(crate) mod policy;
 pub(crate) mod render;
 pub(crate) mod schema;
 #[cfg(feature = "serve")]
@@ -19,6 +20,29 @@ use super::args::{Switch, TraceSettings};
 use super::error::CliError;
 use super::faults::CliFault;
 use crate::problem::RenderOverrides;
+
+/// The course policy a judging command goes by: the file of `--policy`, else
+/// `course-policy.json` in `folder` (the exercises' folder) when there is one, else the
+/// defaults. A file that cannot be read or is not a policy stops the command (exit 2), naming it.
+pub(crate) fn course_policy(
+    flag: Option<&std::path::Path>,
+    folder: Option<&std::path::Path>,
+) -> Result<crate::check::policy::Policy, CliError> {
+    use crate::check::policy::{Policy, POLICY_FILE};
+    let path = match (flag, folder) {
+        (Some(file), _) => file.to_owned(),
+        (None, Some(dir)) if dir.join(POLICY_FILE).is_file() => dir.join(POLICY_FILE),
+        _ => return Ok(Policy::default()),
+    };
+    Policy::read_file(&path).map_err(|why| {
+        CliError::usage(
+            path.display().to_string(),
+            CliFault::Policy {
+                why: crate::text::Said::new(why),
+            },
+        )
+    })
+}
 
 /// The command line's tracer settings, to put over a scene's.
 fn overrides(s: &TraceSettings) -> RenderOverrides {

@@ -14,8 +14,10 @@ pub(crate) fn run(args: &ServeArgs) -> Result<Exit, CliError> {
         header_time: time,
         ..Default::default()
     };
+    let policy = super::course_policy(args.policy.as_deref(), args.exercises.as_deref())?;
     let config = Config {
         addr: args.addr,
+        policy: std::sync::Arc::new(policy),
         exercises: args.exercises.clone(),
         log_answers: args.log_answers.clone(),
         log_answers_max_kb: args.log_answers_max,

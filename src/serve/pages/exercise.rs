@@ -7,6 +7,9 @@
 //! form's box.
 
 use std::fmt::Write;
+use std::sync::Arc;
+
+use crate::check::policy::Policy;
 
 use axum::extract::{Path, State};
 use axum::http::{HeaderMap, StatusCode, Uri};
@@ -38,6 +41,8 @@ struct Input {
     solution: bool,
     /// The answer is in 8 bits (0–255), not on [0, 1].
     bits8: bool,
+    /// The course policy the server judges by (not a field of the form).
+    policy: Arc<Policy>,
 }
 
 impl Input {
@@ -56,13 +61,9 @@ impl Input {
             &ex.prepared,
             &CheckOptions {
                 answer: Some(answer.to_owned()),
-                scale: if self.bits8 {
-                    Scale::Bits8
-                } else {
-                    Scale::Unit
-                },
-                tolerance: None,
-                strict: false,
+                // Unticked: the 0–1 scale, 8-bit values read as the course policy says.
+                scale: self.bits8.then_some(Scale::Bits8),
+                policy: self.policy.clone(),
             },
         )
     }
@@ -88,6 +89,7 @@ pub(crate) async fn get(
     };
     let input = Input {
         solution: lang::query(&uri, "solution") == Some("1"),
+        policy: state.policy.clone(),
         ..Input::default()
     };
     let (status, main) = render(ex, lang, &input, false);
@@ -112,7 +114,10 @@ pub(crate) async fn post(
     let Some(ex) = state.catalogue.get(&id) else {
         return not_found(lang);
     };
-    let mut input = Input::default();
+    let mut input = Input {
+        policy: state.policy.clone(),
+        ..Input::default()
+    };
     let kept: Vec<(String, String)> = fields
         .iter()
         .filter(|(k, _)| k != "relang")

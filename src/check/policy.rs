@@ -1,0 +1,440 @@
+//! The course policy: how a course judges and credits answers, one value that `phong check`,
+//! `phong grade`, `phong serve` and `phong moodle` all judge by (docs/conventions.md, "The
+//! course policy").
+//!
+//! An instructor writes it once, as `course-policy.json` beside the exercises; every command
+//! that judges finds it there (or takes `--policy FILE`), and its flags (`--tolerance`,
+//! `--strict`, `--scale`, `--points`, `--reading-credit`, `--duplicates`) override it. Without
+//! a file, the defaults below hold. `phong policy` prints the policy in force.
+//!
+//! It decides:
+//! - the tolerance on each scale (0.005 on the 0–1 scale, 1 on the 255 scale); an exercise
+//!   key's own tolerance wins over it, a `--tolerance` flag over both;
+//! - whether the likely intended reading is accepted (`strict`), and the share of the points it
+//!   earns (`reading_credit`, half);
+//! - whether three whole numbers 0–255, one above 1, written without a scale, are read as
+//!   8-bit values (`eight_bit`: `read`) or judged on the 0–1 scale with a hint (`hint`);
+//! - the words that answer "the ray hits nothing" (`no_hit`);
+//! - the points of each exercise (`points`, `default_points`) and which of a student's answers
+//!   counts (`duplicates`).
+//!
+//! A verdict's credit comes from [`Policy::credit`] alone, whichever command shows it.
+
+use std::collections::BTreeMap;
+use std::path::{Path, PathBuf};
+
+use super::answer::{self, Answer, BadAnswer, Scale};
+use super::VerdictKind;
+
+/// The policy file's name, looked for in the exercises' folder.
+pub const POLICY_FILE: &str = "course-policy.json";
+
+/// The share of an exercise's points that an answer matching its likely intended reading earns
+/// by default: half (the arithmetic is right, the reading of the statement is not).
+pub const DEFAULT_READING_CREDIT: f64 = 0.5;
+
+/// How answers written without a scale whose numbers look like 8-bit values are judged.
+#[derive(
+    Clone, Copy, Debug, Default, PartialEq, Eq, serde::Serialize, serde::Deserialize, clap::ValueEnum,
+)]
+#[serde(rename_all = "lowercase")]
+pub enum EightBit {
+    /// Three whole numbers 0–255, one of them above 1, are read on the 255 scale, and the
+    /// feedback says so: the default.
+    #[default]
+    Read,
+    /// They are judged on the 0–1 scale (wrong), with a hint to write them on the 255 scale.
+    Hint,
+}
+
+/// How a course judges and credits answers (the module's notes).
+#[derive(Clone, Debug, PartialEq)]
+pub struct Policy {
+    /// The tolerance per channel on the 0–1 scale.
+    pub tolerance_unit: f64,
+    /// The tolerance per channel on the 255 scale.
+    pub tolerance_bits8: f64,
+    /// `--tolerance`: one tolerance for every answer, over the exercise keys' own.
+    pub tolerance_forced: Option<f64>,
+    /// Only the problem as written is right: a likely intended reading is refused.
+    pub strict: bool,
+    /// The share of the points a likely intended reading earns, 0 to 1.
+    pub reading_credit: f64,
+    /// Whether answers that look like 8-bit values are read as such.
+    pub eight_bit: EightBit,
+    /// The words (folded: lower case, no accents, single spaces) that answer "no hit".
+    pub no_hit: Vec<String>,
+    /// Points per exercise, by name without `.json`.
+    pub points: BTreeMap<String, f64>,
+    /// The points of an exercise `points` does not name.
+    pub default_points: f64,
+    /// Which answer counts when a student answers an exercise more than once.
+    pub duplicates: Duplicates,
+    /// The file it was read from; `None` for the defaults.
+    pub source: Option<PathBuf>,
+}
+
+impl Default for Policy {
+    fn default() -> Self {
+        Policy {
+            tolerance_unit: Scale::Unit.default_tolerance(),
+            tolerance_bits8: Scale::Bits8.default_tolerance(),
+            tolerance_forced: None,
+            strict: false,
+            reading_credit: DEFAULT_READING_CREDIT,
+            eight_bit: EightBit::Read,
+            no_hit: answer::NO_HIT_WORDS.iter().map(|w| (*w).to_owned()).collect(),
+            points: BTreeMap::new(),
+            default_points: 1.0,
+            duplicates: Duplicates::Last,
+            source: None,
+        }
+    }
+}
+
+/// An answer read as the course reads it ([`Policy::read`]).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Read {
+    /// The answer.
+    pub answer: Answer,
+    /// Its numbers were written without a scale and read as 8-bit values.
+    pub as_8bit: bool,
+}
+
+/// Three whole numbers 0–255, one of them above 1: 8-bit values rather than a 0–1 colour.
+pub(crate) fn looks_8bit(v: &[f64; 3]) -> bool {
+    v.iter()
+        .all(|x| x.fract() == 0.0 && (0.0..=255.0).contains(x))
+        && v.iter().any(|&x| x > 1.0)
+}
+
+impl Policy {
+    /// Reads an answer: on `scale` when one is given; else on the 0–1 scale, but, when the
+    /// policy reads them, three whole numbers 0–255 (one above 1) on the 255 scale.
+    pub fn read(&self, text: &str, scale: Option<Scale>) -> Result<Read, BadAnswer> {
+        let given = scale.unwrap_or(Scale::Unit);
+        let a = answer::parse_with(text, given, &self.no_hit)?;
+        if scale.is_none()
+            && self.eight_bit == EightBit::Read
+            && a.values.is_some_and(|v| looks_8bit(&v))
+        {
+            if let Ok(b) = answer::parse_with(text, Scale::Bits8, &self.no_hit) {
+                return Ok(Read {
+                    answer: b,
+                    as_8bit: true,
+                });
+            }
+        }
+        Ok(Read {
+            answer: a,
+            as_8bit: false,
+        })
+    }
+
+    /// The tolerance an answer on `scale` is judged under: `--tolerance`, else the exercise
+    /// key's own (`key`, on that scale), else the policy's for the scale.
+    pub fn tolerance(&self, scale: Scale, key: Option<f64>) -> f64 {
+        self.tolerance_forced.or(key).unwrap_or(match scale {
+            Scale::Unit => self.tolerance_unit,
+            Scale::Bits8 => self.tolerance_bits8,
+        })
+    }
+
+    /// The share of an exercise's points a verdict earns: all for `right`, the reading credit
+    /// for `reading` (nothing under `strict`), nothing for `wrong`.
+    pub fn credit(&self, kind: VerdictKind) -> f64 {
+        match kind {
+            VerdictKind::Right => 1.0,
+            VerdictKind::Reading if !self.strict => self.reading_credit,
+            _ => 0.0,
+        }
+    }
+
+    /// The points of `exercise` (with or without `.json`).
+    pub fn points_of(&self, exercise: &str) -> f64 {
+        let key = exercise.strip_suffix(".json").unwrap_or(exercise);
+        self.points.get(key).copied().unwrap_or(self.default_points)
+    }
+
+    /// The policy of the exercises in `folder`: its `course-policy.json` when there is one,
+    /// else the defaults.
+    pub fn of_folder(folder: &Path) -> Result<Policy, PolicyError> {
+        let path = folder.join(POLICY_FILE);
+        if path.is_file() {
+            Policy::read_file(&path)
+        } else {
+            Ok(Policy::default())
+        }
+    }
+
+    /// Reads a policy file (an error says what is wrong in it; the caller names the file).
+    pub fn read_file(path: &Path) -> Result<Policy, PolicyError> {
+        let bytes = crate::problem::read_limited(path, 1 << 20, crate::problem::Input::Policy)
+            .map_err(|error| PolicyError::Unreadable {
+                error: crate::text::IoCause::of(&error),
+            })?;
+        let text = String::from_utf8_lossy(&bytes);
+        let mut policy = Policy::read_json(&text)?;
+        policy.source = Some(path.to_owned());
+        Ok(policy)
+    }
+
+    /// Reads a policy file's text (every field optional; a rubric file of earlier versions,
+    /// `{"points": …, "default": …, "reading_credit": …}`, is one).
+    pub fn read_json(text: &str) -> Result<Policy, PolicyError> {
+        let file: PolicyFile = serde_json::from_str(text).map_err(|e| PolicyError::NotAPolicy {
+            error: crate::problem::JsonError::of(&e),
+        })?;
+        let mut policy = Policy::default();
+        for (name, p) in file.points {
+            let p = points_of(Some(&name), p)?;
+            policy
+                .points
+                .insert(name.strip_suffix(".json").unwrap_or(&name).to_owned(), p);
+        }
+        if let Some(d) = file.default_points {
+            policy.default_points = points_of(None, d)?;
+        }
+        if let Some(c) = file.reading_credit {
+            policy.reading_credit = credit(c)?;
+        }
+        if let Some(s) = file.strict {
+            policy.strict = s;
+        }
+        if let Some(t) = file.tolerance {
+            for (scale, value, into) in [
+                ("1", t.unit, &mut policy.tolerance_unit),
+                ("255", t.bits8, &mut policy.tolerance_bits8),
+            ] {
+                if let Some(v) = value {
+                    if !(v.is_finite() && v >= 0.0) {
+                        return Err(PolicyError::BadTolerance {
+                            scale: scale.to_owned(),
+                            tolerance: v.to_string(),
+                        });
+                    }
+                    *into = v;
+                }
+            }
+        }
+        if let Some(e) = file.eight_bit {
+            policy.eight_bit = e;
+        }
+        if let Some(words) = file.no_hit {
+            let folded: Vec<String> = words
+                .iter()
+                .map(|w| answer::fold(w))
+                .filter(|w| !w.is_empty())
+                .collect();
+            if folded.is_empty() {
+                return Err(PolicyError::NoHitEmpty);
+            }
+            policy.no_hit = folded;
+        }
+        if let Some(d) = file.duplicates {
+            policy.duplicates = d;
+        }
+        Ok(policy)
+    }
+
+    /// The policy as a policy file writes it (`phong policy`): every field, so an instructor
+    /// can start from it.
+    pub fn to_json(&self) -> serde_json::Value {
+        serde_json::json!({
+            "tolerance": {"1": self.tolerance_unit, "255": self.tolerance_bits8},
+            "strict": self.strict,
+            "reading_credit": self.reading_credit,
+            "eight_bit": self.eight_bit,
+            "no_hit": self.no_hit,
+            "points": self.points,
+            "default_points": self.default_points,
+            "duplicates": self.duplicates,
+        })
+    }
+
+    /// Adds `--points 4.1=1,4.2=2` (over a rubric file's points). A decimal comma is read as one
+    /// (`4.1=0,5,4.2=2` gives 4.1 half a point): the comma separates the items, but a fragment of
+    /// digits alone right after a whole number of points, with no space, can only be its
+    /// decimals. An error names the item as written, with its decimals.
+    pub fn give_points(&mut self, spec: &str) -> Result<(), PolicyError> {
+        let fragments: Vec<&str> = spec.split(',').collect();
+        let digits = |d: &str| !d.is_empty() && d.bytes().all(|b| b.is_ascii_digit());
+        let mut i = 0;
+        while i < fragments.len() {
+            let raw = fragments[i];
+            i += 1;
+            let item = raw.trim();
+            if item.is_empty() {
+                continue;
+            }
+            let Some((name, value)) = item.split_once('=') else {
+                let written = match i.checked_sub(2).map(|k| fragments[k].trim()) {
+                    Some(previous) if !previous.is_empty() => format!("{previous},{item}"),
+                    _ => item.to_owned(),
+                };
+                return Err(PolicyError::NotExercisePoints { item: written });
+            };
+            let mut value = value.trim().to_owned();
+            let mut written = item.to_owned();
+            if let Some(next) = fragments.get(i).filter(|n| digits(n)) {
+                if digits(&value) && raw.ends_with(|c: char| c.is_ascii_digit()) {
+                    value = format!("{value}.{next}");
+                    written = format!("{item},{next}");
+                    i += 1;
+                }
+            }
+            let name = name.trim();
+            let value: f64 = value
+                .parse()
+                .map_err(|_| PolicyError::PointsNotANumber { item: written })?;
+            let p = points_of(Some(name), value)?;
+            self.points
+                .insert(name.strip_suffix(".json").unwrap_or(name).to_owned(), p);
+        }
+        Ok(())
+    }
+}
+
+/// A policy file, every field optional.
+#[derive(serde::Deserialize)]
+#[serde(deny_unknown_fields)]
+struct PolicyFile {
+    #[serde(default)]
+    points: BTreeMap<String, f64>,
+    #[serde(alias = "default")]
+    default_points: Option<f64>,
+    reading_credit: Option<f64>,
+    strict: Option<bool>,
+    tolerance: Option<TolerancesFile>,
+    eight_bit: Option<EightBit>,
+    no_hit: Option<Vec<String>>,
+    duplicates: Option<Duplicates>,
+    /// Free text for the instructor (JSON has no comments); not read.
+    #[serde(default, rename = "comment")]
+    _comment: serde::de::IgnoredAny,
+}
+
+/// `"tolerance": {"1": 0.005, "255": 1}`.
+#[derive(serde::Deserialize)]
+#[serde(deny_unknown_fields)]
+struct TolerancesFile {
+    #[serde(rename = "1")]
+    unit: Option<f64>,
+    #[serde(rename = "255")]
+    bits8: Option<f64>,
+}
+
+crate::messages! {
+    /// Why a course policy (a file, or a flag over it) is refused.
+    #[allow(missing_docs)]
+    pub enum PolicyError {
+        /// An exercise's points that are not a number 0 or more (`points`: as Rust writes it).
+        BadPoints { exercise: String, points: String } =>
+            "points: the points of {exercise} ({points}) must be a number 0 or more",
+            "points: os pontos de {exercise} ({points}) devem ser um número 0 ou mais";
+        /// The points of the exercises the policy does not name, likewise.
+        BadDefault { points: String } =>
+            "default_points: the points of an exercise the policy does not name ({points}) must \
+             be a number 0 or more",
+            "default_points: os pontos de um exercício que a política não nomeia ({points}) \
+             devem ser um número 0 ou mais";
+        /// A reading credit outside 0 to 1.
+        BadCredit { credit: String } =>
+            "reading_credit: the reading credit is {credit}: it is a share of the points, 0 to 1 \
+             (0.5 for half)",
+            "reading_credit: o crédito da leitura é {credit}: é uma fração dos pontos, de 0 a 1 \
+             (0.5 para metade)";
+        /// A tolerance that is not a number 0 or more.
+        BadTolerance { scale: String, tolerance: String } =>
+            "tolerance.{scale}: the tolerance on the {scale} scale is {tolerance}: it must be a \
+             number 0 or more (0.005 on the 1 scale, 1 on the 255 scale by default)",
+            "tolerance.{scale}: a tolerância na escala {scale} é {tolerance}: deve ser um número \
+             0 ou mais (0.005 na escala 1, 1 na escala 255 por padrão)";
+        /// `no_hit` without a word.
+        NoHitEmpty =>
+            "no_hit: the list of words that answer \"no hit\" is empty: give at least one, such \
+             as [\"none\", \"nenhuma\"]",
+            "no_hit: a lista de palavras que respondem \"nenhuma interseção\" está vazia: dê ao \
+             menos uma, como [\"none\", \"nenhuma\"]";
+        /// A text that is not a policy's JSON (`error`: the JSON parser's words).
+        NotAPolicy { error: crate::problem::JsonError } =>
+            "{error} (a course policy is an object such as {{\"tolerance\": {{\"1\": 0.005, \
+             \"255\": 1}}, \"reading_credit\": 0.5, \"points\": {{\"4.1\": 1}}}}, every field \
+             optional; `phong policy` prints one)",
+            "{error} (uma política do curso é um objeto como {{\"tolerance\": {{\"1\": 0.005, \
+             \"255\": 1}}, \"reading_credit\": 0.5, \"points\": {{\"4.1\": 1}}}}, todos os \
+             campos opcionais; `phong policy` imprime uma)";
+        /// A policy file that cannot be read.
+        Unreadable { error: crate::text::IoCause } =>
+            "cannot read the course policy: {error}",
+            "não é possível ler a política do curso: {error}";
+        /// An item of `--points` without `=`.
+        NotExercisePoints { item: String } =>
+            "\"{item}\" is not EXERCISE=POINTS",
+            "\"{item}\" não é EXERCÍCIO=PONTOS";
+        /// An item of `--points` whose points are not a number.
+        PointsNotANumber { item: String } =>
+            "\"{item}\": the points are not a number",
+            "\"{item}\": os pontos não são um número";
+    }
+}
+
+impl std::fmt::Display for PolicyError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(&crate::text::Message::text(self, crate::text::Lang::En))
+    }
+}
+
+/// Points must be finite and at least 0.
+fn points_of(name: Option<&str>, p: f64) -> Result<f64, PolicyError> {
+    if p.is_finite() && p >= 0.0 {
+        Ok(p)
+    } else {
+        let points = p.to_string();
+        Err(match name {
+            Some(exercise) => PolicyError::BadPoints {
+                exercise: exercise.to_owned(),
+                points,
+            },
+            None => PolicyError::BadDefault { points },
+        })
+    }
+}
+
+/// A share of the points: 0 to 1.
+pub fn credit(c: f64) -> Result<f64, PolicyError> {
+    if (0.0..=1.0).contains(&c) {
+        Ok(c)
+    } else {
+        Err(PolicyError::BadCredit {
+            credit: c.to_string(),
+        })
+    }
+}
+
+/// Which of a student's answers to one exercise counts when there are several.
+#[derive(
+    Clone, Copy, Debug, Default, PartialEq, Eq, clap::ValueEnum, serde::Serialize, serde::Deserialize,
+)]
+#[serde(rename_all = "lowercase")]
+pub enum Duplicates {
+    /// The first in the file.
+    First,
+    /// The last in the file (a later answer replaces an earlier one): the default.
+    #[default]
+    Last,
+    /// The one with the most points (the first of those on a tie).
+    Best,
+}
+
+impl Duplicates {
+    /// The flag's value, as written.
+    pub fn word(self) -> &'static str {
+        match self {
+            Duplicates::First => "first",
+            Duplicates::Last => "last",
+            Duplicates::Best => "best",
+        }
+    }
+}
+

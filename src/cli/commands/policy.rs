@@ -1,0 +1,19 @@
+//! `phong policy`: the course policy in force for a folder of exercises (its
+//! `course-policy.json` over the defaults, or `--policy FILE`), written as a policy file writes
+//! it, every field with its value.
+
+use crate::cli::args::PolicyCmdArgs;
+use crate::cli::error::CliError;
+use crate::cli::exit::Exit;
+use crate::cli::output;
+
+pub(crate) fn run(args: &PolicyCmdArgs) -> Result<Exit, CliError> {
+    let folder = args
+        .folder
+        .clone()
+        .unwrap_or_else(|| std::path::PathBuf::from("."));
+    let policy = super::course_policy(args.policy.policy.as_deref(), Some(&folder))?;
+    let text = crate::report::json::pretty(&policy.to_json());
+    output::emit(args.output.as_deref(), &text)?;
+    Ok(Exit::Success)
+}
