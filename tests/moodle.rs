@@ -17,7 +17,7 @@ const GRADES: [f64; 21] = [
     20.0, 16.66667, 14.28571, 12.5, 11.11111, 10.0, 5.0, 0.0,
 ];
 
-const TYPES: [&str; 12] = [
+const TYPES: [&str; 18] = [
     "NUMERICAL",
     "NM",
     "MULTICHOICE",
@@ -26,6 +26,12 @@ const TYPES: [&str; 12] = [
     "MCV",
     "MULTICHOICE_H",
     "MCH",
+    "MULTICHOICE_S",
+    "MCS",
+    "MULTICHOICE_VS",
+    "MCVS",
+    "MULTICHOICE_HS",
+    "MCHS",
     "SHORTANSWER",
     "SA",
     "SHORTANSWER_C",
@@ -408,21 +414,28 @@ fn every_bundled_exercise_makes_a_well_formed_valid_quiz_in_both_languages() {
             exercises().len()
         );
         // Colour problems: three NUMERICAL parts of weight 1 with absolute tolerances; the
-        // no-hit problem (4.3 as written): one SHORTANSWER part.
+        // no-hit problem (4.3 as written): one MULTICHOICE_VS part whose full-credit choice is
+        // the language's word for "no hit" and whose half-credit choice is a colour (the
+        // likely intended reading), so that either earns what `phong check` gives it.
+        let none = if lang == "pt" { "nenhuma" } else { "none" };
         for subs in &questions {
             match subs.len() {
                 3 => assert!(subs.iter().all(|s| s.kind == "NUMERICAL"
                     && s.alts.last().unwrap().answer == "*"
                     && s.alts[0].tolerance == Some(0.005))),
                 1 => {
-                    assert_eq!(subs[0].kind, "SHORTANSWER");
-                    let right: Vec<&str> = subs[0]
-                        .alts
-                        .iter()
-                        .filter(|a| a.fraction == 100.0)
-                        .map(|a| a.answer.as_str())
-                        .collect();
-                    assert!(right.contains(&"nenhuma") && right.contains(&"none"));
+                    assert_eq!(subs[0].kind, "MULTICHOICE_VS");
+                    let at = |f: f64| -> Vec<&str> {
+                        subs[0]
+                            .alts
+                            .iter()
+                            .filter(|a| a.fraction == f)
+                            .map(|a| a.answer.as_str())
+                            .collect()
+                    };
+                    assert_eq!(at(100.0), [none]);
+                    assert_eq!(at(50.0), ["(0.524, 0.027, 0)"]);
+                    assert!(at(0.0).contains(&"(0, 0, 0)"), "{:?}", at(0.0));
                 }
                 n => panic!("{n} sub-questions"),
             }
@@ -478,14 +491,30 @@ fn check(file: &Path, answer: [f64; 3]) -> Value {
     serde_json::from_slice(&out.stdout).unwrap()
 }
 
-/// Each channel's first alternative after the first at `fraction`, else `fallback`'s.
+/// Each channel's first alternative after the first at `fraction` on the 0–1 scale (its
+/// tolerance the right answer's), else `fallback`'s.
 fn alternative_colour(subs: &[Sub], fraction: f64, fallback: [f64; 3]) -> [f64; 3] {
     [0, 1, 2].map(|c| {
         subs[c].alts[1..]
             .iter()
-            .find(|a| a.fraction == fraction)
+            .find(|a| a.fraction == fraction && a.tolerance == subs[c].alts[0].tolerance)
             .map_or(fallback[c], |a| a.answer.parse().unwrap())
     })
+}
+
+/// Each channel's alternative at `fraction` on the 255 scale (tolerance 1), rounded to the
+/// whole number a student would type (within 0.5 of it, so within the tolerance); `None` when
+/// a channel has none.
+fn alternative_8bit(subs: &[Sub], fraction: f64) -> Option<[f64; 3]> {
+    let mut out = [0.0; 3];
+    for (c, o) in out.iter_mut().enumerate() {
+        let a = subs[c]
+            .alts
+            .iter()
+            .find(|a| a.fraction == fraction && a.tolerance == Some(1.0))?;
+        *o = a.answer.parse::<f64>().unwrap().round();
+    }
+    Some(out)
 }
 
 fn right_value(sub: &Sub) -> f64 {
@@ -524,19 +553,22 @@ fn every_answer_option_round_trips_through_phong_check() {
     let mut slips_seen = 0;
     for (file, subs) in files.iter().zip(&questions) {
         if subs.len() != 3 {
-            let v = phong()
-                .args([
-                    "check",
-                    "--format",
-                    "json",
-                    "--answer",
-                    &subs[0].alts[0].answer,
-                ])
-                .arg(file)
-                .output()
-                .unwrap();
-            let v: Value = serde_json::from_slice(&v.stdout).unwrap();
-            assert_eq!(v["verdict"], "right", "{}", file.display());
+            // The no-hit choices: "none" right, the reading's colour a reading, every other
+            // colour wrong, as Moodle's Responses export writes the choice.
+            for a in &subs[0].alts {
+                let v = phong()
+                    .args(["check", "--format", "json", "--answer", &a.answer])
+                    .arg(file)
+                    .output()
+                    .unwrap();
+                let v: Value = serde_json::from_slice(&v.stdout).unwrap();
+                let verdict = match a.fraction {
+                    100.0 => "right",
+                    50.0 => "reading",
+                    _ => "wrong",
+                };
+                assert_eq!(v["verdict"], verdict, "{}: {}", file.display(), a.answer);
+            }
             continue;
         }
         let right = [0, 1, 2].map(|c| right_value(&subs[c]));
@@ -548,6 +580,17 @@ fn every_answer_option_round_trips_through_phong_check() {
             if colour != right {
                 let v = check(file, colour);
                 assert_eq!(v["verdict"], verdict, "{}", file.display());
+            }
+        }
+        // The same on the 255 scale: the whole numbers a student types, read as 8-bit values.
+        for (fraction, verdict) in [(100.0, "right"), (50.0, "reading")] {
+            if let Some(colour) = alternative_8bit(subs, fraction) {
+                let v = check(file, colour);
+                assert_eq!(v["verdict"], verdict, "{}: {colour:?}", file.display());
+                // Three whole numbers are read as 8-bit values when one is above 1 (else they
+                // are a 0–1 colour, and the same one: 0 and 1 are 0 and 1/255 apart).
+                let as_8bit = colour.iter().any(|&x| x > 1.0);
+                assert_eq!(v["answer"]["read_as_8bit"], as_8bit, "{}", file.display());
             }
         }
         let reading = alternative_colour(subs, 50.0, right);
@@ -701,11 +744,25 @@ fn no_two_alternatives_of_a_part_lie_within_its_tolerance() {
         for (i, subs) in questions.iter().enumerate() {
             for sub in subs.iter().filter(|s| s.kind == "NUMERICAL") {
                 parts += 1;
-                let alts = numbers(sub);
-                let tolerance = alts[0].1;
-                for (j, &(a, ta, fa)) in alts.iter().enumerate() {
+                // The 0–1 scale's alternatives (the right answer's tolerance), then the 255
+                // scale's (tolerance 1, after them all): apart within each scale. A number a
+                // 0–1 alternative takes is judged on the 0–1 scale first, as `phong check` reads
+                // three numbers that are not all whole on the 0–1 scale.
+                let all = numbers(sub);
+                let tolerance = all[0].1;
+                let (alts, bits8): (Vec<_>, Vec<_>) =
+                    all.iter().partition(|&&(_, t, _)| t == tolerance);
+                assert!(bits8.iter().all(|&&(_, t, _)| t == 1.0), "{kind}");
+                let first8 = all.iter().position(|&(_, t, _)| t != tolerance);
+                assert!(first8.is_none_or(|f| f == alts.len()), "{kind}: 8-bit last");
+                for (j, &&(a, _, fa)) in bits8.iter().enumerate() {
+                    for &&(b, _, fb) in &bits8[j + 1..] {
+                        assert!((a - b).abs() > 1.0, "{kind} seed {}: {fa} / {fb}", i + 1);
+                    }
+                }
+                for (j, &&(a, ta, fa)) in alts.iter().enumerate() {
                     assert_eq!(ta, tolerance, "{kind} seed {}: one tolerance", i + 1);
-                    for &(b, _, fb) in &alts[j + 1..] {
+                    for &&(b, _, fb) in &alts[j + 1..] {
                         let reach = tolerance + 1e-14 * a.abs().max(b.abs()).max(1.0);
                         assert!(
                             (a - b).abs() > reach,

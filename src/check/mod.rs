@@ -192,6 +192,21 @@ impl Expected {
         })
     }
 
+    /// The slips that are the problem's likely intended reading (L reversed in 4.2, the hit
+    /// behind the origin in 4.3): made with one other slip, they are that one slip, made in the
+    /// intended reading.
+    pub(crate) fn intended_slips(&self) -> Vec<Slip> {
+        self.readings
+            .iter()
+            .filter(|r| r.likely_intended)
+            .filter_map(|r| match r.code {
+                ReadingCode::LightReversed => Some(Slip::LightReversed),
+                ReadingCode::LineBehindOrigin => Some(Slip::HitBehindOrigin),
+                ReadingCode::NormalReversed => None,
+            })
+            .collect()
+    }
+
     /// The colour an answer is measured against: the problem as written, or, when it has none,
     /// its likely intended reading.
     pub(crate) fn reference(&self) -> Option<Reference> {
@@ -357,16 +372,7 @@ pub(crate) fn judge(expected: &Expected, answer: &Answer, tolerance: f64, strict
     // A slip that is the likely intended reading of the problem (L reversed in 4.2, the hit
     // behind the origin in 4.3) does not count as a second slip: a pair made of it and one
     // slip is the one slip, made in the intended reading.
-    let intended: Vec<Slip> = expected
-        .readings
-        .iter()
-        .filter(|r| r.likely_intended)
-        .filter_map(|r| match r.code {
-            ReadingCode::LightReversed => Some(Slip::LightReversed),
-            ReadingCode::LineBehindOrigin => Some(Slip::HitBehindOrigin),
-            ReadingCode::NormalReversed => None,
-        })
-        .collect();
+    let intended = expected.intended_slips();
     let level = |o: &&Outcome| {
         let free = o.slips.iter().filter(|s| intended.contains(s)).count();
         o.slips.len() - free.min(o.slips.len() - 1)

@@ -46,18 +46,65 @@ use crate::report::explain::{latex_math, nest, runs, Explanation, Node, Run, Sha
 use crate::report::html::{data_table, esc, STYLE};
 use crate::text::lang::Lang;
 
-/// The tolerance of a channel when the key gives none (the 0–1 scale's default).
-pub(crate) const DEFAULT_TOLERANCE: f64 = 0.005;
-
 /// One problem of a set: its label (file, or file and index), the validated problem and the
-/// tolerance of its key on the 0–1 scale.
+/// tolerances its answers are judged under, as the course policy gives them.
 pub(crate) struct Entry {
     /// Where it came from, for the explanation's source line ("4.2.json", "-[3]").
     pub label: String,
     /// The validated problem.
     pub problem: Problem<f64>,
-    /// The absolute tolerance per channel.
+    /// The absolute tolerance per channel on the 0–1 scale.
     pub tolerance: f64,
+    /// The absolute tolerance per channel on the 255 scale.
+    pub tolerance_bits8: f64,
+}
+
+/// How the course policy grades the quiz's answers ([`Grading::of`]).
+pub(crate) struct Grading {
+    /// The fraction of a likely intended reading, as a Cloze alternative writes it (`%50%`).
+    pub reading: String,
+    /// Each part also accepts its numbers on the 255 scale (the policy's `eight_bit: read`).
+    pub eight_bit: bool,
+    /// The choice that answers "the ray meets nothing": the language's word ("none",
+    /// "nenhuma") when the course accepts it, else the course's first word.
+    pub none: String,
+}
+
+/// The fractions Moodle's importer accepts, in percent (`question/format.php`'s grade list,
+/// as the course's platform notes give it): any other is an import error.
+const MOODLE_GRADES: [f64; 21] = [
+    100.0, 90.0, 83.33333, 80.0, 75.0, 70.0, 66.66667, 60.0, 50.0, 40.0, 33.33333, 30.0, 25.0,
+    20.0, 16.66667, 14.28571, 12.5, 11.11111, 10.0, 5.0, 0.0,
+];
+
+impl Grading {
+    /// The quiz's grading under `policy`; `Err` with the share when its reading credit is not
+    /// one of Moodle's fractions (1/3 is: 33.33333 %).
+    pub(crate) fn of(policy: &crate::check::policy::Policy, lang: Lang) -> Result<Grading, f64> {
+        use crate::check::VerdictKind;
+        let share = policy.credit(VerdictKind::Reading);
+        let percent = share * 100.0;
+        let grade = MOODLE_GRADES
+            .iter()
+            .find(|g| (*g - percent).abs() < 1e-4)
+            .ok_or(share)?;
+        Ok(Grading {
+            reading: if *grade == 100.0 {
+                "=".to_owned()
+            } else {
+                format!("%{}%", number(*grade))
+            },
+            eight_bit: policy.eight_bit == crate::check::policy::EightBit::Read,
+            none: {
+                let word = words(lang).none;
+                if crate::check::answer::is_no_hit_in(word, &policy.no_hit) {
+                    word.to_owned()
+                } else {
+                    policy.no_hit.first().cloned().unwrap_or_else(|| word.into())
+                }
+            },
+        })
+    }
 }
 
 /// A problem set: one category of the question bank.
@@ -73,24 +120,28 @@ fn words(lang: Lang) -> Words {
     match lang {
         Lang::En => Words {
             right: "Right.",
+            right_8bit: "Right (read as 8-bit values, 0–255).",
+            as_8bit: "read as 8-bit values, 0–255",
             unclamped: "Right: this is the value before the clamp to [0, 1] (Eq. 4.16); the colour shown is clamped.",
             reading: "Partly right: this is the likely intended reading",
             slip: "Likely slip:",
             other: "Wrong: compare with the worked solution.",
-            no_hit_question: "Colour of the point the ray meets (write \u{201c}none\u{201d} if it meets nothing):",
+            no_hit_question: "Choose the colour of the point the ray meets, or \u{201c}{none}\u{201d} if it meets nothing:",
             no_hit_right: "Right: as written, the ray meets nothing.",
-            no_hit_wrong: "Wrong: as written, the ray meets no surface in front of its origin.",
+            none: "none",
             solution: "Worked solution",
         },
         Lang::Pt => Words {
             right: "Correto.",
+            right_8bit: "Correto (lido como valores de 8 bits, 0–255).",
+            as_8bit: "lido como valores de 8 bits, 0–255",
             unclamped: "Correto: este é o valor antes do corte em [0, 1] (Eq. 4.16); a cor exibida é cortada.",
             reading: "Parcialmente correto: esta é a leitura provavelmente pretendida",
             slip: "Erro provável:",
             other: "Incorreto: compare com a solução comentada.",
-            no_hit_question: "Cor do ponto atingido pelo raio (escreva \u{201c}nenhuma\u{201d} se ele não atinge nada):",
+            no_hit_question: "Escolha a cor do ponto atingido pelo raio, ou \u{201c}{none}\u{201d} se ele não atinge nada:",
             no_hit_right: "Correto: como escrito, o raio não atinge nada.",
-            no_hit_wrong: "Incorreto: como escrito, o raio não atinge superfície alguma à frente da origem.",
+            none: "nenhuma",
             solution: "Solução comentada",
         },
     }
@@ -98,13 +149,15 @@ fn words(lang: Lang) -> Words {
 
 struct Words {
     right: &'static str,
+    right_8bit: &'static str,
+    as_8bit: &'static str,
     unclamped: &'static str,
     reading: &'static str,
     slip: &'static str,
     other: &'static str,
     no_hit_question: &'static str,
     no_hit_right: &'static str,
-    no_hit_wrong: &'static str,
+    none: &'static str,
     solution: &'static str,
 }
 
@@ -161,18 +214,25 @@ fn value(t: &crate::check::Target) -> [f64; 3] {
 
 /// One alternative of a part: its fraction, its answer and its feedback (HTML, unescaped).
 struct Alt {
-    fraction: &'static str,
+    fraction: String,
     answer: String,
     tolerance: Option<f64>,
     feedback: Vec<String>,
 }
 
 /// The NUMERICAL part of channel `c`.
-fn channel(c: usize, expected: &Expected, tolerance: f64, lang: Lang) -> Option<String> {
+fn channel(
+    c: usize,
+    expected: &Expected,
+    entry: &Entry,
+    grading: &Grading,
+    lang: Lang,
+) -> Option<String> {
     let w = words(lang);
+    let tolerance = entry.tolerance;
     let right = value(&expected.solution?)[c];
     let mut alts = vec![Alt {
-        fraction: "=",
+        fraction: "=".into(),
         answer: number(right),
         tolerance: Some(tolerance),
         feedback: vec![w.right.to_owned()],
@@ -193,7 +253,7 @@ fn channel(c: usize, expected: &Expected, tolerance: f64, lang: Lang) -> Option<
     let unclamped = expected.solution?.unclamped[c];
     if unclamped.is_finite() && !taken.iter().any(|&t| shadowed(unclamped, t)) {
         alts.push(Alt {
-            fraction: "=",
+            fraction: "=".into(),
             answer: number(unclamped),
             tolerance: Some(tolerance),
             feedback: vec![w.unclamped.to_owned()],
@@ -204,7 +264,7 @@ fn channel(c: usize, expected: &Expected, tolerance: f64, lang: Lang) -> Option<
         let v = value(&r.target)[c];
         if v.is_finite() && !taken.iter().any(|&t| shadowed(v, t)) {
             alts.push(Alt {
-                fraction: "%50%",
+                fraction: grading.reading.clone(),
                 answer: number(v),
                 tolerance: Some(tolerance),
                 feedback: vec![format!(
@@ -235,7 +295,7 @@ fn channel(c: usize, expected: &Expected, tolerance: f64, lang: Lang) -> Option<
             None => slips.push((
                 written(v),
                 Alt {
-                    fraction: "%0%",
+                    fraction: "%0%".into(),
                     answer: number(v),
                     tolerance: Some(tolerance),
                     feedback: vec![text],
@@ -244,8 +304,37 @@ fn channel(c: usize, expected: &Expected, tolerance: f64, lang: Lang) -> Option<
         }
     }
     alts.extend(slips.into_iter().map(|(_, a)| a));
+    // The course reads three whole numbers 0–255 written without a scale as 8-bit values: the
+    // right answer's and the reading's numbers on the 255 scale, after every 0–1 alternative
+    // (a number a 0–1 alternative takes is judged on the 0–1 scale first).
+    if grading.eight_bit {
+        let t8 = entry.tolerance_bits8;
+        let right8 = value(&expected.solution?)[c] * 255.0;
+        alts.push(Alt {
+            fraction: "=".into(),
+            answer: number(right8),
+            tolerance: Some(t8),
+            feedback: vec![w.right_8bit.to_owned()],
+        });
+        if let Some(r) = expected.readings.iter().find(|r| r.likely_intended) {
+            let v = value(&r.target)[c] * 255.0;
+            if v.is_finite() && (v - right8).abs() > t8 * (1.0 + 1e-9) {
+                alts.push(Alt {
+                    fraction: grading.reading.clone(),
+                    answer: number(v),
+                    tolerance: Some(t8),
+                    feedback: vec![format!(
+                        "{} ({}; {}).",
+                        w.reading,
+                        check_messages::reading(r.code, lang),
+                        w.as_8bit
+                    )],
+                });
+            }
+        }
+    }
     alts.push(Alt {
-        fraction: "",
+        fraction: String::new(),
         answer: "*".into(),
         tolerance: None,
         feedback: vec![w.other.to_owned()],
@@ -272,25 +361,123 @@ fn part(weight: u32, kind: &str, alts: &[Alt]) -> String {
     format!("{{{weight}:{kind}:{}}}", body.join("~"))
 }
 
-/// The SHORTANSWER part of a problem with nothing to shade.
-fn no_hit_part(lang: Lang) -> String {
+/// `s` with its first letter in upper case.
+fn capitalised(s: &str) -> String {
+    let mut c = s.chars();
+    match c.next() {
+        Some(first) => first.to_uppercase().chain(c).collect(),
+        None => String::new(),
+    }
+}
+
+/// A colour as a choice of the no-hit part: `(0.524, 0.027, 0)`, three decimals (six where the
+/// tolerance is finer than 0.005), as `phong check` and `phong grade` read it back.
+fn colour_choice(c: [f64; 3], tolerance: f64) -> String {
+    let digits = if tolerance >= 0.005 { 3 } else { 6 };
+    let n = |x: f64| {
+        let s = format!("{x:.digits$}");
+        let s = s.trim_end_matches('0').trim_end_matches('.');
+        if s == "-0" || s.is_empty() {
+            "0".to_owned()
+        } else {
+            s.to_owned()
+        }
+    };
+    format!("({}, {}, {})", n(c[0]), n(c[1]), n(c[2]))
+}
+
+/// The part of a problem with nothing to shade (its ray meets nothing as written): one
+/// `MULTICHOICE_VS` part (vertical, shuffled) whose choices are "none" (the course's word, full
+/// credit), the likely intended reading's colour (the reading's credit), the background's colour
+/// (what a ray that meets nothing shows: none) and each slip's colour (none, its feedback naming
+/// the slip). A Cloze question's grade is the weighted sum of its parts', and a blank part earns
+/// nothing, so no layout of a text part beside three NUMERICAL parts can give "none" full
+/// credit *and* a colour the reading's: one part whose choices are both can. Colours within the
+/// tolerance of an earlier choice are not choices of their own: a slip's joins that choice's
+/// feedback (the reading's and "none" shadow it, as in [`channel`]).
+fn no_hit_choice(expected: &Expected, entry: &Entry, grading: &Grading, lang: Lang) -> String {
     let w = words(lang);
-    let mut alts: Vec<Alt> = ["nenhuma", "none", "no hit", "nenhum"]
-        .into_iter()
-        .map(|a| Alt {
-            fraction: "=",
-            answer: a.into(),
-            tolerance: None,
-            feedback: vec![w.no_hit_right.into()],
-        })
-        .collect();
-    alts.push(Alt {
-        fraction: "",
-        answer: "*".into(),
+    let tolerance = entry.tolerance;
+    let close = |a: [f64; 3], b: [f64; 3]| {
+        (0..3).all(|k| (a[k] - b[k]).abs() <= tolerance * (1.0 + 1e-9) + 1e-12)
+    };
+    let mut alts = vec![Alt {
+        fraction: "=".into(),
+        answer: grading.none.clone(),
         tolerance: None,
-        feedback: vec![w.no_hit_wrong.into()],
-    });
-    part(3, "SHORTANSWER", &alts)
+        feedback: vec![w.no_hit_right.into()],
+    }];
+    // Each colour taken, and whether a slip may join its alternative.
+    let mut taken: Vec<([f64; 3], usize, bool)> = Vec::new();
+    if let Some(r) = expected.readings.iter().find(|r| r.likely_intended) {
+        let v = value(&r.target);
+        if v.iter().all(|x| x.is_finite()) {
+            taken.push((v, alts.len(), false));
+            alts.push(Alt {
+                fraction: grading.reading.clone(),
+                answer: colour_choice(v, tolerance),
+                tolerance: None,
+                feedback: vec![format!(
+                    "{} ({}).",
+                    w.reading,
+                    check_messages::reading(r.code, lang)
+                )],
+            });
+        }
+    }
+    let background = expected.background;
+    if !taken.iter().any(|(t, _, _)| close(*t, background)) {
+        taken.push((background, alts.len(), true));
+        alts.push(Alt {
+            fraction: "%0%".into(),
+            answer: colour_choice(background, tolerance),
+            tolerance: None,
+            feedback: vec![capitalised(&check_messages::background(background, lang)) + "."],
+        });
+    }
+    // Each slip, made alone or in the likely intended reading (with the hit behind the
+    // origin: one slip, as `phong check` counts it).
+    let intended = expected.intended_slips();
+    for o in &expected.outcomes {
+        let mistakes: Vec<Slip> = o
+            .slips
+            .iter()
+            .copied()
+            .filter(|s| o.slips.len() == 1 || !intended.contains(s))
+            .collect();
+        let v = value(&o.target);
+        if mistakes.len() != 1 || !v.iter().all(|x| x.is_finite()) {
+            continue;
+        }
+        let text = if mistakes.len() < o.slips.len() {
+            format!(
+                "{} {} ({}).",
+                w.slip,
+                slip_text(mistakes[0], lang),
+                check_messages::in_intended_reading(lang)
+            )
+        } else {
+            format!("{} {}.", w.slip, slip_text(mistakes[0], lang))
+        };
+        match taken.iter().find(|(t, _, _)| close(*t, v)) {
+            Some(&(_, i, true)) => {
+                if !alts[i].feedback.contains(&text) {
+                    alts[i].feedback.push(text);
+                }
+            }
+            Some(_) => {}
+            None => {
+                taken.push((v, alts.len(), true));
+                alts.push(Alt {
+                    fraction: "%0%".into(),
+                    answer: colour_choice(v, tolerance),
+                    tolerance: None,
+                    feedback: vec![text],
+                });
+            }
+        }
+    }
+    part(1, "MULTICHOICE_VS", &alts)
 }
 
 /// A line of a solution in HTML with MathJax's inline delimiters.
@@ -457,6 +644,7 @@ fn xml(s: &str) -> String {
 pub(crate) fn quiz(
     sets: &[Set],
     parent: &str,
+    grading: &Grading,
     lang: Lang,
 ) -> Result<String, crate::problem::ProblemError> {
     let mut out = String::from("<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<quiz>\n");
@@ -474,7 +662,7 @@ pub(crate) fn quiz(
         );
         for entry in &set.entries {
             q += 1;
-            question(&mut out, entry, q, lang)
+            question(&mut out, entry, q, grading, lang)
                 .map_err(|e| e.at(std::path::Path::new(&entry.label)))?;
         }
     }
@@ -486,6 +674,7 @@ fn question(
     out: &mut String,
     entry: &Entry,
     q: usize,
+    grading: &Grading,
     lang: Lang,
 ) -> Result<(), crate::problem::Invalid> {
     let expected = Expected::of(&entry.problem)?;
@@ -498,7 +687,7 @@ fn question(
     }
     text.push_str(&cloze_inert(&data_table(&x.data, lang)));
     match (0..3)
-        .map(|c| channel(c, &expected, entry.tolerance, lang))
+        .map(|c| channel(c, &expected, entry, grading, lang))
         .collect::<Option<Vec<String>>>()
     {
         Some(parts) => {
@@ -512,8 +701,8 @@ fn question(
             let _ = writeln!(
                 text,
                 "<p>{} {}</p>",
-                cloze_inert(&esc(w.no_hit_question)),
-                no_hit_part(lang)
+                cloze_inert(&esc(&w.no_hit_question.replace("{none}", &grading.none))),
+                no_hit_choice(&expected, entry, grading, lang)
             );
         }
     }

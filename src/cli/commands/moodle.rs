@@ -9,23 +9,46 @@ use crate::cli::args::MoodleArgs;
 use crate::cli::error::CliError;
 use crate::cli::exit::Exit;
 use crate::cli::output;
-use crate::export::moodle::{quiz, Entry, Set, DEFAULT_TOLERANCE};
+use crate::check::policy::Policy;
+use crate::cli::faults::CliFault;
+use crate::export::moodle::{quiz, Entry, Grading, Set};
 use crate::problem::{self, ProblemError, MAX_PROBLEM_BYTES};
 use crate::text::lang::Lang;
 
 pub(crate) fn run(args: &MoodleArgs) -> Result<Exit, CliError> {
+    // The course policy beside the first file (not standard input), or --policy.
+    let folder = args
+        .files
+        .iter()
+        .find(|p| !output::is_dash(p))
+        .map(|p| match p.parent() {
+            Some(d) if !d.as_os_str().is_empty() => d.to_owned(),
+            _ => std::path::PathBuf::from("."),
+        });
+    let policy = super::course_policy(args.policy.as_deref(), folder.as_deref())?;
+    let grading = Grading::of(&policy, args.lang).map_err(|share| {
+        CliError::usage(
+            policy
+                .source
+                .as_ref()
+                .map_or_else(|| "--policy".to_owned(), |p| p.display().to_string()),
+            CliFault::MoodleCredit {
+                credit: crate::text::Num(share),
+            },
+        )
+    })?;
     let sets = args
         .files
         .iter()
-        .map(|path| read_set(path, args.lang))
+        .map(|path| read_set(path, &policy, args.lang))
         .collect::<Result<Vec<Set>, ProblemError>>()?;
-    let text = quiz(&sets, &args.category, args.lang)?;
+    let text = quiz(&sets, &args.category, &grading, args.lang)?;
     output::emit(args.output.as_deref(), &text)?;
     Ok(Exit::Success)
 }
 
 /// One file: a problem, or an array of problems (as `phong new --count N` prints them).
-fn read_set(path: &Path, lang: Lang) -> Result<Set, ProblemError> {
+fn read_set(path: &Path, policy: &Policy, lang: Lang) -> Result<Set, ProblemError> {
     let bytes = problem::read_limited(path, MAX_PROBLEM_BYTES, problem::Input::ProblemFile)
         .map_err(|source| ProblemError::Read {
             path: path.to_owned(),
@@ -64,16 +87,15 @@ fn read_set(path: &Path, lang: Lang) -> Result<Set, ProblemError> {
         let file = problem::parse_str(at, &source)?;
         let problem =
             problem::validate::validate_in::<f64>(&file, path.parent()).map_err(|e| e.at(at))?;
-        let tolerance = file
-            .answer
-            .as_ref()
-            .and_then(|k| from_key(k).ok())
-            .and_then(|k| k.tolerance_on(Scale::Unit))
-            .unwrap_or(DEFAULT_TOLERANCE);
+        // The tolerances `phong check` judges this problem's answers under (the key's own, else
+        // the course policy's), on each scale.
+        let key = file.answer.as_ref().and_then(|k| from_key(k).ok());
+        let on = |scale| policy.tolerance(scale, key.as_ref().and_then(|k| k.tolerance_on(scale)));
         entries.push(Entry {
             label,
             problem,
-            tolerance,
+            tolerance: on(Scale::Unit),
+            tolerance_bits8: on(Scale::Bits8),
         });
     }
     let category = if stdin {
