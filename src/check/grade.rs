@@ -22,8 +22,8 @@ use std::path::{Path, PathBuf};
 
 use serde::Serialize;
 
-use super::report::{scale_number, verdict_code, CHECK_FORMAT_VERSION};
 use super::policy::{Duplicates, Policy};
+use super::report::{scale_number, verdict_code, CHECK_FORMAT_VERSION};
 use super::steps::{self, StepsExpected, StepsOut};
 use super::{answer, judge, messages, Expected, Scale, Slip, Verdict, VerdictKind};
 use crate::solve::ReadingCode;
@@ -70,12 +70,13 @@ pub enum Input {
     Moodle,
 }
 
-/// The exercises of a folder (its `*.json` files without `.json`), in name order with numbers
-/// compared as numbers (4.2 before 4.10).
+/// The exercises of a folder (its `*.json` files but the course policy, without `.json`), in
+/// name order with numbers compared as numbers (4.2 before 4.10).
 pub fn folder_exercises(dir: &Path) -> Vec<String> {
     let mut names: Vec<String> = std::fs::read_dir(dir)
         .map(|d| {
             d.filter_map(|e| e.ok())
+                .filter(|e| crate::problem::is_exercise_file(&e.path()))
                 .filter_map(|e| {
                     let name = e.file_name().to_string_lossy().into_owned();
                     name.strip_suffix(".json").map(str::to_owned)
@@ -1123,8 +1124,11 @@ impl<'a> Graded<'a> {
                 let winner = self.groups[g as usize].winner as usize;
                 if winner != i {
                     r.counted = false;
-                    let note =
-                        messages::not_counted(winner + 1, self.options.policy.duplicates.word(), lang);
+                    let note = messages::not_counted(
+                        winner + 1,
+                        self.options.policy.duplicates.word(),
+                        lang,
+                    );
                     r.feedback.insert_str(0, &note);
                 }
             }

@@ -26,8 +26,7 @@ use std::path::{Path, PathBuf};
 use super::answer::{self, Answer, BadAnswer, Scale};
 use super::VerdictKind;
 
-/// The policy file's name, looked for in the exercises' folder.
-pub const POLICY_FILE: &str = "course-policy.json";
+pub use crate::problem::POLICY_FILE;
 
 /// The share of an exercise's points that an answer matching its likely intended reading earns
 /// by default: half (the arithmetic is right, the reading of the statement is not).
@@ -35,7 +34,15 @@ pub const DEFAULT_READING_CREDIT: f64 = 0.5;
 
 /// How answers written without a scale whose numbers look like 8-bit values are judged.
 #[derive(
-    Clone, Copy, Debug, Default, PartialEq, Eq, serde::Serialize, serde::Deserialize, clap::ValueEnum,
+    Clone,
+    Copy,
+    Debug,
+    Default,
+    PartialEq,
+    Eq,
+    serde::Serialize,
+    serde::Deserialize,
+    clap::ValueEnum,
 )]
 #[serde(rename_all = "lowercase")]
 pub enum EightBit {
@@ -83,7 +90,10 @@ impl Default for Policy {
             strict: false,
             reading_credit: DEFAULT_READING_CREDIT,
             eight_bit: EightBit::Read,
-            no_hit: answer::NO_HIT_WORDS.iter().map(|w| (*w).to_owned()).collect(),
+            no_hit: answer::NO_HIT_WORDS
+                .iter()
+                .map(|w| (*w).to_owned())
+                .collect(),
             points: BTreeMap::new(),
             default_points: 1.0,
             duplicates: Duplicates::Last,
@@ -414,7 +424,15 @@ pub fn credit(c: f64) -> Result<f64, PolicyError> {
 
 /// Which of a student's answers to one exercise counts when there are several.
 #[derive(
-    Clone, Copy, Debug, Default, PartialEq, Eq, clap::ValueEnum, serde::Serialize, serde::Deserialize,
+    Clone,
+    Copy,
+    Debug,
+    Default,
+    PartialEq,
+    Eq,
+    clap::ValueEnum,
+    serde::Serialize,
+    serde::Deserialize,
 )]
 #[serde(rename_all = "lowercase")]
 pub enum Duplicates {
@@ -438,3 +456,128 @@ impl Duplicates {
     }
 }
 
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::text::{Lang, Message};
+
+    #[test]
+    fn points_with_a_decimal_comma() {
+        // QA report A, finding 6: 4.1=0,5 is half a point, beside other items.
+        let mut p = Policy::default();
+        p.give_points("4.1=0,5,4.2=2").unwrap();
+        assert_eq!(p.points["4.1"], 0.5);
+        assert_eq!(p.points["4.2"], 2.0);
+        let mut p = Policy::default();
+        p.give_points("4.1=0,5").unwrap();
+        assert_eq!(p.points["4.1"], 0.5);
+        // A fragment that cannot be decimals is named as written, with what came before it.
+        let e = Policy::default().give_points("4.1=0.5,5").unwrap_err();
+        assert_eq!(e.to_string(), "\"4.1=0.5,5\" is not EXERCISE=POINTS");
+        let e = Policy::default().give_points("4.1=x,5").unwrap_err();
+        assert_eq!(e.to_string(), "\"4.1=x\": the points are not a number");
+    }
+
+    #[test]
+    fn a_rubric_of_earlier_versions_is_a_policy() {
+        let mut p = Policy::read_json(
+            r#"{"points": {"4.1.json": 2}, "default": 3, "reading_credit": 0.25}"#,
+        )
+        .unwrap();
+        p.give_points("4.2=3, 4.3=0,5").unwrap();
+        assert_eq!(p.points_of("4.1"), 2.0);
+        assert_eq!(p.points_of("4.2.json"), 3.0);
+        assert_eq!(p.points_of("4.3"), 0.5);
+        assert_eq!(p.points_of("4.9"), 3.0);
+        assert_eq!(p.reading_credit, 0.25);
+        assert!(Policy::read_json(r#"{"point": {}}"#).is_err());
+        assert!(Policy::read_json(r#"{"reading_credit": 2}"#).is_err());
+        assert!(Policy::read_json(r#"{"points": {"4.1": -1}}"#).is_err());
+    }
+
+    // The defaults are the chapter's conventions (docs/conventions.md): ±0.005 on the 0–1
+    // scale, ±1 on the 255 scale, half credit for the likely intended reading, 8-bit values
+    // read, the last answer counting, 1 point each.
+    #[test]
+    fn the_defaults_and_every_field_of_a_file() {
+        let d = Policy::default();
+        assert_eq!((d.tolerance_unit, d.tolerance_bits8), (0.005, 1.0));
+        assert_eq!(d.reading_credit, 0.5);
+        assert!(!d.strict);
+        assert_eq!(d.eight_bit, EightBit::Read);
+        assert_eq!(d.duplicates, Duplicates::Last);
+        assert_eq!(d.points_of("4.1"), 1.0);
+        let p = Policy::read_json(
+            r#"{"tolerance": {"1": 0.01, "255": 2}, "strict": true, "reading_credit": 0.3,
+                "eight_bit": "hint", "no_hit": ["Sem Interseção"], "duplicates": "best",
+                "default_points": 2, "comment": {"anything": ["at all"]}}"#,
+        )
+        .unwrap();
+        assert_eq!((p.tolerance_unit, p.tolerance_bits8), (0.01, 2.0));
+        assert!(p.strict);
+        assert_eq!(p.reading_credit, 0.3);
+        assert_eq!(p.eight_bit, EightBit::Hint);
+        assert_eq!(p.no_hit, ["sem intersecao"]);
+        assert_eq!(p.duplicates, Duplicates::Best);
+        assert_eq!(p.points_of("4.1"), 2.0);
+        // What phong policy writes reads back as the same policy.
+        let again = Policy::read_json(&p.to_json().to_string()).unwrap();
+        assert_eq!(again, p);
+    }
+
+    // One rule for each surface: the tolerance (flag, then the key's, then the policy's per
+    // scale), the credit (1, the reading's share unless strict, 0), the 8-bit reading.
+    #[test]
+    fn tolerance_credit_and_8bit_reading() {
+        let mut p = Policy::default();
+        assert_eq!(p.tolerance(Scale::Unit, None), 0.005);
+        assert_eq!(p.tolerance(Scale::Bits8, None), 1.0);
+        assert_eq!(p.tolerance(Scale::Unit, Some(0.02)), 0.02);
+        p.tolerance_forced = Some(0.1);
+        assert_eq!(p.tolerance(Scale::Unit, Some(0.02)), 0.1);
+        assert_eq!(p.credit(VerdictKind::Right), 1.0);
+        assert_eq!(p.credit(VerdictKind::Reading), 0.5);
+        assert_eq!(p.credit(VerdictKind::Wrong), 0.0);
+        p.strict = true;
+        assert_eq!(p.credit(VerdictKind::Reading), 0.0);
+        // 128 179 77: three whole numbers, one above 1: 8-bit values unless the policy hints.
+        let read = p.read("128 179 77", None).unwrap();
+        assert!(read.as_8bit);
+        assert_eq!(read.answer.scale, Scale::Bits8);
+        assert!(!p.read("128 179 77", Some(Scale::Unit)).unwrap().as_8bit);
+        assert!(!p.read("0 1 0", None).unwrap().as_8bit);
+        assert!(!p.read("0.5 179 77", None).unwrap().as_8bit);
+        p.eight_bit = EightBit::Hint;
+        assert_eq!(
+            p.read("128 179 77", None).unwrap().answer.scale,
+            Scale::Unit
+        );
+        // The course's own words for "no hit", and only those.
+        let q = Policy::read_json(r#"{"no_hit": ["vazio"]}"#).unwrap();
+        assert_eq!(q.read("Vazio", None).unwrap().answer.values, None);
+        assert!(q.read("nenhuma", None).is_err());
+    }
+
+    #[test]
+    fn a_policys_errors_read_in_both_languages() {
+        let e = Policy::read_json(r#"{"points": {"4.1": -1}}"#).unwrap_err();
+        assert_eq!(
+            e.to_string(),
+            "points: the points of 4.1 (-1) must be a number 0 or more"
+        );
+        assert_eq!(
+            e.text(Lang::Pt),
+            "points: os pontos de 4.1 (-1) devem ser um número 0 ou mais"
+        );
+        let e = Policy::read_json(r#"{"tolerance": {"255": -1}}"#).unwrap_err();
+        assert!(e.to_string().starts_with("tolerance.255: "), "{e}");
+        let e = Policy::read_json(r#"{"no_hit": [" "]}"#).unwrap_err();
+        assert!(e.text(Lang::Pt).starts_with("no_hit: "), "{e}");
+        let e = credit(2.0).unwrap_err();
+        assert_eq!(
+            e.text(Lang::Pt),
+            "reading_credit: o crédito da leitura é 2: é uma fração dos pontos, de 0 a 1 (0.5 \
+             para metade)"
+        );
+    }
+}

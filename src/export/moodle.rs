@@ -100,7 +100,11 @@ impl Grading {
                 if crate::check::answer::is_no_hit_in(word, &policy.no_hit) {
                     word.to_owned()
                 } else {
-                    policy.no_hit.first().cloned().unwrap_or_else(|| word.into())
+                    policy
+                        .no_hit
+                        .first()
+                        .cloned()
+                        .unwrap_or_else(|| word.into())
                 }
             },
         })

@@ -139,6 +139,17 @@ fn not_utf8(path: &Path, bytes: &[u8], e: std::str::Utf8Error) -> ProblemError {
     )
 }
 
+/// The course policy's file name (`check::policy`), beside the exercises: a folder's
+/// `*.json` files but this one are its problems, and this one given as a problem is told apart.
+pub const POLICY_FILE: &str = "course-policy.json";
+
+/// Whether `path` is one of a folder's exercises: a `*.json` file other than the course
+/// policy ([`POLICY_FILE`]).
+pub fn is_exercise_file(path: &Path) -> bool {
+    path.extension().is_some_and(|x| x == "json")
+        && path.file_name().is_some_and(|n| n != POLICY_FILE)
+}
+
 /// Parses the text of a problem file; `path` is only used in error messages.
 ///
 /// A valid file is read once by plain serde_json, which keeps no path: tracking where the
@@ -158,6 +169,16 @@ pub fn parse_str(path: &Path, source: &str) -> Result<ProblemFile, ProblemError>
 /// [`parse_str`] with the field path tracked, for the error of a file that failed. serde's
 /// message is read into a value ([`Parse::read`]) here, once.
 fn parse_tracked(path: &Path, source: &str) -> Result<ProblemFile, ProblemError> {
+    if path.file_name().is_some_and(|n| n == POLICY_FILE) {
+        return Err(syntax(
+            path,
+            1,
+            1,
+            None,
+            Parse::CoursePolicy,
+            SyntaxFix::LeavePolicyOut,
+        ));
+    }
     let mut de = serde_json::Deserializer::from_str(source);
     let result = serde_path_to_error::deserialize(&mut de)
         .map_err(|e| (field_path(e.path()), e.into_inner()))

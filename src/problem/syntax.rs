@@ -455,6 +455,10 @@ messages! {
         Other { text: ParserWords } => "{text}", "{text}";
         /// A byte that is not UTF-8.
         NotUtf8 { byte: Hex } => "byte {byte} is not UTF-8 text", "o byte {byte} não é texto UTF-8";
+        /// The course policy (`course-policy.json`) given where a problem is read.
+        CoursePolicy =>
+            "this is the course policy (tolerances, credit, points), not a problem",
+            "esta é a política do curso (tolerâncias, crédito, pontos), não um problema";
         /// A document that is not an object.
         NotAnObject { kind: JsonKind } =>
             "the file is {kind}, and a problem file is one JSON object {{ … }}",
@@ -781,6 +785,12 @@ messages! {
              encoding, such as Latin-1, or from a file that is not a problem file",
             "salve o arquivo como UTF-8 (JSON é texto UTF-8); o byte pode vir de outra \
              codificação, como Latin-1, ou de um arquivo que não é um arquivo de problema";
+        /// The course policy given among problem files.
+        LeavePolicyOut =>
+            "leave it out of the problem files (exercises/4.*.json, not exercises/*.json): check, \
+             grade, serve and moodle read it from the exercises' folder themselves",
+            "deixe-a fora dos arquivos de problema (exercises/4.*.json, não exercises/*.json): \
+             check, grade, serve e moodle a leem da pasta dos exercícios";
         /// A document that is not an object.
         OneObject =>
             "write the problem's fields in one object, {{\"lights\": [ … ], \"point\": {{ … }}, \

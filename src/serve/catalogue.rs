@@ -78,7 +78,7 @@ impl Catalogue {
         })?;
         let mut paths: Vec<PathBuf> = read_dir
             .filter_map(|e| e.ok().map(|e| e.path()))
-            .filter(|p| p.extension().is_some_and(|x| x == "json") && p.is_file())
+            .filter(|p| crate::problem::is_exercise_file(p) && p.is_file())
             .collect();
         paths.sort();
         let mut exercises = Vec::with_capacity(paths.len());

@@ -4,13 +4,13 @@
 use std::path::Path;
 
 use crate::check::answer::from_key;
+use crate::check::policy::Policy;
 use crate::check::Scale;
 use crate::cli::args::MoodleArgs;
 use crate::cli::error::CliError;
 use crate::cli::exit::Exit;
-use crate::cli::output;
-use crate::check::policy::Policy;
 use crate::cli::faults::CliFault;
+use crate::cli::output;
 use crate::export::moodle::{quiz, Entry, Grading, Set};
 use crate::problem::{self, ProblemError, MAX_PROBLEM_BYTES};
 use crate::text::lang::Lang;
