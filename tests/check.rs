@@ -99,11 +99,36 @@ fn eight_bit_answers_accept_round_floor_and_ceil_of_255_c() {
     );
 }
 
+// Issue 28: one verdict everywhere. Three whole numbers 0–255, one above 1, written without
+// a scale, are read as 8-bit values by the course policy's default, as `phong grade` reads
+// them: 4.1's (0.5, 0.7, 0.3) is (127.5, 178.5, 76.5) on the 255 scale, and 128 179 77 lies
+// within 1 of it. Judged on the 0–1 scale (`--scale 1`, or a policy whose "eight_bit" is
+// "hint"), they are wrong, with the hint.
 #[test]
-fn a_0_to_1_answer_that_looks_8_bit_gets_a_hint() {
-    let (code, out, _) = check("4.1.json", &["--answer", "128 179 77"]);
+fn an_answer_that_looks_8_bit_is_read_as_8_bit_unless_the_scale_is_given() {
+    let (code, json) = check_json("4.1.json", &["--answer", "128 179 77"]);
+    assert_eq!(code, 0);
+    assert_eq!(json["verdict"], "right");
+    assert_eq!(json["answer"]["scale"], 255);
+    assert_eq!(json["answer"]["read_as_8bit"], true);
+    assert_eq!(json["credit"], 1.0);
+    let (code, out, _) = check("4.1.json", &["--answer", "128 179 77", "--scale", "1"]);
     assert_eq!(code, 1);
     assert!(out.contains("--scale 255"), "{out}");
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::copy("exercises/4.1.json", dir.path().join("4.1.json")).unwrap();
+    std::fs::write(
+        dir.path().join("course-policy.json"),
+        r#"{"eight_bit": "hint"}"#,
+    )
+    .unwrap();
+    let out = phong()
+        .args(["check", "--answer", "128 179 77", "--lang", "en"])
+        .arg(dir.path().join("4.1.json"))
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(1));
+    assert!(String::from_utf8_lossy(&out.stdout).contains("--scale 255"));
 }
 
 #[test]
@@ -294,6 +319,7 @@ fn the_json_verdict_has_its_stable_fields() {
         [
             "accepted",
             "answer",
+            "credit",
             "diagnosis",
             "difference",
             "error",
@@ -301,6 +327,7 @@ fn the_json_verdict_has_its_stable_fields() {
             "file",
             "format_version",
             "message",
+            "policy",
             "reading",
             "tolerance",
             "verdict"

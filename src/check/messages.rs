@@ -809,14 +809,12 @@ crate::messages! {
     pub enum Credit {
         /// By the policy of a file.
         InFile { percent: crate::text::Num, file: std::path::PathBuf } =>
-            "{percent}% of the exercise's points in this course (course policy: {file})",
-            "{percent}% dos pontos do exercício neste curso (política do curso: {file})";
+            "{percent}% of the exercise's points in this course (its policy: {file})",
+            "{percent}% dos pontos do exercício neste curso (sua política: {file})";
         /// By the default policy.
         Default { percent: crate::text::Num } =>
-            "{percent}% of the exercise's points in this course (the default course policy: \
-             no course-policy.json beside the exercises)",
-            "{percent}% dos pontos do exercício neste curso (a política padrão do curso: não há \
-             course-policy.json junto aos exercícios)";
+            "{percent}% of the exercise's points (phong's default course policy)",
+            "{percent}% dos pontos do exercício (a política padrão do phong)";
     }
 }
 

@@ -124,8 +124,10 @@ impl Policy {
     pub fn read(&self, text: &str, scale: Option<Scale>) -> Result<Read, BadAnswer> {
         let given = scale.unwrap_or(Scale::Unit);
         let a = answer::parse_with(text, given, &self.no_hit)?;
+        // `#RRGGBB` is on the 255 scale as written: only plain numbers are read so.
         if scale.is_none()
             && self.eight_bit == EightBit::Read
+            && a.scale == Scale::Unit
             && a.values.is_some_and(|v| looks_8bit(&v))
         {
             if let Ok(b) = answer::parse_with(text, Scale::Bits8, &self.no_hit) {
@@ -547,6 +549,9 @@ mod tests {
         assert!(!p.read("128 179 77", Some(Scale::Unit)).unwrap().as_8bit);
         assert!(!p.read("0 1 0", None).unwrap().as_8bit);
         assert!(!p.read("0.5 179 77", None).unwrap().as_8bit);
+        // #RRGGBB is on the 255 scale as written, not read so.
+        let hex = p.read("#80B34D", None).unwrap();
+        assert_eq!((hex.answer.scale, hex.as_8bit), (Scale::Bits8, false));
         p.eight_bit = EightBit::Hint;
         assert_eq!(
             p.read("128 179 77", None).unwrap().answer.scale,
