@@ -83,6 +83,13 @@ crate::faults! {
             "{before}{why}", "{before}{why}";
             fix "one JSON object of names and values, such as {{\"cos_theta\": 0.98995}}",
                 "um objeto JSON de nomes e valores, como {{\"cos_theta\": 0.98995}}";
+        /// The course policy (`--policy`, or the file beside the exercises) cannot be read.
+        PolicyUnreadable { why: Said } =>
+            "{why}", "{why}";
+            fix "give --policy the path of a course policy file (`phong policy > \
+                 course-policy.json` writes one with every field)",
+                "dê a --policy o caminho de um arquivo de política do curso (`phong policy > \
+                 course-policy.json` escreve um com todos os campos)";
         /// The course policy (`--policy`, or the file beside the exercises) is refused.
         Policy { why: Said } =>
             "{why}", "{why}";

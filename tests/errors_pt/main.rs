@@ -787,9 +787,9 @@ fn command_line_errors_are_said_in_portuguese() {
         (
             vec!["grade", "x.csv", "--exercises", "exercises", "--rubric", &inside],
             format!(
-                "erro: --rubric {inside}: não é possível ler o arquivo: não é uma pasta (erro 20 \
-                 do sistema). Correção: dê um arquivo de rubrica como mostra a seção \"Grading\" \
-                 do README"
+                "erro: --policy {inside}: não é possível ler a política do curso: não é uma pasta \
+                 (erro 20 do sistema). Correção: dê a --policy o caminho de um arquivo de política \
+                 do curso (`phong policy > course-policy.json` escreve um com todos os campos)"
             ),
         ),
         (

@@ -29,18 +29,24 @@ pub(crate) fn course_policy(
     folder: Option<&std::path::Path>,
 ) -> Result<crate::check::policy::Policy, CliError> {
     use crate::check::policy::{Policy, POLICY_FILE};
-    let path = match (flag, folder) {
-        (Some(file), _) => file.to_owned(),
-        (None, Some(dir)) if dir.join(POLICY_FILE).is_file() => dir.join(POLICY_FILE),
+    let (path, named) = match (flag, folder) {
+        (Some(file), _) => (file.to_owned(), format!("--policy {}", file.display())),
+        (None, Some(dir)) if dir.join(POLICY_FILE).is_file() => {
+            let path = dir.join(POLICY_FILE);
+            let named = path.display().to_string();
+            (path, named)
+        }
         _ => return Ok(Policy::default()),
     };
     Policy::read_file(&path).map_err(|why| {
-        CliError::usage(
-            path.display().to_string(),
-            CliFault::Policy {
-                why: crate::text::Said::new(why),
-            },
-        )
+        let unreadable = matches!(why, crate::check::policy::PolicyError::Unreadable { .. });
+        let why = crate::text::Said::new(why);
+        let fault = if unreadable {
+            CliFault::PolicyUnreadable { why }
+        } else {
+            CliFault::Policy { why }
+        };
+        CliError::usage(named, fault)
     })
 }
 
