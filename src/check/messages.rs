@@ -831,3 +831,20 @@ impl Credit {
         }
     }
 }
+
+crate::messages! {
+    /// Which course policy a command judged by, said once on standard error.
+    #[allow(missing_docs)]
+    pub enum PolicyUsed {
+        /// A file's.
+        File { file: std::path::PathBuf } =>
+            "judged by the course policy in {file}",
+            "julgado pela política do curso em {file}";
+        /// The defaults: no file in the folder.
+        Default { folder: std::path::PathBuf } =>
+            "judged by phong's default course policy (there is no course-policy.json in \
+             {folder}; `phong policy` shows it)",
+            "julgado pela política padrão do phong (não há course-policy.json em {folder}; \
+             `phong policy` a mostra)";
+    }
+}

@@ -127,6 +127,13 @@ pub(crate) fn run(args: &GradeArgs) -> Result<Exit, CliError> {
     }
     let total =
         |f: fn(&check::grade::SummaryOut) -> usize| graded.summary().iter().map(f).sum::<usize>();
+    let used = match &options.policy.source {
+        Some(file) => check::messages::PolicyUsed::File { file: file.clone() },
+        None => check::messages::PolicyUsed::Default {
+            folder: args.exercises.clone(),
+        },
+    };
+    output::say(&crate::text::Message::text(&used, lang));
     output::say(&check::messages::graded(
         graded.len(),
         total(|s| s.right),
