@@ -9,7 +9,6 @@ use std::path::PathBuf;
 
 use criterion::{criterion_group, criterion_main, Criterion};
 use phong::check::grade::{grade_bytes, rows_csv, Options};
-use phong::check::Scale;
 
 /// `rows` submissions cycling through a mix of answers.
 fn submissions(rows: usize) -> Vec<u8> {
@@ -37,9 +36,7 @@ fn bench(c: &mut Criterion) {
     let csv = submissions(100_000);
     let options = Options {
         exercises: PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("exercises"),
-        scale: Scale::Unit,
-        tolerance: None,
-        strict: false,
+        scale: None,
         delimiter: None,
         ..Options::default()
     };

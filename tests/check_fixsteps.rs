@@ -196,13 +196,25 @@ fn a_no_hit_answer_to_a_point_problem_has_no_slip_line() {
     assert!(!out.contains("no classic slip"), "{out}");
 }
 
-// QA A #16. "76 92 81" on the 0–1 scale is 8-bit values (76/255 = 0.298, 92/255 = 0.361,
-// 81/255 = 0.318: 4.2's likely intended reading): a near miss "90.98 away" measured on the
-// 0–1 scale is noise; the hint to use --scale 255 is the message, with no near miss on the
-// wrong scale (nor a slip line measured there).
+// QA A #16. "76 92 81" is 8-bit values (76/255 = 0.298, 92/255 = 0.361, 81/255 = 0.318: 4.2's
+// likely intended reading). Without a scale the course policy reads them so (issue 28): the
+// reading. Judged on the 0–1 scale (`--scale 1`), a near miss "90.98 away" measured there is
+// noise; the hint to use --scale 255 is the message, with no near miss on the wrong scale (nor
+// a slip line measured there).
 #[test]
 fn an_8_bit_answer_without_scale_gets_no_near_miss_on_the_wrong_scale() {
     let (code, out, _) = run(&["check", "exercises/4.2.json", "--answer", "76 92 81"]);
+    assert_eq!(code, 0, "{out}");
+    let (code, out, _) = run(&[
+        "check",
+        "exercises/4.2.json",
+        "--answer",
+        "76 92 81",
+        "--scale",
+        "1",
+        "--lang",
+        "en",
+    ]);
     assert_eq!(code, 1, "{out}");
     assert!(out.contains("did you mean --scale 255?"), "{out}");
     assert!(!out.contains("closest"), "{out}");
@@ -212,6 +224,8 @@ fn an_8_bit_answer_without_scale_gets_no_near_miss_on_the_wrong_scale() {
         "exercises/4.2.json",
         "--answer",
         "76 92 81",
+        "--scale",
+        "1",
         "--format",
         "json",
     ]);

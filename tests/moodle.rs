@@ -894,251 +894,256 @@ fn a_category_name_with_slashes_is_one_category() {
 
 #[cfg(feature = "serve")]
 #[path = "support/http.rs"]
-#[allow(dead_code)]
 mod http;
 #[cfg(feature = "serve")]
 #[path = "support/server.rs"]
 #[allow(dead_code)]
 mod server;
 
-/// A number as Moodle's NUMERICAL part reads a response: `-`, digits, one `.` or `,` (the
-/// decimal separators of the English and Portuguese language packs); anything else is no
-/// number, and the part is not answered.
-fn moodle_number(s: &str) -> Option<f64> {
-    let t = s.trim();
-    let ok = !t.is_empty()
-        && t.trim_start_matches('-')
-            .chars()
-            .all(|c| c.is_ascii_digit() || c == '.' || c == ',')
-        && t.chars().filter(|c| *c == '.' || *c == ',').count() <= 1;
-    ok.then(|| t.replace(',', ".").parse().ok()).flatten()
-}
-
-/// Moodle's grade of a NUMERICAL part (`question/type/numerical/question.php`,
-/// `get_matching_answer`): the first alternative whose interval, answer ± tolerance plus
-/// 1e-14·max(1, |answer|), holds the number (`*` holds every number); `None` for a response
-/// that is not a number.
-fn moodle_part(sub: &Sub, response: &str) -> Option<f64> {
-    let x = moodle_number(response)?;
-    let hit = sub.alts.iter().find(|a| {
-        a.answer == "*" || {
-            let v: f64 = a.answer.parse().unwrap();
-            let t = a.tolerance.unwrap_or(0.0) + 1e-14 * v.abs().max(1.0);
-            (v - t..=v + t).contains(&x)
-        }
-    });
-    Some(hit.map_or(0.0, |a| a.fraction / 100.0))
-}
-
-/// The three numbers a student types in the quiz's R, G and B boxes for `answer`: its numbers
-/// as written (a `#RRGGBB` answer as its three 8-bit values, since a box takes a number).
-fn boxes(answer: &str) -> Vec<String> {
-    if let Some(hex) = answer.trim().strip_prefix('#') {
-        return (0..3)
-            .map(|i| {
-                u8::from_str_radix(&hex[2 * i..2 * i + 2], 16)
-                    .unwrap()
-                    .to_string()
-            })
-            .collect();
-    }
-    let t = answer.trim().trim_start_matches('(').trim_end_matches(')');
-    let parts: Vec<&str> = t
-        .split_whitespace()
-        .map(|p| p.trim_end_matches([',', ';']))
-        .collect();
-    let parts = if parts.len() == 3 {
-        parts
-    } else {
-        t.split([',', ';']).map(str::trim).collect()
-    };
-    parts.into_iter().map(str::to_owned).collect()
-}
-
-/// The colour an answer gives on the 0–1 scale, by this test's own reading (three numbers,
-/// 8-bit when all are whole and one is above 1, `#RRGGBB`), to find the choice a student
-/// would click in the no-hit question; `None` for text that is no colour.
-fn colour_of(answer: &str) -> Option<[f64; 3]> {
-    let b = boxes(answer);
-    let v: Vec<f64> = b.iter().filter_map(|s| moodle_number(s)).collect();
-    if v.len() != 3 {
-        return None;
-    }
-    let bits8 = answer.trim().starts_with('#')
-        || (v.iter().all(|x| x.fract() == 0.0) && v.iter().any(|&x| x > 1.0));
-    let k = if bits8 { 255.0 } else { 1.0 };
-    Some([v[0] / k, v[1] / k, v[2] / k])
-}
-
-/// What the quiz gives `answer`: the grade of its question (the weighted mean of its parts;
-/// every part weighs 1 here), and whether the student could give it at all as a number in
-/// each box (a colour question) or as one of the choices (the no-hit question).
-fn moodle_grade(subs: &[Sub], answer: &str) -> (f64, bool) {
-    if subs.len() == 3 {
-        let b = boxes(answer);
-        if b.len() != 3 {
-            return (0.0, false);
-        }
-        let parts: Vec<Option<f64>> = (0..3).map(|c| moodle_part(&subs[c], &b[c])).collect();
-        let given = parts.iter().all(Option::is_some);
-        (
-            parts.iter().map(|p| p.unwrap_or(0.0)).sum::<f64>() / 3.0,
-            given,
-        )
-    } else {
-        let choices = &subs[0].alts;
-        let none = ["none", "nenhuma", "sem interseção"].contains(&answer.trim());
-        let chosen = if none {
-            choices.iter().find(|a| a.fraction == 100.0)
-        } else {
-            colour_of(answer).and_then(|c| {
-                choices.iter().find(|a| {
-                    colour_of(&a.answer)
-                        .is_some_and(|k| (0..3).all(|i| (k[i] - c[i]).abs() <= 0.005))
-                })
-            })
-        };
-        chosen.map_or((0.0, false), |a| (a.fraction / 100.0, true))
-    }
-}
-
-/// Issue 28, "one verdict everywhere": each answer of a table of 28 (right answers written
-/// every way, on the 0–1 and 255 scales and as `#RRGGBB`; the likely intended readings, on
-/// both scales; slips; "no hit" in words of both languages; text that is no answer) goes
-/// through `phong check`, a `phong grade` row, `/api/check` of `phong serve` and the Moodle
-/// quiz of the same exercises, all under one course policy written beside them
-/// (`course-policy.json`: a reading earns a quarter, 4.2 is worth 2 points), and each gives
-/// the verdict and the credit worked out here by hand:
-///
-/// - 4.1: O_a·I_a = (0.5, 0.7, 0.3)·(1, 1, 1) = (0.5, 0.7, 0.3), on the 255 scale (127.5,
-///   178.5, 76.5): 128 179 77 and #80B34D are within 1;
-/// - 4.2: as written the light is behind the surface (cos θ < 0): black; the likely intended
-///   reading (L reversed) is (0.299153, 0.361229, 0.318306) (docs/conventions.md), on the 255
-///   scale (76.28, 92.11, 81.17): 76 92 81 is within 1; 0.245 0.28 0.21 is |cos θ| (a slip);
-/// - 4.3: the ray meets the plane at t = −90, behind its origin: "none"; the line's hit is the
-///   likely intended reading, (0.523919, 0.0273364, 0), on the 255 scale (133.6, 6.97, 0):
-///   134 7 0 is within 1; black is the background, wrong.
-///
-/// Moodle's quiz has no "invalid": a box that holds no number earns nothing, as an answer that
-/// cannot be read earns nothing elsewhere; so the quiz is held to the same credit, and to
-/// accepting exactly the answers phong accepts. One difference is Moodle's own and is asserted
-/// as such: a Cloze question grades each box apart, so a wrong colour with right channels
-/// earns their share in the quiz (the last row), where phong judges the colour whole; the
-/// course's verdict on such an answer is `phong grade --input moodle` of the Responses export.
+/// Issue 28's table: one answer, one verdict and one credit on every surface (needs `phong
+/// serve`, so the `serve` feature).
 #[cfg(feature = "serve")]
-#[test]
-fn one_answer_gets_one_verdict_and_one_credit_from_check_grade_serve_and_moodle() {
-    const Q: f64 = 0.25;
-    // (exercise, answer, verdict, credit; the quiz's credit where Moodle's differs).
-    let table: [(&str, &str, &str, f64, Option<f64>); 28] = [
-        ("4.1", "0.5 0.7 0.3", "right", 1.0, None),
-        ("4.1", "(0.5, 0.7, 0.3)", "right", 1.0, None),
-        ("4.1", "0,5 0,7 0,3", "right", 1.0, None),
-        ("4.1", "0.503 0.702 0.296", "right", 1.0, None),
-        ("4.1", "128 179 77", "right", 1.0, None),
-        ("4.1", "#80B34D", "right", 1.0, None),
-        ("4.1", "0 0 0", "wrong", 0.0, None),
-        ("4.1", "0.6 0.8 0.4", "wrong", 0.0, None),
-        ("4.1", "nenhuma", "wrong", 0.0, None),
-        ("4.1", "abc", "invalid", 0.0, None),
-        ("4.2", "0 0 0", "right", 1.0, None),
-        ("4.2", "0.004 0 0.003", "right", 1.0, None),
-        ("4.2", "0.3 0.36 0.32", "reading", Q, None),
-        ("4.2", "0,299 0,361 0,318", "reading", Q, None),
-        ("4.2", "76 92 81", "reading", Q, None),
-        ("4.2", "0.245 0.28 0.21", "wrong", 0.0, None),
-        ("4.2", "0.5 0.4 0.6", "wrong", 0.0, None),
-        ("4.2", "none", "wrong", 0.0, None),
-        ("4.3", "nenhuma", "right", 1.0, None),
-        ("4.3", "none", "right", 1.0, None),
-        ("4.3", "sem interseção", "right", 1.0, None),
-        ("4.3", "0.524 0.027 0", "reading", Q, None),
-        ("4.3", "134 7 0", "reading", Q, None),
-        ("4.3", "0 0 0", "wrong", 0.0, None),
-        ("4.3", "0.5 0 0", "wrong", 0.0, None),
-        ("4.3", "0.9 0.9 0.9", "wrong", 0.0, None),
-        ("4.3", "xyz", "invalid", 0.0, None),
-        // Two channels right, one wrong: wrong, and two thirds in Moodle's per-box grading.
-        ("4.1", "0.52 0.7 0.3", "wrong", 0.0, Some(2.0 / 3.0)),
-    ];
-    let dir = tempfile::tempdir().unwrap();
-    for id in ["4.1", "4.2", "4.3"] {
-        let name = format!("{id}.json");
-        std::fs::copy(root().join("exercises").join(&name), dir.path().join(&name)).unwrap();
-    }
-    std::fs::write(
-        dir.path().join("course-policy.json"),
-        r#"{"reading_credit": 0.25, "points": {"4.2": 2}}"#,
-    )
-    .unwrap();
-    let file = |id: &str| dir.path().join(format!("{id}.json"));
+mod one_verdict {
+    use super::*;
 
-    // The Moodle quiz, one question per exercise in order.
-    let xml = moodle(&[file("4.1"), file("4.2"), file("4.3")], "pt", None);
-    let questions = validate(&xml).unwrap();
-    let question =
-        |id: &str| &questions[["4.1", "4.2", "4.3"].iter().position(|x| *x == id).unwrap()];
-
-    // The grade report, one row per answer (student i answers row i).
-    let mut csv = String::from("aluno;exercicio;resposta\n");
-    for (i, (id, answer, ..)) in table.iter().enumerate() {
-        csv.push_str(&format!("s{i};{id};\"{answer}\"\n"));
+    /// A number as Moodle's NUMERICAL part reads a response: `-`, digits, one `.` or `,` (the
+    /// decimal separators of the English and Portuguese language packs); anything else is no
+    /// number, and the part is not answered.
+    fn moodle_number(s: &str) -> Option<f64> {
+        let t = s.trim();
+        let ok = !t.is_empty()
+            && t.trim_start_matches('-')
+                .chars()
+                .all(|c| c.is_ascii_digit() || c == '.' || c == ',')
+            && t.chars().filter(|c| *c == '.' || *c == ',').count() <= 1;
+        ok.then(|| t.replace(',', ".").parse().ok()).flatten()
     }
-    let submissions = dir.path().join("respostas.csv");
-    std::fs::write(&submissions, csv).unwrap();
-    let out = phong()
-        .args(["grade", "--format", "json", "--exercises"])
-        .arg(dir.path())
-        .arg(&submissions)
-        .output()
+
+    /// Moodle's grade of a NUMERICAL part (`question/type/numerical/question.php`,
+    /// `get_matching_answer`): the first alternative whose interval, answer ± tolerance plus
+    /// 1e-14·max(1, |answer|), holds the number (`*` holds every number); `None` for a response
+    /// that is not a number.
+    fn moodle_part(sub: &Sub, response: &str) -> Option<f64> {
+        let x = moodle_number(response)?;
+        let hit = sub.alts.iter().find(|a| {
+            a.answer == "*" || {
+                let v: f64 = a.answer.parse().unwrap();
+                let t = a.tolerance.unwrap_or(0.0) + 1e-14 * v.abs().max(1.0);
+                (v - t..=v + t).contains(&x)
+            }
+        });
+        Some(hit.map_or(0.0, |a| a.fraction / 100.0))
+    }
+
+    /// The three numbers a student types in the quiz's R, G and B boxes for `answer`: its numbers
+    /// as written (a `#RRGGBB` answer as its three 8-bit values, since a box takes a number).
+    fn boxes(answer: &str) -> Vec<String> {
+        if let Some(hex) = answer.trim().strip_prefix('#') {
+            return (0..3)
+                .map(|i| {
+                    u8::from_str_radix(&hex[2 * i..2 * i + 2], 16)
+                        .unwrap()
+                        .to_string()
+                })
+                .collect();
+        }
+        let t = answer.trim().trim_start_matches('(').trim_end_matches(')');
+        let parts: Vec<&str> = t
+            .split_whitespace()
+            .map(|p| p.trim_end_matches([',', ';']))
+            .collect();
+        let parts = if parts.len() == 3 {
+            parts
+        } else {
+            t.split([',', ';']).map(str::trim).collect()
+        };
+        parts.into_iter().map(str::to_owned).collect()
+    }
+
+    /// The colour an answer gives on the 0–1 scale, by this test's own reading (three numbers,
+    /// 8-bit when all are whole and one is above 1, `#RRGGBB`), to find the choice a student
+    /// would click in the no-hit question; `None` for text that is no colour.
+    fn colour_of(answer: &str) -> Option<[f64; 3]> {
+        let b = boxes(answer);
+        let v: Vec<f64> = b.iter().filter_map(|s| moodle_number(s)).collect();
+        if v.len() != 3 {
+            return None;
+        }
+        let bits8 = answer.trim().starts_with('#')
+            || (v.iter().all(|x| x.fract() == 0.0) && v.iter().any(|&x| x > 1.0));
+        let k = if bits8 { 255.0 } else { 1.0 };
+        Some([v[0] / k, v[1] / k, v[2] / k])
+    }
+
+    /// What the quiz gives `answer`: the grade of its question (the weighted mean of its parts;
+    /// every part weighs 1 here), and whether the student could give it at all as a number in
+    /// each box (a colour question) or as one of the choices (the no-hit question).
+    fn moodle_grade(subs: &[Sub], answer: &str) -> (f64, bool) {
+        if subs.len() == 3 {
+            let b = boxes(answer);
+            if b.len() != 3 {
+                return (0.0, false);
+            }
+            let parts: Vec<Option<f64>> = (0..3).map(|c| moodle_part(&subs[c], &b[c])).collect();
+            let given = parts.iter().all(Option::is_some);
+            (
+                parts.iter().map(|p| p.unwrap_or(0.0)).sum::<f64>() / 3.0,
+                given,
+            )
+        } else {
+            let choices = &subs[0].alts;
+            let none = ["none", "nenhuma", "sem interseção"].contains(&answer.trim());
+            let chosen = if none {
+                choices.iter().find(|a| a.fraction == 100.0)
+            } else {
+                colour_of(answer).and_then(|c| {
+                    choices.iter().find(|a| {
+                        colour_of(&a.answer)
+                            .is_some_and(|k| (0..3).all(|i| (k[i] - c[i]).abs() <= 0.005))
+                    })
+                })
+            };
+            chosen.map_or((0.0, false), |a| (a.fraction / 100.0, true))
+        }
+    }
+
+    /// Issue 28, "one verdict everywhere": each answer of a table of 28 (right answers written
+    /// every way, on the 0–1 and 255 scales and as `#RRGGBB`; the likely intended readings, on
+    /// both scales; slips; "no hit" in words of both languages; text that is no answer) goes
+    /// through `phong check`, a `phong grade` row, `/api/check` of `phong serve` and the Moodle
+    /// quiz of the same exercises, all under one course policy written beside them
+    /// (`course-policy.json`: a reading earns a quarter, 4.2 is worth 2 points), and each gives
+    /// the verdict and the credit worked out here by hand:
+    ///
+    /// - 4.1: O_a·I_a = (0.5, 0.7, 0.3)·(1, 1, 1) = (0.5, 0.7, 0.3), on the 255 scale (127.5,
+    ///   178.5, 76.5): 128 179 77 and #80B34D are within 1;
+    /// - 4.2: as written the light is behind the surface (cos θ < 0): black; the likely intended
+    ///   reading (L reversed) is (0.299153, 0.361229, 0.318306) (docs/conventions.md), on the 255
+    ///   scale (76.28, 92.11, 81.17): 76 92 81 is within 1; 0.245 0.28 0.21 is |cos θ| (a slip);
+    /// - 4.3: the ray meets the plane at t = −90, behind its origin: "none"; the line's hit is the
+    ///   likely intended reading, (0.523919, 0.0273364, 0), on the 255 scale (133.6, 6.97, 0):
+    ///   134 7 0 is within 1; black is the background, wrong.
+    ///
+    /// Moodle's quiz has no "invalid": a box that holds no number earns nothing, as an answer that
+    /// cannot be read earns nothing elsewhere; so the quiz is held to the same credit, and to
+    /// accepting exactly the answers phong accepts. One difference is Moodle's own and is asserted
+    /// as such: a Cloze question grades each box apart, so a wrong colour with right channels
+    /// earns their share in the quiz (the last row), where phong judges the colour whole; the
+    /// course's verdict on such an answer is `phong grade --input moodle` of the Responses export.
+    #[test]
+    fn one_answer_gets_one_verdict_and_one_credit_from_check_grade_serve_and_moodle() {
+        const Q: f64 = 0.25;
+        // (exercise, answer, verdict, credit; the quiz's credit where Moodle's differs).
+        let table: [(&str, &str, &str, f64, Option<f64>); 28] = [
+            ("4.1", "0.5 0.7 0.3", "right", 1.0, None),
+            ("4.1", "(0.5, 0.7, 0.3)", "right", 1.0, None),
+            ("4.1", "0,5 0,7 0,3", "right", 1.0, None),
+            ("4.1", "0.503 0.702 0.296", "right", 1.0, None),
+            ("4.1", "128 179 77", "right", 1.0, None),
+            ("4.1", "#80B34D", "right", 1.0, None),
+            ("4.1", "0 0 0", "wrong", 0.0, None),
+            ("4.1", "0.6 0.8 0.4", "wrong", 0.0, None),
+            ("4.1", "nenhuma", "wrong", 0.0, None),
+            ("4.1", "abc", "invalid", 0.0, None),
+            ("4.2", "0 0 0", "right", 1.0, None),
+            ("4.2", "0.004 0 0.003", "right", 1.0, None),
+            ("4.2", "0.3 0.36 0.32", "reading", Q, None),
+            ("4.2", "0,299 0,361 0,318", "reading", Q, None),
+            ("4.2", "76 92 81", "reading", Q, None),
+            ("4.2", "0.245 0.28 0.21", "wrong", 0.0, None),
+            ("4.2", "0.5 0.4 0.6", "wrong", 0.0, None),
+            ("4.2", "none", "wrong", 0.0, None),
+            ("4.3", "nenhuma", "right", 1.0, None),
+            ("4.3", "none", "right", 1.0, None),
+            ("4.3", "sem interseção", "right", 1.0, None),
+            ("4.3", "0.524 0.027 0", "reading", Q, None),
+            ("4.3", "134 7 0", "reading", Q, None),
+            ("4.3", "0 0 0", "wrong", 0.0, None),
+            ("4.3", "0.5 0 0", "wrong", 0.0, None),
+            ("4.3", "0.9 0.9 0.9", "wrong", 0.0, None),
+            ("4.3", "xyz", "invalid", 0.0, None),
+            // Two channels right, one wrong: wrong, and two thirds in Moodle's per-box grading.
+            ("4.1", "0.52 0.7 0.3", "wrong", 0.0, Some(2.0 / 3.0)),
+        ];
+        let dir = tempfile::tempdir().unwrap();
+        for id in ["4.1", "4.2", "4.3"] {
+            let name = format!("{id}.json");
+            std::fs::copy(root().join("exercises").join(&name), dir.path().join(&name)).unwrap();
+        }
+        std::fs::write(
+            dir.path().join("course-policy.json"),
+            r#"{"reading_credit": 0.25, "points": {"4.2": 2}}"#,
+        )
         .unwrap();
-    assert_eq!(out.status.code(), Some(0));
-    let report: Value = serde_json::from_slice(&out.stdout).unwrap();
-    let rows = report["rows"].as_array().unwrap();
-    assert_eq!(rows.len(), table.len());
+        let file = |id: &str| dir.path().join(format!("{id}.json"));
 
-    let server = server::Server::start(&["--exercises", dir.path().to_str().unwrap()]);
-    for (i, &(id, answer, verdict, credit, quiz)) in table.iter().enumerate() {
-        let what = format!("{id} {answer:?}");
-        // phong check.
+        // The Moodle quiz, one question per exercise in order.
+        let xml = moodle(&[file("4.1"), file("4.2"), file("4.3")], "pt", None);
+        let questions = validate(&xml).unwrap();
+        let question =
+            |id: &str| &questions[["4.1", "4.2", "4.3"].iter().position(|x| *x == id).unwrap()];
+
+        // The grade report, one row per answer (student i answers row i).
+        let mut csv = String::from("aluno;exercicio;resposta\n");
+        for (i, (id, answer, ..)) in table.iter().enumerate() {
+            csv.push_str(&format!("s{i};{id};\"{answer}\"\n"));
+        }
+        let submissions = dir.path().join("respostas.csv");
+        std::fs::write(&submissions, csv).unwrap();
         let out = phong()
-            .args(["check", "--format", "json", "--answer", answer])
-            .arg(file(id))
+            .args(["grade", "--format", "json", "--exercises"])
+            .arg(dir.path())
+            .arg(&submissions)
             .output()
             .unwrap();
-        let c: Value = serde_json::from_slice(&out.stdout).unwrap();
-        assert_eq!(c["verdict"], verdict, "check {what}");
-        assert_eq!(c["credit"].as_f64().unwrap_or(0.0), credit, "check {what}");
-        let code = match verdict {
-            "invalid" => 2,
-            _ if credit > 0.0 => 0,
-            _ => 1,
-        };
-        assert_eq!(out.status.code(), Some(code), "check {what}");
-        // A phong grade row.
-        let row = &rows[i];
-        assert_eq!(row["verdict"], verdict, "grade {what}");
-        let max = row["max_points"].as_f64().unwrap_or(0.0);
-        assert_eq!(max, if id == "4.2" { 2.0 } else { 1.0 }, "grade {what}");
-        assert_eq!(
-            row["points"].as_f64().unwrap(),
-            credit * max,
-            "grade {what}"
-        );
-        // /api/check.
-        let body = serde_json::json!({"exercise": id, "answer": answer}).to_string();
-        let r = http::post_json(server.addr, "/api/check", &body).json();
-        assert_eq!(r["verdict"], verdict, "api {what}: {r}");
-        assert_eq!(r["credit"].as_f64().unwrap_or(0.0), credit, "api {what}");
-        // The Moodle quiz.
-        let (grade, given) = moodle_grade(question(id), answer);
-        let expected = quiz.unwrap_or(credit);
-        assert!((grade - expected).abs() < 1e-9, "moodle {what}: {grade}");
-        if credit > 0.0 {
-            assert!(
-                given,
-                "moodle {what}: an accepted answer the quiz cannot take"
+        assert_eq!(out.status.code(), Some(0));
+        let report: Value = serde_json::from_slice(&out.stdout).unwrap();
+        let rows = report["rows"].as_array().unwrap();
+        assert_eq!(rows.len(), table.len());
+
+        let server = super::server::Server::start(&["--exercises", dir.path().to_str().unwrap()]);
+        for (i, &(id, answer, verdict, credit, quiz)) in table.iter().enumerate() {
+            let what = format!("{id} {answer:?}");
+            // phong check.
+            let out = phong()
+                .args(["check", "--format", "json", "--answer", answer])
+                .arg(file(id))
+                .output()
+                .unwrap();
+            let c: Value = serde_json::from_slice(&out.stdout).unwrap();
+            assert_eq!(c["verdict"], verdict, "check {what}");
+            assert_eq!(c["credit"].as_f64().unwrap_or(0.0), credit, "check {what}");
+            let code = match verdict {
+                "invalid" => 2,
+                _ if credit > 0.0 => 0,
+                _ => 1,
+            };
+            assert_eq!(out.status.code(), Some(code), "check {what}");
+            // A phong grade row.
+            let row = &rows[i];
+            assert_eq!(row["verdict"], verdict, "grade {what}");
+            let max = row["max_points"].as_f64().unwrap_or(0.0);
+            assert_eq!(max, if id == "4.2" { 2.0 } else { 1.0 }, "grade {what}");
+            assert_eq!(
+                row["points"].as_f64().unwrap(),
+                credit * max,
+                "grade {what}"
             );
+            // /api/check.
+            let body = serde_json::json!({"exercise": id, "answer": answer}).to_string();
+            let r = super::http::post_json(server.addr, "/api/check", &body).json();
+            assert_eq!(r["verdict"], verdict, "api {what}: {r}");
+            assert_eq!(r["credit"].as_f64().unwrap_or(0.0), credit, "api {what}");
+            // The Moodle quiz.
+            let (grade, given) = moodle_grade(question(id), answer);
+            let expected = quiz.unwrap_or(credit);
+            assert!((grade - expected).abs() < 1e-9, "moodle {what}: {grade}");
+            if credit > 0.0 {
+                assert!(
+                    given,
+                    "moodle {what}: an accepted answer the quiz cannot take"
+                );
+            }
         }
     }
 }

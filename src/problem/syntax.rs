@@ -909,7 +909,7 @@ mod tests {
         // serde_json's own messages: every variant without fields but phong's own.
         for p in Parse::iter() {
             let with_fields = format!("{p:?}").contains('{');
-            if with_fields || p == Parse::TooManyElements {
+            if with_fields || p == Parse::TooManyElements || p == Parse::CoursePolicy {
                 continue;
             }
             assert_eq!(Parse::read(&p.text(Lang::En)), p, "{p:?}");
