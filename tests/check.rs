@@ -739,3 +739,136 @@ fn json_verdicts_on_the_chapters_exercises() {
         }
     });
 }
+
+/// The `id`s of a page.
+fn ids(html: &str) -> Vec<String> {
+    html.match_indices(" id=\"")
+        .map(|(i, m)| {
+            let rest = &html[i + m.len()..];
+            rest[..rest.find('"').unwrap()].to_owned()
+        })
+        .collect()
+}
+
+// Issue 33: `phong check --format html` writes the verdict as a page: the verdict and its
+// credit, the answer's and the expected colour as swatches (each an image named in words), the
+// channels against the tolerance in a table, and each slip the answer matches linked to the step
+// of the worked solution (on the same page) where it departs. 4.2's 0.245 0.28 0.21 is |cos θ|
+// (or the normal reversed): both depart at cos θ = −N·L, Eq. 4.7, of the problem as written.
+#[test]
+fn the_verdict_as_a_page_has_swatches_and_slips_linked_to_their_steps() {
+    let (code, page, _) = check(
+        "4.2.json",
+        &[
+            "--answer",
+            "0.245 0.28 0.21",
+            "--format",
+            "html",
+            "--lang",
+            "en",
+        ],
+    );
+    assert_eq!(code, 1);
+    assert!(page.starts_with("<!DOCTYPE html>"), "{page}");
+    assert!(!page.contains("<pre"));
+    assert!(page.contains("<div class=\"verdict wrong\" data-verdict=\"wrong\""));
+    assert!(
+        page.contains("Credit: 0% of the exercise&#39;s points"),
+        "{page}"
+    );
+    // Two swatches named in words: the answer's (0.245·255 = 62.5 → 62, 71.4 → 71, 53.55 → 54)
+    // and the expected black.
+    assert!(page.contains(
+        "aria-label=\"Your answer: (0.245, 0.28, 0.21)\"><title>Your answer: (0.245, 0.28, \
+         0.21)</title><rect width=\"1\" height=\"1\" fill=\"rgb(62,71,54)\"/>"
+    ));
+    assert!(page.contains("aria-label=\"Expected: (0, 0, 0)\""));
+    // Each channel outside the tolerance, said in words, not only in colour.
+    assert_eq!(
+        page.matches("<td class=\"outside\">outside the tolerance</td>")
+            .count(),
+        3
+    );
+    // The slips' links land on steps of this page.
+    let targets = ids(&page);
+    let links: Vec<&str> = page
+        .match_indices("href=\"#")
+        .map(|(i, m)| {
+            let rest = &page[i + m.len()..];
+            &rest[..rest.find('"').unwrap()]
+        })
+        .collect();
+    assert!(links.contains(&"part-0-0-eq-4-7"), "{links:?}");
+    for l in &links {
+        assert!(targets.iter().any(|t| t == l), "a link to nowhere: #{l}");
+    }
+    // The step it lands on is the cos θ of the problem as written.
+    let at = page.find("id=\"part-0-0-eq-4-7\"").unwrap();
+    assert!(
+        page[at..at + 200].contains("Eq. 4.7"),
+        "{}",
+        &page[at..at + 200]
+    );
+}
+
+// A right answer, the likely intended reading, a no-hit answer and a step check, as pages (and
+// in Markdown): each verdict said in words, with its credit; the steps in a table, the first
+// wrong one marked and linked to its step.
+#[test]
+fn every_kind_of_verdict_is_a_page_and_a_markdown_document() {
+    for (file, args, verdict) in [
+        ("4.1.json", vec!["--answer", "0.5 0.7 0.3"], "right"),
+        ("4.2.json", vec!["--answer", "0.299 0.361 0.318"], "reading"),
+        ("4.3.json", vec!["--answer", "nenhuma"], "right"),
+        ("4.3.json", vec!["--answer", "0 0 0"], "wrong"),
+    ] {
+        let mut a = args.clone();
+        a.extend(["--format", "html", "--lang", "pt"]);
+        let (_, page, _) = check(file, &a);
+        assert!(
+            page.contains(&format!("data-verdict=\"{verdict}\"")),
+            "{file} {args:?}"
+        );
+        assert!(page.contains("Crédito: "), "{file} {args:?}");
+        assert!(page.contains("<html lang=\"pt-BR\">"), "{page}");
+        let mut a = args.clone();
+        a.extend(["--format", "markdown", "--lang", "en"]);
+        let (_, md, _) = check(file, &a);
+        assert!(md.contains("Credit: "), "{md}");
+        assert!(md.starts_with("## "), "{md}");
+    }
+    // 4.2's steps: cos θ = 0.98995 is wrong as written (−N·L = −0.98995: the light is behind
+    // the surface) and right in the likely intended reading (L reversed), which is accepted
+    // (exit 0): the first step wrong as written is marked, and linked to cos θ's step.
+    let (code, page, _) = check(
+        "4.2.json",
+        &[
+            "--step",
+            "cos_theta=0.98995",
+            "--format",
+            "html",
+            "--lang",
+            "en",
+        ],
+    );
+    assert_eq!(code, 0);
+    assert!(page.contains("<table class=\"judged\">"), "{page}");
+    assert!(
+        page.contains("<tr class=\"first-wrong\" data-step=\"cos_theta[0]\""),
+        "{page}"
+    );
+    assert!(page.contains("(the first wrong step)"), "{page}");
+    assert!(page.contains("href=\"#part-0-0-eq-4-7\""), "{page}");
+    let (_, md, _) = check(
+        "4.2.json",
+        &[
+            "--step",
+            "cos_theta=0.98995",
+            "--format",
+            "markdown",
+            "--lang",
+            "en",
+        ],
+    );
+    assert!(md.contains("| `cos_theta[0]` | 0.98995 |"), "{md}");
+}

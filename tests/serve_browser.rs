@@ -225,6 +225,17 @@ impl<'a> Session<'a> {
         }
     }
 
+    /// How many elements `css` selects.
+    fn count(&self, css: &str) -> usize {
+        self.call(
+            "POST",
+            "/elements",
+            Some(json!({ "using": "css selector", "value": css })),
+        )
+        .as_array()
+        .map_or(0, Vec::len)
+    }
+
     fn type_into(&self, css: &str, text: &str) {
         let e = self.find(css);
         self.call("POST", &format!("/element/{e}/clear"), Some(json!({})));
@@ -357,6 +368,16 @@ fn a_browser_fills_the_4_2_form_and_reads_the_slip_and_a_step() {
         verdict.contains("Errada") || verdict.contains("errad"),
         "{verdict}"
     );
+    // Issue 33: the verdict is a page, not terminal text: the answer's and the expected colour
+    // as swatches (each an image with a text alternative), the channels in a table, each slip
+    // linked to its step of the worked solution; no <pre>.
+    assert_eq!(
+        s.count("#verdict .colours svg[role=\"img\"][aria-label]"),
+        2
+    );
+    assert_eq!(s.count("#verdict table.channels tr"), 4);
+    assert!(s.count("#verdict ul.matches a[href*=\"#part-0-0-eq-4-7\"]") >= 1);
+    assert_eq!(s.count("#verdict pre"), 0);
     let shot = s.screenshot();
     if std::env::var("PHONG_UPDATE_SCREENSHOT").is_ok_and(|v| v == "1") {
         std::fs::write("docs/serve-4.2.png", &shot).unwrap();
@@ -389,7 +410,7 @@ fn a_browser_fills_the_4_2_form_and_reads_the_slip_and_a_step() {
     // The keyboard alone: Enter in the answer box submits the form (a decimal comma too).
     s.type_into("form.answer input[name=\"step:cos_theta\"]", "");
     s.type_into("#answer", "0,245 0,28 0,21\u{E007}");
-    s.wait_for("#verdict pre.report");
+    s.wait_for("#verdict .colours");
     assert!(
         s.text("#verdict").contains(slip),
         "Enter did not check the answer"
@@ -397,7 +418,7 @@ fn a_browser_fills_the_4_2_form_and_reads_the_slip_and_a_step() {
 
     // The switch to English keeps the answer: the verdict again, in phong check's English.
     s.click("nav.lang button");
-    s.wait_for("html[lang=\"en\"] #verdict pre.report");
+    s.wait_for("html[lang=\"en\"] #verdict .colours");
     let cli = check(&["exercises/4.2.json", "--answer", "0.245 0.28 0.21"]);
     let slip = cli
         .lines()

@@ -362,12 +362,37 @@ fn the_4_2_answer_names_the_normal_slip_as_phong_check_does() {
         .collect();
     assert!(codes.iter().any(|c| c == "normal_reversed"), "{codes:?}");
     assert_eq!(attr(b, "class=\"verdict ", "data-slips"), codes.join(" "));
-    // The sentences are phong check's in Portuguese, line for line.
+    // Issue 33: the verdict is the fragment `phong check --format html` writes (one layout,
+    // both uses), not terminal text in a <pre>: the same verdict block, byte for byte, but for
+    // its links, which go to the exercise's page with its solution shown.
+    assert!(!b.contains("<pre"), "{b}");
+    let page = check(&[
+        "exercises/4.2.json",
+        "--answer",
+        answer,
+        "--lang",
+        "pt",
+        "--format",
+        "html",
+    ]);
+    let block = |html: &str| -> String {
+        let start = html.find("<div class=\"verdict ").expect("a verdict");
+        let end = start + html[start..].find("</section>").expect("its end");
+        html[start..end].to_owned()
+    };
+    assert_eq!(
+        block(b),
+        block(&page).replace("href=\"#", "href=\"/exercise/4.2?solution=1&amp;lang=pt#")
+    );
+    // The slip's sentence is phong check's in Portuguese, linked to its step (Eq. 4.7).
     let text = check(&["exercises/4.2.json", "--answer", answer, "--lang", "pt"]);
-    for line in text.lines().skip(1) {
-        let line = line.strip_prefix("  ").unwrap_or(line);
-        assert!(b.contains(&esc(line)), "the page lacks {line:?}");
-    }
+    let slip = text
+        .lines()
+        .find(|l| l.trim_start().starts_with("- "))
+        .unwrap();
+    let slip = slip.trim_start().trim_start_matches("- ");
+    assert!(b.contains(&esc(slip)), "the page lacks {slip:?}");
+    assert!(b.contains("#part-0-0-eq-4-7\">"), "{b}");
     assert!(b.contains("normal"), "the slip is not named");
     // A decimal comma reads the same.
     let comma = post(

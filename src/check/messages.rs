@@ -848,3 +848,33 @@ crate::messages! {
              `phong policy` a mostra)";
     }
 }
+
+crate::messages! {
+    /// The words of the verdict as a page (`phong check --format html` and `markdown`, and the
+    /// web checker's verdict).
+    #[allow(missing_docs)]
+    pub enum Page {
+        Verdict => "Verdict", "Veredito";
+        YourAnswer => "Your answer", "Sua resposta";
+        Expected => "Expected", "Esperado";
+        Channel => "Channel", "Canal";
+        Judged => "Verdict", "Veredito";
+        Within => "within the tolerance", "dentro da tolerância";
+        Outside => "outside the tolerance", "fora da tolerância";
+        /// The caption of the table of channels.
+        ChannelsCaption { tolerance: crate::text::Num, scale: String } =>
+            "Each channel against the tolerance ±{tolerance} ({scale})",
+            "Cada canal contra a tolerância ±{tolerance} ({scale})";
+        WhatItMatches => "What the answer matches:", "Com o que a resposta confere:";
+        /// A link to the step of the solution where a slip departs.
+        SeeStep { reference: String } =>
+            "see the step ({reference}) in the solution",
+            "veja o passo ({reference}) na solução";
+        SeeSolution => "see it in the solution", "veja na solução";
+        Quantity => "Quantity", "Grandeza";
+        YourValue => "Your value", "Seu valor";
+        FirstWrong => "the first wrong step", "o primeiro passo errado";
+        CannotCheck => "This could not be checked", "Não foi possível verificar";
+        WorkedSolution => "Worked solution", "Solução comentada";
+    }
+}

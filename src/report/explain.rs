@@ -67,6 +67,35 @@ impl Ref {
             Ref::Sec(n) => format!("{} {n}", Phrase::SecAbbrev.get(lang)),
         }
     }
+
+    /// The fragment of the id of the first step applying it (`eq-4-10`, `sec-4-2`; a sum
+    /// over the lights is its equation's, a range `eq-4-5-to-4-6`).
+    pub fn anchor(self) -> String {
+        match self {
+            Ref::Eq(n) | Ref::SumEq(n) => format!("eq-{}", n.replace('.', "-")),
+            Ref::Eqs(a, b) => format!("eq-{}-to-{}", a.replace('.', "-"), b.replace('.', "-")),
+            Ref::Sec(n) => format!("sec-{}", n.replace('.', "-")),
+        }
+    }
+
+    /// [`Ref::anchor`] of a reference as a slip names it ("Eq. 4.7", "Eq. 4.16"): its first
+    /// number; `None` when it names none.
+    pub fn anchor_of(text: &str) -> Option<String> {
+        let start = text.find(|c: char| c.is_ascii_digit())?;
+        let n: String = text[start..]
+            .chars()
+            .take_while(|c| c.is_ascii_digit() || *c == '.')
+            .collect();
+        let kind = if text.trim_start().starts_with("Sec") {
+            "sec"
+        } else {
+            "eq"
+        };
+        Some(format!(
+            "{kind}-{}",
+            n.trim_end_matches('.').replace('.', "-")
+        ))
+    }
 }
 
 /// One step (or one given quantity): its line, its depth under the step above, and the
@@ -123,6 +152,8 @@ pub struct Part {
     /// "Solution (the problem as written)", or the reading's label ("Likely intended reading:
     /// …").
     pub heading: String,
+    /// The reading this part solves; `None` for the problem as written.
+    pub reading: Option<crate::solve::ReadingCode>,
     /// Why a reading is shown and what it assumes.
     pub explanation: Option<String>,
     /// A reading's own intersection.
@@ -212,6 +243,7 @@ pub fn explain<R: Real>(
 ) -> Explanation {
     let parts = std::iter::once(Part {
         heading: Phrase::AsWritten.get(lang).to_owned(),
+        reading: None,
         explanation: None,
         ray: None,
         shading: s.evaluation.as_ref().map(|e| {
@@ -233,6 +265,7 @@ pub fn explain<R: Real>(
         }),
     })
     .chain(s.readings.iter().map(|r| Part {
+        reading: Some(r.code),
         heading: capitalised(messages::reading_label_in(r.code, lang)),
         explanation: Some(
             messages::reading_explanation_given(r.code, lang, problem.viewer.is_some()).to_owned(),

@@ -51,7 +51,7 @@ pub(crate) fn esc(s: &str) -> String {
 /// styles (`phong serve`) shows it too; named for screen readers by `title`, hidden without one.
 /// Its size in pixels is also given as attributes, for a page without the stylesheet (a Moodle
 /// question's text), where it would otherwise be an SVG's default 300 × 150.
-fn swatch(rgb: [u8; 3], class: &str, title: &str) -> String {
+pub(crate) fn swatch(rgb: [u8; 3], class: &str, title: &str) -> String {
     let [r, g, b] = rgb;
     let size = if class == "big" { 64 } else { 14 };
     let named = if title.is_empty() {
@@ -106,24 +106,98 @@ fn step(step: &Step, lang: Lang) -> String {
     format!("{eq}{}", line(&step.line))
 }
 
+/// The ids of a part's steps: the first step applying each equation is
+/// `part-{article}-{part}-eq-4-7`, so that a verdict can link to the step where a slip departs
+/// ([`step_anchor`]).
+struct Anchors {
+    prefix: String,
+    seen: Vec<String>,
+}
+
+impl Anchors {
+    fn new(prefix: String) -> Self {
+        Anchors {
+            prefix,
+            seen: Vec::new(),
+        }
+    }
+
+    /// The id of `step`, if it is the first of the part to apply its equation.
+    fn id(&mut self, step: &Step) -> Option<String> {
+        let a = step.eq?.anchor();
+        if self.seen.contains(&a) {
+            return None;
+        }
+        let id = format!("{}-{a}", self.prefix);
+        self.seen.push(a);
+        Some(id)
+    }
+}
+
+/// The id of the step of part `part` of article `index` that first applies the equation of
+/// `anchor` (`Ref::anchor`), as [`write_parts`] writes it; `None` when no step of the part
+/// applies it.
+pub(crate) fn step_anchor(
+    x: &Explanation,
+    index: usize,
+    part: usize,
+    anchor: &str,
+) -> Option<String> {
+    let p = x.parts.get(part)?;
+    let mut steps = p.ray.iter().flatten();
+    let shading = p
+        .shading
+        .iter()
+        .flat_map(|sh| sh.steps.iter().chain(&sh.total).chain(&sh.secondary));
+    steps
+        .by_ref()
+        .chain(shading)
+        .any(|s| s.eq.is_some_and(|e| e.anchor() == anchor))
+        .then(|| format!("part-{index}-{part}-{anchor}"))
+}
+
 fn list(out: &mut String, nodes: &[Node], numbered: bool, lang: Lang) {
+    list_in(out, nodes, numbered, lang, None);
+}
+
+fn list_in(
+    out: &mut String,
+    nodes: &[Node],
+    numbered: bool,
+    lang: Lang,
+    mut anchors: Option<&mut Anchors>,
+) {
     if nodes.is_empty() {
         return;
     }
     let tag = if numbered { "ol" } else { "ul" };
     let _ = writeln!(out, "<{tag}>");
     for node in nodes {
-        let _ = write!(out, "<li>{}", step(node.step, lang));
+        match anchors.as_deref_mut().and_then(|a| a.id(node.step)) {
+            Some(id) => {
+                let _ = write!(out, "<li id=\"{id}\">{}", step(node.step, lang));
+            }
+            None => {
+                let _ = write!(out, "<li>{}", step(node.step, lang));
+            }
+        }
         if !node.children.is_empty() {
             out.push('\n');
-            list(out, &node.children, numbered, lang);
+            list_in(out, &node.children, numbered, lang, anchors.as_deref_mut());
         }
         out.push_str("</li>\n");
     }
     let _ = writeln!(out, "</{tag}>");
 }
 
-fn shading(out: &mut String, sh: &Shading, lang: Lang, id: &str, level: usize) {
+fn shading(
+    out: &mut String,
+    sh: &Shading,
+    lang: Lang,
+    id: &str,
+    level: usize,
+    anchors: &mut Anchors,
+) {
     // The result first: the colour, large.
     let total = sh
         .total
@@ -147,16 +221,18 @@ fn shading(out: &mut String, sh: &Shading, lang: Lang, id: &str, level: usize) {
         }
         out.push_str("</div>\n");
     }
-    for (heading, steps, numbered) in [
-        (Phrase::Given, &sh.given, false),
-        (Phrase::Steps, &sh.steps, true),
-        (Phrase::Total, &sh.total, false),
-        (Phrase::SecondaryRays, &sh.secondary, false),
+    // The data given has no anchors: a slip departs in a step computed.
+    for (heading, steps, numbered, anchored) in [
+        (Phrase::Given, &sh.given, false, false),
+        (Phrase::Steps, &sh.steps, true, true),
+        (Phrase::Total, &sh.total, false, true),
+        (Phrase::SecondaryRays, &sh.secondary, false, true),
     ] {
         if !steps.is_empty() {
             let h = level + 1;
             let _ = writeln!(out, "<h{h}>{}</h{h}>", heading.get(lang));
-            list(out, &nest(steps), numbered, lang);
+            let a = anchored.then_some(&mut *anchors);
+            list_in(out, &nest(steps), numbered, lang, a);
         }
     }
 }
@@ -228,11 +304,12 @@ pub(crate) fn write_parts(x: &Explanation, index: usize, level: usize) -> String
         if let Some(e) = &part.explanation {
             let _ = writeln!(out, "<p class=\"reading\">{}</p>", esc(e));
         }
+        let mut anchors = Anchors::new(format!("part-{index}-{i}"));
         if let Some(ray) = &part.ray {
-            list(&mut out, &nest(ray), false, lang);
+            list_in(&mut out, &nest(ray), false, lang, Some(&mut anchors));
         }
         match &part.shading {
-            Some(sh) => shading(&mut out, sh, lang, &id, level),
+            Some(sh) => shading(&mut out, sh, lang, &id, level, &mut anchors),
             None => {
                 let _ = writeln!(out, "<p>{}</p>", esc(Phrase::NothingToShade.get(lang)));
             }
@@ -358,10 +435,16 @@ pub fn write_document(doc: &Document, options: HtmlOptions) -> String {
 
 /// A complete page around `body`.
 pub(crate) fn page(title: &str, body: &str, lang: Lang) -> String {
+    page_styled(title, body, lang, "")
+}
+
+/// [`page`] with `extra` rules after the stylesheet's.
+pub(crate) fn page_styled(title: &str, body: &str, lang: Lang, extra: &str) -> String {
     format!(
         "<!DOCTYPE html>\n<html lang=\"{}\">\n<head>\n<meta charset=\"utf-8\">\n\
          <meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n\
-         <title>{title}</title>\n<style>\n{STYLE}</style>\n</head>\n<body>\n{body}</body>\n</html>\n",
+         <title>{title}</title>\n<style>\n{STYLE}{extra}</style>\n</head>\n<body>\n{body}</body>\n\
+         </html>\n",
         language_tag(lang)
     )
 }

@@ -3,7 +3,9 @@
 //! their help, and the writer each gives. A new format is a new file here and a line in the
 //! list (hyperfine's `export/`, one `Exporter` per format).
 
+pub(crate) mod html;
 mod json;
+mod markdown;
 mod text;
 
 use super::report::Checked;
@@ -45,4 +47,8 @@ formats! {
     Text => text::TextWriter,
     /// JSON for scripts (stable field names, format_version).
     Json => json::JsonWriter,
+    /// A page for a browser: the colours as swatches, the slips linked to the solution's steps.
+    Html => html::HtmlWriter,
+    /// Markdown for notes and course pages.
+    Markdown => markdown::MarkdownWriter,
 }

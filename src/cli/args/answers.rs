@@ -39,7 +39,9 @@ pub(crate) struct CheckArgs {
     /// Instead of checking an answer, list what each applicable slip (and pair) gives.
     #[arg(long, conflicts_with_all = ["answer", "format", "step", "steps"])]
     pub(crate) slips: bool,
-    /// Output format: text for people, json for scripts (stable field names, format_version).
+    /// Output format: text for people, json for scripts (stable field names, format_version),
+    /// html for a browser (the colours as swatches, each slip linked to its step of the worked
+    /// solution), markdown for notes.
     #[arg(long, value_enum, default_value_t = check::output::Format::Text)]
     pub(crate) format: check::output::Format,
     /// Language of the text output.

@@ -19,8 +19,8 @@ use axum::Form;
 use super::lang::{self, Text};
 use super::layout::{href, page, posted};
 use super::list::{exercise_path, title};
-use crate::check::steps::{self, GivenStep, Name, StepVerdict, NAMES};
-use crate::check::{self, messages as said, CheckOptions, Scale, VerdictKind};
+use crate::check::steps::{self, GivenStep, Name, NAMES};
+use crate::check::{self, CheckOptions, Scale};
 use crate::core::Precision;
 use crate::report::html::{self, esc};
 use crate::serve::catalogue::Exercise;
@@ -308,7 +308,18 @@ fn render(ex: &Exercise, lang: Lang, input: &Input, posted: bool) -> (StatusCode
     main.push_str(&form(ex, lang, input));
 
     if posted {
-        let (s, verdict) = verdict(ex, lang, input);
+        // The verdict's links go to the worked solution's steps: on this page when it is
+        // shown, else on the exercise's page with it shown.
+        let base = if input.solution {
+            String::new()
+        } else {
+            href(&format!("{}?solution=1", exercise_path(&ex.id)), lang)
+        };
+        let links = check::output::html::Links {
+            index: 0,
+            base: &base,
+        };
+        let (s, verdict) = verdict(ex, lang, input, explanation.as_ref().ok(), links);
         status = s;
         main.push_str(&verdict);
     } else {
@@ -439,7 +450,13 @@ fn form(ex: &Exercise, lang: Lang, input: &Input) -> String {
 }
 
 /// The verdict on what was sent: the answer's (when one was written), then the steps'.
-fn verdict(ex: &Exercise, lang: Lang, input: &Input) -> (StatusCode, String) {
+fn verdict(
+    ex: &Exercise,
+    lang: Lang,
+    input: &Input,
+    x: Option<&crate::report::explain::Explanation>,
+    links: check::output::html::Links<'_>,
+) -> (StatusCode, String) {
     let t = |x: Text| x.get(lang);
     let mut status = StatusCode::OK;
     let mut out = format!(
@@ -467,19 +484,20 @@ fn verdict(ex: &Exercise, lang: Lang, input: &Input) -> (StatusCode, String) {
     if let Some(a) = answer {
         let c = input.check(ex, &a);
         match &c.outcome {
-            Ok(j) => out.push_str(&judged(&c, j, lang)),
+            Ok(j) => out.push_str(&check::output::html::answer_fragment(&c, j, x, links, lang)),
             Err(f) => {
                 status = StatusCode::UNPROCESSABLE_ENTITY;
-                out.push_str(&cannot(std::slice::from_ref(&f.message), lang));
+                out.push_str(&check::output::html::cannot_fragment(&[&f.message], lang));
             }
         }
     }
     if !bad.is_empty() {
         status = StatusCode::UNPROCESSABLE_ENTITY;
-        out.push_str(&cannot(&bad, lang));
+        let bad: Vec<&crate::text::Said> = bad.iter().collect();
+        out.push_str(&check::output::html::cannot_fragment(&bad, lang));
     }
     if !given.is_empty() {
-        let (s, html) = steps_verdict(ex, &given, lang);
+        let (s, html) = steps_verdict(ex, &given, x, links, lang);
         if s != StatusCode::OK {
             status = s;
         }
@@ -489,131 +507,26 @@ fn verdict(ex: &Exercise, lang: Lang, input: &Input) -> (StatusCode, String) {
     (status, out)
 }
 
-/// What could not be checked, in `lang` (the command line's messages).
-fn cannot(messages: &[crate::text::Said], lang: Lang) -> String {
-    let mut out = format!(
-        "<div class=\"verdict invalid\">\n<p class=\"headline\">{}</p>\n<ul class=\"errors\">\n",
-        Text::CannotCheck.get(lang)
-    );
-    for m in messages {
-        let _ = writeln!(out, "<li>{}</li>", esc(&m.text(lang)));
-    }
-    out.push_str("</ul>\n</div>\n");
-    out
-}
-
-/// A judged answer: the verdict in a sentence, then the command line's report (answer,
-/// expected, difference, tolerance, the slips, the near miss). The verdict's code and the
-/// slips' codes (each diagnosis's `slips`, joined by `+`) are in `data-` attributes, as
-/// `phong check --format json` names them.
-fn judged(c: &check::report::Checked, j: &check::report::Judged, lang: Lang) -> String {
-    let v = &j.verdict;
-    let class = match (v.kind, v.accepted) {
-        (VerdictKind::Right, _) => "right",
-        (VerdictKind::Reading, true) => "reading",
-        _ => "wrong",
-    };
-    let slips: Vec<String> = v
-        .diagnosis
-        .iter()
-        .map(|d| {
-            d.slips
-                .iter()
-                .map(|s| s.code())
-                .collect::<Vec<_>>()
-                .join("+")
-        })
-        .collect();
-    let report = check::report::text(c, lang);
-    // The first line is "FILE: verdict", said by the headline; the rest is indented by two.
-    let rest: Vec<&str> = report
-        .lines()
-        .skip(1)
-        .map(|l| l.strip_prefix("  ").unwrap_or(l))
-        .collect();
-    format!(
-        "<div class=\"verdict {class}\" data-verdict=\"{}\" data-slips=\"{}\">\n\
-         <p class=\"headline\">{}</p>\n<pre class=\"report\">{}</pre>\n</div>\n",
-        check::report::verdict_code(v.kind),
-        esc(&slips.join(" ")),
-        esc(&capitalised(said::verdict(v.kind, v.accepted, lang))),
-        esc(&rest.join("\n"))
-    )
-}
-
-/// A sentence's first letter in capitals, for a headline ("errada" → "Errada").
-fn capitalised(s: &str) -> String {
-    let mut c = s.chars();
-    c.next()
-        .map_or(String::new(), |f| f.to_uppercase().chain(c).collect())
-}
-
-/// The steps judged: a table (the quantity, the value given, the verdict with its equation
-/// and what the value is), then the first wrong step, and the tolerance.
-fn steps_verdict(ex: &Exercise, given: &[GivenStep], lang: Lang) -> (StatusCode, String) {
-    let t = |x: Text| x.get(lang);
+/// The steps judged, laid out as `phong check --format html` lays them out
+/// (`check::output::html::steps_fragment`).
+fn steps_verdict(
+    ex: &Exercise,
+    given: &[GivenStep],
+    x: Option<&crate::report::explain::Explanation>,
+    links: check::output::html::Links<'_>,
+    lang: Lang,
+) -> (StatusCode, String) {
     let c = steps::check_steps_source(ex.source(), given, false);
-    let j = match &c.outcome {
-        Ok(j) => j,
-        Err(f) => {
-            return (
-                StatusCode::UNPROCESSABLE_ENTITY,
-                cannot(std::slice::from_ref(&f.message), lang),
-            )
-        }
-    };
-    let mut out = format!(
-        "<div class=\"verdict steps {}\" data-verdict=\"{}\">\n<p class=\"headline\">{}</p>\n\
-         <table class=\"judged\">\n<tr><th scope=\"col\">{}</th><th scope=\"col\">{}</th>\
-         <th scope=\"col\">{}</th></tr>\n",
-        steps::overall(j),
-        steps::overall(j),
-        esc(&capitalised(said::steps_heading(lang))),
-        t(Text::StepName),
-        t(Text::StepGiven),
-        t(Text::StepJudged)
-    );
-    for s in &j.steps {
-        let class = match s.verdict {
-            StepVerdict::Right => "right",
-            StepVerdict::Reading => "reading",
-            StepVerdict::Wrong => "wrong",
-        };
-        let _ = writeln!(
-            out,
-            "<tr data-step=\"{}\" data-verdict=\"{}\"><th scope=\"row\"><code>{}</code></th>\
-             <td>{}</td><td class=\"{class}\">{}</td></tr>",
-            esc(&s.label()),
-            s.verdict.code(),
-            esc(&s.label()),
-            esc(&s.given.value.text()),
-            esc(&steps::step_message(s, lang))
-        );
+    match &c.outcome {
+        Ok(j) => (
+            StatusCode::OK,
+            check::output::html::steps_fragment(j, x, links, lang),
+        ),
+        Err(f) => (
+            StatusCode::UNPROCESSABLE_ENTITY,
+            check::output::html::cannot_fragment(&[&f.message], lang),
+        ),
     }
-    out.push_str("</table>\n");
-    let closing = match j.first_wrong {
-        Some(k) => {
-            let s = &j.steps[k];
-            said::first_wrong(
-                &s.label(),
-                &steps::equation(&s.expected, lang),
-                s.verdict == StepVerdict::Reading,
-                lang,
-            )
-        }
-        None => said::all_steps_right(lang).to_owned(),
-    };
-    let _ = writeln!(
-        out,
-        "<p>{}</p>\n<p class=\"help\">{}</p>\n</div>",
-        esc(&closing),
-        esc(&said::step_tolerance(
-            steps::STEP_RELATIVE,
-            steps::STEP_ABSOLUTE,
-            lang
-        ))
-    );
-    (StatusCode::OK, out)
 }
 
 /// The worked solution: the parts of the explanation as `phong solve --format html` writes

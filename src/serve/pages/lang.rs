@@ -154,11 +154,7 @@ texts! {
     ShowSolution => "Show the worked solution", "Mostrar a solução resolvida";
     Check => "Check", "Verificar";
     VerdictHeading => "Verdict", "Veredito";
-    StepName => "Quantity", "Grandeza";
-    StepGiven => "Your value", "Seu valor";
-    StepJudged => "Verdict", "Veredito";
     NothingGiven => "Write an answer or at least one step, then press Check.", "Escreva uma resposta ou pelo menos um passo e pressione Verificar.";
-    CannotCheck => "This could not be checked", "Não foi possível verificar";
     SolutionHeading => "Worked solution", "Solução resolvida";
     SolutionLink => "See the worked solution", "Ver a solução resolvida";
     NotFound => "Not found", "Não encontrado";

@@ -17,7 +17,10 @@ use crate::text::lang::Lang;
 /// year.
 pub(crate) const CSS_VERSION: u64 = fnv1a(
     PAGES_CSS.as_bytes(),
-    fnv1a(crate::report::html::STYLE.as_bytes(), 0xcbf2_9ce4_8422_2325),
+    fnv1a(
+        crate::check::output::html::STYLE.as_bytes(),
+        fnv1a(crate::report::html::STYLE.as_bytes(), 0xcbf2_9ce4_8422_2325),
+    ),
 );
 
 /// FNV-1a over `bytes`, from `hash`.
@@ -126,7 +129,8 @@ fn shell(status: StatusCode, lang: Lang, title: &str, switch: &str, main: &str) 
 }
 
 /// The stylesheet: the command line's HTML explanation's own (`report::html::STYLE`, so a
-/// worked solution looks as `phong solve --format html` writes it), then the pages'.
+/// worked solution looks as `phong solve --format html` writes it), the verdict's
+/// (`check::output::html::STYLE`, as `phong check --format html` lays it out), then the pages'.
 pub(crate) const PAGES_CSS: &str = include_str!("static/phong.css");
 
 /// `GET /static/phong.css`, cached for a year (its URL changes with it: [`CSS_VERSION`]).
@@ -136,7 +140,11 @@ pub(crate) async fn css() -> Response {
             (header::CONTENT_TYPE, "text/css; charset=utf-8"),
             (header::CACHE_CONTROL, "public, max-age=31536000, immutable"),
         ],
-        format!("{}{PAGES_CSS}", crate::report::html::STYLE),
+        format!(
+            "{}{}{PAGES_CSS}",
+            crate::report::html::STYLE,
+            crate::check::output::html::STYLE
+        ),
     )
         .into_response()
 }

@@ -1,0 +1,556 @@
+//! `phong check --format html`: each verdict as a page a student reads in a browser, and the
+//! same fragments for the web checker's verdict (`serve/pages/exercise.rs`): one layout, both
+//! uses.
+//!
+//! An answer's verdict: the verdict in words and what it earns under the course policy; the
+//! answer's and the expected colour side by side as swatches with their numbers on the answer's
+//! scale (each swatch has a text alternative: colour is never the only signal); the difference
+//! per channel against the tolerance, "within" or "outside" in words; each reading or slip the
+//! answer matches, as a sentence with the colour it gives and a link to the step of the worked
+//! solution where it departs (the first step applying its equation: `report::html::step_anchor`).
+//! Steps (`--step`): a table of the steps given, each judged and linked to its step in the
+//! solution, the first wrong one marked. The page ends with the worked solution, as `phong
+//! solve --format html` writes it, so the links land on the page.
+
+use std::fmt::Write;
+
+use super::Writer;
+use crate::check::messages::{self as said, Line, Page};
+use crate::check::report::{Checked, Judged};
+use crate::check::steps::{self, StepVerdict, StepsChecked, StepsJudged};
+use crate::check::{Candidate, Scale, VerdictKind};
+use crate::report::explain::{Explanation, Ref};
+use crate::report::html::{esc, step_anchor, swatch};
+use crate::text::number::num;
+use crate::text::{Lang, Message};
+
+/// The verdict's own rules, beside the explanation's stylesheet (`report::html::STYLE`), in the
+/// page `phong check` writes and in `phong serve`'s stylesheet.
+pub(crate) const STYLE: &str = "\
+.verdict{margin:1rem 0;padding:.6rem 1rem;border-left:6px solid #888;background:#f6f6f6}
+.verdict.right{border-left-color:#2e7d32;background:#eef7ee}
+.verdict.wrong{border-left-color:#c62828;background:#fbeeee}
+.verdict.reading{border-left-color:#b36b00;background:#fff6e5;color:inherit;font-style:normal}
+.verdict .headline{font-size:1.15rem;font-weight:bold;margin:.2rem 0}
+.verdict .credit{margin:.2rem 0 .6rem}
+.colours{display:flex;flex-wrap:wrap;gap:1.5rem;margin:.5rem 0}
+.colours figure{margin:0;display:flex;gap:.6rem;align-items:center}
+.colours figcaption{line-height:1.4}
+table.channels,table.judged{border-collapse:collapse;margin:.5rem 0}
+table.channels td,table.channels th,table.judged td,table.judged th{border-top:1px solid #ddd;padding:.25rem .5rem;text-align:left;vertical-align:top}
+td.within,td.right{color:#2e7d32}td.outside,td.wrong{color:#c62828}td.reading{color:#8a5200}
+tr.first-wrong th,tr.first-wrong td{background:#fbeeee}
+ul.matches li{margin:.3rem 0}
+.errors li{color:#a00}
+";
+
+/// Where the verdict's links point: the worked solution's article `index` (its ids are
+/// `part-{index}-…`), on this page (`base` empty) or on the page `base` (the web checker's
+/// exercise with its solution shown).
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Links<'a> {
+    /// The article's index in the solution's page.
+    pub index: usize,
+    /// The page the solution is on (`""`: this one).
+    pub base: &'a str,
+}
+
+impl Links<'_> {
+    fn href(&self, id: &str) -> String {
+        format!("{}#{id}", self.base)
+    }
+
+    /// A link to the part of `x` solving `reading` (`None`: the problem as written).
+    fn part(
+        &self,
+        x: &Explanation,
+        reading: Option<crate::solve::ReadingCode>,
+        lang: Lang,
+    ) -> String {
+        match x.parts.iter().position(|p| p.reading == reading) {
+            Some(i) => format!(
+                " <a href=\"{}\">{}</a>",
+                esc(&self.href(&format!("part-{}-{i}", self.index))),
+                esc(&Page::SeeSolution.text(lang))
+            ),
+            None => String::new(),
+        }
+    }
+
+    /// A link to the step of `x`'s part `reading` that first applies `reference` (`Eq. 4.7`),
+    /// or nothing when no step does.
+    fn step(
+        &self,
+        x: &Explanation,
+        reading: Option<crate::solve::ReadingCode>,
+        reference: &str,
+        lang: Lang,
+    ) -> String {
+        match self.step_href(x, reading, reference) {
+            Some(href) => format!(
+                " <a href=\"{}\">{}</a>",
+                esc(&href),
+                esc(&Page::SeeStep {
+                    reference: reference.to_owned()
+                }
+                .text(lang))
+            ),
+            None => String::new(),
+        }
+    }
+
+    /// Where [`Links::step`] links to, if a step of the part applies `reference`.
+    fn step_href(
+        &self,
+        x: &Explanation,
+        reading: Option<crate::solve::ReadingCode>,
+        reference: &str,
+    ) -> Option<String> {
+        let part = x.parts.iter().position(|p| p.reading == reading)?;
+        let anchor = Ref::anchor_of(reference)?;
+        step_anchor(x, self.index, part, &anchor).map(|id| self.href(&id))
+    }
+}
+
+/// The likely intended reading of `x`, the part a slip made in it departs in.
+fn intended(x: &Explanation) -> Option<crate::solve::ReadingCode> {
+    x.parts
+        .iter()
+        .filter_map(|p| p.reading)
+        .find(|r| r.likely_intended())
+}
+
+fn triple(v: [f64; 3]) -> String {
+    format!("({}, {}, {})", num(v[0]), num(v[1]), num(v[2]))
+}
+
+/// A colour on `scale` as 8 bits for a swatch (clamped to [0, 1] first).
+fn rgb8(v: [f64; 3], scale: Scale) -> [u8; 3] {
+    v.map(|x| ((x / scale.factor()).clamp(0.0, 1.0) * 255.0).round() as u8)
+}
+
+/// A colour as a swatch with its numbers and a caption, the swatch named for a reader that does
+/// not see it.
+fn colour_figure(caption: &str, v: [f64; 3], scale: Scale, note: &str, lang: Lang) -> String {
+    let shown = triple(v);
+    let alt = format!("{caption}: {shown}");
+    let _ = lang;
+    format!(
+        "<figure class=\"colour\">{}<figcaption><strong>{}</strong> {}<br><small>{}</small>\
+         </figcaption></figure>\n",
+        swatch(rgb8(v, scale), "big", &alt),
+        esc(caption),
+        esc(&shown),
+        esc(note)
+    )
+}
+
+fn capitalised(s: &str) -> String {
+    let mut c = s.chars();
+    c.next()
+        .map_or(String::new(), |f| f.to_uppercase().chain(c).collect())
+}
+
+/// The verdict on one judged answer, as an HTML fragment (the module's notes). The verdict's
+/// code and the slips' codes (each diagnosis's `slips`, joined by `+`) are in `data-`
+/// attributes, as `phong check --format json` names them.
+pub(crate) fn answer_fragment(
+    c: &Checked,
+    j: &Judged,
+    x: Option<&Explanation>,
+    links: Links<'_>,
+    lang: Lang,
+) -> String {
+    let v = &j.verdict;
+    let class = match (v.kind, v.accepted) {
+        (VerdictKind::Right, _) => "right",
+        (VerdictKind::Reading, true) => "reading",
+        _ => "wrong",
+    };
+    let codes: Vec<String> = v
+        .diagnosis
+        .iter()
+        .map(|d| {
+            d.slips
+                .iter()
+                .map(|s| s.code())
+                .collect::<Vec<_>>()
+                .join("+")
+        })
+        .collect();
+    let mut out = format!(
+        "<div class=\"verdict {class}\" data-verdict=\"{}\" data-slips=\"{}\">\n\
+         <p class=\"headline\">{}</p>\n<p class=\"credit\">{}: {}</p>\n",
+        crate::check::report::verdict_code(v.kind),
+        esc(&codes.join(" ")),
+        esc(&capitalised(said::verdict(v.kind, v.accepted, lang))),
+        esc(&capitalised(said::line(Line::Credit, lang))),
+        esc(&said::Credit::of(j.credit, j.policy.as_deref()).text(lang))
+    );
+    let scale = j.answer.scale;
+    // The two colours side by side.
+    out.push_str("<div class=\"colours\">\n");
+    match j.answer.values {
+        Some(values) => {
+            let note = if j.as_8bit {
+                said::read_as_8bit(lang).to_owned()
+            } else {
+                said::per_channel(scale, lang).to_owned()
+            };
+            out.push_str(&colour_figure(
+                &Page::YourAnswer.text(lang),
+                values,
+                scale,
+                &note,
+                lang,
+            ));
+        }
+        None => {
+            let _ = writeln!(
+                out,
+                "<p><strong>{}</strong> {}</p>",
+                esc(&Page::YourAnswer.text(lang)),
+                esc(said::no_hit_answer(lang))
+            );
+        }
+    }
+    match (&v.comparison, v.has_colour) {
+        (Some(cmp), _) => out.push_str(&colour_figure(
+            &Page::Expected.text(lang),
+            cmp.expected,
+            scale,
+            &said::expected_source(v.compared_reading, cmp.against, lang),
+            lang,
+        )),
+        (None, Some((colour, ray))) => out.push_str(&colour_figure(
+            &Page::Expected.text(lang),
+            colour,
+            scale,
+            said::has_colour(ray, lang),
+            lang,
+        )),
+        (None, None) => {
+            let _ = writeln!(
+                out,
+                "<p><strong>{}</strong> {}</p>",
+                esc(&Page::Expected.text(lang)),
+                esc(said::nothing_to_shade(lang))
+            );
+        }
+    }
+    out.push_str("</div>\n");
+    // The difference per channel against the tolerance.
+    if let (Some(cmp), Some(values)) = (&v.comparison, j.answer.values) {
+        let _ = writeln!(
+            out,
+            "<table class=\"channels\">\n<caption>{}</caption>\n<tr><th scope=\"col\">{}</th>\
+             <th scope=\"col\">{}</th><th scope=\"col\">{}</th><th scope=\"col\">{}</th>\
+             <th scope=\"col\">{}</th></tr>",
+            esc(&Page::ChannelsCaption {
+                tolerance: crate::text::Num(j.tolerance),
+                scale: said::per_channel(scale, lang).to_owned(),
+            }
+            .text(lang)),
+            esc(&Page::Channel.text(lang)),
+            esc(&Page::YourAnswer.text(lang)),
+            esc(&Page::Expected.text(lang)),
+            esc(&capitalised(said::line(Line::Difference, lang))),
+            esc(&Page::Judged.text(lang)),
+        );
+        for (k, name) in ["R", "G", "B"].iter().enumerate() {
+            let d = cmp.difference[k];
+            let within = d.abs() <= j.tolerance * (1.0 + 1e-9) + 1e-12;
+            let (class, word) = if within {
+                ("within", Page::Within.text(lang))
+            } else {
+                ("outside", Page::Outside.text(lang))
+            };
+            let signed = if d > 0.0 && num(d) != "0" {
+                format!("+{}", num(d))
+            } else {
+                num(d)
+            };
+            let _ = writeln!(
+                out,
+                "<tr><th scope=\"row\">{name}</th><td>{}</td><td>{}</td><td>{}</td>\
+                 <td class=\"{class}\">{}</td></tr>",
+                esc(&num(values[k])),
+                esc(&num(cmp.expected[k])),
+                esc(&signed),
+                esc(&word)
+            );
+        }
+        out.push_str("</table>\n");
+    }
+    // What the answer matches, each with its colour and where it departs.
+    let mut items: Vec<String> = Vec::new();
+    if let Some(r) = &v.reading {
+        let likely = v.kind == VerdictKind::Reading;
+        let link = x.map_or(String::new(), |x| links.part(x, Some(r.code), lang));
+        items.push(format!(
+            "{}{link}",
+            esc(&said::matches_reading(r.code, likely, lang))
+        ));
+    }
+    if let Some(colour) = v.background {
+        items.push(esc(&said::background(colour, lang)));
+    }
+    if v.kind == VerdictKind::Wrong {
+        if !v.diagnosis.is_empty() {
+            for d in &v.diagnosis {
+                let mut text = said::slips(&d.mistakes(), lang);
+                let reading = if d.intended.is_empty() {
+                    None
+                } else {
+                    text = format!("{text} ({})", said::in_intended_reading(lang));
+                    x.and_then(intended)
+                };
+                let links_html: String = x.map_or(String::new(), |x| {
+                    d.mistakes()
+                        .iter()
+                        .map(|s| links.step(x, reading, s.reference(), lang))
+                        .collect()
+                });
+                items.push(format!(
+                    "{} {}{links_html}",
+                    swatch(
+                        rgb8(d.comparison.expected, scale),
+                        "sw",
+                        &triple(d.comparison.expected)
+                    ),
+                    esc(&format!("{text}: {}", triple(d.comparison.expected)))
+                ));
+            }
+        } else if j.answer.values.is_some() && !v.looks_8bit && v.background.is_none() {
+            items.push(esc(said::no_diagnosis(lang)));
+        }
+        if v.looks_8bit {
+            items.push(esc(said::looks_8bit(lang)));
+        }
+        if let Some(n) = &v.nearest {
+            let sentence = said::nearest(&n.candidate, n.comparison.distance(), j.tolerance, lang);
+            let link = x.map_or(String::new(), |x| match &n.candidate {
+                Candidate::Written => links.part(x, None, lang),
+                Candidate::Reading(code, _) => links.part(x, Some(*code), lang),
+                Candidate::Slips { slips, intended: i } => {
+                    let reading = if i.is_empty() { None } else { intended(x) };
+                    slips
+                        .iter()
+                        .filter(|s| !i.contains(s))
+                        .map(|s| links.step(x, reading, s.reference(), lang))
+                        .collect()
+                }
+            });
+            items.push(format!(
+                "{} {}{link}",
+                swatch(
+                    rgb8(n.comparison.expected, scale),
+                    "sw",
+                    &triple(n.comparison.expected)
+                ),
+                esc(&format!("{sentence}: {}", triple(n.comparison.expected)))
+            ));
+        }
+    }
+    if v.comparison
+        .is_some_and(|c| c.within && c.against == crate::check::Against::Unclamped)
+    {
+        items.push(esc(said::unclamped_note(lang)));
+    }
+    if !items.is_empty() {
+        let _ = writeln!(
+            out,
+            "<p>{}</p>\n<ul class=\"matches\">",
+            esc(&Page::WhatItMatches.text(lang))
+        );
+        for i in items {
+            let _ = writeln!(out, "<li>{i}</li>");
+        }
+        out.push_str("</ul>\n");
+    }
+    let _ = c;
+    out.push_str("</div>\n");
+    out
+}
+
+/// The steps judged, as an HTML fragment: a table (the quantity, linked to its step in the
+/// solution; the value given; the verdict with its equation and what the value is), the first
+/// wrong step marked, then a sentence on it, and the tolerance.
+pub(crate) fn steps_fragment(
+    j: &StepsJudged,
+    x: Option<&Explanation>,
+    links: Links<'_>,
+    lang: Lang,
+) -> String {
+    let overall = steps::overall(j);
+    let mut out = format!(
+        "<div class=\"verdict step-check {overall}\" data-verdict=\"{overall}\">\n\
+         <p class=\"headline\">{}</p>\n<table class=\"judged\">\n<tr><th scope=\"col\">{}</th>\
+         <th scope=\"col\">{}</th><th scope=\"col\">{}</th></tr>\n",
+        esc(&capitalised(said::steps_heading(lang))),
+        esc(&Page::Quantity.text(lang)),
+        esc(&Page::YourValue.text(lang)),
+        esc(&Page::Judged.text(lang)),
+    );
+    for (k, s) in j.steps.iter().enumerate() {
+        let class = match s.verdict {
+            StepVerdict::Right => "right",
+            StepVerdict::Reading => "reading",
+            StepVerdict::Wrong => "wrong",
+        };
+        let first = j.first_wrong == Some(k);
+        let row_class = if first { " class=\"first-wrong\"" } else { "" };
+        let reading = s.expected_from_reading;
+        let equation = steps::equation(&s.expected, lang);
+        let name = format!("<code>{}</code>", esc(&s.label()));
+        let name = match x.and_then(|x| links.step_href(x, reading, &equation)) {
+            Some(href) => format!("<a href=\"{}\">{name}</a>", esc(&href)),
+            None => name,
+        };
+        let mark = if first {
+            format!(" <strong>({})</strong>", esc(&Page::FirstWrong.text(lang)))
+        } else {
+            String::new()
+        };
+        let _ = writeln!(
+            out,
+            "<tr{row_class} data-step=\"{}\" data-verdict=\"{}\"><th scope=\"row\">{name}</th>\
+             <td>{}</td><td class=\"{class}\">{}{mark}</td></tr>",
+            esc(&s.label()),
+            s.verdict.code(),
+            esc(&s.given.value.text()),
+            esc(&steps::step_message(s, lang))
+        );
+    }
+    out.push_str("</table>\n");
+    let closing = match j.first_wrong {
+        Some(k) => {
+            let s = &j.steps[k];
+            said::first_wrong(
+                &s.label(),
+                &steps::equation(&s.expected, lang),
+                s.verdict == StepVerdict::Reading,
+                lang,
+            )
+        }
+        None => said::all_steps_right(lang).to_owned(),
+    };
+    let _ = writeln!(
+        out,
+        "<p>{}</p>\n<p class=\"help\">{}</p>\n</div>",
+        esc(&closing),
+        esc(&said::step_tolerance(
+            steps::STEP_RELATIVE,
+            steps::STEP_ABSOLUTE,
+            lang
+        ))
+    );
+    out
+}
+
+/// What could not be checked, as an HTML fragment.
+pub(crate) fn cannot_fragment(messages: &[&crate::text::Said], lang: Lang) -> String {
+    let mut out = format!(
+        "<div class=\"verdict invalid\">\n<p class=\"headline\">{}</p>\n<ul class=\"errors\">\n",
+        esc(&Page::CannotCheck.text(lang))
+    );
+    for m in messages {
+        let _ = writeln!(out, "<li>{}</li>", esc(&m.text(lang)));
+    }
+    out.push_str("</ul>\n</div>\n");
+    out
+}
+
+/// The page of a run's checks.
+pub(crate) struct HtmlWriter {
+    lang: Lang,
+    body: String,
+    index: usize,
+}
+
+impl HtmlWriter {
+    pub(crate) fn new(lang: Lang) -> Self {
+        HtmlWriter {
+            lang,
+            body: String::new(),
+            index: 0,
+        }
+    }
+}
+
+impl Writer for HtmlWriter {
+    fn add(&mut self, answer: Option<&Checked>, steps: Option<&StepsChecked>) {
+        let lang = self.lang;
+        let file = answer
+            .map(|c| c.file.clone())
+            .or_else(|| steps.map(|s| s.file.clone()));
+        let Some(file) = file else { return };
+        let judged = answer.and_then(|c| c.outcome.as_ref().ok().map(|j| (c, j)));
+        let steps_judged = steps.and_then(|s| s.outcome.as_ref().ok());
+        // Nothing judged: the errors are on standard error, as in the text.
+        if judged.is_none() && steps_judged.is_none() {
+            return;
+        }
+        let x = crate::report::file::explain_source(
+            crate::problem::Source::File(std::path::Path::new(&file)),
+            crate::core::Precision::F64,
+            lang,
+        )
+        .ok();
+        let links = Links {
+            index: self.index,
+            base: "",
+        };
+        let _ = writeln!(
+            self.body,
+            "<article class=\"checked\">\n<h1>{}</h1>\n<p class=\"source\">{}</p>",
+            esc(&x.as_ref().map_or_else(|| file.clone(), |x| x.title.clone())),
+            esc(&file)
+        );
+        if let Some(q) = x.as_ref().and_then(|x| x.question.as_deref()) {
+            let _ = writeln!(
+                self.body,
+                "<blockquote class=\"question\">{}</blockquote>",
+                esc(q)
+            );
+        }
+        let _ = writeln!(
+            self.body,
+            "<section class=\"verdicts\" role=\"status\" aria-label=\"{}\">",
+            esc(&Page::Verdict.text(lang))
+        );
+        if let Some((c, j)) = judged {
+            self.body
+                .push_str(&answer_fragment(c, j, x.as_ref(), links, lang));
+        }
+        if let Some(j) = steps_judged {
+            self.body
+                .push_str(&steps_fragment(j, x.as_ref(), links, lang));
+        }
+        self.body.push_str("</section>\n");
+        if let Some(x) = &x {
+            let _ = writeln!(
+                self.body,
+                "<section class=\"solution\" aria-label=\"{}\">",
+                esc(&Page::WorkedSolution.text(lang))
+            );
+            self.body
+                .push_str(&crate::report::html::write_parts(x, self.index, 2));
+            self.body.push_str("</section>\n");
+        }
+        self.body.push_str("</article>\n");
+        self.index += 1;
+    }
+
+    fn finish(self: Box<Self>) -> String {
+        if self.body.is_empty() {
+            return String::new();
+        }
+        crate::report::html::page_styled(
+            &esc(&Page::Verdict.text(self.lang)),
+            &format!("<main>\n{}</main>\n", self.body),
+            self.lang,
+            STYLE,
+        )
+    }
+}
