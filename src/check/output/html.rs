@@ -519,9 +519,13 @@ impl Writer for HtmlWriter {
             "<section class=\"verdicts\" role=\"status\" aria-label=\"{}\">",
             esc(&Page::Verdict.text(lang))
         );
-        if let Some((c, j)) = judged {
-            self.body
-                .push_str(&answer_fragment(c, j, x.as_ref(), links, lang));
+        match answer.map(|c| (c, &c.outcome)) {
+            Some((c, Ok(j))) => self
+                .body
+                .push_str(&answer_fragment(c, j, x.as_ref(), links, lang)),
+            // The steps were judged, the answer given with them could not be: say why here too.
+            Some((_, Err(f))) => self.body.push_str(&cannot_fragment(&[&f.message], lang)),
+            None => {}
         }
         if let Some(j) = steps_judged {
             self.body
