@@ -22,7 +22,8 @@ fn exercises() -> tempfile::TempDir {
     dir
 }
 
-/// Rows of every kind (student names a..o in order), with bad UTF-8 in row "h".
+/// Rows of every kind (student names a..o in order), with a byte that is not UTF-8 in row "h"
+/// (0xFF: the whole file is then read as Windows-1252, where it is "ÿ").
 fn submissions() -> Vec<u8> {
     let mut csv = b"student,exercise,answer\n".to_vec();
     csv.extend_from_slice(
@@ -74,23 +75,7 @@ fn every_row_appears_once_in_input_order_whatever_is_wrong_with_it() {
     let students: Vec<String> = rows.iter().map(|r| r[2].to_owned()).collect();
     assert_eq!(
         students,
-        [
-            "a",
-            "b",
-            "c",
-            "d",
-            "e",
-            "f",
-            "g",
-            "h\u{FFFD}",
-            "i",
-            "j",
-            "k",
-            "l",
-            "m",
-            "n",
-            "o"
-        ]
+        ["a", "b", "c", "d", "e", "f", "g", "hÿ", "i", "j", "k", "l", "m", "n", "o"]
     );
     let numbers: Vec<String> = rows.iter().map(|r| r[0].to_owned()).collect();
     let expected: Vec<String> = (1..=15).map(|i| i.to_string()).collect();
@@ -99,7 +84,7 @@ fn every_row_appears_once_in_input_order_whatever_is_wrong_with_it() {
     assert_eq!(
         verdicts,
         [
-            "right", "wrong", "reading", "reading", "invalid", "invalid", "invalid", "invalid",
+            "right", "wrong", "reading", "reading", "invalid", "invalid", "invalid", "right",
             "invalid", "invalid", "invalid", "invalid", "right", "wrong", "wrong"
         ]
     );
@@ -111,7 +96,8 @@ fn every_row_appears_once_in_input_order_whatever_is_wrong_with_it() {
         reason(5)
     );
     assert!(reason(6).contains("2 fields"), "{}", reason(6));
-    assert!(reason(7).contains("not valid UTF-8"), "{}", reason(7));
+    // Issue 29: no row is invalid for its encoding alone.
+    assert_eq!(reason(7), "");
     assert!(reason(8).contains("unknown exercise"), "{}", reason(8));
     assert!(reason(9).contains("broken.json"), "{}", reason(9));
     assert!(reason(10).contains("cannot be read"), "{}", reason(10));
@@ -160,11 +146,12 @@ fn the_json_report_has_the_rows_and_a_summary_per_exercise() {
         serde_json::json!(["normal_reversed"])
     );
     assert_eq!(s42["slips"][0]["count"], 2);
-    // 4.1's rows: a, f, g, h, k, m and o, whose "4.1.json" names the same exercise.
+    // 4.1's rows: a, f, g, h, k, m and o, whose "4.1.json" names the same exercise; f, g and k
+    // are invalid (h, read as Windows-1252, is right).
     let s41 = of("4.1");
     assert_eq!(
         (s41["rows"].as_u64(), s41["invalid"].as_u64()),
-        (Some(7), Some(4))
+        (Some(7), Some(3))
     );
     assert!(summary.iter().all(|s| s["exercise"] != "4.1.json"));
     // Every row is counted once in the summary.
@@ -728,4 +715,48 @@ fn a_large_class_is_graded_in_bounded_memory_in_every_format() {
         };
         assert!(lines >= least, "{format}: {lines} lines for {rows} rows");
     }
+}
+
+// Issue 29: Excel in Brazil saves "CSV" in Windows-1252. "João" is then the bytes 4A 6F E3 6F
+// (ã = 0xE3) and "Conceição" has ç = 0xE7 and ã = 0xE3: no UTF-8 text holds them. The file is
+// read as Windows-1252, the names come through whole, the rows are graded as any other, and
+// standard error says once which encoding was assumed, naming the file.
+#[test]
+fn a_windows_1252_class_file_keeps_every_name() {
+    let dir = exercises();
+    let input = tempfile::NamedTempFile::new().unwrap();
+    std::fs::write(
+        input.path(),
+        b"aluno;exercicio;resposta\r\nJo\xe3o;4.1;0,5 0,7 0,3\r\nConcei\xe7\xe3o;4.2;0 0 0\r\n\
+          Jos\xe9;4.1;abc\r\n",
+    )
+    .unwrap();
+    let out = phong()
+        .arg("grade")
+        .arg(input.path())
+        .arg("--exercises")
+        .arg(dir.path())
+        .args(["--lang", "en"])
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(0));
+    let mut r = csv::Reader::from_reader(&out.stdout[..]);
+    let rows: Vec<csv::StringRecord> = r.records().map(Result::unwrap).collect();
+    let got: Vec<(&str, &str)> = rows.iter().map(|r| (&r[2], &r[5])).collect();
+    assert_eq!(
+        got,
+        [
+            ("João", "right"),
+            ("Conceição", "right"),
+            ("José", "invalid")
+        ]
+    );
+    // José's row is invalid for its answer, not its encoding.
+    assert!(rows[2][17].contains("\"abc\""), "{}", &rows[2][17]);
+    let err = String::from_utf8(out.stderr).unwrap();
+    let warning = format!(
+        "warning: {}: the file is not UTF-8: it was read as Windows-1252",
+        input.path().display()
+    );
+    assert_eq!(err.matches(&warning).count(), 1, "{err}");
 }

@@ -436,7 +436,23 @@ pub fn decode(bytes: &[u8]) -> Cow<'_, [u8]> {
             return Cow::Owned(text.into_owned().into_bytes());
         }
     }
+    if windows_1252(bytes) {
+        let (text, _) = encoding_rs::WINDOWS_1252.decode_without_bom_handling(bytes);
+        return Cow::Owned(text.into_owned().into_bytes());
+    }
     Cow::Borrowed(bytes)
+}
+
+/// Whether [`decode`] reads `bytes` as Windows-1252: they have no byte order mark and are not
+/// UTF-8. Excel in Brazil saves "CSV" in Windows-1252 (a superset of Latin-1) unless told "CSV
+/// UTF-8": `João` is the bytes `4A 6F E3 6F`, which no UTF-8 text holds, and every byte has a
+/// Windows-1252 character, so a name comes through whole and no row is invalid for its
+/// encoding alone. The command line says once which encoding it assumed.
+pub fn windows_1252(bytes: &[u8]) -> bool {
+    let bom = [&b"\xEF\xBB\xBF"[..], b"\xFF\xFE", b"\xFE\xFF"]
+        .iter()
+        .any(|b| bytes.starts_with(b));
+    !bom && std::str::from_utf8(bytes).is_err()
 }
 
 /// The lines of `text`, each with its number (from 1): a line ends at `\n`, `\r\n` or a lone

@@ -878,3 +878,17 @@ crate::messages! {
         WorkedSolution => "Worked solution", "Solução comentada";
     }
 }
+
+crate::messages! {
+    /// What `phong grade` says of the submissions' encoding, once, on standard error.
+    #[allow(missing_docs)]
+    pub enum Encoding {
+        /// Not UTF-8 and no byte order mark: read as Windows-1252.
+        Windows1252 =>
+            "the file is not UTF-8: it was read as Windows-1252 (Latin-1), the \"CSV\" of Excel \
+             in Brazil, so accented names come through; to avoid this, save as \"CSV UTF-8\"",
+            "o arquivo não é UTF-8: foi lido como Windows-1252 (Latin-1), o \"CSV\" do Excel \
+             no Brasil, então os nomes acentuados chegam inteiros; para evitar isto, salve como \
+             \"CSV UTF-8\"";
+    }
+}

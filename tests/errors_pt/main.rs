@@ -531,7 +531,7 @@ fn clap_usage_errors_are_said_in_portuguese() {
             vec!["check", "exercises/4.1.json", "--lang=pt", "--format"],
             format!(
                 "erro: '--format <FORMAT>' precisa de um valor, e nenhum foi dado\n  [valores \
-                 possíveis: text, json]{MORE}"
+                 possíveis: text, json, html, markdown]{MORE}"
             ),
         ),
         // ValueValidation: phong's own parser's reason, in Portuguese.

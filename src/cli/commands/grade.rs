@@ -96,6 +96,14 @@ pub(crate) fn run(args: &GradeArgs) -> Result<Exit, CliError> {
         questions: args.questions.clone(),
     };
     let bytes = check::grade::read_submissions(&args.submissions, &options)?;
+    if check::grade::windows_1252(&bytes) {
+        let said = check::messages::Encoding::Windows1252;
+        error::warn_in(
+            &args.submissions,
+            &crate::text::Message::text(&said, args.lang),
+            args.lang,
+        );
+    }
     // Each row is graded once to count the students' answers, then again as it is written: the
     // reports are written one row at a time, never whole in memory.
     let graded = check::grade::Graded::new(&bytes, &options);
