@@ -22,8 +22,8 @@ use std::path::{Path, PathBuf};
 
 use serde::Serialize;
 
-use super::report::{scale_number, verdict_code, CHECK_FORMAT_VERSION};
 use super::policy::{Duplicates, Policy};
+use super::report::{scale_number, verdict_code, CHECK_FORMAT_VERSION};
 use super::steps::{self, StepsExpected, StepsOut};
 use super::{answer, judge, messages, Expected, Scale, Slip, Verdict, VerdictKind};
 use crate::solve::ReadingCode;
@@ -1123,8 +1123,11 @@ impl<'a> Graded<'a> {
                 let winner = self.groups[g as usize].winner as usize;
                 if winner != i {
                     r.counted = false;
-                    let note =
-                        messages::not_counted(winner + 1, self.options.policy.duplicates.word(), lang);
+                    let note = messages::not_counted(
+                        winner + 1,
+                        self.options.policy.duplicates.word(),
+                        lang,
+                    );
                     r.feedback.insert_str(0, &note);
                 }
             }

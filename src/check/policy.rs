@@ -35,7 +35,15 @@ pub const DEFAULT_READING_CREDIT: f64 = 0.5;
 
 /// How answers written without a scale whose numbers look like 8-bit values are judged.
 #[derive(
-    Clone, Copy, Debug, Default, PartialEq, Eq, serde::Serialize, serde::Deserialize, clap::ValueEnum,
+    Clone,
+    Copy,
+    Debug,
+    Default,
+    PartialEq,
+    Eq,
+    serde::Serialize,
+    serde::Deserialize,
+    clap::ValueEnum,
 )]
 #[serde(rename_all = "lowercase")]
 pub enum EightBit {
@@ -83,7 +91,10 @@ impl Default for Policy {
             strict: false,
             reading_credit: DEFAULT_READING_CREDIT,
             eight_bit: EightBit::Read,
-            no_hit: answer::NO_HIT_WORDS.iter().map(|w| (*w).to_owned()).collect(),
+            no_hit: answer::NO_HIT_WORDS
+                .iter()
+                .map(|w| (*w).to_owned())
+                .collect(),
             points: BTreeMap::new(),
             default_points: 1.0,
             duplicates: Duplicates::Last,
@@ -414,7 +425,15 @@ pub fn credit(c: f64) -> Result<f64, PolicyError> {
 
 /// Which of a student's answers to one exercise counts when there are several.
 #[derive(
-    Clone, Copy, Debug, Default, PartialEq, Eq, clap::ValueEnum, serde::Serialize, serde::Deserialize,
+    Clone,
+    Copy,
+    Debug,
+    Default,
+    PartialEq,
+    Eq,
+    clap::ValueEnum,
+    serde::Serialize,
+    serde::Deserialize,
 )]
 #[serde(rename_all = "lowercase")]
 pub enum Duplicates {
@@ -437,4 +456,3 @@ impl Duplicates {
         }
     }
 }
-

@@ -15,6 +15,7 @@ pub mod io;
 pub mod lang;
 pub mod message;
 pub mod number;
+pub mod xml;
 
 pub use io::IoCause;
 pub use lang::Lang;
