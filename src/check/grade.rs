@@ -864,7 +864,7 @@ impl<'a> Graded<'a> {
                 options.questions.clone()
             };
             forced = Some(b',');
-            match super::moodle::to_rows(&decoded, &questions) {
+            match super::moodle::to_rows(&decoded, &questions, options.delimiter) {
                 Ok(rows) => Cow::Owned(rows),
                 Err(why) => {
                     refused = Some(Reason::from(why));
