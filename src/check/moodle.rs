@@ -142,9 +142,14 @@ messages! {
     }
 }
 
-/// One CSV field written for [`super::grade`]'s reader: quoted, `""` for a quote.
+/// One CSV field written for [`super::grade`]'s reader: quoted, `""` for a quote, and its
+/// line breaks as spaces (a response typed on several lines), since that reader's row is one
+/// line.
 fn quoted(text: &str) -> String {
-    format!("\"{}\"", text.replace('"', "\"\""))
+    format!(
+        "\"{}\"",
+        text.replace('"', "\"\"").replace(['\r', '\n'], " ")
+    )
 }
 
 /// What the CSV reader found wrong: text that is not UTF-8 (the reader's only error on text in
@@ -426,5 +431,12 @@ mod tests {
             "student,exercise,answer\n\"ana@x.br\",\"4.1\",\"0.52 0.03 0\"\n"
         );
         assert!(to_rows(csv.as_bytes(), &["4.1".into()], None).is_ok());
+        // A response on several lines is one row, its line breaks spaces.
+        let csv = "Email address,Response 1\nana@x.br,\"0.5\r\n0.7\n0.3\"\n";
+        let rows = to_rows(csv.as_bytes(), &["4.1".into()], None).unwrap();
+        assert_eq!(
+            String::from_utf8(rows).unwrap(),
+            "student,exercise,answer\n\"ana@x.br\",\"4.1\",\"0.5  0.7 0.3\"\n"
+        );
     }
 }
