@@ -13,6 +13,7 @@
 
 pub mod io;
 pub mod lang;
+pub mod memory;
 pub mod message;
 pub mod number;
 pub mod xml;
