@@ -113,6 +113,78 @@ fn an_unterminated_quote_is_its_own_row_and_eats_nothing() {
     assert!(reason.contains("quote"), "{reason}");
 }
 
+/// The students of a report, in order.
+fn students(report: &Report) -> Vec<&str> {
+    report.students.iter().map(|s| s.student.as_str()).collect()
+}
+
+/// Issue 30, item 8: `"s⏎2",4.1,…` is a quoted cell holding a line break (RFC 4180 allows it;
+/// a spreadsheet writes one for a cell typed with Alt+Enter). A row is one line, so neither line
+/// is a row: both are invalid, each with its reason, and the second line's `2"` is no student.
+/// Every line that holds data is still one row of the report (3 lines in, 3 rows out).
+#[test]
+fn a_quoted_line_break_invents_no_student() {
+    let csv = format!("\"s\n2\",4.1,{RIGHT}\ns3,4.1,{RIGHT}\n");
+    let r = grade(csv.as_bytes());
+    assert_eq!(
+        summary(&r),
+        [
+            row(1, "", "invalid"),
+            row(2, "", "invalid"),
+            row(3, "s3", "right")
+        ]
+    );
+    assert_eq!(students(&r), ["s3"]);
+    let reason = |i: usize| r.rows[i].reason.as_ref().unwrap().to_string();
+    // Line 1 says its cell holds a line break that closes on line 2; line 2 that it is the rest
+    // of line 1's field 1.
+    assert!(
+        reason(0).contains("line break") && reason(0).contains("line 2"),
+        "{}",
+        reason(0)
+    );
+    assert!(reason(1).contains("field 1 of line 1"), "{}", reason(1));
+    assert!(!r.rows[1].counted);
+
+    // In the answer, with CRLF and a blank line inside the cell: the student of line 1 is read
+    // (the cells before the broken one are whole); the blank line is no row; line 4 is a row.
+    let csv = format!("s1,4.1,\"0.5\r\n\r\n0.7 0.3\"\r\ns2,4.1,{RIGHT}\r\n");
+    let r = grade(csv.as_bytes());
+    assert_eq!(
+        summary(&r),
+        [
+            row(1, "s1", "invalid"),
+            row(3, "", "invalid"),
+            row(4, "s2", "right")
+        ]
+    );
+    assert_eq!(students(&r), ["s1", "s2"]);
+}
+
+/// A quote left alone in a field that does not start with one (what is left of a cell cut by
+/// a line break, when its first line is gone) makes the line invalid, its student not read.
+#[test]
+fn a_stray_quote_invents_no_student() {
+    let csv = format!("s1,4.1,{RIGHT}\n2\",4.1,{RIGHT}\ns3,4.1,0.5\" 0.7 0.3\n");
+    let r = grade(csv.as_bytes());
+    assert_eq!(
+        summary(&r),
+        [
+            row(1, "s1", "right"),
+            row(2, "", "invalid"),
+            row(3, "s3", "invalid")
+        ]
+    );
+    assert_eq!(students(&r), ["s1", "s3"]);
+    for i in [1, 2] {
+        let reason = r.rows[i].reason.as_ref().unwrap().to_string();
+        assert!(reason.contains("quote"), "{reason}");
+    }
+    // Quotes that pair up inside a field are kept as written (a formula's, a nickname's).
+    let r = grade(format!("ana \"a\" b,4.1,{RIGHT}\n").as_bytes());
+    assert_eq!(summary(&r), [row(1, "ana \"a\" b", "right")]);
+}
+
 #[test]
 fn text_after_a_closing_quote_is_refused_not_glued_on() {
     let r = grade(format!("\"s2\"x,4.1,{RIGHT}\n").as_bytes());

@@ -586,6 +586,81 @@ fn moodle_4_responses_are_read_in_both_languages() {
     }
 }
 
+/// `text` (a CSV separated by commas) as a spreadsheet saves it again with `delimiter`: each
+/// field quoted only where it must be (it holds the separator, a quote or a line end), lines
+/// ended by CRLF, as Excel writes "CSV (separado por ponto e vírgula)" on a pt-BR system and
+/// "Texto (separado por tabulações)".
+fn resaved(text: &str, delimiter: u8) -> Vec<u8> {
+    let mut reader = csv::ReaderBuilder::new()
+        .has_headers(false)
+        .flexible(true)
+        .from_reader(text.as_bytes());
+    let mut writer = csv::WriterBuilder::new()
+        .delimiter(delimiter)
+        .flexible(true)
+        .quote_style(csv::QuoteStyle::Necessary)
+        .terminator(csv::Terminator::CRLF)
+        .from_writer(Vec::new());
+    for record in reader.records() {
+        writer.write_record(&record.unwrap()).unwrap();
+    }
+    writer.into_inner().unwrap()
+}
+
+/// Issue 30, item 7: Moodle 4.x's Responses export re-saved with `;` (Excel in pt-BR, where
+/// the decimal comma takes `,`) or with tabs is read as the export itself: every response but
+/// "-" one row (8 rows in, 8 out: Ana 3, Rui 2, his 4.3 being "-", Caio 3), with the verdicts
+/// and points reasoned in [`moodle_4_responses_are_read_in_both_languages`].
+#[test]
+fn moodle_responses_resaved_with_semicolons_or_tabs_keep_every_row() {
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data");
+    for file in ["moodle-responses-en.csv", "moodle-responses-pt.csv"] {
+        let original = std::fs::read_to_string(dir.join(file)).unwrap();
+        for (delimiter, name) in [(b';', "semicolons"), (b'\t', "tabs")] {
+            let text = resaved(&original, delimiter);
+            // The re-saved file really is separated by `delimiter`: no comma outside a field
+            // that holds a decimal comma or a date.
+            assert!(text.contains(&delimiter), "{file} with {name}");
+            let input = tempfile::NamedTempFile::new().unwrap();
+            std::fs::write(input.path(), &text).unwrap();
+            for extra in [&[][..], &["--input", "moodle"]] {
+                let mut args = vec!["--format", "json"];
+                args.extend_from_slice(extra);
+                let out = grade(input.path(), &args);
+                assert_eq!(out.status.code(), Some(0), "{file} with {name}");
+                let report: Value = serde_json::from_slice(&out.stdout).unwrap();
+                let got: Vec<(&str, &str, &str, f64)> = report["rows"]
+                    .as_array()
+                    .unwrap()
+                    .iter()
+                    .map(|r| {
+                        (
+                            r["student"].as_str().unwrap(),
+                            r["exercise"].as_str().unwrap(),
+                            r["verdict"].as_str().unwrap(),
+                            r["points"].as_f64().unwrap(),
+                        )
+                    })
+                    .collect();
+                assert_eq!(
+                    got,
+                    [
+                        ("ana@ufms.br", "4.1", "right", 1.0),
+                        ("ana@ufms.br", "4.2", "right", 2.0),
+                        ("ana@ufms.br", "4.3", "right", 3.0),
+                        ("rui@ufms.br", "4.1", "wrong", 0.0),
+                        ("rui@ufms.br", "4.2", "invalid", 0.0),
+                        ("caio@ufms.br", "4.1", "wrong", 0.0),
+                        ("caio@ufms.br", "4.2", "reading", 1.0),
+                        ("caio@ufms.br", "4.3", "right", 3.0),
+                    ],
+                    "{file} with {name} {extra:?}"
+                );
+            }
+        }
+    }
+}
+
 /// A class whose rows are not all answers the exercises judge (QA finding 3), `;` and decimal
 /// commas, graded with --points 4.1=1,4.2=2,4.3=3 (so the class's exercises are 4.1, 4.2, 4.3):
 /// line 2 is ana's 4.1 that her line 3 replaces (`--duplicates last`); line 4 names an exercise

@@ -5,8 +5,8 @@
 //! or UTF-16 with one; fields separated by `,`, `;` or tabs (detected, or `Options::delimiter`);
 //! lines ending in `\n`, `\r\n` or `\r`. A row is one line. Every line that holds data is one
 //! row of the report, exactly once, in input order: a malformed row (a quote not closed on its
-//! line, text after a closing quote, a wrong number of fields, bad UTF-8, a NUL byte, an empty
-//! field), an unknown exercise, a bad exercise file or an unreadable answer gets the verdict
+//! line, a line of a quoted cell holding a line break, a lone quote, text after a closing
+//! quote, a wrong number of fields, bad UTF-8, a NUL byte, an empty field), an unknown exercise, a bad exercise file or an unreadable answer gets the verdict
 //! `invalid` with the reason, and the batch goes on. A first line naming the three columns in
 //! English or Portuguese (`aluno;exercício;resposta`, in any order) is a header, not a row; it
 //! may name a fourth column, `steps` (`passos`), whose cell holds a row's step answers
@@ -483,8 +483,10 @@ pub fn lines(text: &[u8]) -> impl Iterator<Item = (u64, &[u8])> {
 /// The fields of one line separated by `delimiter`. A field may be quoted (`"0.5, 0.5, 0.5"`,
 /// `""` for a quote inside); a quote must close on its line (a row is one line: no answer
 /// spans lines), and nothing but spaces may follow a closing quote (`"s2"x` is refused, not read
-/// as `s2x`). A quote inside an unquoted field is kept as written. Empty fields after the third
-/// are dropped (a spreadsheet writes its empty columns as trailing separators).
+/// as `s2x`). Quotes that pair up inside an unquoted field are kept as written
+/// (`=HYPERLINK("x")`); a lone one (`2"`: the rest of a cell that a line break cut, or a typo)
+/// is refused. Empty fields after the third are dropped (a spreadsheet writes its empty columns
+/// as trailing separators).
 pub fn fields(line: &[u8], delimiter: u8) -> Result<Vec<Vec<u8>>, NotCsv> {
     let mut out: Vec<Vec<u8>> = Vec::new();
     let mut i = 0;
@@ -542,6 +544,11 @@ pub fn fields(line: &[u8], delimiter: u8) -> Result<Vec<Vec<u8>>, NotCsv> {
                 .iter()
                 .position(|&b| b == delimiter)
                 .map_or(line.len(), |p| i + p);
+            if line[i..end].iter().filter(|&&b| b == b'"').count() % 2 == 1 {
+                return Err(NotCsv::StrayQuote {
+                    field: out.len() + 1,
+                });
+            }
             out.push(line[i..end].to_vec());
             if end == line.len() {
                 break;
@@ -557,6 +564,52 @@ pub fn fields(line: &[u8], delimiter: u8) -> Result<Vec<Vec<u8>>, NotCsv> {
         out.pop();
     }
     Ok(out)
+}
+
+/// The most lines a quoted cell holding line breaks is looked for over: a quote left open
+/// that no quote closes within them is a quote left open, and the lines after it are rows.
+const CELL_LINES: u64 = 100;
+
+/// Where a quoted field left open at the end of a line closes, as RFC 4180 reads a quoted
+/// field holding line breaks: the number of line ends after the line (from 1) to the line whose
+/// quote closes it, when that quote is a field's end (spaces, then the separator or the line's
+/// end) within [`CELL_LINES`] lines. `rest` is the text after the line, from its line end.
+/// `None` when the first lone quote is not such an end (`"0,5 0,7` then `bia;4.1;"0,5 …"`: a
+/// quote left open, and a later row's quoted field) or there is none.
+///
+/// phong does not read such a cell as part of its row (a row is one line: docs on `fields`);
+/// it finds the lines the cell spans so that each is an invalid line that says so, and none is
+/// read as a row of its own (`"s⏎2",4.1,…` would make a student `2"`).
+fn cell_closes(rest: &[u8], delimiter: u8) -> Option<u64> {
+    let mut ends = 0u64;
+    let mut k = 0;
+    while k < rest.len() {
+        match rest[k] {
+            b'\r' | b'\n' => {
+                if rest[k] == b'\r' && rest.get(k + 1) == Some(&b'\n') {
+                    k += 1;
+                }
+                ends += 1;
+                if ends > CELL_LINES {
+                    return None;
+                }
+            }
+            b'"' if rest.get(k + 1) == Some(&b'"') => k += 1,
+            b'"' => {
+                let after = rest[k + 1..]
+                    .iter()
+                    .find(|&&b| b != b' ' && (b != b'\t' || delimiter == b'\t'));
+                return match after {
+                    None | Some(b'\r' | b'\n') => Some(ends),
+                    Some(&b) if b == delimiter => Some(ends),
+                    Some(_) => None,
+                };
+            }
+            _ => {}
+        }
+        k += 1;
+    }
+    None
 }
 
 /// A line with nothing in it: only spaces, or only separators and spaces (a spreadsheet's
@@ -855,6 +908,9 @@ pub struct Graded<'a> {
     refused: Option<Reason>,
     cache: std::cell::RefCell<Cache<'a>>,
     at: Vec<At>,
+    /// The rows (from 0, in order) that are the rest of a quoted cell of an earlier row's line
+    /// ([`cell_closes`]): each is invalid and no one's.
+    continues: Vec<u32>,
     groups: Vec<Group>,
     exercise_names: Vec<String>,
     students: Students,
@@ -881,7 +937,7 @@ impl<'a> Graded<'a> {
                 options.questions.clone()
             };
             forced = Some(b',');
-            match super::moodle::to_rows(&decoded, &questions) {
+            match super::moodle::to_rows(&decoded, &questions, options.delimiter) {
                 Ok(rows) => Cow::Owned(rows),
                 Err(why) => {
                     refused = Some(Reason::from(why));
@@ -902,6 +958,7 @@ impl<'a> Graded<'a> {
                 solved: BTreeMap::new(),
             }),
             at: Vec::new(),
+            continues: Vec::new(),
             groups: Vec::new(),
             exercise_names: Vec::new(),
             students: Students::default(),
@@ -933,9 +990,19 @@ impl<'a> Graded<'a> {
         let base = text.as_ptr() as usize;
         let mut at = Vec::new();
         let mut first = true;
+        // The last line of a quoted cell holding line breaks, opened on an earlier line.
+        let mut cell_until = 0;
         for (line, content) in lines(text) {
             if is_blank(content, d) {
                 continue;
+            }
+            let start = content.as_ptr() as usize - base;
+            if line <= cell_until {
+                self.continues.push(at.len() as u32);
+            } else if let Err(NotCsv::Unclosed { .. }) = fields(content, d) {
+                if let Some(k) = cell_closes(&text[start + content.len()..], d) {
+                    cell_until = line + k;
+                }
             }
             let mut group = 0;
             if std::mem::take(&mut first) {
@@ -954,7 +1021,7 @@ impl<'a> Graded<'a> {
                 }
             }
             at.push(At {
-                start: content.as_ptr() as usize - base,
+                start,
                 line,
                 len: u32::try_from(content.len()).unwrap_or(u32::MAX),
                 group,
@@ -1093,13 +1160,17 @@ impl<'a> Graded<'a> {
         let content = &self.text[at.start..at.start + at.len as usize];
         let d = self.delimiter;
         let cache = &mut *self.cache.borrow_mut();
-        match fields(content, d) {
+        match self.cell(i).map_or_else(|| fields(content, d), Err) {
             Ok(f) => grade_row(&mut row, &f, &self.layout, d, options, cache),
             Err(e) => {
                 // The student and the exercise as the line starts, so that the row stands under
                 // its student's exercise (in the totals and the platforms' reports) rather than
-                // leaving it unanswered.
-                let mut cells = content.split(|&b| b == d).map(unquote);
+                // leaving it unanswered: only the cells before the one that cannot be read,
+                // which are whole (`"s⏎2",…`'s second line is no student `2"`).
+                let mut cells = content
+                    .split(|&b| b == d)
+                    .map(unquote)
+                    .take(e.field().saturating_sub(1));
                 row.student = echo(cells.next().unwrap_or_default());
                 row.exercise = echo(cells.next().unwrap_or_default());
                 if let Some(point) = comma_exercise(&row.exercise, cache) {
@@ -1113,6 +1184,36 @@ impl<'a> Graded<'a> {
             }
         }
         row
+    }
+
+    /// Why row `i` is not read from its line alone, when its line is part of a quoted cell
+    /// holding line breaks ([`cell_closes`]): the rest of an earlier row's cell, or the line
+    /// that opens one.
+    fn cell(&self, i: usize) -> Option<NotCsv> {
+        let is_rest = |j: usize| self.continues.binary_search(&(j as u32)).is_ok();
+        let field_of = |j: usize| {
+            let at = self.at[j];
+            let content = &self.text[at.start..at.start + at.len as usize];
+            match fields(content, self.delimiter) {
+                Err(NotCsv::Unclosed { field }) => field,
+                _ => 1,
+            }
+        };
+        if is_rest(i) {
+            let opener = (0..i).rev().find(|&j| !is_rest(j))?;
+            return Some(NotCsv::Continues {
+                field: field_of(opener),
+                line: self.at[opener].line,
+            });
+        }
+        if !is_rest(i + 1) {
+            return None;
+        }
+        let last = (i + 1..self.at.len()).take_while(|&j| is_rest(j)).last()?;
+        Some(NotCsv::LineBreak {
+            field: field_of(i),
+            last: self.at[last].line,
+        })
     }
 
     /// The number of rows.

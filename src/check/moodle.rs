@@ -12,6 +12,9 @@
 //! slot N is the N-th of the exercises given (`--questions 4.1,4.2,4.3`; by default the
 //! exercise files of the folder in name order). A response "-" or empty (not answered) and the
 //! report's "Overall average" line are not rows.
+//!
+//! The export is separated by commas as Moodle writes it, or by `;` or tabs where a spreadsheet
+//! saved it again ([`delimiter`]).
 
 use std::fmt;
 
@@ -139,9 +142,14 @@ messages! {
     }
 }
 
-/// One CSV field written for [`super::grade`]'s reader: quoted, `""` for a quote.
+/// One CSV field written for [`super::grade`]'s reader: quoted, `""` for a quote, and its
+/// line breaks as spaces (a response typed on several lines), since that reader's row is one
+/// line.
 fn quoted(text: &str) -> String {
-    format!("\"{}\"", text.replace('"', "\"\""))
+    format!(
+        "\"{}\"",
+        text.replace('"', "\"\"").replace(['\r', '\n'], " ")
+    )
 }
 
 /// What the CSV reader found wrong: text that is not UTF-8 (the reader's only error on text in
@@ -161,12 +169,48 @@ fn csv_error(e: &csv::Error, header: bool) -> MoodleError {
     }
 }
 
+/// The separator of the export: the one of `,`, `;` and tab under which its header has the
+/// most "Response N" cells (`,` before `;` before a tab on a tie; `,` when none has one).
+/// Moodle writes commas; a spreadsheet saving it again writes `;` where the decimal comma takes
+/// `,` (Excel in pt-BR) or a tab ("text separated by tabs"), and quotes the cells that hold the
+/// separator, so a Cloze response's `; ` stays inside its cell. Under the wrong separator the
+/// header is cells like `Nota/6` and `00;Resposta 1;…`, none of them a response column.
+pub fn delimiter(text: &[u8]) -> u8 {
+    let slots = |d: u8| {
+        csv::ReaderBuilder::new()
+            .has_headers(false)
+            .flexible(true)
+            .delimiter(d)
+            .from_reader(text)
+            .records()
+            .next()
+            .and_then(Result::ok)
+            .map_or(0, |r| {
+                r.iter().filter(|c| response_slot(c).is_some()).count()
+            })
+    };
+    let mut best = (0, b',');
+    for d in [b',', b';', b'\t'] {
+        let n = slots(d);
+        if n > best.0 {
+            best = (n, d);
+        }
+    }
+    best.1
+}
+
 /// The export as `student,exercise,answer` CSV text (a header, then a row per answered
-/// question); `questions[N-1]` is the exercise of slot N. Errors say what is missing.
-pub fn to_rows(text: &[u8], questions: &[String]) -> Result<Vec<u8>, MoodleError> {
+/// question); `questions[N-1]` is the exercise of slot N; `separator` the one given
+/// (`--delimiter`), else the export's own ([`delimiter`]). Errors say what is missing.
+pub fn to_rows(
+    text: &[u8],
+    questions: &[String],
+    separator: Option<u8>,
+) -> Result<Vec<u8>, MoodleError> {
     let mut reader = csv::ReaderBuilder::new()
         .has_headers(true)
         .flexible(true)
+        .delimiter(separator.unwrap_or_else(|| delimiter(text)))
         .from_reader(text);
     let header = reader.headers().map_err(|e| csv_error(&e, true))?.clone();
     // The report's column names are Moodle's language strings, in the language of the teacher
@@ -362,6 +406,18 @@ mod tests {
     }
 
     #[test]
+    fn the_separator_is_the_one_that_finds_response_columns() {
+        // Excel in pt-BR: `;`, the grade's decimal comma unquoted.
+        let semi = "Sobrenome;Nome;Nota/6,00;Resposta 1;Resposta correta 1;Resposta 2\r\n";
+        assert_eq!(delimiter(semi.as_bytes()), b';');
+        let tab = "Surname\tFirst name\tGrade/6.00\tResponse 1\tRight answer 1\n";
+        assert_eq!(delimiter(tab.as_bytes()), b'\t');
+        let comma = "\"Surname\",\"Grade/6,00\",\"Response 1\",\"Right answer 1\"\n";
+        assert_eq!(delimiter(comma.as_bytes()), b',');
+        assert_eq!(delimiter(b"no responses here"), b',');
+    }
+
+    #[test]
     fn responses_become_rows() {
         let csv = "Surname,First name,Email address,State,Grade/3.00,Response 1,Right answer 1,\
                    Response 2,Right answer 2\n\
@@ -369,11 +425,18 @@ mod tests {
                    \"part 1: 0.52; part 2: 0.03; part 3: 0\",-,x\n\
                    Overall average,,,,1.00,,,,\n";
         assert!(is_responses(csv.as_bytes()));
-        let rows = to_rows(csv.as_bytes(), &["4.1".into(), "4.3".into()]).unwrap();
+        let rows = to_rows(csv.as_bytes(), &["4.1".into(), "4.3".into()], None).unwrap();
         assert_eq!(
             String::from_utf8(rows).unwrap(),
             "student,exercise,answer\n\"ana@x.br\",\"4.1\",\"0.52 0.03 0\"\n"
         );
-        assert!(to_rows(csv.as_bytes(), &["4.1".into()]).is_ok());
+        assert!(to_rows(csv.as_bytes(), &["4.1".into()], None).is_ok());
+        // A response on several lines is one row, its line breaks spaces.
+        let csv = "Email address,Response 1\nana@x.br,\"0.5\r\n0.7\n0.3\"\n";
+        let rows = to_rows(csv.as_bytes(), &["4.1".into()], None).unwrap();
+        assert_eq!(
+            String::from_utf8(rows).unwrap(),
+            "student,exercise,answer\n\"ana@x.br\",\"4.1\",\"0.5  0.7 0.3\"\n"
+        );
     }
 }

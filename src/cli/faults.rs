@@ -19,6 +19,17 @@ crate::faults! {
             "memória insuficiente: isto precisa de cerca de {size}";
             fix "give a smaller image (--size, or the camera's width and height)",
                 "dê uma imagem menor (--size, ou a largura e a altura da câmera)";
+        /// An allocation the system refused, anywhere in a run (`cli::memory`): `size` the
+        /// amount asked for.
+        MemoryRefused { size: String } =>
+            "out of memory: the system refused {size} more, so phong stopped; an output file \
+             being written was removed, not left half written",
+            "memória insuficiente: o sistema recusou mais {size}, então a phong parou; um \
+             arquivo de saída sendo escrito foi removido, não ficou escrito pela metade";
+            fix "give phong more memory (the shell's ulimit -v, or a larger machine), or split \
+                 the input into smaller files",
+                "dê mais memória à phong (o ulimit -v do shell, ou uma máquina maior), ou divida \
+                 a entrada em arquivos menores";
         /// `--threads 0`.
         ZeroThreads =>
             "0 threads cannot render", "0 threads não renderizam";

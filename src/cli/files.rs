@@ -202,6 +202,22 @@ fn remove_pending() {
     }
 }
 
+/// Removes every temporary file still being written, unless the list is being changed at this
+/// moment (then nothing): what [`super::memory::out_of_memory`] does, from inside the
+/// allocator, where waiting for the lock could wait for ever (the thread holding it may be the
+/// one refused memory). `remove_file` of a path shorter than std's stack buffer (384 bytes)
+/// allocates nothing.
+pub(crate) fn remove_pending_now() {
+    let list = match PENDING.try_lock() {
+        Ok(list) => list,
+        Err(std::sync::TryLockError::Poisoned(e)) => e.into_inner(),
+        Err(std::sync::TryLockError::WouldBlock) => return,
+    };
+    for p in list.iter() {
+        let _ = std::fs::remove_file(p);
+    }
+}
+
 /// On SIGINT, SIGTERM or SIGHUP, the temporary files being written are removed before the
 /// program ends by the signal as it would have; SIGXFSZ (a file over the size limit) becomes
 /// the write error EFBIG, so the temporary file is removed as on any other error. Call once.

@@ -10,6 +10,7 @@ pub(crate) mod error;
 pub(crate) mod exit;
 pub(crate) mod faults;
 mod files;
+pub mod memory;
 mod output;
 pub(crate) mod parse;
 pub(crate) mod usage;
@@ -25,9 +26,11 @@ use args::Command;
 
 /// The program: parse the arguments and run.
 pub fn main() -> ExitCode {
+    memory::prepare(crate::text::Lang::from_locale());
     let args: Vec<std::ffi::OsString> = std::env::args_os().collect();
     match Cli::try_parse_from(&args) {
         Ok(cli) => {
+            memory::prepare(cli.command.lang());
             // `phong serve` writes no output file, and stops on SIGINT and SIGTERM itself: it
             // finishes the requests being answered and exits 0 (serve::run).
             #[cfg(feature = "serve")]

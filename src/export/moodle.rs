@@ -616,9 +616,9 @@ pub(crate) fn base64(bytes: &[u8]) -> String {
     out
 }
 
-/// Text for a CDATA section (a `]]>` inside is split across two sections).
+/// Text for a CDATA section: `text::xml`'s one rule (docs/conventions.md, "XML text").
 fn cdata(s: &str) -> String {
-    format!("<![CDATA[{}]]>", s.replace("]]>", "]]]]><![CDATA[>"))
+    crate::text::xml::cdata(s)
 }
 
 /// A category's name as one name of a Moodle category path: each `/` doubled, and a space
@@ -636,11 +636,9 @@ pub(crate) fn category_name(name: &str) -> String {
     escaped
 }
 
-/// Text escaped for an XML element.
+/// Text escaped for an XML element: `text::xml`'s one rule (docs/conventions.md, "XML text").
 fn xml(s: &str) -> String {
-    s.replace('&', "&amp;")
-        .replace('<', "&lt;")
-        .replace('>', "&gt;")
+    crate::text::xml::escape(s)
 }
 
 /// The quiz: every set's category, then its questions. `parent` is the categories' parent

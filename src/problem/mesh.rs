@@ -225,7 +225,7 @@ pub fn load_obj<R: Real>(path: &Path) -> Result<Vec<Triangle<R>>, MeshError> {
             .map_err(|e| MeshError::of(MeshFault::NotObj { error: ObjError(e) }))?;
     let mut out = Vec::new();
     let count: usize = faces.lines.iter().map(|&(_, n)| n).sum();
-    out.try_reserve_exact(count).map_err(|_| {
+    crate::text::memory::handled(|| out.try_reserve_exact(count)).map_err(|_| {
         MeshError::of(MeshFault::OutOfMemory {
             memory: Limit::Memory {
                 needs: super::reading::Bytes(

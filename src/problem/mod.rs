@@ -63,7 +63,9 @@ pub fn read_limited(path: &Path, limit: u64, what: Input) -> std::io::Result<Vec
         // the buffer by doubling (copying a large scene several times over). A size the
         // metadata gets wrong (0 for /proc files and devices) only costs that growth.
         if let Ok(meta) = file.metadata() {
-            let _ = bytes.try_reserve_exact(meta.len().min(limit) as usize + 1);
+            let _ = crate::text::memory::handled(|| {
+                bytes.try_reserve_exact(meta.len().min(limit) as usize + 1)
+            });
         }
         file.take(limit + 1).read_to_end(&mut bytes)?;
     }

@@ -785,7 +785,7 @@ fn surface<R: Real>(
                     },
                 ));
             }
-            out.try_reserve(triangles.len()).map_err(|_| {
+            crate::text::memory::handled(|| out.try_reserve(triangles.len())).map_err(|_| {
                 let bytes = triangles
                     .len()
                     .saturating_mul(std::mem::size_of::<Surface<R>>());

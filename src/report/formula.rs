@@ -331,16 +331,11 @@ pub(crate) fn unicode_to_html(s: &str) -> String {
     out
 }
 
-/// Appends one character escaped for HTML text and attribute values.
+/// Appends one character escaped for HTML text and attribute values: `text::xml`'s one rule,
+/// so that the HTML, the SVG diagrams and the Moodle quiz that embeds them hold no character
+/// XML forbids (docs/conventions.md, "XML text").
 pub(crate) fn push_html_escaped(out: &mut String, c: char) {
-    match c {
-        '&' => out.push_str("&amp;"),
-        '<' => out.push_str("&lt;"),
-        '>' => out.push_str("&gt;"),
-        '"' => out.push_str("&quot;"),
-        '\'' => out.push_str("&#39;"),
-        c => out.push(c),
-    }
+    crate::text::xml::push_escaped(out, c);
 }
 
 #[cfg(test)]

@@ -25,8 +25,13 @@ pub(crate) struct Limits {
     /// The most connections open at once (idle keep-alive ones included); a connection beyond
     /// them is closed as soon as it is accepted.
     pub(crate) connections: usize,
+    /// The most of them open at once from one client address (an IPv6 client's /64), so that
+    /// one address cannot take the whole budget; a connection beyond them is closed as soon as
+    /// it is accepted.
+    pub(crate) connections_per_client: usize,
     /// The longest a client may take to send a request's headers (slowloris), or leave a
-    /// keep-alive connection idle.
+    /// keep-alive connection idle: shorter than `time`, so that a connection that sends no
+    /// request frees its slot soon.
     pub(crate) header_time: Duration,
     /// The largest request head (request line and headers), in bytes; a larger one is refused
     /// with 431.
@@ -42,7 +47,8 @@ impl Default for Limits {
             time: Duration::from_secs(10),
             concurrency: 256,
             connections: 1024,
-            header_time: Duration::from_secs(10),
+            connections_per_client: 256,
+            header_time: Duration::from_secs(5),
             head_bytes: 16 * 1024,
         }
     }

@@ -21,7 +21,7 @@ pub(crate) mod limits;
 pub(crate) mod log;
 pub(crate) mod pages;
 
-use std::net::SocketAddr;
+use std::net::{IpAddr, Ipv6Addr, SocketAddr};
 use std::path::PathBuf;
 use std::sync::atomic::{AtomicUsize, Ordering};
 use std::sync::Arc;
@@ -183,17 +183,17 @@ pub(crate) fn run(config: &Config) -> Result<(), StartError> {
 /// Accepts connections until SIGINT or SIGTERM, each served by hyper's HTTP/1 with the limits
 /// `axum::serve` does not expose: the time a client may take to send its headers (or leave a
 /// keep-alive connection idle), the size of a request head, and the number of connections open
-/// at once. Then stops accepting, lets each open connection finish its request (at most the
-/// request time limit), and returns.
+/// at once, in all and from one client address. Then stops accepting, lets each open connection
+/// finish its request (at most the request time limit), and returns.
 async fn accept(listener: tokio::net::TcpListener, app: Router, limits: &Limits) {
     use hyper_util::rt::{TokioIo, TokioTimer};
     let graceful = hyper_util::server::graceful::GracefulShutdown::new();
-    let open = Arc::new(AtomicUsize::new(0));
+    let open = Open::default();
     let mut stop = std::pin::pin!(shutdown());
     loop {
-        let stream = tokio::select! {
+        let (stream, peer) = tokio::select! {
             accepted = listener.accept() => match accepted {
-                Ok((stream, _)) => stream,
+                Ok(accepted) => accepted,
                 // Out of file descriptors, or a connection reset before it was accepted: wait a
                 // little (other connections close meanwhile) rather than spin.
                 Err(e) => {
@@ -204,8 +204,9 @@ async fn accept(listener: tokio::net::TcpListener, app: Router, limits: &Limits)
             },
             () = &mut stop => break,
         };
-        let Some(slot) = Slot::take(&open, limits.connections) else {
-            // As many connections as the server keeps: this one is closed at once.
+        let Some(slot) = Slot::take(&open, client(peer.ip()), limits) else {
+            // As many connections as the server keeps, in all or from this client: this one is
+            // closed at once.
             drop(stream);
             continue;
         };
@@ -236,23 +237,73 @@ async fn accept(listener: tokio::net::TcpListener, app: Router, limits: &Limits)
     }
 }
 
+/// The connections open: how many in all, and how many from each client address (an entry
+/// only while it has one open, so the map holds at most `Limits::connections` entries).
+#[derive(Clone, Default)]
+struct Open {
+    all: Arc<AtomicUsize>,
+    by_client: Arc<std::sync::Mutex<std::collections::HashMap<IpAddr, usize>>>,
+}
+
+/// The address a client is counted under: an IPv4 address (an IPv4-mapped IPv6 one read as
+/// IPv4), or an IPv6 address's /64 prefix, the block one subscriber is given (RFC 6177), so
+/// that a client cannot pass the cap by changing the last 64 bits of its address.
+fn client(ip: IpAddr) -> IpAddr {
+    match ip {
+        IpAddr::V6(v6) => match v6.to_ipv4_mapped() {
+            Some(v4) => IpAddr::V4(v4),
+            None => {
+                let s = v6.segments();
+                IpAddr::V6(Ipv6Addr::new(s[0], s[1], s[2], s[3], 0, 0, 0, 0))
+            }
+        },
+        v4 => v4,
+    }
+}
+
 /// One of the open connections the server allows, given back when dropped.
-struct Slot(Arc<AtomicUsize>);
+struct Slot {
+    open: Open,
+    client: IpAddr,
+}
 
 impl Slot {
-    /// A slot, unless `max` are taken.
-    fn take(open: &Arc<AtomicUsize>, max: usize) -> Option<Slot> {
-        open.fetch_update(Ordering::AcqRel, Ordering::Acquire, |n| {
-            (n < max).then_some(n + 1)
+    /// A slot for a connection from `client`, unless `limits.connections` are taken, or
+    /// `limits.connections_per_client` by this client.
+    fn take(open: &Open, client: IpAddr, limits: &Limits) -> Option<Slot> {
+        let mut by_client = open.by_client.lock().unwrap_or_else(|e| e.into_inner());
+        let mine = by_client.get(&client).copied().unwrap_or(0);
+        if mine >= limits.connections_per_client {
+            return None;
+        }
+        open.all
+            .fetch_update(Ordering::AcqRel, Ordering::Acquire, |n| {
+                (n < limits.connections).then_some(n + 1)
+            })
+            .ok()?;
+        by_client.insert(client, mine + 1);
+        Some(Slot {
+            open: open.clone(),
+            client,
         })
-        .ok()
-        .map(|_| Slot(Arc::clone(open)))
     }
 }
 
 impl Drop for Slot {
     fn drop(&mut self) {
-        self.0.fetch_sub(1, Ordering::AcqRel);
+        let mut by_client = self
+            .open
+            .by_client
+            .lock()
+            .unwrap_or_else(|e| e.into_inner());
+        if let Some(n) = by_client.get_mut(&self.client) {
+            *n -= 1;
+            if *n == 0 {
+                by_client.remove(&self.client);
+            }
+        }
+        drop(by_client);
+        self.open.all.fetch_sub(1, Ordering::AcqRel);
     }
 }
 
@@ -273,4 +324,50 @@ async fn shutdown() {
     }
     #[cfg(not(unix))]
     interrupt.await.unwrap_or(());
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn clients_are_ipv4_addresses_and_ipv6_slash_64s() {
+        let ip = |s: &str| s.parse::<IpAddr>().unwrap();
+        assert_eq!(client(ip("127.0.0.2")), ip("127.0.0.2"));
+        assert_eq!(client(ip("::ffff:10.1.2.3")), ip("10.1.2.3"));
+        assert_eq!(client(ip("2001:db8:1:2:a:b:c:d")), ip("2001:db8:1:2::"));
+        assert_eq!(
+            client(ip("2001:db8:1:2:ffff::1")),
+            client(ip("2001:db8:1:2::9"))
+        );
+        assert_ne!(client(ip("2001:db8:1:3::1")), client(ip("2001:db8:1:2::1")));
+    }
+
+    #[test]
+    fn one_client_takes_at_most_its_share_and_gives_it_back() {
+        let limits = Limits {
+            connections: 5,
+            connections_per_client: 2,
+            ..Limits::default()
+        };
+        let open = Open::default();
+        let (a, b) = (IpAddr::from([10, 0, 0, 1]), IpAddr::from([10, 0, 0, 2]));
+        let a1 = Slot::take(&open, a, &limits).unwrap();
+        let a2 = Slot::take(&open, a, &limits).unwrap();
+        assert!(Slot::take(&open, a, &limits).is_none(), "a's third");
+        let b_slots: Vec<Slot> = (0..2)
+            .map(|_| Slot::take(&open, b, &limits).unwrap())
+            .collect();
+        let c = Slot::take(&open, IpAddr::from([10, 0, 0, 3]), &limits).unwrap();
+        // Five open in all: no one gets a sixth.
+        assert!(Slot::take(&open, IpAddr::from([10, 0, 0, 4]), &limits).is_none());
+        drop(a1);
+        assert!(
+            Slot::take(&open, a, &limits).is_some(),
+            "a's slot given back"
+        );
+        drop((a2, b_slots, c));
+        assert_eq!(open.all.load(Ordering::SeqCst), 0);
+        assert!(open.by_client.lock().unwrap().is_empty());
+    }
 }

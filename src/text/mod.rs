@@ -13,8 +13,10 @@
 
 pub mod io;
 pub mod lang;
+pub mod memory;
 pub mod message;
 pub mod number;
+pub mod xml;
 
 pub use io::IoCause;
 pub use lang::Lang;

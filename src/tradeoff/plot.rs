@@ -65,7 +65,9 @@ pub fn svg(s: &Summary) -> Result<String, String> {
             if s.outcome.threads == 1 { "" } else { "s" }
         );
         let mut chart = ChartBuilder::on(&root)
-            .caption(title, ("sans-serif", 18))
+            // plotters escapes the markup; the characters XML forbids (a file name may hold
+            // them) are `text::xml`'s rule (docs/conventions.md, "XML text").
+            .caption(crate::text::xml::sanitize(&title), ("sans-serif", 18))
             .margin(18)
             .x_label_area_size(48)
             .y_label_area_size(80)

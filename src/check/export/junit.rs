@@ -11,24 +11,7 @@ use super::super::grade::Report;
 use super::super::messages;
 use super::{Class, Submissions, Test};
 use crate::text::lang::Lang;
-
-/// `text` escaped for XML text and attribute values.
-fn escape(text: &str) -> String {
-    let mut out = String::with_capacity(text.len());
-    for c in text.chars() {
-        match c {
-            '&' => out.push_str("&amp;"),
-            '<' => out.push_str("&lt;"),
-            '>' => out.push_str("&gt;"),
-            '"' => out.push_str("&quot;"),
-            '\'' => out.push_str("&apos;"),
-            // XML 1.0 allows no other control character, even escaped.
-            c if c.is_control() && !matches!(c, '\t' | '\n' | '\r') => out.push('\u{FFFD}'),
-            c => out.push(c),
-        }
-    }
-    out
-}
+use crate::text::xml::escape;
 
 /// The class as one JUnit XML document: a `testsuite` per submission ([`super::Submissions`]:
 /// the students, then the rows without a student), a `testcase` per exercise of the class and

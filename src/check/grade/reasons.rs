@@ -130,6 +130,46 @@ messages! {
              field, with \"\" for a quote inside",
             "o campo {field} tem texto depois das aspas que o fecham (\"{after}\"): ponha o \
              campo inteiro entre aspas, com \"\" para aspas dentro";
+        /// A quoted field holding a line break: its quote closes on line `last`.
+        LineBreak { field: usize, last: u64 } =>
+            "field {field} is a quoted cell holding a line break (its quote closes on line \
+             {last}), and a row is one line, so neither this line nor the ones up to line \
+             {last} is a row. Fix: remove the line break from the cell (typed with Alt+Enter in \
+             a spreadsheet)",
+            "o campo {field} é uma célula entre aspas com uma quebra de linha (as aspas se \
+             fecham na linha {last}), e cada linha é uma resposta, então nem esta linha nem as \
+             seguintes até a linha {last} são respostas. Correção: tire a quebra de linha da \
+             célula (digitada com Alt+Enter numa planilha)";
+        /// The rest of a quoted field of an earlier line that holds a line break.
+        Continues { field: usize, line: u64 } =>
+            "this line is the rest of field {field} of line {line}, a quoted cell holding a \
+             line break, not a row of its own. Fix: remove the line break from that cell",
+            "esta linha é o resto do campo {field} da linha {line}, uma célula entre aspas com \
+             uma quebra de linha, e não uma resposta. Correção: tire a quebra de linha dessa \
+             célula";
+        /// A quote left alone in a field that does not start with one.
+        StrayQuote { field: usize } =>
+            "field {field} holds a quote \" that pairs with none and does not start the field \
+             (what is left of a cell cut at a line break, or a quote typed by mistake). Fix: \
+             remove it, or quote the whole field with \"\" for a quote inside",
+            "o campo {field} tem aspas \" que não formam par e não abrem o campo (o resto de \
+             uma célula cortada numa quebra de linha, ou aspas digitadas por engano). \
+             Correção: tire-as, ou ponha o campo inteiro entre aspas, com \"\" para aspas \
+             dentro";
+    }
+}
+
+impl NotCsv {
+    /// The field (from 1) that cannot be read; the cells before it are whole. A line that is
+    /// the rest of another line's field has none: 0.
+    pub fn field(&self) -> usize {
+        match self {
+            NotCsv::Unclosed { field }
+            | NotCsv::AfterQuote { field, .. }
+            | NotCsv::LineBreak { field, .. }
+            | NotCsv::StrayQuote { field } => *field,
+            NotCsv::Continues { .. } => 0,
+        }
     }
 }
 

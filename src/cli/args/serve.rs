@@ -32,8 +32,16 @@ pub(crate) struct ServeArgs {
     /// soon as they are accepted.
     #[arg(long, value_name = "N", default_value_t = 1024, value_parser = clap::value_parser!(u32).range(1..=1_000_000))]
     pub(crate) max_connections: u32,
-    /// The most seconds a request may take (its body's arrival included), and a client may take
-    /// to send its headers or leave a connection idle.
+    /// The most connections open at once from one client address (an IPv6 client's /64); more
+    /// are closed as soon as they are accepted. Behind a reverse proxy every client is the
+    /// proxy: give it --max-connections, and limit clients in the proxy.
+    #[arg(long, value_name = "N", default_value_t = 256, value_parser = clap::value_parser!(u32).range(1..=1_000_000))]
+    pub(crate) max_connections_per_client: u32,
+    /// The most seconds a request may take (its body's arrival included).
     #[arg(long, value_name = "SECONDS", default_value_t = 10, value_parser = clap::value_parser!(u32).range(1..=3600))]
     pub(crate) timeout: u32,
+    /// The most seconds a client may take to send a request's headers, or leave a connection
+    /// idle between requests (at most --timeout).
+    #[arg(long, value_name = "SECONDS", default_value_t = 5, value_parser = clap::value_parser!(u32).range(1..=3600))]
+    pub(crate) header_timeout: u32,
 }

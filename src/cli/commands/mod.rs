@@ -65,7 +65,7 @@ fn overrides(s: &TraceSettings) -> RenderOverrides {
 /// the allocation that follows would not abort the program.
 fn memory(bytes: usize, flag: &'static str) -> Result<(), CliError> {
     let mut probe: Vec<u8> = Vec::new();
-    probe.try_reserve_exact(bytes).map_err(|_| {
+    crate::text::memory::handled(|| probe.try_reserve_exact(bytes)).map_err(|_| {
         CliError::usage(
             flag,
             CliFault::OutOfMemory {

@@ -10,8 +10,11 @@ pub(crate) fn run(args: &ServeArgs) -> Result<Exit, CliError> {
     let limits = serve::limits::Limits {
         concurrency: args.max_concurrent as usize,
         connections: args.max_connections as usize,
+        connections_per_client: args.max_connections_per_client as usize,
         time,
-        header_time: time,
+        header_time: std::time::Duration::from_secs(u64::from(
+            args.header_timeout.min(args.timeout),
+        )),
         ..Default::default()
     };
     let policy = super::course_policy(args.policy.as_deref(), args.exercises.as_deref())?;
