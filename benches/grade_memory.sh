@@ -44,7 +44,7 @@ run() {
   printf '%-34s %6d MB  (%s)\n' "$label" $((kb / 1000)) "$wall"
   [ "$kb" -le "$budget_kb" ] || { echo "  over the 300 MB budget"; status=1; }
 }
-for format in csv json junit gradescope; do
+for format in csv json junit gradescope xlsx; do
   run "--format $format" --format "$format" -o "$work/out.$format"
 done
 run "--format csv --summary --by-student" -o "$work/out.csv" --summary "$work/summary.csv" \

@@ -760,3 +760,78 @@ fn a_windows_1252_class_file_keeps_every_name() {
     );
     assert_eq!(err.matches(&warning).count(), 1, "{err}");
 }
+
+// Issue 29: `--format xlsx` writes a workbook a spreadsheet opens: read back by a spreadsheet
+// reader, its answers' sheet holds numbers as numbers (points, the expected colour, the
+// tolerance) and the verdicts in words of the chosen language, and the students' sheet the
+// totals worked out by hand: ana 4.1 right (1) + 4.2 |cos θ| wrong (0) = 1 of 3; bia 4.3
+// "nenhuma" right (1) + 4.2 the likely intended reading (half of 1) = 1.5 of 3 (three
+// exercises graded, 1 point each).
+#[test]
+fn the_grade_workbook_reads_back_with_numbers_and_totals() {
+    use calamine::{open_workbook, Data, Reader, Xlsx};
+    let dir = exercises();
+    let input = tempfile::NamedTempFile::new().unwrap();
+    std::fs::write(
+        input.path(),
+        "aluno;exercicio;resposta\nana;4.1;0,5 0,7 0,3\nana;4.2;0.245 0.28 0.21\n\
+         bia;4.3;nenhuma\nbia;4.2;0.3 0.36 0.32\n",
+    )
+    .unwrap();
+    let out_dir = tempfile::tempdir().unwrap();
+    let book = out_dir.path().join("notas.xlsx");
+    phong()
+        .arg("grade")
+        .arg(input.path())
+        .arg("--exercises")
+        .arg(dir.path())
+        .args(["--format", "xlsx", "--lang", "pt", "-o"])
+        .arg(&book)
+        .assert()
+        .code(0);
+    let mut wb: Xlsx<_> = open_workbook(&book).unwrap();
+    assert_eq!(wb.sheet_names(), ["Respostas", "Alunos", "Resumo"]);
+    let answers = wb.worksheet_range("Respostas").unwrap();
+    let cell = |r: u32, c: u32| answers.get_value((r, c)).cloned();
+    assert_eq!(cell(0, 2), Some(Data::String("Aluno".into())));
+    assert_eq!(cell(1, 2), Some(Data::String("ana".into())));
+    assert_eq!(cell(1, 5), Some(Data::String("certa".into())));
+    assert_eq!(cell(1, 6), Some(Data::Float(1.0)));
+    assert_eq!(cell(1, 10), Some(Data::Float(0.005)));
+    assert_eq!(cell(1, 11), Some(Data::Float(0.5)));
+    assert_eq!(cell(2, 5), Some(Data::String("errada".into())));
+    assert_eq!(cell(2, 6), Some(Data::Float(0.0)));
+    assert_eq!(cell(4, 5), Some(Data::String("leitura".into())));
+    assert_eq!(cell(4, 6), Some(Data::Float(0.5)));
+    let students = wb.worksheet_range("Alunos").unwrap();
+    let row = |r: u32| -> Vec<Data> {
+        (0..3)
+            .map(|c| students.get_value((r, c)).cloned().unwrap())
+            .collect()
+    };
+    assert_eq!(
+        row(1),
+        [
+            Data::String("ana".into()),
+            Data::Float(1.0),
+            Data::Float(3.0)
+        ]
+    );
+    assert_eq!(
+        row(2),
+        [
+            Data::String("bia".into()),
+            Data::Float(1.5),
+            Data::Float(3.0)
+        ]
+    );
+    let summary = wb.worksheet_range("Resumo").unwrap();
+    // 4.2: two answers, one wrong, one by the reading.
+    let line = (1..summary.height() as u32)
+        .find(|&r| summary.get_value((r, 0)) == Some(&Data::String("4.2".into())))
+        .unwrap();
+    let counts: Vec<Data> = (1..6)
+        .map(|c| summary.get_value((line, c)).cloned().unwrap())
+        .collect();
+    assert_eq!(counts, [2.0, 0.0, 1.0, 1.0, 0.0].map(Data::Float));
+}

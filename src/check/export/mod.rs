@@ -9,6 +9,7 @@
 
 pub mod gradescope;
 pub mod junit;
+pub mod xlsx;
 
 use std::borrow::Cow;
 use std::collections::BTreeMap;

@@ -72,7 +72,9 @@ pub(crate) struct GradeArgs {
     /// Report format: one CSV line per input row; JSON with the rows, the summary and the
     /// students' totals; Gradescope's results.json (one student: the file; several: an object
     /// keyed by student, or one file per student with -o DIR/); JUnit XML (a testsuite per
-    /// student, a testcase per exercise).
+    /// student, a testcase per exercise); xlsx, a workbook for Excel or LibreOffice (sheets of the
+    /// answers, the students' totals and a summary; numbers as numbers, headers in --lang; give
+    /// -o FILE.xlsx).
     #[arg(long, value_enum, default_value_t = GradeFormat::Csv)]
     pub(crate) format: GradeFormat,
     /// The scale of answers that are not "#RRGGBB" [default: 0–1, but a row of three whole
@@ -133,6 +135,7 @@ pub(crate) enum GradeFormat {
     Json,
     Gradescope,
     Junit,
+    Xlsx,
 }
 
 /// `--policy`: the course policy file, for every command that judges answers.

@@ -117,6 +117,9 @@ pub(crate) fn run(args: &GradeArgs) -> Result<Exit, CliError> {
         GradeFormat::Junit => output::emit_with(out, &mut |w| {
             check::export::junit::write(&graded, args.lang, w)
         }),
+        GradeFormat::Xlsx => output::emit_with(out, &mut |w| {
+            check::export::xlsx::write(&graded, args.lang, w)
+        }),
         GradeFormat::Gradescope => gradescope(&graded, args),
     };
     let lang = args.lang;
