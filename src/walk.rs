@@ -91,6 +91,7 @@ walked! {
     sentences crate::check::messages::Page;
     sentences crate::check::messages::Encoding;
     sentences crate::check::export::xlsx::Sheet;
+    sentences crate::check::export::class::ClassWords;
     sentences crate::check::Slip;
     sentences crate::problem::syntax::Found;
     sentences crate::problem::syntax::Expected;

@@ -835,3 +835,81 @@ fn the_grade_workbook_reads_back_with_numbers_and_totals() {
         .collect();
     assert_eq!(counts, [2.0, 0.0, 1.0, 1.0, 0.0].map(Data::Float));
 }
+
+// Issue 29: what the class got wrong. A class of 30 answering 4.2, counted by hand: 10 black
+// (right as written), 6 the likely intended reading (L reversed, (0.299, 0.361, 0.318)), 5
+// 0.245 0.28 0.21 (|cos θ|, which is also the normal reversed, and V reversed in the reading:
+// three slips, each counted 5 times), 4 0.5 0.4 0.6 (an ambient light assumed), 3 grey 0.9 that
+// no slip gives, 2 unreadable. Their totals (1 point each): 10 at 100 %, 6 at 50 %, 14 at 0 %.
+#[test]
+fn the_class_report_counts_each_slip_as_counted_by_hand() {
+    let dir = exercises();
+    let mut csv = String::from("aluno;exercicio;resposta\n");
+    let answers = [
+        ("0 0 0", 10),
+        ("0.3 0.36 0.32", 6),
+        ("0.245 0.28 0.21", 5),
+        ("0.5 0.4 0.6", 4),
+        ("0.9 0.9 0.9", 3),
+        ("abc", 2),
+    ];
+    let mut n = 0;
+    for (answer, count) in answers {
+        for _ in 0..count {
+            n += 1;
+            csv.push_str(&format!("s{n:02};4.2;{answer}\n"));
+        }
+    }
+    assert_eq!(n, 30);
+    let input = tempfile::NamedTempFile::new().unwrap();
+    std::fs::write(input.path(), csv).unwrap();
+    let out = tempfile::tempdir().unwrap();
+    let page = out.path().join("aula.html");
+    phong()
+        .arg("grade")
+        .arg(input.path())
+        .arg("--exercises")
+        .arg(dir.path())
+        .args(["--lang", "pt", "-o"])
+        .arg(out.path().join("notas.csv"))
+        .arg("--class-report")
+        .arg(&page)
+        .assert()
+        .code(0);
+    let html = std::fs::read_to_string(&page).unwrap();
+    let count = |kind: &str, words: &str| -> usize {
+        let at = html
+            .find(&format!("<tr data-kind=\"{kind}\"><td>{words}"))
+            .unwrap_or_else(|| panic!("no {kind} {words}:\n{html}"));
+        let row = &html[at..at + html[at..].find("</tr>").unwrap()];
+        let n = row.rsplit("<td>").next().unwrap().trim_end_matches("</td>");
+        n.parse().unwrap()
+    };
+    assert_eq!(count("right", "certas"), 10);
+    assert_eq!(count("reading", "certas pela leitura"), 6);
+    assert_eq!(count("slip", "erro: |cos θ|"), 5);
+    assert_eq!(count("slip", "erro: a normal invertida"), 5);
+    // V reversed in the reading is, against the problem as written, L and V both reversed.
+    assert_eq!(
+        count(
+            "slip",
+            "erro: L invertido: tomado do ponto para a luz, o oposto da Eq. 4.1; e V invertido"
+        ),
+        5
+    );
+    assert_eq!(count("slip", "erro: um termo ambiente"), 4);
+    assert_eq!(count("unnamed", "erradas"), 3);
+    assert_eq!(count("invalid", "ilegíveis"), 2);
+    for (bin, students) in [
+        ("0–9 %", 14),
+        ("50–59 %", 6),
+        ("90–100 %", 10),
+        ("10–19 %", 0),
+    ] {
+        assert!(
+            html.contains(&format!("<tr><td>{bin}</td><td>{students}</td></tr>")),
+            "{bin}: {html}"
+        );
+    }
+    assert!(html.contains("30 alunos, 30 respostas"), "{html}");
+}

@@ -205,7 +205,10 @@ pub struct SummaryOut {
     pub wrong: usize,
     /// Rows that could not be checked (verdict "invalid").
     pub invalid: usize,
-    /// The diagnoses of wrong rows, most common first.
+    /// Wrong rows that no classic slip (nor pair) explains.
+    pub unnamed: usize,
+    /// The diagnoses of wrong rows, most common first (a row several diagnoses explain counts
+    /// under each).
     pub slips: Vec<SlipCount>,
 }
 
@@ -1054,6 +1057,9 @@ impl<'a> Graded<'a> {
                 "reading" => summary.reading += 1,
                 "wrong" => summary.wrong += 1,
                 _ => summary.invalid += 1,
+            }
+            if r.verdict == "wrong" && r.diagnosis.is_empty() {
+                summary.unnamed += 1;
             }
             for d in &r.diagnosis {
                 match slips.get_mut(d.as_slice()) {

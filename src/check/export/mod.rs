@@ -7,6 +7,7 @@
 //! their own after the exercises, and the rows without a student are the tests of one more
 //! submission, [`no_student_label`], after the students.
 
+pub mod class;
 pub mod gradescope;
 pub mod junit;
 pub mod xlsx;

@@ -7,7 +7,9 @@
 //!   words, its cell coloured (and the word says it: colour is never the only signal);
 //! - the students: each student's total, maximum and points per exercise (empty: no answer);
 //! - the summary: per exercise, how many rows were right, by the reading, wrong and invalid,
-//!   and the slips named, each with its count.
+//!   and the slips named, each with its count;
+//! - the class: what the class got wrong, line by line as the class report says it
+//!   (`export::class`).
 //!
 //! Text from the submissions goes through the one XML rule (`text::xml::sanitize`): a workbook
 //! is XML inside, and a character XML forbids would make Excel refuse it.
@@ -236,12 +238,37 @@ fn summary(book: &mut Workbook, graded: &Graded, lang: Lang) -> Result<(), XlsxE
     Ok(())
 }
 
+/// The class sheet: what the class got wrong, as the class report says it (`class::lines`).
+fn class(book: &mut Workbook, graded: &Graded, lang: Lang) -> Result<(), XlsxError> {
+    use super::class::ClassWords;
+    let sheet = book.add_worksheet();
+    sheet.set_name(ClassWords::Class.text(lang))?;
+    let bold = Format::new().set_bold();
+    for (c, w) in [ClassWords::Exercise, ClassWords::What, ClassWords::Answers]
+        .iter()
+        .enumerate()
+    {
+        sheet.write_string_with_format(0, c as u16, w.text(lang), &bold)?;
+    }
+    sheet.set_freeze_panes(1, 0)?;
+    let lines = super::class::lines(graded, lang);
+    for (i, l) in lines.iter().enumerate() {
+        let r = i as u32 + 1;
+        sheet.write_string(r, 0, sanitize(&l.exercise))?;
+        sheet.write_string(r, 1, &l.what)?;
+        sheet.write_number(r, 2, l.count as f64)?;
+    }
+    sheet.autofilter(0, 0, lines.len() as u32, 2)?;
+    Ok(())
+}
+
 /// The workbook of a graded class, written to `w`.
 pub fn write(graded: &Graded, lang: Lang, w: &mut dyn std::io::Write) -> std::io::Result<()> {
     let mut book = Workbook::new();
     let made = answers(&mut book, graded, lang)
         .and_then(|()| students(&mut book, graded, lang))
         .and_then(|()| summary(&mut book, graded, lang))
+        .and_then(|()| class(&mut book, graded, lang))
         .and_then(|()| book.save_to_buffer());
     let bytes = made.map_err(|e| std::io::Error::other(e.to_string()))?;
     w.write_all(&bytes)

@@ -124,6 +124,11 @@ pub(crate) struct GradeArgs {
     /// Write the report to this file (atomically) instead of standard output.
     #[arg(short, long, value_name = "PATH")]
     pub(crate) output: Option<PathBuf>,
+    /// Also write what the class got wrong as a page (HTML, in --lang): per exercise, the
+    /// answers right, by the reading, each slip named with its count, the unnamed wrong ones and
+    /// the unreadable ones, and a histogram of the students' totals.
+    #[arg(long, value_name = "PATH.html")]
+    pub(crate) class_report: Option<PathBuf>,
     /// Also write the summary per exercise as CSV to this file (atomically).
     #[arg(long, value_name = "PATH")]
     pub(crate) summary: Option<PathBuf>,

@@ -45,12 +45,14 @@ pub(crate) fn run(args: &GradeArgs) -> Result<Exit, CliError> {
             ("--output", args.output.as_deref()),
             ("--summary", args.summary.as_deref()),
             ("--by-student", args.by_student.as_deref()),
+            ("--class-report", args.class_report.as_deref()),
         ],
     )?;
     for (flag, path) in [
         ("--output", args.output.as_deref()),
         ("--summary", args.summary.as_deref()),
         ("--by-student", args.by_student.as_deref()),
+        ("--class-report", args.class_report.as_deref()),
     ] {
         // A Gradescope folder (`-o DIR/`) is created; any other output's folder must exist.
         let folder_output = flag == "--output" && args.format == GradeFormat::Gradescope;
@@ -130,6 +132,14 @@ pub(crate) fn run(args: &GradeArgs) -> Result<Exit, CliError> {
         })
         .and_then(|()| match &args.by_student {
             Some(by) => output::emit_with(Some(by), &mut |w| graded.write_students_csv(w)),
+            None => Ok(()),
+        })
+        .and_then(|()| match &args.class_report {
+            Some(path) => {
+                let file = args.submissions.display().to_string();
+                let page = check::export::class::html(&graded, &file, lang);
+                output::emit(Some(path), &page)
+            }
             None => Ok(()),
         });
     let exit = error::carry_on_in(written, lang);
