@@ -790,7 +790,7 @@ fn the_grade_workbook_reads_back_with_numbers_and_totals() {
         .assert()
         .code(0);
     let mut wb: Xlsx<_> = open_workbook(&book).unwrap();
-    assert_eq!(wb.sheet_names(), ["Respostas", "Alunos", "Resumo"]);
+    assert_eq!(wb.sheet_names(), ["Respostas", "Alunos", "Resumo", "Turma"]);
     let answers = wb.worksheet_range("Respostas").unwrap();
     let cell = |r: u32, c: u32| answers.get_value((r, c)).cloned();
     assert_eq!(cell(0, 2), Some(Data::String("Aluno".into())));
