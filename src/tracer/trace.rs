@@ -35,7 +35,7 @@ impl<R: Real> Scene<R> {
     /// The problem's surfaces, in a BVH.
     pub fn new(problem: &Problem<R>) -> Self {
         let (material_of, materials) = distinct(
-            problem.surfaces().iter().map(|s| &s.material.material),
+            problem.surfaces().iter().map(|s| &*s.material.material),
             material_bits,
         );
         Scene {

@@ -160,7 +160,7 @@ fn the_plan_groups_exactly_the_equal_materials() {
         transmission: None,
     };
     let all: Vec<Material<f64>> = (0..40).map(|i| m(i % 20, (i / 20) as f64 * 0.5)).collect();
-    let (of, distinct) = super::distinct_materials(&all);
+    let (of, distinct) = super::distinct(all.iter(), super::shading_bits);
     assert_eq!(distinct.len(), 20);
     for (i, id) in of.iter().enumerate() {
         assert_eq!(*id as usize, i % 20, "material {i}");
