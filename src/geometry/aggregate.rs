@@ -78,9 +78,10 @@ fn plane_bits<R: Real>(
 impl<R: Real> Aggregate<R> {
     /// Builds the BVH over the bounded shapes.
     pub fn new(shapes: Vec<Shape<R>>) -> Self {
+        // (Room for every shape: pages never written are never resident.)
         let mut unbounded = Vec::new();
-        let mut bounded = Vec::new();
-        let mut boxes = Vec::new();
+        let mut bounded = Vec::with_capacity(shapes.len());
+        let mut boxes = Vec::with_capacity(shapes.len());
         for (i, s) in shapes.iter().enumerate() {
             let i = u32::try_from(i).expect("fewer than 2^32 surfaces");
             match s {

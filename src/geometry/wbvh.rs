@@ -321,9 +321,10 @@ impl<R: Real> WideBvh<R> {
             root: None,
         };
         if let Some(root) = bvh.nodes().first() {
-            // About one node per LANES − 1 binary interior nodes, one leaf per binary leaf.
+            // At most one node per binary interior node (leaves − 1 of them; pages never
+            // written are never resident), one leaf per binary leaf.
             let leaves = bvh.nodes().iter().filter(|n| n.count > 0).count();
-            w.nodes.reserve(leaves / (W::<R>::LANES - 1) + 1);
+            w.nodes.reserve(leaves);
             w.spheres.reserve(leaves);
             let r = w.collapse(bvh, 0, shape_of, shapes);
             w.root = Some((r, root.bounds));

@@ -25,7 +25,7 @@ pub use format::{schema_json, ProblemFile};
 pub(crate) use model::RenderOverrides;
 pub use model::{
     AmbientInfo, Camera, GivenVector, LightInfo, NamedMaterial, Problem, ReflectivitySource,
-    RenderSettings, Surface, SurfaceSource, Target,
+    RenderSettings, Shared, Surface, SurfaceSource, Target,
 };
 pub use warnings::{Warning, WarningKind};
 

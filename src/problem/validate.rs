@@ -18,7 +18,7 @@ use super::format::{
 use super::mesh;
 use super::model::{
     AmbientInfo, Camera, GivenVector, LightInfo, NamedMaterial, Problem, ReflectivitySource,
-    RenderSettings, Surface, SurfaceSource, Target, MAX_IMAGE_SIDE, MAX_LEVEL, MAX_LIGHTS,
+    RenderSettings, Shared, Surface, SurfaceSource, Target, MAX_IMAGE_SIDE, MAX_LEVEL, MAX_LIGHTS,
     MAX_PIXEL_SAMPLES, MAX_SAMPLES,
 };
 use crate::core::vector::{between, is_unit_length, normalize};
@@ -895,14 +895,14 @@ fn material<R: Real>(spec: &MaterialSpec, field: Field<'_>) -> Result<NamedMater
     Ok(NamedMaterial {
         name: None,
         spec: std::sync::Arc::new(spec.clone()),
-        material: Material {
+        material: Shared::new(Material {
             o_a,
             o_d,
             o_s,
             n_s,
             o_r,
             transmission,
-        },
+        }),
         reflectivity: source,
     })
 }

@@ -23,22 +23,97 @@ use crate::problem::Problem;
 pub struct Scene<R: Real> {
     /// Every surface, in a BVH (planes apart): what rays and shadow rays ask for hits.
     pub aggregate: Aggregate<R>,
-    /// The material of each surface, by index (a mesh's triangles each have their mesh's).
+    /// The material of surface i is `materials[material_of[i]]` (a mesh's triangles each
+    /// have their mesh's): a scene of 100,000 spheres holds a handful of materials, not
+    /// 100,000 copies.
+    pub material_of: Vec<u32>,
+    /// The distinct materials (equal to the bit in every field), in order of first appearance.
     pub materials: Vec<Material<R>>,
 }
 
 impl<R: Real> Scene<R> {
     /// The problem's surfaces, in a BVH.
     pub fn new(problem: &Problem<R>) -> Self {
+        let (material_of, materials) = distinct(
+            problem.surfaces().iter().map(|s| &*s.material.material),
+            material_bits,
+        );
         Scene {
             aggregate: crate::solve::aggregate(problem),
-            materials: problem
-                .surfaces()
-                .iter()
-                .map(|s| s.material.material)
-                .collect(),
+            material_of,
+            materials,
         }
     }
+
+    /// The material of surface `index`.
+    #[inline]
+    pub fn material(&self, index: usize) -> &Material<R> {
+        &self.materials[self.material_of[index] as usize]
+    }
+}
+
+/// Every field of a material by its bits (O_a, O_d, O_s, n_s, O_r, O_t, η; 1 where an
+/// optional one is present): materials with the same key compute the same bits.
+fn material_bits<R: Real>(m: &Material<R>) -> [u64; 22] {
+    let mut k = [0u64; 22];
+    let mut put = |i: usize, v: Option<V3<R>>| {
+        if let Some(v) = v {
+            k[i] = 1;
+            for (j, c) in v.to_array().iter().enumerate() {
+                k[i + 1 + j] = c.to_f64().to_bits();
+            }
+        }
+    };
+    put(0, m.o_a);
+    put(4, m.o_d);
+    put(8, m.o_s);
+    put(12, m.o_r);
+    put(16, m.transmission.map(|t| t.o_t));
+    k[20] = m.n_s.to_f64().to_bits();
+    k[21] = m.transmission.map_or(0, |t| t.eta.to_f64().to_bits());
+    k
+}
+
+/// Each item as an index into the distinct ones (equal keys), and the distinct ones in order
+/// of first appearance. A scene has a handful of distinct materials (a mesh's triangles repeat
+/// their own): the previous item's first, then a look along the few found, a map past 16.
+pub(crate) fn distinct<'a, T: Copy + 'a, K: Copy + Eq + std::hash::Hash>(
+    all: impl ExactSizeIterator<Item = &'a T>,
+    key: impl Fn(&T) -> K,
+) -> (Vec<u32>, Vec<T>) {
+    let mut items: Vec<T> = Vec::new();
+    let mut keys: Vec<K> = Vec::new();
+    let mut index: std::collections::HashMap<K, u32> = std::collections::HashMap::new();
+    let mut last: Option<(K, u32)> = None;
+    let mut of = Vec::with_capacity(all.len());
+    for m in all {
+        let k = key(m);
+        if let Some((lk, li)) = last {
+            if lk == k {
+                of.push(li);
+                continue;
+            }
+        }
+        let found = if keys.len() <= 16 {
+            keys.iter().position(|x| *x == k).map(|i| i as u32)
+        } else {
+            index.get(&k).copied()
+        };
+        let i = found.unwrap_or_else(|| {
+            items.push(*m);
+            keys.push(k);
+            let i = u32::try_from(items.len() - 1).expect("fewer than 2^32 items");
+            if keys.len() == 17 {
+                index.extend(keys.iter().enumerate().map(|(j, x)| (*x, j as u32)));
+            } else if keys.len() > 17 {
+                index.insert(k, i);
+            }
+            i
+        });
+        last = Some((k, i));
+        of.push(i);
+    }
+    (of, items)
 }
 
 pub use crate::core::secondary::{RayKind, Refraction, Stop};
@@ -310,7 +385,7 @@ impl<R: Real> Tracer<'_, R> {
         let Some(h) = found else {
             return self.miss(path, spawn, rec);
         };
-        let m = &self.scene.materials[h.index];
+        let m = self.scene.material(h.index);
         // N turned to face the incoming ray; V is the ray's direction (Eq. 4.10).
         let n = h.hit.facing(path.ray.direction).normal;
         let at = ShadingPoint {
@@ -378,7 +453,7 @@ impl<R: Real> Tracer<'_, R> {
             kind,
             parent,
         } = *path;
-        let m = &self.scene.materials[h.index];
+        let m = self.scene.material(h.index);
         let share = factor * local;
         let settings = &self.problem.render;
         // A child is traced only where its colour (O_r, O_t) ≠ 0, its level ≤ the maximum and

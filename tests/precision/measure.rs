@@ -108,7 +108,7 @@ pub fn prepare<R: Real>(case: &Case) -> Result<Prepared<R>, String> {
             n: n.unit,
             v,
         },
-        material: material.material,
+        material: *material.material,
         lights: problem.lights.clone(),
     })
 }

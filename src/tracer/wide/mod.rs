@@ -27,7 +27,7 @@
 use super::camera::CameraRays;
 use super::render::{clamped, mean};
 use super::sampler::sample;
-use super::trace::{Counts, PathState, Scene, Tracer};
+use super::trace::{distinct, Counts, PathState, Scene, Tracer};
 use crate::core::lanes::{mask_of, Wide, W, W3};
 use crate::core::light::LaneArrival;
 use crate::core::rounding::gamma;
@@ -106,7 +106,12 @@ enum Model {
 impl<R: Real> Plan<R> {
     /// The plan for rendering `scene` with `problem`'s settings.
     pub(crate) fn new(scene: &Scene<R>, problem: &Problem<R>) -> Self {
-        let (material_of, materials) = distinct_materials(&scene.materials);
+        // The scene's distinct materials, merged where shading reads the same, then each
+        // surface's index composed with it.
+        let (shading_of, materials) = distinct(scene.materials.iter(), shading_bits);
+        let material_of = (scene.material_of.iter())
+            .map(|&i| shading_of[i as usize])
+            .collect();
         let reflects = (scene.materials.iter()).any(|m| m.o_r.is_some_and(|o| o != V3::<R>::ZERO));
         let transmits = (scene.materials.iter())
             .any(|m| m.transmission.is_some_and(|t| t.o_t != V3::<R>::ZERO));
@@ -127,62 +132,23 @@ impl<R: Real> Plan<R> {
     }
 }
 
-/// Each material as an index into the distinct ones (equal in what shading reads: O_a, O_d,
-/// O_s, n_s, compared by their bits), and the distinct ones in order of first appearance.
-fn distinct_materials<R: Real>(all: &[Material<R>]) -> (Vec<u32>, Vec<Material<R>>) {
-    let mut materials: Vec<Material<R>> = Vec::new();
-    let mut index: std::collections::HashMap<[u64; 13], u32> = std::collections::HashMap::new();
-    // What shading reads of a material (O_r is the step's, read from the surface itself).
-    let key = |m: &Material<R>| {
-        let mut k = [0u64; 13];
-        let mut put = |i: usize, v: Option<V3<R>>| {
-            if let Some(v) = v {
-                k[i] = 1;
-                for (j, c) in v.to_array().iter().enumerate() {
-                    k[i + 1 + j] = c.to_f64().to_bits();
-                }
+/// What shading reads of a material (O_a, O_d, O_s, n_s) by its bits (1 where a colour is
+/// present); O_r is the step's, read from the surface itself.
+fn shading_bits<R: Real>(m: &Material<R>) -> [u64; 13] {
+    let mut k = [0u64; 13];
+    let mut put = |i: usize, v: Option<V3<R>>| {
+        if let Some(v) = v {
+            k[i] = 1;
+            for (j, c) in v.to_array().iter().enumerate() {
+                k[i + 1 + j] = c.to_f64().to_bits();
             }
-        };
-        put(0, m.o_a);
-        put(4, m.o_d);
-        put(8, m.o_s);
-        k[12] = m.n_s.to_f64().to_bits();
-        k
+        }
     };
-    // A scene has a handful of distinct materials (a mesh's triangles repeat its own): the
-    // previous surface's first, then a look along the few found, the map past 16 of them.
-    let mut keys: Vec<[u64; 13]> = Vec::new();
-    let mut last: Option<([u64; 13], u32)> = None;
-    let material_of: Vec<u32> = all
-        .iter()
-        .map(|m| {
-            let k = key(m);
-            if let Some((lk, li)) = last {
-                if lk == k {
-                    return li;
-                }
-            }
-            let i = if keys.len() <= 16 {
-                keys.iter().position(|x| *x == k).map(|i| i as u32)
-            } else {
-                index.get(&k).copied()
-            };
-            let i = i.unwrap_or_else(|| {
-                materials.push(*m);
-                keys.push(k);
-                let i = (materials.len() - 1) as u32;
-                if keys.len() == 17 {
-                    index.extend(keys.iter().enumerate().map(|(j, x)| (*x, j as u32)));
-                } else if keys.len() > 17 {
-                    index.insert(k, i);
-                }
-                i
-            });
-            last = Some((k, i));
-            i
-        })
-        .collect();
-    (material_of, materials)
+    put(0, m.o_a);
+    put(4, m.o_d);
+    put(8, m.o_s);
+    k[12] = m.n_s.to_f64().to_bits();
+    k
 }
 
 /// The wide engine's side of the core's [`shade_lanes`]: the shadow rays of a register of hits

@@ -160,7 +160,7 @@ fn the_plan_groups_exactly_the_equal_materials() {
         transmission: None,
     };
     let all: Vec<Material<f64>> = (0..40).map(|i| m(i % 20, (i / 20) as f64 * 0.5)).collect();
-    let (of, distinct) = super::distinct_materials(&all);
+    let (of, distinct) = super::distinct(all.iter(), super::shading_bits);
     assert_eq!(distinct.len(), 20);
     for (i, id) in of.iter().enumerate() {
         assert_eq!(*id as usize, i % 20, "material {i}");
@@ -233,4 +233,30 @@ fn glass_scenes_in<R: Real>() {
 fn ray_trees_render_the_same_bits_by_both_engines_in_both_precisions() {
     glass_scenes_in::<f32>();
     glass_scenes_in::<f64>();
+}
+
+/// The scene holds each distinct material once (the many-spheres scene's five: the floor and
+/// four for the spheres), and every surface's is its own material to the bit.
+#[test]
+fn the_scene_holds_each_material_once_and_each_surface_its_own() {
+    let mut problem = load::<f64>(&many_spheres::scene(200).to_string());
+    let scene = Scene::new(&problem);
+    assert_eq!(scene.materials.len(), 5);
+    let bits = |m: &crate::core::Material<f64>| format!("{m:?}");
+    for (i, s) in problem.surfaces().iter().enumerate() {
+        assert_eq!(bits(scene.material(i)), bits(&s.material.material), "surface {i}");
+    }
+    // A surface whose material is changed is its own material afterwards, and no other's.
+    let problem::Target::Scene { surfaces, .. } = &mut problem.target else {
+        panic!("a scene")
+    };
+    let before = *surfaces[2].material.material;
+    surfaces[1].material.material.n_s = 7.0;
+    assert_eq!(*surfaces[2].material.material, before);
+    let scene = Scene::new(&problem);
+    assert_eq!(scene.materials.len(), 6);
+    assert_eq!(scene.material(1).n_s, 7.0);
+    for (i, s) in problem.surfaces().iter().enumerate() {
+        assert_eq!(bits(scene.material(i)), bits(&s.material.material), "surface {i}");
+    }
 }
