@@ -192,8 +192,13 @@ impl Policy {
     }
 
     /// Reads a policy file's text (every field optional; a rubric file of earlier versions,
-    /// `{"points": …, "default": …, "reading_credit": …}`, is one).
+    /// `{"points": …, "default": …, "reading_credit": …}`, is one). An empty text (blanks
+    /// only) is the defaults, as `{}` is: `phong policy > course-policy.json` lets the shell
+    /// create the file, empty, before phong reads the folder's policy.
     pub fn read_json(text: &str) -> Result<Policy, PolicyError> {
+        if text.trim().is_empty() {
+            return Ok(Policy::default());
+        }
         let file: PolicyFile = serde_json::from_str(text).map_err(|e| PolicyError::NotAPolicy {
             error: crate::problem::JsonError::of(&e),
         })?;
@@ -493,6 +498,8 @@ mod tests {
         assert_eq!(p.points_of("4.9"), 3.0);
         assert_eq!(p.reading_credit, 0.25);
         assert!(Policy::read_json(r#"{"point": {}}"#).is_err());
+        // An empty file is the defaults (the shell's `>` creates it before phong reads it).
+        assert_eq!(Policy::read_json(" \n").unwrap(), Policy::default());
         assert!(Policy::read_json(r#"{"reading_credit": 2}"#).is_err());
         assert!(Policy::read_json(r#"{"points": {"4.1": -1}}"#).is_err());
     }

@@ -244,7 +244,11 @@ fn the_scene_holds_each_material_once_and_each_surface_its_own() {
     assert_eq!(scene.materials.len(), 5);
     let bits = |m: &crate::core::Material<f64>| format!("{m:?}");
     for (i, s) in problem.surfaces().iter().enumerate() {
-        assert_eq!(bits(scene.material(i)), bits(&s.material.material), "surface {i}");
+        assert_eq!(
+            bits(scene.material(i)),
+            bits(&s.material.material),
+            "surface {i}"
+        );
     }
     // A surface whose material is changed is its own material afterwards, and no other's.
     let problem::Target::Scene { surfaces, .. } = &mut problem.target else {
@@ -257,6 +261,10 @@ fn the_scene_holds_each_material_once_and_each_surface_its_own() {
     assert_eq!(scene.materials.len(), 6);
     assert_eq!(scene.material(1).n_s, 7.0);
     for (i, s) in problem.surfaces().iter().enumerate() {
-        assert_eq!(bits(scene.material(i)), bits(&s.material.material), "surface {i}");
+        assert_eq!(
+            bits(scene.material(i)),
+            bits(&s.material.material),
+            "surface {i}"
+        );
     }
 }
