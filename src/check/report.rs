@@ -164,7 +164,8 @@ fn signed(x: f64) -> String {
     }
 }
 
-fn triple(v: [f64; 3], f: fn(f64) -> String) -> String {
+/// A colour as `(r, g, b)`, each number written by `f`.
+pub(crate) fn triple(v: [f64; 3], f: fn(f64) -> String) -> String {
     format!("({}, {}, {})", f(v[0]), f(v[1]), f(v[2]))
 }
 

@@ -42,7 +42,9 @@ use std::fmt::Write;
 use crate::check::{messages as check_messages, Expected, Slip};
 use crate::problem::Problem;
 use crate::report::diagram;
-use crate::report::explain::{latex_math, nest, runs, Explanation, Node, Run, Shading, Step};
+use crate::report::explain::{
+    capitalised, latex_math, nest, runs, Explanation, Node, Run, Shading, Step,
+};
 use crate::report::html::{data_table, esc, STYLE};
 use crate::text::lang::Lang;
 
@@ -363,15 +365,6 @@ fn part(weight: u32, kind: &str, alts: &[Alt]) -> String {
         })
         .collect();
     format!("{{{weight}:{kind}:{}}}", body.join("~"))
-}
-
-/// `s` with its first letter in upper case.
-fn capitalised(s: &str) -> String {
-    let mut c = s.chars();
-    match c.next() {
-        Some(first) => first.to_uppercase().chain(c).collect(),
-        None => String::new(),
-    }
 }
 
 /// A colour as a choice of the no-hit part: `(0.524, 0.027, 0)`, three decimals (six where the

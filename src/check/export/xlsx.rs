@@ -14,8 +14,8 @@
 //! Text from the submissions goes through the one XML rule (`text::xml::sanitize`): a workbook
 //! is XML inside, and a character XML forbids would make Excel refuse it.
 //!
-//! The answers' sheet is written row by row in the library's constant-memory mode, so a class
-//! of a million rows stays within the grading's memory bound. The CSV stays the machine format.
+//! The answers' and the students' sheets are written row by row in the library's
+//! constant-memory mode, so a class of a million rows stays within the grading's memory bound. The CSV stays the machine format.
 
 use rust_xlsxwriter::{Color, Format, Workbook, Worksheet, XlsxError};
 
@@ -163,7 +163,8 @@ fn answers(book: &mut Workbook, graded: &Graded, lang: Lang) -> Result<(), XlsxE
 }
 
 fn students(book: &mut Workbook, graded: &Graded, lang: Lang) -> Result<(), XlsxError> {
-    let sheet = book.add_worksheet();
+    // A student a row, in order: constant memory too (a class file may hold a million).
+    let sheet = book.add_worksheet_with_constant_memory();
     sheet.set_name(Sheet::Students.text(lang))?;
     header(
         sheet,

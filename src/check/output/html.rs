@@ -19,7 +19,7 @@ use crate::check::messages::{self as said, Line, Page};
 use crate::check::report::{Checked, Judged};
 use crate::check::steps::{self, StepVerdict, StepsChecked, StepsJudged};
 use crate::check::{Candidate, Scale, VerdictKind};
-use crate::report::explain::{Explanation, Ref};
+use crate::report::explain::{capitalised, Explanation, Ref};
 use crate::report::html::{esc, step_anchor, swatch};
 use crate::text::number::num;
 use crate::text::{Lang, Message};
@@ -121,12 +121,12 @@ fn intended(x: &Explanation) -> Option<crate::solve::ReadingCode> {
 }
 
 fn triple(v: [f64; 3]) -> String {
-    format!("({}, {}, {})", num(v[0]), num(v[1]), num(v[2]))
+    crate::check::report::triple(v, num)
 }
 
 /// A colour on `scale` as 8 bits for a swatch (clamped to [0, 1] first).
-fn rgb8(v: [f64; 3], scale: Scale) -> [u8; 3] {
-    v.map(|x| ((x / scale.factor()).clamp(0.0, 1.0) * 255.0).round() as u8)
+pub(crate) fn rgb8(v: [f64; 3], scale: Scale) -> [u8; 3] {
+    crate::core::color::rgb8(v.map(|x| x / scale.factor()))
 }
 
 /// A colour as a swatch with its numbers and a caption, the swatch named for a reader that does
@@ -143,12 +143,6 @@ fn colour_figure(caption: &str, v: [f64; 3], scale: Scale, note: &str, lang: Lan
         esc(&shown),
         esc(note)
     )
-}
-
-fn capitalised(s: &str) -> String {
-    let mut c = s.chars();
-    c.next()
-        .map_or(String::new(), |f| f.to_uppercase().chain(c).collect())
 }
 
 /// The verdict on one judged answer, as an HTML fragment (the module's notes). The verdict's

@@ -11,6 +11,7 @@ use crate::check::messages::{self as said, Line, Page};
 use crate::check::report::{Checked, Judged};
 use crate::check::steps::{self, StepVerdict, StepsChecked, StepsJudged};
 use crate::check::{Scale, VerdictKind};
+use crate::report::explain::capitalised;
 use crate::report::markdown::{escape, head, write_parts};
 use crate::text::number::num;
 use crate::text::{Lang, Message};
@@ -33,19 +34,13 @@ impl MarkdownWriter {
 }
 
 fn triple(v: [f64; 3]) -> String {
-    format!("({}, {}, {})", num(v[0]), num(v[1]), num(v[2]))
+    crate::check::report::triple(v, num)
 }
 
-/// `#RRGGBB` of a colour on `scale` (clamped to [0, 1]).
+/// `#RRGGBB` of a colour on `scale` (clamped to [0, 1]), as the page's swatch shows it.
 fn hex(v: [f64; 3], scale: Scale) -> String {
-    let c = v.map(|x| ((x / scale.factor()).clamp(0.0, 1.0) * 255.0).round() as u8);
+    let c = super::html::rgb8(v, scale);
     format!("#{:02X}{:02X}{:02X}", c[0], c[1], c[2])
-}
-
-fn capitalised(s: &str) -> String {
-    let mut c = s.chars();
-    c.next()
-        .map_or(String::new(), |f| f.to_uppercase().chain(c).collect())
 }
 
 fn answer(out: &mut String, j: &Judged, lang: Lang) {
