@@ -1229,30 +1229,31 @@ pub fn text(c: &StepsChecked, lang: Lang) -> String {
             step_message(s, lang)
         );
     }
-    match j.first_wrong {
-        Some(k) => {
-            let s = &j.steps[k];
-            let _ = writeln!(
-                out,
-                "  {}",
-                messages::first_wrong(
-                    &s.label(),
-                    &equation(&s.expected, lang),
-                    s.verdict == StepVerdict::Reading,
-                    lang
-                )
-            );
-        }
-        None => {
-            let _ = writeln!(out, "  {}", messages::all_steps_right(lang));
-        }
-    }
+    let _ = writeln!(out, "  {}", closing(j, lang));
     let _ = writeln!(
         out,
         "  {}",
         messages::step_tolerance(STEP_RELATIVE, STEP_ABSOLUTE, lang)
     );
     out
+}
+
+/// What the steps come to: the first wrong one and its equation (and whether the likely
+/// intended reading goes on from there), or that every step is right. Every layout of the
+/// steps (text, a grade row's feedback, the page, Markdown) closes with it.
+pub(crate) fn closing(j: &StepsJudged, lang: Lang) -> String {
+    match j.first_wrong {
+        Some(k) => {
+            let s = &j.steps[k];
+            messages::first_wrong(
+                &s.label(),
+                &equation(&s.expected, lang),
+                s.verdict == StepVerdict::Reading,
+                lang,
+            )
+        }
+        None => messages::all_steps_right(lang).to_owned(),
+    }
 }
 
 /// The steps of one row of `phong grade`, as its feedback says them: a sentence per step (its
@@ -1271,19 +1272,7 @@ pub(crate) fn feedback(j: &StepsJudged, lang: Lang) -> String {
             )
         })
         .collect();
-    let closing = match j.first_wrong {
-        Some(k) => {
-            let s = &j.steps[k];
-            messages::first_wrong(
-                &s.label(),
-                &equation(&s.expected, lang),
-                s.verdict == StepVerdict::Reading,
-                lang,
-            )
-        }
-        None => messages::all_steps_right(lang).to_owned(),
-    };
-    sentences.push(capitalised(&closing));
+    sentences.push(capitalised(&closing(j, lang)));
     sentences
         .iter()
         .map(|s| format!("{s}."))

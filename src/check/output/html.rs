@@ -417,18 +417,7 @@ pub(crate) fn steps_fragment(
         );
     }
     out.push_str("</table>\n");
-    let closing = match j.first_wrong {
-        Some(k) => {
-            let s = &j.steps[k];
-            said::first_wrong(
-                &s.label(),
-                &steps::equation(&s.expected, lang),
-                s.verdict == StepVerdict::Reading,
-                lang,
-            )
-        }
-        None => said::all_steps_right(lang).to_owned(),
-    };
+    let closing = steps::closing(j, lang);
     let _ = writeln!(
         out,
         "<p>{}</p>\n<p class=\"help\">{}</p>\n</div>",

@@ -9,7 +9,7 @@ use std::fmt::Write;
 use super::Writer;
 use crate::check::messages::{self as said, Line, Page};
 use crate::check::report::{Checked, Judged};
-use crate::check::steps::{self, StepVerdict, StepsChecked, StepsJudged};
+use crate::check::steps::{self, StepsChecked, StepsJudged};
 use crate::check::{Scale, VerdictKind};
 use crate::report::explain::capitalised;
 use crate::report::markdown::{escape, head, write_parts};
@@ -220,18 +220,7 @@ fn steps_table(out: &mut String, j: &StepsJudged, lang: Lang) {
             escape(&steps::step_message(s, lang))
         );
     }
-    let closing = match j.first_wrong {
-        Some(k) => {
-            let s = &j.steps[k];
-            said::first_wrong(
-                &s.label(),
-                &steps::equation(&s.expected, lang),
-                s.verdict == StepVerdict::Reading,
-                lang,
-            )
-        }
-        None => said::all_steps_right(lang).to_owned(),
-    };
+    let closing = steps::closing(j, lang);
     let _ = writeln!(out, "\n{}\n", escape(&closing));
 }
 
