@@ -246,7 +246,8 @@ fn rows() -> (Vec<u8>, Vec<&'static str>) {
     );
     row(
         b"l,4.1,abc",
-        "the answer cannot be read: \"abc\" is not three numbers: write three numbers such as \
+        "the answer cannot be read: \"abc\" is not three numbers; no number could be read in \
+         it: write three numbers such as \
          \"0.52 0.03 0\", \"(0.52, 0.03, 0)\" or \"[0.52; 0.03; 0]\", three integers 0–255 with \
          --scale 255, \"#RRGGBB\", or \"none\" when the ray hits nothing",
     );
