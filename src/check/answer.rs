@@ -378,9 +378,9 @@ fn strip_label(t: &str) -> &str {
             .chars()
             .next()
             .is_some_and(|c| c.is_alphabetic() || c == '(')
-        && name.chars().all(|c| {
-            c.is_alphanumeric() || matches!(c, '_' | '(' | ')' | ' ' | '\'' | '.' | ',')
-        });
+        && name
+            .chars()
+            .all(|c| c.is_alphanumeric() || matches!(c, '_' | '(' | ')' | ' ' | '\'' | '.' | ','));
     if looks_like_a_name && !is_channel(name) {
         rest.trim()
     } else {
@@ -426,10 +426,7 @@ fn channels(t: &str) -> Option<Vec<(char, &str)>> {
             .enumerate()
             .map(|(n, &(c, _, from))| {
                 let to = labels.get(n + 1).map_or(t.len(), |l| l.1);
-                let value = t[from..to]
-                    .trim()
-                    .trim_end_matches([',', ';'])
-                    .trim();
+                let value = t[from..to].trim().trim_end_matches([',', ';']).trim();
                 (c, value)
             })
             .collect(),
@@ -641,7 +638,9 @@ impl Show for Read {
         match (self.0.len(), lang) {
             (0, Lang::En) => f.write_str("; no number could be read in it"),
             (0, Lang::Pt) => f.write_str("; nenhum número pôde ser lido nela"),
-            (1, Lang::En) => f.write_str("; one number was read: ").and_then(|()| list(f)),
+            (1, Lang::En) => f
+                .write_str("; one number was read: ")
+                .and_then(|()| list(f)),
             (1, Lang::Pt) => f.write_str("; um número foi lido: ").and_then(|()| list(f)),
             (n, Lang::En) => write!(f, "; {n} numbers were read: ").and_then(|()| list(f)),
             (n, Lang::Pt) => write!(f, "; {n} números foram lidos: ").and_then(|()| list(f)),
@@ -831,11 +830,19 @@ mod tests {
             e.text(Lang::Pt)
         );
         let e = parse("0.5 0.7 0.3 0.1", Scale::Unit).unwrap_err();
-        assert!(e.to_string().contains("; 4 numbers were read: 0.5, 0.7, 0.3, 0.1"), "{e}");
+        assert!(
+            e.to_string()
+                .contains("; 4 numbers were read: 0.5, 0.7, 0.3, 0.1"),
+            "{e}"
+        );
         let e = parse("0.5", Scale::Unit).unwrap_err();
         assert!(e.to_string().contains("; one number was read: 0.5"), "{e}");
         let e = parse("vermelho", Scale::Unit).unwrap_err();
-        assert!(e.text(Lang::Pt).contains("; nenhum número pôde ser lido nela"), "{e}");
+        assert!(
+            e.text(Lang::Pt)
+                .contains("; nenhum número pôde ser lido nela"),
+            "{e}"
+        );
         // Channels named: the one missing, the one given twice, the value that is not a number.
         let e = parse("R = 0.5, G = 0.7", Scale::Unit).unwrap_err();
         assert!(
@@ -854,7 +861,11 @@ mod tests {
             e.text(Lang::Pt)
         );
         let e = parse("R = 0,5", Scale::Unit).unwrap_err();
-        assert!(e.to_string().contains("R = 0.5 was read, G and B are missing"), "{e}");
+        assert!(
+            e.to_string()
+                .contains("R = 0.5 was read, G and B are missing"),
+            "{e}"
+        );
         let e = parse("R = 0.5, R = 0.7, B = 0.3", Scale::Unit).unwrap_err();
         assert!(
             e.to_string()

@@ -155,7 +155,8 @@ pub struct Shading {
 /// What a diagram of the plane of incidence needs: the unit vectors at P for one light.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Diagram {
-    /// The light's label (`lights[0] (point) "white light"`).
+    /// The light as a document names it, with its article ("the white light", "a luz
+    /// branca": `report::messages::light_noun`).
     pub light: String,
     /// Its index in the file's `lights`.
     pub light_index: usize,
@@ -232,18 +233,24 @@ pub fn explain<R: Real>(
             }
         }),
     })
-    .chain(s.readings.iter().map(|r| Part {
-        heading: capitalised(messages::reading_label_in(r.code, lang)),
-        explanation: Some(
-            messages::reading_explanation_given(r.code, lang, problem.viewer.is_some()).to_owned(),
-        ),
-        ray: r.intersection.as_ref().map(|x| intersection(x, lang)),
-        shading: Some(shading(
-            problem,
-            &r.evaluation,
-            lang,
-            ray_mark(r.intersection.as_ref()),
-        )),
+    .chain(s.readings.iter().map(|r| {
+        Part {
+            heading: capitalised(messages::reading_label_in(r.code, lang)),
+            explanation: Some(
+                messages::reading_explanation_given(r.code, lang, problem.viewer.is_some())
+                    .to_owned(),
+            ),
+            ray: r
+                .intersection
+                .as_ref()
+                .map(|x| intersection(problem, x, lang)),
+            shading: Some(shading(
+                problem,
+                &r.evaluation,
+                lang,
+                ray_mark(r.intersection.as_ref()),
+            )),
+        }
     }))
     .collect();
     let title = match lang {
@@ -266,7 +273,10 @@ pub fn explain<R: Real>(
             .iter()
             .map(|f| messages::finding_in(problem, f, lang))
             .collect(),
-        ray: s.intersection.as_ref().map(|x| intersection(x, lang)),
+        ray: s
+            .intersection
+            .as_ref()
+            .map(|x| intersection(problem, x, lang)),
         parts,
         warnings: problem.warnings.iter().map(|w| w.text(lang)).collect(),
     }
@@ -600,7 +610,7 @@ fn data<R: Real>(problem: &Problem<R>, lang: Lang) -> Vec<DataRow> {
     rows
 }
 
-fn intersection<R: Real>(x: &Intersection<R>, lang: Lang) -> Vec<Step> {
+fn intersection<R: Real>(problem: &Problem<R>, x: &Intersection<R>, lang: Lang) -> Vec<Step> {
     let mut out = Steps(Vec::new());
     out.push(
         0,
@@ -635,9 +645,11 @@ fn intersection<R: Real>(x: &Intersection<R>, lang: Lang) -> Vec<Step> {
                 0,
                 vec![
                     t(format!(
-                        "{} ({}): ",
-                        messages::surface_kind(kind, lang),
-                        messages::surface_label(x.source, lang)
+                        "{}: ",
+                        capitalised(&match x.source {
+                            Some(source) => messages::surface_noun(problem, source).the(lang),
+                            None => messages::surface_kind(kind, lang).to_owned(),
+                        })
                     )),
                     Math(Formula::T),
                     EQ,
@@ -1167,13 +1179,22 @@ fn light<R: Real>(
     let l = &set.lights[term.index];
     let info = &problem.light_info[term.index];
     let a = &term.arrival;
-    let name = messages::light_name_in(problem, info.file_index, lang);
-    let mut head = vec![p(Phrase::Light, lang), t(format!("{name} "))];
+    // The light named as a person would ("The yellow light (point) at …"), its kind after it
+    // unless its name says it ("The green spot at …").
+    let noun = messages::light_noun(problem, info.file_index);
+    let name = noun.the(lang);
+    let kind = messages::light_kind(info.kind, lang);
+    let mut head = vec![t(if name.contains(kind) {
+        capitalised(&name)
+    } else {
+        format!("{} ({kind})", capitalised(&name))
+    })];
     match l.kind {
         LightKind::Point { position, .. } => {
-            head.extend([p(Phrase::At, lang), Vector(v::<R>(position))]);
+            head.extend([t(" "), p(Phrase::At, lang), Vector(v::<R>(position))]);
         }
         LightKind::Spot { position, cone, .. } => head.extend([
+            t(" "),
             p(Phrase::At, lang),
             Vector(v::<R>(position)),
             p(Phrase::Axis, lang),
@@ -1190,6 +1211,7 @@ fn light<R: Real>(
             Num(cone.exponent.to_f64()),
         ]),
         LightKind::Directional { direction } => head.extend([
+            t(", "),
             p(Phrase::Direction, lang),
             Math(Formula::DL),
             EQ,
