@@ -146,7 +146,7 @@ fn the_portuguese_explanation_of_4_2_uses_the_chapters_terms() {
         "A luz branca (pontual)",
         "observador",
         "normal",
-        "Solução (o problema como escrito)",
+        "Solução (o problema como enunciado)",
         "Leitura provavelmente pretendida",
     ] {
         assert!(t.contains(term), "missing «{term}» in:\n{t}");

@@ -1533,6 +1533,39 @@ pub(crate) fn runs(line: &[Inline]) -> Vec<Run<'_>> {
     out
 }
 
+/// `text` with each triple of numbers in parentheses ("(76, 92, 81)", "(0.5, -1, 2)") replaced
+/// by `keep(triple)`: how a layout keeps a colour or a vector on one line (an answer key's
+/// column is narrow, and "(76, 92," at the end of a line and "81)" on the next reads as two
+/// answers).
+pub(crate) fn keep_triples(text: &str, keep: impl Fn(&str) -> String) -> String {
+    let mut out = String::new();
+    let mut rest = text;
+    while let Some(open) = rest.find('(') {
+        out.push_str(&rest[..open]);
+        let after = &rest[open..];
+        let triple = after.find(')').map(|close| &after[..=close]).filter(|g| {
+            let inner = &g[1..g.len() - 1];
+            inner.matches(',').count() == 2
+                && inner.contains(' ')
+                && inner
+                    .chars()
+                    .all(|c| c.is_ascii_digit() || matches!(c, '.' | '-' | '−' | ',' | ' ' | 'e'))
+        });
+        match triple {
+            Some(g) => {
+                out.push_str(&keep(g));
+                rest = &after[g.len()..];
+            }
+            None => {
+                out.push('(');
+                rest = &after[1..];
+            }
+        }
+    }
+    out.push_str(rest);
+    out
+}
+
 /// A colour clamped to [0, 1] in 8 bits, for a swatch (the solver's and the tracer's rounding).
 pub(crate) use crate::core::color::rgb8 as to_rgb8;
 
@@ -1570,4 +1603,22 @@ pub(crate) fn latex_math(run: &[&Inline]) -> String {
         }
     }
     s.trim().to_owned()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::keep_triples;
+
+    #[test]
+    fn a_triple_of_numbers_is_kept_whole_and_nothing_else_is() {
+        let mark = |g: &str| format!("[{g}]");
+        assert_eq!(
+            keep_triples("8 bits (76, 92, 81) and (0.5, -1, 2)", mark),
+            "8 bits [(76, 92, 81)] and [(0.5, -1, 2)]"
+        );
+        // Two numbers, words, or no closing parenthesis: left as they are.
+        for text in ["(1, 2)", "(pontual) em", "(a, b, c)", "(1, 2, 3", "f(x)"] {
+            assert_eq!(keep_triples(text, mark), text);
+        }
+    }
 }

@@ -74,7 +74,7 @@ phrases! {
     Problem => "Problem", "Problema";
     Findings => "Findings", "Observações";
     Ray => "Ray", "Raio";
-    AsWritten => "Solution (the problem as written)", "Solução (o problema como escrito)";
+    AsWritten => "Solution (the problem as written)", "Solução (o problema como enunciado)";
     NothingToShade => "no point to shade: the ray hits nothing",
         "nenhum ponto a iluminar: o raio não atinge nada";
     Given => "Given", "Dados";
@@ -181,7 +181,7 @@ phrases! {
     AnswerKey => "Answer key", "Gabarito";
     Quantity => "Given", "Dado";
     Value => "Value", "Valor";
-    Answer => "Answer (as written)", "Resposta (como escrito)";
+    Answer => "Answer (as written)", "Resposta (como enunciado)";
     NoHitAnswer => "no hit: the ray hits nothing", "nenhuma interseção: o raio não atinge nada";
 }
 
@@ -471,7 +471,7 @@ fn finding_with<R: Real>(problem: &Problem<R>, f: &Finding, lang: Lang, json: bo
             ),
             format!(
                 "o raio encontra a superfície apenas atrás de sua origem, em t = {} (uma \
-                 interseção exige t > 0): como escrito, o raio não atinge nada. O ponto onde a \
+                 interseção exige t > 0): como enunciado, o raio não atinge nada. O ponto onde a \
                  reta do raio encontra a superfície é mostrado abaixo como outra leitura",
                 num(t)
             ),
@@ -1123,12 +1123,12 @@ pub fn reading_explanation_in(code: ReadingCode, lang: Lang) -> &'static str {
              front: light and viewer are then on the same side and every term of Eq. 4.16 is \
              used. Its colour is the negative of the literal Eq. 4.16 where n_s is odd. This is \
              not the problem as written",
-            "como escrito, nenhuma fonte de luz ilumina a superfície e uma está atrás dela. \
+            "como enunciado, nenhuma fonte de luz ilumina a superfície e uma está atrás dela. \
              Tomar L = (P_l − P)/‖P_l − P‖, o oposto da Eq. 4.1 (um deslize comum, e a convenção \
              de muitos livros), equivale a espelhar cada fonte de luz através de P para a \
              frente: fonte de luz e observador ficam então do mesmo lado e todos os termos da \
              Eq. 4.16 são usados. Sua cor é o negativo da Eq. 4.16 literal onde n_s é ímpar. \
-             Este não é o problema como escrito",
+             Este não é o problema como enunciado",
         ),
         ReadingCode::NormalReversed => pick(
             lang,
@@ -1137,7 +1137,7 @@ pub fn reading_explanation_in(code: ReadingCode, lang: Lang) -> &'static str {
              the back side, so there is no specular term. This is not the problem as written",
             "a superfície tomada como iluminada por trás: inverter N a deixa voltada para a \
              fonte de luz, o que equivale a tomar |cos θ|; o observador fica então do lado de \
-             trás, logo não há reflexão especular. Este não é o problema como escrito",
+             trás, logo não há reflexão especular. Este não é o problema como enunciado",
         ),
         ReadingCode::LineBehindOrigin => pick(
             lang,
@@ -1146,7 +1146,7 @@ pub fn reading_explanation_in(code: ReadingCode, lang: Lang) -> &'static str {
              given. This is not the problem as written",
             "a interseção em t < 0 está atrás da origem do raio; é a interseção do raio com a \
              direção invertida, logo V = −D quando não é dado observador. Este não é o \
-             problema como escrito",
+             problema como enunciado",
         ),
     }
 }
@@ -1162,7 +1162,7 @@ pub fn reading_explanation_given(code: ReadingCode, lang: Lang, viewer: bool) ->
              the point). This is not the problem as written",
             "a interseção em t < 0 está atrás da origem do raio; é a interseção do raio com a \
              direção invertida, iluminada para o observador dado pelo problema (V do \
-             observador para o ponto). Este não é o problema como escrito",
+             observador para o ponto). Este não é o problema como enunciado",
         ),
         _ => reading_explanation_in(code, lang),
     }

@@ -134,7 +134,7 @@ texts! {
     Own => "Your own problem", "Seu próprio problema";
     LanguageNav => "Language", "Idioma";
     SwitchTo => "Português", "English";
-    ListIntro => "Choose an exercise to read its statement, check your answer (and, if you like, your intermediate steps), and see the worked solution.", "Escolha um exercício para ler o enunciado, verificar sua resposta (e, se quiser, seus passos intermediários) e ver a solução resolvida.";
+    ListIntro => "Choose an exercise to read its statement, check your answer (and, if you like, your intermediate steps), and see the worked solution.", "Escolha um exercício para ler o enunciado, verificar sua resposta (e, se quiser, seus passos intermediários) e ver a resolução passo a passo.";
     ListHeading => "The exercises", "Os exercícios";
     OwnInvite => "Or write your own problem and solve it.", "Ou escreva seu próprio problema e resolva-o.";
     PointKind => "point", "ponto";
@@ -151,7 +151,7 @@ texts! {
     Scale255 => "0 to 255 (8 bits)", "de 0 a 255 (8 bits)";
     StepsHeading => "Intermediate steps (optional)", "Passos intermediários (opcional)";
     StepsHelp => "Fill in only the quantities you computed; empty boxes are ignored. A vector is three numbers.", "Preencha só as grandezas que calculou; as caixas vazias são ignoradas. Um vetor são três números.";
-    ShowSolution => "Show the worked solution", "Mostrar a solução resolvida";
+    ShowSolution => "Show the worked solution", "Mostrar a resolução passo a passo";
     Check => "Check", "Verificar";
     VerdictHeading => "Verdict", "Veredito";
     StepName => "Quantity", "Grandeza";
@@ -159,8 +159,8 @@ texts! {
     StepJudged => "Verdict", "Veredito";
     NothingGiven => "Write an answer or at least one step, then press Check.", "Escreva uma resposta ou pelo menos um passo e pressione Verificar.";
     CannotCheck => "This could not be checked", "Não foi possível verificar";
-    SolutionHeading => "Worked solution", "Solução resolvida";
-    SolutionLink => "See the worked solution", "Ver a solução resolvida";
+    SolutionHeading => "Worked solution", "Resolução passo a passo";
+    SolutionLink => "See the worked solution", "Ver a resolução passo a passo";
     NotFound => "Not found", "Não encontrado";
     NoSuchExercise => "There is no exercise with this name.", "Não há exercício com este nome.";
     BackToList => "Back to the exercises", "Voltar aos exercícios";
@@ -194,12 +194,12 @@ texts! {
     SpotExponent => "Spot exponent e", "Expoente e do spot";
     LightDirection => "Direction of travel (a directional light)", "Direção de propagação (luz direcional)";
     LightColour => "Colour C_l", "Cor C_l";
-    Falloff => "Falloff exponent f (0 none, 1 linear, 2 quadratic)", "Expoente de decaimento f (0 nenhum, 1 linear, 2 quadrático)";
+    Falloff => "Falloff exponent f (0 none, 1 linear, 2 quadratic)", "Fator de decaimento f (0 nenhum, 1 linear, 2 quadrático)";
     Material => "Material", "Material";
     MatAmbient => "Ambient O_a", "Ambiente O_a";
     MatDiffuse => "Diffuse O_d", "Difusa O_d";
     MatSpecular => "Specular O_s", "Especular O_s";
-    Shininess => "Shininess n_s", "Expoente especular n_s";
+    Shininess => "Shininess n_s", "Expoente de reflexão especular n_s";
     Solve => "Solve", "Resolver";
     ProblemJson => "The problem as a file", "O problema como arquivo";
     JsonHelp => "This is the problem in phong's file format: save it to solve or check it with the command line (phong solve problem.json).", "Este é o problema no formato de arquivo do phong: salve-o para resolvê-lo ou verificá-lo na linha de comando (phong solve problem.json).";
