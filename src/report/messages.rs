@@ -160,6 +160,7 @@ phrases! {
     ViewerMark => "viewer", "observador";
     RayOriginMark => "ray's origin O", "origem O do raio";
     BackSide => "back side", "lado de trás";
+    MarksAnd => " and ", " e ";
     VProjected => "V is not in this plane: its projection is drawn.",
         "V não está neste plano: sua projeção é desenhada.";
     VOutOfPlane => "V is perpendicular to this plane and is not drawn.",
