@@ -446,26 +446,28 @@ fn channels_values(channels: Vec<(char, &str)>, shown: &Echo) -> Result<[f64; 3]
                 forms: Forms,
             })
         })?;
-        let slot = match c {
-            'R' => &mut read.r,
-            'G' => &mut read.g,
-            _ => &mut read.b,
+        let k = match c {
+            'R' => 0,
+            'G' => 1,
+            _ => 2,
         };
-        if slot.is_some() {
+        if read.given[k] {
             return Err(bad(AnswerFault::ChannelTwice {
                 shown: shown.clone(),
                 channel: c,
             }));
         }
-        *slot = Some(Num(x));
+        read.values[k] = x;
+        read.given[k] = true;
     }
-    match (read.r, read.g, read.b) {
-        (Some(r), Some(g), Some(b)) => Ok([r.0, g.0, b.0]),
-        _ => Err(bad(AnswerFault::ChannelMissing {
+    if read.given == [true; 3] {
+        Ok(read.values)
+    } else {
+        Err(bad(AnswerFault::ChannelMissing {
             shown: shown.clone(),
             read,
             forms: Forms,
-        })),
+        }))
     }
 }
 
@@ -649,20 +651,25 @@ impl Show for Read {
 }
 
 /// The channels read of an answer that names them, and those it does not give
-/// (`read R = 0.5 and G = 0.7, B is missing`).
+/// (`read R = 0.5 and G = 0.7, B is missing`): R, G, B, each with whether it was given.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct Channels {
-    /// R, where given.
-    pub r: Option<Num>,
-    /// G, where given.
-    pub g: Option<Num>,
-    /// B, where given.
-    pub b: Option<Num>,
+    /// The values read, in the order R, G, B (0 where not given).
+    pub values: [f64; 3],
+    /// Whether each was given.
+    pub given: [bool; 3],
+}
+
+impl Channels {
+    /// Channel `k` (0 R, 1 G, 2 B), where given.
+    fn get(&self, k: usize) -> Option<Num> {
+        self.given[k].then_some(Num(self.values[k]))
+    }
 }
 
 impl Show for Channels {
     fn show(&self, lang: Lang, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        let named = [('R', self.r), ('G', self.g), ('B', self.b)];
+        let named = [('R', self.get(0)), ('G', self.get(1)), ('B', self.get(2))];
         let given: Vec<String> = named
             .iter()
             .filter_map(|(c, x)| x.map(|x| format!("{c} = {}", In(&x, lang))))

@@ -714,6 +714,13 @@ fn screen_angle(a: f64, b: f64) -> f64 {
     (-b).atan2(a)
 }
 
+/// A mark to draw: its item, centre, half sizes, name and its label's id.
+type Mark<'a> = (Item, (f64, f64), (f64, f64), &'a str, String);
+
+/// A vector to name: its id, the names it carries, its two ends, its screen angle from P and
+/// the side its label prefers.
+type Named<'a> = (&'a str, Vec<&'a str>, (f64, f64), (f64, f64), f64, f64);
+
 /// Lays out the diagram of one light.
 pub fn figure(d: &Diagram, id: &str, lang: Lang) -> Figure {
     let pl = plane(d);
@@ -864,7 +871,7 @@ pub fn figure(d: &Diagram, id: &str, lang: Lang) -> Figure {
     // The marks: the ray's origin, the viewer, the light. Marks that coincide at the
     // drawing's scale (one's centre within the other's size) are drawn once, the first of
     // them, and labelled with every name ("light and viewer").
-    let mut marks: Vec<(Item, (f64, f64), (f64, f64), &str, String)> = Vec::new();
+    let mut marks: Vec<Mark> = Vec::new();
     if let Some((origin, _, _)) = ray_marks {
         marks.push((
             Item::Dot {
@@ -1020,7 +1027,7 @@ pub fn figure(d: &Diagram, id: &str, lang: Lang) -> Figure {
     );
     // The vectors, each named beside its arrow; vectors drawn along one another (within 6°)
     // are named together ("L, V"), beside the longer.
-    let mut vectors: Vec<(&str, Vec<&str>, (f64, f64), (f64, f64), f64, f64)> = vec![(
+    let mut vectors: Vec<Named> = vec![(
         "N",
         vec!["N"],
         p,
@@ -1056,7 +1063,7 @@ pub fn figure(d: &Diagram, id: &str, lang: Lang) -> Figure {
             side(-va, -vb, 1.0),
         ));
     }
-    let mut merged: Vec<(&str, Vec<&str>, (f64, f64), (f64, f64), f64, f64)> = Vec::new();
+    let mut merged: Vec<Named> = Vec::new();
     for v in vectors {
         let along = merged.iter_mut().find(|m| {
             let mut delta = (m.4 - v.4).abs() % (2.0 * std::f64::consts::PI);
