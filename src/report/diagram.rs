@@ -199,6 +199,14 @@ impl Label {
 
     /// How far its box is from what it names (0 where it touches it).
     pub fn distance(&self) -> f64 {
+        match self.near {
+            Near::Arc(radius, from, to) => self.distance_to_arc(&arc_segments(radius, from, to)),
+            _ => self.distance_to_arc(&[]),
+        }
+    }
+
+    /// [`Label::distance`], an arc's segments given (computed once for many places).
+    fn distance_to_arc(&self, arc: &[Segment]) -> f64 {
         let r = self.rect();
         match self.near {
             Near::Point(c, (rx, ry)) => {
@@ -207,9 +215,9 @@ impl Label {
                 dx.hypot(dy)
             }
             Near::Segment(a, b) => r.distance_to_segment(a, b),
-            Near::Arc(radius, from, to) => arc_segments(radius, from, to)
-                .into_iter()
-                .map(|(a, b)| r.distance_to_segment(a, b))
+            Near::Arc(..) => arc
+                .iter()
+                .map(|&(a, b)| r.distance_to_segment(a, b))
                 .fold(f64::INFINITY, f64::min),
         }
     }
@@ -502,14 +510,17 @@ impl Placer {
     fn layout(mut self) -> Vec<Label> {
         let specs = std::mem::take(&mut self.specs);
         let n = specs.len();
+        let places: Vec<Vec<Vec<Label>>> = specs
+            .iter()
+            .map(|(id, class, text, near, prefer)| Self::places(id, class, text, *near, prefer))
+            .collect();
         // One layout: the labels placed in `order`; those not beside what they name, and the
         // labels in the order asked (the same output whatever the tries).
         let mut run = |order: &[usize]| {
             self.labels.clear();
             let mut bad = Vec::new();
             for &k in order {
-                let (id, class, text, near, prefer) = &specs[k];
-                if !self.put(id.clone(), class, text, *near, prefer) {
+                if !self.put(&places[k]) {
                     bad.push(k);
                 }
             }
@@ -559,7 +570,7 @@ impl Placer {
         }
         let mut seed: u64 = 0x9e37_79b9_7f4a_7c15;
         let mut shuffled: Vec<usize> = (0..n).collect();
-        for _ in 0..24 {
+        for _ in 0..8 {
             for i in (1..n).rev() {
                 seed ^= seed << 13;
                 seed ^= seed >> 7;
@@ -583,16 +594,16 @@ impl Placer {
 
     /// Places `text` beside `near`: at the nearest free place (the directions in `prefer`
     /// first at each distance); whether it found one within [`BESIDE`].
-    fn put(
-        &mut self,
-        id: String,
+    /// The places a label may take, per form of its text (one line, then two or three for a
+    /// mark's name), each nearest to what it names first (to 2 px; the preferred directions
+    /// first among those as near). They do not depend on the other labels: computed once.
+    fn places(
+        id: &str,
         class: &'static str,
         text: &str,
         near: Near,
         prefer: &[f64],
-    ) -> bool {
-        // A word or two on one line; where that finds no place beside what it names, on two
-        // lines (a mark's name: "light" / "and viewer").
+    ) -> Vec<Vec<Label>> {
         let mut forms = vec![text.to_owned()];
         if class == "mark" && !text.contains('\n') {
             for n in [2, 3] {
@@ -601,37 +612,47 @@ impl Placer {
                 }
             }
         }
-        let mut fallback: Option<Label> = None;
-        let mut free_far: Option<Label> = None;
-        for form in &forms {
-            let (hw, hh) = Label::half_size(class, form);
-            // The places nearest to what the label names first (to 2 px; the preferred
-            // directions first among those as near).
-            let mut places: Vec<(i64, usize, Label)> = Self::candidates(near, hw, hh, prefer)
-                .into_iter()
-                .enumerate()
-                .map(|(k, at)| {
-                    let l = Label {
-                        id: id.clone(),
-                        class,
-                        at,
-                        text: form.clone(),
-                        near,
-                    };
-                    ((l.distance() / 2.0).round() as i64, k, l)
-                })
-                .collect();
-            places.sort_by_key(|&(d, k, _)| (d, k));
-            for (_, _, l) in places {
-                if self.free(&l) {
-                    if l.distance() <= near.beside() {
-                        self.labels.push(l);
+        let arc = match near {
+            Near::Arc(r, from, to) => arc_segments(r, from, to),
+            _ => Vec::new(),
+        };
+        forms
+            .into_iter()
+            .map(|form| {
+                let (hw, hh) = Label::half_size(class, &form);
+                let mut places: Vec<(i64, usize, Label)> = Self::candidates(near, hw, hh, prefer)
+                    .into_iter()
+                    .enumerate()
+                    .map(|(k, at)| {
+                        let l = Label {
+                            id: id.to_owned(),
+                            class,
+                            at,
+                            text: form.clone(),
+                            near,
+                        };
+                        ((l.distance_to_arc(&arc) / 2.0).round() as i64, k, l)
+                    })
+                    .collect();
+                places.sort_by_key(|&(d, k, _)| (d, k));
+                places.into_iter().map(|(_, _, l)| l).collect()
+            })
+            .collect()
+    }
+
+    /// Places a label at the first free of its `places` beside what it names; whether it
+    /// found one (within [`Near::beside`]).
+    fn put(&mut self, places: &[Vec<Label>]) -> bool {
+        let mut fallback: Option<&Label> = None;
+        let mut free_far: Option<&Label> = None;
+        for form in places {
+            for l in form {
+                if self.free(l) {
+                    if l.distance() <= l.near.beside() {
+                        self.labels.push(l.clone());
                         return true;
                     }
-                    if free_far
-                        .as_ref()
-                        .is_none_or(|f| l.distance() < f.distance())
-                    {
+                    if free_far.is_none_or(|f| l.distance() < f.distance()) {
                         free_far = Some(l);
                     }
                     break;
@@ -642,19 +663,13 @@ impl Placer {
             }
         }
         // Free but not beside, or nowhere free (the tests look for both): the nearest free
-        // place, else the first inside the drawing.
-        let centre = match near {
-            Near::Point(c, _) => c,
-            Near::Segment(a, b) => ((a.0 + b.0) / 2.0, (a.1 + b.1) / 2.0),
-            Near::Arc(_, _, _) => (PX, PY),
-        };
-        self.labels.push(free_far.or(fallback).unwrap_or(Label {
-            id,
-            class,
-            at: centre,
-            text: text.to_owned(),
-            near,
-        }));
+        // place, else the first inside the drawing, else the first tried.
+        if let Some(l) = free_far
+            .or(fallback)
+            .or(places.first().and_then(|f| f.first()))
+        {
+            self.labels.push(l.clone());
+        }
         false
     }
 }
@@ -713,6 +728,9 @@ fn in_lines(text: &str, n: usize) -> Option<String> {
 fn screen_angle(a: f64, b: f64) -> f64 {
     (-b).atan2(a)
 }
+
+/// A straight piece of the drawing: its two ends.
+type Segment = ((f64, f64), (f64, f64));
 
 /// A mark to draw: its item, centre, half sizes, name and its label's id.
 type Mark<'a> = (Item, (f64, f64), (f64, f64), &'a str, String);
