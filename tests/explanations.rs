@@ -143,10 +143,10 @@ fn the_portuguese_explanation_of_4_2_uses_the_chapters_terms() {
         "reflexão difusa",
         "reflexão especular",
         "decaimento",
-        "Fonte de luz",
+        "A luz branca (pontual)",
         "observador",
         "normal",
-        "Solução (o problema como escrito)",
+        "Solução (o problema como enunciado)",
         "Leitura provavelmente pretendida",
     ] {
         assert!(t.contains(term), "missing «{term}» in:\n{t}");

@@ -709,7 +709,7 @@ fn an_explained_pixel_states_the_readings_of_level_and_weight() {
         (
             "pt",
             "\"menor que\" do capítulo lido como ≤",
-            "max(C_r) do capítulo lido como a refletividade O_r",
+            "max(C_r) do capítulo lido como a reflexividade O_r",
         ),
     ] {
         let out = phong()

@@ -9,7 +9,7 @@ use crate::problem::format::{AnswerColor, AnswerSpec};
 use crate::problem::validate::show;
 use crate::text::number::{not_a_number, NotANumber};
 pub use crate::text::number::{number, shorten};
-use crate::text::{Echo, Lang, Show};
+use crate::text::{Echo, In, Lang, Num, Show};
 
 /// The scale an answer is written on.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize, clap::ValueEnum)]
@@ -205,13 +205,36 @@ pub fn parse_with<S: AsRef<str>>(
             scale: Scale::Bits8,
         });
     }
-    let inner = strip_brackets(t);
     // A long answer is echoed shortened (a 100 kB cell would otherwise fill the screen).
     let shown = Echo::new(t, 80);
+    // "I = (0.5, 0.7, 0.3)", "C: 0.5 0.7 0.3": the name of the quantity before the numbers.
+    let unlabelled = strip_label(t);
+    if unlabelled != t {
+        if is_no_hit_in(unlabelled, no_hit) {
+            return Ok(Answer::no_hit(scale));
+        }
+        if let Some(hex) = unlabelled.strip_prefix('#') {
+            return parse_hex(hex).map(|values| Answer {
+                values: Some(values),
+                scale: Scale::Bits8,
+            });
+        }
+    }
+    let inner = strip_brackets(unlabelled);
+    // "R = 0.5, G = 0.7, B = 0.3", "r=0,5; g=0,7; b=0,3": each channel named.
+    if let Some(channels) = channels(inner) {
+        let values = channels_values(channels, &shown)?;
+        check_scale(values, scale, &shown)?;
+        return Ok(Answer {
+            values: Some(values),
+            scale,
+        });
+    }
     let tokens = split(inner).ok_or_else(|| {
         bad(AnswerFault::NotThree {
             shown: shown.clone(),
             hint: Hint(not_a_number(inner)),
+            read: Read(numbers_read(inner)),
             forms: Forms,
         })
     })?;
@@ -325,15 +348,145 @@ fn parse_hex(hex: &str) -> Result<[f64; 3], BadAnswer> {
     Ok([byte(0), byte(2), byte(4)])
 }
 
-/// Three numbers written as an answer's are (brackets, commas, semicolons, decimal commas,
-/// fractions), or `None`.
+/// Three numbers written as an answer's are (a name before them, brackets, commas, semicolons,
+/// decimal commas, fractions), or `None`.
 pub(crate) fn three(text: &str) -> Option<[f64; 3]> {
-    let tokens = split(strip_brackets(text.trim()))?;
+    let tokens = split(strip_brackets(strip_label(text.trim())))?;
     let mut values = [0.0; 3];
     for (v, tok) in values.iter_mut().zip(&tokens) {
         *v = token_number(tok)?;
     }
     Some(values)
+}
+
+/// Removes the name of the quantity written before the numbers, and its `=` or `:`
+/// ("I = (0.5, 0.7, 0.3)", "I(P) = …", "C_total: …", "cor = …"): a text before a single `=`
+/// (or, without one, a single `:`) that holds a letter and no digit outside parentheses and
+/// subscripts is such a name. Channel names ("R = 0.5, G = 0.7, B = 0.3") have an `=` each and
+/// are left for [`channels`].
+fn strip_label(t: &str) -> &str {
+    let sep = if t.contains('=') { '=' } else { ':' };
+    if t.matches(sep).count() != 1 {
+        return t;
+    }
+    let (name, rest) = t.split_once(sep).expect("one separator");
+    let name = name.trim();
+    let looks_like_a_name = !name.is_empty()
+        && name.chars().count() <= 24
+        && name.chars().any(char::is_alphabetic)
+        && name
+            .chars()
+            .next()
+            .is_some_and(|c| c.is_alphabetic() || c == '(')
+        && name
+            .chars()
+            .all(|c| c.is_alphanumeric() || matches!(c, '_' | '(' | ')' | ' ' | '\'' | '.' | ','));
+    if looks_like_a_name && !is_channel(name) {
+        rest.trim()
+    } else {
+        t
+    }
+}
+
+/// Whether `name` is a channel's name: R, G or B in either case.
+fn is_channel(name: &str) -> bool {
+    matches!(name, "R" | "G" | "B" | "r" | "g" | "b")
+}
+
+/// An answer that names its channels ("R = 0.5, G = 0.7, B = 0.3", "r=0,5; g=0,7; b=0,3",
+/// "R: 0.5 G: 0.7 B: 0.3"): each name and the text of its value, in the order written; `None`
+/// when the text does not begin with a channel's name and `=` or `:`.
+fn channels(t: &str) -> Option<Vec<(char, &str)>> {
+    // Where each "X =" begins and where its value begins.
+    let mut labels: Vec<(char, usize, usize)> = Vec::new();
+    let chars: Vec<(usize, char)> = t.char_indices().collect();
+    for (k, &(i, c)) in chars.iter().enumerate() {
+        if !"RGBrgb".contains(c) {
+            continue;
+        }
+        if k > 0 && chars[k - 1].1.is_alphanumeric() {
+            continue;
+        }
+        let mut j = k + 1;
+        while j < chars.len() && chars[j].1.is_whitespace() {
+            j += 1;
+        }
+        if j < chars.len() && matches!(chars[j].1, '=' | ':') {
+            let value = chars.get(j + 1).map_or(t.len(), |&(v, _)| v);
+            labels.push((c.to_ascii_uppercase(), i, value));
+        }
+    }
+    let first = labels.first()?;
+    if !t[..first.1].trim().is_empty() {
+        return None;
+    }
+    Some(
+        labels
+            .iter()
+            .enumerate()
+            .map(|(n, &(c, _, from))| {
+                let to = labels.get(n + 1).map_or(t.len(), |l| l.1);
+                let value = t[from..to].trim().trim_end_matches([',', ';']).trim();
+                (c, value)
+            })
+            .collect(),
+    )
+}
+
+/// The colour of an answer that names its channels, or what is wrong with it: a value that is
+/// not a number, a channel named twice, a channel missing (saying what was read).
+fn channels_values(channels: Vec<(char, &str)>, shown: &Echo) -> Result<[f64; 3], BadAnswer> {
+    let mut read = Channels::default();
+    for (c, value) in channels {
+        let x = token_number(value).ok_or_else(|| {
+            bad(AnswerFault::NotANumber {
+                token: Echo::new(value, 40),
+                shown: shown.clone(),
+                why: Why(not_a_number(&value.replace(',', "."))),
+                forms: Forms,
+            })
+        })?;
+        let k = match c {
+            'R' => 0,
+            'G' => 1,
+            _ => 2,
+        };
+        if read.given[k] {
+            return Err(bad(AnswerFault::ChannelTwice {
+                shown: shown.clone(),
+                channel: c,
+            }));
+        }
+        read.values[k] = x;
+        read.given[k] = true;
+    }
+    if read.given == [true; 3] {
+        Ok(read.values)
+    } else {
+        Err(bad(AnswerFault::ChannelMissing {
+            shown: shown.clone(),
+            read,
+            forms: Forms,
+        }))
+    }
+}
+
+/// The numbers that can be read in a text that is not three numbers (separated by spaces,
+/// commas or semicolons, a decimal comma read where semicolons separate), to say what was
+/// understood.
+fn numbers_read(s: &str) -> Vec<Num> {
+    let parts: Vec<&str> = if s.contains(';') {
+        s.split(';').collect()
+    } else {
+        s.split(|c: char| c == ',' || c.is_whitespace()).collect()
+    };
+    parts
+        .into_iter()
+        .map(str::trim)
+        .filter(|p| !p.is_empty())
+        .filter_map(token_number)
+        .map(Num)
+        .collect()
 }
 
 /// Removes one pair of surrounding brackets: (), [], {}, or a leading "rgb(".
@@ -388,9 +541,20 @@ crate::faults! {
             "a resposta está vazia";
             fix "{forms}", "{forms}";
         /// Not three numbers (with the common cause, where there is one).
-        NotThree { shown: Echo, hint: Hint, forms: Forms } =>
-            "\"{shown}\" is not three numbers{hint}",
-            "\"{shown}\" não são três números{hint}";
+        NotThree { shown: Echo, hint: Hint, read: Read, forms: Forms } =>
+            "\"{shown}\" is not three numbers{hint}{read}",
+            "\"{shown}\" não são três números{hint}{read}";
+            fix "{forms}", "{forms}";
+        /// Channels named, one of them twice ("R = 0.5, R = 0.7, B = 0.3").
+        ChannelTwice { shown: Echo, channel: char } =>
+            "\"{shown}\" gives {channel} twice",
+            "\"{shown}\" dá {channel} duas vezes";
+            fix "give each of R, G and B once, as in \"R = 0.5, G = 0.7, B = 0.3\"",
+                "dê R, G e B uma vez cada, como em \"R = 0,5; G = 0,7; B = 0,3\"";
+        /// Channels named, one of them missing ("R = 0.5, G = 0.7").
+        ChannelMissing { shown: Echo, read: Channels, forms: Forms } =>
+            "\"{shown}\" does not give every channel: {read}",
+            "\"{shown}\" não dá todos os canais: {read}";
             fix "{forms}", "{forms}";
         /// Three parts, one of which is not a number.
         NotANumber { token: Echo, shown: Echo, why: Why, forms: Forms } =>
@@ -454,6 +618,94 @@ impl Show for Forms {
                  \"nenhuma\" quando o raio não atinge nada"
             }
         })
+    }
+}
+
+/// What was read of a text that is not three numbers, after a semicolon (`; read 2 numbers:
+/// 0.5, 0.7`), or that no number was.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Read(pub Vec<Num>);
+
+impl Show for Read {
+    fn show(&self, lang: Lang, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        let list = |f: &mut std::fmt::Formatter<'_>| -> std::fmt::Result {
+            for (i, x) in self.0.iter().enumerate() {
+                if i > 0 {
+                    f.write_str(", ")?;
+                }
+                x.show(lang, f)?;
+            }
+            Ok(())
+        };
+        match (self.0.len(), lang) {
+            (0, Lang::En) => f.write_str("; no number could be read in it"),
+            (0, Lang::Pt) => f.write_str("; nenhum número pôde ser lido nela"),
+            (1, Lang::En) => f
+                .write_str("; one number was read: ")
+                .and_then(|()| list(f)),
+            (1, Lang::Pt) => f.write_str("; um número foi lido: ").and_then(|()| list(f)),
+            (n, Lang::En) => write!(f, "; {n} numbers were read: ").and_then(|()| list(f)),
+            (n, Lang::Pt) => write!(f, "; {n} números foram lidos: ").and_then(|()| list(f)),
+        }
+    }
+}
+
+/// The channels read of an answer that names them, and those it does not give
+/// (`read R = 0.5 and G = 0.7, B is missing`): R, G, B, each with whether it was given.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Channels {
+    /// The values read, in the order R, G, B (0 where not given).
+    pub values: [f64; 3],
+    /// Whether each was given.
+    pub given: [bool; 3],
+}
+
+impl Channels {
+    /// Channel `k` (0 R, 1 G, 2 B), where given.
+    fn get(&self, k: usize) -> Option<Num> {
+        self.given[k].then_some(Num(self.values[k]))
+    }
+}
+
+impl Show for Channels {
+    fn show(&self, lang: Lang, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        let named = [('R', self.get(0)), ('G', self.get(1)), ('B', self.get(2))];
+        let given: Vec<String> = named
+            .iter()
+            .filter_map(|(c, x)| x.map(|x| format!("{c} = {}", In(&x, lang))))
+            .collect();
+        let missing: Vec<String> = named
+            .iter()
+            .filter(|(_, x)| x.is_none())
+            .map(|(c, _)| c.to_string())
+            .collect();
+        let and = match lang {
+            Lang::En => " and ",
+            Lang::Pt => " e ",
+        };
+        if given.is_empty() {
+            return f.write_str(match lang {
+                Lang::En => "no channel was read",
+                Lang::Pt => "nenhum canal foi lido",
+            });
+        }
+        let (were, are) = (given.len() > 1, missing.len() > 1);
+        let given = given.join(and);
+        let missing = missing.join(and);
+        match lang {
+            Lang::En => write!(
+                f,
+                "{given} {} read, {missing} {} missing",
+                if were { "were" } else { "was" },
+                if are { "are" } else { "is" }
+            ),
+            Lang::Pt => write!(
+                f,
+                "{} {given}, {} {missing}",
+                if were { "foram lidos" } else { "foi lido" },
+                if are { "faltam" } else { "falta" }
+            ),
+        }
     }
 }
 
@@ -523,6 +775,118 @@ mod tests {
         }
         assert_eq!(unit("3/5 0 4/5"), [0.6, 0.0, 0.8]);
         assert_eq!(unit("-0.299 -0.36 -0.25"), [-0.299, -0.36, -0.25]);
+    }
+
+    #[test]
+    fn answers_as_students_write_them_are_read() {
+        // Issue 29, item 7: the colour named, Portuguese decimal commas between semicolons,
+        // each channel named (in any case, with = or :, separated by commas, semicolons or
+        // spaces).
+        let want = [0.5, 0.7, 0.3];
+        for text in [
+            "I = (0.5, 0.7, 0.3)",
+            "I=(0.5,0.7,0.3)",
+            "I(P) = (0.5, 0.7, 0.3)",
+            "C: 0.5 0.7 0.3",
+            "cor = [0,5; 0,7; 0,3]",
+            "(R, G, B) = (0.5, 0.7, 0.3)",
+            "(0,5; 0,7; 0,3)",
+            "R = 0.5, G = 0.7, B = 0.3",
+            "r=0.5, g=0.7, b=0.3",
+            "R = 0,5; G = 0,7; B = 0,3",
+            "R: 0.5 G: 0.7 B: 0.3",
+            "(R = 0.5, G = 0.7, B = 0.3)",
+            "B = 0.3, R = 0.5, G = 0.7",
+            "R = 1/2, G = 0.7, B = 3/10",
+        ] {
+            assert_eq!(unit(text), want, "{text}");
+        }
+        // The same forms on the 255 scale, and "none" or a hex colour named.
+        assert_eq!(
+            parse("R = 128, G = 179, B = 77", Scale::Bits8)
+                .unwrap()
+                .values,
+            Some([128.0, 179.0, 77.0])
+        );
+        assert_eq!(parse("I = nenhuma", Scale::Unit).unwrap().values, None);
+        let hex = parse("C = #FF8000", Scale::Unit).unwrap();
+        assert_eq!(
+            (hex.values, hex.scale),
+            (Some([255.0, 128.0, 0.0]), Scale::Bits8)
+        );
+        // A step's vector may be named too.
+        assert_eq!(three("L = (0.6, 0, 0.8)"), Some([0.6, 0.0, 0.8]));
+    }
+
+    #[test]
+    fn an_answer_that_cannot_be_read_says_what_was_understood() {
+        use crate::text::Message;
+        let e = parse("I = (0.5, 0.7)", Scale::Unit).unwrap_err();
+        assert!(
+            e.text(Lang::En).starts_with(
+                "\"I = (0.5, 0.7)\" is not three numbers; 2 numbers were read: 0.5, 0.7: write"
+            ),
+            "{e}"
+        );
+        assert!(
+            e.text(Lang::Pt).starts_with(
+                "\"I = (0.5, 0.7)\" não são três números; 2 números foram lidos: 0.5, 0.7: \
+                 escreva"
+            ),
+            "{}",
+            e.text(Lang::Pt)
+        );
+        let e = parse("0.5 0.7 0.3 0.1", Scale::Unit).unwrap_err();
+        assert!(
+            e.to_string()
+                .contains("; 4 numbers were read: 0.5, 0.7, 0.3, 0.1"),
+            "{e}"
+        );
+        let e = parse("0.5", Scale::Unit).unwrap_err();
+        assert!(e.to_string().contains("; one number was read: 0.5"), "{e}");
+        let e = parse("vermelho", Scale::Unit).unwrap_err();
+        assert!(
+            e.text(Lang::Pt)
+                .contains("; nenhum número pôde ser lido nela"),
+            "{e}"
+        );
+        // Channels named: the one missing, the one given twice, the value that is not a number.
+        let e = parse("R = 0.5, G = 0.7", Scale::Unit).unwrap_err();
+        assert!(
+            e.text(Lang::En).starts_with(
+                "\"R = 0.5, G = 0.7\" does not give every channel: R = 0.5 and G = 0.7 were \
+                 read, B is missing: write"
+            ),
+            "{e}"
+        );
+        assert!(
+            e.text(Lang::Pt).starts_with(
+                "\"R = 0.5, G = 0.7\" não dá todos os canais: foram lidos R = 0.5 e G = 0.7, \
+                 falta B: escreva"
+            ),
+            "{}",
+            e.text(Lang::Pt)
+        );
+        let e = parse("R = 0,5", Scale::Unit).unwrap_err();
+        assert!(
+            e.to_string()
+                .contains("R = 0.5 was read, G and B are missing"),
+            "{e}"
+        );
+        let e = parse("R = 0.5, R = 0.7, B = 0.3", Scale::Unit).unwrap_err();
+        assert!(
+            e.to_string()
+                .starts_with("\"R = 0.5, R = 0.7, B = 0.3\" gives R twice: give each"),
+            "{e}"
+        );
+        let e = parse("R = 0.5, G = x, B = 0.3", Scale::Unit).unwrap_err();
+        assert!(
+            e.to_string()
+                .starts_with("\"x\" in \"R = 0.5, G = x, B = 0.3\" is not a number"),
+            "{e}"
+        );
+        // A channel out of the 255 scale is refused as any such answer.
+        assert!(parse("R = 128, G = 300, B = 0", Scale::Bits8).is_err());
     }
 
     #[test]

@@ -146,7 +146,7 @@ fn words(lang: Lang) -> Words {
             slip: "Erro provável:",
             other: "Incorreto: compare com a solução comentada.",
             no_hit_question: "Escolha a cor do ponto atingido pelo raio, ou \u{201c}{none}\u{201d} se ele não atinge nada:",
-            no_hit_right: "Correto: como escrito, o raio não atinge nada.",
+            no_hit_right: "Correto: como enunciado, o raio não atinge nada.",
             none: "nenhuma",
             solution: "Solução comentada",
         },

@@ -243,7 +243,7 @@ crate::faults! {
              ({material}): a ray reflected from it inside may show {tir}, and POV-Ray's stack \
              of media reads nested media otherwise than phong",
             "uma superfície que reflete ou transmite entra nesta esfera que transmite \
-             ({material}): um raio refletido por ela lá dentro pode mostrar {tir}, e a pilha de \
+             ({material}): um raio de reflexão que parte dela lá dentro pode mostrar {tir}, e a pilha de \
              meios do POV-Ray lê meios aninhados de outro modo que phong";
             fix "move the other reflecting or transmitting surfaces out of the sphere (touching \
                  it is fine; matte opaque ones may stay)",
@@ -262,7 +262,7 @@ crate::faults! {
             "a reflecting or transmitting surface reaches behind this transmitting plane \
              ({material}), into its material: a ray reflected from it there may show {tir}",
             "uma superfície que reflete ou transmite chega atrás deste plano que transmite \
-             ({material}), dentro do seu material: um raio refletido por ela ali pode mostrar \
+             ({material}), dentro do seu material: um raio de reflexão que parte dela ali pode mostrar \
              {tir}";
             fix "keep every other reflecting or transmitting surface on the side the plane's \
                  normal points to (another plane only parallel to it and in front); matte \

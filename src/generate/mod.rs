@@ -875,8 +875,8 @@ fn statement(p: &ProblemOut, t: Tongue) -> String {
             format!(
                 "O meio do lado para o qual a normal aponta tem índice 1. O nível máximo do traçador é {l} e o seu \
                  peso mínimo, {w}. Que cor o raio vê no ponto em que atinge a superfície \
-                 (Eq. 4.16)? Quais são as direções do raio refletido (Eq. 4.17) e do raio \
-                 transmitido (lei de Snell), os seus níveis e pesos, e cada um deles é traçado?"
+                 (Eq. 4.16)? Quais são as direções do raio de reflexão (Eq. 4.17) e do raio \
+                 de transmissão (lei de Snell), os seus níveis e pesos, e cada um deles é traçado?"
             )
         });
         return s.join(" ");

@@ -220,7 +220,7 @@ faults! {
         /// A falloff other than 0, 1 or 2.
         NotAFalloff { falloff: String } =>
             "{falloff} is not a falloff exponent",
-            "{falloff} não é um expoente de decaimento";
+            "{falloff} não é um fator de decaimento";
             fix "use 0 (no falloff), 1 (linear) or 2 (quadratic), Eq. 4.3",
                 "use 0 (sem decaimento), 1 (linear) ou 2 (quadrático), Eq. 4.3";
     }
@@ -306,13 +306,13 @@ faults! {
             "{shininess} is negative",
             "{shininess} é negativo";
             fix "the specular exponent n_s (Eq. 4.9) must be ≥ 0",
-                "o expoente especular n_s (Eq. 4.9) deve ser ≥ 0";
+                "o expoente de reflexão especular n_s (Eq. 4.9) deve ser ≥ 0";
         /// `"reflectivity": "specular"` without a specular colour.
         ReflectivityWithoutSpecular =>
             "is \"specular\" but the material has no specular colour",
             "é \"specular\", mas o material não tem cor especular";
             fix "give \"specular\", or give the reflectivity as [r, g, b]",
-                "dê \"specular\", ou dê a refletividade como [r, g, b]";
+                "dê \"specular\", ou dê a reflexividade como [r, g, b]";
         /// O_t without η.
         IorMissing =>
             "is missing, and the material has a transmissivity",

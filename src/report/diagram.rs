@@ -144,7 +144,18 @@ pub enum Item {
     },
 }
 
-/// A label, placed so that it overlaps no other label and no line.
+/// What a label names, where it is drawn: the label is placed beside it.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Near {
+    /// A mark (P, the light, the viewer, the ray's origin): its centre and half sizes.
+    Point((f64, f64), (f64, f64)),
+    /// A vector or a line: its two ends.
+    Segment((f64, f64), (f64, f64)),
+    /// An angle's arc at P: its radius and its screen angles (radians, y down).
+    Arc(f64, f64, f64),
+}
+
+/// A label, placed so that it overlaps no other label and no line, beside what it names.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Label {
     pub id: String,
@@ -153,6 +164,8 @@ pub struct Label {
     /// The centre of its text's box.
     pub at: (f64, f64),
     pub text: String,
+    /// What it names.
+    pub near: Near,
 }
 
 impl Label {
@@ -165,11 +178,48 @@ impl Label {
         }
     }
 
-    /// An estimate of its box (a little generous: DejaVu Sans is about 0.6 em a character).
+    /// An estimate of its box, a little generous: each character's advance in DejaVu Sans
+    /// (the pages' font; LaTeX's Computer Modern at the same size is narrower), 10 % more in
+    /// bold italic, 5 % more for the renderer, and 2 px each side.
     fn half_size(class: &str, text: &str) -> (f64, f64) {
         let size = Self::size(class);
-        let w = text.chars().count() as f64 * size * 0.64 + 4.0;
-        (w / 2.0, size * 0.62 + 2.0)
+        let em = text
+            .split('\n')
+            .map(|line| line.chars().map(advance).sum::<f64>())
+            .fold(0.0, f64::max);
+        let lines = text.split('\n').count() as f64;
+        let bold = if class == "sym" { 1.1 } else { 1.0 };
+        let w = em * size * bold * 1.05 + 4.0;
+        // DejaVu Sans's line is 1.164 em high (ascent and descent), as a browser measures it.
+        (
+            w / 2.0,
+            (lines - 1.0) * size * LEADING / 2.0 + size * 0.6 + 1.0,
+        )
+    }
+
+    /// How far its box is from what it names (0 where it touches it).
+    pub fn distance(&self) -> f64 {
+        match self.near {
+            Near::Arc(radius, from, to) => self.distance_to_arc(&arc_segments(radius, from, to)),
+            _ => self.distance_to_arc(&[]),
+        }
+    }
+
+    /// [`Label::distance`], an arc's segments given (computed once for many places).
+    fn distance_to_arc(&self, arc: &[Segment]) -> f64 {
+        let r = self.rect();
+        match self.near {
+            Near::Point(c, (rx, ry)) => {
+                let dx = (c.0 - rx - r.x1).max(r.x0 - c.0 - rx).max(0.0);
+                let dy = (c.1 - ry - r.y1).max(r.y0 - c.1 - ry).max(0.0);
+                dx.hypot(dy)
+            }
+            Near::Segment(a, b) => r.distance_to_segment(a, b),
+            Near::Arc(..) => arc
+                .iter()
+                .map(|&(a, b)| r.distance_to_segment(a, b))
+                .fold(f64::INFINITY, f64::min),
+        }
     }
 
     fn rect(&self) -> Rect {
@@ -183,6 +233,38 @@ impl Label {
     }
 }
 
+/// The distance between the baselines of a label's lines, in font sizes.
+const LEADING: f64 = 1.2;
+
+/// A character's advance in DejaVu Sans, in em (its metrics, rounded up; 0.75 for what the
+/// table does not hold).
+fn advance(c: char) -> f64 {
+    match c {
+        ' ' | ',' | '.' | ':' | ';' | '\'' => 0.32,
+        'i' | 'j' | 'l' | 'I' | '|' => 0.28,
+        'f' | 't' | '(' | ')' | '[' | ']' => 0.40,
+        'r' => 0.42,
+        's' | 'z' | 'c' => 0.56,
+        'a' | 'e' | 'o' | 'v' | 'x' | 'y' | 'k' => 0.62,
+        'b' | 'd' | 'g' | 'h' | 'n' | 'p' | 'q' | 'u' => 0.64,
+        'w' => 0.82,
+        'm' => 0.98,
+        '0'..='9' => 0.64,
+        'θ' | 'φ' | 'ψ' | 'γ' => 0.66,
+        'J' => 0.30,
+        'L' | 'F' => 0.58,
+        'E' | 'P' | 'T' | 'Z' | 'S' | 'K' | 'X' | 'Y' | 'B' | 'R' => 0.70,
+        'A' | 'V' | 'C' => 0.70,
+        'D' | 'G' | 'H' | 'N' | 'U' | 'O' | 'Q' => 0.79,
+        'M' | 'W' => 0.99,
+        '=' | '−' | '+' | '<' | '>' | '-' => 0.84,
+        'á' | 'à' | 'â' | 'ã' | 'é' | 'ê' | 'ó' | 'ô' | 'õ' | 'ú' => 0.64,
+        'í' => 0.28,
+        'ç' => 0.56,
+        _ => 0.75,
+    }
+}
+
 #[derive(Clone, Copy, Debug)]
 struct Rect {
     x0: f64,
@@ -192,6 +274,51 @@ struct Rect {
 }
 
 impl Rect {
+    /// The box grown by `m` on every side.
+    fn grown(&self, m: f64) -> Rect {
+        Rect {
+            x0: self.x0 - m,
+            y0: self.y0 - m,
+            x1: self.x1 + m,
+            y1: self.y1 + m,
+        }
+    }
+
+    /// The distance from the box to the point `p` (0 inside).
+    fn distance_to(&self, p: (f64, f64)) -> f64 {
+        let dx = (self.x0 - p.0).max(p.0 - self.x1).max(0.0);
+        let dy = (self.y0 - p.1).max(p.1 - self.y1).max(0.0);
+        dx.hypot(dy)
+    }
+
+    /// The distance from the box to the segment from `a` to `b` (0 where it crosses it): the
+    /// least of the ends' distances to the box and the corners' distances to the segment.
+    fn distance_to_segment(&self, a: (f64, f64), b: (f64, f64)) -> f64 {
+        if self.meets(a, b) {
+            return 0.0;
+        }
+        let to_segment = |p: (f64, f64)| {
+            let (dx, dy) = (b.0 - a.0, b.1 - a.1);
+            let len2 = dx * dx + dy * dy;
+            let t = if len2 > 0.0 {
+                (((p.0 - a.0) * dx + (p.1 - a.1) * dy) / len2).clamp(0.0, 1.0)
+            } else {
+                0.0
+            };
+            (p.0 - a.0 - t * dx).hypot(p.1 - a.1 - t * dy)
+        };
+        [
+            self.distance_to(a),
+            self.distance_to(b),
+            to_segment((self.x0, self.y0)),
+            to_segment((self.x1, self.y0)),
+            to_segment((self.x0, self.y1)),
+            to_segment((self.x1, self.y1)),
+        ]
+        .into_iter()
+        .fold(f64::INFINITY, f64::min)
+    }
+
     fn overlaps(&self, o: &Rect) -> bool {
         self.x0 < o.x1 && o.x0 < self.x1 && self.y0 < o.y1 && o.y0 < self.y1
     }
@@ -237,67 +364,380 @@ pub struct Figure {
     pub caption: String,
 }
 
-/// Lays out labels one by one: each at the first of its candidate places whose box overlaps
-/// no label placed before and no line, inside the drawing.
+/// Room kept around a label: from another label (on each side), and from a line or a mark.
+const LABEL_GAP: f64 = 2.0;
+const LINE_GAP: f64 = 1.5;
+
+/// Lays out labels one by one: each at the nearest place beside what it names whose box, with
+/// a margin, overlaps no label placed before, no line or arc and no mark, inside the drawing.
 struct Placer {
     segments: Vec<((f64, f64), (f64, f64))>,
     dots: Vec<Rect>,
     labels: Vec<Label>,
+    /// The labels to lay out, in the order asked: id, class, text, what it names, the
+    /// directions preferred.
+    specs: Vec<(String, &'static str, String, Near, Vec<f64>)>,
+}
+
+/// How far a label may sit from what it names and still be beside it: about a line of its
+/// text (pixels); an angle's symbol, half as far again, where the angle's wedge opens.
+pub const BESIDE: f64 = 16.0;
+
+impl Near {
+    /// How far a label of this may sit from it ([`BESIDE`]).
+    pub fn beside(&self) -> f64 {
+        match self {
+            Near::Arc(..) => BESIDE * 1.5,
+            _ => BESIDE,
+        }
+    }
 }
 
 impl Placer {
     fn free(&self, l: &Label) -> bool {
         let r = l.rect();
+        let near = r.grown(LINE_GAP);
+        let spaced = r.grown(LABEL_GAP);
         r.inside_canvas()
-            && !self.labels.iter().any(|o| o.rect().overlaps(&r))
-            && !self.segments.iter().any(|&(a, b)| r.meets(a, b))
-            && !self.dots.iter().any(|d| d.overlaps(&r))
+            && !self
+                .labels
+                .iter()
+                .any(|o| o.rect().grown(LABEL_GAP).overlaps(&spaced))
+            && !self.segments.iter().any(|&(a, b)| near.meets(a, b))
+            && !self.dots.iter().any(|d| d.overlaps(&near))
     }
 
-    /// Places `text` near `anchor`: tried at growing distances in the directions `prefer`
-    /// (screen angles, radians) first, then all around.
-    fn place(
-        &mut self,
-        id: String,
-        class: &'static str,
-        text: &str,
-        anchor: (f64, f64),
-        prefer: &[f64],
-    ) {
-        let mut dirs: Vec<f64> = prefer.to_vec();
-        dirs.extend((0..16).map(|k| f64::from(k) * std::f64::consts::PI / 8.0));
-        let mut first = None;
-        for dist in [14.0, 20.0, 28.0, 38.0, 50.0, 64.0, 80.0] {
-            for &a in &dirs {
-                let l = Label {
-                    id: id.clone(),
-                    class,
-                    at: (anchor.0 + dist * a.cos(), anchor.1 + dist * a.sin()),
-                    text: text.to_owned(),
-                };
-                if self.free(&l) {
-                    self.labels.push(l);
-                    return;
+    /// The places tried for a label of half sizes `hw`, `hh` beside `near`, nearest first;
+    /// at each distance the directions in `prefer` (screen angles, radians) first.
+    fn candidates(near: Near, hw: f64, hh: f64, prefer: &[f64]) -> Vec<(f64, f64)> {
+        // How far a box reaches from its centre in the direction (c, s).
+        let reach = |c: f64, s: f64| c.abs() * hw + s.abs() * hh;
+        let around =
+            |centre: (f64, f64), (rx, ry): (f64, f64), gaps: &[f64], out: &mut Vec<(f64, f64)>| {
+                let mut dirs: Vec<f64> = prefer.to_vec();
+                dirs.extend((0..16).map(|k| f64::from(k) * std::f64::consts::PI / 8.0));
+                for &g in gaps {
+                    for &a in &dirs {
+                        let (c, s) = (a.cos(), a.sin());
+                        // The box's edge at the distance, then slid along it (a wide label
+                        // above a mark near the drawing's edge sits off centre).
+                        let k = c.abs() * rx + s.abs() * ry + g + reach(c, s);
+                        let slide = s.abs() * hw + c.abs() * hh;
+                        for t in [0.0, 0.45, -0.45, 0.9, -0.9] {
+                            out.push((
+                                centre.0 + c * k - s * t * slide,
+                                centre.1 + s * k + c * t * slide,
+                            ));
+                        }
+                        out.push((centre.0 + c * (rx + g + hw), centre.1 + s * (ry + g + hh)));
+                    }
                 }
-                if first.is_none() && l.rect().inside_canvas() {
-                    first = Some(l);
+            };
+        let gaps = [2.0, 4.0, 7.0, 11.0, 16.0];
+        let mut out = Vec::new();
+        match near {
+            Near::Point(c, r) => around(c, r, &[2.0, 4.0, 7.0, 11.0, 16.0, 22.0, 30.0], &mut out),
+            Near::Segment(a, b) => {
+                let len = (b.0 - a.0).hypot(b.1 - a.1).max(1e-9);
+                let (ux, uy) = ((b.0 - a.0) / len, (b.1 - a.1) / len);
+                // The two sides, the preferred one first.
+                let mut sides = [(-uy, ux), (uy, -ux)];
+                if let Some(&p) = prefer.first() {
+                    if sides[1].0 * p.cos() + sides[1].1 * p.sin()
+                        > sides[0].0 * p.cos() + sides[0].1 * p.sin()
+                    {
+                        sides.swap(0, 1);
+                    }
+                }
+                for g in gaps {
+                    for f in [0.5, 0.4, 0.6, 0.3, 0.7, 0.2, 0.8, 0.1, 0.9, 0.03, 0.97] {
+                        let anchor = (a.0 + f * (b.0 - a.0), a.1 + f * (b.1 - a.1));
+                        for (nx, ny) in sides {
+                            let k = g + reach(nx, ny);
+                            out.push((anchor.0 + nx * k, anchor.1 + ny * k));
+                        }
+                    }
+                }
+                // Around either end, the one farther from P first (N's tip, L's tail).
+                let far = |q: (f64, f64)| (q.0 - PX).hypot(q.1 - PY);
+                let (first, second) = if far(a) >= far(b) { (a, b) } else { (b, a) };
+                around(first, (0.0, 0.0), &gaps, &mut out);
+                around(second, (0.0, 0.0), &gaps, &mut out);
+            }
+            Near::Arc(r, from, to) => {
+                let mut delta = to - from;
+                while delta > std::f64::consts::PI {
+                    delta -= 2.0 * std::f64::consts::PI;
+                }
+                while delta < -std::f64::consts::PI {
+                    delta += 2.0 * std::f64::consts::PI;
+                }
+                for g in gaps {
+                    for f in [0.5, 0.35, 0.65, 0.2, 0.8, 0.1, 0.9] {
+                        let a = from + f * delta;
+                        let (c, s) = (a.cos(), a.sin());
+                        let out_k = r + g + reach(c, s);
+                        out.push((PX + c * out_k, PY + s * out_k));
+                        let in_k = r - g - reach(c, s);
+                        if in_k > 0.0 {
+                            out.push((PX + c * in_k, PY + s * in_k));
+                        }
+                    }
+                }
+                // Too narrow a wedge: beside either end of the arc, or its middle.
+                let point = |f: f64| {
+                    let a = from + f * delta;
+                    (PX + r * a.cos(), PY + r * a.sin())
+                };
+                let wide = [2.0, 4.0, 7.0, 11.0, 16.0, 22.0, 30.0];
+                around(point(0.5), (0.0, 0.0), &wide, &mut out);
+                around(point(0.0), (0.0, 0.0), &wide, &mut out);
+                around(point(1.0), (0.0, 0.0), &wide, &mut out);
+            }
+        }
+        out
+    }
+
+    /// Asks for `text` beside `near` (the directions in `prefer` first).
+    fn place(&mut self, id: String, class: &'static str, text: &str, near: Near, prefer: &[f64]) {
+        self.specs
+            .push((id, class, text.to_owned(), near, prefer.to_vec()));
+    }
+
+    /// Lays out the labels asked for: one by one in the order asked; while some label found
+    /// no free place beside what it names, again with those first (a few times), keeping the
+    /// best layout (fewest such labels, then the least distance in all).
+    fn layout(mut self) -> Vec<Label> {
+        let specs = std::mem::take(&mut self.specs);
+        let n = specs.len();
+        let places: Vec<Vec<Vec<Label>>> = specs
+            .iter()
+            .map(|(id, class, text, near, prefer)| Self::places(id, class, text, *near, prefer))
+            .collect();
+        // One layout: the labels placed in `order`; those not beside what they name, and the
+        // labels in the order asked (the same output whatever the tries).
+        let mut run = |order: &[usize]| {
+            self.labels.clear();
+            let mut bad = Vec::new();
+            for &k in order {
+                if !self.put(&places[k]) {
+                    bad.push(k);
+                }
+            }
+            let mut labels = std::mem::take(&mut self.labels);
+            labels.sort_by_key(|l| specs.iter().position(|s| s.0 == l.id));
+            (bad, labels)
+        };
+        let score = |bad: &Vec<usize>, labels: &Vec<Label>| {
+            (bad.len(), labels.iter().map(Label::distance).sum::<f64>())
+        };
+        let mut order: Vec<usize> = (0..n).collect();
+        let (mut bad, mut labels) = run(&order);
+        let mut best = (score(&bad, &labels), labels.clone(), bad.clone());
+        let mut tries: Vec<Vec<usize>> = Vec::new();
+        // The labels that found no place first (a few rounds), ...
+        for _ in 0..5 {
+            if bad.is_empty() {
+                return labels;
+            }
+            let rest: Vec<usize> = order.iter().copied().filter(|k| !bad.contains(k)).collect();
+            order = bad.clone();
+            order.extend(rest);
+            (bad, labels) = run(&order);
+            let s = score(&bad, &labels);
+            if s < best.0 {
+                best = (s, labels.clone(), bad.clone());
+            }
+        }
+        if best.2.is_empty() {
+            return best.1;
+        }
+        // ... then each label, or each pair, placed last (it takes what the others leave),
+        // then orders shuffled by a fixed generator.
+        for last in 0..n {
+            let mut o: Vec<usize> = (0..n).filter(|&k| k != last).collect();
+            o.push(last);
+            tries.push(o);
+        }
+        for &a in &best.2 {
+            for b in (0..n).filter(|&b| b != a) {
+                for pair in [[a, b], [b, a]] {
+                    let mut o: Vec<usize> = (0..n).filter(|k| !pair.contains(k)).collect();
+                    o.extend(pair);
+                    tries.push(o);
                 }
             }
         }
-        // Nowhere free (never seen): the first place inside the drawing.
-        self.labels.push(first.unwrap_or(Label {
-            id,
-            class,
-            at: anchor,
-            text: text.to_owned(),
-        }));
+        let mut seed: u64 = 0x9e37_79b9_7f4a_7c15;
+        let mut shuffled: Vec<usize> = (0..n).collect();
+        for _ in 0..8 {
+            for i in (1..n).rev() {
+                seed ^= seed << 13;
+                seed ^= seed >> 7;
+                seed ^= seed << 17;
+                shuffled.swap(i, (seed % (i as u64 + 1)) as usize);
+            }
+            tries.push(shuffled.clone());
+        }
+        for o in tries {
+            let (bad, labels) = run(&o);
+            let s = score(&bad, &labels);
+            if s < best.0 {
+                best = (s, labels, bad);
+                if best.2.is_empty() {
+                    break;
+                }
+            }
+        }
+        best.1
     }
+
+    /// Places `text` beside `near`: at the nearest free place (the directions in `prefer`
+    /// first at each distance); whether it found one within [`BESIDE`].
+    /// The places a label may take, per form of its text (one line, then two or three for a
+    /// mark's name), each nearest to what it names first (to 2 px; the preferred directions
+    /// first among those as near). They do not depend on the other labels: computed once.
+    fn places(
+        id: &str,
+        class: &'static str,
+        text: &str,
+        near: Near,
+        prefer: &[f64],
+    ) -> Vec<Vec<Label>> {
+        let mut forms = vec![text.to_owned()];
+        if class == "mark" && !text.contains('\n') {
+            for n in [2, 3] {
+                if let Some(lines) = in_lines(text, n) {
+                    forms.push(lines);
+                }
+            }
+        }
+        let arc = match near {
+            Near::Arc(r, from, to) => arc_segments(r, from, to),
+            _ => Vec::new(),
+        };
+        forms
+            .into_iter()
+            .map(|form| {
+                let (hw, hh) = Label::half_size(class, &form);
+                let mut places: Vec<(i64, usize, Label)> = Self::candidates(near, hw, hh, prefer)
+                    .into_iter()
+                    .enumerate()
+                    .map(|(k, at)| {
+                        let l = Label {
+                            id: id.to_owned(),
+                            class,
+                            at,
+                            text: form.clone(),
+                            near,
+                        };
+                        ((l.distance_to_arc(&arc) / 2.0).round() as i64, k, l)
+                    })
+                    .collect();
+                places.sort_by_key(|&(d, k, _)| (d, k));
+                places.into_iter().map(|(_, _, l)| l).collect()
+            })
+            .collect()
+    }
+
+    /// Places a label at the first free of its `places` beside what it names; whether it
+    /// found one (within [`Near::beside`]).
+    fn put(&mut self, places: &[Vec<Label>]) -> bool {
+        let mut fallback: Option<&Label> = None;
+        let mut free_far: Option<&Label> = None;
+        for form in places {
+            for l in form {
+                if self.free(l) {
+                    if l.distance() <= l.near.beside() {
+                        self.labels.push(l.clone());
+                        return true;
+                    }
+                    if free_far.is_none_or(|f| l.distance() < f.distance()) {
+                        free_far = Some(l);
+                    }
+                    break;
+                }
+                if fallback.is_none() && l.rect().inside_canvas() {
+                    fallback = Some(l);
+                }
+            }
+        }
+        // Free but not beside, or nowhere free (the tests look for both): the nearest free
+        // place, else the first inside the drawing, else the first tried.
+        if let Some(l) = free_far
+            .or(fallback)
+            .or(places.first().and_then(|f| f.first()))
+        {
+            self.labels.push(l.clone());
+        }
+        false
+    }
+}
+
+/// `text` on `n` lines of about the same length, broken at spaces; `None` when it has fewer
+/// than `n` words.
+fn in_lines(text: &str, n: usize) -> Option<String> {
+    // A lone capital (the O of "origem O do raio") stays with the word before it.
+    let mut words: Vec<String> = Vec::new();
+    for w in text.split(' ') {
+        match words.last_mut() {
+            Some(last) if w.chars().count() == 1 && w.chars().all(char::is_uppercase) => {
+                last.push(' ');
+                last.push_str(w);
+            }
+            _ => words.push(w.to_owned()),
+        }
+    }
+    if words.len() < n {
+        return None;
+    }
+    let total = text.chars().count() as f64;
+    let mut lines: Vec<String> = vec![String::new()];
+    for (k, w) in words.iter().enumerate() {
+        let room = n - lines.len();
+        let line = lines.last_mut().expect("a line");
+        let left = words.len() - k;
+        // A new line once this one holds its share, while words remain for the rest.
+        if !line.is_empty()
+            && room > 0
+            && (line.chars().count() as f64 + w.chars().count() as f64 / 2.0 > total / n as f64
+                || left == room)
+        {
+            lines.push(w.clone());
+        } else {
+            if !line.is_empty() {
+                line.push(' ');
+            }
+            line.push_str(w);
+        }
+    }
+    // A line does not end with "and" or "e": the word goes down to start the next.
+    for k in 0..lines.len().saturating_sub(1) {
+        if let Some((head, last)) = lines[k].rsplit_once(' ') {
+            if matches!(last, "e" | "and") {
+                let head = head.to_owned();
+                lines[k + 1] = format!("{last} {}", lines[k + 1]);
+                lines[k] = head;
+            }
+        }
+    }
+    (lines.len() == n).then(|| lines.join("\n"))
 }
 
 /// The screen angle (radians, y down) of the direction (a, b) in the plane.
 fn screen_angle(a: f64, b: f64) -> f64 {
     (-b).atan2(a)
 }
+
+/// A straight piece of the drawing: its two ends.
+type Segment = ((f64, f64), (f64, f64));
+
+/// A mark to draw: its item, centre, half sizes, name and its label's id.
+type Mark<'a> = (Item, (f64, f64), (f64, f64), &'a str, String);
+
+/// A vector to name: its id, the names it carries, its two ends, its screen angle from P and
+/// the side its label prefers.
+type Named<'a> = (&'a str, Vec<&'a str>, (f64, f64), (f64, f64), f64, f64);
 
 /// Lays out the diagram of one light.
 pub fn figure(d: &Diagram, id: &str, lang: Lang) -> Figure {
@@ -327,7 +767,7 @@ pub fn figure(d: &Diagram, id: &str, lang: Lang) -> Figure {
         false,
     );
     // N, up.
-    let n_tip = at(0.0, 1.0, 0.7);
+    let n_tip = at(0.0, 1.0, 0.8);
     line(&mut items, "N", "n", p, n_tip, true, false);
     // The light at −L, and L arriving at P.
     let (la, lb) = comp(d.l);
@@ -402,7 +842,13 @@ pub fn figure(d: &Diagram, id: &str, lang: Lang) -> Figure {
             let (da, db) = (da / len, db / len);
             // The origin is at P − tD: behind P along D for t > 0, ahead of it for t < 0.
             let s = if t > 0.0 { -1.0 } else { 1.0 };
-            let origin = at(s * da, s * db, 1.35);
+            // Seen from the viewer's direction (a viewer at the ray's origin, or V taken as
+            // the ray's direction), the origin is drawn where the viewer is: one mark, both
+            // names.
+            let with_viewer = v_dir.is_some_and(|(va, vb)| {
+                (-va) * (s * da) + (-vb) * (s * db) > 2f64.to_radians().cos()
+            });
+            let origin = at(s * da, s * db, if with_viewer { 1.15 } else { 1.35 });
             if t > 0.0 {
                 line(
                     &mut items,
@@ -426,14 +872,6 @@ pub fn figure(d: &Diagram, id: &str, lang: Lang) -> Figure {
                     false,
                 );
             }
-            items.push(Item::Dot {
-                id: format!("{id}-origin"),
-                class: "origin",
-                at: origin,
-                r: 4.5,
-                fill: "#8a2be2",
-                stroke: "#4b0082",
-            });
             ray_marks = Some((origin, t, (da, db)));
         }
     }
@@ -447,19 +885,73 @@ pub fn figure(d: &Diagram, id: &str, lang: Lang) -> Figure {
             true,
             true,
         );
-        items.push(Item::Eye {
-            id: format!("{id}-viewer"),
-            at: at(-va, -vb, 1.15),
-        });
     }
-    items.push(Item::Dot {
-        id: format!("{id}-light"),
-        class: "light",
-        at: light_at,
-        r: 9.0,
-        fill: "#ffd633",
-        stroke: "#a07800",
-    });
+    // The marks: the ray's origin, the viewer, the light. Marks that coincide at the
+    // drawing's scale (one's centre within the other's size) are drawn once, the first of
+    // them, and labelled with every name ("light and viewer").
+    let mut marks: Vec<Mark> = Vec::new();
+    if let Some((origin, _, _)) = ray_marks {
+        marks.push((
+            Item::Dot {
+                id: format!("{id}-origin"),
+                class: "origin",
+                at: origin,
+                r: 4.5,
+                fill: "#8a2be2",
+                stroke: "#4b0082",
+            },
+            origin,
+            (4.5, 4.5),
+            Phrase::RayOriginMark.get(lang),
+            format!("{id}-origin-label"),
+        ));
+    }
+    if let Some((va, vb)) = v_dir {
+        let eye = at(-va, -vb, 1.15);
+        marks.push((
+            Item::Eye {
+                id: format!("{id}-viewer"),
+                at: eye,
+            },
+            eye,
+            (12.0, 7.0),
+            Phrase::ViewerMark.get(lang),
+            format!("{id}-viewer-label"),
+        ));
+    }
+    marks.push((
+        Item::Dot {
+            id: format!("{id}-light"),
+            class: "light",
+            at: light_at,
+            r: 9.0,
+            fill: "#ffd633",
+            stroke: "#a07800",
+        },
+        light_at,
+        (9.0, 9.0),
+        Phrase::LightMark.get(lang),
+        format!("{id}-light-label"),
+    ));
+    // Groups, in the order of the names: the light first, then the viewer, then the origin.
+    marks.reverse();
+    let mut groups: Vec<Vec<usize>> = Vec::new();
+    for (i, m) in marks.iter().enumerate() {
+        let coincides = |g: &Vec<usize>| {
+            g.iter().any(|&k| {
+                let o = &marks[k];
+                (o.1 .0 - m.1 .0).hypot(o.1 .1 - m.1 .1) < o.2 .0.max(m.2 .0) + 2.0
+            })
+        };
+        match groups.iter_mut().find(|g| coincides(g)) {
+            Some(g) => g.push(i),
+            None => groups.push(vec![i]),
+        }
+    }
+    // Drawn under P, the last drawn on top: the origin, the viewer, the light.
+    for g in groups.iter().rev() {
+        items.push(marks[g[0]].0.clone());
+    }
     items.push(Item::Dot {
         id: format!("{id}-P"),
         class: "point",
@@ -468,22 +960,33 @@ pub fn figure(d: &Diagram, id: &str, lang: Lang) -> Figure {
         fill: "#000000",
         stroke: "#000000",
     });
-    // θ between N and −L, φ between R and −V, as arcs at P.
+    // θ between N and −L, φ between R and −V, as arcs at P. A narrow angle gets a wider
+    // arc, so that its symbol fits between the two vectors beside the arc (the wedge is
+    // about 28 px wide a dozen pixels past the arc); φ's arc stays outside θ's.
     let up = screen_angle(0.0, 1.0);
+    let wedge = |from: f64, to: f64| {
+        let mut delta = (to - from).abs() % (2.0 * std::f64::consts::PI);
+        if delta > std::f64::consts::PI {
+            delta = 2.0 * std::f64::consts::PI - delta;
+        }
+        delta.max(1e-3)
+    };
     let mut arcs = Vec::new();
+    let mut theta_r = None;
     if lb < 0.0 {
-        arcs.push(("theta", "l", 26.0, up, screen_angle(-la, -lb), "θ"));
+        let to = screen_angle(-la, -lb);
+        let r = (28.0 / wedge(up, to) - 12.0).clamp(26.0, 46.0);
+        theta_r = Some(r);
+        arcs.push(("theta", "l", r, up, to, "θ"));
     }
     if let (Some((ra, rb)), Some((va, vb))) = (r_dir, v_dir) {
         if d.r.is_some() {
-            arcs.push((
-                "phi",
-                "r",
-                40.0,
-                screen_angle(ra, rb),
-                screen_angle(-va, -vb),
-                "φ",
-            ));
+            let (from, to) = (screen_angle(ra, rb), screen_angle(-va, -vb));
+            // Outside θ's arc, with room for θ's symbol between the two arcs.
+            let r = (28.0 / wedge(from, to) - 12.0)
+                .clamp(40.0, 85.0)
+                .max(theta_r.map_or(0.0, |t| t + 30.0));
+            arcs.push(("phi", "r", r, from, to, "φ"));
         }
     }
     for (name, which, r, from, to, _) in &arcs {
@@ -496,111 +999,156 @@ pub fn figure(d: &Diagram, id: &str, lang: Lang) -> Figure {
         });
     }
 
-    // The labels, most constrained first.
+    // What a label may not touch: every line and arc, and every mark.
     let mut segments = Vec::new();
-    for it in &items {
-        if let Item::Line { from, to, .. } = it {
-            segments.push((*from, *to));
-        }
-    }
     let mut dots = Vec::new();
     for it in &items {
-        let (c, r) = match it {
-            Item::Dot { at, r, .. } => (*at, *r),
-            Item::Eye { at, .. } => (*at, 12.0),
-            _ => continue,
-        };
-        dots.push(Rect {
-            x0: c.0 - r,
-            y0: c.1 - r,
-            x1: c.0 + r,
-            y1: c.1 + r,
-        });
+        match it {
+            Item::Line {
+                from, to, arrow, ..
+            } => {
+                segments.push((*from, *to));
+                // The arrowhead, wider than the line.
+                if *arrow {
+                    dots.push(arrowhead(*from, *to, 6.0));
+                }
+            }
+            Item::Arc { r, from, to, .. } => segments.extend(arc_segments(*r, *from, *to)),
+            Item::Dot { at, r, .. } => dots.push(Rect {
+                x0: at.0 - r,
+                y0: at.1 - r,
+                x1: at.0 + r,
+                y1: at.1 + r,
+            }),
+            Item::Eye { at, .. } => dots.push(Rect {
+                x0: at.0 - 12.0,
+                y0: at.1 - 7.0,
+                x1: at.0 + 12.0,
+                y1: at.1 + 7.0,
+            }),
+            _ => {}
+        }
     }
     let mut placer = Placer {
         segments,
         dots,
         labels: Vec::new(),
+        specs: Vec::new(),
     };
     let side = |a: f64, b: f64, s: f64| screen_angle(a, b) + s * std::f64::consts::FRAC_PI_2;
-    let mid = |a: (f64, f64), b: (f64, f64)| ((a.0 + b.0) / 2.0, (a.1 + b.1) / 2.0);
-    placer.place(format!("{id}-P-label"), "sym", "P", p, &[0.6, 2.5]);
     placer.place(
-        format!("{id}-N-label"),
+        format!("{id}-P-label"),
         "sym",
+        "P",
+        Near::Point(p, (3.5, 3.5)),
+        &[0.6, 2.5],
+    );
+    // The vectors, each named beside its arrow; vectors drawn along one another (within 6°)
+    // are named together ("L, V"), beside the longer.
+    let mut vectors: Vec<Named> = vec![(
         "N",
-        at(0.0, 1.0, 0.55),
-        &[side(0.0, 1.0, -1.0)],
-    );
-    placer.place(
-        format!("{id}-L-label"),
-        "sym",
+        vec!["N"],
+        p,
+        n_tip,
+        screen_angle(0.0, 1.0),
+        side(0.0, 1.0, -1.0),
+    )];
+    vectors.push((
         "L",
-        at(-la, -lb, 0.5),
-        &[side(-la, -lb, 1.0)],
-    );
+        vec!["L"],
+        at(-la, -lb, 1.0),
+        at(-la, -lb, 0.06),
+        screen_angle(-la, -lb),
+        side(-la, -lb, 1.0),
+    ));
     if let Some((ra, rb)) = r_dir {
-        placer.place(
-            format!("{id}-R-label"),
-            "sym",
+        vectors.push((
             "R",
-            at(ra, rb, 0.75),
-            &[side(ra, rb, -1.0)],
-        );
+            vec!["R"],
+            p,
+            at(ra, rb, 1.0),
+            screen_angle(ra, rb),
+            side(ra, rb, -1.0),
+        ));
     }
     if let Some((va, vb)) = v_dir {
-        placer.place(
-            format!("{id}-V-label"),
-            "sym",
+        vectors.push((
             "V",
-            at(-va, -vb, 0.5),
-            &[side(-va, -vb, 1.0)],
-        );
+            vec!["V"],
+            at(-va, -vb, 1.0),
+            at(-va, -vb, 0.06),
+            screen_angle(-va, -vb),
+            side(-va, -vb, 1.0),
+        ));
+    }
+    let mut merged: Vec<Named> = Vec::new();
+    for v in vectors {
+        let along = merged.iter_mut().find(|m| {
+            let mut delta = (m.4 - v.4).abs() % (2.0 * std::f64::consts::PI);
+            if delta > std::f64::consts::PI {
+                delta = 2.0 * std::f64::consts::PI - delta;
+            }
+            delta < 6f64.to_radians()
+        });
+        match along {
+            Some(m) => m.1.extend(v.1),
+            None => merged.push(v),
+        }
     }
     for (name, _, r, from, to, text) in &arcs {
         let a = (from + to) / 2.0;
-        let anchor = (PX + r * a.cos(), PY + r * a.sin());
-        placer.place(format!("{id}-{name}-label"), "sym", text, anchor, &[a]);
-    }
-    placer.place(
-        format!("{id}-light-label"),
-        "mark",
-        Phrase::LightMark.get(lang),
-        light_at,
-        &[-std::f64::consts::FRAC_PI_2],
-    );
-    if let Some((va, vb)) = v_dir {
         placer.place(
-            format!("{id}-viewer-label"),
+            format!("{id}-{name}-label"),
+            "sym",
+            text,
+            Near::Arc(*r, *from, *to),
+            &[a],
+        );
+    }
+    for (name, names, a, b, _, prefer) in &merged {
+        placer.place(
+            format!("{id}-{name}-label"),
+            "sym",
+            &names.join(", "),
+            Near::Segment(*a, *b),
+            &[*prefer],
+        );
+    }
+    for g in &groups {
+        let names: Vec<&str> = g.iter().map(|&k| marks[k].3).collect();
+        let text = match names.as_slice() {
+            [] => String::new(),
+            [one] => (*one).to_owned(),
+            [init @ .., last] => format!("{}{}{last}", init.join(", "), Phrase::MarksAnd.get(lang)),
+        };
+        // Away from P first, where the drawing has room, then above.
+        let (_, centre, r, _, label_id) = &marks[g[0]];
+        let away = (centre.1 - PY).atan2(centre.0 - PX);
+        placer.place(
+            label_id.clone(),
             "mark",
-            Phrase::ViewerMark.get(lang),
-            at(-va, -vb, 1.15),
-            &[-std::f64::consts::FRAC_PI_2],
+            &text,
+            Near::Point(*centre, *r),
+            &[away, -std::f64::consts::FRAC_PI_2],
         );
     }
     if let Some((origin, t, (da, db))) = ray_marks {
-        placer.place(
-            format!("{id}-origin-label"),
-            "mark",
-            Phrase::RayOriginMark.get(lang),
-            origin,
-            &[-std::f64::consts::FRAC_PI_2],
-        );
+        // t names the stretch from the origin to P (the ray for t > 0, its line for t < 0).
         let s = if t > 0.0 { -1.0 } else { 1.0 };
         let text = format!("t = {}", crate::text::number::num(t).replace('-', "−"));
         placer.place(
             format!("{id}-t-label"),
             "note",
             &text,
-            mid(at(s * da, s * db, 0.7), at(s * da, s * db, 0.6)),
-            &[side(s * da, s * db, 1.0), side(s * da, s * db, -1.0)],
+            Near::Segment(origin, p),
+            &[side(s * da, s * db, 1.0)],
         );
     }
     placer.place(
         format!("{id}-back"),
         "note",
         Phrase::BackSide.get(lang),
-        (50.0, HEIGHT - 14.0),
+        Near::Point((50.0, HEIGHT - 14.0), (0.0, 0.0)),
         &[0.0],
     );
     let mut caption = Phrase::DiagramCaption.get(lang).to_owned();
@@ -610,10 +1158,43 @@ pub fn figure(d: &Diagram, id: &str, lang: Lang) -> Figure {
     }
     Figure {
         items,
-        labels: placer.labels,
+        labels: placer.layout(),
         title: format!("{}{}", Phrase::DiagramOf.get(lang), d.light),
         caption,
     }
+}
+
+/// The box of an arrowhead (15 px long and wide, its tip at `to`), `m` each side of its
+/// middle.
+fn arrowhead(from: (f64, f64), to: (f64, f64), m: f64) -> Rect {
+    let len = (to.0 - from.0).hypot(to.1 - from.1).max(1e-9);
+    let back = 6.0_f64.min(len / 2.0);
+    let c = (
+        to.0 - (to.0 - from.0) / len * back,
+        to.1 - (to.1 - from.1) / len * back,
+    );
+    Rect {
+        x0: c.0 - m,
+        y0: c.1 - m,
+        x1: c.0 + m,
+        y1: c.1 + m,
+    }
+}
+
+/// An arc at P as short segments, for what labels must not touch.
+fn arc_segments(r: f64, from: f64, to: f64) -> Vec<((f64, f64), (f64, f64))> {
+    let mut delta = to - from;
+    while delta > std::f64::consts::PI {
+        delta -= 2.0 * std::f64::consts::PI;
+    }
+    while delta < -std::f64::consts::PI {
+        delta += 2.0 * std::f64::consts::PI;
+    }
+    let point = |k: usize| {
+        let a = from + delta * k as f64 / 12.0;
+        (PX + r * a.cos(), PY + r * a.sin())
+    };
+    (0..12).map(|k| (point(k), point(k + 1))).collect()
 }
 
 /// The points of an arc at P, for SVG's path and TikZ alike: from `from` to `to` the short
@@ -747,15 +1328,30 @@ pub fn svg(d: &Diagram, id: &str, lang: Lang) -> String {
         }
     }
     for l in &f.labels {
-        // The label's box is centred on `at`; the baseline sits a third of the size lower.
+        // The label's box is centred on `at`; a line's baseline sits a third of the size
+        // below its middle.
+        let size = Label::size(l.class);
+        let lines: Vec<&str> = l.text.split('\n').collect();
+        let first = l.at.1 + size * 0.35 - (lines.len() as f64 - 1.0) * size * LEADING / 2.0;
+        let body = match lines.as_slice() {
+            [one] => escaped(one),
+            _ => lines
+                .iter()
+                .enumerate()
+                .map(|(k, line)| {
+                    let dy = if k == 0 { 0.0 } else { size * LEADING };
+                    format!(
+                        r#"<tspan x="{:.1}" dy="{dy:.1}">{}</tspan>"#,
+                        l.at.0,
+                        escaped(line)
+                    )
+                })
+                .collect(),
+        };
         let _ = writeln!(
             out,
-            r#"<text id="{}" class="{}" x="{:.1}" y="{:.1}" text-anchor="middle">{}</text>"#,
-            l.id,
-            l.class,
-            l.at.0,
-            l.at.1 + Label::size(l.class) * 0.35,
-            escaped(&l.text)
+            r#"<text id="{}" class="{}" x="{:.1}" y="{first:.1}" text-anchor="middle">{body}</text>"#,
+            l.id, l.class, l.at.0,
         );
     }
     out.push_str("</svg>\n");
@@ -883,16 +1479,24 @@ pub fn tikz(d: &Diagram, lang: Lang) -> String {
         }
     }
     for l in &f.labels {
-        let font = match l.class {
-            "sym" => "\\bfseries\\itshape\\small",
-            "note" => "\\scriptsize",
-            _ => "\\footnotesize",
-        };
+        // The SVG's size in points (a pixel is 0.02 cm, 0.567 pt), so that the boxes the
+        // layout kept apart are the PDF's too (Computer Modern is narrower than DejaVu Sans).
+        let size = Label::size(l.class) * 0.567;
+        let font = format!(
+            "{{\\fontsize{{{size:.1}pt}}{{{:.1}pt}}\\selectfont{}}}",
+            size * LEADING,
+            if l.class == "sym" {
+                "\\bfseries\\itshape"
+            } else {
+                ""
+            }
+        );
+        let text: Vec<String> = l.text.split('\n').map(escape).collect();
         let _ = writeln!(
             out,
-            "\\node[font={font}] at {} {{{}}};",
+            "\\node[font={font},align=center] at {} {{{}}};",
             pt(l.at),
-            escape(&l.text)
+            text.join("\\\\")
         );
     }
     out.push_str("\\end{tikzpicture}\n\n");
@@ -909,6 +1513,203 @@ pub fn tikz(d: &Diagram, lang: Lang) -> String {
 mod tests {
     use super::*;
     use crate::core::LightStatus;
+
+    /// Every diagram of an explanation (each part's shading, each light).
+    fn diagrams_of(x: &crate::report::explain::Explanation) -> Vec<Diagram> {
+        x.parts
+            .iter()
+            .filter_map(|p| p.shading.as_ref())
+            .flat_map(|s| s.diagrams.iter().cloned())
+            .collect()
+    }
+
+    /// What is wrong with a figure's labels: two that overlap, one that a line, an arc or a
+    /// mark crosses, one outside the drawing, one not beside what it names. Boxes are the
+    /// layout's own estimate of the text (font size × characters, a little generous).
+    fn faults(f: &Figure) -> Vec<String> {
+        let mut out = Vec::new();
+        let rects: Vec<Rect> = f.labels.iter().map(Label::rect).collect();
+        for (i, a) in rects.iter().enumerate() {
+            let la = &f.labels[i];
+            if !a.inside_canvas() {
+                out.push(format!("{} ({:?}) is outside the drawing", la.id, la.text));
+            }
+            if la.distance() > la.near.beside() {
+                out.push(format!(
+                    "{} ({:?}) is {:.0} px from what it names",
+                    la.id,
+                    la.text,
+                    la.distance()
+                ));
+            }
+            for (j, b) in rects.iter().enumerate().skip(i + 1) {
+                if a.overlaps(b) {
+                    out.push(format!("{} overlaps {}", la.id, f.labels[j].id));
+                }
+            }
+            for it in &f.items {
+                let hit = match it {
+                    Item::Line {
+                        id,
+                        from,
+                        to,
+                        arrow,
+                        ..
+                    } => {
+                        let head = arrowhead(*from, *to, 6.0);
+                        (a.meets(*from, *to) || (*arrow && head.overlaps(a))).then_some(id)
+                    }
+                    Item::Arc {
+                        id, r, from, to, ..
+                    } => arc_segments(*r, *from, *to)
+                        .iter()
+                        .any(|&(p, q)| a.meets(p, q))
+                        .then_some(id),
+                    Item::Dot { id, at, r, .. } => Rect {
+                        x0: at.0 - r,
+                        y0: at.1 - r,
+                        x1: at.0 + r,
+                        y1: at.1 + r,
+                    }
+                    .overlaps(a)
+                    .then_some(id),
+                    Item::Eye { id, at } => Rect {
+                        x0: at.0 - 12.0,
+                        y0: at.1 - 7.0,
+                        x1: at.0 + 12.0,
+                        y1: at.1 + 7.0,
+                    }
+                    .overlaps(a)
+                    .then_some(id),
+                    _ => None,
+                };
+                if let Some(id) = hit {
+                    out.push(format!("{id} crosses {}", la.id));
+                }
+            }
+        }
+        out
+    }
+
+    fn check_file(path: &std::path::Path, bad: &mut Vec<String>) -> usize {
+        let mut n = 0;
+        for lang in [Lang::En, Lang::Pt] {
+            let x = crate::report::file::explain_file(path, crate::core::Precision::F64, lang)
+                .unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+            for (k, d) in diagrams_of(&x).iter().enumerate() {
+                n += 1;
+                for fault in faults(&figure(d, "d", lang)) {
+                    bad.push(format!(
+                        "{} ({lang:?}) diagram {k}: {fault}",
+                        path.display()
+                    ));
+                }
+            }
+        }
+        n
+    }
+
+    #[test]
+    fn the_labels_of_400_generated_problems_are_clear_and_beside_what_they_name() {
+        use clap::ValueEnum;
+        let mut bad = Vec::new();
+        let (mut problems, mut n) = (0, 0);
+        for &kind in crate::generate::Kind::value_variants() {
+            for g in crate::generate::generate(kind, 50, 2026, false) {
+                problems += 1;
+                let text = g.text();
+                let name = std::path::PathBuf::from(&g.file_name);
+                let source = crate::problem::Source::Text {
+                    name: &name,
+                    text: &text,
+                };
+                let lang = if problems % 2 == 0 {
+                    Lang::Pt
+                } else {
+                    Lang::En
+                };
+                let x =
+                    crate::report::file::explain_source(source, crate::core::Precision::F64, lang)
+                        .unwrap_or_else(|e| panic!("{}: {e}", g.file_name));
+                for (k, d) in diagrams_of(&x).iter().enumerate() {
+                    n += 1;
+                    for fault in faults(&figure(d, "d", lang)) {
+                        bad.push(format!("{} ({lang:?}) diagram {k}: {fault}", g.file_name));
+                    }
+                }
+            }
+        }
+        assert!(problems >= 400, "only {problems} problems");
+        assert!(n >= 300, "only {n} diagrams");
+        assert!(bad.is_empty(), "{} faults:\n{}", bad.len(), bad.join("\n"));
+    }
+
+    #[test]
+    fn a_long_name_is_set_on_lines_of_about_the_same_length() {
+        assert_eq!(in_lines("light", 2), None);
+        assert_eq!(
+            in_lines("fonte de luz e observador", 2).as_deref(),
+            Some("fonte de luz\ne observador")
+        );
+        assert_eq!(
+            in_lines("origem O do raio", 2).as_deref(),
+            Some("origem O\ndo raio")
+        );
+        assert_eq!(
+            in_lines("observador e origem O do raio", 3).as_deref(),
+            Some("observador\ne origem O\ndo raio")
+        );
+    }
+
+    #[test]
+    fn exercise_4_3_marks_the_light_and_the_viewer_once_with_both_names() {
+        // Seen from P = (−64, 4, 60), the light (0, 0, 5) and the viewer (0, 10, 0) lie in
+        // almost the same direction, grazing the plane x + y + z = 0: −L and −V differ by
+        // about 2°, so at the drawing's scale their marks coincide.
+        for (lang, names) in [
+            (Lang::En, "light and viewer"),
+            (Lang::Pt, "fonte de luz e observador"),
+        ] {
+            let x = crate::report::file::explain_file(
+                std::path::Path::new("exercises/4.3.json"),
+                crate::core::Precision::F64,
+                lang,
+            )
+            .unwrap();
+            let d = &diagrams_of(&x)[0];
+            let f = figure(d, "d", lang);
+            let drawn = |id: &str| {
+                f.items.iter().any(
+                    |it| matches!(it, Item::Dot { id: i, .. } | Item::Eye { id: i, .. } if i == id),
+                )
+            };
+            assert!(drawn("d-light") && !drawn("d-viewer") && drawn("d-origin"));
+            let light = f.labels.iter().find(|l| l.id == "d-light-label").unwrap();
+            assert_eq!(light.text.replace('\n', " "), names);
+            assert!(!f.labels.iter().any(|l| l.id == "d-viewer-label"));
+            // L and V are drawn along each other: one label names both.
+            let lv = f.labels.iter().find(|l| l.id == "d-L-label").unwrap();
+            assert_eq!(lv.text, "L, V");
+            assert!(faults(&f).is_empty(), "{:?}", faults(&f));
+        }
+    }
+
+    #[test]
+    fn every_bundled_exercises_labels_are_clear_and_beside_what_they_name() {
+        let mut bad = Vec::new();
+        let mut n = 0;
+        let mut files: Vec<_> = std::fs::read_dir("exercises")
+            .unwrap()
+            .map(|e| e.unwrap().path())
+            .filter(|p| p.extension().is_some_and(|e| e == "json"))
+            .collect();
+        files.push("scenes/4.3.json".into());
+        for path in &files {
+            n += check_file(path, &mut bad);
+        }
+        assert!(n >= 30, "only {n} diagrams");
+        assert!(bad.is_empty(), "{}", bad.join("\n"));
+    }
 
     fn diagram(n: V, l: V, v: Option<V>) -> Diagram {
         Diagram {

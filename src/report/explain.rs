@@ -186,7 +186,8 @@ pub struct Shading {
 /// What a diagram of the plane of incidence needs: the unit vectors at P for one light.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Diagram {
-    /// The light's label (`lights[0] (point) "white light"`).
+    /// The light as a document names it, with its article ("the white light", "a luz
+    /// branca": `report::messages::light_noun`).
     pub light: String,
     /// Its index in the file's `lights`.
     pub light_index: usize,
@@ -264,19 +265,25 @@ pub fn explain<R: Real>(
             }
         }),
     })
-    .chain(s.readings.iter().map(|r| Part {
-        reading: Some(r.code),
-        heading: capitalised(messages::reading_label_in(r.code, lang)),
-        explanation: Some(
-            messages::reading_explanation_given(r.code, lang, problem.viewer.is_some()).to_owned(),
-        ),
-        ray: r.intersection.as_ref().map(|x| intersection(x, lang)),
-        shading: Some(shading(
-            problem,
-            &r.evaluation,
-            lang,
-            ray_mark(r.intersection.as_ref()),
-        )),
+    .chain(s.readings.iter().map(|r| {
+        Part {
+            reading: Some(r.code),
+            heading: capitalised(messages::reading_label_in(r.code, lang)),
+            explanation: Some(
+                messages::reading_explanation_given(r.code, lang, problem.viewer.is_some())
+                    .to_owned(),
+            ),
+            ray: r
+                .intersection
+                .as_ref()
+                .map(|x| intersection(problem, x, lang)),
+            shading: Some(shading(
+                problem,
+                &r.evaluation,
+                lang,
+                ray_mark(r.intersection.as_ref()),
+            )),
+        }
     }))
     .collect();
     let title = match lang {
@@ -299,7 +306,10 @@ pub fn explain<R: Real>(
             .iter()
             .map(|f| messages::finding_in(problem, f, lang))
             .collect(),
-        ray: s.intersection.as_ref().map(|x| intersection(x, lang)),
+        ray: s
+            .intersection
+            .as_ref()
+            .map(|x| intersection(problem, x, lang)),
         parts,
         warnings: problem.warnings.iter().map(|w| w.text(lang)).collect(),
     }
@@ -633,7 +643,7 @@ fn data<R: Real>(problem: &Problem<R>, lang: Lang) -> Vec<DataRow> {
     rows
 }
 
-fn intersection<R: Real>(x: &Intersection<R>, lang: Lang) -> Vec<Step> {
+fn intersection<R: Real>(problem: &Problem<R>, x: &Intersection<R>, lang: Lang) -> Vec<Step> {
     let mut out = Steps(Vec::new());
     out.push(
         0,
@@ -668,9 +678,11 @@ fn intersection<R: Real>(x: &Intersection<R>, lang: Lang) -> Vec<Step> {
                 0,
                 vec![
                     t(format!(
-                        "{} ({}): ",
-                        messages::surface_kind(kind, lang),
-                        messages::surface_label(x.source, lang)
+                        "{}: ",
+                        capitalised(&match x.source {
+                            Some(source) => messages::surface_noun(problem, source).the(lang),
+                            None => messages::surface_kind(kind, lang).to_owned(),
+                        })
                     )),
                     Math(Formula::T),
                     EQ,
@@ -1200,13 +1212,22 @@ fn light<R: Real>(
     let l = &set.lights[term.index];
     let info = &problem.light_info[term.index];
     let a = &term.arrival;
-    let name = messages::light_name_in(problem, info.file_index, lang);
-    let mut head = vec![p(Phrase::Light, lang), t(format!("{name} "))];
+    // The light named as a person would ("The yellow light (point) at …"), its kind after it
+    // unless its name says it ("The green spot at …").
+    let noun = messages::light_noun(problem, info.file_index);
+    let name = noun.the(lang);
+    let kind = messages::light_kind(info.kind, lang);
+    let mut head = vec![t(if name.contains(kind) {
+        capitalised(&name)
+    } else {
+        format!("{} ({kind})", capitalised(&name))
+    })];
     match l.kind {
         LightKind::Point { position, .. } => {
-            head.extend([p(Phrase::At, lang), Vector(v::<R>(position))]);
+            head.extend([t(" "), p(Phrase::At, lang), Vector(v::<R>(position))]);
         }
         LightKind::Spot { position, cone, .. } => head.extend([
+            t(" "),
             p(Phrase::At, lang),
             Vector(v::<R>(position)),
             p(Phrase::Axis, lang),
@@ -1223,6 +1244,7 @@ fn light<R: Real>(
             Num(cone.exponent.to_f64()),
         ]),
         LightKind::Directional { direction } => head.extend([
+            t(", "),
             p(Phrase::Direction, lang),
             Math(Formula::DL),
             EQ,
@@ -1544,6 +1566,39 @@ pub(crate) fn runs(line: &[Inline]) -> Vec<Run<'_>> {
     out
 }
 
+/// `text` with each triple of numbers in parentheses ("(76, 92, 81)", "(0.5, -1, 2)") replaced
+/// by `keep(triple)`: how a layout keeps a colour or a vector on one line (an answer key's
+/// column is narrow, and "(76, 92," at the end of a line and "81)" on the next reads as two
+/// answers).
+pub(crate) fn keep_triples(text: &str, keep: impl Fn(&str) -> String) -> String {
+    let mut out = String::new();
+    let mut rest = text;
+    while let Some(open) = rest.find('(') {
+        out.push_str(&rest[..open]);
+        let after = &rest[open..];
+        let triple = after.find(')').map(|close| &after[..=close]).filter(|g| {
+            let inner = &g[1..g.len() - 1];
+            inner.matches(',').count() == 2
+                && inner.contains(' ')
+                && inner
+                    .chars()
+                    .all(|c| c.is_ascii_digit() || matches!(c, '.' | '-' | '−' | ',' | ' ' | 'e'))
+        });
+        match triple {
+            Some(g) => {
+                out.push_str(&keep(g));
+                rest = &after[g.len()..];
+            }
+            None => {
+                out.push('(');
+                rest = &after[1..];
+            }
+        }
+    }
+    out.push_str(rest);
+    out
+}
+
 /// A colour clamped to [0, 1] in 8 bits, for a swatch (the solver's and the tracer's rounding).
 pub(crate) use crate::core::color::rgb8 as to_rgb8;
 
@@ -1581,4 +1636,22 @@ pub(crate) fn latex_math(run: &[&Inline]) -> String {
         }
     }
     s.trim().to_owned()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::keep_triples;
+
+    #[test]
+    fn a_triple_of_numbers_is_kept_whole_and_nothing_else_is() {
+        let mark = |g: &str| format!("[{g}]");
+        assert_eq!(
+            keep_triples("8 bits (76, 92, 81) and (0.5, -1, 2)", mark),
+            "8 bits [(76, 92, 81)] and [(0.5, -1, 2)]"
+        );
+        // Two numbers, words, or no closing parenthesis: left as they are.
+        for text in ["(1, 2)", "(pontual) em", "(a, b, c)", "(1, 2, 3", "f(x)"] {
+            assert_eq!(keep_triples(text, mark), text);
+        }
+    }
 }

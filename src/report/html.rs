@@ -387,7 +387,11 @@ fn key_cell(pieces: &[Inline]) -> String {
     for piece in pieces {
         match piece {
             Inline::Swatch(rgb) => s.push_str(&swatch(*rgb, "sw", "")),
-            Inline::Color(x) => s.push_str(&vec3(*x)),
+            // A colour is not broken across lines in the key's narrow column.
+            Inline::Color(x) => s.push_str(&vec3(*x).replace(' ', "&nbsp;")),
+            Inline::Rgb8([r, g, b]) => {
+                let _ = write!(s, "({r},&nbsp;{g},&nbsp;{b})");
+            }
             other => s.push_str(&line(std::slice::from_ref(other))),
         }
     }

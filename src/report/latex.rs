@@ -133,7 +133,9 @@ pub(crate) fn pieces(line: &[Inline]) -> String {
     let mut s = String::new();
     for run in runs(line) {
         match run {
-            Run::Text(t) => s.push_str(&escape(&t)),
+            Run::Text(t) => s.push_str(&super::explain::keep_triples(&escape(&t), |g| {
+                format!("\\mbox{{{g}}}")
+            })),
             Run::Math(m) => s.push_str(&format!("${}$", latex_math(&m))),
             Run::Swatch(rgb) => s.push_str(&swatch(rgb)),
         }

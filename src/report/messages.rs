@@ -74,7 +74,7 @@ phrases! {
     Problem => "Problem", "Problema";
     Findings => "Findings", "Observações";
     Ray => "Ray", "Raio";
-    AsWritten => "Solution (the problem as written)", "Solução (o problema como escrito)";
+    AsWritten => "Solution (the problem as written)", "Solução (o problema como enunciado)";
     NothingToShade => "no point to shade: the ray hits nothing",
         "nenhum ponto a iluminar: o raio não atinge nada";
     Given => "Given", "Dados";
@@ -160,6 +160,7 @@ phrases! {
     ViewerMark => "viewer", "observador";
     RayOriginMark => "ray's origin O", "origem O do raio";
     BackSide => "back side", "lado de trás";
+    MarksAnd => " and ", " e ";
     VProjected => "V is not in this plane: its projection is drawn.",
         "V não está neste plano: sua projeção é desenhada.";
     VOutOfPlane => "V is perpendicular to this plane and is not drawn.",
@@ -181,7 +182,7 @@ phrases! {
     AnswerKey => "Answer key", "Gabarito";
     Quantity => "Given", "Dado";
     Value => "Value", "Valor";
-    Answer => "Answer (as written)", "Resposta (como escrito)";
+    Answer => "Answer (as written)", "Resposta (como enunciado)";
     NoHitAnswer => "no hit: the ray hits nothing", "nenhuma interseção: o raio não atinge nada";
 }
 
@@ -209,14 +210,204 @@ pub fn surface_kind(kind: &str, lang: Lang) -> &str {
     }
 }
 
-/// "lights[1] (point) “key”", or "lights[1] (pontual) “principal”" in Portuguese (the
-/// light's `name_pt`, when it has one).
-pub(crate) fn light_name_in<R: Real>(
-    problem: &Problem<R>,
-    file_index: usize,
-    lang: Lang,
-) -> String {
-    light_label(problem, file_index, lang, false)
+/// A light or a surface named as a person names it in a document ("the yellow light", "the
+/// second light", "the plane"; "a luz amarela", "a segunda luz", "o plano"): never by its
+/// place in the file (`lights[1]`), which the JSON and the error messages keep. The noun comes
+/// without its article; [`Noun::the`], [`Noun::of`], [`Noun::in_`] and [`Noun::for_`] add the
+/// article, contracted in Portuguese where the language contracts it (de + a = da, em + o = no).
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Noun {
+    /// The English noun: "yellow light", "second light", "light “key”", "plane".
+    en: String,
+    /// The Portuguese noun: "luz amarela", "segunda luz", "luz “principal”", "plano".
+    pt: String,
+    /// Whether the Portuguese noun is masculine (o plano, o triângulo) or feminine (a luz, a
+    /// esfera, a malha).
+    masculine: bool,
+}
+
+impl Noun {
+    /// With its article: "the yellow light", "a luz amarela", "o plano".
+    pub fn the(&self, lang: Lang) -> String {
+        match (lang, self.masculine) {
+            (Lang::En, _) => format!("the {}", self.en),
+            (Lang::Pt, true) => format!("o {}", self.pt),
+            (Lang::Pt, false) => format!("a {}", self.pt),
+        }
+    }
+
+    /// "of the yellow light", "da luz amarela", "do plano".
+    pub fn of(&self, lang: Lang) -> String {
+        match (lang, self.masculine) {
+            (Lang::En, _) => format!("of the {}", self.en),
+            (Lang::Pt, true) => format!("do {}", self.pt),
+            (Lang::Pt, false) => format!("da {}", self.pt),
+        }
+    }
+
+    /// "in the plane", "no plano", "na esfera".
+    pub fn in_(&self, lang: Lang) -> String {
+        match (lang, self.masculine) {
+            (Lang::En, _) => format!("in the {}", self.en),
+            (Lang::Pt, true) => format!("no {}", self.pt),
+            (Lang::Pt, false) => format!("na {}", self.pt),
+        }
+    }
+
+    /// "for the yellow light", "para a luz amarela".
+    pub fn for_(&self, lang: Lang) -> String {
+        match lang {
+            Lang::En => format!("for the {}", self.en),
+            Lang::Pt => format!("para {}", self.the(lang)),
+        }
+    }
+}
+
+/// An ordinal word before a noun: "second", "segunda" (feminine) or "segundo"; past the
+/// tenth, "11th", "11ª", "11º".
+fn ordinal(n: usize, lang: Lang, masculine: bool) -> String {
+    const EN: [&str; 10] = [
+        "first", "second", "third", "fourth", "fifth", "sixth", "seventh", "eighth", "ninth",
+        "tenth",
+    ];
+    const PT: [&str; 10] = [
+        "primeir", "segund", "terceir", "quart", "quint", "sext", "sétim", "oitav", "non", "décim",
+    ];
+    let ending = if masculine { 'o' } else { 'a' };
+    match (lang, n.checked_sub(1).filter(|&k| k < 10)) {
+        (Lang::En, Some(k)) => EN[k].to_owned(),
+        (Lang::Pt, Some(k)) => format!("{}{ending}", PT[k]),
+        (Lang::En, None) => {
+            let suffix = match (n % 10, n % 100) {
+                (_, 11..=13) => "th",
+                (1, _) => "st",
+                (2, _) => "nd",
+                (3, _) => "rd",
+                _ => "th",
+            };
+            format!("{n}{suffix}")
+        }
+        (Lang::Pt, None) => format!("{n}{}", if masculine { 'º' } else { 'ª' }),
+    }
+}
+
+/// How a document names the light of the file's `lights[file_index]` (a point, spot or
+/// directional light): by its name when it has one ("the yellow light", "a luz amarela"; a
+/// name that is not itself a noun for a light is quoted after "light": "the light “key”", "a
+/// luz “principal”"), else by its place among the lights when there are several ("the second
+/// light", "a segunda luz"), else "the light", "a luz".
+pub fn light_noun<R: Real>(problem: &Problem<R>, file_index: usize) -> Noun {
+    let infos = &problem.light_info;
+    let place = infos
+        .binary_search_by_key(&file_index, |i| i.file_index)
+        .ok();
+    let info = place.map(|k| &infos[k]);
+    let several = infos.len() > 1;
+    let unnamed = |lang: Lang| match (place, several) {
+        (Some(k), true) => match lang {
+            Lang::En => format!("{} light", ordinal(k + 1, lang, false)),
+            Lang::Pt => format!("{} luz", ordinal(k + 1, lang, false)),
+        },
+        _ => pick(lang, "light", "luz").to_owned(),
+    };
+    let en_name = info.and_then(|i| i.name.as_deref());
+    let pt_name = info.and_then(|i| i.name_pt.as_deref().or(i.name.as_deref()));
+    let en = match en_name {
+        Some(name) => {
+            let last = name.split_whitespace().last().unwrap_or("").to_lowercase();
+            if LIGHT_NOUNS_EN.contains(&last.as_str()) {
+                name.to_owned()
+            } else {
+                format!("light {}", super::explain::quoted(name))
+            }
+        }
+        None => unnamed(Lang::En),
+    };
+    let (pt, masculine) = match pt_name {
+        Some(name) => {
+            let first = name.split_whitespace().next().unwrap_or("").to_lowercase();
+            if LIGHT_NOUNS_PT_F.contains(&first.as_str()) {
+                (name.to_owned(), false)
+            } else if LIGHT_NOUNS_PT_M.contains(&first.as_str()) {
+                (name.to_owned(), true)
+            } else {
+                (format!("luz {}", super::explain::quoted(name)), false)
+            }
+        }
+        None => (unnamed(Lang::Pt), false),
+    };
+    Noun { en, pt, masculine }
+}
+
+/// English nouns that end a light's name that names a light ("yellow light", "green spot").
+const LIGHT_NOUNS_EN: &[&str] = &["light", "lamp", "spot", "spotlight", "sun", "sky", "bulb"];
+/// Portuguese feminine nouns that begin a light's name that names a light ("luz amarela").
+const LIGHT_NOUNS_PT_F: &[&str] = &["luz", "lâmpada", "fonte"];
+/// Portuguese masculine nouns that begin a light's name that names a light ("spot verde").
+const LIGHT_NOUNS_PT_M: &[&str] = &["spot", "sol", "céu", "holofote", "refletor", "foco"];
+
+/// How a document names a surface of the file ("the plane", "the second sphere", "triangle 17
+/// of the mesh"; "o plano", "a segunda esfera", "o triângulo 17 da malha"): by its kind, and
+/// its place among the file's surfaces of that kind when there are several.
+pub fn surface_noun<R: Real>(problem: &Problem<R>, source: crate::problem::SurfaceSource) -> Noun {
+    // The file's surfaces by kind, in file order (a mesh's triangles are one surface).
+    let kind_of = |s: &crate::problem::model::Surface<R>| match s.source.triangle {
+        Some(_) => "mesh",
+        None => s.shape.kind(),
+    };
+    let mut seen: Option<usize> = None;
+    let (mut before, mut count, mut kind) = (0, 0, None);
+    for s in problem.surfaces() {
+        if seen == Some(s.source.index) {
+            continue;
+        }
+        seen = Some(s.source.index);
+        if s.source.index == source.index {
+            kind = Some(kind_of(s));
+        }
+    }
+    let kind = kind.unwrap_or(if source.triangle.is_some() {
+        "mesh"
+    } else {
+        "surface"
+    });
+    seen = None;
+    for s in problem.surfaces() {
+        if seen == Some(s.source.index) {
+            continue;
+        }
+        seen = Some(s.source.index);
+        if kind_of(s) == kind {
+            count += 1;
+            if s.source.index < source.index {
+                before += 1;
+            }
+        }
+    }
+    let (en_word, pt_word, masculine) = match kind {
+        "plane" => ("plane", "plano", true),
+        "sphere" => ("sphere", "esfera", false),
+        "triangle" => ("triangle", "triângulo", true),
+        "mesh" => ("mesh", "malha", false),
+        _ => ("surface", "superfície", false),
+    };
+    let noun = |lang: Lang, word: &str| match count > 1 {
+        true => format!("{} {word}", ordinal(before + 1, lang, masculine)),
+        false => word.to_owned(),
+    };
+    let whole = Noun {
+        en: noun(Lang::En, en_word),
+        pt: noun(Lang::Pt, pt_word),
+        masculine,
+    };
+    match source.triangle {
+        None => whole,
+        Some(t) => Noun {
+            en: format!("triangle {t} {}", whole.of(Lang::En)),
+            pt: format!("triângulo {t} {}", whole.of(Lang::Pt)),
+            masculine: true,
+        },
+    }
 }
 
 /// A light's label; `json` keeps the English name in straight quotes, as the JSON's sentences
@@ -254,10 +445,21 @@ pub fn finding_in<R: Real>(problem: &Problem<R>, f: &Finding, lang: Lang) -> Str
 
 fn finding_with<R: Real>(problem: &Problem<R>, f: &Finding, lang: Lang, json: bool) -> String {
     let p = R::NAME;
-    let light = f
-        .light
-        .map(|i| light_label(problem, i, lang, json))
-        .unwrap_or_default();
+    // The JSON's English names the light by its place in the file, for scripts; a document
+    // names it as a person would (Portuguese is never JSON).
+    let noun = f.light.map(|i| light_noun(problem, i));
+    let light = match (&noun, json) {
+        (None, _) => String::new(),
+        (Some(_), true) => f
+            .light
+            .map(|i| light_label(problem, i, lang, json))
+            .unwrap_or_default(),
+        (Some(n), false) => n.the(lang),
+    };
+    let (of_light, for_light) = match (&noun, json) {
+        (Some(n), false) => (n.of(lang), n.for_(lang)),
+        _ => (format!("of {light}"), format!("for {light}")),
+    };
     match f.data.clone() {
         FindingData::F32DiffersFromF64(d) => f32_cost(&d, lang),
         FindingData::HitBehindOrigin { t } => pick(
@@ -270,7 +472,7 @@ fn finding_with<R: Real>(problem: &Problem<R>, f: &Finding, lang: Lang, json: bo
             ),
             format!(
                 "o raio encontra a superfície apenas atrás de sua origem, em t = {} (uma \
-                 interseção exige t > 0): como escrito, o raio não atinge nada. O ponto onde a \
+                 interseção exige t > 0): como enunciado, o raio não atinge nada. O ponto onde a \
                  reta do raio encontra a superfície é mostrado abaixo como outra leitura",
                 num(t)
             ),
@@ -281,19 +483,32 @@ fn finding_with<R: Real>(problem: &Problem<R>, f: &Finding, lang: Lang, json: bo
             "a reta do raio não encontra nenhuma superfície: nada a iluminar",
         )
         .into(),
-        FindingData::RayInPlane { surface } => pick(
-            lang,
-            format!(
-                "the ray lies in the plane surfaces[{surface}] (N·D = 0 and N·(Q − O) = 0): \
+        FindingData::RayInPlane { surface } => {
+            let plane = surface_noun(
+                problem,
+                crate::problem::SurfaceSource {
+                    index: surface,
+                    triangle: None,
+                },
+            );
+            let in_plane = match json {
+                true => format!("in the plane surfaces[{surface}]"),
+                false => plane.in_(lang),
+            };
+            pick(
+                lang,
+                format!(
+                    "the ray lies {in_plane} (N·D = 0 and N·(Q − O) = 0): \
                  every point of it is on the surface, so the problem has no single hit point \
                  and nothing is shaded"
-            ),
-            format!(
-                "o raio está contido no plano surfaces[{surface}] (N·D = 0 e N·(Q − O) = 0): \
+                ),
+                format!(
+                    "o raio está contido {in_plane} (N·D = 0 e N·(Q − O) = 0): \
                  todos os seus pontos estão na superfície, então o problema não tem um único \
                  ponto de interseção, e nada é iluminado"
-            ),
-        ),
+                ),
+            )
+        }
         FindingData::HitIllConditioned {
             n_dot_d,
             n_dot_d_error,
@@ -406,7 +621,7 @@ fn finding_with<R: Real>(problem: &Problem<R>, f: &Finding, lang: Lang, json: bo
                 num(cos_theta)
             ),
             format!(
-                "a fonte de luz {light} está do lado de trás da superfície: cos θ = −N·L = {} < \
+                "{light} está do lado de trás da superfície: cos θ = −N·L = {} < \
                  0, logo não contribui com reflexão difusa nem com reflexão especular",
                 num(cos_theta)
             ),
@@ -415,20 +630,20 @@ fn finding_with<R: Real>(problem: &Problem<R>, f: &Finding, lang: Lang, json: bo
             lang,
             format!("{light} lies in the surface's tangent plane (cos θ = 0): it adds nothing"),
             format!(
-                "a fonte de luz {light} está no plano tangente à superfície (cos θ = 0): não \
+                "{light} está no plano tangente à superfície (cos θ = 0): não \
                  contribui com nada"
             ),
         ),
         FindingData::LightOutsideCone { cos_gamma, cos_psi } => pick(
             lang,
             format!(
-                "the point is outside the cone of {light}: cos ψ = {} < cos γ = {} (ψ > γ), so \
+                "the point is outside the cone {of_light}: cos ψ = {} < cos γ = {} (ψ > γ), so \
                  I_l = 0 (Eq. 4.4)",
                 num(cos_psi),
                 num(cos_gamma)
             ),
             format!(
-                "o ponto está fora do cone da fonte de luz {light}: cos ψ = {} < cos γ = {} \
+                "o ponto está fora do cone {of_light}: cos ψ = {} < cos γ = {} \
                  (ψ > γ), logo I_l = 0 (Eq. 4.4)",
                 num(cos_psi),
                 num(cos_gamma)
@@ -439,13 +654,13 @@ fn finding_with<R: Real>(problem: &Problem<R>, f: &Finding, lang: Lang, json: bo
         }) => pick(
             lang,
             format!(
-                "the point is on the edge of the cone of {light} (ψ = γ to within the rounding \
+                "the point is on the edge of the cone {of_light} (ψ = γ to within the rounding \
                  of their computation in {p}, ±{}°): it counts as lit; exactly on the edge and \
                  a hair inside or outside cannot be told apart in this precision",
                 num(error_bound_deg)
             ),
             format!(
-                "o ponto está sobre uma geratriz do cone da fonte de luz {light} (ψ = γ a menos \
+                "o ponto está sobre uma geratriz do cone {of_light} (ψ = γ a menos \
                  do arredondamento do seu cálculo em {p}, ±{}°): conta como iluminado; nesta \
                  precisão não se distingue se está exatamente sobre a geratriz ou ligeiramente \
                  dentro ou fora do cone",
@@ -476,7 +691,7 @@ fn finding_with<R: Real>(problem: &Problem<R>, f: &Finding, lang: Lang, json: bo
             pick(
                 lang,
                 format!(
-                    "cos θ = {} for {light} is within the rounding error of its own computation \
+                    "cos θ = {} {for_light} is within the rounding error of its own computation \
                      in {p} (±{}): whether the light is in front of the surface or behind it \
                      cannot be decided in this precision, and it is counted as {en}. The diffuse \
                      term changes by at most O_d·I_l·{} either way, but the specular term is all \
@@ -486,7 +701,7 @@ fn finding_with<R: Real>(problem: &Problem<R>, f: &Finding, lang: Lang, json: bo
                     num(error_bound)
                 ),
                 format!(
-                    "cos θ = {} para a fonte de luz {light} está dentro do erro de \
+                    "cos θ = {} {for_light} está dentro do erro de \
                      arredondamento do seu próprio cálculo em {p} (±{}): nesta precisão não se \
                      pode decidir se a fonte de luz está na frente ou atrás da superfície, e ela \
                      conta como {pt}. A reflexão difusa muda no máximo O_d·I_l·{} de um modo ou \
@@ -512,7 +727,7 @@ fn finding_with<R: Real>(problem: &Problem<R>, f: &Finding, lang: Lang, json: bo
             pick(
                 lang,
                 format!(
-                    "ψ = {}° and γ = {}° of {light} differ by less than the rounding error of the \
+                    "ψ = {}° and γ = {}° {of_light} differ by less than the rounding error of the \
                      hit point and of their computation in {p} (±{}°): whether the point is \
                      inside or outside the cone cannot be decided in this precision, and it is \
                      taken as {en}",
@@ -521,7 +736,7 @@ fn finding_with<R: Real>(problem: &Problem<R>, f: &Finding, lang: Lang, json: bo
                     num(error_bound_deg)
                 ),
                 format!(
-                    "ψ = {}° e γ = {}° da fonte de luz {light} diferem menos que o erro de \
+                    "ψ = {}° e γ = {}° {of_light} diferem menos que o erro de \
                      arredondamento do ponto de interseção e do seu cálculo em {p} (±{}°): \
                      nesta precisão não se pode decidir se o ponto está dentro ou fora do cone, \
                      e ele é tomado como {pt}",
@@ -581,8 +796,8 @@ fn finding_with<R: Real>(problem: &Problem<R>, f: &Finding, lang: Lang, json: bo
             let what = match (light.is_empty(), lang) {
                 (true, Lang::En) => "the ray's direction".to_owned(),
                 (true, Lang::Pt) => "a direção do raio".to_owned(),
-                (false, Lang::En) => format!("the direction of {light}"),
-                (false, Lang::Pt) => format!("a direção da fonte de luz {light}"),
+                (false, Lang::En) => format!("the direction {of_light}"),
+                (false, Lang::Pt) => format!("a direção {of_light}"),
             };
             pick(
                 lang,
@@ -909,12 +1124,12 @@ pub fn reading_explanation_in(code: ReadingCode, lang: Lang) -> &'static str {
              front: light and viewer are then on the same side and every term of Eq. 4.16 is \
              used. Its colour is the negative of the literal Eq. 4.16 where n_s is odd. This is \
              not the problem as written",
-            "como escrito, nenhuma fonte de luz ilumina a superfície e uma está atrás dela. \
+            "como enunciado, nenhuma fonte de luz ilumina a superfície e uma está atrás dela. \
              Tomar L = (P_l − P)/‖P_l − P‖, o oposto da Eq. 4.1 (um deslize comum, e a convenção \
              de muitos livros), equivale a espelhar cada fonte de luz através de P para a \
              frente: fonte de luz e observador ficam então do mesmo lado e todos os termos da \
              Eq. 4.16 são usados. Sua cor é o negativo da Eq. 4.16 literal onde n_s é ímpar. \
-             Este não é o problema como escrito",
+             Este não é o problema como enunciado",
         ),
         ReadingCode::NormalReversed => pick(
             lang,
@@ -923,7 +1138,7 @@ pub fn reading_explanation_in(code: ReadingCode, lang: Lang) -> &'static str {
              the back side, so there is no specular term. This is not the problem as written",
             "a superfície tomada como iluminada por trás: inverter N a deixa voltada para a \
              fonte de luz, o que equivale a tomar |cos θ|; o observador fica então do lado de \
-             trás, logo não há reflexão especular. Este não é o problema como escrito",
+             trás, logo não há reflexão especular. Este não é o problema como enunciado",
         ),
         ReadingCode::LineBehindOrigin => pick(
             lang,
@@ -932,7 +1147,7 @@ pub fn reading_explanation_in(code: ReadingCode, lang: Lang) -> &'static str {
              given. This is not the problem as written",
             "a interseção em t < 0 está atrás da origem do raio; é a interseção do raio com a \
              direção invertida, logo V = −D quando não é dado observador. Este não é o \
-             problema como escrito",
+             problema como enunciado",
         ),
     }
 }
@@ -948,7 +1163,7 @@ pub fn reading_explanation_given(code: ReadingCode, lang: Lang, viewer: bool) ->
              the point). This is not the problem as written",
             "a interseção em t < 0 está atrás da origem do raio; é a interseção do raio com a \
              direção invertida, iluminada para o observador dado pelo problema (V do \
-             observador para o ponto). Este não é o problema como escrito",
+             observador para o ponto). Este não é o problema como enunciado",
         ),
         _ => reading_explanation_in(code, lang),
     }
@@ -984,26 +1199,50 @@ pub fn error_word(lang: Lang) -> &'static str {
     pick(lang, "error", "erro")
 }
 
-/// "surfaces[2]", or "surfaces[2] (mesh), triangle 17" ("(malha), triângulo 17" in
-/// Portuguese; the triangle's index in the mesh, from 0).
-pub fn surface_label(source: Option<crate::problem::SurfaceSource>, lang: Lang) -> String {
-    match source {
-        None => pick(lang, "no surface", "nenhuma superfície").into(),
-        Some(s) => match s.triangle {
-            None => format!("surfaces[{}]", s.index),
-            Some(t) => format!(
-                "surfaces[{}] ({}), {} {t}",
-                s.index,
-                Phrase::Mesh.get(lang),
-                Phrase::Triangle.get(lang)
-            ),
-        },
-    }
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn ordinals_agree_with_their_noun_in_both_languages() {
+        assert_eq!(ordinal(1, Lang::En, false), "first");
+        assert_eq!(ordinal(2, Lang::En, true), "second");
+        assert_eq!(ordinal(10, Lang::En, false), "tenth");
+        assert_eq!(ordinal(11, Lang::En, false), "11th");
+        assert_eq!(ordinal(21, Lang::En, false), "21st");
+        assert_eq!(ordinal(22, Lang::En, false), "22nd");
+        assert_eq!(ordinal(113, Lang::En, false), "113th");
+        assert_eq!(ordinal(2, Lang::Pt, false), "segunda");
+        assert_eq!(ordinal(2, Lang::Pt, true), "segundo");
+        assert_eq!(ordinal(7, Lang::Pt, false), "sétima");
+        assert_eq!(ordinal(9, Lang::Pt, true), "nono");
+        assert_eq!(ordinal(12, Lang::Pt, false), "12ª");
+        assert_eq!(ordinal(12, Lang::Pt, true), "12º");
+    }
+
+    #[test]
+    fn a_noun_takes_its_article_and_contracts_it() {
+        let light = Noun {
+            en: "yellow light".into(),
+            pt: "luz amarela".into(),
+            masculine: false,
+        };
+        let plane = Noun {
+            en: "plane".into(),
+            pt: "plano".into(),
+            masculine: true,
+        };
+        assert_eq!(light.the(Lang::En), "the yellow light");
+        assert_eq!(light.the(Lang::Pt), "a luz amarela");
+        assert_eq!(light.of(Lang::Pt), "da luz amarela");
+        assert_eq!(light.for_(Lang::Pt), "para a luz amarela");
+        assert_eq!(light.in_(Lang::Pt), "na luz amarela");
+        assert_eq!(plane.the(Lang::Pt), "o plano");
+        assert_eq!(plane.of(Lang::Pt), "do plano");
+        assert_eq!(plane.in_(Lang::Pt), "no plano");
+        assert_eq!(plane.in_(Lang::En), "in the plane");
+        assert_eq!(plane.of(Lang::En), "of the plane");
+    }
 
     /// Phrases that are rightly the same word in both languages.
     const SAME_IN_BOTH: &[Phrase] = &[

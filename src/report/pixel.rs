@@ -259,7 +259,7 @@ pub fn report<R: Real>(
             "Parâmetros: nível máximo de recursão {}, peso mínimo {}, sombras {}, {} amostra{} \
              por pixel. Um raio é traçado enquanto seu nível ≤ {0} (o \"menor que\" do capítulo \
              lido como ≤), um raio de reflexão enquanto seu peso w_s = w_p·max(O_r) > {1} (o \
-             max(C_r) do capítulo lido como a refletividade O_r).",
+             max(C_r) do capítulo lido como a reflexividade O_r).",
             s.max_level,
             n(s.min_weight),
             if s.shadows { "ligadas" } else { "desligadas" },

@@ -239,8 +239,10 @@ pub fn write_document(doc: &Document, color: bool) -> String {
             let (written, readings) = x.key();
             let _ = writeln!(b, "  {}: {}", doc.heading(i), plain(&written));
             for r in &readings {
-                for line in wrap(&plain(r), 88) {
-                    let _ = writeln!(b, "      {line}");
+                // A colour is kept on one line: its spaces are held by a mark while wrapping.
+                let held = super::explain::keep_triples(&plain(r), |g| g.replace(' ', "\u{E000}"));
+                for line in wrap(&held, 88) {
+                    let _ = writeln!(b, "      {}", line.replace('\u{E000}', " "));
                 }
             }
         }

@@ -67,7 +67,7 @@ messages! {
         /// The falloff factor.
         Falloff { light: String, distance: String } =>
             "the falloff factor 1/d^f of {light}{distance}",
-            "o fator de decaimento 1/d^f de {light}{distance}";
+            "o termo de decaimento 1/d^f de {light}{distance}";
         /// The light arriving at the point.
         Arriving { light: String, distance: String } =>
             "the light I_l arriving from {light}{distance}",
@@ -124,7 +124,7 @@ mod tests {
         );
         assert_eq!(
             f.what(Lang::Pt),
-            "o fator de decaimento 1/d^f de lights[0] (point) (d = 1e-30) passa do alcance de f32"
+            "o termo de decaimento 1/d^f de lights[0] (point) (d = 1e-30) passa do alcance de f32"
         );
         assert_eq!(
             f.fix(Lang::Pt),

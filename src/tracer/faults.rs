@@ -15,7 +15,7 @@ faults! {
              alcance de {precision}{material}";
             fix "bring the reflectivity O_r and the colours into a smaller range (a reflectivity \
                  lies in [0, 1])",
-                "use uma refletividade O_r e cores de ordem de grandeza menor (uma refletividade \
+                "use uma reflexividade O_r e cores de ordem de grandeza menor (uma reflexividade \
                  fica em [0, 1])";
         /// A transmission ray's contribution O_t·C_t is not finite.
         TransmittedOverflows { level: u32, precision: &'static str, material: String } =>

@@ -245,7 +245,8 @@ fn rows() -> (Vec<u8>, Vec<&'static str>) {
     );
     row(
         b"l,4.1,abc",
-        "the answer cannot be read: \"abc\" is not three numbers: write three numbers such as \
+        "the answer cannot be read: \"abc\" is not three numbers; no number could be read in \
+         it: write three numbers such as \
          \"0.52 0.03 0\", \"(0.52, 0.03, 0)\" or \"[0.52; 0.03; 0]\", three integers 0–255 with \
          --scale 255, \"#RRGGBB\", or \"none\" when the ray hits nothing",
     );
@@ -387,8 +388,8 @@ fn a_moodle_export_phong_cannot_read_is_said_in_portuguese() {
         // it is "ÿ", an answer that is no colour.
         (
             b"Surname,First name,Email address,Response 1\nSilva,Ana,a@x,\xff\n",
-            "the answer cannot be read: \"\u{ff}\" is not three numbers: write three numbers such \
-             as \"0.52 0.03 0\", \"(0.52, 0.03, 0)\" or \"[0.52; 0.03; 0]\", three integers \
+            "the answer cannot be read: \"\u{ff}\" is not three numbers; no number could be read \
+             in it: write three numbers such as \"0.52 0.03 0\", \"(0.52, 0.03, 0)\" or \"[0.52; 0.03; 0]\", three integers \
              0–255 with --scale 255, \"#RRGGBB\", or \"none\" when the ray hits nothing",
         ),
     ];

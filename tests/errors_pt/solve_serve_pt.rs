@@ -172,7 +172,7 @@ fn a_falloff_that_overflows_f32_is_said_in_portuguese() {
     );
     let pt = run("pt");
     assert!(
-        pt.starts_with("erro: near.json: lights[0]: o fator de decaimento 1/d^f de lights[0]")
+        pt.starts_with("erro: near.json: lights[0]: o termo de decaimento 1/d^f de lights[0]")
             && pt.contains("passa do alcance de f32. Correção: use --precision f64, ou números"),
         "{pt}"
     );
@@ -224,7 +224,7 @@ fn a_pixel_whose_reflection_overflows_is_refused_in_portuguese() {
     let pt = run("pt");
     assert!(
         pt.contains("deste pixel soma, O_r·C_r (Eq. 4.17), passa do alcance de f64 (material \"")
-            && pt.contains("Correção: use uma refletividade O_r e cores"),
+            && pt.contains("Correção: use uma reflexividade O_r e cores"),
         "{pt}"
     );
     assert_eq!(english_in(&pt, &["hot.json"]), Vec::<String>::new(), "{pt}");
