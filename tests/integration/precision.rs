@@ -21,6 +21,7 @@
 //! solved and measured once, and shared by the tests.
 
 #[path = "../precision/mod.rs"]
+#[allow(clippy::module_inception)] // tests/precision/, also read by examples/precision.rs
 mod precision;
 
 use std::sync::OnceLock;
