@@ -362,7 +362,7 @@ fn junit_validates_against_the_xsd() {
                 "xmllint cannot be run ({e}): apt-get install -y --no-install-recommends \
                  libxml2-utils"
             );
-            // Ignored unless asked for (`--include-ignored`): then xmllint must run.
+            // Ignored unless asked for (`--ignored`): then xmllint must run.
             panic!("{why}");
         }
         Ok(o) => assert!(

@@ -7,7 +7,7 @@
 //!
 //! A test that needs a program from outside Rust (pdflatex, chromium, chromedriver, povray,
 //! xmllint) is `#[ignore = "needs …"]`: `cargo test` lists it as ignored, and
-//! `cargo test -- --include-ignored` (`.ci/run`) runs it.
+//! `cargo test --test integration -- --ignored` (`.ci/run`) runs those tests.
 
 #[path = "../support/mod.rs"]
 #[allow(dead_code)]

@@ -25,14 +25,14 @@ fn scenes() -> PathBuf {
 
 /// Whether POV-Ray can run here: always true, since a missing POV-Ray is a failure. The tests
 /// that compare with it are `#[ignore = "needs povray: …"]`, so they run only when asked for
-/// (`cargo test -- --include-ignored`, as `.ci/run` does), and then must run.
+/// (`cargo test --test integration -- --ignored`, as `.ci/run` does), and then must run.
 fn povray_available() -> bool {
     let found = Command::new("povray").arg("--version").output().is_ok();
     assert!(
         found,
         "`povray` is not installed, and this test needs it: .ci/run installs it \
          (apt-get install -y --no-install-recommends povray); `cargo test` without \
-         --include-ignored lists this test as ignored"
+         --ignored lists this test as ignored"
     );
     found
 }

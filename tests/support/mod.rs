@@ -33,15 +33,15 @@ pub fn find(program: &str) -> Option<PathBuf> {
 }
 
 /// The program a test needs. Such a test is `#[ignore = "needs PROGRAM: …"]`, so it runs only
-/// when asked for (`cargo test -- --include-ignored`, as `.ci/run` does): a missing program is
-/// then a failure naming the fix, never a pass. (Always `Some`: the `Option` keeps the call
-/// sites written when a missing program was a skip.)
+/// when asked for (`cargo test --test integration -- --ignored`, as `.ci/run` does): a missing
+/// program is then a failure naming the fix, never a pass. (Always `Some`: the `Option` keeps
+/// the call sites written when a missing program was a skip.)
 pub fn require(program: &str, install: &str) -> Option<PathBuf> {
     let found = find(program);
     assert!(
         found.is_some(),
         "{program} is not installed, and this test needs it. Fix: {install} (.ci/run does), or \
-         run `cargo test` without --include-ignored, which lists this test as ignored"
+         run `cargo test` without --ignored, which lists this test as ignored"
     );
     found
 }
