@@ -1,4 +1,4 @@
-//! The integration tests, one test binary with a module per file (issue 31: 36 binaries, each
+//! The integration tests, one test binary with a module per file (issue 31: 40 binaries, each
 //! linked against the whole crate, took most of CI's time). A file that needs a process of its
 //! own stays a binary of its own: `tests/no_allocation.rs` and `tests/read_allocations.rs`
 //! (each installs a counting `#[global_allocator]`), `tests/serve_load.rs` and
