@@ -4,12 +4,8 @@
 
 use std::path::Path;
 
-use assert_cmd::Command;
+use crate::support::phong;
 use serde_json::Value;
-
-fn phong() -> Command {
-    Command::cargo_bin("phong").unwrap()
-}
 
 /// Exercises 4.1 and 4.2, a file that is not a problem, a folder named like an exercise, and
 /// (on Unix) a link out of the folder and a link to nothing.

@@ -4,6 +4,10 @@
 
 // One test binary for every message said in Portuguese (one crate links once): the modules
 // below are each area's, beside this file's own tests of a problem file's errors.
+#[path = "../support/mod.rs"]
+#[allow(dead_code)]
+mod support;
+
 mod check_pt;
 mod grade_reasons;
 mod parse_pt;

@@ -7,12 +7,7 @@ use std::path::Path;
 use assert_cmd::Command;
 
 #[cfg(feature = "serve")]
-#[path = "../support/http.rs"]
-mod http;
-#[cfg(feature = "serve")]
-#[path = "../support/server.rs"]
-#[allow(dead_code)]
-mod server;
+use crate::support::{http, server};
 
 fn root() -> &'static Path {
     Path::new(env!("CARGO_MANIFEST_DIR"))

@@ -1,6 +1,28 @@
-//! Helpers shared by the tests that need an outside program (pdflatex, chromium).
+//! Helpers shared by the tests: `phong()`, the command every test runs phong by; the outside
+//! programs (pdflatex, chromium, povray, xmllint) a test needs; and, as modules, the HTTP client,
+//! the `phong serve` process and the screenshot reader. `tests/integration/` and
+//! `tests/errors_pt/` declare it once (`#[path = "../support/mod.rs"] mod support;`);
+//! `tests/serve_load.rs` and `tests/serve_one_client.rs` include the files they need.
+
+pub mod http;
+pub mod screenshot;
+pub mod server;
 
 use std::path::PathBuf;
+
+use assert_cmd::Command;
+
+/// `phong`, the binary this package builds, run from the package's root and with the locale
+/// variables (`LC_ALL`, `LC_MESSAGES`, `LANG`) cleared, so that its language is English unless
+/// a test gives `--lang` or sets one of them, whatever the caller's locale.
+pub fn phong() -> Command {
+    let mut c = Command::cargo_bin("phong").expect("the phong binary is built");
+    c.current_dir(env!("CARGO_MANIFEST_DIR"))
+        .env_remove("LC_ALL")
+        .env_remove("LC_MESSAGES")
+        .env_remove("LANG");
+    c
+}
 
 /// The path of `program` on PATH, if it is installed.
 pub fn find(program: &str) -> Option<PathBuf> {
@@ -10,9 +32,24 @@ pub fn find(program: &str) -> Option<PathBuf> {
         .find(|p| p.is_file())
 }
 
-/// The program, or: under CI (`CI=true`) a failure, since CI must run the check; elsewhere
-/// `None` after printing why the test is skipped.
+/// The program a test needs. Such a test is `#[ignore = "needs PROGRAM: …"]`, so it runs only
+/// when asked for (`cargo test --test integration -- --ignored`, as `.ci/run` does): a missing
+/// program is then a failure naming the fix, never a pass. (Always `Some`: the `Option` keeps
+/// the call sites written when a missing program was a skip.)
 pub fn require(program: &str, install: &str) -> Option<PathBuf> {
+    let found = find(program);
+    assert!(
+        found.is_some(),
+        "{program} is not installed, and this test needs it. Fix: {install} (.ci/run does), or \
+         run `cargo test` without --ignored, which lists this test as ignored"
+    );
+    found
+}
+
+/// A program that checks a second time what the test has already checked without it (xmllint
+/// after roxmltree): under CI (`CI=true`) a missing one is a failure, since CI must run the
+/// check; elsewhere `None` after printing why that check did not run.
+pub fn optional(program: &str, install: &str) -> Option<PathBuf> {
     if let Some(p) = find(program) {
         return Some(p);
     }

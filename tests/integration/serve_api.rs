@@ -5,11 +5,8 @@
 
 #![cfg(feature = "serve")]
 
-#[path = "support/http.rs"]
-mod http;
-#[path = "support/server.rs"]
-#[allow(dead_code)]
-mod server;
+use crate::support::http;
+use crate::support::server;
 
 use std::path::Path;
 

@@ -3,11 +3,8 @@
 
 #![cfg(feature = "serve")]
 
-#[path = "support/http.rs"]
-mod http;
-#[path = "support/server.rs"]
-#[allow(dead_code)]
-mod server;
+use crate::support::http;
+use crate::support::server;
 
 use std::io::{Read, Write};
 use std::net::TcpStream;

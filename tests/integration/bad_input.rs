@@ -114,8 +114,7 @@ struct Run {
 }
 
 fn phong(args: &[&str]) -> Run {
-    let out = Command::cargo_bin("phong")
-        .expect("the phong binary is built")
+    let out = crate::support::phong()
         .args(args)
         .output()
         .expect("phong runs");

@@ -3,13 +3,7 @@
 
 use std::io::Write;
 
-use assert_cmd::Command;
-
-fn phong() -> Command {
-    let mut c = Command::cargo_bin("phong").unwrap();
-    c.current_dir(env!("CARGO_MANIFEST_DIR"));
-    c
-}
+use crate::support::phong;
 
 /// `phong ARGS…`: exit code, standard output, standard error.
 fn run(args: &[&str]) -> (i32, String, String) {

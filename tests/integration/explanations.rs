@@ -23,7 +23,7 @@ const CHAPTER: [&str; 3] = ["4.1", "4.2", "4.3"];
 
 fn settings() -> insta::Settings {
     let mut s = insta::Settings::clone_current();
-    s.set_snapshot_path("../snapshots");
+    s.set_snapshot_path("../../snapshots");
     s.set_prepend_module_to_snapshot(false);
     s
 }

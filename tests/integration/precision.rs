@@ -20,7 +20,8 @@
 //! Runs in about 5 s in the debug profile (9 s on a loaded 2-core machine): the whole suite is
 //! solved and measured once, and shared by the tests.
 
-#[path = "precision/mod.rs"]
+#[path = "../precision/mod.rs"]
+#[allow(clippy::module_inception)] // tests/precision/, also read by examples/precision.rs
 mod precision;
 
 use std::sync::OnceLock;

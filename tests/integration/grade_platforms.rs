@@ -15,12 +15,8 @@
 
 use std::path::{Path, PathBuf};
 
-use assert_cmd::Command;
+use crate::support::phong;
 use serde_json::Value;
-
-fn phong() -> Command {
-    Command::cargo_bin("phong").unwrap()
-}
 
 /// A folder with the chapter's three exercises only (the class's exercises), made once.
 fn exercises() -> PathBuf {
@@ -339,6 +335,7 @@ fn gradescope_results_validate() {
 }
 
 #[test]
+#[ignore = "needs xmllint: apt-get install libxml2-utils (.ci/run does)"]
 fn junit_validates_against_the_xsd() {
     let input = write_temp(&format!("{}aluno31;4.2;half & <half>\n", class_csv()));
     let out = grade(input.path(), &["--format", "junit"]);
@@ -365,10 +362,8 @@ fn junit_validates_against_the_xsd() {
                 "xmllint cannot be run ({e}): apt-get install -y --no-install-recommends \
                  libxml2-utils"
             );
-            if std::env::var("CI").is_ok_and(|v| v == "true") {
-                panic!("{why}");
-            }
-            eprintln!("SKIPPED junit_validates_against_the_xsd: {why}");
+            // Ignored unless asked for (`--ignored`): then xmllint must run.
+            panic!("{why}");
         }
         Ok(o) => assert!(
             o.status.success(),

@@ -7,15 +7,10 @@
 
 use std::io::Write;
 
+use crate::support::phong;
 use assert_cmd::Command;
 use predicates::prelude::*;
 use serde_json::Value;
-
-fn phong() -> Command {
-    let mut c = Command::cargo_bin("phong").unwrap();
-    c.current_dir(env!("CARGO_MANIFEST_DIR"));
-    c
-}
 
 fn check(file: &str, args: &[&str]) -> (i32, String, String) {
     let out = phong()
@@ -702,7 +697,7 @@ fn rounded(v: Value) -> Value {
 
 fn settings() -> insta::Settings {
     let mut s = insta::Settings::clone_current();
-    s.set_snapshot_path("../snapshots");
+    s.set_snapshot_path("../../snapshots");
     s.set_prepend_module_to_snapshot(false);
     s
 }

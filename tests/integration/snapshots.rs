@@ -13,7 +13,7 @@ use serde_json::Value;
 
 fn settings() -> insta::Settings {
     let mut s = insta::Settings::clone_current();
-    s.set_snapshot_path("../snapshots");
+    s.set_snapshot_path("../../snapshots");
     s.set_prepend_module_to_snapshot(false);
     s
 }
@@ -45,7 +45,7 @@ fn rounded(v: Value) -> Value {
 #[test]
 fn text_report_of_every_exercise() {
     settings().bind(|| {
-        insta::glob!("../exercises", "*.json", |path| {
+        insta::glob!("../../exercises", "*.json", |path| {
             let text = solve_text(relative(path), Precision::F64).expect("every exercise solves");
             insta::assert_snapshot!("text", text);
         });
@@ -55,7 +55,7 @@ fn text_report_of_every_exercise() {
 #[test]
 fn json_report_of_every_exercise() {
     settings().bind(|| {
-        insta::glob!("../exercises", "*.json", |path| {
+        insta::glob!("../../exercises", "*.json", |path| {
             let json = solve_json(relative(path), Precision::F64).expect("every exercise solves");
             insta::assert_json_snapshot!("json", rounded(json));
         });

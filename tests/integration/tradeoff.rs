@@ -6,15 +6,11 @@
 use std::fs;
 use std::path::{Path, PathBuf};
 
-use assert_cmd::Command;
+use crate::support::phong;
 use serde_json::{json, Value};
 use tempfile::TempDir;
 
 const BAD_INPUT: i32 = 2;
-
-fn phong() -> Command {
-    Command::cargo_bin("phong").expect("the phong binary")
-}
 
 fn write(dir: &TempDir, name: &str, v: &Value) -> PathBuf {
     let p = dir.path().join(name);

@@ -18,8 +18,7 @@
 
 // Shared with the other tests of phong serve; not every test uses every helper.
 #[allow(dead_code)]
-#[path = "support/server.rs"]
-mod server;
+use crate::support::server;
 
 use std::io::{Read, Write};
 use std::net::TcpStream;

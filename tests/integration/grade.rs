@@ -3,13 +3,9 @@
 
 use std::path::Path;
 
-use assert_cmd::Command;
+use crate::support::phong;
 use predicates::prelude::*;
 use serde_json::Value;
-
-fn phong() -> Command {
-    Command::cargo_bin("phong").unwrap()
-}
 
 /// A folder with the chapter's three exercises and one broken exercise file.
 fn exercises() -> tempfile::TempDir {

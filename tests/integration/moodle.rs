@@ -4,11 +4,11 @@
 //! the validator rejects Moodle's own broken cases, and every answer option, checked with
 //! `phong check`, gets the verdict and the slip its feedback names.
 
-mod support;
+use crate::support;
 
 use std::path::{Path, PathBuf};
 
-use assert_cmd::Command;
+use crate::support::phong;
 use serde_json::Value;
 
 /// The fractions Moodle's importer accepts (and their negatives).
@@ -312,12 +312,6 @@ fn root() -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR"))
 }
 
-fn phong() -> Command {
-    let mut c = Command::cargo_bin("phong").unwrap();
-    c.current_dir(root());
-    c
-}
-
 fn moodle(files: &[PathBuf], lang: &str, stdin: Option<&[u8]>) -> String {
     let mut c = phong();
     c.arg("moodle").args(files).args(["--lang", lang]);
@@ -350,7 +344,7 @@ fn exercises() -> Vec<PathBuf> {
 }
 
 fn xmllint(xml: &str, name: &str) {
-    let Some(lint) = support::require("xmllint", "apt-get install libxml2-utils") else {
+    let Some(lint) = support::optional("xmllint", "apt-get install libxml2-utils") else {
         return;
     };
     let dir = tempfile::tempdir().unwrap();
@@ -893,12 +887,9 @@ fn a_category_name_with_slashes_is_one_category() {
 }
 
 #[cfg(feature = "serve")]
-#[path = "support/http.rs"]
-mod http;
+use crate::support::http;
 #[cfg(feature = "serve")]
-#[path = "support/server.rs"]
-#[allow(dead_code)]
-mod server;
+use crate::support::server;
 
 /// Issue 28's table: one answer, one verdict and one credit on every surface (needs `phong
 /// serve`, so the `serve` feature).

@@ -14,13 +14,11 @@
 // `phong serve` exists only with the `serve` feature (on by default).
 #![cfg(feature = "serve")]
 
-#[path = "support/screenshot.rs"]
-mod screenshot;
-mod support;
+use crate::support;
+use crate::support::screenshot;
 // Shared with the other tests of phong serve; not every test uses every helper.
 #[allow(dead_code)]
-#[path = "support/server.rs"]
-mod server;
+use crate::support::server;
 
 use std::io::{BufRead, BufReader, Read, Write};
 use std::net::{SocketAddr, TcpListener, TcpStream};
@@ -322,6 +320,7 @@ fn check(args: &[&str]) -> String {
 }
 
 #[test]
+#[ignore = "needs chromium and chromedriver: apt-get install chromium chromium-driver fonts-dejavu-core (.ci/run does)"]
 fn a_browser_fills_the_4_2_form_and_reads_the_slip_and_a_step() {
     let Some(browser) = support::require("chromium", INSTALL) else {
         return;

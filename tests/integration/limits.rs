@@ -6,14 +6,11 @@
 use std::path::{Path, PathBuf};
 use std::process::{Command as Std, Stdio};
 
+use crate::support::phong;
 use assert_cmd::Command;
 use predicates::prelude::*;
 use serde_json::json;
 use tempfile::TempDir;
-
-fn phong() -> Command {
-    Command::cargo_bin("phong").unwrap()
-}
 
 fn root() -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR"))
