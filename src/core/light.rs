@@ -199,7 +199,7 @@ pub struct Arrival<R: Real> {
 ///
 /// In all about γ₂₂ + 4u·ψ + 3u·γ ≈ 11ε + 3.5ε·γ near the edge, plus second-order terms and
 /// the underflow of a cross product below √(MIN_POSITIVE), far below ε; 20ε·(1 + γ) covers it
-/// with room to spare (tests/stability.rs checks it against exactly constructed edges).
+/// with room to spare (tests/integration/stability.rs checks it against exactly constructed edges).
 /// The size of the coordinates does not enter: the difference of two binary numbers is rounded
 /// relative to itself. (A *computed* P, a ray's hit, carries its own error; the solver adds it
 /// when it reports how reliable the test is, `solve::findings`.)

@@ -3,7 +3,7 @@
 //!
 //! Each part of the chapter's model maps onto POV-Ray 3.7 as follows (every mapping was checked
 //! against POV-Ray's source, `source/core/render/trace.cpp`, and by rendering; see
-//! `tests/pov_crosscheck.rs`):
+//! `tests/integration/pov_crosscheck.rs`):
 //!
 //! - **Camera**: `location` E, `direction` the unit forward vector, `right` and `up` the
 //!   camera's unit vectors scaled to the image plane's full width and height at distance 1.

@@ -3,7 +3,7 @@
 //! arriving from the light, R and V arriving from the viewer, the angles θ (N, −L) and φ (R,
 //! −V), a spot's cone, and a ray problem's ray with its origin and the point's t (also a t < 0
 //! on the ray's line), with the light, the viewer and the origin marked. Each label is placed
-//! where its box overlaps no other label and no line (tests/browser.rs measures them in the
+//! where its box overlaps no other label and no line (tests/integration/browser.rs measures them in the
 //! browser). Every element the page's test looks for has an id.
 //!
 //! The drawing plane is the plane of N and L (the chapter's Figures 4.3 and 4.4): N points up,

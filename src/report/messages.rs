@@ -40,7 +40,7 @@ pub(crate) const SECONDARY_NOT_TRACED_PT: &str = "O solucionador mostra estes ra
      traça (as suas cores C_r e C_t não são calculadas aqui): quem os traça é o phong render.";
 
 /// Every fixed phrase of the explanations in `lang`, in the order declared: the catalogue a
-/// translator reads, and the one `tests/portuguese.rs` checks outputs against.
+/// translator reads, and the one `tests/integration/portuguese.rs` checks outputs against.
 pub fn catalogue(lang: Lang) -> Vec<&'static str> {
     Phrase::ALL.iter().map(|p| p.get(lang)).collect()
 }

@@ -55,7 +55,7 @@ impl Catalogue {
                 let source = Source::Text { name: &name, text };
                 let file = source
                     .parse()
-                    .expect("a bundled exercise parses (tests/serve_api.rs)");
+                    .expect("a bundled exercise parses (tests/integration/serve_api.rs)");
                 let prepared = crate::check::Prepared::of(source);
                 Exercise {
                     id: (*id).to_owned(),
