@@ -628,12 +628,18 @@ pub struct Read(pub Vec<Num>);
 
 impl Show for Read {
     fn show(&self, lang: Lang, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        // The first few numbers only: the message stays short whatever was typed (an answer of
+        // hundreds of numbers is echoed shortened too).
+        const SHOWN: usize = 6;
         let list = |f: &mut std::fmt::Formatter<'_>| -> std::fmt::Result {
-            for (i, x) in self.0.iter().enumerate() {
+            for (i, x) in self.0.iter().take(SHOWN).enumerate() {
                 if i > 0 {
                     f.write_str(", ")?;
                 }
                 x.show(lang, f)?;
+            }
+            if self.0.len() > SHOWN {
+                f.write_str(", …")?;
             }
             Ok(())
         };
@@ -816,6 +822,19 @@ mod tests {
         );
         // A step's vector may be named too.
         assert_eq!(three("L = (0.6, 0, 0.8)"), Some([0.6, 0.0, 0.8]));
+    }
+
+    #[test]
+    fn what_was_read_is_said_in_a_few_numbers_whatever_was_typed() {
+        // The CI fuzz found an answer of hundreds of numbers whose message listed them all (608
+        // characters); only the first six are said, and how many there were.
+        let many = vec!["255"; 300].join(" ");
+        let e = parse(&many, Scale::Unit).unwrap_err().to_string();
+        assert!(
+            e.contains("; 300 numbers were read: 255, 255, 255, 255, 255, 255, …:"),
+            "{e}"
+        );
+        assert!(e.chars().count() < 600, "{}", e.chars().count());
     }
 
     #[test]
