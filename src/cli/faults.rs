@@ -109,15 +109,11 @@ crate::faults! {
                 "corrija o arquivo como mostra docs/course-policy.md (`phong policy` imprime a \
                  política em vigor, cada campo com seu valor)";
         /// A reading credit a Moodle quiz cannot give.
-        MoodleCredit { credit: crate::text::Num } =>
+        MoodleCredit { credit: crate::text::Num, allowed: String } =>
             "reading_credit: the course gives a likely intended reading {credit} of the points, \
-             and Moodle grades an answer only by one of its fractions (1, 0.9, 0.8333333, 0.8, \
-             0.75, 0.7, 0.6666667, 0.6, 0.5, 0.4, 0.3333333, 0.3, 0.25, 0.2, 0.1666667, \
-             0.1428571, 0.125, 0.1111111, 0.1, 0.05, 0)",
+             and Moodle grades an answer only by one of its fractions ({allowed})",
             "reading_credit: o curso dá a uma leitura provavelmente pretendida {credit} dos \
-             pontos, e o Moodle avalia uma resposta só por uma de suas frações (1, 0.9, \
-             0.8333333, 0.8, 0.75, 0.7, 0.6666667, 0.6, 0.5, 0.4, 0.3333333, 0.3, 0.25, 0.2, \
-             0.1666667, 0.1428571, 0.125, 0.1111111, 0.1, 0.05, 0)";
+             pontos, e o Moodle avalia uma resposta só por uma de suas frações ({allowed})";
             fix "give the course policy a reading_credit Moodle has, such as 0.5",
                 "dê à política do curso um reading_credit que o Moodle tenha, como 0.5";
         /// `--points` refused.

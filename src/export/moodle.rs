@@ -79,6 +79,18 @@ const MOODLE_GRADES: [f64; 21] = [
     20.0, 16.66667, 14.28571, 12.5, 11.11111, 10.0, 5.0, 0.0,
 ];
 
+/// Moodle's fractions as shares of the points, for a message: `1, 0.9, 0.8333333, …, 0`.
+pub(crate) fn fractions() -> String {
+    MOODLE_GRADES
+        .iter()
+        .map(|g| {
+            let s = format!("{:.7}", g / 100.0);
+            s.trim_end_matches('0').trim_end_matches('.').to_owned()
+        })
+        .collect::<Vec<_>>()
+        .join(", ")
+}
+
 impl Grading {
     /// The quiz's grading under `policy`; `Err` with the share when its reading credit is not
     /// one of Moodle's fractions (1/3 is: 33.33333 %).

@@ -34,6 +34,7 @@ pub(crate) fn run(args: &MoodleArgs) -> Result<Exit, CliError> {
                 .map_or_else(|| "--policy".to_owned(), |p| p.display().to_string()),
             CliFault::MoodleCredit {
                 credit: crate::text::Num(share),
+                allowed: crate::export::moodle::fractions(),
             },
         )
     })?;
