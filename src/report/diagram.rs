@@ -197,39 +197,39 @@ impl Label {
         )
     }
 
-    /// How far its box is from what it names (0 where it touches it).
-    pub fn distance(&self) -> f64 {
-        match self.near {
-            Near::Arc(radius, from, to) => self.distance_to_arc(&arc_segments(radius, from, to)),
-            _ => self.distance_to_arc(&[]),
-        }
+    /// How far its box is from what it names (0 where it touches it): for the tests, which
+    /// check the layout from its labels alone (the layout keeps each place's distance).
+    #[cfg(test)]
+    fn distance(&self) -> f64 {
+        let arc = match self.near {
+            Near::Arc(radius, from, to) => arc_segments(radius, from, to),
+            _ => Vec::new(),
+        };
+        distance_from(&self.rect(), self.near, &arc)
     }
 
-    /// [`Label::distance`], an arc's segments given (computed once for many places).
-    fn distance_to_arc(&self, arc: &[Segment]) -> f64 {
-        let r = self.rect();
-        match self.near {
-            Near::Point(c, (rx, ry)) => {
-                let dx = (c.0 - rx - r.x1).max(r.x0 - c.0 - rx).max(0.0);
-                let dy = (c.1 - ry - r.y1).max(r.y0 - c.1 - ry).max(0.0);
-                dx.hypot(dy)
-            }
-            Near::Segment(a, b) => r.distance_to_segment(a, b),
-            Near::Arc(..) => arc
-                .iter()
-                .map(|&(a, b)| r.distance_to_segment(a, b))
-                .fold(f64::INFINITY, f64::min),
-        }
-    }
-
+    /// Its box (for the tests, as [`Label::distance`]).
+    #[cfg(test)]
     fn rect(&self) -> Rect {
-        let (hw, hh) = Self::half_size(self.class, &self.text);
-        Rect {
-            x0: self.at.0 - hw,
-            y0: self.at.1 - hh,
-            x1: self.at.0 + hw,
-            y1: self.at.1 + hh,
+        Rect::around(self.at, Self::half_size(self.class, &self.text))
+    }
+}
+
+/// How far the box `r` is from what a label names (0 where it touches it); an arc's segments
+/// given.
+fn distance_from(r: &Rect, near: Near, arc: &[Segment]) -> f64 {
+    match near {
+        Near::Point(c, (rx, ry)) => {
+            let dx = (c.0 - rx - r.x1).max(r.x0 - c.0 - rx).max(0.0);
+            let dy = (c.1 - ry - r.y1).max(r.y0 - c.1 - ry).max(0.0);
+            dx.hypot(dy)
         }
+        Near::Segment(a, b) => r.distance_to_segment(a, b),
+        Near::Arc(..) => arc
+            .iter()
+            .map(|&(a, b)| r.distance2_to_segment(a, b))
+            .fold(f64::INFINITY, f64::min)
+            .sqrt(),
     }
 }
 
@@ -274,6 +274,16 @@ struct Rect {
 }
 
 impl Rect {
+    /// The box of half sizes `(hw, hh)` centred on `at`.
+    fn around(at: (f64, f64), (hw, hh): (f64, f64)) -> Rect {
+        Rect {
+            x0: at.0 - hw,
+            y0: at.1 - hh,
+            x1: at.0 + hw,
+            y1: at.1 + hh,
+        }
+    }
+
     /// The box grown by `m` on every side.
     fn grown(&self, m: f64) -> Rect {
         Rect {
@@ -284,32 +294,39 @@ impl Rect {
         }
     }
 
-    /// The distance from the box to the point `p` (0 inside).
-    fn distance_to(&self, p: (f64, f64)) -> f64 {
+    /// The square of the distance from the box to the point `p` (0 inside).
+    fn distance2_to(&self, p: (f64, f64)) -> f64 {
         let dx = (self.x0 - p.0).max(p.0 - self.x1).max(0.0);
         let dy = (self.y0 - p.1).max(p.1 - self.y1).max(0.0);
-        dx.hypot(dy)
+        dx * dx + dy * dy
     }
 
-    /// The distance from the box to the segment from `a` to `b` (0 where it crosses it): the
-    /// least of the ends' distances to the box and the corners' distances to the segment.
+    /// The distance from the box to the segment from `a` to `b` (0 where it crosses it).
     fn distance_to_segment(&self, a: (f64, f64), b: (f64, f64)) -> f64 {
+        self.distance2_to_segment(a, b).sqrt()
+    }
+
+    /// The square of [`Rect::distance_to_segment`]: the least of the ends' squared distances to
+    /// the box and the corners' squared distances to the segment (one square root for many
+    /// segments: a label is tried at about a thousand places, an arc is 12 segments).
+    fn distance2_to_segment(&self, a: (f64, f64), b: (f64, f64)) -> f64 {
         if self.meets(a, b) {
             return 0.0;
         }
+        let (dx, dy) = (b.0 - a.0, b.1 - a.1);
+        let len2 = dx * dx + dy * dy;
         let to_segment = |p: (f64, f64)| {
-            let (dx, dy) = (b.0 - a.0, b.1 - a.1);
-            let len2 = dx * dx + dy * dy;
             let t = if len2 > 0.0 {
                 (((p.0 - a.0) * dx + (p.1 - a.1) * dy) / len2).clamp(0.0, 1.0)
             } else {
                 0.0
             };
-            (p.0 - a.0 - t * dx).hypot(p.1 - a.1 - t * dy)
+            let (ex, ey) = (p.0 - a.0 - t * dx, p.1 - a.1 - t * dy);
+            ex * ex + ey * ey
         };
         [
-            self.distance_to(a),
-            self.distance_to(b),
+            self.distance2_to(a),
+            self.distance2_to(b),
             to_segment((self.x0, self.y0)),
             to_segment((self.x1, self.y0)),
             to_segment((self.x0, self.y1)),
@@ -373,10 +390,37 @@ const LINE_GAP: f64 = 1.5;
 struct Placer {
     segments: Vec<((f64, f64), (f64, f64))>,
     dots: Vec<Rect>,
-    labels: Vec<Label>,
+    /// The labels placed so far in this try.
+    placed: Vec<Placed>,
     /// The labels to lay out, in the order asked: id, class, text, what it names, the
     /// directions preferred.
     specs: Vec<(String, &'static str, String, Near, Vec<f64>)>,
+}
+
+/// One place a label may take: the centre of its text's box, the box, and how far the box is
+/// from what the label names. Computed once per layout; the tries only read them.
+#[derive(Clone, Copy, Debug)]
+struct Place {
+    at: (f64, f64),
+    rect: Rect,
+    distance: f64,
+}
+
+/// A form of a label's text (one line, or a mark's name on two or three) and the places it may
+/// take, nearest first.
+struct Form {
+    text: String,
+    places: Vec<Place>,
+}
+
+/// A label placed in a try: which it is (its spec), in which form, where, and its box grown by
+/// the room kept from other labels.
+#[derive(Clone, Copy, Debug)]
+struct Placed {
+    spec: usize,
+    form: usize,
+    place: Place,
+    spaced: Rect,
 }
 
 /// How far a label may sit from what it names and still be beside it: about a line of its
@@ -394,15 +438,12 @@ impl Near {
 }
 
 impl Placer {
-    fn free(&self, l: &Label) -> bool {
-        let r = l.rect();
+    /// Whether a label with this box overlaps nothing placed or drawn, inside the drawing.
+    fn free(&self, r: &Rect) -> bool {
         let near = r.grown(LINE_GAP);
         let spaced = r.grown(LABEL_GAP);
         r.inside_canvas()
-            && !self
-                .labels
-                .iter()
-                .any(|o| o.rect().grown(LABEL_GAP).overlaps(&spaced))
+            && !self.placed.iter().any(|o| o.spaced.overlaps(&spaced))
             && !self.segments.iter().any(|&(a, b)| near.meets(a, b))
             && !self.dots.iter().any(|d| d.overlaps(&near))
     }
@@ -510,47 +551,61 @@ impl Placer {
     fn layout(mut self) -> Vec<Label> {
         let specs = std::mem::take(&mut self.specs);
         let n = specs.len();
-        let places: Vec<Vec<Vec<Label>>> = specs
+        let forms: Vec<Vec<Form>> = specs
             .iter()
-            .map(|(id, class, text, near, prefer)| Self::places(id, class, text, *near, prefer))
+            .map(|(_, class, text, near, prefer)| Self::forms(class, text, *near, prefer))
             .collect();
         // One layout: the labels placed in `order`; those not beside what they name, and the
         // labels in the order asked (the same output whatever the tries).
         let mut run = |order: &[usize]| {
-            self.labels.clear();
+            self.placed.clear();
             let mut bad = Vec::new();
             for &k in order {
-                if !self.put(&places[k]) {
+                if !self.put(k, &specs[k].3, &forms[k]) {
                     bad.push(k);
                 }
             }
-            let mut labels = std::mem::take(&mut self.labels);
-            labels.sort_by_key(|l| specs.iter().position(|s| s.0 == l.id));
-            (bad, labels)
+            let mut placed = std::mem::take(&mut self.placed);
+            placed.sort_by_key(|p| p.spec);
+            (bad, placed)
         };
-        let score = |bad: &Vec<usize>, labels: &Vec<Label>| {
-            (bad.len(), labels.iter().map(Label::distance).sum::<f64>())
+        let score = |bad: &Vec<usize>, placed: &Vec<Placed>| {
+            (
+                bad.len(),
+                placed.iter().map(|p| p.place.distance).sum::<f64>(),
+            )
         };
+        let label = |p: &Placed| {
+            let (id, class, _, near, _) = &specs[p.spec];
+            Label {
+                id: id.clone(),
+                class,
+                at: p.place.at,
+                text: forms[p.spec][p.form].text.clone(),
+                near: *near,
+            }
+        };
+        let labels = |placed: Vec<Placed>| placed.iter().map(label).collect::<Vec<Label>>();
         let mut order: Vec<usize> = (0..n).collect();
-        let (mut bad, mut labels) = run(&order);
-        let mut best = (score(&bad, &labels), labels.clone(), bad.clone());
+        let (mut bad, mut placed) = run(&order);
+        let mut best = (score(&bad, &placed), placed.clone(), bad.clone());
         let mut tries: Vec<Vec<usize>> = Vec::new();
         // The labels that found no place first (a few rounds), ...
         for _ in 0..5 {
             if bad.is_empty() {
-                return labels;
+                return labels(placed);
             }
             let rest: Vec<usize> = order.iter().copied().filter(|k| !bad.contains(k)).collect();
             order = bad.clone();
             order.extend(rest);
-            (bad, labels) = run(&order);
-            let s = score(&bad, &labels);
+            (bad, placed) = run(&order);
+            let s = score(&bad, &placed);
             if s < best.0 {
-                best = (s, labels.clone(), bad.clone());
+                best = (s, placed.clone(), bad.clone());
             }
         }
         if best.2.is_empty() {
-            return best.1;
+            return labels(best.1);
         }
         // ... then each label, or each pair, placed last (it takes what the others leave),
         // then orders shuffled by a fixed generator.
@@ -580,30 +635,22 @@ impl Placer {
             tries.push(shuffled.clone());
         }
         for o in tries {
-            let (bad, labels) = run(&o);
-            let s = score(&bad, &labels);
+            let (bad, placed) = run(&o);
+            let s = score(&bad, &placed);
             if s < best.0 {
-                best = (s, labels, bad);
+                best = (s, placed, bad);
                 if best.2.is_empty() {
                     break;
                 }
             }
         }
-        best.1
+        labels(best.1)
     }
 
-    /// Places `text` beside `near`: at the nearest free place (the directions in `prefer`
-    /// first at each distance); whether it found one within [`BESIDE`].
     /// The places a label may take, per form of its text (one line, then two or three for a
     /// mark's name), each nearest to what it names first (to 2 px; the preferred directions
     /// first among those as near). They do not depend on the other labels: computed once.
-    fn places(
-        id: &str,
-        class: &'static str,
-        text: &str,
-        near: Near,
-        prefer: &[f64],
-    ) -> Vec<Vec<Label>> {
+    fn forms(class: &'static str, text: &str, near: Near, prefer: &[f64]) -> Vec<Form> {
         let mut forms = vec![text.to_owned()];
         if class == "mark" && !text.contains('\n') {
             for n in [2, 3] {
@@ -618,59 +665,68 @@ impl Placer {
         };
         forms
             .into_iter()
-            .map(|form| {
-                let (hw, hh) = Label::half_size(class, &form);
-                let mut places: Vec<(i64, usize, Label)> = Self::candidates(near, hw, hh, prefer)
+            .map(|text| {
+                let (hw, hh) = Label::half_size(class, &text);
+                let mut places: Vec<(i64, usize, Place)> = Self::candidates(near, hw, hh, prefer)
                     .into_iter()
                     .enumerate()
                     .map(|(k, at)| {
-                        let l = Label {
-                            id: id.to_owned(),
-                            class,
-                            at,
-                            text: form.clone(),
-                            near,
-                        };
-                        ((l.distance_to_arc(&arc) / 2.0).round() as i64, k, l)
+                        let rect = Rect::around(at, (hw, hh));
+                        let distance = distance_from(&rect, near, &arc);
+                        let place = Place { at, rect, distance };
+                        ((distance / 2.0).round() as i64, k, place)
                     })
                     .collect();
-                places.sort_by_key(|&(d, k, _)| (d, k));
-                places.into_iter().map(|(_, _, l)| l).collect()
+                places.sort_unstable_by_key(|&(d, k, _)| (d, k));
+                Form {
+                    text,
+                    places: places.into_iter().map(|(_, _, p)| p).collect(),
+                }
             })
             .collect()
     }
 
-    /// Places a label at the first free of its `places` beside what it names; whether it
-    /// found one (within [`Near::beside`]).
-    fn put(&mut self, places: &[Vec<Label>]) -> bool {
-        let mut fallback: Option<&Label> = None;
-        let mut free_far: Option<&Label> = None;
-        for form in places {
-            for l in form {
-                if self.free(l) {
-                    if l.distance() <= l.near.beside() {
-                        self.labels.push(l.clone());
+    /// Places label `spec` (naming `near`) at the first free of its places beside what it
+    /// names; whether it found one (within [`Near::beside`]).
+    fn put(&mut self, spec: usize, near: &Near, forms: &[Form]) -> bool {
+        let mut fallback: Option<(usize, Place)> = None;
+        let mut free_far: Option<(usize, Place)> = None;
+        for (f, form) in forms.iter().enumerate() {
+            for &p in &form.places {
+                if self.free(&p.rect) {
+                    if p.distance <= near.beside() {
+                        self.push(spec, f, p);
                         return true;
                     }
-                    if free_far.is_none_or(|f| l.distance() < f.distance()) {
-                        free_far = Some(l);
+                    if free_far.is_none_or(|(_, q)| p.distance < q.distance) {
+                        free_far = Some((f, p));
                     }
                     break;
                 }
-                if fallback.is_none() && l.rect().inside_canvas() {
-                    fallback = Some(l);
+                if fallback.is_none() && p.rect.inside_canvas() {
+                    fallback = Some((f, p));
                 }
             }
         }
         // Free but not beside, or nowhere free (the tests look for both): the nearest free
         // place, else the first inside the drawing, else the first tried.
-        if let Some(l) = free_far
-            .or(fallback)
-            .or(places.first().and_then(|f| f.first()))
+        if let Some((f, p)) = free_far.or(fallback).or(forms
+            .first()
+            .and_then(|form| form.places.first())
+            .map(|&p| (0, p)))
         {
-            self.labels.push(l.clone());
+            self.push(spec, f, p);
         }
         false
+    }
+
+    fn push(&mut self, spec: usize, form: usize, place: Place) {
+        self.placed.push(Placed {
+            spec,
+            form,
+            place,
+            spaced: place.rect.grown(LABEL_GAP),
+        });
     }
 }
 
@@ -1032,7 +1088,7 @@ pub fn figure(d: &Diagram, id: &str, lang: Lang) -> Figure {
     let mut placer = Placer {
         segments,
         dots,
-        labels: Vec::new(),
+        placed: Vec::new(),
         specs: Vec::new(),
     };
     let side = |a: f64, b: f64, s: f64| screen_angle(a, b) + s * std::f64::consts::FRAC_PI_2;
