@@ -80,21 +80,33 @@ pub fn require(program: &str, install: &str) -> Option<PathBuf> {
     found
 }
 
-/// A program that checks a second time what the test has already checked without it (xmllint
-/// after roxmltree): under CI (`CI=true`) a missing one is a failure, since CI must run the
-/// check; elsewhere `None` after printing why that check did not run.
-pub fn optional(program: &str, install: &str) -> Option<PathBuf> {
-    if let Some(p) = find(program) {
-        return Some(p);
+/// `xml` is well formed for roxmltree, a parser in Rust that applies XML 1.0's `Char` rule;
+/// `what` names the document in a failure. `xml.rs` and `moodle.rs` check each document so, and
+/// again with [`xmllint_well_formed`] in tests of their own.
+pub fn roxmltree_well_formed(xml: &str, what: &str) {
+    if let Err(e) = roxmltree::Document::parse(xml) {
+        panic!("{what} is not well-formed XML: {e}");
     }
-    let ci = std::env::var("CI").is_ok_and(|v| v == "true");
+}
+
+/// `xml` is well formed for xmllint (`xmllint --noout`), a second parser after
+/// [`roxmltree_well_formed`]; `what` names the document in a failure. Only in a test
+/// `#[ignore = "needs xmllint: apt-get install libxml2-utils"]`: a missing xmllint fails it.
+pub fn xmllint_well_formed(xml: &str, what: &str) {
+    let Some(lint) = require("xmllint", "apt-get install libxml2-utils") else {
+        return;
+    };
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("doc.xml");
+    std::fs::write(&path, xml).unwrap();
+    let out = std::process::Command::new(lint)
+        .arg("--noout")
+        .arg(&path)
+        .output()
+        .unwrap();
     assert!(
-        !ci,
-        "{program} is not installed, and CI=true requires this check. Fix: {install} \
-         (.ci/run does)"
+        out.status.success(),
+        "xmllint refuses {what}: {}",
+        String::from_utf8_lossy(&out.stderr)
     );
-    eprintln!(
-        "SKIPPED: {program} is not installed, so this check did not run. To run it: {install}"
-    );
-    None
 }
