@@ -42,6 +42,12 @@
 //! `proptest-regressions/fuzz.txt` (committed), which every later round replays first. A bug
 //! found here gets a plain `#[test]` with the minimised input at the end of this file.
 
+// `support::phong()`, the binary with the caller's locale cleared; the HTTP client and the
+// server for the fuzz test of `phong serve`'s API (tests/support/).
+#[path = "support/mod.rs"]
+#[allow(dead_code)]
+mod support;
+
 use std::collections::BTreeSet;
 use std::fmt;
 use std::fs;
@@ -51,7 +57,6 @@ use std::sync::atomic::{AtomicUsize, Ordering};
 use std::sync::OnceLock;
 use std::time::{Duration, Instant};
 
-use assert_cmd::Command;
 use proptest::prelude::*;
 use proptest::sample::{select, Index};
 use proptest::test_runner::{
@@ -2051,8 +2056,7 @@ fn binary_rejects(ws: &Workspace) -> Result<(), String> {
         ),
     ];
     for (label, args, json_out) in runs {
-        let output = Command::cargo_bin("phong")
-            .map_err(|e| e.to_string())?
+        let output = support::phong()
             .args(&args)
             .output()
             .map_err(|e| e.to_string())?;
@@ -2709,12 +2713,7 @@ fn fuzz_grading_arbitrary_bytes_never_panics_and_keeps_every_line() {
 
 // Without the `serve` feature (on by default) there is no server to fuzz.
 #[cfg(feature = "serve")]
-#[path = "support/http.rs"]
-mod http;
-#[cfg(feature = "serve")]
-#[path = "support/server.rs"]
-#[allow(dead_code)]
-mod server;
+use support::{http, server};
 
 /// The generators of the file's other fuzz tests, sent to a running `phong serve` as the
 /// `problem` of `POST /api/check` and `POST /api/solve` (raw bytes that are not UTF-8 or not

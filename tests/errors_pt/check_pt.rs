@@ -2,9 +2,9 @@
 //! that cannot be read is said in Portuguese throughout, composed from typed values (issue 27),
 //! and the English stays as it was.
 
-use std::path::Path;
+use crate::support;
 
-use assert_cmd::Command;
+use std::path::Path;
 
 fn exercise(name: &str) -> String {
     Path::new(env!("CARGO_MANIFEST_DIR"))
@@ -16,8 +16,7 @@ fn exercise(name: &str) -> String {
 
 /// Runs `phong ARGS` with the locale `lang` (`LC_ALL`, `LANG`): exit code and standard error.
 fn run(args: &[&str], locale: &str) -> (i32, String) {
-    let out = Command::cargo_bin("phong")
-        .unwrap()
+    let out = support::phong()
         .env_remove("LC_MESSAGES")
         .env("LC_ALL", locale)
         .env("LANG", locale)
@@ -220,8 +219,7 @@ fn a_step_that_cannot_be_read_or_judged_is_portuguese() {
 
 /// `phong ARGS --lang pt`: exit code and standard output.
 fn out_pt(args: &[&str]) -> (i32, String) {
-    let out = Command::cargo_bin("phong")
-        .unwrap()
+    let out = support::phong()
         .args(args)
         .args(["--lang", "pt"])
         .output()

@@ -16,8 +16,6 @@ mod validate_pt;
 
 use std::path::Path;
 
-use assert_cmd::Command;
-
 /// Exercise 4.2 with `from` replaced by `to` (once; the text must hold it).
 fn exercise_with(from: &str, to: &str) -> String {
     let text =
@@ -32,8 +30,7 @@ fn solve(name: &str, text: &str, lang: &str) -> (i32, String) {
     let dir = tempfile::tempdir().unwrap();
     let path = dir.path().join(name);
     std::fs::write(&path, text).unwrap();
-    let out = Command::cargo_bin("phong")
-        .unwrap()
+    let out = support::phong()
         .current_dir(dir.path())
         .args(["solve", name, "--lang", lang])
         .output()
@@ -244,8 +241,7 @@ fn a_warning_names_its_file_among_several() {
     let ok = exercise_with(r#""title""#, r#""title""#);
     std::fs::write(dir.path().join("ok.json"), ok).unwrap();
     for (lang, word) in [("en", "warning"), ("pt", "aviso")] {
-        let out = Command::cargo_bin("phong")
-            .unwrap()
+        let out = support::phong()
             .current_dir(dir.path())
             .args([
                 "solve",
@@ -276,8 +272,7 @@ fn an_output_in_a_missing_folder_names_the_path_and_the_fix() {
     let exercise = Path::new(env!("CARGO_MANIFEST_DIR")).join("exercises/4.1.json");
     for (command, output) in [("solve", "nodir/x.txt"), ("moodle", "nodir/q.xml")] {
         for lang in ["en", "pt"] {
-            let out = Command::cargo_bin("phong")
-                .unwrap()
+            let out = support::phong()
                 .current_dir(dir.path())
                 .arg(command)
                 .arg(&exercise)
@@ -310,8 +305,7 @@ fn an_output_in_a_missing_folder_names_the_path_and_the_fix() {
 fn a_numeric_flag_takes_a_decimal_comma() {
     let exercise = Path::new(env!("CARGO_MANIFEST_DIR")).join("exercises/4.1.json");
     let run = |extra: &[&str]| {
-        let out = Command::cargo_bin("phong")
-            .unwrap()
+        let out = support::phong()
             .arg("check")
             .arg(&exercise)
             .args(extra)
@@ -346,8 +340,7 @@ fn a_numeric_flag_takes_a_decimal_comma() {
 
 /// Runs `phong ARGS` in `dir` with `stdin` on standard input: the exit code and standard error.
 fn phong_in(dir: &Path, args: &[&str], stdin: &[u8]) -> (i32, String) {
-    let out = Command::cargo_bin("phong")
-        .unwrap()
+    let out = support::phong()
         .current_dir(dir)
         .args(args)
         .write_stdin(stdin)
@@ -440,8 +433,7 @@ fn a_scenes_errors_are_wholly_portuguese_and_say_what_fits() {
 fn an_explained_mesh_pixel_names_its_triangle_in_portuguese() {
     // QA report B, finding 4: "triangle (surfaces[1] (mesh), triangle 1557)" in Portuguese;
     // issue 29: named as a person would, "O triângulo 1557 da malha".
-    let out = Command::cargo_bin("phong")
-        .unwrap()
+    let out = support::phong()
         .current_dir(env!("CARGO_MANIFEST_DIR"))
         .args([
             "render",
@@ -491,8 +483,7 @@ fn a_degenerate_obj_face_is_named_without_tobjs_placeholder() {
 /// Runs phong from the crate's folder with `args` in the locale `lang` (`LANG`; `LC_ALL` and
 /// `LC_MESSAGES` unset): the exit code, standard output and standard error.
 fn phong_with_locale(lang: &str, args: &[&str]) -> (i32, String, String) {
-    let out = Command::cargo_bin("phong")
-        .unwrap()
+    let out = support::phong()
         .current_dir(env!("CARGO_MANIFEST_DIR"))
         .env_remove("LC_ALL")
         .env_remove("LC_MESSAGES")

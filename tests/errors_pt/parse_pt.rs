@@ -4,9 +4,9 @@
 //! the message's prose survives. serde's own words (`invalid type`, `expected one of`, `EOF
 //! while parsing`) were English under `--lang pt` before they were read into values.
 
-use std::path::Path;
+use crate::support;
 
-use assert_cmd::Command;
+use std::path::Path;
 
 /// English words the messages of these errors hold in English; none may survive in Portuguese
 /// outside quotes and backticks (where the file's own words stand). Words that are Portuguese
@@ -135,8 +135,7 @@ fn english_in(message: &str, file: &str) -> Vec<String> {
 /// Runs `phong ARGS` in `dir` with the locale `lang` (`LANG`, no `LC_*`): the exit code and
 /// standard error.
 fn run(dir: &Path, args: &[&str], lang: &str) -> (i32, String) {
-    let out = Command::cargo_bin("phong")
-        .unwrap()
+    let out = support::phong()
         .current_dir(dir)
         .env_remove("LC_ALL")
         .env_remove("LC_MESSAGES")

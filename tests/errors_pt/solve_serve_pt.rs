@@ -4,8 +4,7 @@
 
 use std::path::Path;
 
-use assert_cmd::Command;
-
+use crate::support;
 #[cfg(feature = "serve")]
 use crate::support::{http, server};
 
@@ -82,8 +81,7 @@ fn english_in(message: &str, skip: &[&str]) -> Vec<String> {
 /// `phong ARGS…` from the crate's folder with the locale `lang` (`LANG`, the other locale
 /// variables cleared): its exit code and standard error.
 fn phong_in_locale(lang: &str, args: &[&str]) -> (i32, String) {
-    let out = Command::cargo_bin("phong")
-        .unwrap()
+    let out = support::phong()
         .current_dir(root())
         .env_remove("LC_ALL")
         .env_remove("LC_MESSAGES")
@@ -128,8 +126,7 @@ fn a_scene_given_to_solve_is_refused_in_portuguese_by_flag_and_by_locale() {
 
 /// `phong ARGS` run in `dir`, refused (exit 2): its standard error.
 fn refused_in(dir: &Path, args: &[&str]) -> String {
-    let out = Command::cargo_bin("phong")
-        .unwrap()
+    let out = support::phong()
         .current_dir(dir)
         .args(args)
         .output()

@@ -2,7 +2,8 @@
 //! Brazilian locale: each written wholly in Portuguese, with the light's kind in its label
 //! (`lights[0] (pontual)`) and the numbers of the file; in English, as before.
 
-use assert_cmd::Command;
+use crate::support;
+
 use serde_json::{json, Value};
 
 /// Runs phong in a folder holding `bad.json` (the problem `problem`), with `args` (`FILE` stands
@@ -10,7 +11,7 @@ use serde_json::{json, Value};
 fn run(problem: &Value, args: &[&str], env: &[(&str, &str)]) -> (i32, String) {
     let dir = tempfile::tempdir().unwrap();
     std::fs::write(dir.path().join("bad.json"), problem.to_string()).unwrap();
-    let mut cmd = Command::cargo_bin("phong").unwrap();
+    let mut cmd = support::phong();
     cmd.current_dir(dir.path())
         .env_remove("LC_ALL")
         .env_remove("LC_MESSAGES")

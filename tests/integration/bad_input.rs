@@ -7,11 +7,12 @@
 //! one thing, so the field the message must name is known. Also here: a bad file in a batch loses
 //! no entry, `--output` is never left half-written, and every shipped exercise solves cleanly.
 
+use crate::support;
+
 use std::collections::BTreeSet;
 use std::fs;
 use std::path::{Path, PathBuf};
 
-use assert_cmd::Command;
 use predicates::prelude::*;
 use serde_json::{json, Value};
 use tempfile::TempDir;
@@ -911,8 +912,7 @@ fn check_batch_document(doc: &Value, files: &[PathBuf; 3]) {
 fn a_batch_with_a_bad_file_exits_2_and_keeps_every_entry_in_order() {
     let (_dir, files) = batch_folder();
     let [good, bad, good2] = &files;
-    let assert = Command::cargo_bin("phong")
-        .expect("the phong binary is built")
+    let assert = support::phong()
         .args([
             "solve",
             utf8(good),
@@ -937,8 +937,7 @@ fn a_batch_with_a_bad_file_exits_2_and_keeps_every_entry_in_order() {
 fn a_batch_in_text_still_prints_the_good_files() {
     let (_dir, files) = batch_folder();
     let [good, bad, good2] = &files;
-    Command::cargo_bin("phong")
-        .expect("the phong binary is built")
+    support::phong()
         .args(["solve", utf8(good), utf8(bad), utf8(good2)])
         .assert()
         .code(BAD_INPUT)
@@ -963,8 +962,7 @@ fn a_batch_names_the_field_of_a_parse_error_in_its_json_entry() {
         json!([0.7, 0.8, 0.6]),
     );
     fs::write(&typo, pretty(&without(m, "/materials/M/diffuse"))).expect("written");
-    let assert = Command::cargo_bin("phong")
-        .expect("the phong binary is built")
+    let assert = support::phong()
         .args([
             "solve",
             utf8(&typo),
@@ -1011,8 +1009,7 @@ fn output_to_a_file_with_a_bad_input_exits_2_and_leaves_only_the_complete_docume
     let (dir, files) = batch_folder();
     let [good, bad, good2] = &files;
     let out = dir.path().join("out.json");
-    Command::cargo_bin("phong")
-        .expect("the phong binary is built")
+    support::phong()
         .args([
             "solve",
             utf8(good),
@@ -1087,8 +1084,7 @@ fn output_into_a_folder_that_does_not_exist_exits_2_without_panicking() {
     let (dir, files) = batch_folder();
     let good = &files[0];
     let out = dir.path().join("no-such-folder").join("out.json");
-    Command::cargo_bin("phong")
-        .expect("the phong binary is built")
+    support::phong()
         .args(["solve", utf8(good), "--output", utf8(&out)])
         .assert()
         .code(BAD_INPUT)

@@ -25,8 +25,7 @@ const INSTALL: &str = "apt-get install -y --no-install-recommends chromium";
 /// Writes `phong solve FILE --format html --lang LANG` into `dir` and returns the page's path.
 fn page(dir: &Path, exercise: &str, lang: &str) -> PathBuf {
     let path = dir.join(format!("{exercise}-{lang}.html"));
-    let run = Command::cargo_bin("phong")
-        .unwrap()
+    let run = support::phong()
         .args(["solve", &format!("exercises/{exercise}.json")])
         .args(["--format", "html", "--lang", lang, "-o"])
         .arg(&path)

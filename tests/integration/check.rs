@@ -7,8 +7,8 @@
 
 use std::io::Write;
 
+use crate::support;
 use crate::support::phong;
-use assert_cmd::Command;
 use predicates::prelude::*;
 use serde_json::Value;
 
@@ -368,8 +368,7 @@ fn a_mesh_is_found_beside_the_problem_file_as_solve_finds_it() {
     )
     .unwrap();
     let run = |args: &[&str]| {
-        Command::cargo_bin("phong")
-            .unwrap()
+        support::phong()
             .current_dir(dir.path())
             .args(args)
             .output()

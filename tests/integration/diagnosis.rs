@@ -3,9 +3,10 @@
 //! must call it wrong (exit 1) and name that slip in its JSON diagnosis. The program's own slip
 //! switches are never called from these tests.
 
+use crate::support;
+
 use std::io::Write;
 
-use assert_cmd::Command;
 use serde_json::{json, Value};
 
 type V = [f64; 3];
@@ -207,8 +208,7 @@ fn check(problem: &Value, answer: V) -> (i32, Value) {
 
 fn check_path(path: &std::path::Path, answer: V) -> (i32, Value) {
     let text = format!("{} {} {}", answer[0], answer[1], answer[2]);
-    let out = Command::cargo_bin("phong")
-        .unwrap()
+    let out = support::phong()
         .args(["check", "--format", "json", "--answer", &text])
         .arg(path)
         .output()
@@ -429,8 +429,7 @@ fn the_acceptance_answer_to_4_2_names_the_reversed_normal_and_abs_cos_theta() {
 fn a_slip_that_does_not_apply_is_not_listed() {
     // 4.2 has no ambient light, no spot, n_s = 1 and a unit normal: none of those slips can be
     // offered, whatever the answer.
-    let out = Command::cargo_bin("phong")
-        .unwrap()
+    let out = support::phong()
         .args(["check", "--slips"])
         .arg(std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("exercises/4.2.json"))
         .output()
@@ -452,8 +451,7 @@ fn a_slip_that_does_not_apply_is_not_listed() {
 fn check_text(problem: &str, answer: &str, extra: &[&str]) -> (i32, Value) {
     let mut f = tempfile::Builder::new().suffix(".json").tempfile().unwrap();
     f.write_all(problem.as_bytes()).unwrap();
-    let out = Command::cargo_bin("phong")
-        .unwrap()
+    let out = support::phong()
         .args(["check", "--format", "json", "--answer", answer])
         .args(extra)
         .arg(f.path())

@@ -7,9 +7,10 @@
 //! `tests/hand_calculations.rs`; here the snapshots pin the layout and the wording, and the
 //! assertions check that every format tells the same steps.
 
+use crate::support;
+
 use std::path::Path;
 
-use assert_cmd::Command;
 use phong::core::Precision;
 use phong::report::explain::{plain, Explanation};
 use phong::report::file::explain_file;
@@ -165,8 +166,7 @@ fn the_portuguese_explanation_of_4_2_uses_the_chapters_terms() {
 #[test]
 fn json_stays_language_neutral() {
     let run = |lang: &str| {
-        Command::cargo_bin("phong")
-            .unwrap()
+        support::phong()
             .args([
                 "solve",
                 "exercises/4.2.json",
@@ -184,7 +184,7 @@ fn json_stays_language_neutral() {
 }
 
 fn solve(args: &[&str], no_color: Option<&str>) -> std::process::Output {
-    let mut cmd = Command::cargo_bin("phong").unwrap();
+    let mut cmd = support::phong();
     cmd.arg("solve").args(args).env_remove("NO_COLOR");
     if let Some(v) = no_color {
         cmd.env("NO_COLOR", v);

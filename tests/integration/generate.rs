@@ -2,9 +2,10 @@
 //! friendly to hand calculation (short decimals, unit normals, integer distances, lights in
 //! front of the surface).
 
+use crate::support;
+
 use std::path::{Path, PathBuf};
 
-use assert_cmd::Command;
 use serde_json::Value;
 
 const KINDS: [&str; 8] = [
@@ -19,8 +20,7 @@ const KINDS: [&str; 8] = [
 ];
 
 fn generate(kind: &str, count: u32, seed: u64, dir: &Path) -> Vec<PathBuf> {
-    Command::cargo_bin("phong")
-        .unwrap()
+    support::phong()
         .args([
             "new",
             "--kind",
@@ -128,8 +128,7 @@ fn each_generated_problem_is_right_by_its_own_key() {
     for kind in KINDS {
         let dir = tempfile::tempdir().unwrap();
         let files = generate(kind, 12, 7, dir.path());
-        let out = Command::cargo_bin("phong")
-            .unwrap()
+        let out = support::phong()
             .args(["check", "--format", "json"])
             .args(&files)
             .output()
@@ -275,8 +274,7 @@ fn written3(v: &Value, pt: bool) -> String {
 #[test]
 fn the_statements_give_the_data_and_the_seed_is_metadata() {
     for kind in KINDS {
-        let out = Command::cargo_bin("phong")
-            .unwrap()
+        let out = support::phong()
             .args([
                 "new", "--kind", kind, "--count", "5", "--seed", "77", "--lang", "pt",
             ])
@@ -316,8 +314,7 @@ fn the_statements_give_the_data_and_the_seed_is_metadata() {
             assert!(pt.contains("Qual") || pt.contains("Que cor"), "{pt}");
         }
         // Without --lang pt, English only.
-        let out = Command::cargo_bin("phong")
-            .unwrap()
+        let out = support::phong()
             .args(["new", "--kind", kind, "--seed", "77"])
             .output()
             .unwrap();
@@ -328,8 +325,7 @@ fn the_statements_give_the_data_and_the_seed_is_metadata() {
 
 #[test]
 fn without_a_folder_the_problems_are_printed_as_one_json_document() {
-    let out = Command::cargo_bin("phong")
-        .unwrap()
+    let out = support::phong()
         .args(["new", "--kind", "ambient", "--count", "3", "--seed", "1"])
         .output()
         .unwrap();

@@ -3,7 +3,7 @@
 
 use std::path::Path;
 
-use crate::support::phong;
+use crate::support::{self, phong};
 use predicates::prelude::*;
 use serde_json::Value;
 
@@ -592,10 +592,10 @@ fn an_output_that_cannot_be_written_stops_before_anything_is_and_says_no_graded_
 /// error).
 fn grade_limited(limit_mb: u64, args: &[&std::ffi::OsStr]) -> (Option<i32>, usize, String) {
     use std::io::Read;
-    let mut child = std::process::Command::new("sh")
+    let mut child = support::sh()
         .arg("-c")
         .arg(format!("ulimit -v {}; exec \"$0\" \"$@\"", limit_mb * 1024))
-        .arg(assert_cmd::cargo::cargo_bin("phong"))
+        .arg(support::phong_path())
         .arg("grade")
         .args(args)
         .stdout(std::process::Stdio::piped())

@@ -4,9 +4,10 @@
 //! over generated hostile files (random quoting, separators, line ends, encodings, blank lines,
 //! NUL bytes and bad UTF-8).
 
+use crate::support;
+
 use std::path::{Path, PathBuf};
 
-use assert_cmd::Command;
 use phong::check::grade::{grade_bytes, rows_csv, Options, Report, RowOut};
 use proptest::prelude::*;
 use proptest::test_runner::{Config, FileFailurePersistence, RngSeed, TestRunner};
@@ -307,8 +308,7 @@ fn the_report_is_written_before_the_summary_line_and_a_semicolon_file_exits_0() 
     let dir = tempfile::tempdir().unwrap();
     let input = dir.path().join("turma.csv");
     std::fs::write(&input, "aluno;exercício;resposta\nana;4.1;0,5 0,7 0,3\n").unwrap();
-    Command::cargo_bin("phong")
-        .unwrap()
+    support::phong()
         .arg("grade")
         .arg(&input)
         .arg("--exercises")
@@ -337,8 +337,7 @@ fn the_summary_line_of_one_row_is_in_the_singular_in_both_languages() {
              0 inválidas",
         ),
     ] {
-        Command::cargo_bin("phong")
-            .unwrap()
+        support::phong()
             .args(["grade", "--lang", lang, "--exercises"])
             .arg(folder())
             .arg(&input)

@@ -6,7 +6,7 @@
 use std::path::{Path, PathBuf};
 use std::process::{Command as Std, Stdio};
 
-use crate::support::phong;
+use crate::support::{self, phong};
 use assert_cmd::Command;
 use predicates::prelude::*;
 use serde_json::json;
@@ -78,7 +78,7 @@ fn a_closed_standard_error_neither_panics_nor_costs_the_report() {
     let subs = write(&dir, "subs.csv", "ana,4.1,0.5 0.7 0.3\n");
     let report = dir.path().join("r.csv");
     // The reader of standard error is gone before phong writes to it (`2>&1 | true`).
-    let mut child = Std::new(env!("CARGO_BIN_EXE_phong"))
+    let mut child = support::phong_std()
         .arg("grade")
         .arg(&subs)
         .arg("--exercises")
@@ -95,7 +95,7 @@ fn a_closed_standard_error_neither_panics_nor_costs_the_report() {
     let text = std::fs::read_to_string(&report).unwrap();
     assert_eq!(text.lines().count(), 2, "{text}");
     // An error message to a gone reader: still exit 2, not a panic's 101.
-    let mut child = Std::new(env!("CARGO_BIN_EXE_phong"))
+    let mut child = support::phong_std()
         .args(["solve", "no-such-file.json"])
         .stderr(Stdio::piped())
         .spawn()
@@ -471,10 +471,10 @@ fn a_new_file_follows_the_umask_and_an_existing_one_keeps_its_mode() {
     use std::os::unix::fs::PermissionsExt;
     let dir = TempDir::new().unwrap();
     let new = dir.path().join("new.json");
-    let status = Std::new("sh")
+    let status = support::sh()
         .arg("-c")
         .arg("umask 077; exec \"$0\" schema -o \"$1\"")
-        .arg(env!("CARGO_BIN_EXE_phong"))
+        .arg(support::phong_path())
         .arg(&new)
         .status()
         .unwrap();
@@ -518,11 +518,10 @@ fn a_write_over_the_file_size_limit_fails_cleanly_and_leaves_no_temporary_file()
     // the temporary file is removed, and the existing target is left as it was.
     let dir = TempDir::new().unwrap();
     let target = write(&dir, "out.html", "the previous report\n");
-    let phong = assert_cmd::cargo::cargo_bin("phong");
-    let out = Std::new("sh")
+    let out = support::sh()
         .arg("-c")
         .arg("ulimit -f 1 && exec \"$0\" solve \"$1\" --format html -o \"$2\"")
-        .arg(&phong)
+        .arg(support::phong_path())
         .arg(exercise("4.2.json"))
         .arg(&target)
         .stdin(Stdio::null())
@@ -622,11 +621,11 @@ fn a_grade_output_may_not_replace_an_exercise_it_grades_against() {
 
 /// `sh -c script` in `dir` with `$PHONG` the binary and `$EX` exercise 4.1; its exit code.
 fn shell(dir: &Path, script: &str) -> Option<i32> {
-    Std::new("sh")
+    support::sh()
         .arg("-c")
         .arg(script)
         .current_dir(dir)
-        .env("PHONG", assert_cmd::cargo::cargo_bin("phong"))
+        .env("PHONG", support::phong_path())
         .env("EX", exercise("4.1.json"))
         .env("SUBS", "subs.csv")
         .stdin(Stdio::null())

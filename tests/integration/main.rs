@@ -43,6 +43,7 @@ mod serve_pages;
 mod snapshots;
 mod source;
 mod stability;
+mod test_sources;
 mod tracer;
 mod tradeoff;
 mod transmission;

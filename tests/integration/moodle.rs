@@ -1,4 +1,5 @@
-//! `phong moodle`: the quiz is well formed XML (xmllint), every question passes a validator
+//! `phong moodle`: the quiz is well formed XML (roxmltree, and xmllint in a test of its own,
+//! ignored unless its program is asked for), every question passes a validator
 //! written here from the Cloze grammar and Moodle's import rules (the course's platform notes,
 //! read from `question/format/xml/format.php` and `question/type/multianswer/questiontype.php`),
 //! the validator rejects Moodle's own broken cases, and every answer option, checked with
@@ -343,23 +344,29 @@ fn exercises() -> Vec<PathBuf> {
     files
 }
 
-fn xmllint(xml: &str, name: &str) {
-    let Some(lint) = support::optional("xmllint", "apt-get install libxml2-utils") else {
-        return;
-    };
-    let dir = tempfile::tempdir().unwrap();
-    let path = dir.path().join(name);
-    std::fs::write(&path, xml).unwrap();
-    let out = std::process::Command::new(lint)
-        .arg("--noout")
-        .arg(&path)
-        .output()
-        .unwrap();
-    assert!(
-        out.status.success(),
-        "xmllint: {}",
-        String::from_utf8_lossy(&out.stderr)
-    );
+/// The kinds `phong new` makes, each piped into `phong moodle` below.
+const KINDS: [&str; 7] = [
+    "spot",
+    "ambient",
+    "point",
+    "ray-plane",
+    "directional",
+    "several",
+    "sphere",
+];
+
+/// The first diagram embedded in 4.2's quiz (in Portuguese), decoded.
+fn diagram_svg() -> String {
+    let xml = moodle(&[root().join("exercises/4.2.json")], "pt", None);
+    let tag = "encoding=\"base64\">";
+    let data = between(&xml, tag, "</file>").expect("a diagram");
+    String::from_utf8(unbase64(data)).unwrap()
+}
+
+/// The quiz of ten problems of `kind` from `phong new --seed 1 --lang pt`, piped in.
+fn generated_quiz(kind: &str) -> String {
+    let problems = new(kind, 10, 1, Some("pt"));
+    moodle(&[PathBuf::from("-")], "pt", Some(&problems))
 }
 
 /// Standard base64 decoded (RFC 4648), for the embedded diagrams.
@@ -387,20 +394,17 @@ fn unbase64(s: &str) -> Vec<u8> {
 
 #[test]
 fn the_embedded_diagrams_are_svg_files_of_their_own() {
-    let xml = moodle(&[root().join("exercises/4.2.json")], "pt", None);
-    let tag = "encoding=\"base64\">";
-    let data = between(&xml, tag, "</file>").expect("a diagram");
-    let svg = String::from_utf8(unbase64(data)).unwrap();
+    let svg = diagram_svg();
     assert!(svg.starts_with("<svg ") && svg.contains("xmlns=\"http://www.w3.org/2000/svg\""));
     assert!(svg.contains("<style>") && svg.trim_end().ends_with("</svg>"));
-    xmllint(&svg, "diagram.svg");
+    support::roxmltree_well_formed(&svg, "4.2's diagram");
 }
 
 #[test]
 fn every_bundled_exercise_makes_a_well_formed_valid_quiz_in_both_languages() {
     for lang in ["en", "pt"] {
         let xml = moodle(&exercises(), lang, None);
-        xmllint(&xml, &format!("exercises-{lang}.xml"));
+        support::roxmltree_well_formed(&xml, &format!("the exercises' quiz (--lang {lang})"));
         let questions = validate(&xml).unwrap_or_else(|e| panic!("{lang}: {e}"));
         assert_eq!(questions.len(), exercises().len());
         assert_eq!(
@@ -457,18 +461,9 @@ fn every_bundled_exercise_makes_a_well_formed_valid_quiz_in_both_languages() {
 fn generated_problems_piped_in_make_a_valid_quiz() {
     // The "done when": `phong new --kind spot --count 10 --seed 1 --lang pt` piped to
     // `phong moodle`, and so for every kind.
-    for kind in [
-        "spot",
-        "ambient",
-        "point",
-        "ray-plane",
-        "directional",
-        "several",
-        "sphere",
-    ] {
-        let problems = new(kind, 10, 1, Some("pt"));
-        let xml = moodle(&[PathBuf::from("-")], "pt", Some(&problems));
-        xmllint(&xml, &format!("{kind}.xml"));
+    for kind in KINDS {
+        let xml = generated_quiz(kind);
+        support::roxmltree_well_formed(&xml, &format!("the quiz of {kind} problems"));
         let questions = validate(&xml).unwrap_or_else(|e| panic!("{kind}: {e}"));
         assert_eq!(questions.len(), 10, "{kind}");
         assert!(xml.contains("Problemas gerados"));
@@ -661,21 +656,11 @@ fn a_file_that_is_not_a_question_is_refused_by_name() {
 // its quiz has exactly phong's three NUMERICAL parts (R, G, B), whatever its text holds.
 #[test]
 fn cloze_syntax_in_a_problems_text_stays_text() {
-    let mut problem: Value =
-        serde_json::from_str(&std::fs::read_to_string(root().join("exercises/4.2.json")).unwrap())
-            .unwrap();
-    let evil = "Pergunta com ]]> e {2:SHORTANSWER:=x} e {:NM:=1:0} e ~ # } = \\frac{1}{2} {";
-    problem["question"] = Value::from(evil);
-    problem["question_pt"] = Value::from(evil);
-    problem["title_pt"] = Value::from("Exercício {1:SHORTANSWER:=x}");
-    problem["lights"][0]["name_pt"] = Value::from("luz {1:NUMERICAL:=0.5:1}");
-    problem["lights"][0]["name"] = Value::from("light {1:NUMERICAL:=0.5:1}");
     let dir = tempfile::tempdir().unwrap();
-    let file = dir.path().join("evil.json");
-    std::fs::write(&file, problem.to_string()).unwrap();
+    let file = cloze_problem(dir.path());
     for lang in ["pt", "en"] {
         let xml = moodle(std::slice::from_ref(&file), lang, None);
-        xmllint(&xml, &format!("evil-{lang}.xml"));
+        support::roxmltree_well_formed(&xml, &format!("the quiz of evil.json (--lang {lang})"));
         let questions = validate(&xml).unwrap_or_else(|e| panic!("{lang}: {e}"));
         assert_eq!(questions.len(), 1, "{lang}");
         let subs = &questions[0];
@@ -690,6 +675,46 @@ fn cloze_syntax_in_a_problems_text_stays_text() {
             text.contains("&#123;2:SHORTANSWER:=x&#125;") && text.contains("\\frac&#123;1&#125;"),
             "{lang}: {text}"
         );
+    }
+}
+
+/// 4.2 with Cloze syntax and LaTeX-ish braces in its title, question and light's name, written
+/// to `dir/evil.json`.
+fn cloze_problem(dir: &Path) -> PathBuf {
+    let mut problem: Value =
+        serde_json::from_str(&std::fs::read_to_string(root().join("exercises/4.2.json")).unwrap())
+            .unwrap();
+    let evil = "Pergunta com ]]> e {2:SHORTANSWER:=x} e {:NM:=1:0} e ~ # } = \\frac{1}{2} {";
+    problem["question"] = Value::from(evil);
+    problem["question_pt"] = Value::from(evil);
+    problem["title_pt"] = Value::from("Exercício {1:SHORTANSWER:=x}");
+    problem["lights"][0]["name_pt"] = Value::from("luz {1:NUMERICAL:=0.5:1}");
+    problem["lights"][0]["name"] = Value::from("light {1:NUMERICAL:=0.5:1}");
+    let file = dir.join("evil.json");
+    std::fs::write(&file, problem.to_string()).unwrap();
+    file
+}
+
+/// The documents of the tests above (the diagram, the bundled exercises' quiz in both languages,
+/// each kind's generated quiz, the quiz of Cloze syntax in a problem's text), read by xmllint
+/// too: a second parser after roxmltree.
+#[test]
+#[ignore = "needs xmllint: apt-get install libxml2-utils"]
+fn xmllint_reads_every_quiz_and_diagram_as_well_formed() {
+    support::xmllint_well_formed(&diagram_svg(), "4.2's diagram");
+    for lang in ["en", "pt"] {
+        let xml = moodle(&exercises(), lang, None);
+        support::xmllint_well_formed(&xml, &format!("the exercises' quiz (--lang {lang})"));
+    }
+    for kind in KINDS {
+        let xml = generated_quiz(kind);
+        support::xmllint_well_formed(&xml, &format!("the quiz of {kind} problems"));
+    }
+    let dir = tempfile::tempdir().unwrap();
+    let file = cloze_problem(dir.path());
+    for lang in ["pt", "en"] {
+        let xml = moodle(std::slice::from_ref(&file), lang, None);
+        support::xmllint_well_formed(&xml, &format!("the quiz of evil.json (--lang {lang})"));
     }
 }
 

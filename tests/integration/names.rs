@@ -2,18 +2,16 @@
 //! light", "the plane"; "a luz amarela", "a segunda luz", "o plano". Never `lights[1]` or
 //! `surfaces[0]`, which stay in the JSON and in the error messages (where the fix goes).
 
-use std::path::{Path, PathBuf};
-use std::process::Command;
+use crate::support;
 
-use assert_cmd::cargo::CommandCargoExt;
+use std::path::{Path, PathBuf};
 
 fn root() -> &'static Path {
     Path::new(env!("CARGO_MANIFEST_DIR"))
 }
 
 fn phong(args: &[&str]) -> String {
-    let out = Command::cargo_bin("phong")
-        .unwrap()
+    let out = support::phong()
         .current_dir(root())
         .args(args)
         .output()

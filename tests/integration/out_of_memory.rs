@@ -13,16 +13,17 @@
 
 #![cfg(target_os = "linux")]
 
+use crate::support;
+
 use std::path::Path;
-use std::process::Command;
 
 /// `phong grade INPUT --exercises exercises -o OUT ARGS…` under `ulimit -v` of `mib` MiB:
 /// (exit code, standard error). `None` for the code when a signal ended it.
 fn grade_under(mib: u64, input: &Path, out: &Path, args: &[&str]) -> (Option<i32>, String) {
-    let output = Command::new("sh")
+    let output = support::sh()
         .arg("-c")
         .arg(format!("ulimit -v {}; exec \"$0\" \"$@\"", mib * 1024))
-        .arg(env!("CARGO_BIN_EXE_phong"))
+        .arg(support::phong_path())
         .arg("grade")
         .arg(input)
         .arg("--exercises")

@@ -11,10 +11,11 @@
 //! commands and environment names, TikZ's drawing commands (not its labels), HTML tags, the
 //! CSS, and the file names.
 
+use crate::support;
+
 use std::collections::BTreeSet;
 use std::path::Path;
 
-use assert_cmd::Command;
 use phong::report::catalogue;
 use phong::report::lang::Lang;
 
@@ -309,8 +310,7 @@ fn root() -> &'static Path {
 
 /// Runs phong with `args` in the crate's folder: its standard output and error.
 fn run(args: &[&str]) -> (String, String) {
-    let out = Command::cargo_bin("phong")
-        .unwrap()
+    let out = support::phong()
         .current_dir(root())
         .args(args)
         .output()

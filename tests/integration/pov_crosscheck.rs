@@ -10,6 +10,8 @@
 //! POV-Ray comes from Debian's `povray` package, which `.ci/run` installs. Without it the tests
 //! are skipped with a message, except under CI (`CI=true`), where a missing POV-Ray fails them.
 
+use crate::support;
+
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
@@ -115,12 +117,11 @@ fn render_both_edited(
 ) -> Pair {
     let dir = tempfile::tempdir().unwrap();
     let copy = scaled_copy(&scene_path(scene), width, dir.path());
-    let phong = assert_cmd::cargo::cargo_bin("phong");
     let phong_ppm = dir.path().join("phong.ppm");
     let pov = dir.path().join("scene.pov");
     let pov_ppm = dir.path().join("povray.ppm");
     run(
-        Command::new(&phong)
+        support::phong_std()
             .arg("render")
             .arg(&copy)
             .arg("-o")
@@ -130,7 +131,7 @@ fn render_both_edited(
         "phong render",
     );
     run(
-        Command::new(&phong)
+        support::phong_std()
             .arg("export-pov")
             .arg(&copy)
             .arg("-o")
@@ -293,7 +294,7 @@ fn the_mesh_scene_matches_povray() {
 /// normal's test (docs/conventions.md, "Smooth meshes") and POV-Ray's `smooth_triangle` turns it
 /// by its own sign, so that POV-Ray shades the other side.
 fn smooth_normal_turned_away(dir: &Path, scene: &str, flags: &[&str], x: u32, y: u32) -> bool {
-    let out = Command::new(assert_cmd::cargo::cargo_bin("phong"))
+    let out = support::phong_std()
         .arg("render")
         .arg(dir.join(scene))
         .args(["--explain-pixel", &format!("{x},{y}"), "--format", "json"])
@@ -481,7 +482,7 @@ fn export_glass(edit: impl FnOnce(&mut Value), flags: &[&str]) -> (i32, String) 
     edit(&mut v);
     let path = dir.path().join("edited.json");
     std::fs::write(&path, serde_json::to_string_pretty(&v).unwrap()).unwrap();
-    let out = Command::new(assert_cmd::cargo::cargo_bin("phong"))
+    let out = support::phong_std()
         .arg("export-pov")
         .arg(&path)
         .args(flags)

@@ -4,9 +4,10 @@
 //! and `phong check --step` judges them. Every expected number is worked by hand in the
 //! comments, never taken from the program's output.
 
+use crate::support;
+
 use std::path::Path;
 
-use assert_cmd::Command;
 use phong::core::Precision;
 use phong::report::file::solve_json;
 use serde_json::Value;
@@ -188,11 +189,7 @@ fn an_opaque_matte_surface_has_no_secondary_rays_and_its_json_is_unchanged() {
 
 #[test]
 fn the_text_says_each_rule_and_that_the_solver_does_not_trace() {
-    let out = Command::cargo_bin("phong")
-        .unwrap()
-        .args(["solve", EXERCISE])
-        .output()
-        .unwrap();
+    let out = support::phong().args(["solve", EXERCISE]).output().unwrap();
     assert_eq!(out.status.code(), Some(0));
     let text = String::from_utf8(out.stdout).unwrap();
     let after = text
@@ -204,8 +201,7 @@ fn the_text_says_each_rule_and_that_the_solver_does_not_trace() {
     assert!(after.contains("T = η_r V + (η_r cos θ_i − √k) N = (0.471405, 0, -0.881917)"));
     assert!(after.contains("traced: level 2 ≤ 2 and weight 0.7 > 0.1"));
     assert!(after.contains("does not trace them"));
-    let out = Command::cargo_bin("phong")
-        .unwrap()
+    let out = support::phong()
         .args(["solve", EXERCISE, "--lang", "pt"])
         .output()
         .unwrap();
@@ -234,8 +230,7 @@ fn the_handouts_data_give_o_t_the_index_and_the_render_settings() {
             "Parâmetros do traçado: nível máximo 2, peso mínimo 0.1",
         ),
     ] {
-        let out = Command::cargo_bin("phong")
-            .unwrap()
+        let out = support::phong()
             .args(["solve", EXERCISE, "--part", "statement", "--lang", lang])
             .output()
             .unwrap();
@@ -250,11 +245,7 @@ fn check(args: &[&str]) -> (i32, Value) {
     for a in args {
         all.extend(["--step", a]);
     }
-    let out = Command::cargo_bin("phong")
-        .unwrap()
-        .args(&all)
-        .output()
-        .unwrap();
+    let out = support::phong().args(&all).output().unwrap();
     let code = out.status.code().unwrap();
     (code, serde_json::from_slice(&out.stdout).expect("JSON"))
 }
@@ -303,8 +294,7 @@ fn a_wrong_yes_or_no_is_wrong_and_says_what_the_answer_means() {
         .as_str()
         .unwrap()
         .contains("no (the ray is not traced)"));
-    let out = Command::cargo_bin("phong")
-        .unwrap()
+    let out = support::phong()
         .args([
             "check",
             EXERCISE,
@@ -342,8 +332,7 @@ fn the_slips_of_the_secondary_rays_are_named() {
 
 #[test]
 fn a_yes_or_no_step_refuses_a_number_with_a_fix() {
-    let out = Command::cargo_bin("phong")
-        .unwrap()
+    let out = support::phong()
         .args(["check", EXERCISE, "--step", "reflection_traced=0.5"])
         .output()
         .unwrap();

@@ -5,12 +5,12 @@
 
 #![cfg(feature = "serve")]
 
+use crate::support;
 use crate::support::http;
 use crate::support::server;
 
 use std::path::Path;
 
-use assert_cmd::Command;
 use serde_json::Value;
 
 use server::Server;
@@ -27,8 +27,7 @@ fn exercise(id: &str) -> String {
 /// What `phong ARGS…` prints, run from the crate's folder (so that the file is named
 /// `exercises/4.2.json`, as the server names its bundled exercises).
 fn cli(args: &[&str]) -> String {
-    let out = Command::cargo_bin("phong")
-        .expect("the binary")
+    let out = support::phong()
         .current_dir(root())
         .args(args)
         .output()
@@ -254,8 +253,7 @@ fn an_answer_that_cannot_be_read_is_a_422_with_the_cli_message_in_either_languag
     assert_eq!(pt.status, 422);
     let message = pt.json()["error"]["message"].as_str().unwrap().to_owned();
     assert!(message.contains("não são três números"), "{message}");
-    let stderr = Command::cargo_bin("phong")
-        .unwrap()
+    let stderr = support::phong()
         .current_dir(root())
         .args([
             "check",
@@ -280,8 +278,7 @@ fn a_problem_with_a_syntax_error_names_the_cli_field_line_and_column() {
     let dir = tempfile::tempdir().unwrap();
     let path = dir.path().join("bad.json");
     std::fs::write(&path, text).unwrap();
-    let out = Command::cargo_bin("phong")
-        .unwrap()
+    let out = support::phong()
         .args(["solve", path.to_str().unwrap(), "--format", "json"])
         .output()
         .unwrap();

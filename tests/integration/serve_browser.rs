@@ -310,12 +310,7 @@ fn white_share(png_bytes: &[u8]) -> f64 {
 
 /// `phong check ARGS…`'s standard output.
 fn check(args: &[&str]) -> String {
-    let out = assert_cmd::Command::cargo_bin("phong")
-        .unwrap()
-        .arg("check")
-        .args(args)
-        .output()
-        .unwrap();
+    let out = support::phong().arg("check").args(args).output().unwrap();
     String::from_utf8(out.stdout).unwrap()
 }
 

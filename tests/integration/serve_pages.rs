@@ -17,6 +17,7 @@
 #![cfg(feature = "serve")]
 
 // Shared with the other tests of phong serve; not every test uses every helper.
+use crate::support;
 #[allow(dead_code)]
 use crate::support::server;
 
@@ -24,7 +25,6 @@ use std::io::{Read, Write};
 use std::net::TcpStream;
 use std::time::Duration;
 
-use assert_cmd::Command;
 use server::Server;
 
 /// A response: its status, headers (names in lower case) and body.
@@ -150,12 +150,7 @@ fn attr<'a>(html: &'a str, marker: &str, name: &str) -> &'a str {
 
 /// `phong check ARGS…`'s standard output (exit 0 or 1: a verdict was given).
 fn check(args: &[&str]) -> String {
-    let out = Command::cargo_bin("phong")
-        .unwrap()
-        .arg("check")
-        .args(args)
-        .output()
-        .unwrap();
+    let out = support::phong().arg("check").args(args).output().unwrap();
     assert!(
         matches!(out.status.code(), Some(0 | 1)),
         "phong check {args:?}: {}",
@@ -606,8 +601,7 @@ fn the_worked_solution_is_the_html_phong_solve_writes() {
     let server = Server::start(&[]);
     let r = get(&server, "/exercise/4.2?solution=1&lang=pt", &[]);
     assert_eq!(r.status, 200);
-    let out = Command::cargo_bin("phong")
-        .unwrap()
+    let out = support::phong()
         .args([
             "solve",
             "exercises/4.2.json",
@@ -683,12 +677,7 @@ fn ones_own_problem_is_solved_and_its_file_shown_and_downloaded() {
     let dir = tempfile::tempdir().unwrap();
     let path = dir.path().join("problem.json");
     std::fs::write(&path, &file.body).unwrap();
-    Command::cargo_bin("phong")
-        .unwrap()
-        .arg("solve")
-        .arg(&path)
-        .assert()
-        .success();
+    support::phong().arg("solve").arg(&path).assert().success();
 }
 
 #[test]

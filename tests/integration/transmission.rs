@@ -5,6 +5,8 @@
 //! an explained pixel of the bundled glass scene. The tracer is called through the library, so
 //! each ray of the tree is read from its record.
 
+use crate::support;
+
 use std::path::Path;
 
 use phong::core::{Vector, V3};
@@ -267,8 +269,7 @@ fn a_tree_that_could_exceed_two_to_the_twenty_rays_is_refused_before_tracing() {
 #[test]
 fn an_explained_pixel_through_the_glass_sphere_shows_its_tree() {
     let scene = concat!(env!("CARGO_MANIFEST_DIR"), "/scenes/glass.json");
-    let out = assert_cmd::Command::cargo_bin("phong")
-        .expect("the binary")
+    let out = support::phong()
         .args([
             "render",
             scene,
@@ -322,8 +323,7 @@ fn an_explained_pixel_through_the_glass_sphere_shows_its_tree() {
     let counts = &doc["rays"];
     assert!(counts["transmission"].as_u64().expect("count") >= 2);
     // The text says the tree.
-    let text = assert_cmd::Command::cargo_bin("phong")
-        .expect("the binary")
+    let text = support::phong()
         .args([
             "render",
             scene,
@@ -348,8 +348,7 @@ fn render_file(scene: &Value, extra: &[&str]) -> (i32, String) {
     let dir = tempfile::TempDir::new().expect("a temporary folder");
     let path = dir.path().join("bad-glass.json");
     std::fs::write(&path, scene.to_string()).expect("written");
-    let out = assert_cmd::Command::cargo_bin("phong")
-        .expect("the binary")
+    let out = support::phong()
         .arg("render")
         .arg(&path)
         .arg("-o")

@@ -3,8 +3,9 @@
 //! and a hit far from the origin keeps the digits of P − P_l. Every expected number is worked
 //! out in the comments from the problem as written, by exact rational arithmetic.
 
+use crate::support;
+
 use std::io::Write;
-use std::process::Command;
 
 use phong::core::Precision;
 use phong::report::file::solve_json;
@@ -47,7 +48,7 @@ fn values<'a>(doc: &'a Value, code: &str) -> &'a Value {
 /// `phong solve FILE --format FORMAT --lang LANG`, its standard output with every run of white
 /// space made one space.
 fn phong_solve(file: &tempfile::NamedTempFile, format: &str, lang: &str) -> String {
-    let out = Command::new(env!("CARGO_BIN_EXE_phong"))
+    let out = support::phong_std()
         .arg("solve")
         .arg(file.path())
         .args(["--format", format, "--lang", lang])

@@ -3,18 +3,16 @@
 //! listed: "como escrito" beside "como enunciado", the answer key breaking "(76, 92, 81)"
 //! across lines, the glass scene's "(0,85; 0,85; 0,85)" beside "0.85".
 
-use std::path::{Path, PathBuf};
-use std::process::Command;
+use crate::support;
 
-use assert_cmd::cargo::CommandCargoExt;
+use std::path::{Path, PathBuf};
 
 fn root() -> &'static Path {
     Path::new(env!("CARGO_MANIFEST_DIR"))
 }
 
 fn phong(args: &[&str]) -> String {
-    let out = Command::cargo_bin("phong")
-        .unwrap()
+    let out = support::phong()
         .current_dir(root())
         .args(args)
         .output()

@@ -4,8 +4,9 @@
 //! writer, in the places a user's text reaches it: a problem's title, question and light name
 //! (`phong moodle`: the quiz, its HTML in CDATA and its SVG diagrams as base64 files), a
 //! student's name, an exercise and an answer (`phong grade --format junit`). Each document is
-//! read by a real XML parser (roxmltree, which applies the `Char` rule), and by `xmllint
-//! --noout` where it is installed (under `CI=true` a missing xmllint is a failure).
+//! read by a real XML parser (roxmltree, which applies the `Char` rule), and, in tests of their
+//! own that are ignored unless asked for (`--ignored`: a missing xmllint is then a failure), by
+//! `xmllint --noout`.
 //!
 //! What is expected is XML 1.0's own rule, written here from the specification: the forbidden
 //! characters are listed below by hand, not taken from the program.
@@ -37,30 +38,6 @@ fn hostile() -> String {
 
 fn root() -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR"))
-}
-
-/// `xml` parsed by roxmltree (which refuses a character outside XML's `Char`) and by xmllint
-/// where installed; `what` names the document in a failure.
-fn assert_well_formed(xml: &str, what: &str) {
-    if let Err(e) = roxmltree::Document::parse(xml) {
-        panic!("{what} is not well-formed XML: {e}");
-    }
-    let Some(lint) = support::optional("xmllint", "apt-get install libxml2-utils") else {
-        return;
-    };
-    let dir = tempfile::tempdir().unwrap();
-    let path = dir.path().join("doc.xml");
-    std::fs::write(&path, xml).unwrap();
-    let out = std::process::Command::new(lint)
-        .arg("--noout")
-        .arg(&path)
-        .output()
-        .unwrap();
-    assert!(
-        out.status.success(),
-        "xmllint refuses {what}: {}",
-        String::from_utf8_lossy(&out.stderr)
-    );
 }
 
 /// No forbidden character is in `text`, written raw or as a character reference.
@@ -138,23 +115,27 @@ fn unbase64(s: &str) -> Vec<u8> {
     out
 }
 
+/// `phong moodle --lang LANG` of the hostile problems in `dir`: the quiz.
+fn hostile_quiz(dir: &Path, lang: &str) -> String {
+    let out = phong()
+        .arg("moodle")
+        .args(hostile_problems(dir))
+        .args(["--lang", lang])
+        .assert()
+        .code(0)
+        .get_output()
+        .stdout
+        .clone();
+    String::from_utf8(out).unwrap()
+}
+
 #[test]
 fn the_moodle_quiz_is_well_formed_whatever_its_titles_and_questions_hold() {
     let dir = tempfile::tempdir().unwrap();
-    let files = hostile_problems(dir.path());
     for lang in ["en", "pt"] {
-        let out = phong()
-            .arg("moodle")
-            .args(&files)
-            .args(["--lang", lang])
-            .assert()
-            .code(0)
-            .get_output()
-            .stdout
-            .clone();
-        let xml = String::from_utf8(out).unwrap();
+        let xml = hostile_quiz(dir.path(), lang);
         let what = format!("the quiz (--lang {lang})");
-        assert_well_formed(&xml, &what);
+        support::roxmltree_well_formed(&xml, &what);
         assert_none_forbidden(&xml, &what);
         // The text is kept, each forbidden character replaced by U+FFFD: the form feed of
         // "Pasted⌂from" and the 31 characters after "PDF: ".
@@ -164,17 +145,31 @@ fn the_moodle_quiz_is_well_formed_whatever_its_titles_and_questions_hold() {
         assert!(!svgs.is_empty(), "4.2's diagrams are embedded");
         for (i, svg) in svgs.iter().enumerate() {
             let what = format!("diagram {i} of the quiz (--lang {lang})");
-            assert_well_formed(svg, &what);
+            support::roxmltree_well_formed(svg, &what);
             assert_none_forbidden(svg, &what);
         }
     }
 }
 
 #[test]
-fn the_junit_report_is_well_formed_whatever_the_students_and_answers_hold() {
+#[ignore = "needs xmllint: apt-get install libxml2-utils"]
+fn xmllint_reads_the_moodle_quiz_and_its_diagrams_as_well_formed() {
     let dir = tempfile::tempdir().unwrap();
+    for lang in ["en", "pt"] {
+        let xml = hostile_quiz(dir.path(), lang);
+        support::xmllint_well_formed(&xml, &format!("the quiz (--lang {lang})"));
+        for (i, svg) in embedded_files(&xml).iter().enumerate() {
+            let what = format!("diagram {i} of the quiz (--lang {lang})");
+            support::xmllint_well_formed(svg, &what);
+        }
+    }
+}
+
+/// `phong grade --format junit --lang LANG` of four rows whose student, exercise and answer hold
+/// the forbidden characters, against 4.1–4.3 copied into `dir`: the report.
+fn hostile_junit(dir: &Path, lang: &str) -> String {
     for f in ["4.1.json", "4.2.json", "4.3.json"] {
-        std::fs::copy(root().join("exercises").join(f), dir.path().join(f)).unwrap();
+        std::fs::copy(root().join("exercises").join(f), dir.join(f)).unwrap();
     }
     // Not one of the CSV's own specials (`,` `"` and the line ends are not forbidden anyway).
     let h = hostile();
@@ -185,32 +180,48 @@ fn the_junit_report_is_well_formed_whatever_the_students_and_answers_hold() {
          bia,4.3 {h},none\n\
          bia,4.1,{h}\n"
     );
-    let input = dir.path().join("answers.csv");
+    let input = dir.join("answers.csv");
     std::fs::write(&input, csv).unwrap();
+    let out = phong()
+        .arg("grade")
+        .arg(&input)
+        .arg("--exercises")
+        .arg(dir)
+        .args(["--format", "junit", "--lang", lang])
+        .output()
+        .unwrap();
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    String::from_utf8(out.stdout).unwrap()
+}
+
+#[test]
+fn the_junit_report_is_well_formed_whatever_the_students_and_answers_hold() {
+    let dir = tempfile::tempdir().unwrap();
     for lang in ["en", "pt"] {
-        let out = phong()
-            .arg("grade")
-            .arg(&input)
-            .arg("--exercises")
-            .arg(dir.path())
-            .args(["--format", "junit", "--lang", lang])
-            .output()
-            .unwrap();
-        assert_eq!(
-            out.status.code(),
-            Some(0),
-            "{}",
-            String::from_utf8_lossy(&out.stderr)
-        );
-        let xml = String::from_utf8(out.stdout).unwrap();
+        let xml = hostile_junit(dir.path(), lang);
         let what = format!("the JUnit report (--lang {lang})");
-        assert_well_formed(&xml, &what);
+        support::roxmltree_well_formed(&xml, &what);
         assert_none_forbidden(&xml, &what);
         // Four rows in, four testcases of a student's or the unknown exercise's out, at least:
         // ana's two, bia's 4.1 and her unknown "4.3 …".
         let doc = roxmltree::Document::parse(&xml).unwrap();
         let cases = doc.descendants().filter(|n| n.has_tag_name("testcase"));
         assert!(cases.count() >= 4, "{xml}");
+    }
+}
+
+#[test]
+#[ignore = "needs xmllint: apt-get install libxml2-utils"]
+fn xmllint_reads_the_junit_report_as_well_formed() {
+    let dir = tempfile::tempdir().unwrap();
+    for lang in ["en", "pt"] {
+        let xml = hostile_junit(dir.path(), lang);
+        support::xmllint_well_formed(&xml, &format!("the JUnit report (--lang {lang})"));
     }
 }
 

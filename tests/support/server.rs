@@ -16,9 +16,14 @@ pub struct Server {
 }
 
 impl Server {
-    /// `phong serve --addr 127.0.0.1:0 ARGS…`, once it accepts connections (at most 60 s).
+    /// `phong serve --addr 127.0.0.1:0 ARGS…`, once it accepts connections (at most 60 s); with
+    /// the locale variables cleared, as `support::phong()` does (this file is also included
+    /// alone, without `support/mod.rs`).
     pub fn start(args: &[&str]) -> Server {
         let mut child = Command::new(env!("CARGO_BIN_EXE_phong"))
+            .env_remove("LC_ALL")
+            .env_remove("LC_MESSAGES")
+            .env_remove("LANG")
             .args(["serve", "--addr", "127.0.0.1:0"])
             .args(args)
             .stdin(Stdio::null())
