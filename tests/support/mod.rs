@@ -89,10 +89,22 @@ pub fn roxmltree_well_formed(xml: &str, what: &str) {
     }
 }
 
+/// `xml` is valid against the XML Schema `xsd` for `xmllint --schema`; `what` names the
+/// document in a failure. Only in a test `#[ignore = "needs xmllint: apt-get install
+/// libxml2-utils"]`: a missing xmllint fails it.
+pub fn xmllint_schema_valid(xml: &str, xsd: &std::path::Path, what: &str) {
+    xmllint(xml, &["--schema".as_ref(), xsd.as_os_str()], what);
+}
+
 /// `xml` is well formed for xmllint (`xmllint --noout`), a second parser after
 /// [`roxmltree_well_formed`]; `what` names the document in a failure. Only in a test
 /// `#[ignore = "needs xmllint: apt-get install libxml2-utils"]`: a missing xmllint fails it.
 pub fn xmllint_well_formed(xml: &str, what: &str) {
+    xmllint(xml, &[], what);
+}
+
+/// `xmllint --noout ARGS FILE` accepts `xml` written to FILE.
+fn xmllint(xml: &str, args: &[&std::ffi::OsStr], what: &str) {
     let Some(lint) = require("xmllint", "apt-get install libxml2-utils") else {
         return;
     };
@@ -101,6 +113,7 @@ pub fn xmllint_well_formed(xml: &str, what: &str) {
     std::fs::write(&path, xml).unwrap();
     let out = std::process::Command::new(lint)
         .arg("--noout")
+        .args(args)
         .arg(&path)
         .output()
         .unwrap();
