@@ -795,8 +795,59 @@ type Mark<'a> = (Item, (f64, f64), (f64, f64), &'a str, String);
 /// the side its label prefers.
 type Named<'a> = (&'a str, Vec<&'a str>, (f64, f64), (f64, f64), f64, f64);
 
-/// Lays out the diagram of one light.
+/// A diagram's figure in each language, laid out at its first drawing and kept: a document
+/// drawn in several formats (SVG in HTML and Markdown, TikZ in LaTeX, the Moodle quiz) lays it
+/// out once. The figure is the one of the diagram's fields as they are at that first drawing.
+#[derive(Clone, Default)]
+pub struct Laid([std::sync::OnceLock<Figure>; 2]);
+
+impl std::fmt::Debug for Laid {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str("Laid")
+    }
+}
+
+/// A kept layout is a function of the diagram's other fields: it never tells two diagrams apart.
+impl PartialEq for Laid {
+    fn eq(&self, _: &Self) -> bool {
+        true
+    }
+}
+
+/// The diagram of one light, laid out ([`Laid`]: once per language), its ids starting with
+/// `id`.
 pub fn figure(d: &Diagram, id: &str, lang: Lang) -> Figure {
+    let slot = match lang {
+        Lang::En => 0,
+        Lang::Pt => 1,
+    };
+    d.laid.0[slot].get_or_init(|| lay_out(d, lang)).with_id(id)
+}
+
+impl Figure {
+    /// The figure with `id` before each of its ids (laid out with none: "-N", "-P-label").
+    fn with_id(&self, id: &str) -> Figure {
+        let mut f = self.clone();
+        for item in &mut f.items {
+            match item {
+                Item::Line { id: i, .. }
+                | Item::Dot { id: i, .. }
+                | Item::Eye { id: i, .. }
+                | Item::Cone { id: i, .. }
+                | Item::Arc { id: i, .. } => i.insert_str(0, id),
+                Item::Back => {}
+            }
+        }
+        for l in &mut f.labels {
+            l.id.insert_str(0, id);
+        }
+        f
+    }
+}
+
+/// Lays out the diagram of one light, its ids without their prefix ("-N").
+fn lay_out(d: &Diagram, lang: Lang) -> Figure {
+    let id = "";
     let pl = plane(d);
     let n = d.n;
     let comp = |x: V| (dot(x, pl.across), dot(x, n));
@@ -1779,6 +1830,7 @@ mod tests {
             status: LightStatus::Lit,
             cone: None,
             ray: None,
+            laid: Laid::default(),
         }
     }
 

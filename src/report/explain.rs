@@ -208,6 +208,9 @@ pub struct Diagram {
     /// A ray problem's ray: its unit direction D and the t of the point (negative: the point
     /// is behind the ray's origin, on its line).
     pub ray: Option<([f64; 3], f64)>,
+    /// Its figure, laid out at its first drawing (`report::diagram::figure`) and kept for the
+    /// other formats: the fields above must not change after it.
+    pub(crate) laid: super::diagram::Laid,
 }
 
 fn v<R: Real>(x: V3<R>) -> [f64; 3] {
@@ -1461,6 +1464,7 @@ fn light<R: Real>(
                 _ => None,
             },
             ray: None,
+            laid: Default::default(),
         });
     }
 }
