@@ -737,8 +737,14 @@ messages! {
             "veja em `phong schema` a forma esperada";
         /// An array longer than three numbers.
         ThreeNumbers =>
-            "give exactly three numbers [x, y, z] (a triangle: three vertices)",
-            "dê exatamente três números [x, y, z] (um triângulo: três vértices)";
+            "give exactly three numbers [x, y, z]",
+            "dê exatamente três números [x, y, z]";
+        /// A triangle given more than three vertices.
+        ThreeVertices =>
+            "a triangle has three vertices: give exactly three, [[x, y, z], [x, y, z], [x, y, \
+             z]] (a polygon with more is made of several triangles)",
+            "um triângulo tem três vértices: dê exatamente três, [[x, y, z], [x, y, z], [x, y, \
+             z]] (um polígono com mais vértices é feito de vários triângulos)";
         /// `NaN`, `Infinity` or `inf`, as written.
         NotFinite { word: String } =>
             "JSON has no {word}: every number must be finite, such as 0 or 1e300",

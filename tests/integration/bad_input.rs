@@ -419,6 +419,96 @@ fn a_truncated_file_is_rejected_at_its_end() {
     );
 }
 
+/// A point problem whose material's ambient colour is `color`, written as given (one line, so
+/// that the array stays on the line the parser stops at).
+fn with_ambient_color(color: &str) -> String {
+    format!(
+        "{{\n  \"lights\": [{{ \"type\": \"ambient\", \"color\": [1, 1, 1] }}],\n  \
+         \"point\": {{ \"material\": {{ \"ambient\": {{ \"k\": 1, \"color\": {color} }} }} }}\n}}\n"
+    )
+}
+
+#[test]
+fn a_colour_mixing_decimal_commas_with_points_is_named_as_a_decimal_comma() {
+    // A student writes one number or two with a comma, the others with a point: JSON reads
+    // four or five numbers. The message is the one every comma gets, with the numbers mended;
+    // no triangle.
+    for (written, fixed) in [
+        ("[0,5, 0.7, 0.3]", "[0.5, 0.7, 0.3]"),
+        ("[0.5, 0,7, 0,3]", "[0.5, 0.7, 0.3]"),
+        ("[1, 0,5, 0]", "[1, 0.5, 0]"),
+    ] {
+        let bad = rejected_text(
+            &with_ambient_color(written),
+            &["f64"],
+            Expect {
+                field: Some("point.material.ambient.color"),
+                says: &[
+                    &format!("{written} has numbers written with a decimal comma"),
+                    &format!("Fix: write {fixed}"),
+                ],
+            },
+        );
+        assert!(!bad.stderr.contains("triangle"), "{}", bad.stderr);
+        let pt = phong(&["solve", utf8(&bad.path), "--lang", "pt"]);
+        assert_eq!(pt.code, Some(BAD_INPUT), "{}", pt.stderr);
+        for says in [
+            format!(
+                "point.material.ambient.color: {written} tem números escritos com vírgula decimal"
+            ),
+            format!("Correção: escreva {fixed}"),
+        ] {
+            assert!(pt.stderr.contains(&says), "{says:?} not in:\n{}", pt.stderr);
+        }
+        assert!(!pt.stderr.contains("triângulo"), "{}", pt.stderr);
+    }
+    // Three integers, as JSON reads them, are a colour: [1, 0, 5] is no decimal comma.
+    check_solves(&with_ambient_color("[1, 0, 5]"), "f64");
+}
+
+#[test]
+fn an_array_too_long_names_a_triangle_only_for_a_triangle_s_vertices() {
+    // A colour of four numbers: three numbers, and nothing about triangles.
+    let bad = rejected_text(
+        &with_ambient_color("[1, 1, 1, 1]"),
+        &["f64"],
+        Expect {
+            field: Some("point.material.ambient.color"),
+            says: &["Fix: give exactly three numbers [x, y, z]"],
+        },
+    );
+    assert!(!bad.stderr.contains("triangle"), "{}", bad.stderr);
+    let pt = phong(&["solve", utf8(&bad.path), "--lang", "pt"]);
+    assert!(
+        pt.stderr
+            .contains("Correção: dê exatamente três números [x, y, z]"),
+        "{}",
+        pt.stderr
+    );
+    assert!(!pt.stderr.contains("triângulo"), "{}", pt.stderr);
+    // A triangle of four vertices: a triangle has three.
+    let four = with(
+        ray_problem(),
+        "/surfaces/0",
+        json!({
+            "type": "triangle",
+            "vertices": [[-1, -1, 0], [1, -1, 0], [0, 1, 0], [0, 0, 1]],
+            "material": "M"
+        }),
+    );
+    let bad = rejected(
+        &four,
+        "surfaces[0].vertices",
+        &["three vertices", "triangle"],
+    );
+    let pt = phong(&["solve", utf8(&bad.path), "--lang", "pt"]);
+    assert!(
+        pt.stderr.contains("três vértices") && pt.stderr.contains("triângulo"),
+        "{}",
+        pt.stderr
+    );
+}
+
 // ---------------------------------------------------------------------------------------------
 // Missing and unknown fields
 // ---------------------------------------------------------------------------------------------
