@@ -172,13 +172,17 @@ pub fn parse_str(path: &Path, source: &str) -> Result<ProblemFile, ProblemError>
 /// message is read into a value ([`Parse::read`]) here, once.
 fn parse_tracked(path: &Path, source: &str) -> Result<ProblemFile, ProblemError> {
     if path.file_name().is_some_and(|n| n == POLICY_FILE) {
+        // The fix lists the problems of the folder the file was given in, as written
+        // (`exercicios/` of `exercicios/course-policy.json`; nothing for a name alone).
+        let written = path.to_string_lossy();
+        let folder = written.strip_suffix(POLICY_FILE).unwrap_or("").to_owned();
         return Err(syntax(
             path,
             1,
             1,
             None,
             Parse::CoursePolicy,
-            SyntaxFix::LeavePolicyOut,
+            SyntaxFix::LeavePolicyOut { folder },
         ));
     }
     let mut de = serde_json::Deserializer::from_str(source);

@@ -791,11 +791,12 @@ messages! {
              encoding, such as Latin-1, or from a file that is not a problem file",
             "salve o arquivo como UTF-8 (JSON é texto UTF-8); o byte pode vir de outra \
              codificação, como Latin-1, ou de um arquivo que não é um arquivo de problema";
-        /// The course policy given among problem files.
-        LeavePolicyOut =>
-            "leave it out of the problem files (exercises/4.*.json, not exercises/*.json): check, \
+        /// The course policy given among problem files; `folder` is the folder it was given
+        /// in, as written, with its separator (`exercicios/`), or empty.
+        LeavePolicyOut { folder: String } =>
+            "leave it out of the problem files ({folder}4.*.json, not {folder}*.json): check, \
              grade, serve and moodle read it from the exercises' folder themselves",
-            "deixe-a fora dos arquivos de problema (exercises/4.*.json, não exercises/*.json): \
+            "deixe-a fora dos arquivos de problema ({folder}4.*.json, não {folder}*.json): \
              check, grade, serve e moodle a leem da pasta dos exercícios";
         /// A document that is not an object.
         OneObject =>

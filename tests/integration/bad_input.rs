@@ -945,6 +945,74 @@ fn a_file_that_does_not_exist_is_rejected() {
     }
 }
 
+#[test]
+fn the_course_policy_given_as_a_problem_names_the_folder_given_in_its_fix() {
+    // `phong solve exercicios/*.json` where `exercicios/course-policy.json` is the course
+    // policy: the fix lists the problems of that folder, as written, not of `exercises/`.
+    let dir = TempDir::new().expect("a temporary folder");
+    let folder = dir.path().join("exercicios");
+    fs::create_dir(&folder).expect("created");
+    fs::write(folder.join("4.1.json"), pretty(&point_problem())).expect("written");
+    fs::write(folder.join("course-policy.json"), "{ \"strict\": true }\n").expect("written");
+    let run = |at: &Path, args: &[&str]| {
+        let out = crate::support::phong()
+            .current_dir(at)
+            .args(args)
+            .output()
+            .expect("phong runs");
+        (
+            out.status.code(),
+            String::from_utf8_lossy(&out.stdout).into_owned(),
+            String::from_utf8_lossy(&out.stderr).into_owned(),
+        )
+    };
+    let given = ["exercicios/4.1.json", "exercicios/course-policy.json"];
+    let (code, _, en) = run(dir.path(), &[&["solve"], &given[..]].concat());
+    assert_eq!(code, Some(BAD_INPUT), "{en}");
+    assert!(
+        en.contains(
+            "exercicios/course-policy.json:1:1: this is the course policy (tolerances, credit, \
+             points), not a problem. Fix: leave it out of the problem files \
+             (exercicios/4.*.json, not exercicios/*.json)"
+        ),
+        "{en}"
+    );
+    assert!(!en.contains("exercises/"), "{en}");
+    let (code, _, pt) = run(
+        dir.path(),
+        &[&["solve", "--lang", "pt"], &given[..]].concat(),
+    );
+    assert_eq!(code, Some(BAD_INPUT), "{pt}");
+    assert!(
+        pt.contains(
+            "Correção: deixe-a fora dos arquivos de problema (exercicios/4.*.json, não \
+             exercicios/*.json)"
+        ),
+        "{pt}"
+    );
+    // The JSON error keeps its kind and (no) field.
+    let (_, out, _) = run(
+        dir.path(),
+        &["solve", "exercicios/course-policy.json", "--format", "json"],
+    );
+    let doc: Value = serde_json::from_str(&out).expect("JSON");
+    assert_eq!(doc["error"]["kind"], "syntax", "{doc}");
+    assert_eq!(doc["error"]["field"], Value::Null, "{doc}");
+    assert!(
+        doc["error"]["message"]
+            .as_str()
+            .is_some_and(|m| m.contains("(exercicios/4.*.json, not exercicios/*.json)")),
+        "{doc}"
+    );
+    // Given from inside the folder, with no folder written: the names alone.
+    let (code, _, en) = run(&folder, &["solve", "4.1.json", "course-policy.json"]);
+    assert_eq!(code, Some(BAD_INPUT), "{en}");
+    assert!(
+        en.contains("Fix: leave it out of the problem files (4.*.json, not *.json)"),
+        "{en}"
+    );
+}
+
 /// A folder with `good.json` (the point problem), `bad.json` (falloff 3) and `good2.json` (the ray
 /// problem).
 fn batch_folder() -> (TempDir, [PathBuf; 3]) {
