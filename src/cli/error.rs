@@ -38,7 +38,8 @@ pub(crate) enum CliError {
     },
     /// Flags or arguments that do not go together, said as one sentence (`WHAT. Fix: FIX`).
     Conflict { fault: FaultBox },
-    /// A flag naming a folder gives something else (`PATH: FLAG: not a folder. Fix: FIX`).
+    /// A flag (or an argument, as `DIR`) naming a folder gives something else (`PATH: FLAG: not
+    /// a folder. Fix: FIX`).
     NotAFolder {
         path: PathBuf,
         flag: &'static str,

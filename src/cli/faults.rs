@@ -163,7 +163,7 @@ crate::faults! {
             "{other} and {flag} are the same file, {output}: one would replace the other",
             "{other} e {flag} são o mesmo arquivo, {output}: um substituiria o outro";
             fix "give {flag} another file", "dê outro arquivo a {flag}";
-        /// `--exercises` not a folder.
+        /// `--exercises` (or `phong policy`'s DIR) not a folder.
         ExercisesNotAFolder =>
             "not a folder", "não é uma pasta";
             fix "give the folder that holds the exercise files (exercise 4.2 is DIR/4.2.json)",

@@ -172,13 +172,17 @@ pub fn parse_str(path: &Path, source: &str) -> Result<ProblemFile, ProblemError>
 /// message is read into a value ([`Parse::read`]) here, once.
 fn parse_tracked(path: &Path, source: &str) -> Result<ProblemFile, ProblemError> {
     if path.file_name().is_some_and(|n| n == POLICY_FILE) {
+        // The fix lists the problems of the folder the file was given in, as written
+        // (`exercicios/` of `exercicios/course-policy.json`; nothing for a name alone).
+        let written = path.to_string_lossy();
+        let folder = written.strip_suffix(POLICY_FILE).unwrap_or("").to_owned();
         return Err(syntax(
             path,
             1,
             1,
             None,
             Parse::CoursePolicy,
-            SyntaxFix::LeavePolicyOut,
+            SyntaxFix::LeavePolicyOut { folder },
         ));
     }
     let mut de = serde_json::Deserializer::from_str(source);
@@ -204,8 +208,17 @@ fn parse_tracked(path: &Path, source: &str) -> Result<ProblemFile, ProblemError>
             }
             (c.what, c.fix)
         } else if what == Parse::TrailingCharacters && field.is_some() {
-            // serde_json's words for an array longer than the [x, y, z] it was read into.
-            (Parse::TooManyElements, SyntaxFix::ThreeNumbers)
+            // serde_json's words for an array longer than the [x, y, z] it was read into: a
+            // triangle's corners, or three numbers.
+            let corners = field
+                .as_deref()
+                .is_some_and(|f| f == "vertices" || f.ends_with(".vertices"));
+            let fix = if corners {
+                SyntaxFix::ThreeVertices
+            } else {
+                SyntaxFix::ThreeNumbers
+            };
+            (Parse::TooManyElements, fix)
         } else if let Some(word) = non_number_at(source, inner.line(), inner.column()) {
             (
                 what,
@@ -347,7 +360,9 @@ struct DecimalComma {
 /// Portuguese: JSON reads the comma as a separator. Two forms are recognised on the error's
 /// line: an object's value cut in two (`0,5` read as `0` and a key `5`, "key must be a
 /// string"), and an array of three numbers read as more ("trailing characters") whose items,
-/// split at the commas followed by a space, are three numbers with decimal commas.
+/// split at the commas followed by a space, are three numbers, one or more of them with a
+/// decimal comma and the others whole or with a decimal point (`[0,5, 0.7, 0.3]`). Only an array
+/// that failed as three numbers is read so: `[1, 0,5]` is JSON's valid `[1, 0, 5]`.
 fn decimal_comma_at(
     source: &str,
     line: usize,
@@ -403,11 +418,12 @@ fn decimal_comma_at(
         }
     }
     items.push(inner[from..].trim());
+    // A number as written: digits, split at most once by a decimal comma or point.
     let number = |t: &str| {
         let t = t.strip_prefix('-').unwrap_or(t);
         !t.is_empty()
-            && t.split(',').count() <= 2
-            && t.split(',')
+            && t.split([',', '.']).count() <= 2
+            && t.split([',', '.'])
                 .all(|d| !d.is_empty() && d.bytes().all(|b| b.is_ascii_digit()))
     };
     if items.len() != 3 || !items.iter().all(|t| number(t)) || !inner.contains(char::is_numeric) {

@@ -737,8 +737,14 @@ messages! {
             "veja em `phong schema` a forma esperada";
         /// An array longer than three numbers.
         ThreeNumbers =>
-            "give exactly three numbers [x, y, z] (a triangle: three vertices)",
-            "dê exatamente três números [x, y, z] (um triângulo: três vértices)";
+            "give exactly three numbers [x, y, z]",
+            "dê exatamente três números [x, y, z]";
+        /// A triangle given more than three vertices.
+        ThreeVertices =>
+            "a triangle has three vertices: give exactly three, [[x, y, z], [x, y, z], [x, y, \
+             z]] (a polygon with more is made of several triangles)",
+            "um triângulo tem três vértices: dê exatamente três, [[x, y, z], [x, y, z], [x, y, \
+             z]] (um polígono com mais vértices é feito de vários triângulos)";
         /// `NaN`, `Infinity` or `inf`, as written.
         NotFinite { word: String } =>
             "JSON has no {word}: every number must be finite, such as 0 or 1e300",
@@ -785,11 +791,12 @@ messages! {
              encoding, such as Latin-1, or from a file that is not a problem file",
             "salve o arquivo como UTF-8 (JSON é texto UTF-8); o byte pode vir de outra \
              codificação, como Latin-1, ou de um arquivo que não é um arquivo de problema";
-        /// The course policy given among problem files.
-        LeavePolicyOut =>
-            "leave it out of the problem files (exercises/4.*.json, not exercises/*.json): check, \
+        /// The course policy given among problem files; `folder` is the folder it was given
+        /// in, as written, with its separator (`exercicios/`), or empty.
+        LeavePolicyOut { folder: String } =>
+            "leave it out of the problem files ({folder}4.*.json, not {folder}*.json): check, \
              grade, serve and moodle read it from the exercises' folder themselves",
-            "deixe-a fora dos arquivos de problema (exercises/4.*.json, não exercises/*.json): \
+            "deixe-a fora dos arquivos de problema ({folder}4.*.json, não {folder}*.json): \
              check, grade, serve e moodle a leem da pasta dos exercícios";
         /// A document that is not an object.
         OneObject =>

@@ -420,6 +420,96 @@ fn a_truncated_file_is_rejected_at_its_end() {
     );
 }
 
+/// A point problem whose material's ambient colour is `color`, written as given (one line, so
+/// that the array stays on the line the parser stops at).
+fn with_ambient_color(color: &str) -> String {
+    format!(
+        "{{\n  \"lights\": [{{ \"type\": \"ambient\", \"color\": [1, 1, 1] }}],\n  \
+         \"point\": {{ \"material\": {{ \"ambient\": {{ \"k\": 1, \"color\": {color} }} }} }}\n}}\n"
+    )
+}
+
+#[test]
+fn a_colour_mixing_decimal_commas_with_points_is_named_as_a_decimal_comma() {
+    // A student writes one number or two with a comma, the others with a point: JSON reads
+    // four or five numbers. The message is the one every comma gets, with the numbers mended;
+    // no triangle.
+    for (written, fixed) in [
+        ("[0,5, 0.7, 0.3]", "[0.5, 0.7, 0.3]"),
+        ("[0.5, 0,7, 0,3]", "[0.5, 0.7, 0.3]"),
+        ("[1, 0,5, 0]", "[1, 0.5, 0]"),
+    ] {
+        let bad = rejected_text(
+            &with_ambient_color(written),
+            &["f64"],
+            Expect {
+                field: Some("point.material.ambient.color"),
+                says: &[
+                    &format!("{written} has numbers written with a decimal comma"),
+                    &format!("Fix: write {fixed}"),
+                ],
+            },
+        );
+        assert!(!bad.stderr.contains("triangle"), "{}", bad.stderr);
+        let pt = phong(&["solve", utf8(&bad.path), "--lang", "pt"]);
+        assert_eq!(pt.code, Some(BAD_INPUT), "{}", pt.stderr);
+        for says in [
+            format!(
+                "point.material.ambient.color: {written} tem números escritos com vírgula decimal"
+            ),
+            format!("Correção: escreva {fixed}"),
+        ] {
+            assert!(pt.stderr.contains(&says), "{says:?} not in:\n{}", pt.stderr);
+        }
+        assert!(!pt.stderr.contains("triângulo"), "{}", pt.stderr);
+    }
+    // Three integers, as JSON reads them, are a colour: [1, 0, 5] is no decimal comma.
+    check_solves(&with_ambient_color("[1, 0, 5]"), "f64");
+}
+
+#[test]
+fn an_array_too_long_names_a_triangle_only_for_a_triangle_s_vertices() {
+    // A colour of four numbers: three numbers, and nothing about triangles.
+    let bad = rejected_text(
+        &with_ambient_color("[1, 1, 1, 1]"),
+        &["f64"],
+        Expect {
+            field: Some("point.material.ambient.color"),
+            says: &["Fix: give exactly three numbers [x, y, z]"],
+        },
+    );
+    assert!(!bad.stderr.contains("triangle"), "{}", bad.stderr);
+    let pt = phong(&["solve", utf8(&bad.path), "--lang", "pt"]);
+    assert!(
+        pt.stderr
+            .contains("Correção: dê exatamente três números [x, y, z]"),
+        "{}",
+        pt.stderr
+    );
+    assert!(!pt.stderr.contains("triângulo"), "{}", pt.stderr);
+    // A triangle of four vertices: a triangle has three.
+    let four = with(
+        ray_problem(),
+        "/surfaces/0",
+        json!({
+            "type": "triangle",
+            "vertices": [[-1, -1, 0], [1, -1, 0], [0, 1, 0], [0, 0, 1]],
+            "material": "M"
+        }),
+    );
+    let bad = rejected(
+        &four,
+        "surfaces[0].vertices",
+        &["three vertices", "triangle"],
+    );
+    let pt = phong(&["solve", utf8(&bad.path), "--lang", "pt"]);
+    assert!(
+        pt.stderr.contains("três vértices") && pt.stderr.contains("triângulo"),
+        "{}",
+        pt.stderr
+    );
+}
+
 // ---------------------------------------------------------------------------------------------
 // Missing and unknown fields
 // ---------------------------------------------------------------------------------------------
@@ -854,6 +944,74 @@ fn a_file_that_does_not_exist_is_rejected() {
             },
         );
     }
+}
+
+#[test]
+fn the_course_policy_given_as_a_problem_names_the_folder_given_in_its_fix() {
+    // `phong solve exercicios/*.json` where `exercicios/course-policy.json` is the course
+    // policy: the fix lists the problems of that folder, as written, not of `exercises/`.
+    let dir = TempDir::new().expect("a temporary folder");
+    let folder = dir.path().join("exercicios");
+    fs::create_dir(&folder).expect("created");
+    fs::write(folder.join("4.1.json"), pretty(&point_problem())).expect("written");
+    fs::write(folder.join("course-policy.json"), "{ \"strict\": true }\n").expect("written");
+    let run = |at: &Path, args: &[&str]| {
+        let out = crate::support::phong()
+            .current_dir(at)
+            .args(args)
+            .output()
+            .expect("phong runs");
+        (
+            out.status.code(),
+            String::from_utf8_lossy(&out.stdout).into_owned(),
+            String::from_utf8_lossy(&out.stderr).into_owned(),
+        )
+    };
+    let given = ["exercicios/4.1.json", "exercicios/course-policy.json"];
+    let (code, _, en) = run(dir.path(), &[&["solve"], &given[..]].concat());
+    assert_eq!(code, Some(BAD_INPUT), "{en}");
+    assert!(
+        en.contains(
+            "exercicios/course-policy.json:1:1: this is the course policy (tolerances, credit, \
+             points), not a problem. Fix: leave it out of the problem files \
+             (exercicios/4.*.json, not exercicios/*.json)"
+        ),
+        "{en}"
+    );
+    assert!(!en.contains("exercises/"), "{en}");
+    let (code, _, pt) = run(
+        dir.path(),
+        &[&["solve", "--lang", "pt"], &given[..]].concat(),
+    );
+    assert_eq!(code, Some(BAD_INPUT), "{pt}");
+    assert!(
+        pt.contains(
+            "Correção: deixe-a fora dos arquivos de problema (exercicios/4.*.json, não \
+             exercicios/*.json)"
+        ),
+        "{pt}"
+    );
+    // The JSON error keeps its kind and (no) field.
+    let (_, out, _) = run(
+        dir.path(),
+        &["solve", "exercicios/course-policy.json", "--format", "json"],
+    );
+    let doc: Value = serde_json::from_str(&out).expect("JSON");
+    assert_eq!(doc["error"]["kind"], "syntax", "{doc}");
+    assert_eq!(doc["error"]["field"], Value::Null, "{doc}");
+    assert!(
+        doc["error"]["message"]
+            .as_str()
+            .is_some_and(|m| m.contains("(exercicios/4.*.json, not exercicios/*.json)")),
+        "{doc}"
+    );
+    // Given from inside the folder, with no folder written: the names alone.
+    let (code, _, en) = run(&folder, &["solve", "4.1.json", "course-policy.json"]);
+    assert_eq!(code, Some(BAD_INPUT), "{en}");
+    assert!(
+        en.contains("Fix: leave it out of the problem files (4.*.json, not *.json)"),
+        "{en}"
+    );
 }
 
 /// A folder with `good.json` (the point problem), `bad.json` (falloff 3) and `good2.json` (the ray

@@ -226,6 +226,57 @@ fn an_unreadable_csv_or_folder_exits_2() {
 }
 
 #[test]
+fn phong_policy_refuses_a_folder_that_does_not_exist_or_is_a_file() {
+    // As `--exercises` does: a folder that is not one is named, with the fix, exit 2, and no
+    // policy is printed.
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::write(dir.path().join("meu.json"), "{}").unwrap();
+    for given in ["naoexiste/", "meu.json"] {
+        let out = phong()
+            .current_dir(dir.path())
+            .args(["policy", given])
+            .output()
+            .unwrap();
+        let en = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(2), "{given}: {en}");
+        assert!(out.stdout.is_empty(), "{given}: a policy was printed");
+        assert!(
+            en.contains(&format!(
+                "{given}: DIR: not a folder. Fix: give the folder that holds the exercise files"
+            )),
+            "{en}"
+        );
+        let out = phong()
+            .current_dir(dir.path())
+            .env("LANG", "pt_BR.UTF-8")
+            .args(["policy", given])
+            .output()
+            .unwrap();
+        let pt = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(2), "{given}: {pt}");
+        assert!(
+            pt.contains(&format!(
+                "{given}: DIR: não é uma pasta. Correção: dê a pasta que tem os arquivos dos \
+                 exercícios"
+            )),
+            "{pt}"
+        );
+    }
+    // A folder is read as before; none given is the current folder.
+    phong()
+        .current_dir(dir.path())
+        .args(["policy", "."])
+        .assert()
+        .code(0)
+        .stdout(predicate::str::contains("\"reading_credit\": 0.5"));
+    phong()
+        .current_dir(dir.path())
+        .arg("policy")
+        .assert()
+        .code(0);
+}
+
+#[test]
 fn grade_honours_each_keys_tolerance_and_accepts_no_hit() {
     let dir = exercises();
     // A key with its own tolerance ±0.05: (0.53, 0.7, 0.3) is 0.03 from (0.5, 0.7, 0.3), right

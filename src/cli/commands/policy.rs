@@ -5,6 +5,7 @@
 use crate::cli::args::PolicyCmdArgs;
 use crate::cli::error::CliError;
 use crate::cli::exit::Exit;
+use crate::cli::faults::CliFault;
 use crate::cli::output;
 
 pub(crate) fn run(args: &PolicyCmdArgs) -> Result<Exit, CliError> {
@@ -12,6 +13,15 @@ pub(crate) fn run(args: &PolicyCmdArgs) -> Result<Exit, CliError> {
         .folder
         .clone()
         .unwrap_or_else(|| std::path::PathBuf::from("."));
+    // A folder that does not exist, or a file, has no policy of its own: the defaults printed
+    // for it would pass for its policy. Refused as `grade --exercises` refuses it.
+    if !folder.is_dir() {
+        return Err(CliError::NotAFolder {
+            path: folder,
+            flag: "DIR",
+            fault: CliFault::ExercisesNotAFolder,
+        });
+    }
     let policy = super::course_policy(args.policy.policy.as_deref(), Some(&folder))?;
     let text = crate::report::json::pretty(&policy.to_json());
     output::emit(args.output.as_deref(), &text)?;
