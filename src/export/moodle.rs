@@ -59,6 +59,8 @@ pub(crate) struct Entry {
     pub tolerance: f64,
     /// The absolute tolerance per channel on the 255 scale.
     pub tolerance_bits8: f64,
+    /// The exercise's points under the course policy (`Policy::points_of` its file's name).
+    pub points: f64,
 }
 
 /// How the course policy grades the quiz's answers ([`Grading::of`]).
@@ -70,7 +72,12 @@ pub(crate) struct Grading {
     /// The choice that answers "the ray meets nothing": the language's word ("none",
     /// "nenhuma") when the course accepts it, else the course's first word.
     pub none: String,
+    /// What a point weighs in a part's weight ([`Grading::weigh`]).
+    pub per_point: f64,
 }
+
+/// The share of a point a question's mark is exact to ([`Grading::weigh`]).
+const POINT_STEPS: [f64; 4] = [1.0, 10.0, 100.0, 1000.0];
 
 /// The fractions Moodle's importer accepts, in percent (`question/format.php`'s grade list,
 /// as the course's platform notes give it): any other is an import error.
@@ -109,6 +116,7 @@ impl Grading {
                 format!("%{}%", number(*grade))
             },
             eight_bit: policy.eight_bit == crate::check::policy::EightBit::Read,
+            per_point: 1.0,
             none: {
                 let word = words(lang).none;
                 if crate::check::answer::is_no_hit_in(word, &policy.no_hit) {
@@ -122,6 +130,32 @@ impl Grading {
                 }
             },
         })
+    }
+}
+
+impl Grading {
+    /// Weighs the quiz's questions by the course policy's points. Moodle's importer makes a
+    /// Cloze question's mark the sum of its parts' weights, whole numbers
+    /// (`question/type/multianswer/questiontype.php`, `qtype_multianswer_extract_question`; the
+    /// question's `<defaultgrade>` is not read): a colour question has three parts and a no-hit
+    /// question one, so a colour part weighs the points and the no-hit part three times them,
+    /// each question's mark being three times its points. Points with decimals are scaled by 10,
+    /// 100 or 1,000 for every question alike (to a thousandth of a point at most).
+    pub(crate) fn weigh(&mut self, entries: &[&Entry]) {
+        let whole = |k: f64| {
+            entries
+                .iter()
+                .all(|e| (e.points * k - (e.points * k).round()).abs() < 1e-9)
+        };
+        self.per_point = POINT_STEPS
+            .into_iter()
+            .find(|&k| whole(k))
+            .unwrap_or(1000.0);
+    }
+
+    /// The weight of each of a question's `parts` parts (3: a colour; 1: no hit) for `points`.
+    fn weight(&self, points: f64, parts: u64) -> u64 {
+        (points * self.per_point).round() as u64 * (3 / parts)
     }
 }
 
@@ -357,11 +391,11 @@ fn channel(
         tolerance: None,
         feedback: vec![w.other.to_owned()],
     });
-    Some(part(1, "NUMERICAL", &alts))
+    Some(part(grading.weight(entry.points, 3), "NUMERICAL", &alts))
 }
 
 /// A Cloze sub-question.
-fn part(weight: u32, kind: &str, alts: &[Alt]) -> String {
+fn part(weight: u64, kind: &str, alts: &[Alt]) -> String {
     let body: Vec<String> = alts
         .iter()
         .map(|a| {
@@ -486,7 +520,7 @@ fn no_hit_choice(expected: &Expected, entry: &Entry, grading: &Grading, lang: La
             }
         }
     }
-    part(1, "MULTICHOICE_VS", &alts)
+    part(grading.weight(entry.points, 1), "MULTICHOICE_VS", &alts)
 }
 
 /// A line of a solution in HTML with MathJax's inline delimiters.

@@ -50,6 +50,9 @@ struct Alt {
 
 #[derive(Debug, Clone)]
 struct Sub {
+    /// Its weight: Moodle's importer reads an empty weight (or 0) as 1, and makes the
+    /// question's mark the sum of its parts' weights.
+    weight: u64,
     kind: String,
     alts: Vec<Alt>,
 }
@@ -193,6 +196,7 @@ fn cloze(text: &str) -> Result<Vec<Sub>, String> {
             return Err("no 100 % answer".into());
         }
         subs.push(Sub {
+            weight: weight.parse().ok().filter(|&w| w > 0).unwrap_or(1),
             kind: kind.to_owned(),
             alts,
         });
@@ -411,12 +415,14 @@ fn every_bundled_exercise_makes_a_well_formed_valid_quiz_in_both_languages() {
             xml.matches("<question type=\"category\">").count(),
             exercises().len()
         );
-        // Colour problems: three NUMERICAL parts of weight 1 with absolute tolerances; the
-        // no-hit problem (4.3 as written): one MULTICHOICE_VS part whose full-credit choice is
+        // Colour problems: three NUMERICAL parts of weight 1 with absolute tolerances (each
+        // question's mark 3, its default point times 3); the no-hit problem (4.3 as written):
+        // one MULTICHOICE_VS part of weight 3 whose full-credit choice is
         // the language's word for "no hit" and whose half-credit choice is a colour (the
         // likely intended reading), so that either earns what `phong check` gives it.
         let none = if lang == "pt" { "nenhuma" } else { "none" };
         for subs in &questions {
+            assert_eq!(subs.iter().map(|s| s.weight).sum::<u64>(), 3);
             match subs.len() {
                 3 => assert!(subs.iter().all(|s| s.kind == "NUMERICAL"
                     && s.alts.last().unwrap().answer == "*"
@@ -991,8 +997,8 @@ mod one_verdict {
         Some([v[0] / k, v[1] / k, v[2] / k])
     }
 
-    /// What the quiz gives `answer`: the grade of its question (the weighted mean of its parts;
-    /// every part weighs 1 here), and whether the student could give it at all as a number in
+    /// What the quiz gives `answer`: the grade of its question (the mean of its parts weighted
+    /// by their weights, as Moodle's Cloze question grades), and whether the student could give it at all as a number in
     /// each box (a colour question) or as one of the choices (the no-hit question).
     fn moodle_grade(subs: &[Sub], answer: &str) -> (f64, bool) {
         if subs.len() == 3 {
@@ -1002,10 +1008,11 @@ mod one_verdict {
             }
             let parts: Vec<Option<f64>> = (0..3).map(|c| moodle_part(&subs[c], &b[c])).collect();
             let given = parts.iter().all(Option::is_some);
-            (
-                parts.iter().map(|p| p.unwrap_or(0.0)).sum::<f64>() / 3.0,
-                given,
-            )
+            let weighed: f64 = (0..3)
+                .map(|c| parts[c].unwrap_or(0.0) * subs[c].weight as f64)
+                .sum();
+            let mark: u64 = subs.iter().map(|s| s.weight).sum();
+            (weighed / mark as f64, given)
         } else {
             let choices = &subs[0].alts;
             let none = ["none", "nenhuma", "sem interseção"].contains(&answer.trim());
@@ -1098,6 +1105,11 @@ mod one_verdict {
         let questions = validate(&xml).unwrap();
         let question =
             |id: &str| &questions[["4.1", "4.2", "4.3"].iter().position(|x| *x == id).unwrap()];
+        // The quiz weighs each question by the policy's points, as the grade report does: a
+        // Cloze question's mark is the sum of its parts' weights, so 4.1 : 4.2 : 4.3 is
+        // 1 : 2 : 1 (4.3's one part weighs what 4.1's three do).
+        let mark = |id: &str| question(id).iter().map(|s| s.weight).sum::<u64>();
+        assert_eq!((mark("4.1"), mark("4.2"), mark("4.3")), (3, 6, 3));
 
         // The grade report, one row per answer (student i answers row i).
         let mut csv = String::from("aluno;exercicio;resposta\n");

@@ -26,7 +26,7 @@ pub(crate) fn run(args: &MoodleArgs) -> Result<Exit, CliError> {
             _ => std::path::PathBuf::from("."),
         });
     let policy = super::course_policy(args.policy.as_deref(), folder.as_deref())?;
-    let grading = Grading::of(&policy, args.lang).map_err(|share| {
+    let mut grading = Grading::of(&policy, args.lang).map_err(|share| {
         CliError::usage(
             policy
                 .source
@@ -43,6 +43,7 @@ pub(crate) fn run(args: &MoodleArgs) -> Result<Exit, CliError> {
         .iter()
         .map(|path| read_set(path, &policy, args.lang))
         .collect::<Result<Vec<Set>, ProblemError>>()?;
+    grading.weigh(&sets.iter().flat_map(|s| &s.entries).collect::<Vec<_>>());
     let text = quiz(&sets, &args.category, &grading, args.lang)?;
     output::emit(args.output.as_deref(), &text)?;
     Ok(Exit::Success)
@@ -82,6 +83,11 @@ fn read_set(path: &Path, policy: &Policy, lang: Lang) -> Result<Set, ProblemErro
     } else {
         vec![(label.clone(), text.to_owned())]
     };
+    // The exercise the policy's points name: the file's name without `.json` ("4.2"), as
+    // `phong grade` names it; every problem of an array file takes the file's.
+    let exercise = path
+        .file_name()
+        .map_or_else(String::new, |s| s.to_string_lossy().into_owned());
     let mut entries = Vec::new();
     for (label, source) in sources {
         let at = Path::new(&label);
@@ -97,6 +103,7 @@ fn read_set(path: &Path, policy: &Policy, lang: Lang) -> Result<Set, ProblemErro
             problem,
             tolerance: on(Scale::Unit),
             tolerance_bits8: on(Scale::Bits8),
+            points: policy.points_of(&exercise),
         });
     }
     let category = if stdin {
