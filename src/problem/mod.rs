@@ -160,17 +160,8 @@ pub fn is_exercise_file(path: &Path) -> bool {
 /// and that second reading gives the error, so the message names the same field, line and
 /// column as before.
 pub fn parse_str(path: &Path, source: &str) -> Result<ProblemFile, ProblemError> {
-    not_an_object(path, source)?;
-    let mut de = serde_json::Deserializer::from_str(source);
-    if let Ok(file) = ProblemFile::deserialize(&mut de).and_then(|f| de.end().map(|()| f)) {
-        return Ok(file);
-    }
-    parse_tracked(path, source)
-}
-
-/// [`parse_str`] with the field path tracked, for the error of a file that failed. serde's
-/// message is read into a value ([`Parse::read`]) here, once.
-fn parse_tracked(path: &Path, source: &str) -> Result<ProblemFile, ProblemError> {
+    // The course policy is never a problem, even one that would read as a problem (`{}`, the
+    // defaults, reads as an empty problem: "nothing to shade").
     if path.file_name().is_some_and(|n| n == POLICY_FILE) {
         // The fix lists the problems of the folder the file was given in, as written
         // (`exercicios/` of `exercicios/course-policy.json`; nothing for a name alone).
@@ -185,6 +176,17 @@ fn parse_tracked(path: &Path, source: &str) -> Result<ProblemFile, ProblemError>
             SyntaxFix::LeavePolicyOut { folder },
         ));
     }
+    not_an_object(path, source)?;
+    let mut de = serde_json::Deserializer::from_str(source);
+    if let Ok(file) = ProblemFile::deserialize(&mut de).and_then(|f| de.end().map(|()| f)) {
+        return Ok(file);
+    }
+    parse_tracked(path, source)
+}
+
+/// [`parse_str`] with the field path tracked, for the error of a file that failed. serde's
+/// message is read into a value ([`Parse::read`]) here, once.
+fn parse_tracked(path: &Path, source: &str) -> Result<ProblemFile, ProblemError> {
     let mut de = serde_json::Deserializer::from_str(source);
     let result = serde_path_to_error::deserialize(&mut de)
         .map_err(|e| (field_path(e.path()), e.into_inner()))

@@ -1012,6 +1012,18 @@ fn the_course_policy_given_as_a_problem_names_the_folder_given_in_its_fix() {
         en.contains("Fix: leave it out of the problem files (4.*.json, not *.json)"),
         "{en}"
     );
+    // A policy of the defaults (`{}`, or an empty file) would read as an empty problem ("nothing
+    // to shade"): it is named as the course policy too.
+    for defaults in ["{}\n", ""] {
+        fs::write(folder.join("course-policy.json"), defaults).expect("written");
+        let (code, _, en) = run(&folder, &["solve", "4.1.json", "course-policy.json"]);
+        assert_eq!(code, Some(BAD_INPUT), "{en}");
+        assert!(
+            en.contains("course-policy.json:1:1: this is the course policy"),
+            "{defaults:?}: {en}"
+        );
+        assert!(!en.contains("nothing to shade"), "{defaults:?}: {en}");
+    }
 }
 
 /// A folder with `good.json` (the point problem), `bad.json` (falloff 3) and `good2.json` (the ray
