@@ -1,4 +1,4 @@
-//! The `phong` binary: a thin shell around [`phong::cli`], and its allocator.
+//! The `phong` binary: a thin shell around [`phong::cli`], its allocator, and the CPU check.
 
 use std::alloc::{GlobalAlloc, Layout, System};
 
@@ -8,8 +8,8 @@ use std::alloc::{GlobalAlloc, Layout, System};
 /// (`phong::text::memory::handled`: a `try_reserve` that reports what it needs itself).
 ///
 /// Stable Rust has no hook for an allocation failure (`std::alloc::set_alloc_error_hook` is
-/// unstable), so this is the one place it can be caught. This is the crate's only `unsafe`
-/// code (the library forbids it): `GlobalAlloc` is an unsafe trait.
+/// unstable), so this is the one place it can be caught. This and `cpu_check` below are the
+/// crate's only `unsafe` code (the library forbids it): `GlobalAlloc` is an unsafe trait.
 struct Allocator;
 
 /// What a refused allocation of `size` bytes does: nothing where the code handles it (the null
@@ -61,6 +61,158 @@ unsafe impl GlobalAlloc for Allocator {
 
 #[global_allocator]
 static ALLOCATOR: Allocator = Allocator;
+
+/// The CPU check (`phong::cli::cpu`), on x86-64 Linux, where `.cargo/config.toml` builds for
+/// the building machine's CPU: run by the loader among the ELF constructors (`.init_array`),
+/// before the standard library starts (the release build compiles its start-up code for the
+/// building CPU too). A CPU without a feature the build uses gets the error in both languages,
+/// written by the `write` system call, and exit 2 by `exit_group`: no code of the build runs
+/// but these few integer instructions.
+#[cfg(all(target_arch = "x86_64", target_os = "linux"))]
+mod cpu_check {
+    use std::arch::asm;
+
+    use phong::cli::cpu::{Lacking, NEED_1_ECX, NEED_7_EBX, NEED_EXT_ECX, NEED_XCR0, REFUSAL};
+
+    #[used]
+    #[link_section = ".init_array"]
+    static CHECK: extern "C" fn() = check;
+
+    extern "C" fn check() {
+        let lacking = lacking();
+        if !lacking.any() {
+            return;
+        }
+        // By reference: a copy of the table could be made with the vector instructions the CPU
+        // lacks; only the general registers are used from here on.
+        for (before, after) in REFUSAL.iter() {
+            write(before.as_bytes());
+            let mut first = true;
+            lacking.each(|name| {
+                if !first {
+                    write(b", ");
+                }
+                first = false;
+                write(name.as_bytes());
+            });
+            write(after.as_bytes());
+        }
+        // SAFETY: exit_group(2) ends the process; it takes one integer and returns nowhere.
+        unsafe { asm!("syscall", in("rax") 231, in("rdi") 2, options(noreturn, nostack)) }
+    }
+
+    /// CPUID and XGETBV against the bits this build needs, in instructions every x86-64 CPU
+    /// has (the compiler, building for the newer CPU, would use its BMI instructions for the
+    /// bit tests): per register, the needed bits the CPU does not set.
+    fn lacking() -> Lacking {
+        let (one, seven, extended): (u32, u32, u32);
+        let xcr0: u64;
+        // SAFETY: CPUID and XGETBV read registers only; XGETBV runs only where CPUID's leaf 1
+        // says the OS enabled it (OSXSAVE, bit 27 of ECX). RBX, which CPUID writes and the
+        // compiler reserves, is saved in a register of its own and restored.
+        unsafe {
+            asm!(
+                "mov {save}, rbx",
+                // Leaf 0: the highest standard leaf, kept in r8d.
+                "xor eax, eax",
+                "xor ecx, ecx",
+                "cpuid",
+                "mov r8d, eax",
+                // Leaf 1: ECX (every x86-64 CPU has leaf 1).
+                "mov eax, 1",
+                "xor ecx, ecx",
+                "cpuid",
+                "mov r9d, ecx",
+                // Leaf 7, subleaf 0: EBX, where the CPU has leaf 7.
+                "xor r10d, r10d",
+                "cmp r8d, 7",
+                "jb 2f",
+                "mov eax, 7",
+                "xor ecx, ecx",
+                "cpuid",
+                "mov r10d, ebx",
+                "2:",
+                // Leaf 0x8000_0001: ECX, where the CPU has it.
+                "xor r11d, r11d",
+                "mov eax, 0x80000000",
+                "xor ecx, ecx",
+                "cpuid",
+                "cmp eax, 0x80000001",
+                "jb 3f",
+                "mov eax, 0x80000001",
+                "xor ecx, ecx",
+                "cpuid",
+                "mov r11d, ecx",
+                "3:",
+                // XCR0, where the OS enabled XGETBV; else none of its registers are saved.
+                "xor eax, eax",
+                "xor edx, edx",
+                "bt r9d, 27",
+                "jnc 4f",
+                "xor ecx, ecx",
+                "xgetbv",
+                "4:",
+                "shl rdx, 32",
+                "or rax, rdx",
+                "mov rbx, {save}",
+                // The needed bits not set: NEED & !register, in each.
+                "not r9d",
+                "and r9d, {need1}",
+                "not r10d",
+                "and r10d, {need7}",
+                "not r11d",
+                "and r11d, {needx}",
+                "not rax",
+                "and rax, {needxcr0}",
+                save = out(reg) _,
+                need1 = const NEED_1_ECX,
+                need7 = const NEED_7_EBX,
+                needx = const NEED_EXT_ECX,
+                needxcr0 = const NEED_XCR0 as i32,
+                out("r8") _,
+                out("r9") one,
+                out("r10") seven,
+                out("r11") extended,
+                out("rax") xcr0,
+                out("rcx") _,
+                out("rdx") _,
+                options(nostack, nomem),
+            );
+        }
+        Lacking {
+            one_ecx: one,
+            seven_ebx: seven,
+            extended_ecx: extended,
+            xcr0,
+        }
+    }
+
+    /// `bytes` to standard error (file descriptor 2) by the `write` system call, again after a
+    /// short write, given up on an error.
+    fn write(mut bytes: &[u8]) {
+        while !bytes.is_empty() {
+            let written: isize;
+            // SAFETY: write(2, pointer, length) reads `bytes.len()` bytes of a live slice; the
+            // kernel clobbers rcx and r11 and nothing else.
+            unsafe {
+                asm!(
+                    "syscall",
+                    inlateout("rax") 1isize => written,
+                    in("rdi") 2,
+                    in("rsi") bytes.as_ptr(),
+                    in("rdx") bytes.len(),
+                    lateout("rcx") _,
+                    lateout("r11") _,
+                    options(nostack),
+                );
+            }
+            if written <= 0 {
+                return;
+            }
+            bytes = &bytes[written as usize..];
+        }
+    }
+}
 
 fn main() -> std::process::ExitCode {
     phong::cli::main()

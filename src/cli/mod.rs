@@ -6,6 +6,7 @@
 
 pub(crate) mod args;
 mod commands;
+pub mod cpu;
 pub(crate) mod error;
 pub(crate) mod exit;
 pub(crate) mod faults;

@@ -6,7 +6,7 @@
 //! `tests/fuzz.rs` (CI runs it again with 40 rounds) and `tests/errors_pt/`.
 //!
 //! A test that needs a program from outside Rust (pdflatex, chromium, chromedriver, povray,
-//! xmllint) is `#[ignore = "needs …"]`: `cargo test` lists it as ignored, and
+//! xmllint, qemu-x86_64) is `#[ignore = "needs …"]`: `cargo test` lists it as ignored, and
 //! `cargo test --test integration -- --ignored` (`.ci/run`) runs those tests.
 
 #[path = "../support/mod.rs"]
@@ -18,6 +18,9 @@ mod browser;
 mod check;
 mod check_fixsteps;
 mod ci_script;
+// QEMU's user mode and the build for the machine's CPU (.cargo/config.toml) are x86-64 Linux's.
+#[cfg(all(target_arch = "x86_64", target_os = "linux"))]
+mod cpu;
 mod diagnosis;
 mod edge_cases;
 mod explanations;

@@ -396,6 +396,64 @@ fn any_number_of_threads_writes_the_same_bytes() {
     assert!(fs::read(&png).unwrap().starts_with(b"\x89PNG\r\n\x1a\n"));
 }
 
+/// FNV-1a, 64 bits, of a file's bytes.
+fn fnv1a(bytes: &[u8]) -> u64 {
+    (bytes.iter()).fold(0xcbf2_9ce4_8422_2325, |h, &b| {
+        (h ^ u64::from(b)).wrapping_mul(0x0000_0100_0000_01b3)
+    })
+}
+
+/// Each bundled scene, f32 and f64, renders the bytes a build for any x86-64 CPU (SSE2 lanes,
+/// two halves per register) wrote: this build is for the machine's own CPU (`.cargo/config.toml`:
+/// AVX2 lanes where it has them), and the image must not depend on which lanes run.
+///
+/// The digests are FNV-1a of the PPM files of a release build of main at d1ad6a4 with
+/// `RUSTFLAGS="-C target-cpu=x86-64"` (before phong was built for the machine's CPU), computed
+/// by a Python FNV-1a, not by this code: `phong render scenes/S.json -o S-P.ppm --precision P`.
+/// A change that means to change the images changes them here too, saying why.
+#[test]
+fn every_bundled_scene_renders_the_bytes_of_the_build_for_any_x86_64_cpu() {
+    const PORTABLE: [(&str, &str, u64); 14] = [
+        ("4.3", "f32", 0x5178c7d210548db9),
+        ("4.3", "f64", 0xef9fc166be7c9104),
+        ("classic", "f32", 0xf1a02e2614f3a790),
+        ("classic", "f64", 0x40346521941f5eda),
+        ("glass", "f32", 0x84cd1ad55fd609a7),
+        ("glass", "f64", 0x947bd1066d461a90),
+        ("mesh", "f32", 0xdcaf3827bc4ffb6b),
+        ("mesh", "f64", 0xf7729114e7b11a6a),
+        ("pov-lights", "f32", 0x7f023c05e839048b),
+        ("pov-lights", "f64", 0x6ce9f5b126a3b451),
+        ("pov-materials", "f32", 0xe70c9ee9827f5b0d),
+        ("pov-materials", "f64", 0x084a04e989cacdf8),
+        ("smooth", "f32", 0x87f88778c3f9f6bd),
+        ("smooth", "f64", 0xaed83355e01e48c2),
+    ];
+    let dir = TempDir::new().unwrap();
+    let mut differ = Vec::new();
+    for (scene, precision, digest) in PORTABLE {
+        for engine in ["wide", "scalar"] {
+            let out = dir.path().join(format!("{scene}-{precision}-{engine}.ppm"));
+            phong()
+                .arg("render")
+                .arg(repo(&format!("scenes/{scene}.json")))
+                .arg("-o")
+                .arg(&out)
+                .args(["--precision", precision, "--engine", engine])
+                .assert()
+                .success();
+            let got = fnv1a(&fs::read(&out).unwrap());
+            if got != digest {
+                differ.push(format!("{scene} {precision} {engine}: {got:016x}"));
+            }
+        }
+    }
+    assert!(
+        differ.is_empty(),
+        "images not the portable build's: {differ:#?}"
+    );
+}
+
 // ---------------------------------------------------------------------------------------------
 // Bad scenes
 // ---------------------------------------------------------------------------------------------
