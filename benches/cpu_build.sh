@@ -30,8 +30,8 @@ for n in 7 10000 100000; do
   "$many" $((n - 1)) >"$work/s$n.json"
 done
 
-median() { sort -g | awk '{a[NR]=$1} END {print (NR % 2) ? a[(NR+1)/2] : (a[NR/2] + a[NR/2+1]) / 2}'; }
-trace_time() { sed -n 's/.*traced .* in \([0-9.]*\) s: .*/\1/p'; }
+# median, trace_time
+source benches/common.sh
 
 echo "machine: $(nproc) cores, load average $(cut -d' ' -f1-3 /proc/loadavg)"
 echo "native:   $native (.cargo/config.toml: -C target-cpu=native)"

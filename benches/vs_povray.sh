@@ -28,7 +28,8 @@ phong_cmd=("$phong" render "$scene" -o "$work/phong.ppm" --max-level 5 --samples
 phong_cmd2=("${phong_cmd[@]:0:${#phong_cmd[@]}-1}" 2)
 pov_cmd=(povray -D -A +Q9 File_Gamma=1.0 -GA -V +WT1 "+W$width" "+H$height" +FP "+O$work/povray.ppm" "$work/classic.pov")
 
-median() { sort -g | awk '{a[NR]=$1} END {print (NR % 2) ? a[(NR+1)/2] : (a[NR/2] + a[NR/2+1]) / 2}'; }
+# median
+source benches/common.sh
 # The best of the runs: on a shared machine noise only ever adds time, so the minimum is the
 # steadier figure when the machine is busy (both are printed).
 least() { sort -g | head -1; }

@@ -33,11 +33,8 @@ for n in $sizes; do
   for f in phong-f64 phong-f32 pov pov-parse phong-f64-rb phong-f32-rb; do : >"$work/$f-$n.txt"; done
 done
 
-median() { sort -g | awk '{a[NR]=$1} END {print (NR % 2) ? a[(NR+1)/2] : (a[NR/2] + a[NR/2+1]) / 2}'; }
-# phong's "read and validated in A s, … prepared … in B s, traced … in C s": "A B C".
-phong_times() {
-  sed -n 's/.*validated in \([0-9.]*\) s, .* in \([0-9.]*\) s, traced .* in \([0-9.]*\) s: .*/\1 \2 \3/p'
-}
+# median, phong_times
+source benches/common.sh
 
 echo "machine: $(nproc) cores, load average $(cut -d' ' -f1-3 /proc/loadavg); $(povray --version 2>&1 | grep -m1 '^POV-Ray')"
 echo "phong:   $phong render SCENE -o OUT.ppm --max-level 5 --samples 1 --threads 1 --precision f64|f32 --stats"

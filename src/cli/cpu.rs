@@ -101,14 +101,19 @@ features! {
     "avx512vl", SevenEbx, 31, ZMM;
 }
 
-/// The bits of one CPUID register this build needs.
-const fn needed(leaf: Leaf) -> u32 {
+/// The bits this build needs of one CPUID register (`Some(leaf)`), or of XCR0 (`None`): over
+/// the features it was compiled to use.
+const fn needed(leaf: Option<Leaf>) -> u64 {
     let mut bits = 0;
     let mut i = 0;
     while i < FEATURES.len() {
         let f = &FEATURES[i];
-        if f.built && f.leaf as u8 == leaf as u8 {
-            bits |= 1 << f.bit;
+        if f.built {
+            bits |= match leaf {
+                Some(leaf) if leaf as u8 == f.leaf as u8 => 1 << f.bit,
+                Some(_) => 0,
+                None => f.state,
+            };
         }
         i += 1;
     }
@@ -116,23 +121,13 @@ const fn needed(leaf: Leaf) -> u32 {
 }
 
 /// The bits of CPUID leaf 1's ECX this build needs.
-pub const NEED_1_ECX: u32 = needed(Leaf::OneEcx);
+pub const NEED_1_ECX: u32 = needed(Some(Leaf::OneEcx)) as u32;
 /// The bits of CPUID leaf 7's EBX this build needs.
-pub const NEED_7_EBX: u32 = needed(Leaf::SevenEbx);
+pub const NEED_7_EBX: u32 = needed(Some(Leaf::SevenEbx)) as u32;
 /// The bits of CPUID leaf 0x8000_0001's ECX this build needs.
-pub const NEED_EXT_ECX: u32 = needed(Leaf::ExtendedEcx);
+pub const NEED_EXT_ECX: u32 = needed(Some(Leaf::ExtendedEcx)) as u32;
 /// The bits of XCR0 this build needs.
-pub const NEED_XCR0: u64 = {
-    let mut bits = 0;
-    let mut i = 0;
-    while i < FEATURES.len() {
-        if FEATURES[i].built {
-            bits |= FEATURES[i].state;
-        }
-        i += 1;
-    }
-    bits
-};
+pub const NEED_XCR0: u64 = needed(None);
 
 /// What the CPU lacks of what this build needs: per CPUID register the needed bits it does not
 /// set, and the needed bits of XCR0 the operating system does not (all of them where the OS
