@@ -72,7 +72,9 @@ static ALLOCATOR: Allocator = Allocator;
 mod cpu_check {
     use std::arch::asm;
 
-    use phong::cli::cpu::{Lacking, NEED_1_ECX, NEED_7_EBX, NEED_EXT_ECX, NEED_XCR0, REFUSAL};
+    use phong::cli::cpu::{
+        Lacking, NEED_1_ECX, NEED_7_EBX, NEED_7_ECX, NEED_EXT_ECX, NEED_XCR0, REFUSAL,
+    };
 
     #[used]
     #[link_section = ".init_array"]
@@ -105,7 +107,7 @@ mod cpu_check {
     /// has (the compiler, building for the newer CPU, would use its BMI instructions for the
     /// bit tests): per register, the needed bits the CPU does not set.
     fn lacking() -> Lacking {
-        let (one, seven, extended): (u32, u32, u32);
+        let (one, seven, seven_ecx, extended): (u32, u32, u32, u32);
         let xcr0: u64;
         // SAFETY: CPUID and XGETBV read registers only; XGETBV runs only where CPUID's leaf 1
         // says the OS enabled it (OSXSAVE, bit 27 of ECX). RBX, which CPUID writes and the
@@ -123,14 +125,16 @@ mod cpu_check {
                 "xor ecx, ecx",
                 "cpuid",
                 "mov r9d, ecx",
-                // Leaf 7, subleaf 0: EBX, where the CPU has leaf 7.
+                // Leaf 7, subleaf 0: EBX and ECX, where the CPU has leaf 7.
                 "xor r10d, r10d",
+                "xor r12d, r12d",
                 "cmp r8d, 7",
                 "jb 2f",
                 "mov eax, 7",
                 "xor ecx, ecx",
                 "cpuid",
                 "mov r10d, ebx",
+                "mov r12d, ecx",
                 "2:",
                 // Leaf 0x8000_0001: ECX, where the CPU has it.
                 "xor r11d, r11d",
@@ -160,6 +164,8 @@ mod cpu_check {
                 "and r9d, {need1}",
                 "not r10d",
                 "and r10d, {need7}",
+                "not r12d",
+                "and r12d, {need7c}",
                 "not r11d",
                 "and r11d, {needx}",
                 "not rax",
@@ -167,11 +173,13 @@ mod cpu_check {
                 save = out(reg) _,
                 need1 = const NEED_1_ECX,
                 need7 = const NEED_7_EBX,
+                need7c = const NEED_7_ECX,
                 needx = const NEED_EXT_ECX,
                 needxcr0 = const NEED_XCR0 as i32,
                 out("r8") _,
                 out("r9") one,
                 out("r10") seven,
+                out("r12") seven_ecx,
                 out("r11") extended,
                 out("rax") xcr0,
                 out("rcx") _,
@@ -182,6 +190,7 @@ mod cpu_check {
         Lacking {
             one_ecx: one,
             seven_ebx: seven,
+            seven_ecx,
             extended_ecx: extended,
             xcr0,
         }

@@ -44,6 +44,8 @@ pub enum Leaf {
     OneEcx,
     /// Leaf 7 (subleaf 0), register EBX.
     SevenEbx,
+    /// Leaf 7 (subleaf 0), register ECX.
+    SevenEcx,
     /// Leaf 0x8000_0001, register ECX.
     ExtendedEcx,
 }
@@ -69,7 +71,9 @@ const ZMM: u64 = 0b1110_0110;
 macro_rules! features {
     ($($name:literal, $leaf:ident, $bit:literal, $state:expr;)*) => {
         /// The x86-64 features `-C target-cpu=native` turns on for the CPUs of the last fifteen
-        /// years, in the order the error lists them.
+        /// years that the compiler may use in code that does not ask for them (not AES, VAES,
+        /// PCLMULQDQ, VPCLMULQDQ, SHA or RDRAND, which only their intrinsics use), in the order
+        /// the error lists them.
         pub const FEATURES: &[Feature] = &[$(Feature {
             name: $name,
             built: cfg!(target_feature = $name),
@@ -99,6 +103,13 @@ features! {
     "avx512cd", SevenEbx, 28, ZMM;
     "avx512bw", SevenEbx, 30, ZMM;
     "avx512vl", SevenEbx, 31, ZMM;
+    "avx512ifma", SevenEbx, 21, ZMM;
+    "avx512vbmi", SevenEcx, 1, ZMM;
+    "avx512vbmi2", SevenEcx, 6, ZMM;
+    "gfni", SevenEcx, 8, 0;
+    "avx512vnni", SevenEcx, 11, ZMM;
+    "avx512bitalg", SevenEcx, 12, ZMM;
+    "avx512vpopcntdq", SevenEcx, 14, ZMM;
 }
 
 /// The bits this build needs of one CPUID register (`Some(leaf)`), or of XCR0 (`None`): over
@@ -124,6 +135,8 @@ const fn needed(leaf: Option<Leaf>) -> u64 {
 pub const NEED_1_ECX: u32 = needed(Some(Leaf::OneEcx)) as u32;
 /// The bits of CPUID leaf 7's EBX this build needs.
 pub const NEED_7_EBX: u32 = needed(Some(Leaf::SevenEbx)) as u32;
+/// The bits of CPUID leaf 7's ECX this build needs.
+pub const NEED_7_ECX: u32 = needed(Some(Leaf::SevenEcx)) as u32;
 /// The bits of CPUID leaf 0x8000_0001's ECX this build needs.
 pub const NEED_EXT_ECX: u32 = needed(Some(Leaf::ExtendedEcx)) as u32;
 /// The bits of XCR0 this build needs.
@@ -137,6 +150,7 @@ pub const NEED_XCR0: u64 = needed(None);
 pub struct Lacking {
     pub one_ecx: u32,
     pub seven_ebx: u32,
+    pub seven_ecx: u32,
     pub extended_ecx: u32,
     pub xcr0: u64,
 }
@@ -144,10 +158,17 @@ pub struct Lacking {
 impl Lacking {
     /// From the registers as CPUID and XGETBV give them (`xcr0` None where the OS did not
     /// enable XGETBV): what a test computes with the same rule as the binary's instructions.
-    pub fn of(one_ecx: u32, seven_ebx: u32, extended_ecx: u32, xcr0: Option<u64>) -> Lacking {
+    pub fn of(
+        one_ecx: u32,
+        seven_ebx: u32,
+        seven_ecx: u32,
+        extended_ecx: u32,
+        xcr0: Option<u64>,
+    ) -> Lacking {
         Lacking {
             one_ecx: NEED_1_ECX & !one_ecx,
             seven_ebx: NEED_7_EBX & !seven_ebx,
+            seven_ecx: NEED_7_ECX & !seven_ecx,
             extended_ecx: NEED_EXT_ECX & !extended_ecx,
             xcr0: NEED_XCR0 & !xcr0.unwrap_or(0),
         }
@@ -156,7 +177,7 @@ impl Lacking {
     /// Whether anything is missing.
     #[inline(always)]
     pub fn any(self) -> bool {
-        (self.one_ecx | self.seven_ebx | self.extended_ecx) != 0 || self.xcr0 != 0
+        (self.one_ecx | self.seven_ebx | self.seven_ecx | self.extended_ecx) != 0 || self.xcr0 != 0
     }
 
     /// Calls `each` with the name of every feature this build uses that is missing, in
@@ -168,6 +189,7 @@ impl Lacking {
             let register = match f.leaf {
                 Leaf::OneEcx => self.one_ecx,
                 Leaf::SevenEbx => self.seven_ebx,
+                Leaf::SevenEcx => self.seven_ecx,
                 Leaf::ExtendedEcx => self.extended_ecx,
             };
             if f.built && (register & 1 << f.bit != 0 || self.xcr0 & f.state != 0) {
@@ -193,7 +215,7 @@ mod tests {
 
     #[test]
     fn a_cpu_with_nothing_lacks_every_feature_the_build_uses_in_order() {
-        let none = Lacking::of(0, 0, 0, None);
+        let none = Lacking::of(0, 0, 0, 0, None);
         let built: Vec<&str> = FEATURES
             .iter()
             .filter(|f| f.built)
@@ -207,7 +229,7 @@ mod tests {
     #[cfg(target_feature = "avx2")]
     fn an_os_that_does_not_save_the_ymm_registers_lacks_avx_but_not_sse() {
         // Every CPUID bit set: only the registers' state is missing.
-        let lacking = Lacking::of(u32::MAX, u32::MAX, u32::MAX, Some(0b11));
+        let lacking = Lacking::of(u32::MAX, u32::MAX, u32::MAX, u32::MAX, Some(0b11));
         let names = lacking.names();
         assert!(names.contains(&"avx") && names.contains(&"avx2") && names.contains(&"fma"));
         assert!(!names.contains(&"sse4.2") && !names.contains(&"bmi2"));
