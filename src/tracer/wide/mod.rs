@@ -263,6 +263,8 @@ struct Buffers<R: Real> {
     shaded: Vec<(V3<R>, V3<R>)>,
     /// (material, entry) of the entries with a hit, sorted: the groups shaded together.
     groups: Vec<(u32, u32)>,
+    /// The materials of the queue's hits, each with its count, then its place in `groups`.
+    materials: Vec<(u32, u32)>,
     rays: Vec<Ray<R>>,
     /// Sample i of the row's pixels: its sx and its [`CameraRays::up_term`].
     samples: Vec<(f64, V3<R>)>,
@@ -325,6 +327,7 @@ fn row_in<R: Real, T: Copy, const SHADOWS: bool, const SECONDARY: bool, const TR
         found: Vec::with_capacity(BLOCK),
         shaded: vec![(V3::<R>::ZERO, V3::<R>::ZERO); BLOCK],
         groups: Vec::with_capacity(BLOCK),
+        materials: Vec::with_capacity(BLOCK),
         rays: Vec::with_capacity(lanes),
         samples: Vec::with_capacity(n as usize),
     };
@@ -440,13 +443,11 @@ fn shade_queue<R: Real, const SHADOWS: bool>(
     counts: &mut Counts,
 ) {
     let lanes = W::<R>::LANES;
-    b.groups.clear();
-    for (i, h) in b.found.iter().enumerate() {
-        if let Some(h) = h {
-            b.groups.push((plan.material_of[h.index], i as u32));
-        }
-    }
-    b.groups.sort_unstable();
+    let material_of = b
+        .found
+        .iter()
+        .map(|h| h.as_ref().map(|h| plan.material_of[h.index]));
+    sort_by_material(material_of, &mut b.materials, &mut b.groups);
     let lights = &tracer.problem.lights;
     let mut at = 0;
     while at < b.groups.len() {
@@ -503,6 +504,43 @@ fn shade_queue<R: Real, const SHADOWS: bool>(
                 V3::<R>::new(nx.as_ref()[k], ny.as_ref()[k], nz.as_ref()[k]),
                 V3::<R>::new(cx.as_ref()[k], cy.as_ref()[k], cz.as_ref()[k]),
             );
+        }
+    }
+}
+
+/// (material, entry) of each queue entry with a hit (`material_of`: entry i's hit's material,
+/// `None` without a hit), sorted as `slice::sort` would: by material, then entry. A counting sort
+/// over the few materials a queue meets (`materials`: each one met and its count), the entries
+/// taken in order; the comparison sort of up to [`BLOCK`] pairs cost 2.6 % of a 10,000-sphere
+/// render's instructions, this 1.5 %.
+fn sort_by_material(
+    material_of: impl Iterator<Item = Option<u32>> + Clone,
+    materials: &mut Vec<(u32, u32)>,
+    groups: &mut Vec<(u32, u32)>,
+) {
+    let place = |materials: &[(u32, u32)], m: u32| materials.iter().position(|e| e.0 == m);
+    materials.clear();
+    for m in material_of.clone().flatten() {
+        match place(materials, m) {
+            Some(j) => materials[j].1 += 1,
+            None => materials.push((m, 1)),
+        }
+    }
+    materials.sort_unstable();
+    // Each material's first place in `groups`
+    let mut next = 0;
+    for e in materials.iter_mut() {
+        (e.1, next) = (next, next + e.1);
+    }
+    groups.clear();
+    groups.resize(next as usize, (0, 0));
+    for (i, m) in material_of.enumerate() {
+        if let Some(m) = m {
+            let Some(j) = place(materials, m) else {
+                unreachable!("every material met was counted")
+            };
+            groups[materials[j].1 as usize] = (m, i as u32);
+            materials[j].1 += 1;
         }
     }
 }

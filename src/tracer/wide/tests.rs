@@ -268,3 +268,32 @@ fn the_scene_holds_each_material_once_and_each_surface_its_own() {
         );
     }
 }
+
+/// The counting sort of a queue's hits by material gives the comparison sort's order: queues
+/// of every length up to a block, with and without misses, few and many materials.
+#[test]
+fn hits_are_grouped_by_material_as_a_sort_orders_them() {
+    let mut state = 0x9e37_79b9_7f4a_7c15u64;
+    let mut next = move |n: u64| {
+        state = state
+            .wrapping_mul(6364136223846793005)
+            .wrapping_add(1442695040888963407);
+        (state >> 33) % n
+    };
+    let (mut materials, mut groups) = (Vec::new(), Vec::new());
+    for round in 0..2000 {
+        let len = next(super::BLOCK as u64 + 1) as usize;
+        let kinds = [1, 2, 3, 5, 64, 1000][round % 6];
+        let hits: Vec<Option<u32>> = (0..len)
+            .map(|_| (next(4) != 0).then(|| next(kinds) as u32))
+            .collect();
+        let mut expected: Vec<(u32, u32)> = hits
+            .iter()
+            .enumerate()
+            .filter_map(|(i, m)| m.map(|m| (m, i as u32)))
+            .collect();
+        expected.sort();
+        super::sort_by_material(hits.iter().copied(), &mut materials, &mut groups);
+        assert_eq!(groups, expected, "{hits:?}");
+    }
+}
