@@ -30,13 +30,13 @@
 //! meets before t_max is hit. That set does not depend on the order of the visit, so it is
 //! `Bvh::any`'s answer too.
 
+use smallvec::SmallVec;
+
 use super::bounds::{inverse, Aabb};
 use super::bvh::Bvh;
 use super::soa::sphere_hit_t;
 use super::triangle::Shear;
 use super::{Ray, Shape};
-use smallvec::SmallVec;
-
 use crate::core::lanes::{lanes_of, mask_of, Lanes, Wide, W, W3};
 use crate::core::rounding::gamma;
 use crate::core::{Real, Vector, V3};

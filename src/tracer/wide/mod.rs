@@ -508,11 +508,15 @@ fn shade_queue<R: Real, const SHADOWS: bool>(
     }
 }
 
+/// The most materials [`sort_by_material`] counts; a queue that meets more is sorted by
+/// comparisons.
+const FEW_MATERIALS: usize = 8;
+
 /// (material, entry) of each queue entry with a hit (`material_of`: entry i's hit's material,
 /// `None` without a hit), sorted as `slice::sort` would: by material, then entry. A counting sort
 /// over the few materials a queue meets (`materials`: each one met and its count), the entries
-/// taken in order; the comparison sort of up to [`BLOCK`] pairs cost 2.6 % of a 10,000-sphere
-/// render's instructions, this 1.5 %.
+/// taken in order (the comparison sort of up to [`BLOCK`] pairs cost 2.6 % of a 10,000-sphere
+/// render's instructions, this 1.5 %); past [`FEW_MATERIALS`], the comparison sort.
 fn sort_by_material(
     material_of: impl Iterator<Item = Option<u32>> + Clone,
     materials: &mut Vec<(u32, u32)>,
@@ -523,7 +527,16 @@ fn sort_by_material(
     for m in material_of.clone().flatten() {
         match place(materials, m) {
             Some(j) => materials[j].1 += 1,
-            None => materials.push((m, 1)),
+            None if materials.len() < FEW_MATERIALS => materials.push((m, 1)),
+            None => {
+                // Many materials (a colour per sphere): the lookups would cost more than the
+                // comparison sort.
+                groups.clear();
+                let hits = material_of.enumerate();
+                groups.extend(hits.filter_map(|(i, m)| m.map(|m| (m, i as u32))));
+                groups.sort_unstable();
+                return;
+            }
         }
     }
     materials.sort_unstable();
