@@ -327,7 +327,7 @@ fn row_in<R: Real, T: Copy, const SHADOWS: bool, const SECONDARY: bool, const TR
         found: Vec::with_capacity(BLOCK),
         shaded: vec![(V3::<R>::ZERO, V3::<R>::ZERO); BLOCK],
         groups: Vec::with_capacity(BLOCK),
-        materials: Vec::with_capacity(BLOCK),
+        materials: Vec::with_capacity(FEW_MATERIALS),
         rays: Vec::with_capacity(lanes),
         samples: Vec::with_capacity(n as usize),
     };

@@ -273,13 +273,8 @@ fn the_scene_holds_each_material_once_and_each_surface_its_own() {
 /// of every length up to a block, with and without misses, few and many materials.
 #[test]
 fn hits_are_grouped_by_material_as_a_sort_orders_them() {
-    let mut state = 0x9e37_79b9_7f4a_7c15u64;
-    let mut next = move |n: u64| {
-        state = state
-            .wrapping_mul(6364136223846793005)
-            .wrapping_add(1442695040888963407);
-        (state >> 33) % n
-    };
+    let mut rng = crate::geometry::bounds::test_rng::Rng::new(7);
+    let mut next = |n: u64| rng.next_u64() % n;
     let (mut materials, mut groups) = (Vec::new(), Vec::new());
     for round in 0..2000 {
         let len = next(super::BLOCK as u64 + 1) as usize;
