@@ -691,13 +691,16 @@ struct Packet<R: Real> {
     inv: [W<R>; 3],
     o3: W3<W<R>>,
     d3: W3<W<R>>,
-    /// Each ray's octant of D (by the sign of 1/D), as [`Prepared`] has it.
-    octant: [u8; MAX_WIDTH],
+    /// Per axis, the mask of the rays whose 1/D is negative: ray k's octant of D, as
+    /// [`Prepared`] has it, is bit k of each (kept as three masks: spreading them into a byte
+    /// per ray was a quarter of the packet's making).
+    neg: [u32; 3],
 }
 
 impl<R: Real> Packet<R> {
     /// The packet of `rays` (at least one, at most [`Wide::LANES`]): 1/D by a division in
     /// lanes, each lane's the scalar `inverse`'s to the bit.
+    #[inline(always)]
     fn of(rays: &[Ray<R>]) -> Self {
         debug_assert!(!rays.is_empty() && rays.len() <= W::<R>::LANES);
         let first = rays[0];
@@ -707,23 +710,25 @@ impl<R: Real> Packet<R> {
         let inv = [one / d3.x, one / d3.y, one / d3.z];
         let zero = W::<R>::splat(R::ZERO);
         let neg = inv.map(|i| i.lt(zero).bits());
-        let mut octant = [0u8; MAX_WIDTH];
-        for (k, octant) in octant.iter_mut().enumerate().take(W::<R>::LANES) {
-            *octant = ((neg[0] >> k & 1) | (neg[1] >> k & 1) << 1 | (neg[2] >> k & 1) << 2) as u8;
-        }
-        Packet {
-            inv,
-            o3,
-            d3,
-            octant,
-        }
+        Packet { inv, o3, d3, neg }
+    }
+
+    /// Ray k's octant of D.
+    #[inline(always)]
+    fn octant(&self, k: usize) -> u8 {
+        (0..3).fold(0, |o, a| o | ((self.neg[a] >> k & 1) as u8) << a)
     }
 
     /// The lanes of `live` whose ray has octant `o`.
+    #[inline(always)]
     fn lanes_in(&self, o: u8, live: u32) -> u32 {
-        lanes_of(live)
-            .filter(|&k| self.octant[k] == o)
-            .fold(0, |m, k| m | 1 << k)
+        (0..3).fold(live, |m, a| {
+            m & if o >> a & 1 == 1 {
+                self.neg[a]
+            } else {
+                !self.neg[a]
+            }
+        })
     }
 }
 
@@ -851,7 +856,7 @@ impl<R: Real> WideBvh<R> {
         let mut lazy = Lazy::new();
         let mut left = live;
         while left != 0 {
-            let octant = p.octant[left.trailing_zeros() as usize];
+            let octant = p.octant(left.trailing_zeros() as usize);
             let group = p.lanes_in(octant, left);
             left &= !group;
             self.nearest_group(shapes, rays, &p, &mut lazy, octant, group, &mut tm, best);
@@ -1064,7 +1069,7 @@ impl<R: Real> WideBvh<R> {
         let mut blocked = 0;
         let mut left = live;
         while left != 0 {
-            let octant = p.octant[left.trailing_zeros() as usize];
+            let octant = p.octant(left.trailing_zeros() as usize);
             let group = p.lanes_in(octant, left);
             left &= !group;
             blocked |= self.occluded_group(shapes, rays, &p, &mut lazy, octant, group, tm);
