@@ -12,6 +12,7 @@
 use super::bounds::Aabb;
 use super::bvh::Bvh;
 use super::hit::SurfaceHit;
+use super::ray::RayLanes;
 use super::soa::plane_hit_t;
 use super::wbvh::WideBvh;
 use super::{Plane, Ray, Shape};
@@ -50,7 +51,7 @@ pub struct AggregateHit<R: Real> {
 /// The origins and directions of a packet of rays (at most [`Wide::LANES`], at least one) in
 /// lanes; lanes past its end repeat its first ray.
 #[inline(always)]
-fn origins_and_directions<R: Real>(rays: &[Ray<R>]) -> (W3<W<R>>, W3<W<R>>) {
+fn origins_and_directions<R: Real>(rays: &[Ray<R>]) -> RayLanes<R> {
     (
         W3::gather(rays.iter().map(|r| r.origin), rays[0].origin),
         W3::gather(rays.iter().map(|r| r.direction), rays[0].direction),
@@ -192,10 +193,11 @@ impl<R: Real> Aggregate<R> {
         let mut best: [Option<u32>; 8] = [None; 8];
         let n = rays.len();
         let live = (1u32 << n) - 1;
+        // The rays in lanes, once for the planes and the tree.
+        let (o, d) = origins_and_directions(rays);
         // Planes first, in their order, as `nearest` takes them: each plane against every
         // ray in lanes
         if !self.unbounded.is_empty() {
-            let (o, d) = origins_and_directions(rays);
             let mut tm = <W<R> as Wide>::Array::default();
             tm.as_mut()[..n].copy_from_slice(&t_max[..n]);
             let mut tm = W::<R>::from_array(tm);
@@ -224,8 +226,14 @@ impl<R: Real> Aggregate<R> {
             }
             t_max[..n].copy_from_slice(&tm.to_array().as_ref()[..n]);
         }
-        self.wide
-            .nearest_packet(&self.shapes, rays, live, &mut t_max[..n], &mut best[..n]);
+        self.wide.nearest_packet(
+            &self.shapes,
+            rays,
+            (o, d),
+            live,
+            &mut t_max[..n],
+            &mut best[..n],
+        );
         for (k, (ray, hit)) in rays.iter().zip(out.iter_mut()).enumerate() {
             *hit = best[k].and_then(|i| {
                 let index = i as usize;
@@ -241,6 +249,19 @@ impl<R: Real> Aggregate<R> {
     /// `t_max[k]`: the mask of the rays [`Aggregate::occluded`] says are blocked, to the bit.
     /// Rays go through the wide BVH together (`WideBvh::occluded_packet`).
     pub fn occluded_packet(&self, rays: &[Ray<R>], t_max: &[R], want: u32) -> u32 {
+        self.occluded_packet_in(rays, None, t_max, want)
+    }
+
+    /// [`Aggregate::occluded_packet`], with the rays also in lanes (`lanes`: origins and
+    /// directions, lane k being `rays[k]` for each k of `want`, the others anything), as the
+    /// wide tracer builds its shadow rays: they are not gathered again.
+    pub(crate) fn occluded_packet_in(
+        &self,
+        rays: &[Ray<R>],
+        lanes: Option<RayLanes<R>>,
+        t_max: &[R],
+        want: u32,
+    ) -> u32 {
         debug_assert!(rays.len() <= W::<R>::LANES && t_max.len() >= rays.len());
         if self.bounded.len() <= FLAT {
             return lanes_of(want)
@@ -249,9 +270,10 @@ impl<R: Real> Aggregate<R> {
         }
         // Planes first, each against every ray in lanes
         let mut blocked = 0;
+        // The rays in lanes, once for the planes and the tree.
+        let (o, d) = lanes.unwrap_or_else(|| origins_and_directions(rays));
         if !self.unbounded.is_empty() && want != 0 {
             let n = rays.len();
-            let (o, d) = origins_and_directions(rays);
             let mut tm = <W<R> as Wide>::Array::default();
             tm.as_mut()[..n].copy_from_slice(&t_max[..n]);
             let tm = W::<R>::from_array(tm);
@@ -274,7 +296,7 @@ impl<R: Real> Aggregate<R> {
         blocked
             | self
                 .wide
-                .occluded_packet(&self.shapes, rays, t_max, want & !blocked)
+                .occluded_packet(&self.shapes, rays, (o, d), t_max, want & !blocked)
     }
 
     /// [`Aggregate::nearest`] through the binary tree's own search (the reference of the wide

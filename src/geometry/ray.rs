@@ -1,5 +1,6 @@
 //! A ray: an origin and a unit direction.
 
+use crate::core::lanes::{W, W3};
 use crate::core::{Real, V3};
 
 /// A ray O + tD with a unit direction D.
@@ -18,3 +19,6 @@ impl<R: Real> Ray<R> {
         self.origin + self.direction * t
     }
 }
+
+/// A packet of rays in lanes: the origins and the directions, lane k holding ray k.
+pub(crate) type RayLanes<R> = (W3<W<R>>, W3<W<R>>);

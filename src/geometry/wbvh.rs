@@ -34,6 +34,7 @@ use smallvec::SmallVec;
 
 use super::bounds::{inverse, Aabb};
 use super::bvh::Bvh;
+use super::ray::RayLanes;
 use super::soa::sphere_hit_t;
 use super::triangle::Shear;
 use super::{Ray, Shape};
@@ -698,14 +699,11 @@ struct Packet<R: Real> {
 }
 
 impl<R: Real> Packet<R> {
-    /// The packet of `rays` (at least one, at most [`Wide::LANES`]): 1/D by a division in
-    /// lanes, each lane's the scalar `inverse`'s to the bit.
+    /// The packet of the rays whose origins and directions are `o3` and `d3` in lanes (the
+    /// caller's gather, which its planes' test used first): 1/D by a division in lanes, each
+    /// lane's the scalar `inverse`'s to the bit.
     #[inline(always)]
-    fn of(rays: &[Ray<R>]) -> Self {
-        debug_assert!(!rays.is_empty() && rays.len() <= W::<R>::LANES);
-        let first = rays[0];
-        let o3 = W3::gather(rays.iter().map(|r| r.origin), first.origin);
-        let d3 = W3::gather(rays.iter().map(|r| r.direction), first.direction);
+    fn of(o3: W3<W<R>>, d3: W3<W<R>>) -> Self {
         let one = W::<R>::splat(R::ONE);
         let inv = [one / d3.x, one / d3.y, one / d3.z];
         let zero = W::<R>::splat(R::ZERO);
@@ -834,6 +832,7 @@ impl<R: Real> WideBvh<R> {
         &self,
         shapes: &[Shape<R>],
         rays: &[Ray<R>],
+        (o3, d3): RayLanes<R>,
         live: u32,
         t_max: &mut [R],
         best: &mut [Option<u32>],
@@ -849,7 +848,7 @@ impl<R: Real> WideBvh<R> {
             }
             return;
         }
-        let p = Packet::of(rays);
+        let p = Packet::of(o3, d3);
         let mut tm = <W<R> as Wide>::Array::default();
         tm.as_mut()[..rays.len()].copy_from_slice(&t_max[..rays.len()]);
         let mut tm = W::<R>::from_array(tm);
@@ -1050,6 +1049,7 @@ impl<R: Real> WideBvh<R> {
         &self,
         shapes: &[Shape<R>],
         rays: &[Ray<R>],
+        (o3, d3): RayLanes<R>,
         t_max: &[R],
         live: u32,
     ) -> u32 {
@@ -1061,7 +1061,7 @@ impl<R: Real> WideBvh<R> {
                 .filter(|&k| self.occluded(shapes, &rays[k], t_max[k]))
                 .fold(0, |m, k| m | 1 << k);
         }
-        let p = Packet::of(rays);
+        let p = Packet::of(o3, d3);
         let mut tm = <W<R> as Wide>::Array::default();
         tm.as_mut()[..rays.len()].copy_from_slice(&t_max[..rays.len()]);
         let tm = W::<R>::from_array(tm);

@@ -239,8 +239,12 @@ impl<R: Real, const SHADOWS: bool> LaneSide<W<R>> for WideSide<'_, R, SHADOWS> {
                     };
                     tm.as_mut()[k] = tm.as_ref()[j];
                 }
-                self.aggregate
-                    .occluded_packet(&rays[..lanes], tm.as_ref(), want)
+                self.aggregate.occluded_packet_in(
+                    &rays[..lanes],
+                    Some((origin, direction)),
+                    tm.as_ref(),
+                    want,
+                )
             }
         };
         need.and(mask_of::<W<R>>(blocked).not())
