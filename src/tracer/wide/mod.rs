@@ -347,14 +347,20 @@ fn row_in<R: Real, T: Copy, const SHADOWS: bool, const SECONDARY: bool, const TR
         let end = (start + BLOCK).min(total);
         // Primary rays, pixel by pixel and sample by sample, as pixel_mean takes them.
         b.queue.clear();
+        // Sample s is sample i of pixel x: counted along rather than divided out per sample (a
+        // 64-bit division's latency each).
+        let (mut x, mut i) = ((start / n as usize) as u32, start % n as usize);
         for s in start..end {
-            let (x, i) = ((s / n as usize) as u32, s % n as usize);
             let (sx, up_term) = b.samples[i];
             b.queue.push(Entry {
                 slot: (s - start) as u32,
                 path: PathState::primary(camera.ray_across(up_term, x, sx)),
             });
             b.colors[s - start] = V3::<R>::ZERO;
+            i += 1;
+            if i == n as usize {
+                (x, i) = (x + 1, 0);
+            }
         }
         counts.primary += (end - start) as u64;
         // One bounce per pass: the queue's nearest hits a packet at a time; the hits shaded
@@ -423,14 +429,16 @@ fn row_in<R: Real, T: Copy, const SHADOWS: bool, const SECONDARY: bool, const TR
             }
         }
         // The samples in order: each pixel's sum, then its mean, as pixel_mean forms them.
-        for s in start..end {
-            let c = clamped::<R>(b.colors[s - start]);
+        let mut i = start % n as usize;
+        for c in &b.colors[..end - start] {
+            let c = clamped::<R>(*c);
             for k in 0..3 {
                 sum[k] += c[k];
             }
-            if (s + 1) % n as usize == 0 {
+            i += 1;
+            if i == n as usize {
                 out.extend_from_slice(&each(mean(sum, n)));
-                sum = [0.0; 3];
+                (sum, i) = ([0.0; 3], 0);
             }
         }
     }
