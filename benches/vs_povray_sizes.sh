@@ -13,22 +13,22 @@
 # and the ratios POV-Ray / phong of the trace (target ≥ 4× at every size), f64 / f32 of the
 # trace (target ≥ 1.5×), and phong's read + build of 100,000 objects (target ≤ 0.1 s).
 # Usage: benches/vs_povray_sizes.sh [RUNS]   (default 11; needs `povray` and `bc`)
-# PHONG=path/to/phong uses that binary instead of building this tree's release binary.
+# PHONG=path/to/phong uses that binary instead of building this tree's release binary (the scene
+# generator is built here either way, in CARGO_TARGET_DIR if set).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 runs=${1:-11}
 command -v povray >/dev/null || { echo "povray is not installed (apt-get install povray)" >&2; exit 2; }
 
-if [ -z "${PHONG:-}" ]; then
-  cargo build --release --quiet
-  cargo build --release --quiet --example many_spheres
-fi
-phong=${PHONG:-target/release/phong}
+target=${CARGO_TARGET_DIR:-target}
+[ -n "${PHONG:-}" ] || cargo build --release --quiet
+cargo build --release --quiet --example many_spheres
+phong=${PHONG:-$target/release/phong}
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 sizes="7 10000 100000"
 for n in $sizes; do
-  target/release/examples/many_spheres $((n - 1)) >"$work/s$n.json"
+  "$target/release/examples/many_spheres" $((n - 1)) >"$work/s$n.json"
   "$phong" export-pov "$work/s$n.json" --max-level 5 --samples 1 -o "$work/s$n.pov"
   for f in phong-f64 phong-f32 pov pov-parse phong-f64-rb phong-f32-rb; do : >"$work/$f-$n.txt"; done
 done

@@ -35,7 +35,7 @@ fn zip<R: Real>(a: V3<R>, b: V3<R>, f: impl Fn(R, R) -> R) -> V3<R> {
 /// several): boxes are built from finite, validated coordinates, and the build's time goes
 /// mostly into unions.
 #[inline]
-fn lesser<R: Real>(a: R, b: R) -> R {
+pub(super) fn lesser<R: Real>(a: R, b: R) -> R {
     if b < a {
         b
     } else {
@@ -44,7 +44,7 @@ fn lesser<R: Real>(a: R, b: R) -> R {
 }
 
 #[inline]
-fn greater<R: Real>(a: R, b: R) -> R {
+pub(super) fn greater<R: Real>(a: R, b: R) -> R {
     if b > a {
         b
     } else {

@@ -10,7 +10,7 @@
 
 use std::cmp::Ordering;
 
-use super::bounds::{inverse, Aabb};
+use super::bounds::{greater, inverse, lesser, Aabb};
 use super::ray::Ray;
 use crate::core::{Real, Vector, V3};
 
@@ -145,19 +145,48 @@ impl Binning {
     }
 
     /// Puts each item in its bin, noting the bin in the item for [`partition`].
+    ///
+    /// The bins are gathered component by component in arrays, not as [`Bin`]s: a `Bin` written
+    /// in pieces and read back whole a few items later (12 bins, so often) cannot be forwarded
+    /// from the store buffer, and waiting for it took a quarter of this loop's time (a fifth of
+    /// the loop is saved at 100,000 spheres). The unions are [`Aabb::union`]'s and
+    /// [`Aabb::union_point`]'s, component by component in the same order, so the bins are the
+    /// same to the bit.
     fn fill<R: Real>(&self, items: &mut [Item<R>]) -> [Bin<R>; BINS] {
-        let mut bins = [Bin::empty(); BINS];
+        let empty = Bin::<R>::empty();
+        let (lo, hi) = (empty.bounds.min.to_array(), empty.bounds.max.to_array());
+        let mut count = [0usize; BINS];
+        let (mut bmin, mut bmax) = ([lo; BINS], [hi; BINS]);
+        let (mut cmin, mut cmax) = ([lo; BINS], [hi; BINS]);
         for it in items {
             // The centroid once, for the bin and the bin's centroid box (its component along
             // the axis is `centroid_on`'s, to the bit)
-            let c = it.bounds.centroid();
+            let c = it.bounds.centroid().to_array();
             // `as i32` saturates (NaN gives 0) and is much cheaper than `as usize`
-            let k = (c.to_array()[self.axis].to_f64() - self.min) * self.scale;
+            let k = (c[self.axis].to_f64() - self.min) * self.scale;
             let k = (k as i32).clamp(0, BINS as i32 - 1) as usize;
             it.bin = k as u8;
-            bins[k].add_at(it, c);
+            count[k] += 1;
+            let (l, h) = (it.bounds.min.to_array(), it.bounds.max.to_array());
+            for a in 0..3 {
+                bmin[k][a] = lesser(bmin[k][a], l[a]);
+                bmax[k][a] = greater(bmax[k][a], h[a]);
+                cmin[k][a] = lesser(cmin[k][a], c[a]);
+                cmax[k][a] = greater(cmax[k][a], c[a]);
+            }
         }
-        bins
+        let v = |[x, y, z]: [R; 3]| V3::<R>::new(x, y, z);
+        std::array::from_fn(|k| Bin {
+            count: count[k],
+            bounds: Aabb {
+                min: v(bmin[k]),
+                max: v(bmax[k]),
+            },
+            centroids: Aabb {
+                min: v(cmin[k]),
+                max: v(cmax[k]),
+            },
+        })
     }
 }
 
@@ -520,6 +549,48 @@ mod tests {
             origin: v3::<R>([0, 1, 2].map(|_| offset + scale * rng.range(-15.0, 15.0))),
             direction: v3::<R>(rng.direction()),
         }
+    }
+
+    /// `Binning::fill` gathers its bins component by component; they are the bins
+    /// [`Bin::add`] gives item by item, to the bit (the tree depends on them).
+    fn fill_matches_adding_item_by_item<R: Real>() {
+        let mut rng = Rng::new(7);
+        let s = spheres::<R>(&mut rng, 2000, 1.0, 0.0);
+        let mut items: Vec<Item<R>> = boxes(&s)
+            .into_iter()
+            .enumerate()
+            .map(|(i, bounds)| Item {
+                bounds,
+                index: i as u32,
+                bin: 0,
+            })
+            .collect();
+        let binning = Binning::of(&Bin::of(&items).centroids).unwrap();
+        let bins = binning.fill(&mut items);
+        let mut expected = [Bin::<R>::empty(); BINS];
+        for it in &items {
+            expected[usize::from(it.bin)].add(it);
+        }
+        let bits = |v: V3<R>| v.to_array().map(|x| x.to_f64().to_bits());
+        for (b, e) in bins.iter().zip(&expected) {
+            assert_eq!(b.count, e.count);
+            for (x, y) in [
+                (b.bounds.min, e.bounds.min),
+                (b.bounds.max, e.bounds.max),
+                (b.centroids.min, e.centroids.min),
+                (b.centroids.max, e.centroids.max),
+            ] {
+                assert_eq!(bits(x), bits(y));
+            }
+        }
+        // Every bin used: the test covers them all
+        assert!(bins.iter().all(|b| b.count > 0));
+    }
+
+    #[test]
+    fn binning_by_components_gives_the_bins_of_adding_items_one_by_one() {
+        fill_matches_adding_item_by_item::<f32>();
+        fill_matches_adding_item_by_item::<f64>();
     }
 
     /// Checks the tree's invariants: every primitive in exactly one leaf, leaves of at most
