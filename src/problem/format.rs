@@ -398,8 +398,9 @@ pub enum SameAsSpecular {
 // described in plain comments instead.
 #[allow(missing_docs)]
 pub enum MaterialRef {
-    // The name of a material in the file's `materials`.
-    Name(String),
+    // The name of a material in the file's `materials` (in place up to 24 bytes: no allocation
+    // per surface).
+    Name(#[schemars(with = "String")] compact_str::CompactString),
     // A material written in place (boxed: most surfaces name one, and a `SurfaceSpec` as read
     // would otherwise be 168 bytes larger).
     Inline(Box<MaterialSpec>),
@@ -610,7 +611,7 @@ impl<'de> Deserialize<'de> for MaterialRef {
                 expecting(f, Expected::MaterialRef)
             }
             fn visit_str<E: de::Error>(self, s: &str) -> Result<MaterialRef, E> {
-                Ok(MaterialRef::Name(s.to_owned()))
+                Ok(MaterialRef::Name(s.into()))
             }
             fn visit_map<A: MapAccess<'de>>(self, map: A) -> Result<MaterialRef, A::Error> {
                 MaterialSpec::deserialize(de::value::MapAccessDeserializer::new(map))

@@ -456,7 +456,7 @@ impl<R: Real> MaterialCache<R> {
                 return Ok((MATERIALS.key(name), hit.clone()));
             }
             let (at, m) = resolve_material::<R>(file, r, field)?;
-            self.named.insert(name.clone(), m.clone());
+            self.named.insert(name.to_string(), m.clone());
             return Ok((at, m));
         }
         resolve_material::<R>(file, r, field)
@@ -830,11 +830,11 @@ fn resolve_material<'a, R: Real>(
 ) -> Result<(Field<'a>, NamedMaterial<R>), Invalid> {
     let (path, name, spec) = match r {
         MaterialRef::Inline(spec) => (field, None, &**spec),
-        MaterialRef::Name(name) => match file.materials.get(name) {
-            Some(spec) => (MATERIALS.key(name), Some(name.clone()), spec),
+        MaterialRef::Name(name) => match file.materials.get(name.as_str()) {
+            Some(spec) => (MATERIALS.key(name), Some(name.to_string()), spec),
             None => {
                 let known: Vec<_> = file.materials.keys().map(|k| format!("\"{k}\"")).collect();
-                let name = name.clone();
+                let name = name.to_string();
                 let fault = if known.is_empty() {
                     MaterialFault::NoSuchMaterial { name }
                 } else {
