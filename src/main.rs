@@ -66,7 +66,7 @@ const HUGE_PAGES_FROM: usize = 4 << 20;
 /// (`madvise(MADV_HUGEPAGE)`; most distributions enable transparent huge pages only where asked,
 /// `/sys/kernel/mm/transparent_hugepage/enabled` = madvise). A scene of 100,000 spheres touches
 /// about 80 MB while it is read and its BVH built: 20,000 page faults in 4 KiB pages, half as
-/// many so (docs/benchmarks.md, "Read and build"). The advice changes no byte of the block;
+/// many so (docs/benchmarks.md, "Speed at scale"). The advice changes no byte of the block;
 /// where the kernel refuses it (no transparent huge pages) nothing changes.
 #[cfg(target_os = "linux")]
 fn huge_pages(p: *mut u8, size: usize) {
