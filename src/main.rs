@@ -43,11 +43,11 @@ unsafe impl GlobalAlloc for Allocator {
     }
 
     unsafe fn realloc(&self, ptr: *mut u8, layout: Layout, new_size: usize) -> *mut u8 {
+        // A grown block is not given huge pages (not `given`): buffers that grow and shrink (the
+        // grade workbook's) kept 53 MB more resident with them, and a scene's large blocks are
+        // allocated at their size.
         // SAFETY: `ptr` was allocated by `System` with `layout`; the caller upholds the rest.
         let p = unsafe { System.realloc(ptr, layout, new_size) };
-        // A grown block is not given huge pages: buffers that grow and shrink (the grade
-        // workbook's) kept 53 MB more resident with them, and a scene's large blocks are
-        // allocated at their size.
         if p.is_null() {
             refused(new_size);
         }
