@@ -304,12 +304,6 @@ impl Ids<'_> {
     }
 }
 
-/// Positions in a cut, in a visiting order.
-struct Seq {
-    at: [usize; MAX_WIDTH],
-    len: usize,
-}
-
 impl<R: Real> WideBvh<R> {
     /// The wide tree of `bvh`, whose primitive k is `shapes[shape_of[k]]` (a sphere or a
     /// triangle). `bvh` should have leaves of at most [`Wide::LANES`] primitives
@@ -374,20 +368,7 @@ impl<R: Real> WideBvh<R> {
             cut.nodes.splice(k..=k, [n + 1, second]);
         }
         // The binary traversal's order of the cut, for each octant of D
-        let mut order = [0u32; 8];
-        for (octant, o) in order.iter_mut().enumerate() {
-            let mut seq = Seq {
-                at: [0; MAX_WIDTH],
-                len: 0,
-            };
-            visit_order(bvh, i, &cut.nodes, octant, &mut seq);
-            *o = seq.at[..seq.len]
-                .iter()
-                .rev()
-                .enumerate()
-                .map(|(pos, &k)| (k as u32) << (3 * pos))
-                .sum();
-        }
+        let (order, _) = visit_orders(bvh, i, &cut.nodes);
         let at = self.nodes.len();
         let empty = Aabb::<R>::empty();
         let mut min = [<W<R> as Wide>::Array::default(); 3];
@@ -1205,23 +1186,26 @@ impl<R: Real> WideBvh<R> {
     }
 }
 
-/// Appends to `seq` the positions in `cut` of the nodes under binary node `i`, in the order
-/// the binary traversal visits them for `octant`.
-fn visit_order<R: Real>(bvh: &Bvh<R>, i: usize, cut: &[usize], octant: usize, seq: &mut Seq) {
+/// For each octant of D, the positions in `cut` of the nodes under binary node `i` in the order
+/// the binary traversal visits them, 3 bits each, the last visited in the lowest bits (a
+/// [`Node`]'s `order`); and how many they are. One walk gives all eight octants: at each
+/// binary node the two children's orders are put one after the other, the near child's first
+/// (the first child's unless D is negative along the node's axis).
+fn visit_orders<R: Real>(bvh: &Bvh<R>, i: usize, cut: &[usize]) -> ([u32; 8], u32) {
     if let Some(k) = cut.iter().position(|&n| n == i) {
-        seq.at[seq.len] = k;
-        seq.len += 1;
-        return;
+        return ([k as u32; 8], 1);
     }
-    let node = bvh.nodes()[i];
-    let (first, second) = (i + 1, node.offset as usize);
-    if octant >> node.axis & 1 == 1 {
-        visit_order(bvh, second, cut, octant, seq);
-        visit_order(bvh, first, cut, octant, seq);
-    } else {
-        visit_order(bvh, first, cut, octant, seq);
-        visit_order(bvh, second, cut, octant, seq);
-    }
+    let node = &bvh.nodes()[i];
+    let (first, n_first) = visit_orders(bvh, i + 1, cut);
+    let (second, n_second) = visit_orders(bvh, node.offset as usize, cut);
+    let order = std::array::from_fn(|octant| {
+        if octant >> node.axis & 1 == 1 {
+            (second[octant] << (3 * n_first)) | first[octant]
+        } else {
+            (first[octant] << (3 * n_second)) | second[octant]
+        }
+    });
+    (order, n_first + n_second)
 }
 
 /// The traversal stack: references with their box's t₀, [`STACK`] in place, more (never seen
@@ -1273,6 +1257,79 @@ mod tests {
         Mixed,
         /// Spheres and a triangle grid apart (leaves of one kind each), and a plane.
         Apart,
+    }
+
+    /// The order of a cut for one octant by the binary traversal itself: descend, near child
+    /// first, and note each node of the cut met (the reference of [`visit_orders`]).
+    fn walk_order<R: Real>(
+        bvh: &Bvh<R>,
+        i: usize,
+        cut: &[usize],
+        octant: usize,
+        out: &mut Vec<u32>,
+    ) {
+        if let Some(k) = cut.iter().position(|&n| n == i) {
+            out.push(k as u32);
+            return;
+        }
+        let node = &bvh.nodes()[i];
+        let (first, second) = (i + 1, node.offset as usize);
+        let (near, far) = if octant >> node.axis & 1 == 1 {
+            (second, first)
+        } else {
+            (first, second)
+        };
+        walk_order(bvh, near, cut, octant, out);
+        walk_order(bvh, far, cut, octant, out);
+    }
+
+    /// The nodes two levels below binary node `i` (or fewer where a leaf comes first).
+    fn cut_below<R: Real>(bvh: &Bvh<R>, i: usize, levels: u32, out: &mut Vec<usize>) {
+        let node = &bvh.nodes()[i];
+        if levels == 0 || node.count > 0 {
+            out.push(i);
+            return;
+        }
+        cut_below(bvh, i + 1, levels - 1, out);
+        cut_below(bvh, node.offset as usize, levels - 1, out);
+    }
+
+    #[test]
+    fn one_walk_gives_the_binary_traversals_order_of_a_cut_for_every_octant() {
+        let mut rng = Rng::new(11);
+        let bounds: Vec<Aabb<f64>> = (0..500)
+            .map(|_| match sphere::<f64>(&mut rng, 1.0) {
+                Shape::Sphere(s) => Aabb::of_sphere(s.center, s.radius),
+                _ => unreachable!("a sphere"),
+            })
+            .collect();
+        let bvh = Bvh::build_with_leaves(&bounds, 2);
+        let mut checked = 0;
+        for i in 0..bvh.nodes().len() {
+            for levels in 1..=3 {
+                let mut cut = Vec::new();
+                cut_below(&bvh, i, levels, &mut cut);
+                if cut.len() < 2 {
+                    continue;
+                }
+                let (orders, n) = visit_orders(&bvh, i, &cut);
+                assert_eq!(n as usize, cut.len());
+                for (octant, &packed) in orders.iter().enumerate() {
+                    let mut seq = Vec::new();
+                    walk_order(&bvh, i, &cut, octant, &mut seq);
+                    // Packed as a node's `order`: the last visited in the lowest bits
+                    let expected = seq
+                        .iter()
+                        .rev()
+                        .enumerate()
+                        .map(|(pos, &k)| k << (3 * pos))
+                        .sum::<u32>();
+                    assert_eq!(packed, expected, "node {i}, cut {cut:?}, octant {octant}");
+                }
+                checked += 1;
+            }
+        }
+        assert!(checked > 500, "{checked} cuts");
     }
 
     fn sphere<R: Real>(rng: &mut Rng, scale: f64) -> Shape<R> {
