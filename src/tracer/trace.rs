@@ -76,7 +76,8 @@ fn material_bits<R: Real>(m: &Material<R>) -> [u64; 22] {
 
 /// Each item as an index into the distinct ones (equal keys), and the distinct ones in order
 /// of first appearance. A scene has a handful of distinct materials (a mesh's triangles repeat
-/// their own): the previous item's first, then a look along the few found, a map past 16.
+/// their own), most shared by many surfaces: an item met before at the same address first (no
+/// key computed), then the previous item's key, then a look along the few found, a map past 16.
 pub(crate) fn distinct<'a, T: Copy + 'a, K: Copy + Eq + std::hash::Hash>(
     all: impl ExactSizeIterator<Item = &'a T>,
     key: impl Fn(&T) -> K,
@@ -85,8 +86,14 @@ pub(crate) fn distinct<'a, T: Copy + 'a, K: Copy + Eq + std::hash::Hash>(
     let mut keys: Vec<K> = Vec::new();
     let mut index: std::collections::HashMap<K, u32> = std::collections::HashMap::new();
     let mut last: Option<(K, u32)> = None;
+    // The first 16 addresses met, with their index: the same address holds the same item.
+    let mut seen: Vec<(&'a T, u32)> = Vec::new();
     let mut of = Vec::with_capacity(all.len());
     for m in all {
+        if let Some(&(_, i)) = seen.iter().find(|(x, _)| std::ptr::eq(*x, m)) {
+            of.push(i);
+            continue;
+        }
         let k = key(m);
         if let Some((lk, li)) = last {
             if lk == k {
@@ -111,6 +118,9 @@ pub(crate) fn distinct<'a, T: Copy + 'a, K: Copy + Eq + std::hash::Hash>(
             i
         });
         last = Some((k, i));
+        if seen.len() < 16 {
+            seen.push((m, i));
+        }
         of.push(i);
     }
     (of, items)

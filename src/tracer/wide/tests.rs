@@ -172,6 +172,29 @@ fn the_plan_groups_exactly_the_equal_materials() {
     }
 }
 
+/// Items met again at the same address (the surfaces sharing one material) take the index
+/// their key gave the first time, and equal items at other addresses still meet them by key.
+#[test]
+fn items_at_one_address_and_equal_items_elsewhere_share_one_index() {
+    use crate::core::real::v3;
+    use crate::core::Material;
+    let m = |n_s: f64| Material::<f64> {
+        o_a: Some(v3::<f64>([0.1; 3])),
+        o_d: Some(v3::<f64>([0.5, 0.4, 0.3])),
+        o_s: None,
+        n_s,
+        o_r: None,
+        transmission: None,
+    };
+    let (a, a_again, c) = (m(10.0), m(10.0), m(30.0));
+    // 40 items, more than the 16 addresses kept: a, c, a's equal at another address, a, ...
+    let all: Vec<&Material<f64>> = (0..40).map(|i| [&a, &c, &a_again][i % 3]).collect();
+    let (of, distinct) = super::distinct(all.iter().copied(), super::shading_bits);
+    assert_eq!(distinct.len(), 2);
+    let expected: Vec<u32> = (0..40).map(|i| [0, 1, 0][i % 3]).collect();
+    assert_eq!(of, expected);
+}
+
 /// Triangles (the torus mesh of scenes/mesh.json, the smooth sphere of scenes/smooth.json: SoA
 /// triangle leaves of the wide BVH) with several samples, small image, with and without shadows.
 fn mesh_scene_in<R: Real>(file: &str) {
