@@ -29,12 +29,12 @@ fn refused(size: usize) {
 unsafe impl GlobalAlloc for Allocator {
     unsafe fn alloc(&self, layout: Layout) -> *mut u8 {
         // SAFETY: the caller upholds `alloc`'s contract, which is `System.alloc`'s.
-        given(unsafe { System.alloc(layout) }, layout.size())
+        new_block(unsafe { System.alloc(layout) }, layout.size())
     }
 
     unsafe fn alloc_zeroed(&self, layout: Layout) -> *mut u8 {
         // SAFETY: as `alloc`.
-        given(unsafe { System.alloc_zeroed(layout) }, layout.size())
+        new_block(unsafe { System.alloc_zeroed(layout) }, layout.size())
     }
 
     unsafe fn dealloc(&self, ptr: *mut u8, layout: Layout) {
@@ -43,24 +43,27 @@ unsafe impl GlobalAlloc for Allocator {
     }
 
     unsafe fn realloc(&self, ptr: *mut u8, layout: Layout, new_size: usize) -> *mut u8 {
-        // A grown block is not given huge pages (not `given`): buffers that grow and shrink (the
-        // grade workbook's) kept 53 MB more resident with them, and a scene's large blocks are
-        // allocated at their size.
+        // A grown block is not given huge pages (not a `new_block`): buffers that grow and
+        // shrink (the grade workbook's) kept 53 MB more resident with them, and a scene's large
+        // blocks are allocated at their size.
         // SAFETY: `ptr` was allocated by `System` with `layout`; the caller upholds the rest.
-        let p = unsafe { System.realloc(ptr, layout, new_size) };
-        if p.is_null() {
-            refused(new_size);
-        }
-        p
+        checked(unsafe { System.realloc(ptr, layout, new_size) }, new_size)
     }
 }
 
-/// What the allocator hands back for a new block of `size` bytes at `p` from `System`: a
-/// refusal goes to [`refused`]; a large block is given huge pages ([`huge_pages`]).
-fn given(p: *mut u8, size: usize) -> *mut u8 {
+/// What the allocator hands back for `size` bytes at `p` from `System`: a refusal (null) goes
+/// to [`refused`].
+fn checked(p: *mut u8, size: usize) -> *mut u8 {
     if p.is_null() {
         refused(size);
-    } else if size >= HUGE_PAGES_FROM {
+    }
+    p
+}
+
+/// [`checked`] for a new block, which is given huge pages when large ([`huge_pages`]).
+fn new_block(p: *mut u8, size: usize) -> *mut u8 {
+    let p = checked(p, size);
+    if !p.is_null() && size >= HUGE_PAGES_FROM {
         huge_pages(p, size);
     }
     p

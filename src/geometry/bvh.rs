@@ -86,15 +86,9 @@ impl<R: Real> Bin<R> {
 
     #[inline]
     fn add(&mut self, it: &Item<R>) {
-        self.add_at(it, it.bounds.centroid());
-    }
-
-    /// [`Bin::add`] of an item whose centroid is already computed.
-    #[inline]
-    fn add_at(&mut self, it: &Item<R>, centroid: V3<R>) {
         self.count += 1;
         self.bounds = self.bounds.union(it.bounds);
-        self.centroids = self.centroids.union_point(centroid);
+        self.centroids = self.centroids.union_point(it.bounds.centroid());
     }
 
     /// Adds the items of `o`, in place (the sides of a split gather up to [`BINS`] bins each).

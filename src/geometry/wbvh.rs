@@ -1283,7 +1283,7 @@ mod tests {
         walk_order(bvh, far, cut, octant, out);
     }
 
-    /// The nodes two levels below binary node `i` (or fewer where a leaf comes first).
+    /// The nodes `levels` levels below binary node `i` (fewer where a leaf comes first).
     fn cut_below<R: Real>(bvh: &Bvh<R>, i: usize, levels: u32, out: &mut Vec<usize>) {
         let node = &bvh.nodes()[i];
         if levels == 0 || node.count > 0 {
