@@ -43,6 +43,8 @@ pub trait Wide:
     fn from_array(a: Self::Array) -> Self;
     /// The lanes as an array, lane 0 first.
     fn to_array(self) -> Self::Array;
+    /// The lanes in place, as an array: read where they are, not copied out first.
+    fn as_array(&self) -> &Self::Array;
     /// −x in each lane (the sign bit flipped, as a scalar's negation: −0 stays distinct).
     fn neg(self) -> Self;
     /// √x in each lane, correctly rounded.
@@ -85,6 +87,11 @@ macro_rules! impl_wide {
             #[inline(always)]
             fn to_array(self) -> [$s; $n] {
                 <$w>::to_array(self)
+            }
+
+            #[inline(always)]
+            fn as_array(&self) -> &[$s; $n] {
+                <$w>::as_array_ref(self)
             }
             #[inline(always)]
             fn neg(self) -> Self {

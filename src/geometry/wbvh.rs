@@ -934,8 +934,10 @@ impl<R: Real> WideBvh<R> {
         t0: &mut [W<R>; MAX_WIDTH],
     ) -> u32 {
         let side = [0, 1, 2].map(|a| usize::from(octant >> a & 1));
-        let near = [0, 1, 2].map(|a| node.bounds[side[a]][a].to_array());
-        let far = [0, 1, 2].map(|a| node.bounds[side[a] ^ 1][a].to_array());
+        // Read in place, child by child (copied out, the 24 numbers were loaded at once and
+        // spilled)
+        let near = [0, 1, 2].map(|a| node.bounds[side[a]][a].as_array());
+        let far = [0, 1, 2].map(|a| node.bounds[side[a] ^ 1][a].as_array());
         let mut met = 0;
         for c in 0..node.count as usize {
             let (m, t) = slab_rays(
@@ -974,11 +976,11 @@ impl<R: Real> WideBvh<R> {
         if leaf >> KIND == SPHERES {
             let l = &self.spheres[(leaf & INDEX) as usize];
             let (cx, cy, cz) = (
-                l.center.x.to_array(),
-                l.center.y.to_array(),
-                l.center.z.to_array(),
+                l.center.x.as_array(),
+                l.center.y.as_array(),
+                l.center.z.as_array(),
             );
-            let r2 = l.r2.to_array();
+            let r2 = l.r2.as_array();
             let lanes = mask_of::<W<R>>(active);
             for s in lanes_of(l.used) {
                 let c = W3 {
@@ -1148,11 +1150,11 @@ impl<R: Real> WideBvh<R> {
         if leaf >> KIND == SPHERES {
             let l = &self.spheres[(leaf & INDEX) as usize];
             let (cx, cy, cz) = (
-                l.center.x.to_array(),
-                l.center.y.to_array(),
-                l.center.z.to_array(),
+                l.center.x.as_array(),
+                l.center.y.as_array(),
+                l.center.z.as_array(),
             );
-            let r2 = l.r2.to_array();
+            let r2 = l.r2.as_array();
             for s in lanes_of(l.used) {
                 let c = W3 {
                     x: W::<R>::splat(cx.as_ref()[s]),
