@@ -249,34 +249,36 @@ impl<R: Real> Aggregate<R> {
     /// `t_max[k]`: the mask of the rays [`Aggregate::occluded`] says are blocked, to the bit.
     /// Rays go through the wide BVH together (`WideBvh::occluded_packet`).
     pub fn occluded_packet(&self, rays: &[Ray<R>], t_max: &[R], want: u32) -> u32 {
-        self.occluded_packet_in(rays, None, t_max, want)
+        debug_assert!(rays.len() <= W::<R>::LANES && t_max.len() >= rays.len());
+        let mut tm = <W<R> as Wide>::Array::default();
+        tm.as_mut()[..rays.len()].copy_from_slice(&t_max[..rays.len()]);
+        self.occluded_packet_in(origins_and_directions(rays), &tm, want)
     }
 
-    /// [`Aggregate::occluded_packet`], with the rays also in lanes (`lanes`: origins and
-    /// directions, lane k being `rays[k]` for each k of `want`, the others anything), as the
-    /// wide tracer builds its shadow rays: they are not gathered again.
+    /// [`Aggregate::occluded_packet`] of rays in lanes (`lanes`: origins and directions, lane k
+    /// being ray k for each k of `want`, the others anything; `t_max` a number per lane), as
+    /// the wide tracer builds its shadow rays: never gathered, and made one by one only where
+    /// the one-ray code needs them.
     pub(crate) fn occluded_packet_in(
         &self,
-        rays: &[Ray<R>],
-        lanes: Option<RayLanes<R>>,
-        t_max: &[R],
+        (o, d): RayLanes<R>,
+        lanes_t_max: &<W<R> as Wide>::Array,
         want: u32,
     ) -> u32 {
-        debug_assert!(rays.len() <= W::<R>::LANES && t_max.len() >= rays.len());
+        let t_max = lanes_t_max.as_ref();
+        let ray = |k: usize| Ray {
+            origin: o.at(k),
+            direction: d.at(k),
+        };
         if self.bounded.len() <= FLAT {
             return lanes_of(want)
-                .filter(|&k| self.occluded(&rays[k], t_max[k]))
+                .filter(|&k| self.occluded(&ray(k), t_max[k]))
                 .fold(0, |m, k| m | 1 << k);
         }
         // Planes first, each against every ray in lanes
         let mut blocked = 0;
-        // The rays in lanes, once for the planes and the tree.
-        let (o, d) = lanes.unwrap_or_else(|| origins_and_directions(rays));
         if !self.unbounded.is_empty() && want != 0 {
-            let n = rays.len();
-            let mut tm = <W<R> as Wide>::Array::default();
-            tm.as_mut()[..n].copy_from_slice(&t_max[..n]);
-            let tm = W::<R>::from_array(tm);
+            let tm = W::<R>::from_array(*lanes_t_max);
             for &i in &self.unbounded {
                 let Shape::Plane(plane) = &self.shapes[i as usize] else {
                     unreachable!("only planes are unbounded")
@@ -284,7 +286,7 @@ impl<R: Real> Aggregate<R> {
                 let (hit, _, slow) = plane_bits(o, d, plane, tm, want & !blocked);
                 blocked |= hit & want;
                 for k in lanes_of(slow & want & !blocked) {
-                    if self.shapes[i as usize].hit_t(&rays[k], t_max[k]).is_some() {
+                    if self.shapes[i as usize].hit_t(&ray(k), t_max[k]).is_some() {
                         blocked |= 1 << k;
                     }
                 }
@@ -296,7 +298,7 @@ impl<R: Real> Aggregate<R> {
         blocked
             | self
                 .wide
-                .occluded_packet(&self.shapes, rays, (o, d), t_max, want & !blocked)
+                .occluded_packet(&self.shapes, (o, d), t_max, want & !blocked)
     }
 
     /// [`Aggregate::nearest`] through the binary tree's own search (the reference of the wide

@@ -692,6 +692,15 @@ impl<R: Real> Packet<R> {
         Packet { inv, o3, d3, neg }
     }
 
+    /// Ray k, as its lanes hold it.
+    #[inline(always)]
+    fn ray(&self, k: usize) -> Ray<R> {
+        Ray {
+            origin: self.o3.at(k),
+            direction: self.d3.at(k),
+        }
+    }
+
     /// Ray k's octant of D.
     #[inline(always)]
     fn octant(&self, k: usize) -> u8 {
@@ -744,9 +753,10 @@ fn few<R: Real>() -> usize {
     }
 }
 
-/// The packet traversal's stack: references with the mask of the rays that met the box and
-/// each ray's t₀ of it.
-struct PacketStack<R: Real>(SmallVec<[(W<R>, Ref, u32); STACK]>);
+/// The nearest-hit packet search's stack: references with the mask of the rays that met the box
+/// and each ray's t₀ of it (as an array: a register's alignment would pad each entry to twice
+/// its size).
+struct PacketStack<R: Real>(SmallVec<[(<W<R> as Wide>::Array, Ref, u32); STACK]>);
 
 impl<R: Real> PacketStack<R> {
     #[inline(always)]
@@ -756,24 +766,47 @@ impl<R: Real> PacketStack<R> {
 
     #[inline(always)]
     fn push(&mut self, r: Ref, mask: u32, t0: W<R>) {
-        self.0.push((t0, r, mask));
+        self.0.push((t0.to_array(), r, mask));
     }
 
+    /// Pops entries until one has a ray, of its mask, whose box it met at a t₀ ≤ that ray's
+    /// (perhaps lowered) `t_max`: that entry's node and those rays; `None` once the stack is
+    /// empty.
     #[inline(always)]
-    fn pop(&mut self) -> Option<(Ref, u32, W<R>)> {
-        self.0.pop().map(|(t0, r, mask)| (r, mask, t0))
-    }
-
-    /// Pops entries until one has a ray, of its mask and not in `done`, whose box it met at a
-    /// t₀ ≤ that ray's `t_max`: that entry's node and those rays; `None` once the stack is
-    /// empty. Both packet searches go on from here (the nearest hit with its lowered t_max and
-    /// nothing done, the any-hit search with the rays already blocked done).
-    #[inline(always)]
-    fn pop_met(&mut self, t_max: W<R>, done: u32) -> Option<(Ref, u32)> {
-        while let Some((next, mask, t0)) = self.pop() {
-            let still = mask & le(t0, t_max).bits() & !done;
+    fn pop_met(&mut self, t_max: W<R>) -> Option<(Ref, u32)> {
+        while let Some((t0, next, mask)) = self.0.pop() {
+            let still = mask & le(W::<R>::from_array(t0), t_max).bits();
             if still != 0 {
                 return Some((next, still));
+            }
+        }
+        None
+    }
+}
+
+/// The any-hit packet search's stack: references with the mask of the rays that met the box.
+/// No t₀: a ray's t_max does not change in this search, and each entry's rays met its box
+/// within it.
+struct OpenStack(SmallVec<[(Ref, u32); STACK]>);
+
+impl OpenStack {
+    #[inline(always)]
+    fn new() -> Self {
+        OpenStack(SmallVec::new())
+    }
+
+    #[inline(always)]
+    fn push(&mut self, r: Ref, mask: u32) {
+        self.0.push((r, mask));
+    }
+
+    /// Pops entries until one has a ray of its mask not in `done` (the rays already blocked):
+    /// that entry's node and those rays; `None` once the stack is empty.
+    #[inline(always)]
+    fn pop_open(&mut self, done: u32) -> Option<(Ref, u32)> {
+        while let Some((next, mask)) = self.0.pop() {
+            if mask & !done != 0 {
+                return Some((next, mask & !done));
             }
         }
         None
@@ -912,7 +945,7 @@ impl<R: Real> WideBvh<R> {
             }
             // The next entry with a ray whose box is still met before its (perhaps lowered)
             // t_max
-            match stack.pop_met(*tm, 0) {
+            match stack.pop_met(*tm) {
                 None => return,
                 Some(next) => (cur, active) = next,
             }
@@ -1025,13 +1058,14 @@ impl<R: Real> WideBvh<R> {
         *tm = W::<R>::from_array(a);
     }
 
-    /// [`WideBvh::occluded`] of each ray of `rays` (at most [`Wide::LANES`]) in `live`, ray k
-    /// to `t_max[k]`: the mask of the rays something blocks. A ray leaves the packet at the
+    /// [`WideBvh::occluded`] of each ray in lanes (`o3`, `d3`; lane k the ray k) in `live`, ray
+    /// k to `t_max[k]` (`t_max` holds a number for every lane of `live`): the mask of the rays
+    /// something blocks. (The rays are made from their lanes where the one-ray code needs
+    /// them.) A ray leaves the packet at the
     /// first shape that blocks it.
     pub(crate) fn occluded_packet(
         &self,
         shapes: &[Shape<R>],
-        rays: &[Ray<R>],
         (o3, d3): RayLanes<R>,
         t_max: &[R],
         live: u32,
@@ -1041,12 +1075,19 @@ impl<R: Real> WideBvh<R> {
         };
         if root >> KIND != NODE || live.count_ones() < 2 {
             return lanes_of(live)
-                .filter(|&k| self.occluded(shapes, &rays[k], t_max[k]))
+                .filter(|&k| {
+                    let ray = Ray {
+                        origin: o3.at(k),
+                        direction: d3.at(k),
+                    };
+                    self.occluded(shapes, &ray, t_max[k])
+                })
                 .fold(0, |m, k| m | 1 << k);
         }
         let p = Packet::of(o3, d3);
         let mut tm = <W<R> as Wide>::Array::default();
-        tm.as_mut()[..rays.len()].copy_from_slice(&t_max[..rays.len()]);
+        let n = t_max.len().min(W::<R>::LANES);
+        tm.as_mut()[..n].copy_from_slice(&t_max[..n]);
         let tm = W::<R>::from_array(tm);
         let mut lazy = Lazy::new();
         let mut blocked = 0;
@@ -1055,7 +1096,7 @@ impl<R: Real> WideBvh<R> {
             let octant = p.octant(left.trailing_zeros() as usize);
             let group = p.lanes_in(octant, left);
             left &= !group;
-            blocked |= self.occluded_group(shapes, rays, &p, &mut lazy, octant, group, tm);
+            blocked |= self.occluded_group(shapes, &p, &mut lazy, octant, group, tm);
         }
         blocked
     }
@@ -1068,7 +1109,6 @@ impl<R: Real> WideBvh<R> {
     fn occluded_group(
         &self,
         shapes: &[Shape<R>],
-        rays: &[Ray<R>],
         p: &Packet<R>,
         lazy: &mut Lazy<R>,
         octant: u8,
@@ -1078,7 +1118,7 @@ impl<R: Real> WideBvh<R> {
         let Some((root, _)) = self.root else {
             return 0;
         };
-        let mut stack = PacketStack::<R>::new();
+        let mut stack = OpenStack::new();
         let mut alone = Stack::<R>::new();
         let (mut cur, mut active) = (root, group);
         let mut blocked = 0u32;
@@ -1089,11 +1129,11 @@ impl<R: Real> WideBvh<R> {
             if active.count_ones() as usize <= few::<R>() {
                 // Too few rays left for lanes to pay: each searches this subtree alone.
                 for k in lanes_of(active) {
-                    let r = lazy.get(k, &rays[k], !self.triangles.is_empty());
-                    let (ray, t_k) = (&rays[k], t_max.as_ref()[k]);
+                    let (ray, t_k) = (p.ray(k), t_max.as_ref()[k]);
+                    let r = lazy.get(k, &ray, !self.triangles.is_empty());
                     let mut found = false;
                     self.traverse_from(r, &mut alone, cur, t_k, |leaf, t_max| {
-                        found = self.occluded_leaf(shapes, r, ray, leaf, *t_max);
+                        found = self.occluded_leaf(shapes, r, &ray, leaf, *t_max);
                         found
                     });
                     blocked |= u32::from(found) << k;
@@ -1114,18 +1154,18 @@ impl<R: Real> WideBvh<R> {
                     let k = (order & 7) as usize;
                     order >>= 3;
                     if met & (1 << k) != 0 {
-                        stack.push(node.child[k], masks[k], t0[k]);
+                        stack.push(node.child[k], masks[k]);
                     }
                 }
             } else {
-                let b = self.occluded_leaf_packet(shapes, rays, p, lazy, cur, active, tm, &t_max);
+                let b = self.occluded_leaf_packet(shapes, p, lazy, cur, active, tm, &t_max);
                 blocked |= b;
                 if group & !blocked == 0 {
                     return blocked;
                 }
             }
-            // The rays not yet blocked whose box is met before t_max (which does not change)
-            match stack.pop_met(tm, blocked) {
+            // The rays not yet blocked
+            match stack.pop_open(blocked) {
                 None => return blocked,
                 Some(next) => (cur, active) = next,
             }
@@ -1138,7 +1178,6 @@ impl<R: Real> WideBvh<R> {
     fn occluded_leaf_packet(
         &self,
         shapes: &[Shape<R>],
-        rays: &[Ray<R>],
         p: &Packet<R>,
         lazy: &mut Lazy<R>,
         leaf: Ref,
@@ -1166,7 +1205,7 @@ impl<R: Real> WideBvh<R> {
                 blocked |= hit.bits() & open;
                 for k in lanes_of(slow.bits() & open) {
                     if shapes[l.shape[s] as usize]
-                        .hit_t(&rays[k], t_max.as_ref()[k])
+                        .hit_t(&p.ray(k), t_max.as_ref()[k])
                         .is_some()
                     {
                         blocked |= 1 << k;
@@ -1179,8 +1218,9 @@ impl<R: Real> WideBvh<R> {
             return blocked;
         }
         for k in lanes_of(active) {
-            let r = lazy.get(k, &rays[k], !self.triangles.is_empty());
-            if self.occluded_leaf(shapes, r, &rays[k], leaf, t_max.as_ref()[k]) {
+            let ray = p.ray(k);
+            let r = lazy.get(k, &ray, !self.triangles.is_empty());
+            if self.occluded_leaf(shapes, r, &ray, leaf, t_max.as_ref()[k]) {
                 blocked |= 1 << k;
             }
         }

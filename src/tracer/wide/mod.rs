@@ -183,7 +183,6 @@ impl<R: Real, const SHADOWS: bool> LaneSide<W<R>> for WideSide<'_, R, SHADOWS> {
         if !SHADOWS {
             return need;
         }
-        let lanes = W::<R>::LANES;
         self.traced += u64::from(need.bits().count_ones());
         // ShadowRays::ray in lanes: from the offset origin towards the light, to a hair short
         // of a positioned light, for ever to a directional one.
@@ -213,39 +212,11 @@ impl<R: Real, const SHADOWS: bool> LaneSide<W<R>> for WideSide<'_, R, SHADOWS> {
         let blocked = match self.flat {
             // The rays as they are, in lanes.
             Some(flat) => flat.occluded_lanes(origin, direction, t_max, want),
-            None => {
-                // Lanes without a ray repeat the first one (and are not asked).
-                let first = want.trailing_zeros() as usize;
-                let (ox, oy, oz) = (
-                    origin.x.to_array(),
-                    origin.y.to_array(),
-                    origin.z.to_array(),
-                );
-                let (dx, dy, dz) = (
-                    direction.x.to_array(),
-                    direction.y.to_array(),
-                    direction.z.to_array(),
-                );
-                let mut tm = t_max.to_array();
-                let mut rays = [Ray {
-                    origin: V3::<R>::ZERO,
-                    direction: V3::<R>::ZERO,
-                }; 8];
-                for (k, ray) in rays.iter_mut().enumerate().take(lanes) {
-                    let j = if want & (1 << k) != 0 { k } else { first };
-                    *ray = Ray {
-                        origin: V3::<R>::new(ox.as_ref()[j], oy.as_ref()[j], oz.as_ref()[j]),
-                        direction: V3::<R>::new(dx.as_ref()[j], dy.as_ref()[j], dz.as_ref()[j]),
-                    };
-                    tm.as_mut()[k] = tm.as_ref()[j];
-                }
-                self.aggregate.occluded_packet_in(
-                    &rays[..lanes],
-                    Some((origin, direction)),
-                    tm.as_ref(),
-                    want,
-                )
-            }
+            // The rays as they are, in lanes, made one by one only where the one-ray code
+            // needs them.
+            None => self
+                .aggregate
+                .occluded_packet_in((origin, direction), &t_max.to_array(), want),
         };
         need.and(mask_of::<W<R>>(blocked).not())
     }
