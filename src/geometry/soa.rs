@@ -82,7 +82,7 @@ pub(crate) fn sphere_hit_t<L: Wide>(
 /// (no hit, nothing undecided) when every live lane is a miss by the cheap test, so that the
 /// caller goes on to the next shape at once.
 #[inline(always)]
-fn sphere_hit_t_in<L: Wide>(
+pub(crate) fn sphere_hit_t_in<L: Wide>(
     o: W3<L>,
     d: W3<L>,
     center: W3<L>,

@@ -35,7 +35,7 @@ use smallvec::SmallVec;
 use super::bounds::{inverse, Aabb};
 use super::bvh::Bvh;
 use super::ray::RayLanes;
-use super::soa::sphere_hit_t;
+use super::soa::{sphere_hit_t, sphere_hit_t_in};
 use super::triangle::Shear;
 use super::{Ray, Shape};
 use crate::core::lanes::{lanes_of, mask_of, Lanes, Wide, W, W3};
@@ -1021,8 +1021,13 @@ impl<R: Real> WideBvh<R> {
                     y: W::<R>::splat(cy.as_ref()[s]),
                     z: W::<R>::splat(cz.as_ref()[s]),
                 };
-                let (hit, t, slow) =
-                    sphere_hit_t(p.o3, p.d3, c, W::<R>::splat(r2.as_ref()[s]), *tm);
+                // Past the cheap test only where some ray of the packet that met the leaf
+                // may hit the sphere.
+                let Some((hit, t, slow)) =
+                    sphere_hit_t_in(p.o3, p.d3, c, W::<R>::splat(r2.as_ref()[s]), *tm, active)
+                else {
+                    continue;
+                };
                 let (hit_bits, slow) = (hit.bits() & active, slow.bits() & active);
                 if hit_bits | slow == 0 {
                     continue;
@@ -1200,8 +1205,12 @@ impl<R: Real> WideBvh<R> {
                     y: W::<R>::splat(cy.as_ref()[s]),
                     z: W::<R>::splat(cz.as_ref()[s]),
                 };
-                let (hit, _, slow) = sphere_hit_t(p.o3, p.d3, c, W::<R>::splat(r2.as_ref()[s]), tm);
                 let open = active & !blocked;
+                let Some((hit, _, slow)) =
+                    sphere_hit_t_in(p.o3, p.d3, c, W::<R>::splat(r2.as_ref()[s]), tm, open)
+                else {
+                    continue;
+                };
                 blocked |= hit.bits() & open;
                 for k in lanes_of(slow.bits() & open) {
                     if shapes[l.shape[s] as usize]
