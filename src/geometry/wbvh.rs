@@ -741,13 +741,14 @@ fn slab_rays<R: Real>(near: [R; 3], far: [R; 3], p: &Packet<R>, t_max: W<R>) -> 
 
 /// Rays the packet traversal takes on together: with this many or fewer, each ray goes on by
 /// itself (the lanes of the rays that left would be computed for nothing). Measured on 10,000
-/// and 100,000 spheres (callgrind, once the stacks cost nothing to start): f64 packets pay with 3
-/// of 4 lanes or more (1 % fewer instructions than with 4), f32 ones with 4 of 8 or more (0.5 %
-/// fewer than with 5); one ray fewer or more costs more.
+/// and 100,000 spheres (callgrind, whole process): f64 packets pay with 2 of 4 lanes or more
+/// (0.65 % and 0.3 % fewer instructions than with 3, since the packets' node tests read the
+/// node in place; going on with 1 costs 2.0 % more), f32 ones with 4 of 8 or more (with 3:
+/// 0.1 % fewer at 10,000 spheres, 0.2 % more at 100,000; with 2: 1.5 % more).
 fn few<R: Real>() -> usize {
     let lanes = W::<R>::LANES;
     if lanes <= 4 {
-        lanes - 2
+        lanes - 3
     } else {
         lanes / 2 - 1
     }
