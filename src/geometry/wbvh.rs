@@ -757,7 +757,10 @@ fn few<R: Real>() -> usize {
 /// The nearest-hit packet search's stack: references with the mask of the rays that met the box
 /// and each ray's t₀ of it (as an array: a register's alignment would pad each entry to twice
 /// its size).
-struct PacketStack<R: Real>(SmallVec<[(<W<R> as Wide>::Array, Ref, u32); STACK]>);
+struct PacketStack<R: Real>(SmallVec<[(LaneArray<R>, Ref, u32); STACK]>);
+
+/// A register of `R` as an array.
+type LaneArray<R> = <W<R> as Wide>::Array;
 
 impl<R: Real> PacketStack<R> {
     #[inline(always)]
