@@ -88,7 +88,6 @@ macro_rules! impl_wide {
             fn to_array(self) -> [$s; $n] {
                 <$w>::to_array(self)
             }
-
             #[inline(always)]
             fn as_array(&self) -> &[$s; $n] {
                 <$w>::as_array_ref(self)

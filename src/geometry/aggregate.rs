@@ -12,7 +12,7 @@
 use super::bounds::Aabb;
 use super::bvh::Bvh;
 use super::hit::SurfaceHit;
-use super::ray::RayLanes;
+use super::ray::{lane_ray, RayLanes};
 use super::soa::plane_hit_t;
 use super::wbvh::WideBvh;
 use super::{Plane, Ray, Shape};
@@ -266,10 +266,7 @@ impl<R: Real> Aggregate<R> {
         want: u32,
     ) -> u32 {
         let t_max = lanes_t_max.as_ref();
-        let ray = |k: usize| Ray {
-            origin: o.at(k),
-            direction: d.at(k),
-        };
+        let ray = |k: usize| lane_ray((o, d), k);
         if self.bounded.len() <= FLAT {
             return lanes_of(want)
                 .filter(|&k| self.occluded(&ray(k), t_max[k]))

@@ -22,3 +22,12 @@ impl<R: Real> Ray<R> {
 
 /// A packet of rays in lanes: the origins and the directions, lane k holding ray k.
 pub(crate) type RayLanes<R> = (W3<W<R>>, W3<W<R>>);
+
+/// Ray k of a packet in lanes, as its lanes hold it.
+#[inline(always)]
+pub(crate) fn lane_ray<R: Real>((o, d): RayLanes<R>, k: usize) -> Ray<R> {
+    Ray {
+        origin: o.at(k),
+        direction: d.at(k),
+    }
+}

@@ -34,7 +34,7 @@ use smallvec::SmallVec;
 
 use super::bounds::{inverse, Aabb};
 use super::bvh::Bvh;
-use super::ray::RayLanes;
+use super::ray::{lane_ray, RayLanes};
 use super::soa::{sphere_hit_t, sphere_hit_t_in};
 use super::triangle::Shear;
 use super::{Ray, Shape};
@@ -695,10 +695,7 @@ impl<R: Real> Packet<R> {
     /// Ray k, as its lanes hold it.
     #[inline(always)]
     fn ray(&self, k: usize) -> Ray<R> {
-        Ray {
-            origin: self.o3.at(k),
-            direction: self.d3.at(k),
-        }
+        lane_ray((self.o3, self.d3), k)
     }
 
     /// Ray k's octant of D.
@@ -1069,9 +1066,8 @@ impl<R: Real> WideBvh<R> {
 
     /// [`WideBvh::occluded`] of each ray in lanes (`o3`, `d3`; lane k the ray k) in `live`, ray
     /// k to `t_max[k]` (`t_max` holds a number for every lane of `live`): the mask of the rays
-    /// something blocks. (The rays are made from their lanes where the one-ray code needs
-    /// them.) A ray leaves the packet at the
-    /// first shape that blocks it.
+    /// something blocks. A ray leaves the packet at the first shape that blocks it; a ray is
+    /// made from its lanes only where the one-ray code needs it.
     pub(crate) fn occluded_packet(
         &self,
         shapes: &[Shape<R>],
@@ -1084,13 +1080,7 @@ impl<R: Real> WideBvh<R> {
         };
         if root >> KIND != NODE || live.count_ones() < 2 {
             return lanes_of(live)
-                .filter(|&k| {
-                    let ray = Ray {
-                        origin: o3.at(k),
-                        direction: d3.at(k),
-                    };
-                    self.occluded(shapes, &ray, t_max[k])
-                })
+                .filter(|&k| self.occluded(shapes, &lane_ray((o3, d3), k), t_max[k]))
                 .fold(0, |m, k| m | 1 << k);
         }
         let p = Packet::of(o3, d3);
