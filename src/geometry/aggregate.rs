@@ -295,7 +295,7 @@ impl<R: Real> Aggregate<R> {
         blocked
             | self
                 .wide
-                .occluded_packet(&self.shapes, (o, d), t_max, want & !blocked)
+                .occluded_packet(&self.shapes, (o, d), lanes_t_max, want & !blocked)
     }
 
     /// [`Aggregate::nearest`] through the binary tree's own search (the reference of the wide

@@ -1065,14 +1065,14 @@ impl<R: Real> WideBvh<R> {
     }
 
     /// [`WideBvh::occluded`] of each ray in lanes (`o3`, `d3`; lane k the ray k) in `live`, ray
-    /// k to `t_max[k]` (`t_max` holds a number for every lane of `live`): the mask of the rays
-    /// something blocks. A ray leaves the packet at the first shape that blocks it; a ray is
-    /// made from its lanes only where the one-ray code needs it.
+    /// k to lane k of `t_max`: the mask of the rays something blocks. A ray leaves the packet at
+    /// the first shape that blocks it; a ray is made from its lanes only where the one-ray code
+    /// needs it.
     pub(crate) fn occluded_packet(
         &self,
         shapes: &[Shape<R>],
         (o3, d3): RayLanes<R>,
-        t_max: &[R],
+        t_max: &LaneArray<R>,
         live: u32,
     ) -> u32 {
         let Some((root, _)) = self.root else {
@@ -1080,14 +1080,11 @@ impl<R: Real> WideBvh<R> {
         };
         if root >> KIND != NODE || live.count_ones() < 2 {
             return lanes_of(live)
-                .filter(|&k| self.occluded(shapes, &lane_ray((o3, d3), k), t_max[k]))
+                .filter(|&k| self.occluded(shapes, &lane_ray((o3, d3), k), t_max.as_ref()[k]))
                 .fold(0, |m, k| m | 1 << k);
         }
         let p = Packet::of(o3, d3);
-        let mut tm = <W<R> as Wide>::Array::default();
-        let n = t_max.len().min(W::<R>::LANES);
-        tm.as_mut()[..n].copy_from_slice(&t_max[..n]);
-        let tm = W::<R>::from_array(tm);
+        let tm = W::<R>::from_array(*t_max);
         let mut lazy = Lazy::new();
         let mut blocked = 0;
         let mut left = live;
