@@ -34,6 +34,9 @@ pub trait Wide:
     type Scalar: Real;
     /// The lanes as an array, `[Scalar; LANES]`.
     type Array: Copy + Default + Debug + AsRef<[Self::Scalar]> + AsMut<[Self::Scalar]>;
+    /// A u32 per lane, `[u32; LANES]` (a wide node's children, a leaf's shapes: no room kept
+    /// for lanes the precision does not have).
+    type Indices: Copy + Default + Debug + Send + Sync + AsRef<[u32]> + AsMut<[u32]>;
     /// How many lanes: 8 for f32, 4 for f64.
     const LANES: usize;
 
@@ -74,6 +77,7 @@ macro_rules! impl_wide {
         impl Wide for $w {
             type Scalar = $s;
             type Array = [$s; $n];
+            type Indices = [u32; $n];
             const LANES: usize = $n;
 
             #[inline(always)]
