@@ -9,7 +9,6 @@
 //! The tracer and the solver's ray problems both ask here, so a pixel and the equivalent ray
 //! problem meet the same surface at the same point.
 
-use super::bounds::Aabb;
 use super::bvh::Bvh;
 use super::hit::SurfaceHit;
 use super::ray::{lane_ray, RayLanes};
@@ -82,23 +81,17 @@ impl<R: Real> Aggregate<R> {
         // (Room for every shape: pages never written are never resident.)
         let mut unbounded = Vec::new();
         let mut bounded = Vec::with_capacity(shapes.len());
-        let mut boxes = Vec::with_capacity(shapes.len());
         for (i, s) in shapes.iter().enumerate() {
             let i = u32::try_from(i).expect("fewer than 2^32 surfaces");
             match s {
                 Shape::Plane(_) => unbounded.push(i),
-                Shape::Sphere(sp) => {
-                    bounded.push(i);
-                    boxes.push(Aabb::of_sphere(sp.center, sp.radius));
-                }
-                Shape::Triangle(t) => {
-                    bounded.push(i);
-                    boxes.push(t.bounds());
-                }
+                Shape::Sphere(_) | Shape::Triangle(_) => bounded.push(i),
             }
         }
+        let boxes =
+            (bounded.iter()).map(|&i| shapes[i as usize].bounds().expect("a bounded shape"));
         // One shape per lane in a leaf: a leaf is one test in lanes.
-        let bvh = Bvh::build_with_leaves(&boxes, W::<R>::LANES);
+        let bvh = Bvh::build_with_leaves(boxes, W::<R>::LANES);
         let wide = if bounded.len() > FLAT {
             WideBvh::new(&bvh, &bounded, &shapes)
         } else {

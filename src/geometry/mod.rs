@@ -74,6 +74,15 @@ impl<R: Real> LineHits<R> {
 }
 
 impl<R: Real> Shape<R> {
+    /// The box around the surface; `None` for a plane, which has none.
+    pub(crate) fn bounds(&self) -> Option<Aabb<R>> {
+        match self {
+            Shape::Plane(_) => None,
+            Shape::Sphere(s) => Some(Aabb::of_sphere(s.center, s.radius)),
+            Shape::Triangle(t) => Some(t.bounds()),
+        }
+    }
+
     /// The parameters where the ray's line meets the surface.
     pub(crate) fn line_hits(&self, ray: &Ray<R>) -> LineHits<R> {
         match self {

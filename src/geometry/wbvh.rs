@@ -1362,7 +1362,7 @@ mod tests {
                 _ => unreachable!("a sphere"),
             })
             .collect();
-        let bvh = Bvh::build_with_leaves(&bounds, 2);
+        let bvh = Bvh::build_with_leaves(bounds.iter().copied(), 2);
         let mut checked = 0;
         for i in 0..bvh.nodes().len() {
             for levels in 1..=3 {
@@ -1682,18 +1682,11 @@ mod tests {
     fn collapsed_nodes_are_full_and_cover_every_shape<R: Real>() {
         let mut rng = Rng::new(9);
         let shapes = soup::<R>(&mut rng, Soup::Apart, 3000, 1.0);
-        let boxes: Vec<Aabb<R>> = shapes
-            .iter()
-            .filter_map(|s| match s {
-                Shape::Sphere(s) => Some(Aabb::of_sphere(s.center, s.radius)),
-                Shape::Triangle(t) => Some(t.bounds()),
-                Shape::Plane(_) => None,
-            })
-            .collect();
+        let boxes: Vec<Aabb<R>> = shapes.iter().filter_map(Shape::bounds).collect();
         let ids: Vec<u32> = (0..shapes.len() as u32)
             .filter(|&i| !matches!(shapes[i as usize], Shape::Plane(_)))
             .collect();
-        let bvh = Bvh::build_with_leaves(&boxes, W::<R>::LANES);
+        let bvh = Bvh::build_with_leaves(boxes.iter().copied(), W::<R>::LANES);
         let w = WideBvh::new(&bvh, &ids, &shapes);
         // Every shape in exactly one leaf.
         let mut seen = vec![0; shapes.len()];
