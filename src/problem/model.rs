@@ -273,8 +273,10 @@ pub struct Surface<R: Real> {
     pub shape: Shape<R>,
     /// Its material.
     pub material: NamedMaterial<R>,
-    /// A plane's normal as given.
-    pub normal: Option<GivenVector<R>>,
+    /// A plane's normal as given. Boxed: a scene holds a plane or two and many spheres or
+    /// triangles, and in place it made every surface 56 bytes larger (216 bytes in f64, 21.6 MB
+    /// for 100,000 spheres, the largest block of a large scene's render).
+    pub normal: Option<Box<GivenVector<R>>>,
     /// Where it came from: its index in the file's `surfaces`, and for a mesh the triangle's
     /// index in the mesh.
     pub source: SurfaceSource,
@@ -287,4 +289,19 @@ pub struct SurfaceSource {
     pub index: usize,
     /// For a mesh, the triangle's index in it; `None` for other surfaces.
     pub triangle: Option<usize>,
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    #[cfg(target_pointer_width = "64")]
+    fn a_validated_surface_stays_small() {
+        // A scene of 100,000 spheres holds 100,000 of these for the whole render: a plane's
+        // normal as given (56 bytes in f64) is boxed. 216 bytes in f64 before it was: the
+        // shape 88, the material 40, the normal 64, the source 24.
+        let size = std::mem::size_of::<Surface<f64>>();
+        assert!(size <= 160, "Surface<f64> is {size} bytes");
+    }
 }

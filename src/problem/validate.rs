@@ -723,7 +723,7 @@ fn surface<R: Real>(
                 )?,
                 normal: n.unit,
             };
-            (Shape::Plane(plane), Some(n))
+            (Shape::Plane(plane), Some(Box::new(n)))
         }
         SurfaceType::Sphere => {
             let radius = required(s.radius, base, "radius", what)?;

@@ -528,7 +528,7 @@ fn data<R: Real>(problem: &Problem<R>, lang: Lang) -> Vec<DataRow> {
                         t(", "),
                         Math(Formula::N),
                         EQ,
-                        Vector(v::<R>(sf.normal.map_or(pl.normal, |n| n.given))),
+                        Vector(v::<R>(sf.normal.as_deref().map_or(pl.normal, |n| n.given))),
                     ],
                     Shape::Sphere(sp) => vec![
                         Math(Formula::Center),

@@ -274,7 +274,7 @@ pub(super) fn find<R: Real>(
         Target::Ray { .. } | Target::Scene { .. } => s
             .intersection
             .and_then(|x| x.surface)
-            .and_then(|i| problem.surfaces()[i].normal)
+            .and_then(|i| problem.surfaces()[i].normal.as_deref().copied())
             .map(|n| n.length),
     };
     if let Some(l) = normal_length.filter(|&l| !is_unit_length(l)) {

@@ -550,8 +550,8 @@ pub(crate) fn solve_ray_with<R: Real, F: Formulas>(
             _ => None,
         };
         let normal = NormalUsed {
-            given: s.normal.map_or(hit.normal, |n| n.given),
-            length: s.normal.map_or(R::ONE, |n| n.length),
+            given: s.normal.as_deref().map_or(hit.normal, |n| n.given),
+            length: s.normal.as_deref().map_or(R::ONE, |n| n.length),
             used: facing.normal,
             reversed: facing.reversed,
             smooth,
