@@ -338,7 +338,10 @@ impl<R: Real> Bvh<R> {
     /// # Panics
     /// With 2³² primitives or more (their indices are u32).
     pub fn build(bounds: &[Aabb<R>]) -> Self {
-        Self::build_with_leaves(bounds.iter().copied(), MAX_LEAF)
+        let mut bvh = Self::build_with_leaves(bounds.iter().copied(), MAX_LEAF);
+        // A tree built to be kept holds no room for the 2N − 1 nodes it was given.
+        bvh.nodes.shrink_to_fit();
+        bvh
     }
 
     /// [`Bvh::build`] of the boxes `bounds` yields, with leaves of up to `max_leaf` primitives
@@ -375,8 +378,8 @@ impl<R: Real> Bvh<R> {
             let root = Bin::of(&items);
             builder.node(&mut items, 0, root, 0);
         }
-        // (Not shrunk: the aggregate keeps this tree only while it builds the wide one, and a
-        // shrink copied every node into a new allocation.)
+        // (Not shrunk here: the aggregate keeps this tree only while it builds the wide one,
+        // and a shrink copied every node into a new allocation; `build` shrinks its own.)
         let nodes = builder.nodes;
         let prims = items.iter().map(|it| it.index).collect();
         Bvh { nodes, prims }
@@ -732,6 +735,17 @@ mod tests {
         let s = spheres::<f32>(&mut rng, 5000, 1.0, 0.0);
         let b = boxes(&s);
         assert_eq!(Bvh::build(&b), Bvh::build(&b));
+    }
+
+    #[test]
+    fn a_tree_built_to_be_kept_holds_no_spare_room() {
+        // Built with room for 2N − 1 nodes; 5,000 spheres in leaves of up to MAX_LEAF make far
+        // fewer, and a tree `build` returns is kept.
+        let mut rng = Rng::new(5);
+        let b = boxes(&spheres::<f64>(&mut rng, 5000, 1.0, 0.0));
+        let bvh = Bvh::build(&b);
+        assert!(bvh.nodes.len() < 2 * b.len() - 1);
+        assert_eq!(bvh.nodes.capacity(), bvh.nodes.len());
     }
 
     fn empty_and_single<R: Real>() {
