@@ -98,6 +98,21 @@ impl<R: Real> Node<R> {
     fn used(&self) -> u32 {
         (1u32 << self.count()) - 1
     }
+
+    /// Each child of the lanes in `met` (children some ray met), for the octant `octant`, in
+    /// the order a traversal pushes them (the last the binary traversal visits first): its
+    /// lane and reference to `push`.
+    #[inline(always)]
+    fn push_met(&self, octant: usize, met: u32, mut push: impl FnMut(usize, Ref)) {
+        let mut order = self.order[octant];
+        for _ in 0..self.count() {
+            let k = (order & 7) as usize;
+            order >>= 3;
+            if met & (1 << k) != 0 {
+                push(k, self.child.as_ref()[k]);
+            }
+        }
+    }
 }
 
 /// Up to [`Wide::LANES`] spheres of one binary leaf, in its order.
@@ -527,14 +542,7 @@ impl<R: Real> WideBvh<R> {
                 if hit != 0 {
                     let t0 = t0.to_array();
                     // Pushed last to first, so the first in the binary order comes off first
-                    let mut order = node.order[r.octant];
-                    for _ in 0..node.count() {
-                        let k = (order & 7) as usize;
-                        order >>= 3;
-                        if hit & (1 << k) != 0 {
-                            stack.push(node.child.as_ref()[k], t0.as_ref()[k]);
-                        }
-                    }
+                    node.push_met(r.octant, hit, |k, child| stack.push(child, t0.as_ref()[k]));
                 }
             } else if leaf(cur, &mut t_max) {
                 return;
@@ -949,14 +957,9 @@ impl<R: Real> WideBvh<R> {
                     continue;
                 }
                 if met != 0 {
-                    let mut order = node.order[octant as usize];
-                    for _ in 0..node.count() {
-                        let k = (order & 7) as usize;
-                        order >>= 3;
-                        if met & (1 << k) != 0 {
-                            stack.push(node.child.as_ref()[k], masks[k], t0[k]);
-                        }
-                    }
+                    node.push_met(octant as usize, met, |k, child| {
+                        stack.push(child, masks[k], t0[k]);
+                    });
                 }
             } else {
                 self.nearest_leaf_packet(shapes, rays, p, lazy, cur, active, tm, best);
@@ -1162,14 +1165,7 @@ impl<R: Real> WideBvh<R> {
                     (cur, active) = (node.child.as_ref()[k], masks[k]);
                     continue;
                 }
-                let mut order = node.order[octant as usize];
-                for _ in 0..node.count() {
-                    let k = (order & 7) as usize;
-                    order >>= 3;
-                    if met & (1 << k) != 0 {
-                        stack.push(node.child.as_ref()[k], masks[k]);
-                    }
-                }
+                node.push_met(octant as usize, met, |k, child| stack.push(child, masks[k]));
             } else {
                 let b = self.occluded_leaf_packet(shapes, p, lazy, cur, active, tm, &t_max);
                 blocked |= b;
@@ -1357,9 +1353,10 @@ mod tests {
     fn one_walk_gives_the_binary_traversals_order_of_a_cut_for_every_octant() {
         let mut rng = Rng::new(11);
         let bounds: Vec<Aabb<f64>> = (0..500)
-            .map(|_| match sphere::<f64>(&mut rng, 1.0) {
-                Shape::Sphere(s) => Aabb::of_sphere(s.center, s.radius),
-                _ => unreachable!("a sphere"),
+            .map(|_| {
+                sphere::<f64>(&mut rng, 1.0)
+                    .bounds()
+                    .expect("a sphere has a box")
             })
             .collect();
         let bvh = Bvh::build_with_leaves(bounds.iter().copied(), 2);
