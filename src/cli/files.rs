@@ -228,15 +228,23 @@ pub(crate) fn guard_signals() {
         let flag = std::sync::Arc::new(std::sync::atomic::AtomicBool::new(false));
         let _ = signal_hook::flag::register(SIGXFSZ, flag);
         if let Ok(mut signals) = signal_hook::iterator::Signals::new([SIGINT, SIGTERM, SIGHUP]) {
-            let _ = std::thread::Builder::new()
+            let (ready, started) = std::sync::mpsc::sync_channel::<()>(1);
+            let spawned = std::thread::Builder::new()
                 .name("signals".into())
                 .spawn(move || {
+                    let _ = ready.send(());
                     if let Some(signal) = signals.forever().next() {
                         remove_pending();
                         let _ = signal_hook::low_level::emulate_default_handler(signal);
                         std::process::exit(128 + signal);
                     }
                 });
+            // Until the thread runs: its start (std's alternative signal stack) takes its
+            // memory before the work does. Started after, under a memory limit the work had
+            // taken, it failed with std's panic message before phong's own error.
+            if spawned.is_ok() {
+                let _ = started.recv();
+            }
         }
     }
 }
