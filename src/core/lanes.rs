@@ -1,6 +1,7 @@
 //! Lanes: several numbers of one precision in one register, for the wide tracer
-//! (`tracer::wide`). 8 lanes of f32 or 4 of f64 in 256 bits (`wide`'s `f32x8`, `f64x4`), so that
-//! f32 does twice the work per instruction.
+//! (`tracer::wide`). 8 lanes of f32 (`wide`'s `f32x8`, 256 bits); f64 in as many lanes as a
+//! register of the CPU phong is built for holds ([`F64Lanes`]): 8 (`f64x8`) with AVX-512's
+//! 512-bit registers, else 4 (`f64x4`: one register with AVX2, two SSE2 halves without).
 //!
 //! Every operation here is the IEEE operation of each lane: +, −, ×, ÷ and √ are correctly
 //! rounded in a lane exactly as in a scalar, negation flips the sign bit as a scalar's does, and
@@ -13,7 +14,7 @@
 use std::fmt::Debug;
 use std::ops::{Add, Div, Mul, Sub};
 
-use wide::{f32x8, f64x4, CmpEq, CmpGt, CmpLe, CmpLt};
+use wide::{f32x8, f64x4, f64x8};
 
 use super::real::{Real, Vector, V3};
 
@@ -37,7 +38,7 @@ pub trait Wide:
     /// A u32 per lane, `[u32; LANES]` (a wide node's children, a leaf's shapes: no room kept
     /// for lanes the precision does not have).
     type Indices: Copy + Default + Debug + Send + Sync + AsRef<[u32]> + AsMut<[u32]>;
-    /// How many lanes: 8 for f32, 4 for f64.
+    /// How many lanes: 8 for f32; 8 or 4 for f64 ([`F64Lanes`]).
     const LANES: usize;
 
     /// Every lane `x`.
@@ -94,7 +95,7 @@ macro_rules! impl_wide {
             }
             #[inline(always)]
             fn as_array(&self) -> &[$s; $n] {
-                <$w>::as_array_ref(self)
+                <$w>::as_array(self)
             }
             #[inline(always)]
             fn neg(self) -> Self {
@@ -106,22 +107,22 @@ macro_rules! impl_wide {
             }
             #[inline(always)]
             fn lt(self, o: Self) -> Self {
-                self.cmp_lt(o)
+                self.simd_lt(o)
             }
             #[inline(always)]
             fn gt(self, o: Self) -> Self {
-                self.cmp_gt(o)
+                self.simd_gt(o)
             }
             #[inline(always)]
             fn eq(self, o: Self) -> Self {
-                self.cmp_eq(o)
+                self.simd_eq(o)
             }
             #[inline(always)]
             fn finite(self) -> Self {
                 // x − x is +0 exactly for a finite x and NaN for ±∞ or NaN: two float
                 // operations, where the bit test on the exponent needs 64-bit integer
                 // comparisons that SSE2 does not have.
-                (self - self).cmp_eq(<$w>::splat(0.0))
+                (self - self).simd_eq(<$w>::splat(0.0))
             }
             #[inline(always)]
             fn and(self, o: Self) -> Self {
@@ -137,11 +138,11 @@ macro_rules! impl_wide {
             }
             #[inline(always)]
             fn select(self, t: Self, f: Self) -> Self {
-                self.blend(t, f)
+                <$w>::select(self, t, f)
             }
             #[inline(always)]
             fn bits(self) -> u32 {
-                self.move_mask() as u32
+                self.to_bitmask() as u32
             }
         }
     };
@@ -149,6 +150,18 @@ macro_rules! impl_wide {
 
 impl_wide!(f32x8, f32, 8);
 impl_wide!(f64x4, f64, 4);
+impl_wide!(f64x8, f64, 8);
+
+/// f64's lanes ([`Real::Wide`] of f64): 8 where the build's CPU has AVX-512 (one 512-bit
+/// register; the 100,000-sphere trace 11 % faster than in 4 lanes), else 4 (8 lanes in two
+/// halves cost 5-8 % with SSE2 and bought nothing sure with AVX2). docs/benchmarks.md, "f64
+/// lanes". The images are the same bytes either way (the lanes compute the scalar bits; the
+/// wide tree's answer is the binary tree's whatever its width).
+#[cfg(target_feature = "avx512f")]
+pub type F64Lanes = f64x8;
+/// f64's lanes ([`Real::Wide`] of f64): see the AVX-512 build's note.
+#[cfg(not(target_feature = "avx512f"))]
+pub type F64Lanes = f64x4;
 
 /// Shorthand for the lanes of a precision.
 pub type W<R> = <R as Real>::Wide;
@@ -576,7 +589,7 @@ macro_rules! impl_lanes_wide {
             }
             #[inline(always)]
             fn lane_bits(self) -> u32 {
-                self.move_mask() as u32
+                self.to_bitmask() as u32
             }
         }
 
@@ -615,7 +628,7 @@ macro_rules! impl_lanes_wide {
             }
             #[inline(always)]
             fn at_most(self, o: Self) -> Self {
-                self.cmp_le(o)
+                self.simd_le(o)
             }
             #[inline(always)]
             fn minimum(self, o: Self) -> Self {
@@ -638,7 +651,7 @@ macro_rules! impl_lanes_wide {
                     bits - bytemuck::cast::<$w, $i>(away) + bytemuck::cast::<$w, $i>(nearer),
                 );
                 let odd = (up | down) & !(Wide::finite(self) & (pos | neg));
-                let stepped = odd.blend(self, stepped);
+                let stepped = <$w>::select(odd, self, stepped);
                 stepped.map_lanes(odd, |k, x| {
                     if o.to_array()[k] > 0.0 {
                         x.next_up()
@@ -649,11 +662,11 @@ macro_rules! impl_lanes_wide {
             }
             #[inline(always)]
             fn pick(m: Self, t: Self, f: Self) -> Self {
-                m.blend(t, f)
+                <$w>::select(m, t, f)
             }
             #[inline(always)]
             fn pick_mask(m: Self, t: Self, f: Self) -> Self {
-                m.blend(t, f)
+                <$w>::select(m, t, f)
             }
             #[inline(always)]
             fn all_lanes() -> Self {
@@ -722,6 +735,7 @@ macro_rules! impl_lanes_wide {
 
 impl_lanes_wide!(f32x8, f32, wide::i32x8);
 impl_lanes_wide!(f64x4, f64, wide::i64x4);
+impl_lanes_wide!(f64x8, f64, wide::i64x8);
 
 /// The lane mask with lane k set where bit k of `bits` is.
 #[inline(always)]

@@ -341,7 +341,7 @@ macro_rules! impl_real {
 }
 
 impl_real!(f32, glam::Vec3, wide::f32x8, "f32");
-impl_real!(f64, glam::DVec3, wide::f64x4, "f64");
+impl_real!(f64, glam::DVec3, super::lanes::F64Lanes, "f64");
 
 /// Shorthand for the vector type of a precision.
 pub type V3<R> = <R as Real>::Vec3;

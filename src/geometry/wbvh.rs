@@ -1,7 +1,8 @@
 //! The wide BVH: the binary SAH tree of [`Bvh`] collapsed so that each node holds up to
-//! [`Wide::LANES`] children (8 in f32, 4 in f64) whose boxes sit in lanes, tested against one
-//! ray by one slab test per node; its leaves hold up to [`Wide::LANES`] spheres or triangles in
-//! structure-of-arrays blocks, tested against the ray in lanes, with no dispatch on the kind.
+//! [`Wide::LANES`] children (8 in f32; 8 or 4 in f64, [`crate::core::lanes::F64Lanes`]) whose
+//! boxes sit in lanes, tested against one ray by one slab test per node; its leaves hold up to
+//! [`Wide::LANES`] spheres or triangles in structure-of-arrays blocks, tested against the ray in
+//! lanes, with no dispatch on the kind.
 //! One ray at a time (the scalar engine, the solver), or a packet of up to [`Wide::LANES`] rays
 //! (the wide engine's queues and shadow rays: see "Packets" below); a wide tree pays for every
 //! ray, a packet only for coherent rays, so a packet's rays go on alone once few are left
@@ -766,7 +767,8 @@ fn slab_rays<R: Real>(near: [R; 3], far: [R; 3], p: &Packet<R>, t_max: W<R>) -> 
 /// and 100,000 spheres (callgrind, whole process): f64 packets pay with 2 of 4 lanes or more
 /// (0.65 % and 0.3 % fewer instructions than with 3, since the packets' node tests read the
 /// node in place; going on with 1 costs 2.0 % more), f32 ones with 4 of 8 or more (with 3:
-/// 0.1 % fewer at 10,000 spheres, 0.2 % more at 100,000; with 2: 1.5 % more).
+/// 0.1 % fewer at 10,000 spheres, 0.2 % more at 100,000; with 2: 1.5 % more). f64 in 8 lanes
+/// (AVX-512) takes the 8-lane rule: one instruction per register, as f32's.
 fn few<R: Real>() -> usize {
     let lanes = W::<R>::LANES;
     if lanes <= 4 {
@@ -1733,10 +1735,15 @@ mod tests {
     }
 
     #[test]
-    fn a_node_is_four_cache_lines_in_either_precision() {
-        assert_eq!(std::mem::size_of::<Node<f64>>(), 256);
+    fn a_node_is_whole_cache_lines_with_none_to_spare() {
+        // Six registers of bounds, a u32 per lane, eight order words: 6·32 + 32 + 32 = 256
+        // bytes in f32; 6·32 + 16 + 32 = 240, so 256, in f64 of 4 lanes; 6·64 + 32 + 32 = 448
+        // in f64 of 8 (AVX-512). Four cache lines, or seven.
         assert_eq!(std::mem::size_of::<Node<f32>>(), 256);
+        let f64_size = if W::<f64>::LANES == 4 { 256 } else { 448 };
+        assert_eq!(std::mem::size_of::<Node<f64>>(), f64_size);
         assert_eq!(std::mem::align_of::<Node<f64>>(), 64);
+        assert_eq!(std::mem::align_of::<Node<f32>>(), 64);
     }
 
     #[test]

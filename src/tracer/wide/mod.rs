@@ -3,7 +3,7 @@
 //! A row's samples are taken in blocks of [`BLOCK`] (a strip of neighbouring pixels, so the
 //! primary rays of a packet are coherent). Each block keeps a queue of live paths per bounce
 //! (a wavefront): the queue's rays are intersected [`Wide::LANES`] at a time against a
-//! [`FlatScene`] (8 rays per instruction in f32, 4 in f64); the hits are grouped by material
+//! [`FlatScene`] (8 rays per instruction in f32, 4 or 8 in f64); the hits are grouped by material
 //! and shaded a register at a time by the core's own arithmetic ([`shade_lanes`], of which the
 //! scalar [`crate::core::shade`] is the one-lane instance), their shadow rays built as
 //! `ShadowRays` builds them and tested as packets, any hit ([`FlatScene::occluded_lanes`]);

@@ -1,4 +1,4 @@
-//! The wide engine (packets of 8 × f32 or 4 × f64 lanes, queues per bounce) renders the scalar
+//! The wide engine (packets of 8 × f32 or 4 or 8 × f64 lanes, queues per bounce) renders the scalar
 //! engine's image bit for bit: every bundled scene, both precisions, the pixel means before
 //! rounding compared by their bits, and the ray counts equal. No operation of the wide path is
 //! allowed to differ from the scalar one: the lanes do IEEE +, −, ×, ÷, √ in the scalar order
@@ -154,7 +154,7 @@ fn the_plan_groups_exactly_the_equal_materials() {
     let m = |i: usize, o_r: f64| Material::<f64> {
         o_a: Some(v3::<f64>([0.1; 3])),
         o_d: Some(v3::<f64>([0.5, 0.4, 0.3])),
-        o_s: (i % 3 != 0).then(|| v3::<f64>([0.2; 3])),
+        o_s: (!i.is_multiple_of(3)).then(|| v3::<f64>([0.2; 3])),
         n_s: (i + 1) as f64,
         o_r: Some(v3::<f64>([o_r; 3])),
         transmission: None,
