@@ -763,20 +763,16 @@ fn slab_rays<R: Real>(near: [R; 3], far: [R; 3], p: &Packet<R>, t_max: W<R>) -> 
 }
 
 /// Rays the packet traversal takes on together: with this many or fewer, each ray goes on by
-/// itself (the lanes of the rays that left would be computed for nothing). Measured on 10,000
-/// and 100,000 spheres (callgrind, whole process): f64 packets pay with 2 of 4 lanes or more
-/// (0.65 % and 0.3 % fewer instructions than with 3, since the packets' node tests read the
-/// node in place; going on with 1 costs 2.0 % more), f32 ones with 4 of 8 or more (with 3:
-/// 0.1 % fewer at 10,000 spheres, 0.2 % more at 100,000; with 2: 1.5 % more). f64 in 8 lanes
-/// (AVX-512) takes the 8-lane rule: one instruction per register, as f32's.
-fn few<R: Real>() -> usize {
-    let lanes = W::<R>::LANES;
-    if lanes <= 4 {
-        lanes - 3
-    } else {
-        lanes / 2 - 1
-    }
-}
+/// itself (the lanes of the rays that left would be computed for nothing). A packet goes on
+/// with 2 rays or more, in every width. In instructions (callgrind, AVX2 build) 8 lanes paid
+/// with 4 rays or more (with 2: 1.5 % more instructions); in time the packet pays sooner, as a
+/// ray alone first makes its own forms of the ray (850 bytes in f64 of 8 lanes) and branches
+/// more: medians of 9-11 alternating rounds of the 10,000- and 100,000-sphere traces, one
+/// thread, going on alone with 3 rays left or fewer against 1: f64 in 8 lanes (AVX-512)
+/// 0.070 / 0.074 s against 0.066 / 0.070 s; f32 built for AVX-512 0.060 / 0.063 s against
+/// 0.058 / 0.060 s, built for AVX2 0.060 / 0.064 s against 0.056 / 0.061 s. (f64 in 4 lanes
+/// had the rule already.)
+const FEW: usize = 1;
 
 /// The nearest-hit packet search's stack: references with the mask of the rays that met the box
 /// and each ray's t₀ of it (as an array: a register's alignment would pad each entry to twice
@@ -932,7 +928,7 @@ impl<R: Real> WideBvh<R> {
         let mut masks = [0u32; MAX_WIDTH];
         let mut t0 = [W::<R>::splat(R::ZERO); MAX_WIDTH];
         loop {
-            if active.count_ones() as usize <= few::<R>() {
+            if active.count_ones() as usize <= FEW {
                 // Too few rays left for lanes to pay: each finishes this subtree alone.
                 let mut a = tm.to_array();
                 for k in lanes_of(active) {
@@ -1144,7 +1140,7 @@ impl<R: Real> WideBvh<R> {
         let mut masks = [0u32; MAX_WIDTH];
         let mut t0 = [W::<R>::splat(R::ZERO); MAX_WIDTH];
         loop {
-            if active.count_ones() as usize <= few::<R>() {
+            if active.count_ones() as usize <= FEW {
                 // Too few rays left for lanes to pay: each searches this subtree alone.
                 for k in lanes_of(active) {
                     let (ray, t_k) = (p.ray(k), t_max.as_ref()[k]);
