@@ -1,17 +1,16 @@
 //! The CPU a build of phong needs, checked before anything else runs.
 //!
-//! On x86-64 Linux, `cargo install --path .` builds phong for the CPU of the machine that
-//! builds it (`.cargo/config.toml`: `-C target-cpu=native`), so that the wide tracer's lanes are
-//! as wide as that CPU's registers (AVX2: one 256-bit register for 8 lanes of f32 or 4 of f64,
-//! where the SSE2 of every x86-64 CPU needs two halves; AVX-512: 8 lanes of f64 in one). Such a binary copied to an older CPU
-//! would die of an illegal instruction at the first AVX one, and early: the release build's
-//! link-time optimisation compiles the standard library's start-up code for that CPU too. So
-//! the binary (`src/main.rs`) checks before the standard library starts, from the ELF
-//! constructors the loader runs first, in instructions of its own (`asm!`: the compiler would
-//! use the newer CPU's BMI instructions for plain bit tests): CPUID and XGETBV against the
-//! features this build was compiled to use ([`FEATURES`], [`NEED_1_ECX`] and the other masks),
-//! and, when one is missing ([`Lacking`]), [`REFUSAL`] in both languages by the `write` system
-//! call, then exit 2.
+//! On x86-64 Linux, `cargo install --path .` builds phong for the CPU of the machine that builds it
+//! (`.cargo/config.toml`: `-C target-cpu=native`), so that the wide tracer's lanes are as wide as
+//! that CPU's registers (AVX2: one 256-bit register for 8 lanes of f32 or 4 of f64, where the SSE2
+//! of every x86-64 CPU needs two halves; AVX-512: 8 lanes of f64 in one). Such a binary copied to
+//! an older CPU would die of an illegal instruction at the first AVX one, and early: the release
+//! build's link-time optimisation compiles the standard library's start-up code for that CPU too.
+//! So the binary (`src/main.rs`) checks before the standard library starts, from the ELF
+//! constructors the loader runs first, in instructions of its own (`asm!`: the compiler would use
+//! the newer CPU's BMI instructions for plain bit tests): CPUID and XGETBV against the features
+//! this build was compiled to use ([`FEATURES`], [`NEED_1_ECX`] and the other masks), and, when one
+//! is missing ([`Lacking`]), [`REFUSAL`] in both languages by the `write` system call, then exit 2.
 //!
 //! Why the message is data and is written in both languages: every function of this build,
 //! the standard library's and the message rendering's included, may hold the instructions the
