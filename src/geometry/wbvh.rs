@@ -5,8 +5,8 @@
 //! lanes, with no dispatch on the kind.
 //! One ray at a time (the scalar engine, the solver), or a packet of up to [`Wide::LANES`] rays
 //! (the wide engine's queues and shadow rays: see "Packets" below); a wide tree pays for every
-//! ray, a packet only for coherent rays, so a packet's rays go on alone once few are left
-//! (docs/benchmarks.md).
+//! ray, a packet only for coherent rays, so a packet's last ray goes on alone ([`FEW`],
+//! docs/benchmarks.md).
 //!
 //! **The binary tree's answer, to the bit.** The search visits the binary tree's leaves in the
 //! binary traversal's order with the same t_max at each, so the nearest (primitive, t), ties
@@ -43,7 +43,7 @@ use crate::core::lanes::{lanes_of, mask_of, Lanes, Wide, W, W3};
 use crate::core::rounding::gamma;
 use crate::core::{Real, Vector, V3};
 
-/// The widest node: 8 children (f32 lanes).
+/// The widest node: 8 children (f32's lanes, and f64's with AVX-512).
 const MAX_WIDTH: usize = 8;
 /// Entries held in place on a traversal stack before it spills to the heap. A level of the path
 /// leaves one entry per child met beyond the first (LANES − 1 at most), so a ray needs many

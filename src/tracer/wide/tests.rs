@@ -1,5 +1,5 @@
-//! The wide engine (packets of 8 × f32 or 4 or 8 × f64 lanes, queues per bounce) renders the scalar
-//! engine's image bit for bit: every bundled scene, both precisions, the pixel means before
+//! The wide engine (packets of 8 × f32 or 4 or 8 × f64 lanes, queues per bounce) renders the
+//! scalar engine's image bit for bit: every bundled scene, both precisions, the pixel means before
 //! rounding compared by their bits, and the ray counts equal. No operation of the wide path is
 //! allowed to differ from the scalar one: the lanes do IEEE +, −, ×, ÷, √ in the scalar order
 //! (the shading is the core's one source in lanes), and everything else (hit points, pow, the
