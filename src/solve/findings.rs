@@ -274,8 +274,7 @@ pub(super) fn find<R: Real>(
         Target::Ray { .. } | Target::Scene { .. } => s
             .intersection
             .and_then(|x| x.surface)
-            .and_then(|i| problem.surfaces()[i].normal.as_deref().copied())
-            .map(|n| n.length),
+            .and_then(|i| problem.surfaces()[i].normal.as_deref().map(|n| n.length)),
     };
     if let Some(l) = normal_length.filter(|&l| !is_unit_length(l)) {
         out.push(Finding::new(FindingData::NormalNormalized {
