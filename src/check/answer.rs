@@ -2,7 +2,7 @@
 //! optionally in parentheses or brackets (`0.52 0.03 0`, `(0.52, 0.03, 0)`, `[0.52;0.03;0]`,
 //! `0,52 0,03 0` with decimal commas, `3/5` fractions), 8-bit integers with `--scale 255`,
 //! `#RRGGBB`, or a word saying that the ray hits nothing (`none`, `nenhuma`, `sem interseção`,
-//! `no hit`, `—`: [`is_no_hit`]). The tolerance an answer is compared under has a default per
+//! `no hit`, `—`: `is_no_hit`). The tolerance an answer is compared under has a default per
 //! scale.
 
 use crate::problem::format::{AnswerColor, AnswerSpec};
@@ -186,7 +186,7 @@ pub fn parse(text: &str, scale: Scale) -> Result<Answer, BadAnswer> {
     parse_with(text, scale, &NO_HIT_WORDS)
 }
 
-/// [`parse`] with a course's own words for "no hit" (folded, [`fold`]).
+/// [`parse`] with a course's own words for "no hit" (folded, `fold`).
 pub fn parse_with<S: AsRef<str>>(
     text: &str,
     scale: Scale,

@@ -10,7 +10,7 @@
 //! `invalid` with the reason, and the batch goes on. A first line naming the three columns in
 //! English or Portuguese (`aluno;exercício;resposta`, in any order) is a header, not a row; it
 //! may name a fourth column, `steps` (`passos`), whose cell holds a row's step answers
-//! (`cos_theta=0.98995; n_dot_l=-0.98995`, read by [`super::steps::read_cell`] and judged as
+//! (`cos_theta=0.98995; n_dot_l=-0.98995`, read by `steps::read_cell` and judged as
 //! `phong check --step` judges them; they change no points). Each exercise is solved once (with
 //! its slips) on first use, its steps' quantities when a row first gives steps; grading a row is
 //! then a few comparisons.

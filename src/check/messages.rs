@@ -580,7 +580,7 @@ pub fn all_steps_right(lang: Lang) -> &'static str {
     }
 }
 
-/// One step of a row in `phong grade`'s feedback: "Step cos_theta[0] = 0.98995: right (…)".
+/// One step of a row in `phong grade`'s feedback: "Step cos_theta\[0\] = 0.98995: right (…)".
 pub(crate) fn step_sentence(label: &str, value: &str, message: &str, lang: Lang) -> String {
     match lang {
         Lang::En => format!("Step {label} = {value}: {message}"),

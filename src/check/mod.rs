@@ -548,7 +548,7 @@ pub fn check_source(problem: Source<'_>, options: &CheckOptions) -> report::Chec
     check_prepared(&Prepared::of(problem), options)
 }
 
-/// One problem read, and everything its answers are judged against solved once ([`Expected`]):
+/// One problem read, and everything its answers are judged against solved once (`Expected`):
 /// `phong serve` prepares each of its exercises at start-up and checks every answer to it with
 /// [`check_prepared`], which gives what [`check_source`] gives, without solving again.
 #[derive(Clone, Debug)]

@@ -639,7 +639,7 @@ pub(crate) fn slips_text(file: &str, x: &super::Expected, lang: Lang) -> String 
 /// The JSON document `phong check --format json` writes for one problem (and `POST /api/check`
 /// answers): the answer's verdict ([`json`]) with, when steps were given too, the steps judged
 /// under `steps` (and why they could not be, under `steps_error`); with steps and no answer,
-/// the steps' own document ([`super::steps::document`]). `None` when there is neither.
+/// the steps' own document (`steps::document`). `None` when there is neither.
 pub fn document(
     answer: Option<&Checked>,
     steps: Option<&super::steps::StepsChecked>,

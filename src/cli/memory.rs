@@ -5,7 +5,7 @@
 //! the system refuses an allocation that no code is ready to see refused
 //! ([`crate::text::memory::handled`]).
 //!
-//! Nothing here may allocate: the message is rendered beforehand ([`prepare`]), the size is
+//! Nothing here may allocate: the message is rendered beforehand (`prepare`), the size is
 //! written into a buffer on the stack, standard error is written through a duplicate of its
 //! file descriptor (no lock, no buffer), and the program ends with `_exit(2)`
 //! (`signal_hook::low_level::exit`), which runs no destructor and flushes nothing, so no

@@ -38,7 +38,7 @@ pub trait Wide:
     /// A u32 per lane, `[u32; LANES]` (a wide node's children, a leaf's shapes: no room kept
     /// for lanes the precision does not have).
     type Indices: Copy + Default + Debug + Send + Sync + AsRef<[u32]> + AsMut<[u32]>;
-    /// How many lanes: 8 for f32; 8 or 4 for f64 ([`F64Lanes`]).
+    /// How many lanes: 8 for f32; 8 or 4 for f64 (`F64Lanes`).
     const LANES: usize;
 
     /// Every lane `x`.
@@ -314,9 +314,9 @@ impl Mask for bool {
     }
 }
 
-/// The numbers the core's arithmetic is written over once ([`crate::core::shade`] and the
+/// The numbers the core's arithmetic is written over once ([`crate::core::shade()`] and the
 /// lights' arrival): one [`Real`] (its masks `bool`, its vectors glam's) or a register of
-/// [`Wide`] lanes (its masks lane masks, its vectors [`W3`]). Every operation is the IEEE
+/// [`Wide`] lanes (its masks lane masks, its vectors `W3`). Every operation is the IEEE
 /// operation of each lane in the order written, so a lane computes the scalar's bits; a step the
 /// lanes cannot do to the bit (pow, atan2, the robust branches of a length) is done lane by lane
 /// with the scalar code itself ([`Lanes::map_lanes`]), only on the lanes that need it.
@@ -327,7 +327,7 @@ pub trait Lanes:
     type Scalar: Real;
     /// The masks of the gates: `bool` or a lane mask.
     type Mask: Mask;
-    /// A vector per lane: glam's `Vec3`/`DVec3` or [`W3`].
+    /// A vector per lane: glam's `Vec3`/`DVec3` or `W3`.
     type V: LaneVec<Self>;
     /// How many lanes (1 for a scalar).
     const COUNT: usize;
@@ -367,7 +367,7 @@ pub trait Lanes:
     fn map_lanes(self, m: Self::Mask, f: impl FnMut(usize, Self::Scalar) -> Self::Scalar) -> Self;
 }
 
-/// A vector per lane of a [`Lanes`] type (glam's vector for a scalar, [`W3`] for a register):
+/// A vector per lane of a [`Lanes`] type (glam's vector for a scalar, `W3` for a register):
 /// component-wise IEEE operations in glam's order.
 pub trait LaneVec<L: Lanes>: Copy + Debug {
     /// Every lane `v`.

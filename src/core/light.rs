@@ -210,7 +210,7 @@ const CONE_EDGE_ULPS: f64 = 20.0;
 const CONE_COS_MARGIN_ULPS: f64 = 128.0;
 
 /// What a light delivers at the points of some [`Lanes`] (one point, or one per lane), as the
-/// core's arithmetic computes it once for both: [`Light::arrive_with`] turns one lane of it into
+/// core's arithmetic computes it once for both: [`Light::arrival_of`] turns one lane of it into
 /// an [`Arrival`], the wide tracer shades with it directly.
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct LaneArrival<L: Lanes> {

@@ -82,7 +82,7 @@ pub trait Real:
     fn next_up(self) -> Self;
     /// The next representable number towards −∞ (see [`Real::next_up`]).
     fn next_down(self) -> Self;
-    /// Raises to an integer power by repeated multiplication ([`powi_by_squaring`]).
+    /// Raises to an integer power by repeated multiplication (`powi_by_squaring`).
     fn powi(self, n: i32) -> Self;
     /// e^x.
     fn exp(self) -> Self;

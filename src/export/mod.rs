@@ -5,7 +5,7 @@
 //!   chapter's model exactly (within 1/255 per 8-bit channel) or the scene is refused with the
 //!   reason.
 
-//! - [`moodle`]: problems as a Moodle XML quiz (Cloze questions, slips as 0 % answers).
+//! - `moodle`: problems as a Moodle XML quiz (Cloze questions, slips as 0 % answers).
 
 pub(crate) mod moodle;
 pub mod pov;

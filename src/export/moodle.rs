@@ -51,7 +51,7 @@ use crate::text::lang::Lang;
 /// One problem of a set: its label (file, or file and index), the validated problem and the
 /// tolerances its answers are judged under, as the course policy gives them.
 pub(crate) struct Entry {
-    /// Where it came from, for the explanation's source line ("4.2.json", "-[3]").
+    /// Where it came from, for the explanation's source line ("4.2.json", "-\[3\]").
     pub label: String,
     /// The validated problem.
     pub problem: Problem<f64>,

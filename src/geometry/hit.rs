@@ -25,13 +25,13 @@ pub struct SurfaceHit<R: Real> {
     pub p_error: V3<R>,
     /// The surface's own unit normal at `p` (a plane's as given, a sphere's outward, a
     /// triangle's (v1 − v0) × (v2 − v0)): the geometric normal, which decides which side of
-    /// the surface a ray is on ([`SurfaceHit::facing`]) and where spawned rays leave from.
+    /// the surface a ray is on (`SurfaceHit::facing`) and where spawned rays leave from.
     pub normal: V3<R>,
     /// The unit normal to shade with, on the same side of the surface as `normal`: `normal`
     /// itself, except on a smooth triangle (a mesh with vertex normals), where it is the
     /// barycentric interpolation of the three vertex normals, normalised (or `normal` where
     /// that interpolation does not lie on `normal`'s side; docs/conventions.md, "Smooth
-    /// meshes"). [`SurfaceHit::facing`] turns it to the ray with `normal`'s turn.
+    /// meshes"). `SurfaceHit::facing` turns it to the ray with `normal`'s turn.
     pub shading: V3<R>,
 }
 

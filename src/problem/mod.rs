@@ -79,7 +79,7 @@ pub fn read_limited(path: &Path, limit: u64, what: Input) -> std::io::Result<Vec
 }
 
 /// "out of memory: this needs about 2.1 GB" (or MB), for an allocation of `bytes` refused, in
-/// English (for the messages not yet typed; [`Limit::Memory`] is the value).
+/// English (for the messages not yet typed; `Limit::Memory` is the value).
 pub fn out_of_memory(bytes: usize) -> String {
     Limit::Memory {
         needs: reading::Bytes(bytes),

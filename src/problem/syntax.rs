@@ -483,7 +483,7 @@ messages! {
 }
 
 /// serde_json's error on a text that is not the JSON asked for (a rubric, a steps file), read
-/// into a value: what is wrong ([`Parse`]) and where, `at line L column C` in English.
+/// into a value: what is wrong (`Parse`) and where, `at line L column C` in English.
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct JsonError {
     /// Boxed: a JSON error sits inside faults that are themselves inside errors.

@@ -376,7 +376,7 @@ impl Rect {
 pub struct Figure {
     pub items: Vec<Item>,
     pub labels: Vec<Label>,
-    /// Its title ("Diagram for lights[0] …") and caption (the notes).
+    /// Its title ("Diagram for lights\[0\] …") and caption (the notes).
     pub title: String,
     pub caption: String,
 }

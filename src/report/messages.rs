@@ -2,7 +2,7 @@
 //! status, an omission or a reading, and every phrase of the step-by-step explanation, is written
 //! here, once, so that every format says the same thing.
 //!
-//! A missing translation does not compile: a fixed phrase is declared with [`phrases!`], whose
+//! A missing translation does not compile: a fixed phrase is declared with `phrases!`, whose
 //! pattern takes exactly one English and one Portuguese text; a sentence with values is built
 //! by [`pick`], which takes both. The JSON output is language-neutral and always uses the
 //! English sentences.

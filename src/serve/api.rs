@@ -143,7 +143,7 @@ async fn check(State(state): State<Shared>, headers: HeaderMap, body: Bytes) -> 
     checked(&state, &headers, &body).unwrap_or_else(|refused| refused)
 }
 
-/// [`check`]'s answer, or the response that refuses the request.
+/// [`check()`]'s answer, or the response that refuses the request.
 fn checked(state: &Shared, headers: &HeaderMap, body: &Bytes) -> Result<Response, Response> {
     let request: CheckRequest<'_> = envelope(headers, body, Shape::Check)?;
     let lang = lang(request.lang.as_deref(), headers)?;

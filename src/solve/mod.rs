@@ -200,7 +200,7 @@ pub struct Evaluation<R: Real> {
     /// `None` where P was given.
     pub p_error: Option<V3<R>>,
     /// Set where a ray problem's hit was shaded in the frame of the ray's origin because it is
-    /// far from the origin compared with its lights or viewer ([`Frame::RayOrigin`]).
+    /// far from the origin compared with its lights or viewer (`Frame::RayOrigin`).
     pub far_from_origin: Option<FarFromOrigin>,
 }
 

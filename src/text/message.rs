@@ -4,7 +4,7 @@
 //!
 //! A message's arguments stay typed until it is rendered: a field of a message implements
 //! [`Show`], which writes it in the language of the sentence around it (a number as
-//! [`num`](super::number::num) writes it, a word in its language, a text echoed back shortened
+//! [`num`] writes it, a word in its language, a text echoed back shortened
 //! with its length said in that language).
 
 use std::fmt;

@@ -1,5 +1,5 @@
 //! The Whitted ray tracer (Section 4.4): camera rays through each pixel, the nearest hit shaded
-//! by the core's own [`crate::core::shade`] with shadow rays, and reflection rays
+//! by the core's own [`crate::core::shade()`] with shadow rays, and reflection rays
 //! R_V = V − 2(N·V)N (Eq. 4.17) followed while their level ≤ the maximum level and their weight
 //! w_s = w_p·max(O_r) exceeds the minimum weight (docs/conventions.md, "Recursion level" and
 //! "Weight").

@@ -8,7 +8,7 @@
 //! add the same shares in the same order. Where nothing transmits the tree is a chain and is
 //! traced with no queue and no allocation.
 //!
-//! The local colour of every hit is the core's [`shade`], with the core's gating, given the
+//! The local colour of every hit is the core's [`shade()`], with the core's gating, given the
 //! hit's shadow rays ([`crate::geometry::SurfaceHit::shadow_rays`]); the normal facing the ray
 //! and the secondary rays' origins are the hit's too, as in the solver's ray problems.
 

@@ -156,7 +156,7 @@ pub(crate) fn write_class<C: Class + ?Sized>(
 }
 
 /// One `results.json` per submission (`-o DIR/`): each student's, then the rows without a
-/// student's, each with its file name (without `.json`, [`super::file_names`]).
+/// student's, each with its file name (without `.json`, `file_names`).
 pub fn files(report: &Report, lang: Lang) -> Vec<(String, Value)> {
     let mut out = Vec::new();
     let _ = write_files(report, lang, |name, write| {

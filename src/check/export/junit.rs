@@ -13,7 +13,7 @@ use super::{Class, Submissions, Test};
 use crate::text::lang::Lang;
 use crate::text::xml::escape;
 
-/// The class as one JUnit XML document: a `testsuite` per submission ([`super::Submissions`]:
+/// The class as one JUnit XML document: a `testsuite` per submission (`Submissions`:
 /// the students, then the rows without a student), a `testcase` per exercise of the class and
 /// one per other row (named `4.9 (line 11)`). A row that does not count (an answer another one
 /// replaces, a row without a student) is `skipped`, its feedback in `system-out`.

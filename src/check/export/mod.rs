@@ -5,7 +5,7 @@
 //! a student's rows that judge no exercise of the class (an unknown exercise, an answer that
 //! does not count, a row naming an exercise only rows that cannot be read name) are tests of
 //! their own after the exercises, and the rows without a student are the tests of one more
-//! submission, [`no_student_label`], after the students.
+//! submission, `no_student_label`, after the students.
 
 pub mod class;
 pub mod gradescope;

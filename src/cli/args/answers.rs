@@ -27,7 +27,7 @@ pub(crate) struct CheckArgs {
     #[command(flatten)]
     pub(crate) policy: PolicyArg,
     /// Check an intermediate step, NAME=VALUE (repeatable): cos_theta=0.98995, R=0.6,0,0.8,
-    /// cos_theta[1]=0.5 for lights[1]. Names: t, P, N, V, I_a, ambient, L, d, falloff_factor,
+    /// cos_theta\[1\]=0.5 for lights\[1\]. Names: t, P, N, V, I_a, ambient, L, d, falloff_factor,
     /// cos_psi, spot_factor, I_l, n_dot_l, cos_theta, diffuse, R, cos_phi, cos_phi_pow,
     /// specular, total_diffuse, total_specular, I. Only with one FILE.
     #[arg(long, value_name = "NAME=VALUE", allow_hyphen_values = true)]

@@ -5,7 +5,7 @@
 //! (a wavefront): the queue's rays are intersected [`Wide::LANES`] at a time against a
 //! [`FlatScene`] (8 rays per instruction in f32, 4 or 8 in f64); the hits are grouped by material
 //! and shaded a register at a time by the core's own arithmetic ([`shade_lanes`], of which the
-//! scalar [`crate::core::shade`] is the one-lane instance), their shadow rays built as
+//! scalar [`crate::core::shade()`] is the one-lane instance), their shadow rays built as
 //! `ShadowRays` builds them and tested as packets, any hit ([`FlatScene::occluded_lanes`]);
 //! then each path is stepped by the scalar tracer's own [`Tracer::step`] (the stop rules, the
 //! reflection and transmission rays), and the rays it spawns form the next bounce's queue, in
