@@ -78,6 +78,11 @@ walked! {
     sentences crate::cli::usage::UsageText;
     sentences crate::cli::usage::ClapReason;
     faults crate::tradeoff::sweep::SweepFault;
+    sentences crate::tradeoff::messages::MetricName;
+    sentences crate::tradeoff::messages::SettingName;
+    sentences crate::tradeoff::messages::Column;
+    sentences crate::tradeoff::messages::TradeoffText;
+    sentences crate::tradeoff::messages::PlotText;
     sentences crate::export::pov::Colour;
     faults crate::export::pov::PovFault;
     faults crate::check::answer::AnswerFault;

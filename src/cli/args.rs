@@ -91,6 +91,7 @@ impl Command {
             Command::Moodle(a) => a.lang,
             Command::New(a) => a.lang,
             Command::Grade(a) => a.lang,
+            Command::Tradeoff(a) => a.lang,
             _ => Lang::from_locale(),
         }
     }

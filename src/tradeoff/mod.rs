@@ -12,8 +12,10 @@
 //!   computed on the pixel means before rounding to 8 bits ([`crate::tracer::LinearImage`]).
 //! - [`pareto_front`]: the settings no other setting beats in both time and error.
 //! - [`fastest_within`]: the answer to "what is the fastest setting within this error budget".
-//! - [`report`]: the table (text), JSON and CSV; [`plot`]: error against time as SVG.
+//! - [`report`]: the table (text), JSON and CSV; [`plot`]: error against time as SVG; the
+//!   table's and the plot's words in English and Portuguese in [`messages`].
 
+pub(crate) mod messages;
 pub(crate) mod plot;
 pub(crate) mod report;
 pub(crate) mod sweep;
@@ -65,12 +67,12 @@ pub enum Metric {
 }
 
 impl Metric {
-    /// Its name in tables.
-    pub fn label(self) -> &'static str {
+    /// Its name in the table's sentences and the plot, in either language.
+    pub fn name(self) -> messages::MetricName {
         match self {
-            Metric::MaxAbs => "max abs error",
-            Metric::Rmse => "RMSE",
-            Metric::PixelsDiffer => "share of 8-bit pixels that differ",
+            Metric::MaxAbs => messages::MetricName::MaxAbs,
+            Metric::Rmse => messages::MetricName::Rmse,
+            Metric::PixelsDiffer => messages::MetricName::PixelsDiffer,
         }
     }
 }

@@ -4,15 +4,17 @@
 
 use plotters::prelude::*;
 
+use super::messages::{PlotText, Threads};
 use super::report::{weight, Summary};
 use crate::core::Precision;
+use crate::text::{Lang, Message};
 
 /// Errors of exactly 0 cannot sit on a log scale: they are drawn at this fraction of the
 /// smallest non-zero value (and the caption says so).
 const ZERO_FRACTION: f64 = 0.1;
 
-/// The plot as SVG text.
-pub fn svg(s: &Summary) -> Result<String, String> {
+/// The plot as SVG text, its words in `lang`.
+pub fn svg(s: &Summary, lang: Lang) -> Result<String, String> {
     let rows = &s.outcome.rows;
     let metric = s.metric;
     let err = |i: usize| rows[i].errors.get(metric);
@@ -55,15 +57,13 @@ pub fn svg(s: &Summary) -> Result<String, String> {
         let root = SVGBackend::with_string(&mut out, (900, 560)).into_drawing_area();
         let e = |e: DrawingAreaErrorKind<_>| e.to_string();
         root.fill(&WHITE).map_err(e)?;
-        let title = format!(
-            "{}: {} against time ({}×{}, {} thread{})",
-            s.scene,
-            metric.label(),
-            s.outcome.width,
-            s.outcome.height,
-            s.outcome.threads,
-            if s.outcome.threads == 1 { "" } else { "s" }
-        );
+        let title = PlotText::Title {
+            scene: s.scene.to_owned(),
+            metric: metric.name(),
+            size: format!("{}×{}", s.outcome.width, s.outcome.height),
+            threads: Threads(s.outcome.threads),
+        }
+        .text(lang);
         let mut chart = ChartBuilder::on(&root)
             // plotters escapes the markup; the characters XML forbids (a file name may hold
             // them) are `text::xml`'s rule (docs/conventions.md, "XML text").
@@ -73,8 +73,9 @@ pub fn svg(s: &Summary) -> Result<String, String> {
             .y_label_area_size(80)
             .build_cartesian_2d((x0..x1).log_scale(), (y0..y1).log_scale())
             .map_err(e)?;
-        let zero_note = if (0..rows.len()).any(|i| err(i) == 0.0) {
-            format!(" (0 drawn at {floor:.1e})")
+        let zero = if (0..rows.len()).any(|i| err(i) == 0.0) {
+            let at = format!("{floor:.1e}");
+            PlotText::ZeroAt { at }.text(lang)
         } else {
             String::new()
         };
@@ -87,8 +88,14 @@ pub fn svg(s: &Summary) -> Result<String, String> {
                 v => format!("{v:.3}"),
             })
             .y_label_formatter(&|v| format!("{v:.0e}"))
-            .x_desc("median time (ms), log scale")
-            .y_desc(format!("{}{zero_note}, log scale", metric.label()))
+            .x_desc(PlotText::TimeAxis.text(lang))
+            .y_desc(
+                PlotText::ErrorAxis {
+                    metric: metric.name(),
+                    zero,
+                }
+                .text(lang),
+            )
             .axis_desc_style(("sans-serif", 14))
             .draw()
             .map_err(e)?;
@@ -128,7 +135,7 @@ pub fn svg(s: &Summary) -> Result<String, String> {
                 BLACK.stroke_width(2),
             ))
             .map_err(e)?
-            .label("Pareto front")
+            .label(PlotText::Front.text(lang))
             .legend(|(a, b)| PathElement::new(vec![(a, b), (a + 20, b)], BLACK.stroke_width(2)));
         chart
             .draw_series(
@@ -171,7 +178,12 @@ pub fn svg(s: &Summary) -> Result<String, String> {
                     grey.stroke_width(1),
                 )))
                 .map_err(e)?
-                .label(format!("budget {:.2e}", s.budget))
+                .label(
+                    PlotText::Budget {
+                        budget: format!("{:.2e}", s.budget),
+                    }
+                    .text(lang),
+                )
                 .legend(move |(a, b)| PathElement::new(vec![(a, b), (a + 20, b)], grey));
         }
         if let Some(c) = s.choice {
@@ -182,7 +194,7 @@ pub fn svg(s: &Summary) -> Result<String, String> {
                     RGBColor(44, 160, 44).stroke_width(3),
                 )))
                 .map_err(e)?
-                .label(format!("fastest within budget: #{}", c + 1))
+                .label(PlotText::Fastest { number: c + 1 }.text(lang))
                 .legend(|(a, b)| {
                     Circle::new((a + 10, b), 6, RGBColor(44, 160, 44).stroke_width(3))
                 });

@@ -3,7 +3,9 @@
 
 use serde_json::{json, Value};
 
+use super::messages::{Column, Runs, Samples, SettingName, Threads, TradeoffText};
 use super::{fastest_within, pareto_front, Measured, Metric, Outcome, Setting};
+use crate::text::{Lang, Message};
 use crate::tracer::Counts;
 
 /// What the outputs say: the measurements, the metric the budget and the front are judged by,
@@ -61,16 +63,14 @@ pub fn seconds(t: f64) -> String {
     }
 }
 
-/// "f32, level 5, min weight 1/255, 4 samples"
-pub fn describe(s: &Setting) -> String {
-    format!(
-        "{}, level {}, min weight {}, {} sample{}",
-        s.precision.name(),
-        s.max_level,
-        weight(s.min_weight),
-        s.samples,
-        if s.samples == 1 { "" } else { "s" }
-    )
+/// "f32, level 5, min weight 1/255, 4 samples", in either language.
+pub fn describe(s: &Setting) -> SettingName {
+    SettingName::Setting {
+        precision: s.precision.name().to_owned(),
+        level: s.max_level,
+        weight: weight(s.min_weight),
+        samples: Samples(s.samples),
+    }
 }
 
 /// An error in three significant digits; 0 as "0".
@@ -86,121 +86,141 @@ fn mrays(c: &Counts) -> String {
     format!("{:.2}", c.total() as f64 / 1e6)
 }
 
-/// The table and the verdict, for people.
-pub fn text(s: &Summary) -> String {
+/// The columns of the table, in order, each with its width in English; a column is as wide as
+/// its heading in the language shown, at least that.
+const COLUMNS: [(Column, usize); 13] = [
+    (Column::Number, 3),
+    (Column::Precision, 4),
+    (Column::Level, 5),
+    (Column::MinWeight, 10),
+    (Column::Samples, 7),
+    (Column::Time, 10),
+    (Column::Rays, 8),
+    (Column::MaxAbs, 9),
+    (Column::Rmse, 9),
+    (Column::Psnr, 9),
+    (Column::Differ, 11),
+    (Column::F32F64, 13),
+    (Column::Front, 0),
+];
+
+/// The table and the verdict, for people, in `lang`.
+pub fn text(s: &Summary, lang: Lang) -> String {
     let o = s.outcome;
     let mut out = String::new();
     let r = &o.reference;
-    out.push_str(&format!(
-        "Trade-off for {} ({}×{}): each setting's time is the median of {} run{} on {} thread{}.\n",
-        s.scene,
-        o.width,
-        o.height,
-        o.runs,
-        if o.runs == 1 { "" } else { "s" },
-        o.threads,
-        if o.threads == 1 { "" } else { "s" },
-    ));
-    out.push_str(&format!(
-        "Reference: {}: {} M rays in {}. Errors are against its pixel means (0–1 scale).\n",
-        describe(&r.setting),
-        mrays(&r.rays),
-        seconds(r.time_s)
-    ));
+    let mut line = |m: TradeoffText| {
+        out.push_str(&m.text(lang));
+        out.push('\n');
+    };
+    line(TradeoffText::Heading {
+        scene: s.scene.to_owned(),
+        size: format!("{}×{}", o.width, o.height),
+        runs: Runs(o.runs),
+        threads: Threads(o.threads),
+    });
+    line(TradeoffText::Reference {
+        setting: describe(&r.setting),
+        mrays: mrays(&r.rays),
+        time: seconds(r.time_s),
+    });
     let builds: Vec<String> = o
         .build_s
         .iter()
         .map(|(p, t)| format!("{} {}", p.name(), seconds(*t)))
         .collect();
-    out.push_str(&format!(
-        "Scene build (BVH), not in the times below: {}.\n\n",
-        builds.join(", ")
-    ));
-    out.push_str(&format!(
-        "{:>3}  {:<4} {:>5} {:>10} {:>7} {:>10} {:>8} {:>9} {:>9} {:>9} {:>11} {:>13}  {}\n",
-        "#",
-        "prec",
-        "level",
-        "min weight",
-        "samples",
-        "time (ms)",
-        "rays (M)",
-        "max abs",
-        "RMSE",
-        "PSNR (dB)",
-        "8-bit diff",
-        "f32−f64 max",
-        "front"
-    ));
+    line(TradeoffText::Build {
+        builds: builds.join(", "),
+    });
+    out.push('\n');
+    let heads = COLUMNS.map(|(c, _)| c.text(lang));
+    let widths: [usize; 13] = std::array::from_fn(|k| COLUMNS[k].1.max(heads[k].chars().count()));
+    table_line(&mut out, &widths, heads);
     for (i, m) in o.rows.iter().enumerate() {
         let st = &m.setting;
-        out.push_str(&format!(
-            "{:>3}  {:<4} {:>5} {:>10} {:>7} {:>10.1} {:>8} {:>9} {:>9} {:>9} {:>10.2}% {:>13}  {}\n",
-            i + 1,
-            st.precision.name(),
-            st.max_level,
+        let cells = [
+            (i + 1).to_string(),
+            st.precision.name().to_owned(),
+            st.max_level.to_string(),
             weight(st.min_weight),
-            st.samples,
-            m.median_s * 1e3,
+            st.samples.to_string(),
+            format!("{:.1}", m.median_s * 1e3),
             mrays(&m.rays),
             sci(m.errors.max_abs),
             sci(m.errors.rmse),
             m.errors
                 .psnr_db
                 .map_or_else(|| "∞".to_owned(), |p| format!("{p:.1}")),
-            m.errors.pixels_differ * 100.0,
+            format!("{:.2}%", m.errors.pixels_differ * 100.0),
             m.vs_f64.map_or_else(String::new, |e| sci(e.max_abs)),
-            if s.on_front(i) { "*" } else { "" }
-        ));
+            if s.on_front(i) { "*" } else { "" }.to_owned(),
+        ];
+        table_line(&mut out, &widths, cells);
     }
-    out.push_str(&format!(
-        "\n* on the Pareto front of time against {}: no other setting is both as fast and as \
-         accurate.\n",
-        s.metric.label()
-    ));
+    out.push('\n');
+    out.push_str(
+        &TradeoffText::FrontNote {
+            metric: s.metric.name(),
+        }
+        .text(lang),
+    );
+    out.push('\n');
     if let Some(p) = precision_note(o) {
-        out.push_str(&p);
+        out.push_str(&p.text(lang));
+        out.push('\n');
     }
-    out.push_str(&verdict(s));
+    out.push_str(&verdict(s).text(lang));
     out.push('\n');
     out
 }
 
+/// One line of the table: the cells in their columns' `widths`, right-aligned but the
+/// precision's; two spaces after the row's number and before the front's star, one elsewhere.
+fn table_line(out: &mut String, widths: &[usize; 13], cells: [String; 13]) {
+    for (k, cell) in cells.iter().enumerate() {
+        let w = widths[k];
+        let cell = match k {
+            0 => format!("{cell:>w$}  "),
+            1 => format!("{cell:<w$} "),
+            11 => format!("{cell:>w$}  "),
+            12 => cell.clone(),
+            _ => format!("{cell:>w$} "),
+        };
+        out.push_str(&cell);
+    }
+    out.push('\n');
+}
+
 /// What f32 costs in accuracy by itself: the largest f32−f64 error and 8-bit share over the
 /// settings swept in both.
-fn precision_note(o: &Outcome) -> Option<String> {
+fn precision_note(o: &Outcome) -> Option<TradeoffText> {
     let pairs: Vec<_> = o.rows.iter().filter_map(|m| m.vs_f64).collect();
     if pairs.is_empty() {
         return None;
     }
     let max = pairs.iter().map(|e| e.max_abs).fold(0.0, f64::max);
     let differ = pairs.iter().map(|e| e.pixels_differ).fold(0.0, f64::max);
-    Some(format!(
-        "f32−f64 max: the largest difference between an f32 image and the f64 image of the same \
-         level, weight and samples (the error of the precision alone). Over all {} pairs: at \
-         most {}, and at most {:.3}% of 8-bit pixels differ.\n",
-        pairs.len(),
-        sci(max),
-        differ * 100.0
-    ))
+    Some(TradeoffText::PrecisionNote {
+        pairs: pairs.len(),
+        most: sci(max),
+        percent: format!("{:.3}", differ * 100.0),
+    })
 }
 
 /// The sentence that answers "which setting is the fastest within the budget".
-pub fn verdict(s: &Summary) -> String {
+pub fn verdict(s: &Summary) -> TradeoffText {
     let rows = &s.outcome.rows;
-    let budget = format!("{} ≤ {}", s.metric.label(), budget_text(s.budget, s.metric));
+    let (metric, bound) = (s.metric.name(), budget_text(s.budget, s.metric));
+    let error = |i: usize| sci(rows[i].errors.get(s.metric));
     match s.choice {
-        Some(i) => {
-            let m = &rows[i];
-            format!(
-                "Fastest within {budget}: #{} ({}): {:.1} ms, {} = {}.",
-                i + 1,
-                describe(&m.setting),
-                m.median_s * 1e3,
-                s.metric.label(),
-                sci(m.errors.get(s.metric))
-            )
-        }
+        Some(i) => TradeoffText::Fastest {
+            metric,
+            bound,
+            number: i + 1,
+            setting: describe(&rows[i].setting),
+            ms: format!("{:.1}", rows[i].median_s * 1e3),
+            error: error(i),
+        },
         None => {
             let best = (0..rows.len()).min_by(|&a, &b| {
                 rows[a]
@@ -209,17 +229,15 @@ pub fn verdict(s: &Summary) -> String {
                     .total_cmp(&rows[b].errors.get(s.metric))
             });
             match best {
-                Some(b) => format!(
-                    "No setting is within {budget}. The most accurate is #{} ({}): {} = {}. More \
-                     samples per pixel (the reference has {}), a deeper level or a smaller \
-                     minimum weight would bring it closer.",
-                    b + 1,
-                    describe(&rows[b].setting),
-                    s.metric.label(),
-                    sci(rows[b].errors.get(s.metric)),
-                    s.outcome.reference.setting.samples
-                ),
-                None => format!("No setting is within {budget}: nothing was swept."),
+                Some(b) => TradeoffText::NoneWithin {
+                    metric,
+                    bound,
+                    number: b + 1,
+                    setting: describe(&rows[b].setting),
+                    error: error(b),
+                    reference_samples: s.outcome.reference.setting.samples,
+                },
+                None => TradeoffText::NothingSwept { metric, bound },
             }
         }
     }
@@ -355,6 +373,29 @@ pub fn csv(s: &Summary) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The headings line as the table had it before it spoke Portuguese (its widths fixed in
+    /// the format string); in Portuguese each column widens to its heading.
+    #[test]
+    fn the_headings_keep_their_columns() {
+        let line = |lang: Lang| {
+            let heads = COLUMNS.map(|(c, _)| c.text(lang));
+            let widths = std::array::from_fn(|k| COLUMNS[k].1.max(heads[k].chars().count()));
+            let mut out = String::new();
+            table_line(&mut out, &widths, heads);
+            out
+        };
+        assert_eq!(
+            line(Lang::En),
+            "  #  prec level min weight samples  time (ms) rays (M)   max abs      RMSE PSNR \
+             (dB)  8-bit diff   f32−f64 max  front\n"
+        );
+        assert_eq!(
+            line(Lang::Pt),
+            "  #  prec nível   peso mín amostras tempo (ms) raios (M)   máx abs      RMSE PSNR \
+             (dB) difer. 8 bits   f32−f64 máx  fronteira\n"
+        );
+    }
 
     #[test]
     fn weights_read_as_people_write_them() {

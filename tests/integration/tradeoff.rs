@@ -1,7 +1,8 @@
 //! `phong tradeoff` end to end through the binary: errors, rays and budgets worked out by hand on
 //! a scene whose every pixel has a closed form (two facing mirrors); the 8-bit share checked
 //! against images written by `phong render`; the same numbers for any thread count; the table,
-//! CSV and plot; bad flags refused with exit code 2 and nothing written.
+//! CSV and plot, in English and in Portuguese; bad flags refused with exit code 2 and nothing
+//! written.
 
 use std::fs;
 use std::path::{Path, PathBuf};
@@ -429,6 +430,83 @@ fn the_table_csv_and_plot_are_written() {
     assert_eq!(lines.len(), 1 + 2 * 2 * 2, "a header and a row per setting");
     assert!(lines[0].starts_with("precision,max_level,min_weight,samples,median_s"));
     assert!(lines[1].starts_with("f32,1,0,1,"));
+}
+
+/// With `--lang pt` (or a Portuguese locale and no `--lang`) the table, its verdict and the
+/// plot are in Portuguese, with the same settings and numbers; the JSON is the same document in
+/// either language.
+#[test]
+fn the_table_and_plot_speak_portuguese_with_lang_pt() {
+    let dir = TempDir::new().unwrap();
+    let scene = mirrors(&dir);
+    let plot = dir.path().join("troca.svg");
+    let args = [
+        "--levels",
+        "1,7",
+        "--min-weights",
+        "0",
+        "--samples",
+        "1",
+        "--runs",
+        "1",
+        "--budget",
+        "0.01",
+        "--metric",
+        "max-abs",
+    ];
+    let out = phong()
+        .arg("tradeoff")
+        .arg(&scene)
+        .args(args)
+        .args(["--lang", "pt", "--plot"])
+        .arg(&plot)
+        .output()
+        .unwrap();
+    assert!(out.status.success());
+    let text = String::from_utf8(out.stdout).unwrap();
+    assert!(
+        text.contains("Referência: f64, nível 64, peso mínimo 0, 64 amostras"),
+        "{text}"
+    );
+    assert!(text.contains("nível") && text.contains("amostras") && text.contains("fronteira"));
+    // Level 1 is off by 0.1, level 7 by 0.2·0.5^7 ≈ 1.6e-3: only level 7 is within 0.01.
+    assert!(
+        text.contains("A mais rápida dentro de erro absoluto máximo ≤ 0.01: #"),
+        "{text}"
+    );
+    assert!(
+        text.contains("nível 7, peso mínimo 0, 1 amostra)"),
+        "{text}"
+    );
+    assert!(
+        !text.contains("Reference") && !text.contains("Fastest"),
+        "{text}"
+    );
+    let svg = fs::read_to_string(&plot).unwrap();
+    assert!(svg.contains("fronteira de Pareto") && svg.contains("tempo mediano (ms)"));
+    assert!(!svg.contains("Pareto front") && !svg.contains("median time"));
+
+    // The locale decides where --lang is not given.
+    let by_locale = phong()
+        .arg("tradeoff")
+        .arg(&scene)
+        .args(args)
+        .env("LANG", "pt_BR.UTF-8")
+        .output()
+        .unwrap();
+    assert!(by_locale.status.success());
+    let by_locale = String::from_utf8(by_locale.stdout).unwrap();
+    assert!(
+        by_locale.starts_with("Velocidade contra precisão em "),
+        "{by_locale}"
+    );
+
+    let json = |lang: &str| {
+        let mut a = args.to_vec();
+        a.extend(["--lang", lang]);
+        without_times(tradeoff_json(&scene, &a))
+    };
+    assert_eq!(json("pt"), json("en"), "the JSON does not depend on --lang");
 }
 
 #[test]

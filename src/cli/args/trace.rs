@@ -58,6 +58,10 @@ pub(crate) struct TradeoffArgs {
     /// Write the plot of error against time (SVG) to this file.
     #[arg(long, value_name = "PATH.svg")]
     pub(crate) plot: Option<PathBuf>,
+    /// Language of the table, the plot and the errors (json and csv are language-neutral).
+    /// [default: the locale's language: pt where LC_ALL, LC_MESSAGES or LANG is pt_*, else en]
+    #[arg(long, value_enum, default_value_t = Lang::from_locale(), hide_default_value = true)]
+    pub(crate) lang: Lang,
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]

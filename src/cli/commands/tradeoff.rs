@@ -128,14 +128,14 @@ pub(crate) fn run(args: &TradeoffArgs) -> Result<Exit, CliError> {
     let file = args.scene.display().to_string();
     let summary = report::Summary::new(&file, &outcome, args.metric, args.budget);
     if let Some(plot) = &args.plot {
-        let svg = tradeoff::plot::svg(&summary).map_err(|error| CliError::Bug {
+        let svg = tradeoff::plot::svg(&summary, args.lang).map_err(|error| CliError::Bug {
             flag: "--plot",
             fault: CliFault::PlotFailed { error },
         })?;
         output::write_file(plot, svg.as_bytes())?;
     }
     let text = match args.format {
-        TradeoffFormat::Text => report::text(&summary),
+        TradeoffFormat::Text => report::text(&summary, args.lang),
         TradeoffFormat::Json => crate::report::json::pretty(&report::json(&summary)),
         TradeoffFormat::Csv => report::csv(&summary),
     };
