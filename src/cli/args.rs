@@ -92,7 +92,11 @@ impl Command {
             Command::New(a) => a.lang,
             Command::Grade(a) => a.lang,
             Command::Tradeoff(a) => a.lang,
-            _ => Lang::from_locale(),
+            Command::ExportPov(a) => a.lang,
+            Command::Policy(a) => a.lang,
+            Command::Schema(a) => a.lang,
+            #[cfg(feature = "serve")]
+            Command::Serve(_) => Lang::from_locale(),
         }
     }
 }

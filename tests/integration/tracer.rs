@@ -1137,3 +1137,45 @@ fn a_pixel_explained_in_f64_says_nothing_of_f32_in_any_format() {
         assert!(!text.contains("f32 &minus; f64"), "{format}");
     }
 }
+
+/// Every command takes `--lang`: `export-pov`, `schema` and `policy`, whose outputs are the
+/// same in any language, write their errors in the one asked for, over the locale's.
+#[test]
+fn export_pov_schema_and_policy_write_their_errors_in_the_lang_asked_for() {
+    let dir = tempfile::tempdir().unwrap();
+    let runs: [&[&str]; 3] = [
+        &["export-pov", "naoexiste.json"],
+        &["schema", "-o", "naoexiste/esquema.json"],
+        &["policy", "naoexiste/"],
+    ];
+    for args in runs {
+        let run = |lang: &str, locale: &str| {
+            let out = phong()
+                .current_dir(dir.path())
+                .env("LANG", locale)
+                .args(args)
+                .args(["--lang", lang])
+                .output()
+                .unwrap();
+            assert_eq!(out.status.code(), Some(2), "{args:?}");
+            assert!(out.stdout.is_empty(), "{args:?}");
+            String::from_utf8(out.stderr).unwrap()
+        };
+        let pt = run("pt", "C.UTF-8");
+        assert!(
+            pt.starts_with("erro: ")
+                && pt.contains("naoexiste")
+                && pt.contains("Correção: ")
+                && !pt.contains("Fix: "),
+            "{args:?}: {pt}"
+        );
+        let en = run("en", "pt_BR.UTF-8");
+        assert!(
+            en.starts_with("error: ")
+                && en.contains("naoexiste")
+                && en.contains("Fix: ")
+                && !en.contains("Correção"),
+            "{args:?}: {en}"
+        );
+    }
+}

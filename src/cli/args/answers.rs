@@ -164,4 +164,8 @@ pub(crate) struct PolicyCmdArgs {
     /// Write the policy to this file (atomically) instead of standard output.
     #[arg(short, long, value_name = "PATH")]
     pub(crate) output: Option<PathBuf>,
+    /// Language of the errors (the policy file is the same in either).
+    /// [default: the locale's language: pt where LC_ALL, LC_MESSAGES or LANG is pt_*, else en]
+    #[arg(long, value_enum, default_value_t = Lang::from_locale(), hide_default_value = true)]
+    pub(crate) lang: Lang,
 }

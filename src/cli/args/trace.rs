@@ -86,6 +86,10 @@ pub(crate) struct ExportPovArgs {
     /// The tracer's settings over the scene's (POV-Ray can only match 1 sample per pixel).
     #[command(flatten)]
     pub(crate) settings: TraceSettings,
+    /// Language of the errors (the SDL is the same in either).
+    /// [default: the locale's language: pt where LC_ALL, LC_MESSAGES or LANG is pt_*, else en]
+    #[arg(long, value_enum, default_value_t = Lang::from_locale(), hide_default_value = true)]
+    pub(crate) lang: Lang,
 }
 
 /// The tracer's settings, each over the scene's `render` (or its default).
