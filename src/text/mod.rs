@@ -6,9 +6,9 @@
 //!
 //! A message is data first (rustc's diagnostics are structs; ARCHITECTURE.md, "Messages"):
 //! a value holding its field, the value written, the bounds, the fix, rendered in a language
-//! only at the edge. Each message enum is declared with [`messages!`](crate::messages) or [`faults!`](crate::faults), whose
-//! every variant takes its English and its Portuguese text side by side: a missing
-//! translation does not compile. Every variant of every message enum is walked in both
+//! only at the edge. Each message enum is declared with [`messages!`](crate::messages) or
+//! [`faults!`](crate::faults), whose every variant takes its English and its Portuguese text
+//! side by side: a missing translation does not compile. Every variant of every message enum is walked in both
 //! languages by the crate's test `src/walk.rs` (the enums derive `strum::EnumIter` under test).
 
 pub mod io;
