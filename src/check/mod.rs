@@ -79,6 +79,15 @@ pub struct Comparison {
     pub within: bool,
 }
 
+/// Whether a difference (or a distance) `d` is within `tolerance`: inclusive, with a slack for
+/// decimals that are not exact in binary (0.25 − 0.245 is 0.0050000000000000044). The one rule
+/// of every colour compared under a tolerance: the verdict, each channel of the check's pages,
+/// the near miss, the Moodle quiz's alternatives.
+pub(crate) fn within_tolerance(d: f64, tolerance: f64) -> bool {
+    let slack = tolerance * 1e-9 + 1e-12;
+    d.abs() <= tolerance + slack
+}
+
 /// Compares an answer with a target: the clamped colour first, then (0–1 scale only) the
 /// unclamped one; the first within the tolerance, or else the clamped one. `None` when the
 /// target has no value on the answer's scale (a literal value against an 8-bit answer).
@@ -86,13 +95,11 @@ pub(crate) fn compare(answer: &Answer, target: &Target, tolerance: f64) -> Optio
     let values = answer.values?;
     let with = |against, expected: [f64; 3]| {
         let difference = [0, 1, 2].map(|i| values[i] - expected[i]);
-        // A decimal answer is not exact in binary: 0.25 − 0.245 is 0.0050000000000000044.
-        let slack = tolerance * 1e-9 + 1e-12;
         Comparison {
             against,
             expected,
             difference,
-            within: difference.iter().all(|d| d.abs() <= tolerance + slack),
+            within: difference.iter().all(|&d| within_tolerance(d, tolerance)),
         }
     };
     let k = answer.scale.factor();
@@ -508,8 +515,7 @@ fn nearest(
         let Some(c) = closest(answer, &target) else {
             continue;
         };
-        let slack = tolerance * 1e-9 + 1e-12;
-        if c.distance() <= tolerance + slack {
+        if within_tolerance(c.distance(), tolerance) {
             continue;
         }
         if best
@@ -741,6 +747,23 @@ crate::messages! {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The one rule of a difference within a tolerance: inclusive, a decimal's binary error
+    /// forgiven, and nothing beyond tolerance + tolerance·1e-9 + 1e-12. The check's pages and
+    /// the Moodle quiz judged each channel by tolerance·(1 + 1e-9) + 1e-12, one ulp above this
+    /// at 0.01: a channel could read "within" beside a verdict of "outside".
+    #[test]
+    fn a_difference_is_within_a_tolerance_by_one_rule() {
+        assert!(within_tolerance(0.01, 0.01) && within_tolerance(-0.01, 0.01));
+        // 0.25 − 0.245 is 0.0050000000000000044 in binary
+        assert!(within_tolerance(0.25 - 0.245, 0.005));
+        let edge = 0.01 + (0.01 * 1e-9 + 1e-12);
+        assert!(within_tolerance(edge, 0.01));
+        let beyond = 0.01 * (1.0 + 1e-9) + 1e-12;
+        assert!(beyond > edge, "the old pages' bound is one ulp above");
+        assert!(!within_tolerance(beyond, 0.01));
+        assert!(!within_tolerance(0.0101, 0.01));
+    }
     use crate::text::{Lang, Message};
 
     fn exercise(name: &str) -> std::path::PathBuf {

@@ -292,11 +292,12 @@ fn channel(
     // Moodle grades by the first alternative within its tolerance (`get_matching_answer`),
     // inclusive and with a slack of 1e-14: an alternative within the tolerance of an earlier
     // one, as written, would never be reached. Within, here, is inclusive with a larger slack
-    // (that of `phong check`'s comparison: 0.675 − 0.67 is 0.005000000000000004), measured
+    // (`phong check`'s own rule, `check::within_tolerance`: 0.675 − 0.67 is
+    // 0.005000000000000004), measured
     // from the number written to the value's number as written and as computed, so that the
     // written alternatives lie more than the tolerance apart and `phong check` finds every
     // slip an alternative names within the tolerance of its number.
-    let within = |a: f64, b: f64| (a - b).abs() <= tolerance * (1.0 + 1e-9) + 1e-12;
+    let within = |a: f64, b: f64| crate::check::within_tolerance(a - b, tolerance);
     let written = |v: f64| number(v).parse::<f64>().unwrap_or(v);
     let shadowed = |v: f64, t: f64| within(t, v) || within(t, written(v));
     let right = written(right);
@@ -442,7 +443,7 @@ fn no_hit_choice(expected: &Expected, entry: &Entry, grading: &Grading, lang: La
     let w = words(lang);
     let tolerance = entry.tolerance;
     let close = |a: [f64; 3], b: [f64; 3]| {
-        (0..3).all(|k| (a[k] - b[k]).abs() <= tolerance * (1.0 + 1e-9) + 1e-12)
+        (0..3).all(|k| crate::check::within_tolerance(a[k] - b[k], tolerance))
     };
     let mut alts = vec![Alt {
         fraction: "=".into(),

@@ -253,7 +253,7 @@ pub(crate) fn answer_fragment(
         );
         for (k, name) in ["R", "G", "B"].iter().enumerate() {
             let d = cmp.difference[k];
-            let within = d.abs() <= j.tolerance * (1.0 + 1e-9) + 1e-12;
+            let within = crate::check::within_tolerance(d, j.tolerance);
             let (class, word) = if within {
                 ("within", Page::Within.text(lang))
             } else {

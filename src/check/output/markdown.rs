@@ -130,7 +130,7 @@ fn answer(out: &mut String, j: &Judged, lang: Lang) {
         );
         for (k, name) in ["R", "G", "B"].iter().enumerate() {
             let d = cmp.difference[k];
-            let within = d.abs() <= j.tolerance * (1.0 + 1e-9) + 1e-12;
+            let within = crate::check::within_tolerance(d, j.tolerance);
             let word = if within {
                 Page::Within.text(lang)
             } else {
