@@ -866,3 +866,38 @@ fn every_kind_of_verdict_is_a_page_and_a_markdown_document() {
     );
     assert!(md.contains("| `cos_theta[0]` | 0.98995 |"), "{md}");
 }
+
+/// The Markdown page says what the HTML page says of what an answer matches, the sentences
+/// with no colour of their own included: "before clamping" for an answer accepted as the
+/// unclamped colour, "no classic slip" for a wrong answer no slip explains. (The Markdown page
+/// laid this list out apart from the HTML one and left both sentences out.)
+#[test]
+fn the_markdown_and_html_pages_say_the_same_of_what_an_answer_matches() {
+    // O_a·I_a = (0.5, 0.4, 0.2)·(3, 1, 1) = (1.5, 0.4, 0.2); clamped (1, 0.4, 0.2).
+    let f = temp_problem(
+        r#"{"lights": [{"type": "ambient", "color": [3, 1, 1]}],
+            "point": {"material": {"ambient": [0.5, 0.4, 0.2]}}}"#,
+    );
+    let page = |answer: &str, format: &str| {
+        let out = phong()
+            .args([
+                "check", "--lang", "en", "--format", format, "--answer", answer,
+            ])
+            .arg(f.path())
+            .output()
+            .unwrap();
+        String::from_utf8(out.stdout).unwrap()
+    };
+    for (answer, sentence) in [
+        ("1.5 0.4 0.2", "accepted as the colour before clamping"),
+        (
+            "0.1 0.9 0.9",
+            "no classic slip (nor pair of slips) gives it",
+        ),
+    ] {
+        for format in ["html", "markdown"] {
+            let text = page(answer, format);
+            assert!(text.contains(sentence), "{answer}, {format}: {text}");
+        }
+    }
+}

@@ -14,7 +14,7 @@
 
 use std::fmt::Write;
 
-use super::Writer;
+use super::{Match, Writer};
 use crate::check::messages::{self as said, Line, Page};
 use crate::check::report::{Checked, Judged};
 use crate::check::steps::{self, StepVerdict, StepsChecked, StepsJudged};
@@ -277,21 +277,18 @@ pub(crate) fn answer_fragment(
         out.push_str("</table>\n");
     }
     // What the answer matches, each with its colour and where it departs.
-    let mut items: Vec<String> = Vec::new();
-    if let Some(r) = &v.reading {
-        let likely = v.kind == VerdictKind::Reading;
-        let link = x.map_or(String::new(), |x| links.part(x, Some(r.code), lang));
-        items.push(format!(
-            "{}{link}",
-            esc(&said::matches_reading(r.code, likely, lang))
-        ));
-    }
-    if let Some(colour) = v.background {
-        items.push(esc(&said::background(colour, lang)));
-    }
-    if v.kind == VerdictKind::Wrong {
-        if !v.diagnosis.is_empty() {
-            for d in &v.diagnosis {
+    let items: Vec<String> = super::matches(j)
+        .into_iter()
+        .map(|m| match m {
+            Match::Reading { reading, likely } => {
+                let link = x.map_or(String::new(), |x| links.part(x, Some(reading.code), lang));
+                format!(
+                    "{}{link}",
+                    esc(&said::matches_reading(reading.code, likely, lang))
+                )
+            }
+            Match::Background(colour) => esc(&said::background(colour, lang)),
+            Match::Slips(d) => {
                 let mut text = said::slips(&d.mistakes(), lang);
                 let reading = if d.intended.is_empty() {
                     None
@@ -305,7 +302,7 @@ pub(crate) fn answer_fragment(
                         .map(|s| links.step(x, reading, s.reference(), lang))
                         .collect()
                 });
-                items.push(format!(
+                format!(
                     "{} {}{links_html}",
                     swatch(
                         rgb8(d.comparison.expected, scale),
@@ -313,44 +310,38 @@ pub(crate) fn answer_fragment(
                         &triple(d.comparison.expected)
                     ),
                     esc(&format!("{text}: {}", triple(d.comparison.expected)))
-                ));
+                )
             }
-        } else if j.answer.values.is_some() && !v.looks_8bit && v.background.is_none() {
-            items.push(esc(said::no_diagnosis(lang)));
-        }
-        if v.looks_8bit {
-            items.push(esc(said::looks_8bit(lang)));
-        }
-        if let Some(n) = &v.nearest {
-            let sentence = said::nearest(&n.candidate, n.comparison.distance(), j.tolerance, lang);
-            let link = x.map_or(String::new(), |x| match &n.candidate {
-                Candidate::Written => links.part(x, None, lang),
-                Candidate::Reading(code, _) => links.part(x, Some(*code), lang),
-                Candidate::Slips { slips, intended: i } => {
-                    let reading = if i.is_empty() { None } else { intended(x) };
-                    slips
-                        .iter()
-                        .filter(|s| !i.contains(s))
-                        .map(|s| links.step(x, reading, s.reference(), lang))
-                        .collect()
-                }
-            });
-            items.push(format!(
-                "{} {}{link}",
-                swatch(
-                    rgb8(n.comparison.expected, scale),
-                    "sw",
-                    &triple(n.comparison.expected)
-                ),
-                esc(&format!("{sentence}: {}", triple(n.comparison.expected)))
-            ));
-        }
-    }
-    if v.comparison
-        .is_some_and(|c| c.within && c.against == crate::check::Against::Unclamped)
-    {
-        items.push(esc(said::unclamped_note(lang)));
-    }
+            Match::NoDiagnosis => esc(said::no_diagnosis(lang)),
+            Match::Looks8bit => esc(said::looks_8bit(lang)),
+            Match::Nearest(n) => {
+                let sentence =
+                    said::nearest(&n.candidate, n.comparison.distance(), j.tolerance, lang);
+                let link = x.map_or(String::new(), |x| match &n.candidate {
+                    Candidate::Written => links.part(x, None, lang),
+                    Candidate::Reading(code, _) => links.part(x, Some(*code), lang),
+                    Candidate::Slips { slips, intended: i } => {
+                        let reading = if i.is_empty() { None } else { intended(x) };
+                        slips
+                            .iter()
+                            .filter(|s| !i.contains(s))
+                            .map(|s| links.step(x, reading, s.reference(), lang))
+                            .collect()
+                    }
+                });
+                format!(
+                    "{} {}{link}",
+                    swatch(
+                        rgb8(n.comparison.expected, scale),
+                        "sw",
+                        &triple(n.comparison.expected)
+                    ),
+                    esc(&format!("{sentence}: {}", triple(n.comparison.expected)))
+                )
+            }
+            Match::Unclamped => esc(said::unclamped_note(lang)),
+        })
+        .collect();
     if !items.is_empty() {
         let _ = writeln!(
             out,

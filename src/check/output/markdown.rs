@@ -1,16 +1,17 @@
 //! `phong check --format markdown`: each verdict for notes and course pages, with the same
 //! content as the HTML page (`html.rs`): the verdict and its credit, the answer's and the
 //! expected colour (with their `#RRGGBB`, since Markdown has no swatch), each channel against
-//! the tolerance, what the answer matches with the equation where each slip departs, the steps
-//! judged, then the worked solution as `phong solve --format markdown` writes it.
+//! the tolerance, what the answer matches (the list [`super::matches`] decides for both pages)
+//! with the equation where each slip departs, the steps judged, then the worked solution as
+//! `phong solve --format markdown` writes it.
 
 use std::fmt::Write;
 
-use super::Writer;
+use super::{Match, Writer};
 use crate::check::messages::{self as said, Line, Page};
 use crate::check::report::{Checked, Judged};
 use crate::check::steps::{self, StepsChecked, StepsJudged};
-use crate::check::{Scale, VerdictKind};
+use crate::check::Scale;
 use crate::report::explain::capitalised;
 use crate::report::markdown::{escape, head, write_parts};
 use crate::text::number::num;
@@ -152,42 +153,34 @@ fn answer(out: &mut String, j: &Judged, lang: Lang) {
         }
         out.push('\n');
     }
-    let mut items: Vec<String> = Vec::new();
-    if let Some(r) = &v.reading {
-        items.push(said::matches_reading(
-            r.code,
-            v.kind == VerdictKind::Reading,
-            lang,
-        ));
-    }
-    if let Some(colour) = v.background {
-        items.push(said::background(colour, lang));
-    }
-    if v.kind == VerdictKind::Wrong {
-        for d in &v.diagnosis {
-            let mut text = said::slips(&d.mistakes(), lang);
-            if !d.intended.is_empty() {
-                text = format!("{text} ({})", said::in_intended_reading(lang));
+    let items: Vec<String> = super::matches(j)
+        .into_iter()
+        .map(|m| match m {
+            Match::Reading { reading, likely } => said::matches_reading(reading.code, likely, lang),
+            Match::Background(colour) => said::background(colour, lang),
+            Match::Slips(d) => {
+                let mut text = said::slips(&d.mistakes(), lang);
+                if !d.intended.is_empty() {
+                    text = format!("{text} ({})", said::in_intended_reading(lang));
+                }
+                let refs: Vec<&str> = d.mistakes().iter().map(|s| s.reference()).collect();
+                format!(
+                    "{text}: {} `{}` — {}",
+                    triple(d.comparison.expected),
+                    hex(d.comparison.expected, scale),
+                    refs.join(", ")
+                )
             }
-            let refs: Vec<&str> = d.mistakes().iter().map(|s| s.reference()).collect();
-            items.push(format!(
-                "{text}: {} `{}` — {}",
-                triple(d.comparison.expected),
-                hex(d.comparison.expected, scale),
-                refs.join(", ")
-            ));
-        }
-        if v.looks_8bit {
-            items.push(said::looks_8bit(lang).to_owned());
-        }
-        if let Some(n) = &v.nearest {
-            items.push(format!(
+            Match::NoDiagnosis => said::no_diagnosis(lang).to_owned(),
+            Match::Looks8bit => said::looks_8bit(lang).to_owned(),
+            Match::Nearest(n) => format!(
                 "{}: {}",
                 said::nearest(&n.candidate, n.comparison.distance(), j.tolerance, lang),
                 triple(n.comparison.expected)
-            ));
-        }
-    }
+            ),
+            Match::Unclamped => said::unclamped_note(lang).to_owned(),
+        })
+        .collect();
     if !items.is_empty() {
         let _ = writeln!(out, "{}\n", escape(&Page::WhatItMatches.text(lang)));
         for i in items {
