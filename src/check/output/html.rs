@@ -302,15 +302,7 @@ pub(crate) fn answer_fragment(
                         .map(|s| links.step(x, reading, s.reference(), lang))
                         .collect()
                 });
-                format!(
-                    "{} {}{links_html}",
-                    swatch(
-                        rgb8(d.comparison.expected, scale),
-                        "sw",
-                        &triple(d.comparison.expected)
-                    ),
-                    esc(&format!("{text}: {}", triple(d.comparison.expected)))
-                )
+                coloured(&text, d.comparison.expected, scale, &links_html)
             }
             Match::NoDiagnosis => esc(said::no_diagnosis(lang)),
             Match::Looks8bit => esc(said::looks_8bit(lang)),
@@ -329,15 +321,7 @@ pub(crate) fn answer_fragment(
                             .collect()
                     }
                 });
-                format!(
-                    "{} {}{link}",
-                    swatch(
-                        rgb8(n.comparison.expected, scale),
-                        "sw",
-                        &triple(n.comparison.expected)
-                    ),
-                    esc(&format!("{sentence}: {}", triple(n.comparison.expected)))
-                )
+                coloured(&sentence, n.comparison.expected, scale, &link)
             }
             Match::Unclamped => esc(said::unclamped_note(lang)),
         })
@@ -356,6 +340,16 @@ pub(crate) fn answer_fragment(
     let _ = c;
     out.push_str("</div>\n");
     out
+}
+
+/// An entry of "what it matches" with a colour: its swatch, the sentence and the colour, then
+/// `links` (HTML) to where it departs in the solution.
+fn coloured(sentence: &str, colour: [f64; 3], scale: Scale, links: &str) -> String {
+    format!(
+        "{} {}{links}",
+        swatch(rgb8(colour, scale), "sw", &triple(colour)),
+        esc(&format!("{sentence}: {}", triple(colour)))
+    )
 }
 
 /// The steps judged, as an HTML fragment: a table (the quantity, linked to its step in the
