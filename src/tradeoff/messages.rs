@@ -7,51 +7,32 @@ use std::fmt;
 use crate::messages;
 use crate::text::{Lang, Show};
 
-/// `n` with its noun, singular for 1: "3 runs", "1 execução".
-fn counted(
-    f: &mut fmt::Formatter<'_>,
-    n: u64,
-    lang: Lang,
-    en: (&str, &str),
-    pt: (&str, &str),
-) -> fmt::Result {
-    let (one, many) = match lang {
-        Lang::En => en,
-        Lang::Pt => pt,
-    };
-    write!(f, "{n} {}", if n == 1 { one } else { many })
+/// What a [`Count`] counts.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub enum Noun {
+    /// Timed renders.
+    #[default]
+    Run,
+    /// Worker threads.
+    Thread,
+    /// Samples per pixel.
+    Sample,
 }
 
-/// A number of timed renders.
+/// A number with its noun, singular for 1: "3 runs", "1 execução".
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
-pub struct Runs(pub u32);
+pub struct Count(pub u64, pub Noun);
 
-impl Show for Runs {
+impl Show for Count {
     fn show(&self, lang: Lang, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        let (en, pt) = (("run", "runs"), ("execução", "execuções"));
-        counted(f, u64::from(self.0), lang, en, pt)
-    }
-}
-
-/// A number of worker threads.
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
-pub struct Threads(pub usize);
-
-impl Show for Threads {
-    fn show(&self, lang: Lang, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        let (en, pt) = (("thread", "threads"), ("thread", "threads"));
-        counted(f, self.0 as u64, lang, en, pt)
-    }
-}
-
-/// A number of samples per pixel.
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
-pub struct Samples(pub u32);
-
-impl Show for Samples {
-    fn show(&self, lang: Lang, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        let (en, pt) = (("sample", "samples"), ("amostra", "amostras"));
-        counted(f, u64::from(self.0), lang, en, pt)
+        let (one, many) = match (self.1, lang) {
+            (Noun::Run, Lang::En) => ("run", "runs"),
+            (Noun::Run, Lang::Pt) => ("execução", "execuções"),
+            (Noun::Thread, _) => ("thread", "threads"),
+            (Noun::Sample, Lang::En) => ("sample", "samples"),
+            (Noun::Sample, Lang::Pt) => ("amostra", "amostras"),
+        };
+        write!(f, "{} {}", self.0, if self.0 == 1 { one } else { many })
     }
 }
 
@@ -76,7 +57,7 @@ messages! {
     /// samples".
     pub enum SettingName {
         /// Precision, maximum level, minimum weight (as `report::weight` writes it), samples.
-        Setting { precision: String, level: u32, weight: String, samples: Samples } =>
+        Setting { precision: String, level: u32, weight: String, samples: Count } =>
             "{precision}, level {level}, min weight {weight}, {samples}",
             "{precision}, nível {level}, peso mínimo {weight}, {samples}";
     }
@@ -88,7 +69,7 @@ impl Default for SettingName {
             precision: String::new(),
             level: 0,
             weight: String::new(),
-            samples: Samples::default(),
+            samples: Count::default(),
         }
     }
 }
@@ -130,7 +111,7 @@ messages! {
     /// its bound, "RMSE ≤ 1/255 (3.92e-3)").
     pub enum TradeoffText {
         /// The first line: the scene, its size, how each time was taken.
-        Heading { scene: String, size: String, runs: Runs, threads: Threads } =>
+        Heading { scene: String, size: String, runs: Count, threads: Count } =>
             "Trade-off for {scene} ({size}): each setting's time is the median of {runs} on \
              {threads}.",
             "Velocidade contra precisão em {scene} ({size}): o tempo de cada configuração é a mediana de \
@@ -199,7 +180,7 @@ messages! {
     /// The plot's title, axes and legend.
     pub enum PlotText {
         /// The title.
-        Title { scene: String, metric: MetricName, size: String, threads: Threads } =>
+        Title { scene: String, metric: MetricName, size: String, threads: Count } =>
             "{scene}: {metric} against time ({size}, {threads})",
             "{scene}: {metric} contra o tempo ({size}, {threads})";
         /// The time axis.

@@ -4,7 +4,7 @@
 
 use plotters::prelude::*;
 
-use super::messages::{PlotText, Threads};
+use super::messages::{Count, Noun, PlotText};
 use super::report::{weight, Summary};
 use crate::core::Precision;
 use crate::text::{Lang, Message};
@@ -61,7 +61,7 @@ pub fn svg(s: &Summary, lang: Lang) -> Result<String, String> {
             scene: s.scene.to_owned(),
             metric: metric.name(),
             size: format!("{}×{}", s.outcome.width, s.outcome.height),
-            threads: Threads(s.outcome.threads),
+            threads: Count(s.outcome.threads as u64, Noun::Thread),
         }
         .text(lang);
         let mut chart = ChartBuilder::on(&root)

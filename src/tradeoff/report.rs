@@ -3,7 +3,7 @@
 
 use serde_json::{json, Value};
 
-use super::messages::{Column, Runs, Samples, SettingName, Threads, TradeoffText};
+use super::messages::{Column, Count, Noun, SettingName, TradeoffText};
 use super::{fastest_within, pareto_front, Measured, Metric, Outcome, Setting};
 use crate::text::{Lang, Message};
 use crate::tracer::Counts;
@@ -69,7 +69,7 @@ pub fn describe(s: &Setting) -> SettingName {
         precision: s.precision.name().to_owned(),
         level: s.max_level,
         weight: weight(s.min_weight),
-        samples: Samples(s.samples),
+        samples: Count(u64::from(s.samples), Noun::Sample),
     }
 }
 
@@ -116,8 +116,8 @@ pub fn text(s: &Summary, lang: Lang) -> String {
     line(TradeoffText::Heading {
         scene: s.scene.to_owned(),
         size: format!("{}×{}", o.width, o.height),
-        runs: Runs(o.runs),
-        threads: Threads(o.threads),
+        runs: Count(u64::from(o.runs), Noun::Run),
+        threads: Count(o.threads as u64, Noun::Thread),
     });
     line(TradeoffText::Reference {
         setting: describe(&r.setting),

@@ -1161,21 +1161,19 @@ fn export_pov_schema_and_policy_write_their_errors_in_the_lang_asked_for() {
             assert!(out.stdout.is_empty(), "{args:?}");
             String::from_utf8(out.stderr).unwrap()
         };
-        let pt = run("pt", "C.UTF-8");
-        assert!(
-            pt.starts_with("erro: ")
-                && pt.contains("naoexiste")
-                && pt.contains("Correção: ")
-                && !pt.contains("Fix: "),
-            "{args:?}: {pt}"
-        );
-        let en = run("en", "pt_BR.UTF-8");
-        assert!(
-            en.starts_with("error: ")
-                && en.contains("naoexiste")
-                && en.contains("Fix: ")
-                && !en.contains("Correção"),
-            "{args:?}: {en}"
-        );
+        // (--lang, a locale of the other language, the error's start, its fix, the other fix)
+        for (lang, locale, start, fix, other) in [
+            ("pt", "C.UTF-8", "erro: ", "Correção: ", "Fix: "),
+            ("en", "pt_BR.UTF-8", "error: ", "Fix: ", "Correção"),
+        ] {
+            let err = run(lang, locale);
+            assert!(
+                err.starts_with(start)
+                    && err.contains("naoexiste")
+                    && err.contains(fix)
+                    && !err.contains(other),
+                "{args:?}: {err}"
+            );
+        }
     }
 }

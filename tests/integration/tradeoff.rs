@@ -454,16 +454,21 @@ fn the_table_and_plot_speak_portuguese_with_lang_pt() {
         "--metric",
         "max-abs",
     ];
-    let out = phong()
-        .arg("tradeoff")
-        .arg(&scene)
-        .args(args)
-        .args(["--lang", "pt", "--plot"])
-        .arg(&plot)
-        .output()
-        .unwrap();
-    assert!(out.status.success());
-    let text = String::from_utf8(out.stdout).unwrap();
+    // The table, with `extra` flags and `locale` as LANG.
+    let table = |extra: &[&str], locale: &str| {
+        let out = phong()
+            .arg("tradeoff")
+            .arg(&scene)
+            .args(args)
+            .args(extra)
+            .env("LANG", locale)
+            .output()
+            .unwrap();
+        assert!(out.status.success(), "{extra:?}");
+        String::from_utf8(out.stdout).unwrap()
+    };
+    let plot_arg = plot.to_str().unwrap();
+    let text = table(&["--lang", "pt", "--plot", plot_arg], "C.UTF-8");
     assert!(
         text.contains("Referência: f64, nível 64, peso mínimo 0, 64 amostras"),
         "{text}"
@@ -487,15 +492,7 @@ fn the_table_and_plot_speak_portuguese_with_lang_pt() {
     assert!(!svg.contains("Pareto front") && !svg.contains("median time"));
 
     // The locale decides where --lang is not given.
-    let by_locale = phong()
-        .arg("tradeoff")
-        .arg(&scene)
-        .args(args)
-        .env("LANG", "pt_BR.UTF-8")
-        .output()
-        .unwrap();
-    assert!(by_locale.status.success());
-    let by_locale = String::from_utf8(by_locale.stdout).unwrap();
+    let by_locale = table(&[], "pt_BR.UTF-8");
     assert!(
         by_locale.starts_with("Velocidade contra precisão em "),
         "{by_locale}"
