@@ -2,6 +2,7 @@
 //! chapter's own terms: luz ambiente, decaimento, normal, observador, raio). The JSON output
 //! carries the English sentences next to stable codes; `--lang pt` changes the text only.
 
+use super::matches::{expected_line, matches, ExpectedLine, Match};
 use super::{Against, Slip, VerdictKind};
 use crate::solve::ReadingCode;
 use crate::text::lang::Lang;
@@ -668,49 +669,58 @@ pub(crate) fn feedback(f: &RowFacts, lang: Lang) -> String {
             if f.read_as_8bit {
                 parts.push(read_as_8bit(lang).to_owned());
             }
-            if let Some(r) = &v.reading {
-                parts.push(matches_reading(r.code, r.likely_intended, lang));
-            }
+            // The expected colour is not given in a sentence; why there is none is.
             if v.kind == VerdictKind::Wrong {
-                if let Some((_, ray)) = v.has_colour {
-                    parts.push(has_colour(ray, lang).to_owned());
-                } else if let Some(colour) = v.background {
-                    parts.push(background(colour, lang));
-                } else if v.written.is_none() && v.comparison.is_some() {
-                    parts.push(nothing_to_shade(lang).to_owned());
+                match expected_line(v) {
+                    ExpectedLine::Compared { .. } => {}
+                    ExpectedLine::HasColour { ray, .. } => {
+                        parts.push(has_colour(ray, lang).to_owned())
+                    }
+                    // The background's sentence says it, where the answer is the background.
+                    ExpectedLine::Nothing if v.background.is_some() => {}
+                    ExpectedLine::Nothing => parts.push(nothing_to_shade(lang).to_owned()),
                 }
-                if !v.diagnosis.is_empty() {
-                    let or = match lang {
-                        Lang::En => " or ",
-                        Lang::Pt => " ou ",
-                    };
-                    let list = v
-                        .diagnosis
-                        .iter()
-                        .map(|d| slips(&d.mistakes(), lang))
-                        .collect::<Vec<_>>()
-                        .join(or);
-                    parts.push(format!("{} {list}", diagnosis_intro(v.pairs, lang)));
-                } else if v.has_colour.is_none() && !v.looks_8bit && v.background.is_none() {
-                    // As `phong check`'s text: no slip line for 8-bit numbers on the 0–1 scale.
-                    parts.push(no_diagnosis(lang).to_owned());
-                }
-                if v.looks_8bit {
-                    parts.push(looks_8bit(lang).to_owned());
-                }
-                if let Some(n) = &v.nearest {
-                    parts.push(nearest(
+            }
+            let mut slips_at = None;
+            for m in matches(v) {
+                match m {
+                    Match::Reading { reading, likely } => {
+                        parts.push(matches_reading(reading.code, likely, lang))
+                    }
+                    Match::AsWritten(w) => parts.push(format!(
+                        "{}: {}",
+                        as_written(lang),
+                        super::report::triple(w.expected, crate::text::number::num)
+                    )),
+                    Match::NothingAsWritten => parts.push(nothing_to_shade(lang).to_owned()),
+                    Match::Background(colour) => parts.push(background(colour, lang)),
+                    // The slips in one clause: "… gives it: A or B".
+                    Match::Slips(d) => {
+                        let these = slips(&d.mistakes(), lang);
+                        match slips_at {
+                            None => {
+                                slips_at = Some(parts.len());
+                                parts.push(format!("{} {these}", diagnosis_intro(v.pairs, lang)));
+                            }
+                            Some(i) => {
+                                let or = match lang {
+                                    Lang::En => " or ",
+                                    Lang::Pt => " ou ",
+                                };
+                                parts[i] = format!("{}{or}{these}", parts[i]);
+                            }
+                        }
+                    }
+                    Match::NoDiagnosis => parts.push(no_diagnosis(lang).to_owned()),
+                    Match::Looks8bit => parts.push(looks_8bit(lang).to_owned()),
+                    Match::Nearest(n) => parts.push(nearest(
                         &n.candidate,
                         n.comparison.distance(),
                         f.tolerance,
                         lang,
-                    ));
+                    )),
+                    Match::Unclamped => parts.push(unclamped_note(lang).to_owned()),
                 }
-            } else if v
-                .comparison
-                .is_some_and(|c| c.against == Against::Unclamped)
-            {
-                parts.push(unclamped_note(lang).to_owned());
             }
         }
     }

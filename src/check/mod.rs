@@ -18,6 +18,7 @@
 pub mod answer;
 pub mod export;
 pub mod grade;
+pub(crate) mod matches;
 pub(crate) mod messages;
 pub mod moodle;
 pub mod output;

@@ -6,6 +6,7 @@ use std::fmt::Write;
 
 use serde::Serialize;
 
+use super::matches::{expected_line, matches, ExpectedLine, Match};
 use super::messages::{self, Line};
 use super::{Answer, Candidate, Comparison, Nearest, Scale, Verdict, VerdictKind};
 use crate::problem::ProblemError;
@@ -207,36 +208,37 @@ pub fn text(c: &Checked, lang: Lang) -> String {
     if *as_8bit {
         let _ = writeln!(out, "  {}", messages::read_as_8bit(lang));
     }
-    match &v.comparison {
-        Some(cmp) => {
+    match expected_line(v) {
+        ExpectedLine::Compared {
+            comparison,
+            reading,
+        } => {
             let _ = writeln!(
                 out,
                 "  {}{}  {}",
                 label(Line::Expected),
-                triple(cmp.expected, num),
-                messages::expected_source(v.compared_reading, cmp.against, lang)
+                triple(comparison.expected, num),
+                messages::expected_source(reading, comparison.against, lang)
             );
             let _ = writeln!(
                 out,
                 "  {}{}",
                 label(Line::Difference),
-                triple(cmp.difference, signed)
+                triple(comparison.difference, signed)
             );
         }
-        None => match v.has_colour {
-            Some((colour, ray)) => {
-                let _ = writeln!(
-                    out,
-                    "  {}{}  {}",
-                    label(Line::Expected),
-                    triple(colour, num),
-                    messages::has_colour(ray, lang)
-                );
-            }
-            None => {
-                let _ = writeln!(out, "  {}", messages::nothing_to_shade(lang));
-            }
-        },
+        ExpectedLine::HasColour { colour, ray } => {
+            let _ = writeln!(
+                out,
+                "  {}{}  {}",
+                label(Line::Expected),
+                triple(colour, num),
+                messages::has_colour(ray, lang)
+            );
+        }
+        ExpectedLine::Nothing => {
+            let _ = writeln!(out, "  {}", messages::nothing_to_shade(lang));
+        }
     }
     let _ = writeln!(
         out,
@@ -251,48 +253,35 @@ pub fn text(c: &Checked, lang: Lang) -> String {
         label(Line::Credit),
         messages::Credit::of(*credit, policy.as_deref()).text(lang)
     );
-    if v.comparison
-        .is_some_and(|c| c.within && c.against == super::Against::Unclamped)
-    {
-        let _ = writeln!(out, "  {}", messages::unclamped_note(lang));
-    }
-    if let Some(r) = &v.reading {
-        let likely = v.kind == VerdictKind::Reading;
-        let _ = writeln!(out, "  {}", messages::matches_reading(r.code, likely, lang));
-        if likely {
-            match &v.written {
-                Some(w) => {
-                    let _ = writeln!(
-                        out,
-                        "  {:<11}{}",
-                        messages::as_written(lang),
-                        triple(w.expected, num)
-                    );
-                }
-                None => {
-                    let _ = writeln!(out, "  {}", messages::nothing_to_shade(lang));
-                }
+    // The slips as a list under one line.
+    let mut slips_said = false;
+    for m in matches(v) {
+        match m {
+            Match::Reading { reading, likely } => {
+                let _ = writeln!(
+                    out,
+                    "  {}",
+                    messages::matches_reading(reading.code, likely, lang)
+                );
             }
-        }
-    }
-    if let Some(colour) = v.background {
-        let _ = writeln!(out, "  {}", messages::background(colour, lang));
-    } else if v.kind == VerdictKind::Wrong && v.written.is_none() && answer.values.is_some() {
-        let _ = writeln!(out, "  {}", messages::nothing_to_shade(lang));
-    }
-    if v.kind == VerdictKind::Wrong {
-        // "No classic slip gives it" only where there is a value compared on its own scale: not
-        // for an answer "none" (no value), nor for 8-bit numbers read on the 0–1 scale (the
-        // hint to use --scale 255 below is what helps).
-        // Nor for black where the ray hits nothing: the background, said above.
-        let compared = answer.values.is_some() && !v.looks_8bit && v.background.is_none();
-        if v.diagnosis.is_empty() {
-            if compared {
-                let _ = writeln!(out, "  {}", messages::no_diagnosis(lang));
+            Match::AsWritten(w) => {
+                let _ = writeln!(
+                    out,
+                    "  {:<11}{}",
+                    messages::as_written(lang),
+                    triple(w.expected, num)
+                );
             }
-        } else {
-            let _ = writeln!(out, "  {}", messages::diagnosis_intro(v.pairs, lang));
-            for d in &v.diagnosis {
+            Match::NothingAsWritten => {
+                let _ = writeln!(out, "  {}", messages::nothing_to_shade(lang));
+            }
+            Match::Background(colour) => {
+                let _ = writeln!(out, "  {}", messages::background(colour, lang));
+            }
+            Match::Slips(d) => {
+                if !std::mem::replace(&mut slips_said, true) {
+                    let _ = writeln!(out, "  {}", messages::diagnosis_intro(v.pairs, lang));
+                }
                 let within = if d.intended.is_empty() {
                     String::new()
                 } else {
@@ -305,24 +294,31 @@ pub fn text(c: &Checked, lang: Lang) -> String {
                     triple(d.comparison.expected, num)
                 );
             }
-        }
-        if v.looks_8bit {
-            let _ = writeln!(out, "  {}", messages::looks_8bit(lang));
-        }
-        if let Some(n) = &v.nearest {
-            let said = messages::nearest(&n.candidate, n.comparison.distance(), *tolerance, lang);
-            if worth_showing(n, v) {
-                let _ = writeln!(
-                    out,
-                    "  {}{}  {}",
-                    label(Line::Closest),
-                    triple(n.comparison.expected, num),
-                    said
-                );
-            } else if super::near_miss(n.comparison.distance(), *tolerance) {
-                // A near miss of the colour the "expected" line shows: that line has the
-                // colour; this says it is a near miss, and of what.
-                let _ = writeln!(out, "  {said}");
+            Match::NoDiagnosis => {
+                let _ = writeln!(out, "  {}", messages::no_diagnosis(lang));
+            }
+            Match::Looks8bit => {
+                let _ = writeln!(out, "  {}", messages::looks_8bit(lang));
+            }
+            Match::Nearest(n) => {
+                let said =
+                    messages::nearest(&n.candidate, n.comparison.distance(), *tolerance, lang);
+                if worth_showing(n, v) {
+                    let _ = writeln!(
+                        out,
+                        "  {}{}  {}",
+                        label(Line::Closest),
+                        triple(n.comparison.expected, num),
+                        said
+                    );
+                } else if super::near_miss(n.comparison.distance(), *tolerance) {
+                    // A near miss of the colour the "expected" line shows: that line has the
+                    // colour; this says it is a near miss, and of what.
+                    let _ = writeln!(out, "  {said}");
+                }
+            }
+            Match::Unclamped => {
+                let _ = writeln!(out, "  {}", messages::unclamped_note(lang));
             }
         }
     }

@@ -867,37 +867,91 @@ fn every_kind_of_verdict_is_a_page_and_a_markdown_document() {
     assert!(md.contains("| `cos_theta[0]` | 0.98995 |"), "{md}");
 }
 
-/// The Markdown page says what the HTML page says of what an answer matches, the sentences
-/// with no colour of their own included: "before clamping" for an answer accepted as the
-/// unclamped colour, "no classic slip" for a wrong answer no slip explains. (The Markdown page
-/// laid this list out apart from the HTML one and left both sentences out.)
+/// Every report of a verdict says the same of what an answer matches: the text report, the
+/// HTML and Markdown pages and `phong grade`'s feedback (one list, `check::matches`, each
+/// laying it out). The sentences with no colour of their own: "before clamping" for an answer
+/// accepted as the unclamped colour, "no classic slip" for a wrong answer no slip explains
+/// (the Markdown page left both out); for a ray that hits nothing, "as written, the problem
+/// has no colour" said once (the text report said it twice, the feedback never); and beside
+/// an answer accepted as 4.2's likely intended reading, the problem as written's colour,
+/// black (as 4.2 is written no light reaches the lit side: Eq. 4.16 gives (0, 0, 0)).
 #[test]
-fn the_markdown_and_html_pages_say_the_same_of_what_an_answer_matches() {
+fn every_report_says_the_same_of_what_an_answer_matches() {
+    let dir = tempfile::tempdir().unwrap();
     // O_a·I_a = (0.5, 0.4, 0.2)·(3, 1, 1) = (1.5, 0.4, 0.2); clamped (1, 0.4, 0.2).
-    let f = temp_problem(
-        r#"{"lights": [{"type": "ambient", "color": [3, 1, 1]}],
-            "point": {"material": {"ambient": [0.5, 0.4, 0.2]}}}"#,
-    );
-    let page = |answer: &str, format: &str| {
-        let out = phong()
-            .args([
-                "check", "--lang", "en", "--format", format, "--answer", answer,
-            ])
-            .arg(f.path())
-            .output()
-            .unwrap();
-        String::from_utf8(out.stdout).unwrap()
-    };
-    for (answer, sentence) in [
-        ("1.5 0.4 0.2", "accepted as the colour before clamping"),
+    let unclamped = r#"{"lights": [{"type": "ambient", "color": [3, 1, 1]}],
+        "point": {"material": {"ambient": [0.5, 0.4, 0.2]}}}"#;
+    // The ray along −z from (0, 0, 10) passes the sphere at x = 5 (radius 2) by 3.
+    let miss = r#"{"lights": [{"type": "ambient", "color": [1, 1, 1]}],
+        "ray": {"origin": [0, 0, 10], "direction": [0, 0, -1]},
+        "surfaces": [{"type": "sphere", "center": [5, 0, 0], "radius": 2,
+                      "material": {"ambient": [1, 1, 1]}}]}"#;
+    std::fs::write(dir.path().join("unclamped.json"), unclamped).unwrap();
+    std::fs::write(dir.path().join("miss.json"), miss).unwrap();
+    let exercises = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("exercises");
+    std::fs::copy(exercises.join("4.2.json"), dir.path().join("4.2.json")).unwrap();
+    let no_colour = "as written, the problem has no colour";
+    // (exercise, answer, sentence, how many times each report says it)
+    let cases = [
         (
+            "unclamped",
+            "1.5 0.4 0.2",
+            "accepted as the colour before clamping",
+            1,
+        ),
+        (
+            "unclamped",
             "0.1 0.9 0.9",
             "no classic slip (nor pair of slips) gives it",
+            1,
         ),
-    ] {
-        for format in ["html", "markdown"] {
-            let text = page(answer, format);
-            assert!(text.contains(sentence), "{answer}, {format}: {text}");
+        ("miss", "0.5 0.5 0.5", no_colour, 1),
+        ("4.2", "0.299 0.361 0.318", "as written (0, 0, 0)", 1),
+    ];
+    let mut csv = String::from("student,exercise,answer\n");
+    for (i, (exercise, answer, _, _)) in cases.iter().enumerate() {
+        csv.push_str(&format!(
+            "s{i},{exercise},\"{}\"\n",
+            answer.replace(' ', ",")
+        ));
+    }
+    let submissions = dir.path().join("submissions.csv");
+    std::fs::write(&submissions, csv).unwrap();
+    let out = phong()
+        .args(["grade", "--lang", "en", "--format", "json", "--exercises"])
+        .arg(dir.path())
+        .arg(&submissions)
+        .output()
+        .unwrap();
+    let graded: Value = serde_json::from_slice(&out.stdout).unwrap();
+    let feedback = |i: usize| {
+        let rows = graded["rows"].as_array().unwrap();
+        let row = rows.iter().find(|r| r["student"] == format!("s{i}"));
+        row.unwrap()["feedback"].as_str().unwrap().to_owned()
+    };
+    for (i, (exercise, answer, sentence, times)) in cases.into_iter().enumerate() {
+        let file = dir.path().join(format!("{exercise}.json"));
+        let mut reports = Vec::new();
+        for format in ["text", "html", "markdown"] {
+            let out = phong()
+                .args([
+                    "check", "--lang", "en", "--format", format, "--answer", answer,
+                ])
+                .arg(&file)
+                .output()
+                .unwrap();
+            reports.push((format, String::from_utf8(out.stdout).unwrap()));
+        }
+        reports.push(("feedback", feedback(i)));
+        for (format, report) in reports {
+            // A colour after a sentence: "as written (0, 0, 0)" on the text report's line,
+            // "as written: (0, 0, 0)" elsewhere.
+            let said = report.replace(": (", " (");
+            assert_eq!(
+                said.matches(sentence).count(),
+                times,
+                "{exercise} {answer}, {format}: {report}"
+            );
         }
     }
 }

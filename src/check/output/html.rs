@@ -14,7 +14,8 @@
 
 use std::fmt::Write;
 
-use super::{Match, Writer};
+use super::Writer;
+use crate::check::matches::{expected_line, matches, ExpectedLine, Match};
 use crate::check::messages::{self as said, Line, Page};
 use crate::check::report::{Checked, Judged};
 use crate::check::steps::{self, StepVerdict, StepsChecked, StepsJudged};
@@ -208,22 +209,25 @@ pub(crate) fn answer_fragment(
             );
         }
     }
-    match (&v.comparison, v.has_colour) {
-        (Some(cmp), _) => out.push_str(&colour_figure(
+    match expected_line(v) {
+        ExpectedLine::Compared {
+            comparison,
+            reading,
+        } => out.push_str(&colour_figure(
             &Page::Expected.text(lang),
-            cmp.expected,
+            comparison.expected,
             scale,
-            &said::expected_source(v.compared_reading, cmp.against, lang),
+            &said::expected_source(reading, comparison.against, lang),
             lang,
         )),
-        (None, Some((colour, ray))) => out.push_str(&colour_figure(
+        ExpectedLine::HasColour { colour, ray } => out.push_str(&colour_figure(
             &Page::Expected.text(lang),
             colour,
             scale,
             said::has_colour(ray, lang),
             lang,
         )),
-        (None, None) => {
+        ExpectedLine::Nothing => {
             let _ = writeln!(
                 out,
                 "<p><strong>{}</strong> {}</p>",
@@ -277,7 +281,7 @@ pub(crate) fn answer_fragment(
         out.push_str("</table>\n");
     }
     // What the answer matches, each with its colour and where it departs.
-    let items: Vec<String> = super::matches(j)
+    let items: Vec<String> = matches(v)
         .into_iter()
         .map(|m| match m {
             Match::Reading { reading, likely } => {
@@ -287,6 +291,13 @@ pub(crate) fn answer_fragment(
                     esc(&said::matches_reading(reading.code, likely, lang))
                 )
             }
+            Match::AsWritten(w) => coloured(
+                said::as_written(lang),
+                w.expected,
+                scale,
+                &x.map_or(String::new(), |x| links.part(x, None, lang)),
+            ),
+            Match::NothingAsWritten => esc(said::nothing_to_shade(lang)),
             Match::Background(colour) => esc(&said::background(colour, lang)),
             Match::Slips(d) => {
                 let mut text = said::slips(&d.mistakes(), lang);

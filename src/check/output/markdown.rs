@@ -7,7 +7,8 @@
 
 use std::fmt::Write;
 
-use super::{Match, Writer};
+use super::Writer;
+use crate::check::matches::{expected_line, matches, ExpectedLine, Match};
 use crate::check::messages::{self as said, Line, Page};
 use crate::check::report::{Checked, Judged};
 use crate::check::steps::{self, StepsChecked, StepsJudged};
@@ -78,22 +79,21 @@ fn answer(out: &mut String, j: &Judged, lang: Lang) {
             );
         }
     }
-    match (&v.comparison, v.has_colour) {
-        (Some(cmp), _) => {
+    match expected_line(v) {
+        ExpectedLine::Compared {
+            comparison,
+            reading,
+        } => {
             let _ = writeln!(
                 out,
                 "- {}: {} `{}` ({})\n",
                 escape(&Page::Expected.text(lang)),
-                escape(&triple(cmp.expected)),
-                hex(cmp.expected, scale),
-                escape(&said::expected_source(
-                    v.compared_reading,
-                    cmp.against,
-                    lang
-                ))
+                escape(&triple(comparison.expected)),
+                hex(comparison.expected, scale),
+                escape(&said::expected_source(reading, comparison.against, lang))
             );
         }
-        (None, Some((colour, ray))) => {
+        ExpectedLine::HasColour { colour, ray } => {
             let _ = writeln!(
                 out,
                 "- {}: {} `{}` ({})\n",
@@ -103,7 +103,7 @@ fn answer(out: &mut String, j: &Judged, lang: Lang) {
                 escape(said::has_colour(ray, lang))
             );
         }
-        (None, None) => {
+        ExpectedLine::Nothing => {
             let _ = writeln!(
                 out,
                 "- {}: {}\n",
@@ -153,11 +153,24 @@ fn answer(out: &mut String, j: &Judged, lang: Lang) {
         }
         out.push('\n');
     }
-    let items: Vec<String> = super::matches(j)
+    // Each entry as Markdown: its words escaped, a colour's `#RRGGBB` as code.
+    let swatch = |sentence: &str, colour: [f64; 3]| {
+        format!(
+            "{}: {} `{}`",
+            escape(sentence),
+            escape(&triple(colour)),
+            hex(colour, scale)
+        )
+    };
+    let items: Vec<String> = matches(v)
         .into_iter()
         .map(|m| match m {
-            Match::Reading { reading, likely } => said::matches_reading(reading.code, likely, lang),
-            Match::Background(colour) => said::background(colour, lang),
+            Match::Reading { reading, likely } => {
+                escape(&said::matches_reading(reading.code, likely, lang))
+            }
+            Match::AsWritten(w) => swatch(said::as_written(lang), w.expected),
+            Match::NothingAsWritten => escape(said::nothing_to_shade(lang)),
+            Match::Background(colour) => escape(&said::background(colour, lang)),
             Match::Slips(d) => {
                 let mut text = said::slips(&d.mistakes(), lang);
                 if !d.intended.is_empty() {
@@ -165,26 +178,24 @@ fn answer(out: &mut String, j: &Judged, lang: Lang) {
                 }
                 let refs: Vec<&str> = d.mistakes().iter().map(|s| s.reference()).collect();
                 format!(
-                    "{text}: {} `{}` — {}",
-                    triple(d.comparison.expected),
-                    hex(d.comparison.expected, scale),
-                    refs.join(", ")
+                    "{} — {}",
+                    swatch(&text, d.comparison.expected),
+                    escape(&refs.join(", "))
                 )
             }
-            Match::NoDiagnosis => said::no_diagnosis(lang).to_owned(),
-            Match::Looks8bit => said::looks_8bit(lang).to_owned(),
-            Match::Nearest(n) => format!(
-                "{}: {}",
-                said::nearest(&n.candidate, n.comparison.distance(), j.tolerance, lang),
-                triple(n.comparison.expected)
+            Match::NoDiagnosis => escape(said::no_diagnosis(lang)),
+            Match::Looks8bit => escape(said::looks_8bit(lang)),
+            Match::Nearest(n) => swatch(
+                &said::nearest(&n.candidate, n.comparison.distance(), j.tolerance, lang),
+                n.comparison.expected,
             ),
-            Match::Unclamped => said::unclamped_note(lang).to_owned(),
+            Match::Unclamped => escape(said::unclamped_note(lang)),
         })
         .collect();
     if !items.is_empty() {
         let _ = writeln!(out, "{}\n", escape(&Page::WhatItMatches.text(lang)));
         for i in items {
-            let _ = writeln!(out, "- {}", escape(&i));
+            let _ = writeln!(out, "- {i}");
         }
         out.push('\n');
     }

@@ -8,65 +8,9 @@ mod json;
 mod markdown;
 mod text;
 
-use super::report::{Checked, Judged};
+use super::report::Checked;
 use super::steps::StepsChecked;
-use super::{Against, Diagnosis, Nearest, ReadingTarget, VerdictKind};
 use crate::text::Lang;
-
-/// One entry of a page's "what the answer matches": decided here once, in order, for the HTML
-/// and the Markdown page, each laying it out its own way (swatches and links to the solution's
-/// steps, or `#RRGGBB` and the equations).
-pub(crate) enum Match<'a> {
-    /// A reading of the problem (`likely`: the verdict names it the intended one).
-    Reading {
-        reading: &'a ReadingTarget,
-        likely: bool,
-    },
-    /// The background's colour: the ray hits nothing.
-    Background([f64; 3]),
-    /// The colour these slips give (each of a wrong answer's diagnoses).
-    Slips(&'a Diagnosis),
-    /// A wrong answer that no slip explains.
-    NoDiagnosis,
-    /// 0–1 numbers that look like 8-bit values.
-    Looks8bit,
-    /// The nearest colour missed.
-    Nearest(&'a Nearest),
-    /// Accepted as the colour before clamping.
-    Unclamped,
-}
-
-/// What the answer of `j` matches, in the pages' order.
-pub(crate) fn matches(j: &Judged) -> Vec<Match<'_>> {
-    let v = &j.verdict;
-    let mut items = Vec::new();
-    if let Some(reading) = &v.reading {
-        let likely = v.kind == VerdictKind::Reading;
-        items.push(Match::Reading { reading, likely });
-    }
-    if let Some(colour) = v.background {
-        items.push(Match::Background(colour));
-    }
-    if v.kind == VerdictKind::Wrong {
-        if !v.diagnosis.is_empty() {
-            items.extend(v.diagnosis.iter().map(Match::Slips));
-        } else if j.answer.values.is_some() && !v.looks_8bit && v.background.is_none() {
-            items.push(Match::NoDiagnosis);
-        }
-        if v.looks_8bit {
-            items.push(Match::Looks8bit);
-        }
-        if let Some(n) = &v.nearest {
-            items.push(Match::Nearest(n));
-        }
-    }
-    if v.comparison
-        .is_some_and(|c| c.within && c.against == Against::Unclamped)
-    {
-        items.push(Match::Unclamped);
-    }
-    items
-}
 
 /// What a format writes of the checks of a run: each file's answer (when one was checked) and
 /// steps (when any were given), in order, then the whole output.
