@@ -1,9 +1,9 @@
 //! `phong check --format markdown`: each verdict for notes and course pages, with the same
 //! content as the HTML page (`html.rs`): the verdict and its credit, the answer's and the
 //! expected colour (with their `#RRGGBB`, since Markdown has no swatch), each channel against
-//! the tolerance, what the answer matches (the list [`super::matches`] decides for both pages)
-//! with the equation where each slip departs, the steps judged, then the worked solution as
-//! `phong solve --format markdown` writes it.
+//! the tolerance, what the answer matches (the list [`crate::check::matches::matches`] decides
+//! for every report) with the equation where each slip departs, the steps judged, then the
+//! worked solution as `phong solve --format markdown` writes it.
 
 use std::fmt::Write;
 
