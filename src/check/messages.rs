@@ -2,7 +2,7 @@
 //! chapter's own terms: luz ambiente, decaimento, normal, observador, raio). The JSON output
 //! carries the English sentences next to stable codes; `--lang pt` changes the text only.
 
-use super::matches::{expected_line, matches, ExpectedLine, Match};
+use super::matches::{matches, Layout, Match};
 use super::{Against, Slip, VerdictKind};
 use crate::solve::ReadingCode;
 use crate::text::lang::Lang;
@@ -669,59 +669,41 @@ pub(crate) fn feedback(f: &RowFacts, lang: Lang) -> String {
             if f.read_as_8bit {
                 parts.push(read_as_8bit(lang).to_owned());
             }
-            // The expected colour is not given in a sentence; why there is none is.
-            if v.kind == VerdictKind::Wrong {
-                match expected_line(v) {
-                    ExpectedLine::Compared { .. } => {}
-                    ExpectedLine::HasColour { ray, .. } => {
-                        parts.push(has_colour(ray, lang).to_owned())
+            let clauses = matches(v, f.tolerance, Layout::Sentence)
+                .into_iter()
+                .map(|m| match m {
+                    Match::HasColour { ray } => has_colour(ray, lang).to_owned(),
+                    Match::NothingToShade | Match::NothingAsWritten => {
+                        nothing_to_shade(lang).to_owned()
                     }
-                    // The background's sentence says it, where the answer is the background.
-                    ExpectedLine::Nothing if v.background.is_some() => {}
-                    ExpectedLine::Nothing => parts.push(nothing_to_shade(lang).to_owned()),
-                }
-            }
-            let mut slips_at = None;
-            for m in matches(v) {
-                match m {
                     Match::Reading { reading, likely } => {
-                        parts.push(matches_reading(reading.code, likely, lang))
+                        matches_reading(reading.code, likely, lang)
                     }
-                    Match::AsWritten(w) => parts.push(format!(
+                    Match::AsWritten(w) => format!(
                         "{}: {}",
                         as_written(lang),
                         super::report::triple(w.expected, crate::text::number::num)
-                    )),
-                    Match::NothingAsWritten => parts.push(nothing_to_shade(lang).to_owned()),
-                    Match::Background(colour) => parts.push(background(colour, lang)),
+                    ),
+                    Match::Background(colour) => background(colour, lang),
                     // The slips in one clause: "… gives it: A or B".
-                    Match::Slips(d) => {
-                        let these = slips(&d.mistakes(), lang);
-                        match slips_at {
-                            None => {
-                                slips_at = Some(parts.len());
-                                parts.push(format!("{} {these}", diagnosis_intro(v.pairs, lang)));
-                            }
-                            Some(i) => {
-                                let or = match lang {
-                                    Lang::En => " or ",
-                                    Lang::Pt => " ou ",
-                                };
-                                parts[i] = format!("{}{or}{these}", parts[i]);
-                            }
-                        }
+                    Match::Slips { diagnoses, pairs } => {
+                        let or = match lang {
+                            Lang::En => " or ",
+                            Lang::Pt => " ou ",
+                        };
+                        let each: Vec<String> = (diagnoses.iter())
+                            .map(|d| slips(&d.mistakes(), lang))
+                            .collect();
+                        format!("{} {}", diagnosis_intro(pairs, lang), each.join(or))
                     }
-                    Match::NoDiagnosis => parts.push(no_diagnosis(lang).to_owned()),
-                    Match::Looks8bit => parts.push(looks_8bit(lang).to_owned()),
-                    Match::Nearest(n) => parts.push(nearest(
-                        &n.candidate,
-                        n.comparison.distance(),
-                        f.tolerance,
-                        lang,
-                    )),
-                    Match::Unclamped => parts.push(unclamped_note(lang).to_owned()),
-                }
-            }
+                    Match::NoDiagnosis => no_diagnosis(lang).to_owned(),
+                    Match::Looks8bit => looks_8bit(lang).to_owned(),
+                    Match::Nearest(n) | Match::NearMiss(n) => {
+                        nearest(&n.candidate, n.comparison.distance(), f.tolerance, lang)
+                    }
+                    Match::Unclamped => unclamped_note(lang).to_owned(),
+                });
+            parts.extend(clauses);
         }
     }
     if let Some((p, max)) = f.points {

@@ -6,9 +6,9 @@ use std::fmt::Write;
 
 use serde::Serialize;
 
-use super::matches::{expected_line, matches, ExpectedLine, Match};
+use super::matches::{expected_line, matches, ExpectedLine, Layout, Match};
 use super::messages::{self, Line};
-use super::{Answer, Candidate, Comparison, Nearest, Scale, Verdict, VerdictKind};
+use super::{Answer, Candidate, Comparison, Scale, Verdict, VerdictKind};
 use crate::problem::ProblemError;
 use crate::solve::ReadingCode;
 use crate::text::lang::Lang;
@@ -253,86 +253,55 @@ pub fn text(c: &Checked, lang: Lang) -> String {
         label(Line::Credit),
         messages::Credit::of(*credit, policy.as_deref()).text(lang)
     );
-    // The slips as a list under one line.
-    let mut slips_said = false;
-    for m in matches(v) {
-        match m {
+    for m in matches(v, *tolerance, Layout::WithExpected) {
+        let line = match m {
+            // Said by the expected line above.
+            Match::HasColour { .. } | Match::NothingToShade => continue,
             Match::Reading { reading, likely } => {
-                let _ = writeln!(
-                    out,
-                    "  {}",
-                    messages::matches_reading(reading.code, likely, lang)
-                );
+                messages::matches_reading(reading.code, likely, lang)
             }
-            Match::AsWritten(w) => {
-                let _ = writeln!(
-                    out,
-                    "  {:<11}{}",
-                    messages::as_written(lang),
-                    triple(w.expected, num)
-                );
-            }
-            Match::NothingAsWritten => {
-                let _ = writeln!(out, "  {}", messages::nothing_to_shade(lang));
-            }
-            Match::Background(colour) => {
-                let _ = writeln!(out, "  {}", messages::background(colour, lang));
-            }
-            Match::Slips(d) => {
-                if !std::mem::replace(&mut slips_said, true) {
-                    let _ = writeln!(out, "  {}", messages::diagnosis_intro(v.pairs, lang));
-                }
-                let within = if d.intended.is_empty() {
-                    String::new()
-                } else {
-                    format!(" ({})", messages::in_intended_reading(lang))
-                };
-                let _ = writeln!(
-                    out,
-                    "    - {}{within}: {}",
-                    messages::slips(&d.mistakes(), lang),
-                    triple(d.comparison.expected, num)
-                );
-            }
-            Match::NoDiagnosis => {
-                let _ = writeln!(out, "  {}", messages::no_diagnosis(lang));
-            }
-            Match::Looks8bit => {
-                let _ = writeln!(out, "  {}", messages::looks_8bit(lang));
-            }
-            Match::Nearest(n) => {
-                let said =
-                    messages::nearest(&n.candidate, n.comparison.distance(), *tolerance, lang);
-                if worth_showing(n, v) {
-                    let _ = writeln!(
-                        out,
-                        "  {}{}  {}",
-                        label(Line::Closest),
-                        triple(n.comparison.expected, num),
-                        said
+            Match::AsWritten(w) => format!(
+                "{:<11}{}",
+                messages::as_written(lang),
+                triple(w.expected, num)
+            ),
+            Match::NothingAsWritten => messages::nothing_to_shade(lang).to_owned(),
+            Match::Background(colour) => messages::background(colour, lang),
+            // The slips as a list under one line.
+            Match::Slips { diagnoses, pairs } => {
+                let mut list = messages::diagnosis_intro(pairs, lang).to_owned();
+                for d in diagnoses {
+                    let within = if d.intended.is_empty() {
+                        String::new()
+                    } else {
+                        format!(" ({})", messages::in_intended_reading(lang))
+                    };
+                    let _ = write!(
+                        list,
+                        "\n    - {}{within}: {}",
+                        messages::slips(&d.mistakes(), lang),
+                        triple(d.comparison.expected, num)
                     );
-                } else if super::near_miss(n.comparison.distance(), *tolerance) {
-                    // A near miss of the colour the "expected" line shows: that line has the
-                    // colour; this says it is a near miss, and of what.
-                    let _ = writeln!(out, "  {said}");
                 }
+                list
             }
-            Match::Unclamped => {
-                let _ = writeln!(out, "  {}", messages::unclamped_note(lang));
+            Match::NoDiagnosis => messages::no_diagnosis(lang).to_owned(),
+            Match::Looks8bit => messages::looks_8bit(lang).to_owned(),
+            Match::Nearest(n) => format!(
+                "{}{}  {}",
+                label(Line::Closest),
+                triple(n.comparison.expected, num),
+                messages::nearest(&n.candidate, n.comparison.distance(), *tolerance, lang)
+            ),
+            // The expected line has the colour; this says it is a near miss, and of what.
+            Match::NearMiss(n) => {
+                messages::nearest(&n.candidate, n.comparison.distance(), *tolerance, lang)
             }
-        }
+            Match::Unclamped => messages::unclamped_note(lang).to_owned(),
+        };
+        let _ = writeln!(out, "  {line}");
     }
     out
-}
-
-/// A nearest candidate is news unless it is the colour the "expected" line already shows.
-fn worth_showing(n: &Nearest, v: &Verdict) -> bool {
-    let shown = match (&n.candidate, v.compared_reading) {
-        (Candidate::Written, None) => true,
-        (Candidate::Reading(code, _), Some(r)) => *code == r,
-        _ => false,
-    };
-    !shown
 }
 
 /// The JSON form of a comparison's target.

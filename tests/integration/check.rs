@@ -872,9 +872,12 @@ fn every_kind_of_verdict_is_a_page_and_a_markdown_document() {
 /// laying it out). The sentences with no colour of their own: "before clamping" for an answer
 /// accepted as the unclamped colour, "no classic slip" for a wrong answer no slip explains
 /// (the Markdown page left both out); for a ray that hits nothing, "as written, the problem
-/// has no colour" said once (the text report said it twice, the feedback never); and beside
-/// an answer accepted as 4.2's likely intended reading, the problem as written's colour,
-/// black (as 4.2 is written no light reaches the lit side: Eq. 4.16 gives (0, 0, 0)).
+/// has no colour" said once (the text report said it twice, the feedback never); beside an
+/// answer accepted as a likely intended reading, the problem as written's colour (4.2: black,
+/// as no light reaches its lit side) or that it has none (4.3). Where the reports have an
+/// expected line, what it shows is not said again: the nearest colour when it is that line's
+/// and not a near miss; the feedback, a sentence, says it, and leaves "no colour" to the
+/// background's own sentence.
 #[test]
 fn every_report_says_the_same_of_what_an_answer_matches() {
     let dir = tempfile::tempdir().unwrap();
@@ -889,24 +892,51 @@ fn every_report_says_the_same_of_what_an_answer_matches() {
     std::fs::write(dir.path().join("unclamped.json"), unclamped).unwrap();
     std::fs::write(dir.path().join("miss.json"), miss).unwrap();
     let exercises = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("exercises");
-    std::fs::copy(exercises.join("4.2.json"), dir.path().join("4.2.json")).unwrap();
+    for e in ["4.1", "4.2", "4.3"] {
+        let name = format!("{e}.json");
+        std::fs::copy(exercises.join(&name), dir.path().join(&name)).unwrap();
+    }
     let no_colour = "as written, the problem has no colour";
-    // (exercise, answer, sentence, how many times each report says it)
+    // (exercise, answer, sentence, times said by the text report, the HTML page, the Markdown
+    // page, the feedback)
     let cases = [
         (
             "unclamped",
             "1.5 0.4 0.2",
             "accepted as the colour before clamping",
-            1,
+            [1, 1, 1, 1],
         ),
         (
             "unclamped",
             "0.1 0.9 0.9",
             "no classic slip (nor pair of slips) gives it",
-            1,
+            [1; 4],
         ),
-        ("miss", "0.5 0.5 0.5", no_colour, 1),
-        ("4.2", "0.299 0.361 0.318", "as written (0, 0, 0)", 1),
+        ("miss", "0.5 0.5 0.5", no_colour, [1, 1, 1, 1]),
+        ("miss", "0 0 0", "black is the background", [1, 1, 1, 1]),
+        ("miss", "0 0 0", no_colour, [1, 1, 1, 0]),
+        (
+            "4.2",
+            "0.299 0.361 0.318",
+            "as written (0, 0, 0)",
+            [1, 1, 1, 1],
+        ),
+        // 4.3's likely intended reading, the hit behind the origin: (0.524, 0.027, 0).
+        ("4.3", "0.524 0.027 0", no_colour, [1, 1, 1, 1]),
+        // 4.1 as written is (0.5, 0.7, 0.3), the expected line's colour: 0.2 away is no near
+        // miss, 0.02 is.
+        (
+            "4.1",
+            "0.5 0.5 0.5",
+            "the nearest is the problem as written",
+            [0, 0, 0, 1],
+        ),
+        (
+            "4.1",
+            "0.52 0.7 0.3",
+            "close to the problem as written",
+            [1, 1, 1, 1],
+        ),
     ];
     let mut csv = String::from("student,exercise,answer\n");
     for (i, (exercise, answer, _, _)) in cases.iter().enumerate() {
@@ -943,15 +973,19 @@ fn every_report_says_the_same_of_what_an_answer_matches() {
             reports.push((format, String::from_utf8(out.stdout).unwrap()));
         }
         reports.push(("feedback", feedback(i)));
-        for (format, report) in reports {
-            // A colour after a sentence: "as written (0, 0, 0)" on the text report's line,
-            // "as written: (0, 0, 0)" elsewhere.
-            let said = report.replace(": (", " (");
+        for ((format, report), times) in reports.into_iter().zip(times) {
+            // A colour after "as written": on the text report's padded line, or after a colon.
+            let said = report.split_whitespace().collect::<Vec<_>>().join(" ");
+            let said = said.replace("as written:", "as written");
             assert_eq!(
                 said.matches(sentence).count(),
                 times,
                 "{exercise} {answer}, {format}: {report}"
             );
+            // The Markdown page's colours as code, not escaped.
+            if format == "markdown" && exercise == "4.2" {
+                assert!(report.contains("(0, 0, 0) `#000000`"), "{report}");
+            }
         }
     }
 }

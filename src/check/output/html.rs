@@ -15,11 +15,11 @@
 use std::fmt::Write;
 
 use super::Writer;
-use crate::check::matches::{expected_line, matches, ExpectedLine, Match};
+use crate::check::matches::{matches, Layout, Match};
 use crate::check::messages::{self as said, Line, Page};
 use crate::check::report::{Checked, Judged};
 use crate::check::steps::{self, StepVerdict, StepsChecked, StepsJudged};
-use crate::check::{Candidate, Scale, VerdictKind};
+use crate::check::{Candidate, Nearest, Scale, VerdictKind};
 use crate::report::explain::{capitalised, Explanation, Ref};
 use crate::report::html::{esc, step_anchor, swatch};
 use crate::text::number::num;
@@ -209,30 +209,21 @@ pub(crate) fn answer_fragment(
             );
         }
     }
-    match expected_line(v) {
-        ExpectedLine::Compared {
-            comparison,
-            reading,
-        } => out.push_str(&colour_figure(
+    let (expected, source) = super::expected(v, lang);
+    match expected {
+        Some(c) => out.push_str(&colour_figure(
             &Page::Expected.text(lang),
-            comparison.expected,
+            c,
             scale,
-            &said::expected_source(reading, comparison.against, lang),
+            &source,
             lang,
         )),
-        ExpectedLine::HasColour { colour, ray } => out.push_str(&colour_figure(
-            &Page::Expected.text(lang),
-            colour,
-            scale,
-            said::has_colour(ray, lang),
-            lang,
-        )),
-        ExpectedLine::Nothing => {
+        None => {
             let _ = writeln!(
                 out,
                 "<p><strong>{}</strong> {}</p>",
                 esc(&Page::Expected.text(lang)),
-                esc(said::nothing_to_shade(lang))
+                esc(&source)
             );
         }
     }
@@ -281,25 +272,44 @@ pub(crate) fn answer_fragment(
         out.push_str("</table>\n");
     }
     // What the answer matches, each with its colour and where it departs.
-    let items: Vec<String> = matches(v)
-        .into_iter()
-        .map(|m| match m {
+    let nearest = |n: &Nearest| {
+        let sentence = said::nearest(&n.candidate, n.comparison.distance(), j.tolerance, lang);
+        let link = x.map_or(String::new(), |x| match &n.candidate {
+            Candidate::Written => links.part(x, None, lang),
+            Candidate::Reading(code, _) => links.part(x, Some(*code), lang),
+            Candidate::Slips { slips, intended: i } => {
+                let reading = if i.is_empty() { None } else { intended(x) };
+                slips
+                    .iter()
+                    .filter(|s| !i.contains(s))
+                    .map(|s| links.step(x, reading, s.reference(), lang))
+                    .collect()
+            }
+        });
+        (sentence, link)
+    };
+    let mut items: Vec<String> = Vec::new();
+    for m in matches(v, j.tolerance, Layout::WithExpected) {
+        match m {
+            // Said by the expected colour above.
+            Match::HasColour { .. } | Match::NothingToShade => {}
             Match::Reading { reading, likely } => {
                 let link = x.map_or(String::new(), |x| links.part(x, Some(reading.code), lang));
-                format!(
+                items.push(format!(
                     "{}{link}",
                     esc(&said::matches_reading(reading.code, likely, lang))
-                )
+                ));
             }
-            Match::AsWritten(w) => coloured(
+            Match::AsWritten(w) => items.push(coloured(
                 said::as_written(lang),
                 w.expected,
                 scale,
                 &x.map_or(String::new(), |x| links.part(x, None, lang)),
-            ),
-            Match::NothingAsWritten => esc(said::nothing_to_shade(lang)),
-            Match::Background(colour) => esc(&said::background(colour, lang)),
-            Match::Slips(d) => {
+            )),
+            Match::NothingAsWritten => items.push(esc(said::nothing_to_shade(lang))),
+            Match::Background(colour) => items.push(esc(&said::background(colour, lang))),
+            // Each diagnosis an entry of its own, with its colour and its steps.
+            Match::Slips { diagnoses, .. } => items.extend(diagnoses.iter().map(|d| {
                 let mut text = said::slips(&d.mistakes(), lang);
                 let reading = if d.intended.is_empty() {
                     None
@@ -314,29 +324,21 @@ pub(crate) fn answer_fragment(
                         .collect()
                 });
                 coloured(&text, d.comparison.expected, scale, &links_html)
-            }
-            Match::NoDiagnosis => esc(said::no_diagnosis(lang)),
-            Match::Looks8bit => esc(said::looks_8bit(lang)),
+            })),
+            Match::NoDiagnosis => items.push(esc(said::no_diagnosis(lang))),
+            Match::Looks8bit => items.push(esc(said::looks_8bit(lang))),
             Match::Nearest(n) => {
-                let sentence =
-                    said::nearest(&n.candidate, n.comparison.distance(), j.tolerance, lang);
-                let link = x.map_or(String::new(), |x| match &n.candidate {
-                    Candidate::Written => links.part(x, None, lang),
-                    Candidate::Reading(code, _) => links.part(x, Some(*code), lang),
-                    Candidate::Slips { slips, intended: i } => {
-                        let reading = if i.is_empty() { None } else { intended(x) };
-                        slips
-                            .iter()
-                            .filter(|s| !i.contains(s))
-                            .map(|s| links.step(x, reading, s.reference(), lang))
-                            .collect()
-                    }
-                });
-                coloured(&sentence, n.comparison.expected, scale, &link)
+                let (sentence, link) = nearest(n);
+                items.push(coloured(&sentence, n.comparison.expected, scale, &link));
             }
-            Match::Unclamped => esc(said::unclamped_note(lang)),
-        })
-        .collect();
+            // The expected colour above is this one: the sentence only.
+            Match::NearMiss(n) => {
+                let (sentence, link) = nearest(n);
+                items.push(format!("{}{link}", esc(&sentence)));
+            }
+            Match::Unclamped => items.push(esc(said::unclamped_note(lang))),
+        }
+    }
     if !items.is_empty() {
         let _ = writeln!(
             out,

@@ -8,7 +8,7 @@
 use std::fmt::Write;
 
 use super::Writer;
-use crate::check::matches::{expected_line, matches, ExpectedLine, Match};
+use crate::check::matches::{matches, Layout, Match};
 use crate::check::messages::{self as said, Line, Page};
 use crate::check::report::{Checked, Judged};
 use crate::check::steps::{self, StepsChecked, StepsJudged};
@@ -79,39 +79,18 @@ fn answer(out: &mut String, j: &Judged, lang: Lang) {
             );
         }
     }
-    match expected_line(v) {
-        ExpectedLine::Compared {
-            comparison,
-            reading,
-        } => {
-            let _ = writeln!(
-                out,
-                "- {}: {} `{}` ({})\n",
-                escape(&Page::Expected.text(lang)),
-                escape(&triple(comparison.expected)),
-                hex(comparison.expected, scale),
-                escape(&said::expected_source(reading, comparison.against, lang))
-            );
-        }
-        ExpectedLine::HasColour { colour, ray } => {
-            let _ = writeln!(
-                out,
-                "- {}: {} `{}` ({})\n",
-                escape(&Page::Expected.text(lang)),
-                escape(&triple(colour)),
-                hex(colour, scale),
-                escape(said::has_colour(ray, lang))
-            );
-        }
-        ExpectedLine::Nothing => {
-            let _ = writeln!(
-                out,
-                "- {}: {}\n",
-                escape(&Page::Expected.text(lang)),
-                escape(said::nothing_to_shade(lang))
-            );
-        }
-    }
+    let (expected, source) = super::expected(v, lang);
+    let label = escape(&Page::Expected.text(lang));
+    let _ = match expected {
+        Some(c) => writeln!(
+            out,
+            "- {label}: {} `{}` ({})\n",
+            escape(&triple(c)),
+            hex(c, scale),
+            escape(&source)
+        ),
+        None => writeln!(out, "- {label}: {}\n", escape(&source)),
+    };
     if let (Some(cmp), Some(values)) = (&v.comparison, j.answer.values) {
         let _ = writeln!(
             out,
@@ -162,16 +141,19 @@ fn answer(out: &mut String, j: &Judged, lang: Lang) {
             hex(colour, scale)
         )
     };
-    let items: Vec<String> = matches(v)
-        .into_iter()
-        .map(|m| match m {
+    let mut items: Vec<String> = Vec::new();
+    for m in matches(v, j.tolerance, Layout::WithExpected) {
+        match m {
+            // Said by the expected line above.
+            Match::HasColour { .. } | Match::NothingToShade => {}
             Match::Reading { reading, likely } => {
-                escape(&said::matches_reading(reading.code, likely, lang))
+                items.push(escape(&said::matches_reading(reading.code, likely, lang)))
             }
-            Match::AsWritten(w) => swatch(said::as_written(lang), w.expected),
-            Match::NothingAsWritten => escape(said::nothing_to_shade(lang)),
-            Match::Background(colour) => escape(&said::background(colour, lang)),
-            Match::Slips(d) => {
+            Match::AsWritten(w) => items.push(swatch(said::as_written(lang), w.expected)),
+            Match::NothingAsWritten => items.push(escape(said::nothing_to_shade(lang))),
+            Match::Background(colour) => items.push(escape(&said::background(colour, lang))),
+            // Each diagnosis an entry of its own, with its colour and its equations.
+            Match::Slips { diagnoses, .. } => items.extend(diagnoses.iter().map(|d| {
                 let mut text = said::slips(&d.mistakes(), lang);
                 if !d.intended.is_empty() {
                     text = format!("{text} ({})", said::in_intended_reading(lang));
@@ -182,16 +164,23 @@ fn answer(out: &mut String, j: &Judged, lang: Lang) {
                     swatch(&text, d.comparison.expected),
                     escape(&refs.join(", "))
                 )
-            }
-            Match::NoDiagnosis => escape(said::no_diagnosis(lang)),
-            Match::Looks8bit => escape(said::looks_8bit(lang)),
-            Match::Nearest(n) => swatch(
+            })),
+            Match::NoDiagnosis => items.push(escape(said::no_diagnosis(lang))),
+            Match::Looks8bit => items.push(escape(said::looks_8bit(lang))),
+            Match::Nearest(n) => items.push(swatch(
                 &said::nearest(&n.candidate, n.comparison.distance(), j.tolerance, lang),
                 n.comparison.expected,
-            ),
-            Match::Unclamped => escape(said::unclamped_note(lang)),
-        })
-        .collect();
+            )),
+            // The expected line above has this colour: the sentence only.
+            Match::NearMiss(n) => items.push(escape(&said::nearest(
+                &n.candidate,
+                n.comparison.distance(),
+                j.tolerance,
+                lang,
+            ))),
+            Match::Unclamped => items.push(escape(said::unclamped_note(lang))),
+        }
+    }
     if !items.is_empty() {
         let _ = writeln!(out, "{}\n", escape(&Page::WhatItMatches.text(lang)));
         for i in items {

@@ -8,9 +8,30 @@ mod json;
 mod markdown;
 mod text;
 
+use super::matches::{expected_line, ExpectedLine};
+use super::messages as said;
 use super::report::Checked;
 use super::steps::StepsChecked;
+use super::Verdict;
 use crate::text::Lang;
+
+/// The pages' expected colour of verdict `v` ([`expected_line`]): the colour, if there is one,
+/// and the words beside it (what that colour is, or why there is none).
+fn expected(v: &Verdict, lang: Lang) -> (Option<[f64; 3]>, String) {
+    match expected_line(v) {
+        ExpectedLine::Compared {
+            comparison,
+            reading,
+        } => (
+            Some(comparison.expected),
+            said::expected_source(reading, comparison.against, lang),
+        ),
+        ExpectedLine::HasColour { colour, ray } => {
+            (Some(colour), said::has_colour(ray, lang).to_owned())
+        }
+        ExpectedLine::Nothing => (None, said::nothing_to_shade(lang).to_owned()),
+    }
+}
 
 /// What a format writes of the checks of a run: each file's answer (when one was checked) and
 /// steps (when any were given), in order, then the whole output.
