@@ -544,9 +544,21 @@ fn draw(kind: Kind, r: &mut Draw, i: u32, seed: u64) -> ProblemOut {
                     if out.lights.is_empty() {
                         out.lights.push(ambient_light(r, &[0.5, 1.0]));
                     }
-                    out.lights.push(point_light(p, n, r));
+                    let first = point_light(p, n, r);
+                    let at = first.position;
+                    out.lights.push(first);
                     if r.below(2) == 1 {
-                        out.lights.push(point_light(p, n, r));
+                        // Two lights at one place would be one light twice: the second is drawn
+                        // again until it stands elsewhere (at most a few draws; the next
+                        // direction or distance differs almost always).
+                        let mut second = point_light(p, n, r);
+                        for _ in 0..64 {
+                            if second.position != at {
+                                break;
+                            }
+                            second = point_light(p, n, r);
+                        }
+                        out.lights.push(second);
                     } else {
                         out.lights.push(directional_light(n, r));
                     }
@@ -724,7 +736,17 @@ fn statement(p: &ProblemOut, t: Tongue) -> String {
         .map(|l| v(&l.color))
         .collect();
     let mut ambient_said = false;
+    // Several lights that are not ambient: each its own symbols, C_l1 and P_l1, C_l2 and D_l2
+    // (one C_l for two values would read as a contradiction).
+    let others = p.lights.iter().filter(|l| l.kind != "ambient").count();
+    let mut other = 0;
     for l in &p.lights {
+        let k = if l.kind != "ambient" && others > 1 {
+            other += 1;
+            other.to_string()
+        } else {
+            String::new()
+        };
         let c = v(&l.color);
         let at = l.position.as_ref().map(v).unwrap_or_default();
         let f = falloff_words(l.falloff.unwrap_or(0), t);
@@ -741,28 +763,28 @@ fn statement(p: &ProblemOut, t: Tongue) -> String {
             ("ambient", true) => format!("An ambient light I_a = {c} lights the scene."),
             ("ambient", false) => format!("Uma luz ambiente I_a = {c} ilumina a cena."),
             ("point", true) => {
-                format!("A point light of colour C_l = {c} is at P_l = {at}, with {f}.")
+                format!("A point light of colour C_l{k} = {c} is at P_l{k} = {at}, with {f}.")
             }
             ("point", false) => {
-                format!("Uma luz pontual de cor C_l = {c} está em P_l = {at}, {f}.")
+                format!("Uma luz pontual de cor C_l{k} = {c} está em P_l{k} = {at}, {f}.")
             }
             ("directional", true) => format!(
-                "A directional light of colour C_l = {c} travels along D_l = {}.",
+                "A directional light of colour C_l{k} = {c} travels along D_l{k} = {}.",
                 v(l.direction.as_ref().expect("a direction"))
             ),
             ("directional", false) => format!(
-                "Uma luz direcional de cor C_l = {c} se propaga ao longo de D_l = {}.",
+                "Uma luz direcional de cor C_l{k} = {c} se propaga ao longo de D_l{k} = {}.",
                 v(l.direction.as_ref().expect("a direction"))
             ),
             (_, true) => format!(
-                "A spot light of colour C_l = {c} is at P_l = {at} and points along D_l = {}, \
+                "A spot light of colour C_l{k} = {c} is at P_l{k} = {at} and points along D_l{k} = {}, \
                  with half-angle γ = {}°, exponent e = {} and {f}.",
                 v(l.axis.as_ref().expect("an axis")),
                 l.angle.unwrap_or(0),
                 l.exponent.unwrap_or(0)
             ),
             (_, false) => format!(
-                "Uma luz spot de cor C_l = {c} está em P_l = {at} e aponta ao longo de D_l = {}, \
+                "Uma luz spot de cor C_l{k} = {c} está em P_l{k} = {at} e aponta ao longo de D_l{k} = {}, \
                  com ângulo γ = {}°, expoente e = {} e {f}.",
                 v(l.axis.as_ref().expect("an axis")),
                 l.angle.unwrap_or(0),

@@ -323,6 +323,36 @@ fn the_statements_give_the_data_and_the_seed_is_metadata() {
     }
 }
 
+/// A problem of several lights names each light that is not ambient with its own symbols
+/// (C_l1 and P_l1, C_l2 and P_l2 or D_l2), and its two point lights stand apart: seed 5's
+/// two point lights were both at P_l = (5.4, 0.44, −1.92), in a statement that named both C_l
+/// and P_l (one problem in about a hundred had its lights at one place).
+#[test]
+fn several_lights_stand_apart_and_each_has_its_own_symbols() {
+    let out = support::phong()
+        .args([
+            "new", "--kind", "several", "--count", "200", "--seed", "5", "--lang", "pt",
+        ])
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(0));
+    let docs: Value = serde_json::from_slice(&out.stdout).unwrap();
+    for p in docs.as_array().unwrap() {
+        let lights = p["lights"].as_array().unwrap();
+        let others: Vec<&Value> = lights.iter().filter(|l| l["type"] != "ambient").collect();
+        let at: Vec<&Value> = others.iter().filter_map(|l| l.get("position")).collect();
+        if at.len() == 2 {
+            assert_ne!(at[0], at[1], "{p}");
+        }
+        for field in ["question", "question_pt"] {
+            let q = p[field].as_str().unwrap();
+            assert_eq!(others.len(), 2, "{q}");
+            assert!(q.contains("C_l1 = ") && q.contains("C_l2 = "), "{q}");
+            assert!(!q.contains("C_l = "), "{q}");
+        }
+    }
+}
+
 #[test]
 fn without_a_folder_the_problems_are_printed_as_one_json_document() {
     let out = support::phong()
