@@ -131,19 +131,7 @@ pub fn nearest(c: &super::Candidate, distance: f64, tolerance: f64, lang: Lang) 
                 slips: list,
                 intended,
             },
-        ) => {
-            let mistakes: Vec<Slip> = list
-                .iter()
-                .copied()
-                .filter(|s| !intended.contains(s))
-                .collect();
-            let within = if intended.is_empty() {
-                String::new()
-            } else {
-                format!(" ({})", in_intended_reading(lang))
-            };
-            format!("{}{within}", slips(&mistakes, lang))
-        }
+        ) => slips_made(list, intended, lang),
     };
     let near = super::near_miss(distance, tolerance);
     match (lang, near) {
@@ -319,6 +307,21 @@ pub fn in_intended_reading(lang: Lang) -> &'static str {
     match lang {
         Lang::En => "in the likely intended reading",
         Lang::Pt => "na leitura provavelmente pretendida",
+    }
+}
+
+/// The slips of a diagnosis or a candidate in words: the mistakes among `list` (those of the
+/// likely intended reading, `intended`, are not mistakes), said to be made in that reading when
+/// it has any.
+pub(crate) fn slips_made(list: &[Slip], intended: &[Slip], lang: Lang) -> String {
+    let mistakes: Vec<Slip> = (list.iter().copied())
+        .filter(|s| !intended.contains(s))
+        .collect();
+    let said = slips(if mistakes.is_empty() { list } else { &mistakes }, lang);
+    if intended.is_empty() {
+        said
+    } else {
+        format!("{said} ({})", in_intended_reading(lang))
     }
 }
 
@@ -692,7 +695,7 @@ pub(crate) fn feedback(f: &RowFacts, lang: Lang) -> String {
                             Lang::Pt => " ou ",
                         };
                         let each: Vec<String> = (diagnoses.iter())
-                            .map(|d| slips(&d.mistakes(), lang))
+                            .map(|d| slips_made(&d.slips, &d.intended, lang))
                             .collect();
                         format!("{} {}", diagnosis_intro(pairs, lang), each.join(or))
                     }
@@ -857,7 +860,9 @@ crate::messages! {
         ChannelsCaption { tolerance: crate::text::Num, scale: String } =>
             "Each channel against the tolerance ±{tolerance} ({scale})",
             "Cada canal contra a tolerância ±{tolerance} ({scale})";
-        WhatItMatches => "What the answer matches:", "Com o que a resposta confere:";
+        /// The heading of what is said beside the verdict: the readings and slips the answer
+        /// matches, or that none does, the nearest colour, notes on its scale.
+        AboutTheAnswer => "About the answer:", "Sobre a resposta:";
         /// A link to the step of the solution where a slip departs.
         SeeStep { reference: String } =>
             "see the step ({reference}) in the solution",

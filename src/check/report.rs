@@ -271,15 +271,10 @@ pub fn text(c: &Checked, lang: Lang) -> String {
             Match::Slips { diagnoses, pairs } => {
                 let mut list = messages::diagnosis_intro(pairs, lang).to_owned();
                 for d in diagnoses {
-                    let within = if d.intended.is_empty() {
-                        String::new()
-                    } else {
-                        format!(" ({})", messages::in_intended_reading(lang))
-                    };
                     let _ = write!(
                         list,
-                        "\n    - {}{within}: {}",
-                        messages::slips(&d.mistakes(), lang),
+                        "\n    - {}: {}",
+                        messages::slips_made(&d.slips, &d.intended, lang),
                         triple(d.comparison.expected, num)
                     );
                 }

@@ -204,7 +204,7 @@ pub const NAMES: [Name; 30] = [
         false,
         true,
         Some("4.16"),
-        "I = O_a I_a + Σ (diffuse + specular)",
+        "I = O_a I_a + Σ (O_d I_l cos θ + O_s I_l (cos φ)^n_s)",
     ),
     // The secondary rays of a ray problem's hit, Section 4.4.
     name("r_v", false, true, Some("4.17"), "R_V = V − 2(N·V)N"),

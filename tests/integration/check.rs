@@ -874,7 +874,8 @@ fn every_kind_of_verdict_is_a_page_and_a_markdown_document() {
 /// (the Markdown page left both out); for a ray that hits nothing, "as written, the problem
 /// has no colour" said once (the text report said it twice, the feedback never); beside an
 /// answer accepted as a likely intended reading, the problem as written's colour (4.2: black,
-/// as no light reaches its lit side) or that it has none (4.3). Where the reports have an
+/// as no light reaches its lit side) or that it has none (4.3); a slip made in the likely
+/// intended reading, said to be (the feedback left that out). Where the reports have an
 /// expected line, what it shows is not said again: the nearest colour when it is that line's
 /// and not a near miss; the feedback, a sentence, says it, and leaves "no colour" to the
 /// background's own sentence.
@@ -920,6 +921,20 @@ fn every_report_says_the_same_of_what_an_answer_matches() {
             "0.299 0.361 0.318",
             "as written (0, 0, 0)",
             [1, 1, 1, 1],
+        ),
+        // V reversed, made in 4.2's likely intended reading (L reversed): the feedback left the
+        // reading out.
+        (
+            "4.2",
+            "0.245 0.28 0.21",
+            "V reversed: taken from the point to the eye",
+            [1; 4],
+        ),
+        (
+            "4.2",
+            "0.245 0.28 0.21",
+            "(in the likely intended reading)",
+            [1; 4],
         ),
         // 4.3's likely intended reading, the hit behind the origin: (0.524, 0.027, 0).
         ("4.3", "0.524 0.027 0", no_colour, [1, 1, 1, 1]),

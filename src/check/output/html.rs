@@ -310,11 +310,10 @@ pub(crate) fn answer_fragment(
             Match::Background(colour) => items.push(esc(&said::background(colour, lang))),
             // Each diagnosis an entry of its own, with its colour and its steps.
             Match::Slips { diagnoses, .. } => items.extend(diagnoses.iter().map(|d| {
-                let mut text = said::slips(&d.mistakes(), lang);
+                let text = said::slips_made(&d.slips, &d.intended, lang);
                 let reading = if d.intended.is_empty() {
                     None
                 } else {
-                    text = format!("{text} ({})", said::in_intended_reading(lang));
                     x.and_then(intended)
                 };
                 let links_html: String = x.map_or(String::new(), |x| {
@@ -343,7 +342,7 @@ pub(crate) fn answer_fragment(
         let _ = writeln!(
             out,
             "<p>{}</p>\n<ul class=\"matches\">",
-            esc(&Page::WhatItMatches.text(lang))
+            esc(&Page::AboutTheAnswer.text(lang))
         );
         for i in items {
             let _ = writeln!(out, "<li>{i}</li>");

@@ -154,10 +154,7 @@ fn answer(out: &mut String, j: &Judged, lang: Lang) {
             Match::Background(colour) => items.push(escape(&said::background(colour, lang))),
             // Each diagnosis an entry of its own, with its colour and its equations.
             Match::Slips { diagnoses, .. } => items.extend(diagnoses.iter().map(|d| {
-                let mut text = said::slips(&d.mistakes(), lang);
-                if !d.intended.is_empty() {
-                    text = format!("{text} ({})", said::in_intended_reading(lang));
-                }
+                let text = said::slips_made(&d.slips, &d.intended, lang);
                 let refs: Vec<&str> = d.mistakes().iter().map(|s| s.reference()).collect();
                 format!(
                     "{} — {}",
@@ -182,7 +179,7 @@ fn answer(out: &mut String, j: &Judged, lang: Lang) {
         }
     }
     if !items.is_empty() {
-        let _ = writeln!(out, "{}\n", escape(&Page::WhatItMatches.text(lang)));
+        let _ = writeln!(out, "{}\n", escape(&Page::AboutTheAnswer.text(lang)));
         for i in items {
             let _ = writeln!(out, "- {i}");
         }
