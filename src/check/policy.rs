@@ -168,15 +168,21 @@ impl Policy {
         self.points.get(key).copied().unwrap_or(self.default_points)
     }
 
-    /// The policy of the exercises in `folder`: its `course-policy.json` when there is one,
-    /// else the defaults.
+    /// The policy of the exercises in `folder`: its `course-policy.json` when there is one
+    /// ([`Policy::file_in`]), else the defaults.
     pub fn of_folder(folder: &Path) -> Result<Policy, PolicyError> {
-        let path = folder.join(POLICY_FILE);
-        if path.is_file() {
-            Policy::read_file(&path)
-        } else {
-            Ok(Policy::default())
+        match Policy::file_in(folder) {
+            Some(path) => Policy::read_file(&path),
+            None => Ok(Policy::default()),
         }
+    }
+
+    /// The `course-policy.json` of `folder`, when anything by that name is there: a folder or
+    /// a link to nothing by that name is read, and refused as unreadable, rather than taken
+    /// for no policy (the course's policy would be ignored without a word).
+    pub fn file_in(folder: &Path) -> Option<std::path::PathBuf> {
+        let path = folder.join(POLICY_FILE);
+        path.symlink_metadata().is_ok().then_some(path)
     }
 
     /// Reads a policy file (an error says what is wrong in it; the caller names the file).

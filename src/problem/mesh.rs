@@ -61,6 +61,50 @@ fn or_f64<R: Real>() -> OrF64 {
 /// vertices that exist and either a normal for each of them or none, there are at most
 /// [`MAX_TRIANGLES`] triangles; each mistake named by its line (`tobj` says only which kind of
 /// line failed).
+/// The statements of the OBJ format (Wavefront's specification, appendix B1): those read
+/// (`v`, `vn`, `f`; `vt`, `g`, `o`, `s`, `usemtl` and `mtllib` taken or ignored by the reader)
+/// and those of curves, surfaces and display attributes, ignored. A line starting with any
+/// other word is refused ([`MeshFault::UnknownStatement`]).
+const STATEMENTS: [&str; 37] = [
+    "v",
+    "vt",
+    "vn",
+    "vp",
+    "f",
+    "l",
+    "p",
+    "g",
+    "o",
+    "s",
+    "mg",
+    "usemtl",
+    "mtllib",
+    "cstype",
+    "deg",
+    "bmat",
+    "step",
+    "curv",
+    "curv2",
+    "surf",
+    "parm",
+    "trim",
+    "hole",
+    "scrv",
+    "sp",
+    "end",
+    "con",
+    "bevel",
+    "c_interp",
+    "d_interp",
+    "lod",
+    "shadow_obj",
+    "trace_obj",
+    "ctech",
+    "stech",
+    "maplib",
+    "usemap",
+];
+
 fn scan<R: Real>(text: &str) -> Result<Faces<R>, MeshError> {
     let mut vertices: usize = 0;
     let mut triangles: usize = 0;
@@ -194,7 +238,14 @@ fn scan<R: Real>(text: &str) -> Result<Faces<R>, MeshError> {
                         });
                 }
             }
-            _ => {}
+            None => {}
+            Some(word) if word.starts_with('#') || STATEMENTS.contains(&word) => {}
+            Some(word) => {
+                return refuse(MeshFault::UnknownStatement {
+                    v: v(),
+                    word: Echo::new(word, 20),
+                })
+            }
         }
     }
     Ok(faces)
@@ -213,7 +264,10 @@ pub fn load_obj<R: Real>(path: &Path) -> Result<Vec<Triangle<R>>, MeshError> {
         })
     })?;
     let text = String::from_utf8_lossy(&bytes);
-    let faces = scan::<R>(&text)?;
+    // A byte order mark (as some Windows editors save UTF-8) is not part of the first line:
+    // read with it, a first `v` line would be no statement.
+    let text = text.strip_prefix('\u{feff}').unwrap_or(&text);
+    let faces = scan::<R>(text)?;
     let options = tobj::LoadOptions {
         triangulate: true,
         single_index: true,

@@ -145,6 +145,18 @@ faults! {
             "a face \"{v}\" se refere ao vértice {r}, e {vertices} vértices vêm antes dela";
             fix "correct the face's vertex indices (1 is the first vertex)",
                 "corrija os índices de vértices da face (1 é o primeiro vértice)";
+        /// A line whose first word is none of OBJ's statements (a vertex written `V`, a
+        /// misspelt keyword): read past, it would shift every vertex index after it.
+        UnknownStatement { v: Echo, word: Echo } =>
+            "the line \"{v}\" is not an OBJ statement: `{word}` is none of OBJ's keywords (`v`, \
+             `vt`, `vn`, `f`, `g`, `o`, `s`, `usemtl`, `mtllib`, …), which are lower case",
+            "a linha \"{v}\" não é uma instrução OBJ: `{word}` não é nenhuma das palavras-chave \
+             do OBJ (`v`, `vt`, `vn`, `f`, `g`, `o`, `s`, `usemtl`, `mtllib`, …), que são \
+             minúsculas";
+            fix "write the line as OBJ does (`v x y z` for a vertex), make it a comment with `#`, \
+                 or remove it",
+                "escreva a linha como o OBJ a escreve (`v x y z` para um vértice), torne-a um \
+                 comentário com `#` ou remova-a";
         /// More triangles than a scene holds.
         TooManyTriangles { max: usize } =>
             "the mesh has more than {max} triangles",

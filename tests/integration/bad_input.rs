@@ -946,6 +946,63 @@ fn a_file_that_does_not_exist_is_rejected() {
     }
 }
 
+/// A `course-policy.json` beside the exercises that is a folder, or a link to nothing, is the
+/// course's policy failing to read: `phong policy`, `check` and `grade` stop (exit 2) naming
+/// it. They took it for no policy and judged by the defaults, saying "there is no
+/// course-policy.json".
+#[test]
+fn a_course_policy_that_is_a_folder_or_a_broken_link_stops_the_command() {
+    let dir = TempDir::new().expect("a temporary folder");
+    let folder = dir.path().join("broken-link");
+    fs::create_dir(&folder).expect("created");
+    std::os::unix::fs::symlink(
+        dir.path().join("nowhere.json"),
+        folder.join("course-policy.json"),
+    )
+    .expect("linked");
+    let other = dir.path().join("a-folder");
+    fs::create_dir_all(other.join("course-policy.json")).expect("created");
+    for folder in [folder, other] {
+        fs::write(folder.join("4.1.json"), pretty(&point_problem())).expect("written");
+        let csv = folder.join("answers.csv");
+        fs::write(
+            &csv,
+            "student,exercise,answer
+a,4.1,0 0 0
+",
+        )
+        .expect("written");
+        let policy = folder.join("course-policy.json").display().to_string();
+        for args in [
+            vec!["policy".to_owned(), folder.display().to_string()],
+            vec![
+                "check".to_owned(),
+                folder.join("4.1.json").display().to_string(),
+                "--answer".to_owned(),
+                "0 0 0".to_owned(),
+            ],
+            vec![
+                "grade".to_owned(),
+                "--exercises".to_owned(),
+                folder.display().to_string(),
+                csv.display().to_string(),
+            ],
+        ] {
+            let out = crate::support::phong()
+                .args(&args)
+                .args(["--lang", "en"])
+                .output()
+                .expect("phong runs");
+            let err = String::from_utf8_lossy(&out.stderr);
+            assert_eq!(out.status.code(), Some(BAD_INPUT), "{args:?}: {err}");
+            assert!(
+                err.contains(&format!("{policy}: cannot read the course policy")),
+                "{args:?}: {err}"
+            );
+        }
+    }
+}
+
 #[test]
 fn the_course_policy_given_as_a_problem_names_the_folder_given_in_its_fix() {
     // `phong solve exercicios/*.json` where `exercicios/course-policy.json` is the course

@@ -305,6 +305,39 @@ fn an_obj_mistake_is_named_by_its_line() {
         &["line 4", "degenerate"],
     );
     render("v 0 0 0\nv 1e400 0 0\n", &["line 2", "not finite"]);
+    // A line that is no OBJ statement was read past, shifting the vertices after it: `V` for
+    // `v` made face 1 2 3 take the fourth vertex as its third.
+    for (line, word) in [
+        ("V -1 1 0", "`V`"),
+        ("vv 0 1 0", "`vv`"),
+        ("hello world", "`hello`"),
+    ] {
+        render(
+            &format!("v 0 -1 -1\nv 1 0 0\n{line}\nv 0 1 0\nf 1 2 3\n"),
+            &["line 3", line, word, "not an OBJ statement"],
+        );
+    }
+}
+
+/// A UTF-8 byte order mark before the first line (as some Windows editors save) is not part
+/// of it: the first vertex was lost and every index after it shifted, so the face took the
+/// fourth vertex, and the image differed from the same file without the mark.
+#[test]
+fn an_obj_files_byte_order_mark_is_not_its_first_line() {
+    let dir = TempDir::new().unwrap();
+    let obj = "v 0 -1 -1\nv 1 0 0\nv 0 1 0\nv -1 1 0\nf 1 2 3\n";
+    let mut images = Vec::new();
+    for (name, text) in [
+        ("plain.obj", obj.to_owned()),
+        ("bom.obj", format!("\u{feff}{obj}")),
+    ] {
+        write(&dir, name, &text);
+        let scene = mesh_scene(&dir, name);
+        let out = render(&dir, &scene).output().unwrap();
+        assert_eq!(out.status.code(), Some(0), "{out:?}");
+        images.push(std::fs::read(dir.path().join("x.png")).unwrap());
+    }
+    assert_eq!(images[0], images[1]);
 }
 
 #[test]

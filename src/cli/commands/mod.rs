@@ -28,15 +28,14 @@ pub(crate) fn course_policy(
     flag: Option<&std::path::Path>,
     folder: Option<&std::path::Path>,
 ) -> Result<crate::check::policy::Policy, CliError> {
-    use crate::check::policy::{Policy, POLICY_FILE};
-    let (path, named) = match (flag, folder) {
+    use crate::check::policy::Policy;
+    let (path, named) = match (flag, folder.and_then(Policy::file_in)) {
         (Some(file), _) => (file.to_owned(), format!("--policy {}", file.display())),
-        (None, Some(dir)) if dir.join(POLICY_FILE).is_file() => {
-            let path = dir.join(POLICY_FILE);
+        (None, Some(path)) => {
             let named = path.display().to_string();
             (path, named)
         }
-        _ => return Ok(Policy::default()),
+        (None, None) => return Ok(Policy::default()),
     };
     Policy::read_file(&path).map_err(|why| {
         let unreadable = matches!(why, crate::check::policy::PolicyError::Unreadable { .. });
