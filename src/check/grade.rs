@@ -1249,6 +1249,7 @@ impl<'a> Graded<'a> {
                     r.counted = false;
                     let note = messages::not_counted(
                         winner + 1,
+                        self.at[winner].line,
                         self.options.policy.duplicates.word(),
                         lang,
                     );

@@ -100,7 +100,7 @@ pub fn has_colour(ray: bool, lang: Lang) -> &'static str {
         (Lang::En, true) => "the problem as written: its ray hits a surface (t > 0), so there is a colour to give",
         (Lang::En, false) => "the problem as written: a point problem has no ray to miss; give its colour",
         (Lang::Pt, true) => "o problema como enunciado: o raio atinge uma superfície (t > 0), então há uma cor a dar",
-        (Lang::Pt, false) => "o problema como enunciado: um problema de ponto não tem raio que erre; dê a sua cor",
+        (Lang::Pt, false) => "o problema como enunciado: um problema de ponto não tem raio, então não há o que errar; dê a cor do ponto",
     }
 }
 
@@ -289,6 +289,15 @@ pub fn as_written(lang: Lang) -> &'static str {
     match lang {
         Lang::En => "as written",
         Lang::Pt => "enunciado",
+    }
+}
+
+/// The words before the problem as written's colour in a sentence ("as written: (0, 0, 0)",
+/// "como enunciado: (0, 0, 0)"); [`as_written`] is the text report's column label.
+pub(crate) fn as_written_phrase(lang: Lang) -> &'static str {
+    match lang {
+        Lang::En => "as written",
+        Lang::Pt => "como enunciado",
     }
 }
 
@@ -684,7 +693,7 @@ pub(crate) fn feedback(f: &RowFacts, lang: Lang) -> String {
                     }
                     Match::AsWritten(w) => format!(
                         "{}: {}",
-                        as_written(lang),
+                        as_written_phrase(lang),
                         super::report::triple(w.expected, crate::text::number::num)
                     ),
                     Match::Background(colour) => background(colour, lang),
@@ -728,16 +737,17 @@ pub(crate) fn read_as_8bit(lang: Lang) -> &'static str {
     }
 }
 
-/// A row that does not count: another answer of the student's to the exercise does.
-pub(crate) fn not_counted(row: usize, rule: &str, lang: Lang) -> String {
+/// A row that does not count: another answer of the student's to the exercise does, the one
+/// on `line` of the file (`row` among the data rows, the report's row column).
+pub(crate) fn not_counted(row: usize, line: u64, rule: &str, lang: Lang) -> String {
     match lang {
         Lang::En => format!(
-            "Not counted: the same student answered this exercise again, and row {row} counts \
-             (the row column; --duplicates {rule}). "
+            "Not counted: the same student answered this exercise again, and the answer on line \
+             {line} counts (row {row}; --duplicates {rule}). "
         ),
         Lang::Pt => format!(
-            "Não conta: o mesmo aluno respondeu de novo a este exercício, e conta a resposta \
-             {row} (coluna row; --duplicates {rule}). "
+            "Não conta: o mesmo aluno respondeu de novo a este exercício, e conta a resposta da \
+             linha {line} (row {row}; --duplicates {rule}). "
         ),
     }
 }
@@ -804,8 +814,8 @@ crate::messages! {
     pub enum Credit {
         /// By the policy of a file.
         InFile { percent: crate::text::Num, file: std::path::PathBuf } =>
-            "{percent}% of the exercise's points in this course (its policy: {file})",
-            "{percent}% dos pontos do exercício neste curso (sua política: {file})";
+            "{percent}% of the exercise's points in this course (the course policy: {file})",
+            "{percent}% dos pontos do exercício neste curso (política do curso: {file})";
         /// By the default policy.
         Default { percent: crate::text::Num } =>
             "{percent}% of the exercise's points (phong's default course policy)",

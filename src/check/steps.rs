@@ -1555,7 +1555,7 @@ crate::faults! {
             "\"{name}\" is not the name of a step",
             "\"{name}\" não é o nome de um passo";
             fix "use one of {names} (a light's own with [i], such as cos_theta[1])",
-                "use um de {names} (o de uma fonte de luz com [i], como cos_theta[1])";
+                "use um de {names} (os passos de uma fonte de luz com [i], como cos_theta[1])";
         /// `[i]` after a quantity of the point.
         NotOfOneLight { step: String, name: &'static str } =>
             "\"{step}\": {name} is not a quantity of one light",

@@ -198,7 +198,7 @@ fn a_step_that_cannot_be_read_or_judged_is_portuguese() {
         "{err}"
     );
     assert!(
-        err.ends_with(" (o de uma fonte de luz com [i], como cos_theta[1])\n"),
+        err.ends_with(" (os passos de uma fonte de luz com [i], como cos_theta[1])\n"),
         "{err}"
     );
     let dir = tempfile::tempdir().unwrap();

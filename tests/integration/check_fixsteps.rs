@@ -182,7 +182,7 @@ fn a_no_hit_answer_to_a_point_problem_has_no_slip_line() {
     ]);
     assert_eq!(code, 1, "{out}");
     assert!(
-        out.contains("um problema de ponto não tem raio que erre"),
+        out.contains("um problema de ponto não tem raio, então não há o que errar"),
         "{out}"
     );
     assert!(!out.contains("erro clássico"), "{out}");

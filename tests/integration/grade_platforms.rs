@@ -167,12 +167,13 @@ fn a_class_of_30_gets_its_totals_and_43_no_hit_is_right() {
     assert_eq!(a07.len(), 2);
     assert_eq!(a07[0]["counted"], false);
     assert_eq!(a07[1]["counted"], true);
-    let counting_row = a07[1]["row"].as_u64().unwrap();
+    let (counting_row, counting_line) = (a07[1]["row"].as_u64(), a07[1]["line"].as_u64());
     assert!(
-        a07[0]["feedback"]
-            .as_str()
-            .unwrap()
-            .contains(&format!("row {counting_row} counts (the row column")),
+        a07[0]["feedback"].as_str().unwrap().contains(&format!(
+            "the answer on line {} counts (row {};",
+            counting_line.unwrap(),
+            counting_row.unwrap()
+        )),
         "{}",
         a07[0]
     );

@@ -860,7 +860,7 @@ fn the_rarer_errors_speak_portuguese_too() {
             continue;
         }
         // The step names listed in a fix are the names to type, not prose.
-        let text = match (stderr.find("use um de "), stderr.find(" (o de uma")) {
+        let text = match (stderr.find("use um de "), stderr.find(" (os passos de uma")) {
             (Some(a), Some(b)) if a < b => format!("{}{}", &stderr[..a], &stderr[b..]),
             _ => stderr.clone(),
         };
@@ -885,11 +885,11 @@ fn the_rarer_errors_speak_portuguese_too() {
 }
 
 /// `text` without the step names a fix lists (the names to type, not prose): from "use um de "
-/// to " (o de uma", and from "confira um passo que ele tem: " to the next ";".
+/// to " (os passos de uma", and from "confira um passo que ele tem: " to the next ";".
 fn without_step_names(text: &str) -> String {
     let mut out = String::new();
     let mut rest = text;
-    while let (Some(a), Some(b)) = (rest.find("use um de "), rest.find(" (o de uma")) {
+    while let (Some(a), Some(b)) = (rest.find("use um de "), rest.find(" (os passos de uma")) {
         if b < a {
             break;
         }

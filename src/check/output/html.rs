@@ -301,7 +301,7 @@ pub(crate) fn answer_fragment(
                 ));
             }
             Match::AsWritten(w) => items.push(coloured(
-                said::as_written(lang),
+                said::as_written_phrase(lang),
                 w.expected,
                 scale,
                 &x.map_or(String::new(), |x| links.part(x, None, lang)),

@@ -149,7 +149,7 @@ fn answer(out: &mut String, j: &Judged, lang: Lang) {
             Match::Reading { reading, likely } => {
                 items.push(escape(&said::matches_reading(reading.code, likely, lang)))
             }
-            Match::AsWritten(w) => items.push(swatch(said::as_written(lang), w.expected)),
+            Match::AsWritten(w) => items.push(swatch(said::as_written_phrase(lang), w.expected)),
             Match::NothingAsWritten => items.push(escape(said::nothing_to_shade(lang))),
             Match::Background(colour) => items.push(escape(&said::background(colour, lang))),
             // Each diagnosis an entry of its own, with its colour and its equations.
