@@ -25,16 +25,9 @@ pub fn slips(list: &[Slip], lang: Lang) -> String {
         .join(and)
 }
 
-/// The short name of a reading.
+/// The name of a reading, as every command gives it ([`crate::report::messages::reading_name`]).
 pub fn reading(code: ReadingCode, lang: Lang) -> &'static str {
-    match (lang, code) {
-        (Lang::En, ReadingCode::LightReversed) => "light reversed (L from the point to the light)",
-        (Lang::En, ReadingCode::NormalReversed) => "normal reversed",
-        (Lang::En, ReadingCode::LineBehindOrigin) => "the line's hit behind the ray's origin",
-        (Lang::Pt, ReadingCode::LightReversed) => "luz invertida (L do ponto para a luz)",
-        (Lang::Pt, ReadingCode::NormalReversed) => "normal invertida",
-        (Lang::Pt, ReadingCode::LineBehindOrigin) => "a interseção da reta atrás da origem do raio",
-    }
+    crate::report::messages::reading_name(code, lang)
 }
 
 /// The verdict word, as shown in the text report.

@@ -271,7 +271,7 @@ pub fn explain<R: Real>(
     .chain(s.readings.iter().map(|r| {
         Part {
             reading: Some(r.code),
-            heading: capitalised(messages::reading_label_in(r.code, lang)),
+            heading: capitalised(&messages::reading_label_in(r.code, lang)),
             explanation: Some(
                 messages::reading_explanation_given(r.code, lang, problem.viewer.is_some())
                     .to_owned(),

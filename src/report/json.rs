@@ -258,7 +258,7 @@ pub struct ReadingOut<R: Real> {
     /// Which reading: "light_reversed", "normal_reversed" or "line_behind_origin".
     pub code: ReadingCode,
     /// The reading's label in English ("likely intended reading: …" or "another reading: …").
-    pub label: &'static str,
+    pub label: String,
     /// What the reading changes, in English.
     pub explanation: &'static str,
     /// The reading's own intersection (a ray problem's reversed ray); `null` otherwise.

@@ -473,7 +473,7 @@ fn finding_with<R: Real>(problem: &Problem<R>, f: &Finding, lang: Lang, json: bo
             format!(
                 "o raio encontra a superfície apenas atrás de sua origem, em t = {} (uma \
                  interseção exige t > 0): como enunciado, o raio não atinge nada. O ponto onde a \
-                 reta do raio encontra a superfície é mostrado abaixo como outra leitura",
+                 reta do raio encontra a superfície é mostrado abaixo como uma leitura à parte",
                 num(t)
             ),
         ),
@@ -1081,29 +1081,37 @@ pub fn omission_in(o: &Omission, lang: Lang) -> String {
 }
 
 /// The label of a reading, in English (as the JSON has it).
-pub fn reading_label(code: ReadingCode) -> &'static str {
+pub fn reading_label(code: ReadingCode) -> String {
     reading_label_in(code, Lang::En)
 }
 
-/// The label of a reading.
-pub fn reading_label_in(code: ReadingCode, lang: Lang) -> &'static str {
+/// The label of a reading: whether it is the likely intended one, and its name.
+pub fn reading_label_in(code: ReadingCode, lang: Lang) -> String {
+    let kind = match code {
+        ReadingCode::LightReversed | ReadingCode::LineBehindOrigin => pick(
+            lang,
+            "likely intended reading",
+            "leitura provavelmente pretendida",
+        ),
+        ReadingCode::NormalReversed => pick(lang, "another reading", "outra leitura"),
+    };
+    format!("{kind}: {}", reading_name(code, lang))
+}
+
+/// The name of a reading, the one every command gives it (`phong solve`'s headings, `phong
+/// check`'s and `phong grade`'s verdicts, the Moodle quiz's feedback).
+pub fn reading_name(code: ReadingCode, lang: Lang) -> &'static str {
     match code {
         ReadingCode::LightReversed => pick(
             lang,
-            "likely intended reading: L from the point to the light (the light mirrored to the \
-             front)",
-            "leitura provavelmente pretendida: L do ponto para a fonte de luz (a fonte de luz \
-             espelhada para a frente)",
+            "light reversed (L from the point to the light)",
+            "luz invertida (L do ponto para a luz)",
         ),
-        ReadingCode::NormalReversed => pick(
-            lang,
-            "another reading: the normal reversed",
-            "outra leitura: a normal invertida",
-        ),
+        ReadingCode::NormalReversed => pick(lang, "normal reversed", "normal invertida"),
         ReadingCode::LineBehindOrigin => pick(
             lang,
-            "likely intended reading: the point where the ray's line meets the surface",
-            "leitura provavelmente pretendida: o ponto onde a reta do raio encontra a superfície",
+            "the line's hit behind the ray's origin",
+            "a interseção da reta atrás da origem do raio",
         ),
     }
 }
