@@ -385,6 +385,27 @@ pub(crate) fn judge(expected: &Expected, answer: &Answer, tolerance: f64, strict
         let free = o.slips.iter().filter(|s| intended.contains(s)).count();
         o.slips.len() - free.min(o.slips.len() - 1)
     };
+    // A slip whose colour the tolerance cannot tell from a right one (the problem as written's,
+    // or its likely intended reading's) is never named: an answer near it is as near a right
+    // answer, and the slip says nothing of it (the 8-bit value truncated, 127 where 127.6
+    // rounds to 128, under the 255 scale's tolerance of 1).
+    let right: Vec<&Target> = (expected.solution.iter())
+        .chain(
+            expected
+                .readings
+                .iter()
+                .filter(|r| r.likely_intended)
+                .map(|r| &r.target),
+        )
+        .collect();
+    // (The slip's colour as the answer matched it: clamped, or before clamping.)
+    let told_apart = |c: &Comparison| {
+        let slip = Answer {
+            values: Some(c.expected),
+            scale: answer.scale,
+        };
+        !(right.iter()).any(|t| compare(&slip, t, tolerance).is_some_and(|c| c.within))
+    };
     let matching = |pairs: bool| {
         expected
             .outcomes
@@ -392,7 +413,7 @@ pub(crate) fn judge(expected: &Expected, answer: &Answer, tolerance: f64, strict
             .filter(|o| (level(o) > 1) == pairs)
             .filter_map(|o| {
                 compare(answer, &o.target, tolerance)
-                    .filter(|c| c.within)
+                    .filter(|c| c.within && told_apart(c))
                     .map(|comparison| Diagnosis {
                         slips: o.slips.clone(),
                         intended: o

@@ -581,3 +581,33 @@ fn truncated_rgb8_under_a_keys_tolerance_of_half_a_step() {
     assert_eq!(code, 1, "{json}");
     assert_eq!(diagnosed(&json), [vec!["truncated_rgb8".to_owned()]]);
 }
+
+/// A slip whose colour the tolerance cannot tell from the right one is not named. 4.1 as
+/// written is (0.5, 0.7, 0.3): on the 255 scale (127.5, 178.5, 76.5), which the 8-bit value
+/// truncated makes (127, 178, 76), 0.5 from it, inside the scale's tolerance of 1 (127 is
+/// right). So 126 178 76, 1.5 from the right colour, is wrong, and "truncated" (1 from it)
+/// said nothing of it: it was named. Under a tolerance of 0.4 the two are told apart, and an
+/// answer of the truncated value is the slip.
+#[test]
+fn a_slip_the_tolerance_cannot_tell_from_the_right_colour_is_not_named() {
+    let file = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("exercises/4.1.json");
+    let judge = |answer: &str, extra: &[&str]| {
+        let out = support::phong()
+            .args(["check", "--format", "json", "--answer", answer])
+            .args(extra)
+            .arg(&file)
+            .output()
+            .unwrap();
+        let json: Value = serde_json::from_slice(&out.stdout).unwrap();
+        (out.status.code(), json)
+    };
+    let (code, json) = judge("126 178 76", &[]);
+    assert_eq!(code, Some(1), "{json:#}");
+    assert_eq!(json["verdict"], "wrong");
+    assert!(diagnosed(&json).is_empty(), "{json:#}");
+    let (code, json) = judge("127 178 76", &[]);
+    assert_eq!((code, &json["verdict"]), (Some(0), &Value::from("right")));
+    let (code, json) = judge("127 178 76", &["--tolerance", "0.4"]);
+    assert_eq!(code, Some(1), "{json:#}");
+    assert_eq!(diagnosed(&json), vec![vec!["truncated_rgb8".to_owned()]]);
+}
