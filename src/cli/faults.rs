@@ -193,6 +193,27 @@ crate::faults! {
         NotAFolder { folder: PathBuf } =>
             "{folder} is not a folder", "{folder} não é uma pasta";
             fix "give a path in a folder that exists", "dê um caminho numa pasta que existe";
+        /// Two inputs of `phong solve -o DIR/` whose files in the folder would have one name.
+        SharedOutput { first: PathBuf, second: PathBuf, output: PathBuf } =>
+            "{first} and {second} would both be written to {output}: one would replace the \
+             other",
+            "{first} e {second} seriam ambos escritos em {output}: um substituiria o outro";
+            fix "solve them into separate folders (one phong solve … -o DIR/ each), or rename \
+                 one of them; give a file only once",
+                "resolva-os em pastas separadas (um phong solve … -o DIR/ para cada), ou \
+                 renomeie um deles; dê cada arquivo uma só vez";
+        /// The same, where the two names differ only in case: `output` the first's.
+        SharedOutputCase { first: PathBuf, second: PathBuf, output: PathBuf } =>
+            "{first} and {second} would be written to files whose names differ only in case: \
+             one file, {output}, where case is not told apart (macOS, Windows), so one would \
+             replace the other",
+            "{first} e {second} seriam escritos em arquivos cujos nomes diferem só em \
+             maiúsculas e minúsculas: um só arquivo, {output}, onde elas não se distinguem \
+             (macOS, Windows), então um substituiria o outro";
+            fix "solve them into separate folders (one phong solve … -o DIR/ each), or rename \
+                 one of them",
+                "resolva-os em pastas separadas (um phong solve … -o DIR/ para cada), ou \
+                 renomeie um deles";
     }
 }
 

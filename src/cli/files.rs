@@ -193,7 +193,7 @@ pub(crate) fn write_target_with(path: &Path, write: Writer<'_>) -> std::io::Resu
 }
 
 /// The outputs of a run written all or nothing (`phong grade`'s report, summary, totals and
-/// class page; `phong tradeoff`'s table and plot): each is
+/// class page; `phong tradeoff`'s table and plot; `phong solve -o DIR/`'s files): each is
 /// written in full first, a file to its temporary file beside it, standard output, another
 /// of the program's streams or a device to a buffer (in memory, spilling to an unnamed
 /// temporary file when large); only once every one is written does [`Batch::commit`] copy the
