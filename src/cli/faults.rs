@@ -214,6 +214,16 @@ crate::faults! {
                  one of them",
                 "resolva-os em pastas separadas (um phong solve … -o DIR/ para cada), ou \
                  renomeie um deles";
+        /// `SOURCE_DATE_EPOCH` that is not a time a workbook can say it was made.
+        SourceDateEpoch { value: crate::text::Echo } =>
+            "\"{value}\" is not a whole number of seconds since 1970-01-01 00:00 UTC (up to the \
+             year 9999)",
+            "\"{value}\" não é um número inteiro de segundos desde 1970-01-01 00:00 UTC (até o \
+             ano 9999)";
+            fix "set SOURCE_DATE_EPOCH to such a number (as `git log -1 --format=%ct` prints), \
+                 or unset it: the workbook then says it was made on 1980-01-01",
+                "defina SOURCE_DATE_EPOCH com um número assim (como `git log -1 --format=%ct` \
+                 imprime), ou remova-a: a planilha então diz que foi feita em 1980-01-01";
     }
 }
 

@@ -939,6 +939,49 @@ fn a_windows_1252_class_file_keeps_every_name() {
     assert_eq!(err.matches(&warning).count(), 1, "{err}");
 }
 
+/// The workbook twice, a second apart: the same bytes (QA: docProps/core.xml held the time of
+/// the run). With SOURCE_DATE_EPOCH it says that time instead, again the same bytes each run;
+/// a SOURCE_DATE_EPOCH that is not a time is refused (exit 2) and the old workbook kept.
+#[test]
+fn the_grade_workbook_is_the_same_bytes_on_every_run() {
+    let dir = exercises();
+    let input = tempfile::NamedTempFile::new().unwrap();
+    std::fs::write(input.path(), submissions()).unwrap();
+    let out_dir = tempfile::tempdir().unwrap();
+    let book = |name: &str, epoch: Option<&str>| {
+        let path = out_dir.path().join(name);
+        let mut cmd = phong();
+        cmd.env_remove("SOURCE_DATE_EPOCH");
+        if let Some(e) = epoch {
+            cmd.env("SOURCE_DATE_EPOCH", e);
+        }
+        let out = cmd
+            .arg("grade")
+            .arg(input.path())
+            .arg("--exercises")
+            .arg(dir.path())
+            .args(["--format", "xlsx", "-o"])
+            .arg(&path)
+            .output()
+            .unwrap();
+        (out.status.code(), std::fs::read(&path).unwrap())
+    };
+    let (code, first) = book("a.xlsx", None);
+    assert_eq!(code, Some(0));
+    std::thread::sleep(std::time::Duration::from_millis(1100));
+    let (_, second) = book("b.xlsx", None);
+    assert!(first == second, "two runs a second apart differ");
+    let (code, dated) = book("c.xlsx", Some("1700000000"));
+    assert_eq!(code, Some(0));
+    assert!(dated != first, "SOURCE_DATE_EPOCH is not in the workbook");
+    std::thread::sleep(std::time::Duration::from_millis(1100));
+    assert!(book("d.xlsx", Some("1700000000")).1 == dated);
+    std::fs::write(out_dir.path().join("e.xlsx"), "OLD").unwrap();
+    let (code, kept) = book("e.xlsx", Some("yesterday"));
+    assert_eq!(code, Some(2));
+    assert_eq!(kept, b"OLD");
+}
+
 // Issue 29: `--format xlsx` writes a workbook a spreadsheet opens: read back by a spreadsheet
 // reader, its answers' sheet holds numbers as numbers (points, the expected colour, the
 // tolerance) and the verdicts in words of the chosen language, and the students' sheet the

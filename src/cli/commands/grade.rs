@@ -59,6 +59,10 @@ pub(crate) fn run(args: &GradeArgs) -> Result<Exit, CliError> {
             folder_exists(path)?;
         }
     }
+    let made = match args.format {
+        GradeFormat::Xlsx => workbook_created()?,
+        _ => check::export::xlsx::MADE,
+    };
     // The flags over the course policy.
     if let Some(p) = &args.points {
         policy.give_points(p).map_err(|why| {
@@ -113,7 +117,7 @@ pub(crate) fn run(args: &GradeArgs) -> Result<Exit, CliError> {
     // that cannot be written) leaves every output as it was, and the `graded N rows` line,
     // which reads as success, is not written.
     let lang = args.lang;
-    let written = write_outputs(&graded, args, &inputs);
+    let written = write_outputs(&graded, args, &inputs, made);
     let exit = error::carry_on_in(written, lang);
     if exit != Exit::Success {
         return Ok(exit);
@@ -139,11 +143,12 @@ pub(crate) fn run(args: &GradeArgs) -> Result<Exit, CliError> {
 }
 
 /// Every output of the run, written all or nothing ([`output::Batch`]); `inputs`: the files
-/// the run reads, which no output may replace.
+/// the run reads, which no output may replace; `made`: when a workbook says it was made.
 fn write_outputs(
     graded: &check::grade::Graded,
     args: &GradeArgs,
     inputs: &[&Path],
+    made: i64,
 ) -> Result<(), CliError> {
     let mut batch = output::Batch::new();
     let out = args.output.as_deref();
@@ -154,7 +159,7 @@ fn write_outputs(
             check::export::junit::write(graded, args.lang, w)
         })?,
         GradeFormat::Xlsx => batch.add(out, &mut |w| {
-            check::export::xlsx::write(graded, args.lang, w)
+            check::export::xlsx::write(graded, args.lang, made, w)
         })?,
         GradeFormat::Gradescope => gradescope(graded, args, inputs, &mut batch)?,
     }
@@ -170,6 +175,28 @@ fn write_outputs(
         batch.add(Some(path), &mut |w| w.write_all(page.as_bytes()))?;
     }
     batch.commit()
+}
+
+/// When the workbook says it was made (a Unix time): `SOURCE_DATE_EPOCH` when it is set (as
+/// reproducible builds set it), else [`check::export::xlsx::MADE`]. A value that is not a
+/// whole number of seconds from 1970 to the year 9999 is refused, before anything is written.
+fn workbook_created() -> Result<i64, CliError> {
+    let Some(value) = std::env::var_os("SOURCE_DATE_EPOCH").filter(|v| !v.is_empty()) else {
+        return Ok(check::export::xlsx::MADE);
+    };
+    let text = value.to_string_lossy();
+    text.parse::<i64>()
+        .ok()
+        .filter(|_| text.bytes().all(|b| b.is_ascii_digit()))
+        .filter(|&t| t < 253_402_300_800)
+        .ok_or_else(|| {
+            CliError::usage(
+                "SOURCE_DATE_EPOCH",
+                CliFault::SourceDateEpoch {
+                    value: crate::text::Echo::new(&text, 40),
+                },
+            )
+        })
 }
 
 /// Gradescope's results.json: to `-o FILE` or standard output (one student: the file itself;
