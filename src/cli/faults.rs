@@ -193,6 +193,37 @@ crate::faults! {
         NotAFolder { folder: PathBuf } =>
             "{folder} is not a folder", "{folder} não é uma pasta";
             fix "give a path in a folder that exists", "dê um caminho numa pasta que existe";
+        /// Two inputs of `phong solve -o DIR/` whose files in the folder would have one name.
+        SharedOutput { first: PathBuf, second: PathBuf, output: PathBuf } =>
+            "{first} and {second} would both be written to {output}: one would replace the \
+             other",
+            "{first} e {second} seriam ambos escritos em {output}: um substituiria o outro";
+            fix "solve them into separate folders (one phong solve … -o DIR/ each), or rename \
+                 one of them; give a file only once",
+                "resolva-os em pastas separadas (um phong solve … -o DIR/ para cada), ou \
+                 renomeie um deles; dê cada arquivo uma só vez";
+        /// The same, where the two names differ only in case: `output` the first's.
+        SharedOutputCase { first: PathBuf, second: PathBuf, output: PathBuf } =>
+            "{first} and {second} would be written to files whose names differ only in case: \
+             one file, {output}, where case is not told apart (macOS, Windows), so one would \
+             replace the other",
+            "{first} e {second} seriam escritos em arquivos cujos nomes diferem só em \
+             maiúsculas e minúsculas: um só arquivo, {output}, onde elas não se distinguem \
+             (macOS, Windows), então um substituiria o outro";
+            fix "solve them into separate folders (one phong solve … -o DIR/ each), or rename \
+                 one of them",
+                "resolva-os em pastas separadas (um phong solve … -o DIR/ para cada), ou \
+                 renomeie um deles";
+        /// `SOURCE_DATE_EPOCH` that is not a time a workbook can say it was made.
+        SourceDateEpoch { value: crate::text::Echo } =>
+            "\"{value}\" is not a whole number of seconds since 1970-01-01 00:00 UTC (up to the \
+             year 9999)",
+            "\"{value}\" não é um número inteiro de segundos desde 1970-01-01 00:00 UTC (até o \
+             ano 9999)";
+            fix "set SOURCE_DATE_EPOCH to such a number (as `git log -1 --format=%ct` prints), \
+                 or unset it: the workbook then says it was made on 1980-01-01",
+                "defina SOURCE_DATE_EPOCH com um número assim (como `git log -1 --format=%ct` \
+                 imprime), ou remova-a: a planilha então diz que foi feita em 1980-01-01";
     }
 }
 

@@ -9,7 +9,8 @@
 //! permissions the umask allows (0666 less the umask), an existing one keeps its own. The
 //! temporary file is removed on every error and, through [`guard_signals`], on SIGINT, SIGTERM
 //! and SIGHUP. An output that is an input of the same run, or another of its outputs, is refused
-//! before anything is written ([`distinct`]).
+//! before anything is written ([`distinct`]). A run with several outputs writes them all or
+//! nothing ([`Batch`]): every one written in full before any is put in place.
 
 use std::io::Write;
 use std::path::{Path, PathBuf};
@@ -141,32 +142,189 @@ fn to_stream(fd: u32, write: Writer<'_>) -> std::io::Result<()> {
 /// What writes an output's bytes, to whatever it is given.
 pub(crate) type Writer<'a> = &'a mut dyn FnMut(&mut dyn Write) -> std::io::Result<()>;
 
-/// Writes to `path` what `write` writes, as it writes it: one of the program's own streams
-/// ([`stream_of`]) after what it holds; a regular file (or a new one) atomically, through a
-/// temporary file that an error removes; anything else (a device, a FIFO) directly.
-pub(crate) fn write_target_with(path: &Path, write: Writer<'_>) -> std::io::Result<()> {
+/// Where an output goes, once its links are followed.
+enum Target {
+    /// One of the program's own streams ([`stream_of`]): written after what it holds.
+    Stream(u32),
+    /// A regular file, or a new one: replaced atomically; the permissions of the file replaced,
+    /// kept.
+    File(PathBuf, Option<std::fs::Permissions>),
+    /// A device, a FIFO, a terminal: written to, never replaced.
+    Device(PathBuf),
+}
+
+/// Where `path` writes to; a folder (or a missing path ending in `/`) is refused.
+fn target_of(path: &Path) -> std::io::Result<Target> {
     if let Some(fd) = stream_of(path) {
-        return to_stream(fd, write);
+        return Ok(Target::Stream(fd));
     }
     let target = through_links(path)?;
     match std::fs::metadata(&target) {
         Ok(m) if m.is_dir() => Err(is_a_folder()),
-        Ok(m) if m.is_file() => write_atomically(&target, write, Some(m.permissions())),
-        // A device, a FIFO, a terminal: written to, never replaced.
-        Ok(_) => {
-            let f = std::fs::OpenOptions::new().write(true).open(&target)?;
-            let mut out = std::io::BufWriter::new(f);
-            write(&mut out)?;
-            out.flush()
-        }
+        Ok(m) if m.is_file() => Ok(Target::File(target, Some(m.permissions()))),
+        Ok(_) => Ok(Target::Device(target)),
         Err(e) if e.kind() == std::io::ErrorKind::NotFound => {
             if path.as_os_str().to_string_lossy().ends_with('/') {
                 return Err(is_a_folder());
             }
-            write_atomically(&target, write, None)
+            Ok(Target::File(target, None))
         }
         Err(e) => Err(e),
     }
+}
+
+/// Writes what `write` writes straight into the device (or FIFO) `path`.
+fn to_device(path: &Path, write: Writer<'_>) -> std::io::Result<()> {
+    let f = std::fs::OpenOptions::new().write(true).open(path)?;
+    let mut out = std::io::BufWriter::new(f);
+    write(&mut out)?;
+    out.flush()
+}
+
+/// Writes to `path` what `write` writes, as it writes it: one of the program's own streams
+/// ([`stream_of`]) after what it holds; a regular file (or a new one) atomically, through a
+/// temporary file that an error removes; anything else (a device, a FIFO) directly.
+pub(crate) fn write_target_with(path: &Path, write: Writer<'_>) -> std::io::Result<()> {
+    match target_of(path)? {
+        Target::Stream(fd) => to_stream(fd, write),
+        Target::File(target, existing) => stage(&target, write, existing)?.persist(),
+        Target::Device(target) => to_device(&target, write),
+    }
+}
+
+/// The outputs of a run written all or nothing (`phong grade`'s report, summary, totals and
+/// class page; `phong tradeoff`'s table and plot; `phong solve -o DIR/`'s files): each is
+/// written in full first, a file to its temporary file beside it, standard output, another
+/// of the program's streams or a device to a buffer (in memory, spilling to an unnamed
+/// temporary file when large); only once every one is written does [`Batch::commit`] copy the
+/// buffers out and rename the temporary files into place. An error before the commit (a full
+/// disk, a folder that cannot be written, a bug) drops the batch: the temporary files and the
+/// folders it made are removed, and no output is changed. The renames come last, after the
+/// streams, since they are what may fail least: a rename that still fails (another user's file
+/// in a sticky folder such as /tmp) leaves the outputs renamed before it.
+pub(crate) struct Batch {
+    held: Vec<(Option<PathBuf>, Held)>,
+    /// The folders this batch made, outermost first: removed, when empty, unless committed.
+    folders: Vec<PathBuf>,
+    committed: bool,
+}
+
+/// One output of a [`Batch`], written and waiting.
+enum Held {
+    File(Staged),
+    Stream(u32, tempfile::SpooledTempFile),
+    Device(PathBuf, tempfile::SpooledTempFile),
+}
+
+/// How much of an output to a stream or a device a [`Batch`] keeps in memory before it spills
+/// to an unnamed temporary file.
+const HELD_IN_MEMORY: usize = 1 << 20;
+
+impl Batch {
+    pub(crate) fn new() -> Batch {
+        Batch {
+            held: Vec::new(),
+            folders: Vec::new(),
+            committed: false,
+        }
+    }
+
+    /// Writes, in full, the output `path` (standard output: `None` or `-`), by the rules of
+    /// this module, to be put in place by [`Batch::commit`]. The error names the output.
+    pub(crate) fn add(&mut self, path: Option<&Path>, write: Writer<'_>) -> Result<(), CliError> {
+        let path = path.filter(|p| !is_dash(p));
+        let held = match path {
+            None => hold(write).map(|h| Held::Stream(1, h)),
+            Some(p) => target_of(p).and_then(|t| match t {
+                Target::Stream(fd) => hold(write).map(|h| Held::Stream(fd, h)),
+                Target::File(target, existing) => stage(&target, write, existing).map(Held::File),
+                Target::Device(target) => hold(write).map(|h| Held::Device(target, h)),
+            }),
+        };
+        let held = held.map_err(|source| CliError::Write {
+            path: path.map(Path::to_owned),
+            source,
+        })?;
+        self.held.push((path.map(Path::to_owned), held));
+        Ok(())
+    }
+
+    /// Makes the folder `dir` (and the folders above it that are missing), to be removed again
+    /// when the batch is dropped without its commit.
+    pub(crate) fn create_folder(&mut self, dir: &Path) -> Result<(), CliError> {
+        let mut missing = Vec::new();
+        let mut d = Some(dir);
+        while let Some(f) = d.filter(|f| !f.as_os_str().is_empty()) {
+            if std::fs::symlink_metadata(f).is_ok() {
+                break;
+            }
+            missing.push(f.to_owned());
+            d = f.parent();
+        }
+        std::fs::create_dir_all(dir).map_err(|source| CliError::CreateFolder {
+            path: dir.to_owned(),
+            source,
+        })?;
+        self.folders.extend(missing.into_iter().rev());
+        Ok(())
+    }
+
+    /// Puts every output in place: the buffers copied out to their streams and devices, in
+    /// the order they were added, then the temporary files renamed over their files.
+    pub(crate) fn commit(mut self) -> Result<(), CliError> {
+        let mut files = Vec::new();
+        for (path, held) in std::mem::take(&mut self.held) {
+            let written = match held {
+                Held::File(staged) => {
+                    files.push((path, staged));
+                    continue;
+                }
+                Held::Stream(fd, mut h) => {
+                    rewind(&mut h).and_then(|()| to_stream(fd, &mut |w| copy(&mut h, w)))
+                }
+                Held::Device(target, mut h) => {
+                    rewind(&mut h).and_then(|()| to_device(&target, &mut |w| copy(&mut h, w)))
+                }
+            };
+            written.map_err(|source| CliError::Write { path, source })?;
+        }
+        // From the first rename on, the folders hold an output.
+        self.committed = true;
+        for (path, staged) in files {
+            staged
+                .persist()
+                .map_err(|source| CliError::Write { path, source })?;
+        }
+        Ok(())
+    }
+}
+
+impl Drop for Batch {
+    fn drop(&mut self) {
+        // The temporary files first, then the folders they were in (only when empty).
+        self.held.clear();
+        if !self.committed {
+            for f in self.folders.iter().rev() {
+                let _ = std::fs::remove_dir(f);
+            }
+        }
+    }
+}
+
+/// What `write` writes, held in a buffer until the commit.
+fn hold(write: Writer<'_>) -> std::io::Result<tempfile::SpooledTempFile> {
+    let mut held = tempfile::spooled_tempfile(HELD_IN_MEMORY);
+    write(&mut held)?;
+    Ok(held)
+}
+
+fn rewind(held: &mut tempfile::SpooledTempFile) -> std::io::Result<()> {
+    use std::io::Seek;
+    held.seek(std::io::SeekFrom::Start(0)).map(|_| ())
+}
+
+fn copy(from: &mut tempfile::SpooledTempFile, to: &mut dyn Write) -> std::io::Result<()> {
+    std::io::copy(from, to).map(|_| ())
 }
 
 /// The temporary files being written, removed by [`remove_pending`] when a signal stops the
@@ -249,14 +407,32 @@ pub(crate) fn guard_signals() {
     }
 }
 
-/// Writes what `write` writes to the regular file `path` through a temporary file in the same
-/// folder and a rename. `existing`: the permissions of the file replaced, kept; a new file is created with
-/// 0666 less the umask, as any program's.
-fn write_atomically(
+/// A regular file's new contents, written in full to a temporary file in its folder (synced,
+/// with the permissions it will have), waiting to be renamed into place. Dropped, the temporary
+/// file is removed.
+struct Staged {
+    tmp: tempfile::TempPath,
+    target: PathBuf,
+    // Dropped after `tmp`: listed until the file is gone.
+    _pending: Pending,
+}
+
+impl Staged {
+    /// The temporary file renamed over the file (on failure it is removed).
+    fn persist(self) -> std::io::Result<()> {
+        self.tmp.persist(&self.target).map_err(|e| e.error)
+    }
+}
+
+/// Writes what `write` writes for the regular file `path` to a temporary file in the same
+/// folder, to be renamed into place ([`Staged::persist`]). `existing`: the permissions of the
+/// file replaced, kept; a new file is created with 0666 less the umask, as any program's. The
+/// temporary file is closed once written (a batch may hold thousands).
+fn stage(
     path: &Path,
     write: Writer<'_>,
     existing: Option<std::fs::Permissions>,
-) -> std::io::Result<()> {
+) -> std::io::Result<Staged> {
     let dir = match path.parent() {
         Some(d) if !d.as_os_str().is_empty() => d,
         _ => Path::new("."),
@@ -272,7 +448,7 @@ fn write_atomically(
     let mut tmp = builder
         .tempfile_in(dir)
         .map_err(|e| not_in_folder(dir, e))?;
-    let _pending = Pending::new(tmp.path());
+    let pending = Pending::new(tmp.path());
     {
         let mut out = std::io::BufWriter::new(tmp.as_file_mut());
         write(&mut out)?;
@@ -282,9 +458,11 @@ fn write_atomically(
         tmp.as_file().set_permissions(p)?;
     }
     tmp.as_file().sync_all()?;
-    // On failure the temporary file is dropped, hence removed.
-    tmp.persist(path).map_err(|e| e.error)?;
-    Ok(())
+    Ok(Staged {
+        tmp: tmp.into_temp_path(),
+        target: path.to_owned(),
+        _pending: pending,
+    })
 }
 
 /// Why the temporary file cannot be made in `dir`, said of the folder the user named: a

@@ -10,7 +10,7 @@ use super::args::ColorChoice;
 use super::error::CliError;
 
 // What the commands call on their way to writing: the safety checks live with the files.
-pub(crate) use super::files::{distinct, guard_signals};
+pub(crate) use super::files::{distinct, guard_signals, Batch};
 
 /// Writes `line` and a newline to standard error. A closed or broken standard error (`2>&-`,
 /// `2>&1 | true`) is ignored: a message that cannot be shown must not stop the command (as

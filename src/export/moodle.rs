@@ -681,17 +681,22 @@ fn xml(s: &str) -> String {
     crate::text::xml::escape(s)
 }
 
+/// A problem that cannot be a question: the index of its set, its index among the set's
+/// entries, and why.
+pub(crate) type Unasked = (usize, usize, crate::problem::ProblemError);
+
 /// The quiz: every set's category, then its questions. `parent` is the categories' parent
-/// under `top`.
+/// under `top`. Every problem that cannot be a question is said, in order, not only the first.
 pub(crate) fn quiz(
     sets: &[Set],
     parent: &str,
     grading: &Grading,
     lang: Lang,
-) -> Result<String, crate::problem::ProblemError> {
+) -> Result<String, Vec<Unasked>> {
+    let mut unasked = Vec::new();
     let mut out = String::from("<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<quiz>\n");
     let mut q = 0;
-    for set in sets {
+    for (i, set) in sets.iter().enumerate() {
         let path = format!(
             "$course$/top/{}/{}",
             category_name(parent),
@@ -702,11 +707,15 @@ pub(crate) fn quiz(
             "<question type=\"category\">\n<category><text>{}</text></category>\n</question>",
             xml(&path)
         );
-        for entry in &set.entries {
+        for (k, entry) in set.entries.iter().enumerate() {
             q += 1;
-            question(&mut out, entry, q, grading, lang)
-                .map_err(|e| e.at(std::path::Path::new(&entry.label)))?;
+            if let Err(e) = question(&mut out, entry, q, grading, lang) {
+                unasked.push((i, k, e.at(std::path::Path::new(&entry.label))));
+            }
         }
+    }
+    if !unasked.is_empty() {
+        return Err(unasked);
     }
     out.push_str("</quiz>\n");
     Ok(out)

@@ -1321,6 +1321,88 @@ fn output_into_a_folder_that_does_not_exist_exits_2_without_panicking() {
     assert!(!dir.path().join("no-such-folder").exists());
 }
 
+/// `phong solve A/p.json B/p.json -o DIR/`: both would be written to DIR/p.txt, the second
+/// over the first (QA: exit 0, one problem silently dropped). Refused before anything is
+/// written, naming both inputs and the file they would share; the same when the names differ
+/// only in case (one file on macOS and Windows), and when a file is given twice. A folder that
+/// holds an older p.txt keeps it.
+#[test]
+fn two_inputs_sharing_a_file_in_the_output_folder_are_refused_naming_both() {
+    let dir = TempDir::new().expect("a temporary folder");
+    for sub in ["a", "b"] {
+        fs::create_dir(dir.path().join(sub)).expect("created");
+    }
+    let first = dir.path().join("a").join("p.json");
+    let second = dir.path().join("b").join("p.json");
+    let upper = dir.path().join("b").join("P.json");
+    fs::write(&first, pretty(&point_problem())).expect("written");
+    fs::write(&second, pretty(&ray_problem())).expect("written");
+    fs::write(&upper, pretty(&ray_problem())).expect("written");
+    let out = format!("{}/", dir.path().join("od").display());
+    let shared = format!("{out}p.txt");
+    for inputs in [[&first, &second], [&first, &upper], [&first, &first]] {
+        let run = support::phong()
+            .arg("solve")
+            .args(inputs)
+            .args(["-o", &out])
+            .output()
+            .expect("phong runs");
+        let err = String::from_utf8_lossy(&run.stderr);
+        assert_eq!(run.status.code(), Some(BAD_INPUT), "{inputs:?}: {err}");
+        assert!(run.stdout.is_empty());
+        for named in [utf8(inputs[0]), utf8(inputs[1]), &shared] {
+            assert!(err.contains(named), "{inputs:?}: {named} not in {err}");
+        }
+        assert!(err.contains("Fix: "), "{err}");
+        assert!(err.contains("separate folders"), "{err}");
+        assert!(!err.contains("panicked"), "{err}");
+        assert!(
+            !dir.path().join("od").exists(),
+            "{inputs:?}: a folder was made"
+        );
+    }
+    // Into a folder that exists: its file is left as it was.
+    fs::create_dir(dir.path().join("od")).expect("created");
+    fs::write(&shared, "OLD\n").expect("written");
+    support::phong()
+        .args(["solve", utf8(&first), utf8(&second), "-o", &out])
+        .assert()
+        .code(BAD_INPUT);
+    assert_eq!(fs::read_to_string(&shared).expect("kept"), "OLD\n");
+    assert_eq!(folder_entries(&dir.path().join("od")).len(), 1);
+    // Different names: each written, named after its input.
+    let other = dir.path().join("b").join("q.json");
+    fs::write(&other, pretty(&ray_problem())).expect("written");
+    support::phong()
+        .args(["solve", utf8(&first), utf8(&other), "-o", &out])
+        .args(["--format", "markdown"])
+        .assert()
+        .code(0);
+    assert_eq!(
+        folder_entries(&dir.path().join("od")),
+        ["p.md", "p.txt", "q.md"].map(String::from).into()
+    );
+}
+
+/// `phong solve --format json ex/p.json -o ex/` would write ex/p.json, its own input: refused
+/// as `-o ex/p.json` is, the input left as it was.
+#[test]
+fn a_file_in_the_output_folder_never_replaces_an_input() {
+    let dir = TempDir::new().expect("a temporary folder");
+    let input = dir.path().join("p.json");
+    let text = pretty(&point_problem());
+    fs::write(&input, &text).expect("written");
+    let out = format!("{}/", dir.path().display());
+    support::phong()
+        .args(["solve", utf8(&input), "--format", "json", "-o", &out])
+        .assert()
+        .code(BAD_INPUT)
+        .stderr(predicate::str::contains(utf8(&input)))
+        .stderr(predicate::str::contains("is the input"))
+        .stderr(panicked().not());
+    assert_eq!(fs::read_to_string(&input).expect("kept"), text);
+}
+
 // ---------------------------------------------------------------------------------------------
 // The shipped exercises are all good
 // ---------------------------------------------------------------------------------------------

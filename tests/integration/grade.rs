@@ -638,6 +638,137 @@ fn an_output_that_cannot_be_written_stops_before_anything_is_and_says_no_graded_
     );
 }
 
+/// Files of a folder whose names start with `.phong-` (temporary files left behind).
+fn temporary_files(dir: &Path) -> Vec<String> {
+    std::fs::read_dir(dir)
+        .unwrap()
+        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+        .filter(|n| n.starts_with(".phong-"))
+        .collect()
+}
+
+/// QA: `echo OLD > r6.csv; phong grade … -o r6.csv --class-report /sys/x.html` exited 2 with
+/// r6.csv already replaced, and so did a failing --summary or --by-student after -o. The
+/// outputs are all or nothing: whichever one cannot be written (here a path that is a folder,
+/// which no check before the writing catches), every other output keeps what it held, no
+/// temporary file is left, and no "graded" line is said.
+#[test]
+fn an_output_that_fails_leaves_every_other_output_as_it_was() {
+    let dir = exercises();
+    let work = tempfile::tempdir().unwrap();
+    let input = work.path().join("in.csv");
+    std::fs::write(&input, submissions()).unwrap();
+    std::fs::create_dir(work.path().join("taken")).unwrap();
+    let flags = [
+        ("-o", "r.csv"),
+        ("--summary", "s.csv"),
+        ("--by-student", "b.csv"),
+        ("--class-report", "c.html"),
+    ];
+    for failing in flags.map(|(flag, _)| flag) {
+        for (_, file) in flags {
+            std::fs::write(work.path().join(file), "OLD\n").unwrap();
+        }
+        let mut cmd = phong();
+        cmd.current_dir(work.path())
+            .arg("grade")
+            .arg(&input)
+            .arg("--exercises")
+            .arg(dir.path());
+        for (flag, file) in flags {
+            cmd.arg(flag)
+                .arg(if flag == failing { "taken" } else { file });
+        }
+        let out = cmd.output().unwrap();
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(2), "{failing}: {err}");
+        assert!(err.contains("cannot write taken"), "{failing}: {err}");
+        assert!(!err.contains("graded"), "{failing}: {err}");
+        for (flag, file) in flags.iter().filter(|(flag, _)| *flag != failing) {
+            assert_eq!(
+                std::fs::read_to_string(work.path().join(file)).unwrap(),
+                "OLD\n",
+                "{flag} {file} was replaced though {failing} failed"
+            );
+        }
+        assert_eq!(temporary_files(work.path()), Vec::<String>::new());
+    }
+}
+
+/// A device that refuses the bytes (/dev/full) fails after every file is written to its
+/// temporary file: the files are still not put in place.
+#[cfg(target_os = "linux")]
+#[test]
+fn a_device_that_fails_keeps_the_files_of_the_run_as_they_were() {
+    let dir = exercises();
+    let work = tempfile::tempdir().unwrap();
+    let input = work.path().join("in.csv");
+    std::fs::write(&input, submissions()).unwrap();
+    let report = work.path().join("r.csv");
+    std::fs::write(&report, "OLD\n").unwrap();
+    let out = phong()
+        .arg("grade")
+        .arg(&input)
+        .arg("--exercises")
+        .arg(dir.path())
+        .arg("-o")
+        .arg(&report)
+        .args(["--by-student", "/dev/full"])
+        .output()
+        .unwrap();
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{err}");
+    assert!(err.contains("cannot write /dev/full"), "{err}");
+    assert_eq!(std::fs::read_to_string(&report).unwrap(), "OLD\n");
+    assert_eq!(temporary_files(work.path()), Vec::<String>::new());
+}
+
+/// `--format gradescope -o DIR/`: a run that fails after the students' files were written
+/// leaves no folder behind; and a student's file that would replace an input (-o the
+/// exercises' folder, a student named "4.2") is refused, the exercise kept.
+#[test]
+fn a_gradescope_folder_is_all_or_nothing_and_never_replaces_an_exercise() {
+    let dir = exercises();
+    let work = tempfile::tempdir().unwrap();
+    let input = work.path().join("in.csv");
+    std::fs::write(&input, submissions()).unwrap();
+    std::fs::create_dir(work.path().join("taken")).unwrap();
+    let folder = work.path().join("gs").join("out");
+    let out = phong()
+        .arg("grade")
+        .arg(&input)
+        .arg("--exercises")
+        .arg(dir.path())
+        .args(["--format", "gradescope", "-o"])
+        .arg(format!("{}/", folder.display()))
+        .arg("--class-report")
+        .arg(work.path().join("taken"))
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(2));
+    assert!(
+        !work.path().join("gs").exists(),
+        "the folder was left behind"
+    );
+
+    std::fs::write(&input, "student,exercise,answer\n4.2,4.1,0.5 0.7 0.3\n").unwrap();
+    let exercise = dir.path().join("4.2.json");
+    let before = std::fs::read(&exercise).unwrap();
+    let out = phong()
+        .arg("grade")
+        .arg(&input)
+        .arg("--exercises")
+        .arg(dir.path())
+        .args(["--format", "gradescope", "-o"])
+        .arg(format!("{}/", dir.path().display()))
+        .output()
+        .unwrap();
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{err}");
+    assert!(err.contains("is the input"), "{err}");
+    assert_eq!(std::fs::read(&exercise).unwrap(), before);
+}
+
 /// `phong grade` run by `sh` under an address-space limit of `limit_mb` MiB (`ulimit -v`),
 /// standard output read as it comes: (exit code, the lines of standard output counted, standard
 /// error).
@@ -806,6 +937,49 @@ fn a_windows_1252_class_file_keeps_every_name() {
         input.path().display()
     );
     assert_eq!(err.matches(&warning).count(), 1, "{err}");
+}
+
+/// The workbook twice, a second apart: the same bytes (QA: docProps/core.xml held the time of
+/// the run). With SOURCE_DATE_EPOCH it says that time instead, again the same bytes each run;
+/// a SOURCE_DATE_EPOCH that is not a time is refused (exit 2) and the old workbook kept.
+#[test]
+fn the_grade_workbook_is_the_same_bytes_on_every_run() {
+    let dir = exercises();
+    let input = tempfile::NamedTempFile::new().unwrap();
+    std::fs::write(input.path(), submissions()).unwrap();
+    let out_dir = tempfile::tempdir().unwrap();
+    let book = |name: &str, epoch: Option<&str>| {
+        let path = out_dir.path().join(name);
+        let mut cmd = phong();
+        cmd.env_remove("SOURCE_DATE_EPOCH");
+        if let Some(e) = epoch {
+            cmd.env("SOURCE_DATE_EPOCH", e);
+        }
+        let out = cmd
+            .arg("grade")
+            .arg(input.path())
+            .arg("--exercises")
+            .arg(dir.path())
+            .args(["--format", "xlsx", "-o"])
+            .arg(&path)
+            .output()
+            .unwrap();
+        (out.status.code(), std::fs::read(&path).unwrap())
+    };
+    let (code, first) = book("a.xlsx", None);
+    assert_eq!(code, Some(0));
+    std::thread::sleep(std::time::Duration::from_millis(1100));
+    let (_, second) = book("b.xlsx", None);
+    assert!(first == second, "two runs a second apart differ");
+    let (code, dated) = book("c.xlsx", Some("1700000000"));
+    assert_eq!(code, Some(0));
+    assert!(dated != first, "SOURCE_DATE_EPOCH is not in the workbook");
+    std::thread::sleep(std::time::Duration::from_millis(1100));
+    assert!(book("d.xlsx", Some("1700000000")).1 == dated);
+    std::fs::write(out_dir.path().join("e.xlsx"), "OLD").unwrap();
+    let (code, kept) = book("e.xlsx", Some("yesterday"));
+    assert_eq!(code, Some(2));
+    assert_eq!(kept, b"OLD");
 }
 
 // Issue 29: `--format xlsx` writes a workbook a spreadsheet opens: read back by a spreadsheet

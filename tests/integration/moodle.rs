@@ -656,6 +656,59 @@ fn a_file_that_is_not_a_question_is_refused_by_name() {
     assert!(err.contains("-[2]") && err.contains("bogus"), "{err}");
 }
 
+/// QA: `phong moodle a.json ok.json b.json -o quiz.xml` said only a.json's error. Every bad
+/// file's error is said, in the order given (one found reading the file and one found making
+/// its question: a scene has no point or ray), and nothing is written: the old quiz is kept.
+/// The problem files, and the course policy, are inputs no quiz may replace.
+#[test]
+fn every_bad_file_is_said_in_order_and_nothing_is_written() {
+    let dir = tempfile::tempdir().unwrap();
+    let bad = dir.path().join("a.json");
+    std::fs::write(&bad, "{ \"lights\": [").unwrap();
+    let good = dir.path().join("ok.json");
+    std::fs::copy(root().join("exercises/4.1.json"), &good).unwrap();
+    let scene = dir.path().join("b.json");
+    std::fs::copy(root().join("scenes/classic.json"), &scene).unwrap();
+    let quiz = dir.path().join("quiz.xml");
+    std::fs::write(&quiz, "OLD").unwrap();
+    let out = phong()
+        .arg("moodle")
+        .args([&bad, &good, &scene])
+        .arg("-o")
+        .arg(&quiz)
+        .output()
+        .unwrap();
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{err}");
+    let lines: Vec<&str> = err.lines().collect();
+    assert_eq!(lines.len(), 2, "{err}");
+    assert!(
+        lines[0].starts_with(&format!("error: {}:", bad.display())),
+        "{err}"
+    );
+    assert!(
+        lines[1].starts_with(&format!("error: {}:", scene.display())),
+        "{err}"
+    );
+    assert!(lines[1].contains("no point or ray"), "{err}");
+    assert!(!err.contains("ok.json"), "{err}");
+    assert_eq!(std::fs::read_to_string(&quiz).unwrap(), "OLD");
+    assert!(out.stdout.is_empty());
+
+    // An output that is an input: refused, the file kept.
+    let text = std::fs::read(&good).unwrap();
+    let out = phong()
+        .arg("moodle")
+        .arg(&good)
+        .arg("-o")
+        .arg(&good)
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("is the input"));
+    assert_eq!(std::fs::read(&good).unwrap(), text);
+}
+
 // QA A #10. A problem's own text is text: a Cloze sub-question written in its title, question
 // or a light's name (`{2:SHORTANSWER:=x}`), or LaTeX-ish braces (`\frac{1}{2}`) with `~`, `#`
 // and `=` around them, must not become a sub-question of the quiz. 4.2 is a colour problem:

@@ -506,6 +506,50 @@ fn the_table_and_plot_speak_portuguese_with_lang_pt() {
     assert_eq!(json("pt"), json("en"), "the JSON does not depend on --lang");
 }
 
+/// The table and the plot are written all or nothing: a table that cannot be written (its path
+/// a folder) leaves the old plot as it was, as a plot that cannot be written leaves the old
+/// table (before, the plot was put in place first and stayed replaced).
+#[test]
+fn a_table_that_cannot_be_written_keeps_the_old_plot() {
+    let dir = TempDir::new().unwrap();
+    let scene = mirrors(&dir);
+    let plot = dir.path().join("p.svg");
+    let table = dir.path().join("t.txt");
+    // A folder, named as a plot may be.
+    let taken = dir.path().join("taken.svg");
+    fs::create_dir(&taken).unwrap();
+    for (plot_to, table_to, kept) in [(&plot, &taken, &plot), (&taken, &table, &table)] {
+        fs::write(kept, "OLD").unwrap();
+        let out = phong()
+            .arg("tradeoff")
+            .arg(&scene)
+            .args(["--levels", "1", "--min-weights", "0", "--samples", "1"])
+            .args([
+                "--runs",
+                "1",
+                "--reference-level",
+                "2",
+                "--reference-samples",
+                "1",
+            ])
+            .arg("--plot")
+            .arg(plot_to)
+            .arg("-o")
+            .arg(table_to)
+            .output()
+            .unwrap();
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(BAD_INPUT), "{err}");
+        assert!(err.contains("taken"), "{err}");
+        assert_eq!(
+            fs::read_to_string(kept).unwrap(),
+            "OLD",
+            "{}",
+            kept.display()
+        );
+    }
+}
+
 #[test]
 fn bad_flags_exit_2_name_the_flag_and_write_nothing() {
     let dir = TempDir::new().unwrap();

@@ -17,7 +17,9 @@
 //! The answers' and the students' sheets are written row by row in the library's
 //! constant-memory mode, so a class of a million rows stays within the grading's memory bound. The CSV stays the machine format.
 
-use rust_xlsxwriter::{Color, Format, Workbook, Worksheet, XlsxError};
+use rust_xlsxwriter::{
+    Color, DocProperties, ExcelDateTime, Format, Workbook, Worksheet, XlsxError,
+};
 
 use crate::check::grade::{Graded, RowOut};
 use crate::text::xml::sanitize;
@@ -263,9 +265,23 @@ fn class(book: &mut Workbook, graded: &Graded, lang: Lang) -> Result<(), XlsxErr
     Ok(())
 }
 
-/// The workbook of a graded class, written to `w`.
-pub fn write(graded: &Graded, lang: Lang, w: &mut dyn std::io::Write) -> std::io::Result<()> {
+/// When a workbook says it was made, unless told otherwise: 1980-01-01 00:00 UTC, the time
+/// its zip entries carry (the library pins them), as a Unix time.
+pub const MADE: i64 = 315_532_800;
+
+/// The workbook of a graded class, written to `w`, saying it was made at `made` (a Unix time,
+/// 1970 to 9999: [`MADE`], or `SOURCE_DATE_EPOCH`), never at the time of the run: the same
+/// class gives the same bytes.
+pub fn write(
+    graded: &Graded,
+    lang: Lang,
+    made: i64,
+    w: &mut dyn std::io::Write,
+) -> std::io::Result<()> {
     let mut book = Workbook::new();
+    let made = ExcelDateTime::from_timestamp(made)
+        .map_err(|e| std::io::Error::new(std::io::ErrorKind::InvalidInput, e.to_string()))?;
+    book.set_properties(&DocProperties::new().set_creation_datetime(&made));
     let made = answers(&mut book, graded, lang)
         .and_then(|()| students(&mut book, graded, lang))
         .and_then(|()| summary(&mut book, graded, lang))

@@ -26,10 +26,9 @@ pub(crate) fn run(args: &GradeArgs) -> Result<Exit, CliError> {
         });
     }
     let mut policy = super::course_policy(args.policy.policy.as_deref(), Some(&args.exercises))?;
+    let policy_file = policy.source.clone();
     let mut inputs: Vec<&Path> = vec![&args.submissions];
-    if let Some(r) = &policy.source {
-        inputs.push(r);
-    }
+    inputs.extend(policy_file.as_deref());
     // The exercise files are inputs too: `-o exercises/4.2.json` would replace one.
     let exercise_files: Vec<std::path::PathBuf> = std::fs::read_dir(&args.exercises)
         .map(|dir| {
@@ -60,6 +59,10 @@ pub(crate) fn run(args: &GradeArgs) -> Result<Exit, CliError> {
             folder_exists(path)?;
         }
     }
+    let made = match args.format {
+        GradeFormat::Xlsx => workbook_created()?,
+        _ => check::export::xlsx::MADE,
+    };
     // The flags over the course policy.
     if let Some(p) = &args.points {
         policy.give_points(p).map_err(|why| {
@@ -109,39 +112,12 @@ pub(crate) fn run(args: &GradeArgs) -> Result<Exit, CliError> {
     // Each row is graded once to count the students' answers, then again as it is written: the
     // reports are written one row at a time, never whole in memory.
     let graded = check::grade::Graded::new(&bytes, &options);
-    // The report first, then the summary and the totals, then the line on standard error. Their
-    // folders were checked above; a write that fails all the same (a full disk) stops there, and
-    // the `graded N rows` line, which reads as success, is not written.
-    let out = args.output.as_deref();
-    let written = match args.format {
-        GradeFormat::Csv => output::emit_with(out, &mut |w| graded.write_rows_csv(w)),
-        GradeFormat::Json => output::emit_with(out, &mut |w| graded.write_json(w)),
-        GradeFormat::Junit => output::emit_with(out, &mut |w| {
-            check::export::junit::write(&graded, args.lang, w)
-        }),
-        GradeFormat::Xlsx => output::emit_with(out, &mut |w| {
-            check::export::xlsx::write(&graded, args.lang, w)
-        }),
-        GradeFormat::Gradescope => gradescope(&graded, args),
-    };
+    // Every output is written in full (the report, then the summary, the totals and the class
+    // page) before any is put in place: a write that fails all the same (a full disk, a folder
+    // that cannot be written) leaves every output as it was, and the `graded N rows` line,
+    // which reads as success, is not written.
     let lang = args.lang;
-    let written = written
-        .and_then(|()| match &args.summary {
-            Some(summary) => output::emit_with(Some(summary), &mut |w| graded.write_summary_csv(w)),
-            None => Ok(()),
-        })
-        .and_then(|()| match &args.by_student {
-            Some(by) => output::emit_with(Some(by), &mut |w| graded.write_students_csv(w)),
-            None => Ok(()),
-        })
-        .and_then(|()| match &args.class_report {
-            Some(path) => {
-                let file = args.submissions.display().to_string();
-                let page = check::export::class::html(&graded, &file, lang);
-                output::emit(Some(path), &page)
-            }
-            None => Ok(()),
-        });
+    let written = write_outputs(&graded, args, &inputs, made);
     let exit = error::carry_on_in(written, lang);
     if exit != Exit::Success {
         return Ok(exit);
@@ -166,11 +142,74 @@ pub(crate) fn run(args: &GradeArgs) -> Result<Exit, CliError> {
     Ok(exit)
 }
 
+/// Every output of the run, written all or nothing ([`output::Batch`]); `inputs`: the files
+/// the run reads, which no output may replace; `made`: when a workbook says it was made.
+fn write_outputs(
+    graded: &check::grade::Graded,
+    args: &GradeArgs,
+    inputs: &[&Path],
+    made: i64,
+) -> Result<(), CliError> {
+    let mut batch = output::Batch::new();
+    let out = args.output.as_deref();
+    match args.format {
+        GradeFormat::Csv => batch.add(out, &mut |w| graded.write_rows_csv(w))?,
+        GradeFormat::Json => batch.add(out, &mut |w| graded.write_json(w))?,
+        GradeFormat::Junit => batch.add(out, &mut |w| {
+            check::export::junit::write(graded, args.lang, w)
+        })?,
+        GradeFormat::Xlsx => batch.add(out, &mut |w| {
+            check::export::xlsx::write(graded, args.lang, made, w)
+        })?,
+        GradeFormat::Gradescope => gradescope(graded, args, inputs, &mut batch)?,
+    }
+    if let Some(summary) = &args.summary {
+        batch.add(Some(summary), &mut |w| graded.write_summary_csv(w))?;
+    }
+    if let Some(by) = &args.by_student {
+        batch.add(Some(by), &mut |w| graded.write_students_csv(w))?;
+    }
+    if let Some(path) = &args.class_report {
+        let file = args.submissions.display().to_string();
+        let page = check::export::class::html(graded, &file, args.lang);
+        batch.add(Some(path), &mut |w| w.write_all(page.as_bytes()))?;
+    }
+    batch.commit()
+}
+
+/// When the workbook says it was made (a Unix time): `SOURCE_DATE_EPOCH` when it is set (as
+/// reproducible builds set it), else [`check::export::xlsx::MADE`]. A value that is not a
+/// whole number of seconds from 1970 to the year 9999 is refused, before anything is written.
+fn workbook_created() -> Result<i64, CliError> {
+    let Some(value) = std::env::var_os("SOURCE_DATE_EPOCH").filter(|v| !v.is_empty()) else {
+        return Ok(check::export::xlsx::MADE);
+    };
+    let text = value.to_string_lossy();
+    text.parse::<i64>()
+        .ok()
+        .filter(|_| text.bytes().all(|b| b.is_ascii_digit()))
+        .filter(|&t| t < 253_402_300_800)
+        .ok_or_else(|| {
+            CliError::usage(
+                "SOURCE_DATE_EPOCH",
+                CliFault::SourceDateEpoch {
+                    value: crate::text::Echo::new(&text, 40),
+                },
+            )
+        })
+}
+
 /// Gradescope's results.json: to `-o FILE` or standard output (one student: the file itself;
 /// several: an object keyed by student), or, with `-o DIR/` (a folder, or a path ending in
 /// `/`), one `DIR/STUDENT.json` per student (and `DIR/_no_student_.json`, `_sem_aluno_.json`
-/// in Portuguese, for the rows without a student).
-fn gradescope(graded: &check::grade::Graded, args: &GradeArgs) -> Result<(), CliError> {
+/// in Portuguese, for the rows without a student). A student's file that would replace an input
+/// (`-o` the exercises' folder, a student named "4.2") is refused, as `-o` itself would be.
+fn gradescope(
+    graded: &check::grade::Graded,
+    args: &GradeArgs,
+    inputs: &[&Path],
+    batch: &mut output::Batch,
+) -> Result<(), CliError> {
     let to_folder = args.output.as_deref().filter(|o| {
         o.is_dir()
             || o.as_os_str()
@@ -178,16 +217,15 @@ fn gradescope(graded: &check::grade::Graded, args: &GradeArgs) -> Result<(), Cli
                 .ends_with(std::path::MAIN_SEPARATOR)
     });
     let Some(dir) = to_folder else {
-        return output::emit_with(args.output.as_deref(), &mut |w| {
+        return batch.add(args.output.as_deref(), &mut |w| {
             check::export::gradescope::write_class(graded, args.lang, w)
         });
     };
-    std::fs::create_dir_all(dir).map_err(|source| CliError::CreateFolder {
-        path: dir.to_owned(),
-        source,
-    })?;
+    batch.create_folder(dir)?;
     check::export::gradescope::write_files(graded, args.lang, |name, write| {
-        output::emit_with(Some(&dir.join(format!("{name}.json"))), write)
+        let file = dir.join(format!("{name}.json"));
+        output::distinct(inputs, &[("--output", Some(&file))])?;
+        batch.add(Some(&file), write)
     })
 }
 

@@ -7,7 +7,7 @@ use crate::check::answer::from_key;
 use crate::check::policy::Policy;
 use crate::check::Scale;
 use crate::cli::args::MoodleArgs;
-use crate::cli::error::CliError;
+use crate::cli::error::{self, CliError};
 use crate::cli::exit::Exit;
 use crate::cli::faults::CliFault;
 use crate::cli::output;
@@ -26,6 +26,29 @@ pub(crate) fn run(args: &MoodleArgs) -> Result<Exit, CliError> {
             _ => std::path::PathBuf::from("."),
         });
     let policy = super::course_policy(args.policy.as_deref(), folder.as_deref())?;
+    // No output may replace what the run reads: a problem file, the policy, a mesh a ray
+    // problem names (read here only for their names; a file that cannot be read is reported
+    // below).
+    let meshes: Vec<std::path::PathBuf> = args
+        .files
+        .iter()
+        .filter(|p| !output::is_dash(p))
+        .filter_map(|p| {
+            Some(problem::mesh_files(
+                &problem::Source::File(p).parse().ok()?,
+                p,
+            ))
+        })
+        .flatten()
+        .collect();
+    let inputs: Vec<&Path> = args
+        .files
+        .iter()
+        .chain(&policy.source)
+        .chain(&meshes)
+        .map(|p| p.as_path())
+        .collect();
+    output::distinct(&inputs, &[("--output", args.output.as_deref())])?;
     let mut grading = Grading::of(&policy, args.lang).map_err(|share| {
         CliError::usage(
             policy
@@ -38,19 +61,69 @@ pub(crate) fn run(args: &MoodleArgs) -> Result<Exit, CliError> {
             },
         )
     })?;
-    let sets = args
-        .files
-        .iter()
-        .map(|path| read_set(path, &policy, args.lang))
-        .collect::<Result<Vec<Set>, ProblemError>>()?;
+    // Every file read, and every problem made a question, before anything is written: each bad
+    // one is said, in the order given (a file's problems in its order), and nothing is written.
+    let mut sets = Vec::new();
+    // Each set's problems' places in its file, and what could not be read, by file and place.
+    let mut places = Vec::new();
+    let mut errors: Vec<(usize, usize, ProblemError)> = Vec::new();
+    for (i, path) in args.files.iter().enumerate() {
+        let read = read_set(path, &policy, args.lang);
+        errors.extend(read.errors.into_iter().map(|(at, e)| (i, at, e)));
+        sets.push(read.set);
+        places.push(read.places);
+    }
     grading.weigh(&sets.iter().flat_map(|s| &s.entries).collect::<Vec<_>>());
-    let text = quiz(&sets, &args.category, &grading, args.lang)?;
-    output::emit(args.output.as_deref(), &text)?;
+    let text = quiz(&sets, &args.category, &grading, args.lang).map_err(|unasked| {
+        errors.extend(unasked.into_iter().map(|(i, k, e)| (i, places[i][k], e)));
+    });
+    if !errors.is_empty() {
+        errors.sort_by_key(|&(i, at, _)| (i, at));
+        for (_, _, e) in &errors {
+            error::print_in(e, args.lang);
+        }
+        return Ok(Exit::BadInput);
+    }
+    if let Ok(text) = text {
+        output::emit(args.output.as_deref(), &text)?;
+    }
     Ok(Exit::Success)
 }
 
+/// A file read: its set of the problems that could be read, each one's place in the file
+/// (`places`), and the errors of those that could not, by place (a file that cannot be read at
+/// all: one error, at 0).
+struct Read {
+    set: Set,
+    places: Vec<usize>,
+    errors: Vec<(usize, ProblemError)>,
+}
+
 /// One file: a problem, or an array of problems (as `phong new --count N` prints them).
-fn read_set(path: &Path, policy: &Policy, lang: Lang) -> Result<Set, ProblemError> {
+fn read_set(path: &Path, policy: &Policy, lang: Lang) -> Read {
+    let mut read = Read {
+        set: Set {
+            category: String::new(),
+            entries: Vec::new(),
+        },
+        places: Vec::new(),
+        errors: Vec::new(),
+    };
+    match read_entries(path, policy, lang, &mut read) {
+        Ok(category) => read.set.category = category,
+        Err(e) => read.errors.push((0, e)),
+    }
+    read
+}
+
+/// The problems of the file `path` into `read`, each that cannot be read as its error; the
+/// file's category, or why the file cannot be read at all.
+fn read_entries(
+    path: &Path,
+    policy: &Policy,
+    lang: Lang,
+    read: &mut Read,
+) -> Result<String, ProblemError> {
     let bytes = problem::read_limited(path, MAX_PROBLEM_BYTES, problem::Input::ProblemFile)
         .map_err(|source| ProblemError::Read {
             path: path.to_owned(),
@@ -88,25 +161,34 @@ fn read_set(path: &Path, policy: &Policy, lang: Lang) -> Result<Set, ProblemErro
     let exercise = path
         .file_name()
         .map_or_else(String::new, |s| s.to_string_lossy().into_owned());
-    let mut entries = Vec::new();
-    for (label, source) in sources {
+    for (place, (label, source)) in sources.into_iter().enumerate() {
         let at = Path::new(&label);
-        let file = problem::parse_str(at, &source)?;
-        let problem =
-            problem::validate::validate_in::<f64>(&file, path.parent()).map_err(|e| e.at(at))?;
+        let problem = problem::parse_str(at, &source).and_then(|file| {
+            let problem = problem::validate::validate_in::<f64>(&file, path.parent())
+                .map_err(|e| e.at(at))?;
+            Ok((file, problem))
+        });
+        let (file, problem) = match problem {
+            Ok(read) => read,
+            Err(e) => {
+                read.errors.push((place, e));
+                continue;
+            }
+        };
         // The tolerances `phong check` judges this problem's answers under (the key's own, else
         // the course policy's), on each scale.
         let key = file.answer.as_ref().and_then(|k| from_key(k).ok());
         let on = |scale| policy.tolerance(scale, key.as_ref().and_then(|k| k.tolerance_on(scale)));
-        entries.push(Entry {
+        read.set.entries.push(Entry {
             label,
             problem,
             tolerance: on(Scale::Unit),
             tolerance_bits8: on(Scale::Bits8),
             points: policy.points_of(&exercise),
         });
+        read.places.push(place);
     }
-    let category = if stdin {
+    Ok(if stdin {
         match lang {
             Lang::En => "Generated problems".to_owned(),
             Lang::Pt => "Problemas gerados".to_owned(),
@@ -114,6 +196,5 @@ fn read_set(path: &Path, policy: &Policy, lang: Lang) -> Result<Set, ProblemErro
     } else {
         path.file_stem()
             .map_or_else(|| label.clone(), |s| s.to_string_lossy().into_owned())
-    };
-    Ok(Set { category, entries })
+    })
 }

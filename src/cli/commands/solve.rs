@@ -1,7 +1,8 @@
 //! `phong solve`: each file solved and explained (text, Markdown, LaTeX, HTML) or written as
 //! JSON; a bad file is reported and the others are still solved. `--part` chooses the
 //! document (statements, solutions, answer key, or all three), `--course`/`--title`/`--date`/
-//! `--author` its header, and `-o DIR/` writes one file per exercise.
+//! `--author` its header, and `-o DIR/` writes one file per exercise (two inputs that would
+//! share one are refused, before anything is written).
 
 use std::path::Path;
 
@@ -23,8 +24,8 @@ pub(crate) fn run(args: &SolveArgs) -> Result<Exit, CliError> {
     // A ray problem may name meshes, inputs too: no output may replace one. Read here only for
     // their names (a file that cannot be read is reported when it is solved; standard input is
     // read once, when it is solved).
-    if args.output.is_some() {
-        let meshes: Vec<std::path::PathBuf> = inputs
+    let meshes: Vec<std::path::PathBuf> = match args.output {
+        Some(_) => inputs
             .iter()
             .filter(|p| p.as_os_str() != "-")
             .filter_map(|p| {
@@ -34,10 +35,11 @@ pub(crate) fn run(args: &SolveArgs) -> Result<Exit, CliError> {
                 ))
             })
             .flatten()
-            .collect();
-        let meshes: Vec<&Path> = meshes.iter().map(|p| p.as_path()).collect();
-        output::distinct(&meshes, &[("--output", args.output.as_deref())])?;
-    }
+            .collect(),
+        None => Vec::new(),
+    };
+    let meshes: Vec<&Path> = meshes.iter().map(|p| p.as_path()).collect();
+    output::distinct(&meshes, &[("--output", args.output.as_deref())])?;
     if args.fragment && !matches!(args.format, Format::Latex | Format::Html) {
         return Err(CliError::conflict(CliFault::Fragment));
     }
@@ -51,6 +53,24 @@ pub(crate) fn run(args: &SolveArgs) -> Result<Exit, CliError> {
         return Err(CliError::conflict(CliFault::JsonNoDocument));
     }
     let folder = args.output.as_deref().filter(|p| is_folder(p));
+    if let Some(dir) = folder {
+        // The file each input would be written to: no two inputs to one file, and no input (or
+        // mesh) replaced by one (`--format json ex/4.2.json -o ex/`), before anything is
+        // written.
+        let files: Vec<std::path::PathBuf> =
+            inputs.iter().map(|p| exercise_file(dir, p, args)).collect();
+        let shared = shared_outputs(&inputs, &files);
+        if !shared.is_empty() {
+            shared.iter().for_each(|e| error::print_in(e, args.lang));
+            return Ok(Exit::BadInput);
+        }
+        let outputs: Vec<(&str, Option<&Path>)> = files
+            .iter()
+            .map(|f| ("--output", Some(f.as_path())))
+            .collect();
+        output::distinct(&inputs, &outputs)?;
+        output::distinct(&meshes, &outputs)?;
+    }
     let mut failed = false;
     let mut docs = Vec::new();
     let mut explanations = Vec::new();
@@ -95,19 +115,20 @@ pub(crate) fn run(args: &SolveArgs) -> Result<Exit, CliError> {
     }
     match folder {
         Some(dir) => {
-            std::fs::create_dir_all(dir).map_err(|source| CliError::Write {
-                path: Some(dir.to_owned()),
-                source,
-            })?;
-            let ext = extension(args);
+            // Every file written before any is put in place: a write that fails leaves the
+            // folder as it was.
+            let mut batch = output::Batch::new();
+            batch.create_folder(dir)?;
             for (i, path) in solved.iter().enumerate() {
-                let file = dir.join(format!("{}.{ext}", stem(path)));
                 let out = match args.format {
                     Format::Json => report::json::documents_text(vec![docs[i].clone()]),
                     _ => write(args, &header, std::slice::from_ref(&explanations[i]), i + 1),
                 };
-                output::emit(Some(&file), &out)?;
+                batch.add(Some(&exercise_file(dir, path, args)), &mut |w| {
+                    w.write_all(out.as_bytes())
+                })?;
             }
+            batch.commit()?;
         }
         None => {
             let out = match args.format {
@@ -139,6 +160,46 @@ fn stem(path: &Path) -> String {
         || "problem".to_owned(),
         |s| s.to_string_lossy().into_owned(),
     )
+}
+
+/// The file in `dir` that the exercise `path` is written to (`DIR/4.2.txt` for 4.2.json).
+fn exercise_file(dir: &Path, path: &Path, args: &SolveArgs) -> std::path::PathBuf {
+    dir.join(format!("{}.{}", stem(path), extension(args)))
+}
+
+/// Each input whose file in the folder (`files`, in the inputs' order) has the name of an
+/// earlier input's, ignoring case (one file on macOS and Windows): the error naming both inputs
+/// and the file. Refused rather than told apart by a suffix (`4.2-2.txt`): a file is named
+/// after its input so that a reader finds 4.2's solution at 4.2.txt, and a suffix would say
+/// neither which 4.2 it is nor stay the same when the inputs are given in another order.
+fn shared_outputs(inputs: &[&Path], files: &[std::path::PathBuf]) -> Vec<CliError> {
+    let mut taken: std::collections::BTreeMap<String, usize> = Default::default();
+    let mut shared = Vec::new();
+    for (i, file) in files.iter().enumerate() {
+        let name = file
+            .file_name()
+            .map(|n| n.to_string_lossy().to_lowercase())
+            .unwrap_or_default();
+        let Some(&j) = taken.get(&name) else {
+            taken.insert(name, i);
+            continue;
+        };
+        let (first, second) = (inputs[j].to_owned(), inputs[i].to_owned());
+        shared.push(CliError::conflict(if files[j] == *file {
+            CliFault::SharedOutput {
+                first,
+                second,
+                output: file.clone(),
+            }
+        } else {
+            CliFault::SharedOutputCase {
+                first,
+                second,
+                output: files[j].clone(),
+            }
+        }));
+    }
+    shared
 }
 
 /// The layout of a document format (JSON is not a document layout: the caller writes it).

@@ -127,19 +127,25 @@ pub(crate) fn run(args: &TradeoffArgs) -> Result<Exit, CliError> {
     bar.finish_and_clear();
     let file = args.scene.display().to_string();
     let summary = report::Summary::new(&file, &outcome, args.metric, args.budget);
+    // The plot and the table, all or nothing: a plot that cannot be drawn or written keeps the
+    // old table, a table that cannot be written the old plot.
+    let mut batch = output::Batch::new();
     if let Some(plot) = &args.plot {
         let svg = tradeoff::plot::svg(&summary, args.lang).map_err(|error| CliError::Bug {
             flag: "--plot",
             fault: CliFault::PlotFailed { error },
         })?;
-        output::write_file(plot, svg.as_bytes())?;
+        batch.add(Some(plot), &mut |w| w.write_all(svg.as_bytes()))?;
     }
     let text = match args.format {
         TradeoffFormat::Text => report::text(&summary, args.lang),
         TradeoffFormat::Json => crate::report::json::pretty(&report::json(&summary)),
         TradeoffFormat::Csv => report::csv(&summary),
     };
-    output::emit(args.output.as_deref(), &text)?;
+    batch.add(args.output.as_deref(), &mut |w| {
+        w.write_all(text.as_bytes())
+    })?;
+    batch.commit()?;
     Ok(Exit::Success)
 }
 
