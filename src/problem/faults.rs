@@ -364,8 +364,20 @@ faults! {
         IorNotPositive { ior: String } =>
             "{ior} is not a positive number",
             "{ior} não é um número positivo";
-            fix "an index of refraction is > 0 (1 for air, 1.33 for water, 1.5 for glass)",
-                "um índice de refração é > 0 (1 para o ar, 1.33 para a água, 1.5 para o vidro)";
+            fix "an index of refraction is > 0: give one from 0.001 to 1000 (1 for air, 1.33 for \
+                 water, 1.5 for glass)",
+                "um índice de refração é > 0: dê um de 0.001 a 1000 (1 para o ar, 1.33 para a \
+                 água, 1.5 para o vidro)";
+        /// η > 0 outside the range Snell's law is computed in.
+        IorOutside { ior: String, min: String, max: String } =>
+            "{ior} is outside {min} to {max}",
+            "{ior} está fora de {min} a {max}";
+            fix "give an index of refraction from {min} to {max} (1 for air, 1.33 for water, 1.5 \
+                 for glass, 2.42 for diamond); outside it, η_r² in Snell's law \
+                 k = 1 − η_r²(1 − cos²θ_i) can overflow",
+                "dê um índice de refração de {min} a {max} (1 para o ar, 1.33 para a água, 1.5 \
+                 para o vidro, 2.42 para o diamante); fora dessa faixa, η_r² na lei de Snell \
+                 k = 1 − η_r²(1 − cos²θ_i) pode estourar";
         /// A coefficient k of `{"k": k, "color": …}` outside [0, 1].
         CoefficientOutside { k: String } =>
             "{k} is outside [0, 1]",

@@ -954,8 +954,24 @@ fn material<R: Real>(spec: &MaterialSpec, field: Field<'_>) -> Result<NamedMater
     })
 }
 
+/// The smallest index of refraction a material may give ([`MAX_IOR`] is the largest).
+pub(crate) const MIN_IOR: f64 = 1e-3;
+
+/// The largest index of refraction a material may give: 1000, far past any material's
+/// (diamond's is 2.42, germanium's about 4 in the infrared), and small enough that Snell's law
+/// cannot overflow in f32 or f64 (`core::secondary::Refraction::at`). With
+/// 10^-3 ≤ η ≤ 10^3 (η rounded to f32 stays inside to a relative 2^-24), η_r = η_i/η_t is η
+/// or 1/η, so 10^-3(1 − u) ≤ η_r ≤ 10^3(1 + u) for the precision's unit roundoff u ≤ 2^-24;
+/// sin²θ_i = max(1 − cos²θ_i, 0) lies in [0, 1] for unit N and V; so
+/// η_r² sin²θ_i ≤ 10^6(1 + u)^3, k = 1 − η_r² sin²θ_i ≥ −1.01e6, and each component of
+/// T = η_r V + (η_r cos θ_i − √k) N, with |V|, |N|, |cos θ_i| ≤ 1 + u and √k ≤ 1, is at most
+/// about 2·10^3 + 1: every quantity is within 10^7 of 0, against f32's largest 3.4·10^38,
+/// and no square underflows (η_r² ≥ 10^-6(1 − u)^3, f32's smallest normal is 1.2·10^-38).
+/// An η of 10^-300 or 10^200 gave k = −inf (the report printed `k = … = -inf`).
+pub(crate) const MAX_IOR: f64 = 1e3;
+
 /// O_t and η (docs/conventions.md, "Transmission"): both or neither, O_t a colour in [0, 1]
-/// and η a finite number > 0.
+/// and η a number from [`MIN_IOR`] to [`MAX_IOR`].
 fn transmission<R: Real>(
     spec: &MaterialSpec,
     field: &Field<'_>,
@@ -970,13 +986,23 @@ fn transmission<R: Real>(
         )),
         (Some(o_t), Some(eta)) => {
             let o_t = color::<R>(o_t, f("transmissivity"), ColorRange::Material)?;
-            let value = number::<R>(eta, f("ior"))?;
-            if eta <= 0.0 || value <= R::ZERO {
+            if eta <= 0.0 {
                 return Err(Invalid::of(
                     f("ior"),
                     MaterialFault::IorNotPositive { ior: show(eta) },
                 ));
             }
+            if !(MIN_IOR..=MAX_IOR).contains(&eta) {
+                return Err(Invalid::of(
+                    f("ior"),
+                    MaterialFault::IorOutside {
+                        ior: show(eta),
+                        min: show(MIN_IOR),
+                        max: show(MAX_IOR),
+                    },
+                ));
+            }
+            let value = number::<R>(eta, f("ior"))?;
             Ok(Some(Transmission { o_t, eta: value }))
         }
     }

@@ -463,6 +463,27 @@ fn a_transmissivity_without_its_index_or_a_bad_index_is_refused_naming_the_field
             "{err}"
         );
     }
+    // Positive but beyond 0.001 to 1000, where η_r² in Snell's law could overflow: refused
+    // for a render and for an explained pixel alike, in both precisions.
+    for (bad, extra) in [
+        ("1e-300", &[][..]),
+        ("1e200", &["--explain-pixel", "4,4"][..]),
+        ("1e30", &["--precision", "f32"][..]),
+    ] {
+        let (code, err) = render_file(
+            &with(
+                json!({ "ambient": [0.1, 0.1, 0.1], "transmissivity": [0.5, 0.5, 0.5],
+                          "ior": bad.parse::<f64>().unwrap() }),
+            ),
+            extra,
+        );
+        assert_eq!(code, 2, "{err}");
+        assert!(
+            err.contains("surfaces[0].material.ior")
+                && err.contains(&format!("{bad} is outside 0.001 to 1000")),
+            "{err}"
+        );
+    }
     let (code, err) = render_file(
         &with(
             json!({ "ambient": [0.1, 0.1, 0.1], "transmissivity": [0.5, -0.5, 0.5], "ior": 1.5 }),
