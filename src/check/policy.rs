@@ -32,6 +32,14 @@ pub use crate::problem::POLICY_FILE;
 /// by default: half (the arithmetic is right, the reading of the statement is not).
 pub const DEFAULT_READING_CREDIT: f64 = 0.5;
 
+/// The most points an exercise may be worth (a policy's `points` and `default_points`,
+/// `--points`). A sum phong makes of points (a student's points and maximum, a class's) adds
+/// at most one exercise per row of the class (at most 1,000,000 rows, `grade`'s limit) and
+/// per exercise a policy (at most 1 MiB) or `--points` names, a few million terms of at most
+/// 10^6 each: below 10^13 < 2^44, so finite, and exact at each step for every multiple of 2^-8
+/// (whole, half, quarter points), f64 holding every such multiple below 2^44 exactly.
+pub const MAX_POINTS: u64 = 1_000_000;
+
 /// How answers written without a scale whose numbers look like 8-bit values are judged.
 #[derive(
     Clone,
@@ -351,16 +359,21 @@ crate::messages! {
     /// Why a course policy (a file, or a flag over it) is refused.
     #[allow(missing_docs)]
     pub enum PolicyError {
-        /// An exercise's points that are not a number 0 or more (`points`: as Rust writes it).
-        BadPoints { exercise: String, points: String } =>
-            "points: the points of {exercise} ({points}) must be a number 0 or more",
-            "points: os pontos de {exercise} ({points}) devem ser um número 0 ou mais";
+        /// An exercise's points that are not a number from 0 to `max` ([`MAX_POINTS`];
+        /// `points`: as the file writes it).
+        BadPoints { exercise: String, points: String, max: u64 } =>
+            "points: the points of {exercise} ({points}) must be a number from 0 to {max} (at \
+             most {max}, so that every total of a class stays finite and exact)",
+            "points: os pontos de {exercise} ({points}) devem ser um número de 0 a {max} (no \
+             máximo {max}, para que todo total de uma turma fique finito e exato)";
         /// The points of the exercises the policy does not name, likewise.
-        BadDefault { points: String } =>
+        BadDefault { points: String, max: u64 } =>
             "default_points: the points of an exercise the policy does not name ({points}) must \
-             be a number 0 or more",
+             be a number from 0 to {max} (at most {max}, so that every total of a class stays \
+             finite and exact)",
             "default_points: os pontos de um exercício que a política não nomeia ({points}) \
-             devem ser um número 0 ou mais";
+             devem ser um número de 0 a {max} (no máximo {max}, para que todo total de uma \
+             turma fique finito e exato)";
         /// A reading credit outside 0 to 1.
         BadCredit { credit: String } =>
             "reading_credit: the reading credit is {credit}: it is a share of the points, 0 to 1 \
@@ -408,18 +421,20 @@ impl std::fmt::Display for PolicyError {
     }
 }
 
-/// Points must be finite and at least 0.
+/// Points must be a number from 0 to [`MAX_POINTS`].
 fn points_of(name: Option<&str>, p: f64) -> Result<f64, PolicyError> {
-    if p.is_finite() && p >= 0.0 {
+    if (0.0..=MAX_POINTS as f64).contains(&p) {
         Ok(p)
     } else {
-        let points = p.to_string();
+        let points = crate::problem::validate::show(p);
+        let max = MAX_POINTS;
         Err(match name {
             Some(exercise) => PolicyError::BadPoints {
                 exercise: exercise.to_owned(),
                 points,
+                max,
             },
-            None => PolicyError::BadDefault { points },
+            None => PolicyError::BadDefault { points, max },
         })
     }
 }
@@ -577,15 +592,53 @@ mod tests {
     }
 
     #[test]
+    fn an_exercise_is_worth_at_most_a_million_points() {
+        // 1e308 points for each of two exercises made every total inf.
+        let mut p = Policy::read_json(r#"{"points": {"4.1": 1000000}, "default_points": 1000000}"#)
+            .unwrap();
+        p.give_points("4.2=1000000").unwrap();
+        assert_eq!(p.points_of("4.2"), 1e6);
+        assert_eq!(p.points_of("4.9"), 1e6);
+        for file in [
+            r#"{"points": {"4.2": 1e308, "4.1": 1e308}}"#,
+            r#"{"points": {"4.1": 1000000.5}}"#,
+        ] {
+            let e = Policy::read_json(file).unwrap_err();
+            assert!(matches!(e, PolicyError::BadPoints { .. }), "{e}");
+        }
+        let e = Policy::read_json(r#"{"default_points": 1e7}"#).unwrap_err();
+        assert_eq!(
+            e,
+            PolicyError::BadDefault {
+                points: "10000000".into(),
+                max: 1_000_000
+            }
+        );
+        let e = Policy::default()
+            .give_points("4.2=1e308,4.1=1e308")
+            .unwrap_err();
+        assert_eq!(
+            e,
+            PolicyError::BadPoints {
+                exercise: "4.2".into(),
+                points: "1e308".into(),
+                max: 1_000_000
+            }
+        );
+    }
+
+    #[test]
     fn a_policys_errors_read_in_both_languages() {
         let e = Policy::read_json(r#"{"points": {"4.1": -1}}"#).unwrap_err();
         assert_eq!(
             e.to_string(),
-            "points: the points of 4.1 (-1) must be a number 0 or more"
+            "points: the points of 4.1 (-1) must be a number from 0 to 1000000 (at most \
+             1000000, so that every total of a class stays finite and exact)"
         );
         assert_eq!(
             e.text(Lang::Pt),
-            "points: os pontos de 4.1 (-1) devem ser um número 0 ou mais"
+            "points: os pontos de 4.1 (-1) devem ser um número de 0 a 1000000 (no máximo \
+             1000000, para que todo total de uma turma fique finito e exato)"
         );
         let e = Policy::read_json(r#"{"tolerance": {"255": -1}}"#).unwrap_err();
         assert!(e.to_string().starts_with("tolerance.255: "), "{e}");

@@ -30,6 +30,7 @@ pub struct Material<R: Real> {
 pub struct Transmission<R: Real> {
     /// O_t: an RGB colour, each component ≥ 0 (zero: no transmission ray, as with O_r).
     pub o_t: V3<R>,
-    /// η > 0, the inside's index of refraction.
+    /// η, the inside's index of refraction: 0.001 to 1000 once validated, so that Snell's law
+    /// cannot overflow (`problem::validate::MAX_IOR`).
     pub eta: R,
 }

@@ -173,6 +173,36 @@ faults! {
                  which stops the rays whose weight w = w_p·max(O) has fallen below it",
                 "dê um nível máximo de até 20, ou um peso mínimo maior (por exemplo 0.01), que \
                  para os raios cujo peso w = w_p·max(O) caiu abaixo dele";
+        /// An explained pixel whose samples' trees may hold more rays than an explanation may;
+        /// `most` samples would fit.
+        ExplanationTooLarge {
+            samples: u32, level: u32, weight: String, tree: RayCount, rays: RayCount, max: u64,
+            most: u64,
+        } =>
+            "{samples} samples of up to {tree} rays each (maximum level {level}, minimum weight \
+             {weight}) let the explanation hold {rays} rays, more than the {max} (2^13) an \
+             explanation may hold (each ray is solved and written out in full)",
+            "{samples} amostras de até {tree} raios cada (nível máximo {level}, peso mínimo \
+             {weight}) deixam a explicação ter {rays} raios, mais que os {max} (2^13) que uma \
+             explicação pode ter (cada raio é resolvido e escrito por inteiro)";
+            fix "give at most {most} samples per pixel (--samples), a lower maximum level \
+                 (--max-level) or a larger minimum weight (--min-weight)",
+                "dê até {most} amostras por pixel (--samples), um nível máximo menor \
+                 (--max-level) ou um peso mínimo maior (--min-weight)";
+        /// An explained pixel of which one sample's tree may hold more rays than an
+        /// explanation may.
+        ExplainedTreeTooLarge { level: u32, weight: String, tree: RayCount, max: u64 } =>
+            "maximum level {level} with minimum weight {weight} lets one sample's ray tree hold \
+             {tree} rays, more than the {max} (2^13) an explanation may hold (each ray is solved \
+             and written out in full)",
+            "o nível máximo {level} com o peso mínimo {weight} deixa a árvore de raios de uma \
+             amostra ter {tree} raios, mais que os {max} (2^13) que uma explicação pode ter \
+             (cada raio é resolvido e escrito por inteiro)";
+            fix "give a lower maximum level (--max-level) or a larger minimum weight \
+                 (--min-weight, e.g. 0.01), which stops the rays whose weight w = w_p·max(O) has \
+                 fallen below it",
+                "dê um nível máximo menor (--max-level) ou um peso mínimo maior (--min-weight, \
+                 por exemplo 0.01), que para os raios cujo peso w = w_p·max(O) caiu abaixo dele";
         /// A minimum weight that is negative or not finite.
         NotAWeight { weight: String } =>
             "{weight} is not a weight",
@@ -334,8 +364,20 @@ faults! {
         IorNotPositive { ior: String } =>
             "{ior} is not a positive number",
             "{ior} não é um número positivo";
-            fix "an index of refraction is > 0 (1 for air, 1.33 for water, 1.5 for glass)",
-                "um índice de refração é > 0 (1 para o ar, 1.33 para a água, 1.5 para o vidro)";
+            fix "an index of refraction is > 0: give one from 0.001 to 1000 (1 for air, 1.33 for \
+                 water, 1.5 for glass)",
+                "um índice de refração é > 0: dê um de 0.001 a 1000 (1 para o ar, 1.33 para a \
+                 água, 1.5 para o vidro)";
+        /// η > 0 outside the range Snell's law is computed in.
+        IorOutside { ior: String, min: String, max: String } =>
+            "{ior} is outside {min} to {max}",
+            "{ior} está fora de {min} a {max}";
+            fix "give an index of refraction from {min} to {max} (1 for air, 1.33 for water, 1.5 \
+                 for glass, 2.42 for diamond); outside it, η_r² in Snell's law \
+                 k = 1 − η_r²(1 − cos²θ_i) can overflow",
+                "dê um índice de refração de {min} a {max} (1 para o ar, 1.33 para a água, 1.5 \
+                 para o vidro, 2.42 para o diamante); fora dessa faixa, η_r² na lei de Snell \
+                 k = 1 − η_r²(1 − cos²θ_i) pode estourar";
         /// A coefficient k of `{"k": k, "color": …}` outside [0, 1].
         CoefficientOutside { k: String } =>
             "{k} is outside [0, 1]",

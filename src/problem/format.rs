@@ -327,10 +327,10 @@ pub struct MaterialSpec {
     /// spawns a transmission ray with colour O_t·C_t. Needs `ior`.
     #[serde(default)]
     pub transmissivity: Option<Triple>,
-    /// η > 0, the index of refraction of the surface's inside (the side its normal points away
-    /// from; the outside's is 1), for Snell's law. Given with `transmissivity`.
+    /// η, 0.001 to 1000, the index of refraction of the surface's inside (the side its normal
+    /// points away from; the outside's is 1), for Snell's law. Given with `transmissivity`.
     #[serde(default)]
-    #[schemars(extend("exclusiveMinimum" = 0))]
+    #[schemars(extend("minimum" = 0.001, "maximum" = 1000))]
     pub ior: Option<f64>,
 }
 

@@ -326,7 +326,8 @@ pub(crate) const MAX_TREE_RAYS: u64 = 1 << 20;
 /// largest smaller of the two of such a material). A ray of level d reached through i smaller
 /// children has weight ≤ HI^(d−1−i)·LO^i, and at most C(d−1, i) rays of level d are reached so:
 /// the bound counts those whose weight can exceed the minimum weight. Without such a material
-/// the tree is a chain, of at most `max_level` rays.
+/// the tree is a chain, one ray a level while its weight HI^(d−1) can exceed the minimum
+/// weight: the primary ray alone where no material reflects or transmits.
 pub(crate) fn tree_rays<R: Real>(problem: &Problem<R>, max_level: u32, min_weight: f64) -> u64 {
     let (mut hi, mut lo) = (0.0f64, 0.0f64);
     let mut branches = false;
@@ -341,7 +342,14 @@ pub(crate) fn tree_rays<R: Real>(problem: &Problem<R>, max_level: u32, min_weigh
         }
     }
     if !branches {
-        return u64::from(max_level);
+        if hi <= 0.0 {
+            return 1;
+        }
+        let (ln_hi, ln_min) = (hi.ln(), min_weight.ln());
+        let levels = (1..=max_level)
+            .take_while(|&d| d == 1 || min_weight <= 0.0 || f64::from(d - 1) * ln_hi > ln_min)
+            .count();
+        return levels as u64;
     }
     // In logarithms, so that no power underflows; a minimum weight of 0 lets every ray through.
     let (ln_hi, ln_lo, ln_min) = (hi.ln(), lo.ln(), min_weight.ln());
@@ -383,6 +391,45 @@ pub(crate) fn check_tree<R: Real>(
             weight: show(min_weight),
             rays: RayCount(rays),
             max: MAX_TREE_RAYS,
+        });
+    }
+    Ok(())
+}
+
+/// The most rays an explained pixel (`--explain-pixel`) may hold in all its samples (2^13).
+/// Each ray is solved and written out in full: measured on the glass scene, about 4 KB of text,
+/// 10 KB of JSON and 18 KB of HTML per ray, and while the document is laid out up to about
+/// 170 KB of memory per ray (Markdown, LaTeX, HTML). 8192 rays are then at most about 150 MB of
+/// output and 1.4 GB of memory, where a render's own bounds would let one pixel hold 4096
+/// samples of 2^20 rays each (terabytes). The bundled scenes at their own settings (one sample)
+/// hold at most 41 rays (the glass scene's tree; the others are chains of at most 8).
+pub(crate) const MAX_EXPLAINED_RAYS: u64 = 1 << 13;
+
+/// An explained pixel's samples within [`MAX_EXPLAINED_RAYS`] rays in all, each sample's tree
+/// counted as [`tree_rays`] bounds it with the problem's render settings: refused before
+/// anything is traced, rather than filling the memory and the disk.
+pub(crate) fn check_explanation<R: Real>(problem: &Problem<R>) -> Result<(), SettingFault> {
+    let s = &problem.render;
+    let (level, min_weight) = (s.max_level, s.min_weight.to_f64());
+    let tree = tree_rays(problem, level, min_weight);
+    if tree > MAX_EXPLAINED_RAYS {
+        return Err(SettingFault::ExplainedTreeTooLarge {
+            level,
+            weight: show(min_weight),
+            tree: RayCount(tree),
+            max: MAX_EXPLAINED_RAYS,
+        });
+    }
+    let rays = tree.saturating_mul(u64::from(s.samples));
+    if rays > MAX_EXPLAINED_RAYS {
+        return Err(SettingFault::ExplanationTooLarge {
+            samples: s.samples,
+            level,
+            weight: show(min_weight),
+            tree: RayCount(tree),
+            rays: RayCount(rays),
+            max: MAX_EXPLAINED_RAYS,
+            most: MAX_EXPLAINED_RAYS / tree.max(1),
         });
     }
     Ok(())
@@ -907,8 +954,24 @@ fn material<R: Real>(spec: &MaterialSpec, field: Field<'_>) -> Result<NamedMater
     })
 }
 
+/// The smallest index of refraction a material may give ([`MAX_IOR`] is the largest).
+pub(crate) const MIN_IOR: f64 = 1e-3;
+
+/// The largest index of refraction a material may give: 1000, far past any material's
+/// (diamond's is 2.42, germanium's about 4 in the infrared), and small enough that Snell's law
+/// cannot overflow in f32 or f64 (`core::secondary::Refraction::at`). With
+/// 10^-3 ≤ η ≤ 10^3 (η rounded to f32 stays inside to a relative 2^-24), η_r = η_i/η_t is η
+/// or 1/η, so 10^-3(1 − u) ≤ η_r ≤ 10^3(1 + u) for the precision's unit roundoff u ≤ 2^-24;
+/// sin²θ_i = max(1 − cos²θ_i, 0) lies in [0, 1] for unit N and V; so
+/// η_r² sin²θ_i ≤ 10^6(1 + u)^3, k = 1 − η_r² sin²θ_i ≥ −1.01e6, and each component of
+/// T = η_r V + (η_r cos θ_i − √k) N, with |V|, |N|, |cos θ_i| ≤ 1 + u and √k ≤ 1, is at most
+/// about 2·10^3 + 1: every quantity is within 10^7 of 0, against f32's largest 3.4·10^38,
+/// and no square underflows (η_r² ≥ 10^-6(1 − u)^3, f32's smallest normal is 1.2·10^-38).
+/// An η of 10^-300 or 10^200 gave k = −inf (the report printed `k = … = -inf`).
+pub(crate) const MAX_IOR: f64 = 1e3;
+
 /// O_t and η (docs/conventions.md, "Transmission"): both or neither, O_t a colour in [0, 1]
-/// and η a finite number > 0.
+/// and η a number from [`MIN_IOR`] to [`MAX_IOR`].
 fn transmission<R: Real>(
     spec: &MaterialSpec,
     field: &Field<'_>,
@@ -923,13 +986,23 @@ fn transmission<R: Real>(
         )),
         (Some(o_t), Some(eta)) => {
             let o_t = color::<R>(o_t, f("transmissivity"), ColorRange::Material)?;
-            let value = number::<R>(eta, f("ior"))?;
-            if eta <= 0.0 || value <= R::ZERO {
+            if eta <= 0.0 {
                 return Err(Invalid::of(
                     f("ior"),
                     MaterialFault::IorNotPositive { ior: show(eta) },
                 ));
             }
+            if !(MIN_IOR..=MAX_IOR).contains(&eta) {
+                return Err(Invalid::of(
+                    f("ior"),
+                    MaterialFault::IorOutside {
+                        ior: show(eta),
+                        min: show(MIN_IOR),
+                        max: show(MAX_IOR),
+                    },
+                ));
+            }
+            let value = number::<R>(eta, f("ior"))?;
             Ok(Some(Transmission { o_t, eta: value }))
         }
     }

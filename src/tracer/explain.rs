@@ -48,7 +48,9 @@ pub struct RayExplanation<R: Real> {
     pub solution: Option<Solution<R>>,
 }
 
-/// Explains pixel (x, y) of the problem's image, with the problem's render settings.
+/// Explains pixel (x, y) of the problem's image, with the problem's render settings: refused,
+/// before anything is traced, where its samples could hold more than
+/// [`crate::problem::validate::MAX_EXPLAINED_RAYS`] rays.
 pub fn explain_pixel<R: Real>(
     problem: &Problem<R>,
     camera: &Camera<R>,
@@ -56,6 +58,7 @@ pub fn explain_pixel<R: Real>(
     x: u32,
     y: u32,
 ) -> Result<PixelExplanation<R>, Invalid> {
+    crate::problem::validate::check_explanation(problem).map_err(|e| e.at("render"))?;
     let rays = CameraRays::new(camera);
     let tracer = Tracer { scene, problem };
     let n = problem.render.samples;

@@ -1134,3 +1134,82 @@ fn the_class_report_counts_each_slip_as_counted_by_hand() {
     }
     assert!(html.contains("30 alunos, 30 respostas"), "{html}");
 }
+
+#[test]
+fn points_beyond_a_million_are_refused_from_the_policy_and_the_flag_and_a_million_add_up() {
+    // 1e308 points each made a student's maximum 2e308 = inf: `--by-student` wrote `inf`,
+    // Gradescope `"score": null`. An exercise is worth at most 1,000,000 points.
+    let dir = exercises();
+    let out_dir = tempfile::tempdir().unwrap();
+    let input = out_dir.path().join("in.csv");
+    std::fs::write(
+        &input,
+        "student,exercise,answer\nann,4.1,0.5 0.7 0.3\nann,4.2,0 0 0\n",
+    )
+    .unwrap();
+    let by_student = out_dir.path().join("by-student.csv");
+    let run = |extra: &[&str]| {
+        phong()
+            .arg("grade")
+            .arg(&input)
+            .arg("--exercises")
+            .arg(dir.path())
+            .arg("--by-student")
+            .arg(&by_student)
+            .args(extra)
+            .output()
+            .unwrap()
+    };
+    let policy = dir.path().join("course-policy.json");
+    std::fs::write(&policy, r#"{"points": {"4.2": 1e308, "4.1": 1e308}}"#).unwrap();
+    for (extra, says) in [
+        (
+            &[][..],
+            [
+                "course-policy.json: points: the points of 4.1 (1e308)",
+                "must be a number from 0 to 1000000",
+            ],
+        ),
+        (
+            &["--lang", "pt"][..],
+            [
+                "course-policy.json: points: os pontos de 4.1 (1e308)",
+                "devem ser um número de 0 a 1000000",
+            ],
+        ),
+    ] {
+        let out = run(extra);
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(2), "{err}");
+        assert!(says.iter().all(|s| err.contains(s)), "{says:?} in {err}");
+    }
+    std::fs::write(&policy, r#"{"default_points": 1000000.5}"#).unwrap();
+    let out = run(&[]);
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{err}");
+    assert!(
+        err.contains("course-policy.json: default_points: ")
+            && err.contains("(1000000.5) must be a number from 0 to 1000000"),
+        "{err}"
+    );
+    std::fs::remove_file(&policy).unwrap();
+    let out = run(&["--points", "4.2=1e308,4.1=1e308"]);
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{err}");
+    assert!(
+        err.contains("--points: points: the points of 4.2 (1e308)")
+            && err.contains("must be a number from 0 to 1000000"),
+        "{err}"
+    );
+    assert!(!by_student.exists());
+    // At the most, both right: 1,000,000 + 1,000,000 = 2,000,000 of 2,000,000.
+    let out = run(&["--points", "4.1=1000000,4.2=1000000"]);
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let totals = std::fs::read_to_string(&by_student).unwrap();
+    assert!(totals.contains("ann,2000000,2000000,"), "{totals}");
+}

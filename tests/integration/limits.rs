@@ -169,6 +169,113 @@ fn huge_counts_on_the_command_line_are_refused_with_their_range() {
 }
 
 #[test]
+fn an_explained_pixel_that_could_hold_too_many_rays_is_refused_before_anything_is_written() {
+    // Four facing planes that reflect and transmit 0.9 (issue: the explanation grew to 23 GB).
+    // The camera first looks along the planes, so the pixel's ray misses them all and a run
+    // that is let through is cheap: the bound is on what the settings let the trees hold.
+    // Minimum weight 0, every ray spawns two: level 14 lets one sample's tree hold
+    // 2^14 − 1 = 16383 rays, more than the 8192 (2^13) an explanation may hold.
+    let dir = TempDir::new().unwrap();
+    let m = json!({ "ambient": [0.1, 0.1, 0.1], "diffuse": [0.3, 0.3, 0.3],
+                    "specular": [0.2, 0.2, 0.2], "shininess": 5,
+                    "reflectivity": [0.9, 0.9, 0.9], "transmissivity": [0.9, 0.9, 0.9],
+                    "ior": 1 });
+    let mut s = json!({
+        "materials": { "G": m },
+        "lights": [{ "type": "ambient", "color": [0.2, 0.2, 0.2] },
+                   { "type": "point", "position": [0, 0, 0.5], "color": [1, 1, 1], "falloff": 0 }],
+        "surfaces": [
+            { "type": "plane", "point": [0, 0, -1], "normal": [0, 0, 1], "material": "G" },
+            { "type": "plane", "point": [0, 0, 1], "normal": [0, 0, -1], "material": "G" },
+            { "type": "plane", "point": [0, 0, -2], "normal": [0, 0, 1], "material": "G" },
+            { "type": "plane", "point": [0, 0, 2], "normal": [0, 0, -1], "material": "G" }
+        ],
+        "camera": { "eye": [0, 0, 0], "look_at": [1, 0, 0], "fov": 30, "width": 1, "height": 1 },
+        "render": { "max_level": 5, "min_weight": 0 }
+    });
+    let along = scene_file(&dir, &s);
+    let out = dir.path().join("out.txt");
+    let explain = |scene: &Path, settings: &[&str]| {
+        let mut cmd = phong();
+        cmd.arg("render")
+            .arg(scene)
+            .args(["--explain-pixel", "0,0", "-o"])
+            .arg(&out)
+            .args(settings);
+        cmd
+    };
+    refused(
+        &mut explain(&along, &["--max-level", "14"]),
+        &[
+            "--explain-pixel",
+            "maximum level 14 with minimum weight 0",
+            "16383 rays",
+            "8192 (2^13)",
+            "--min-weight",
+        ],
+    );
+    assert!(!out.exists());
+    // Level 13 holds 8191: explained.
+    explain(&along, &["--max-level", "13"]).assert().success();
+    std::fs::remove_file(&out).unwrap();
+    // The issue's own settings, the camera looking into the planes: one sample's tree alone
+    // may hold 2^20 − 1 = 1048575 rays, so no number of samples is small enough.
+    s["camera"]["look_at"] = json!([0.1, 0, -1]);
+    let into = write(&dir, "into.json", &s.to_string());
+    let issue = [
+        "--max-level",
+        "20",
+        "--min-weight",
+        "0",
+        "--samples",
+        "4096",
+    ];
+    let err = refused(
+        &mut explain(&into, &issue),
+        &[
+            "--explain-pixel",
+            "maximum level 20 with minimum weight 0",
+            "1048575 rays, more than the 8192 (2^13)",
+        ],
+    );
+    assert!(
+        err.contains("--max-level") && err.contains("--min-weight") && !err.contains("--samples"),
+        "{err}"
+    );
+    // Level 10: 2^10 − 1 = 1023 rays a sample, 4096·1023 = 4190208 in all; 8·1023 = 8184 fit.
+    let ten = [
+        "--max-level",
+        "10",
+        "--min-weight",
+        "0",
+        "--samples",
+        "4096",
+    ];
+    refused(
+        &mut explain(&into, &ten),
+        &[
+            "--explain-pixel",
+            "4096 samples of up to 1023 rays each",
+            "4190208 rays",
+            "at most 8 samples per pixel (--samples)",
+            "--max-level",
+            "--min-weight",
+        ],
+    );
+    // In Portuguese too.
+    refused(
+        &mut explain(&into, &[&ten[..], &["--lang", "pt"]].concat()),
+        &[
+            "--explain-pixel",
+            "4096 amostras de até 1023 raios cada",
+            "que uma explicação pode ter",
+            "dê até 8 amostras por pixel (--samples)",
+        ],
+    );
+    assert!(!out.exists());
+}
+
+#[test]
 fn a_huge_level_in_the_file_is_refused_naming_the_field() {
     let dir = TempDir::new().unwrap();
     let mut s = small_scene();

@@ -343,3 +343,98 @@ fn a_yes_or_no_step_refuses_a_number_with_a_fix() {
         "{err}"
     );
 }
+
+/// `phong solve` of a problem given as text, with `extra` arguments: its exit code, output and
+/// error.
+fn solve_binary(text: &str, extra: &[&str]) -> (i32, String, String) {
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("p.json");
+    std::fs::write(&path, text).unwrap();
+    let out = support::phong()
+        .arg("solve")
+        .arg(&path)
+        .args(extra)
+        .output()
+        .unwrap();
+    (
+        out.status.code().unwrap_or(-1),
+        String::from_utf8_lossy(&out.stdout).into_owned(),
+        String::from_utf8_lossy(&out.stderr).into_owned(),
+    )
+}
+
+#[test]
+fn an_index_of_refraction_outside_0_001_to_1000_is_refused_and_its_bounds_give_a_finite_k() {
+    // η_r is 1/η entering and η leaving, and k = 1 − η_r²(1 − cos²θ_i): η = 1e-300 entering
+    // (the exercise's ray) makes η_r² = 1e600, beyond f64, and k = −inf, as does η = 1e200
+    // leaving; in f32 η = 1e30 leaving is enough (1e60 > 3.4e38).
+    let exercise = std::fs::read_to_string(EXERCISE).unwrap();
+    let with = |text: &str, eta: &str| {
+        let changed = text.replace("\"ior\": 1.5", &format!("\"ior\": {eta}"));
+        assert_ne!(changed, text);
+        changed
+    };
+    let h = std::f64::consts::FRAC_1_SQRT_2;
+    // From below z = 0 along (1, 0, 1)/√2: the ray leaves the glass at 45°.
+    let leaving = plane_problem([-1.0, 0.0, -1.0], [h, 0.0, h], 2, 0.1);
+    let entering = plane_problem([-1.0, 0.0, 1.0], [h, 0.0, -h], 2, 0.1);
+    for (text, eta, extra, field) in [
+        (&exercise, "1e-300", &[][..], "materials.G.ior"),
+        (
+            &exercise,
+            "1e-300",
+            &["--format", "json"][..],
+            "materials.G.ior",
+        ),
+        (&leaving, "1e200", &[][..], "materials.G.ior"),
+        (
+            &leaving,
+            "1e30",
+            &["--precision", "f32"][..],
+            "materials.G.ior",
+        ),
+        (&entering, "0.000999", &[][..], "materials.G.ior"),
+        (&leaving, "1000.001", &[][..], "materials.G.ior"),
+    ] {
+        let (code, out, err) = solve_binary(&with(text, eta), extra);
+        assert_eq!(code, 2, "η = {eta}: {out}{err}");
+        assert!(!out.contains("inf"), "η = {eta}: {out}");
+        for says in [
+            "p.json",
+            field,
+            &format!("{eta} is outside 0.001 to 1000"),
+            "Fix: give an index of refraction from 0.001 to 1000",
+        ] {
+            assert!(err.contains(says), "η = {eta}: {says:?} in {err}");
+        }
+    }
+    let (code, _, err) = solve_binary(&with(&exercise, "1e-300"), &["--lang", "pt"]);
+    assert_eq!(code, 2, "{err}");
+    assert!(
+        err.contains("1e-300 está fora de 0.001 a 1000")
+            && err.contains("dê um índice de refração de 0.001 a 1000"),
+        "{err}"
+    );
+    // At the bounds, at 45° (sin²θ_i = 1/2): η = 1000 leaving and η = 0.001 entering both give
+    // η_r = 1000, so k = 1 − 10^6/2 = −499999: total internal reflection, k finite in both
+    // precisions (f32 rounds 0.001 and 1/√2, a relative error of a few 1e-7 in k).
+    for (text, eta) in [(&leaving, "1000"), (&entering, "0.001")] {
+        for (precision, tolerance) in [(Precision::F64, 1e-9), (Precision::F32, 1e-6)] {
+            let dir = tempfile::tempdir().unwrap();
+            let path = dir.path().join("p.json");
+            std::fs::write(&path, with(text, eta)).unwrap();
+            let doc = solve_json(&path, precision).expect("the problem solves");
+            let t = &doc["secondary_rays"]["transmission"];
+            let k = t["k"].as_f64().expect("k is a number");
+            assert!(
+                ((k + 499_999.0) / 499_999.0).abs() <= tolerance,
+                "η = {eta}, {precision:?}: k = {k}"
+            );
+            assert_eq!(t["total_internal_reflection"], true);
+            assert_eq!(t["traced"], false);
+        }
+        let (code, out, err) = solve_binary(&with(text, eta), &["--precision", "f32"]);
+        assert_eq!(code, 0, "{err}");
+        assert!(!out.contains("inf") && !out.contains("NaN"), "{out}");
+    }
+}

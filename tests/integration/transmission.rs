@@ -267,6 +267,63 @@ fn a_tree_that_could_exceed_two_to_the_twenty_rays_is_refused_before_tracing() {
 }
 
 #[test]
+fn an_explained_pixel_that_could_hold_more_than_two_to_the_thirteen_rays_is_refused() {
+    // The bound is on what the settings let the samples' trees hold, so the camera looks away
+    // from the sphere: each sample's primary ray misses, and an explanation let through is
+    // cheap. O_r = O_t = 1, minimum weight 0: a tree of maximum level L may hold
+    // 1 + 2 + … + 2^(L−1) = 2^L − 1 rays, so one sample at level 13 holds 8191 ≤ 2^13 = 8192,
+    // one at level 14 16383, and two at level 13 16382 (one sample would fit). A mirror alone
+    // (O_r = 1, no O_t) makes a chain of at most L rays: 2048 samples at level 4 are 8192
+    // rays, 2049 are 8196 (2048 would fit). With O_r = 0.5 and minimum weight 0.1 the chain's
+    // weights are 1, 0.5, 0.25, 0.125, then 0.0625 ≤ 0.1: 4 rays whatever the level. A matte
+    // sphere spawns nothing: one ray a sample, so 4096 samples at level 1000 are 4096 rays.
+    let glass = json!({ "ambient": [0.1, 0.1, 0.1], "reflectivity": [1, 1, 1],
+                        "transmissivity": [1, 1, 1], "ior": 1.5 });
+    let mirror = json!({ "ambient": [0.1, 0.1, 0.1], "reflectivity": [1, 1, 1] });
+    let half = json!({ "ambient": [0.1, 0.1, 0.1], "reflectivity": [0.5, 0.5, 0.5] });
+    let matte = json!({ "ambient": [0.1, 0.1, 0.1] });
+    let explain = |material: &Value, level: u32, min_weight: f64, samples: u32| {
+        let mut s = scene(
+            json!({ "type": "sphere", "center": [0, 0, 0], "radius": 1 }),
+            material.clone(),
+            [0.0; 3],
+            json!({ "max_level": level, "min_weight": min_weight, "samples": samples }),
+        );
+        s["camera"] = json!({ "eye": [0, 0, 5], "look_at": [0, 0, 10], "fov": 40,
+                              "width": 1, "height": 1 });
+        let p = problem(&s);
+        let camera = p.camera.expect("a camera");
+        let scene = Scene::new(&p);
+        phong::tracer::explain_pixel(&p, &camera, &scene, 0, 0)
+            .map(|e| e.samples.len())
+            .map_err(|e| format!("{}: {} Fix: {}", e.field, e.message(), e.fix()))
+    };
+    assert_eq!(explain(&glass, 13, 0.0, 1), Ok(1));
+    let e = explain(&glass, 14, 0.0, 1).expect_err("refused");
+    assert!(
+        e.contains("16383 rays") && e.contains("8192 (2^13)") && e.contains("--max-level"),
+        "{e}"
+    );
+    let e = explain(&glass, 13, 0.0, 2).expect_err("refused");
+    assert!(
+        e.contains("16382 rays") && e.contains("at most 1 samples per pixel"),
+        "{e}"
+    );
+    assert_eq!(explain(&mirror, 4, 0.0, 2048), Ok(2048));
+    let e = explain(&mirror, 4, 0.0, 2049).expect_err("refused");
+    assert!(
+        e.contains("2049 samples of up to 4 rays each")
+            && e.contains("8196 rays")
+            && e.contains("at most 2048 samples per pixel (--samples)"),
+        "{e}"
+    );
+    assert_eq!(explain(&half, 1000, 0.1, 2048), Ok(2048));
+    let e = explain(&half, 1000, 0.1, 2049).expect_err("refused");
+    assert!(e.contains("2049 samples of up to 4 rays each"), "{e}");
+    assert_eq!(explain(&matte, 1000, 0.0, 4096), Ok(4096));
+}
+
+#[test]
 fn an_explained_pixel_through_the_glass_sphere_shows_its_tree() {
     let scene = concat!(env!("CARGO_MANIFEST_DIR"), "/scenes/glass.json");
     let out = support::phong()
@@ -403,6 +460,27 @@ fn a_transmissivity_without_its_index_or_a_bad_index_is_refused_naming_the_field
         assert_eq!(code, 2, "{err}");
         assert!(
             err.contains("ior") && err.contains("not a positive number"),
+            "{err}"
+        );
+    }
+    // Positive but beyond 0.001 to 1000, where η_r² in Snell's law could overflow: refused
+    // for a render and for an explained pixel alike, in both precisions.
+    for (bad, extra) in [
+        ("1e-300", &[][..]),
+        ("1e200", &["--explain-pixel", "4,4"][..]),
+        ("1e30", &["--precision", "f32"][..]),
+    ] {
+        let (code, err) = render_file(
+            &with(
+                json!({ "ambient": [0.1, 0.1, 0.1], "transmissivity": [0.5, 0.5, 0.5],
+                          "ior": bad.parse::<f64>().unwrap() }),
+            ),
+            extra,
+        );
+        assert_eq!(code, 2, "{err}");
+        assert!(
+            err.contains("surfaces[0].material.ior")
+                && err.contains(&format!("{bad} is outside 0.001 to 1000")),
             "{err}"
         );
     }

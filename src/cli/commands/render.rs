@@ -42,6 +42,11 @@ fn render<R: Real>(args: &RenderArgs) -> Result<Exit, CliError> {
         .with(&super::overrides(&args.settings))
         .map_err(CliError::setting)?;
     check_work(&problem, &camera)?;
+    if args.explain_pixel.is_some() {
+        // Before the scene is built: an explanation too large to hold is refused at once.
+        crate::problem::validate::check_explanation(&problem)
+            .map_err(|e| CliError::setting(e.at("explain_pixel")))?;
+    }
     // With --explain-pixel, --output names the explanation's file, whatever its extension;
     // otherwise the image's, whose format it (or --image-format) says. Checked before the build.
     let image_format = match (&args.output, args.image_format) {
