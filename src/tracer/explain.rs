@@ -49,8 +49,8 @@ pub struct RayExplanation<R: Real> {
 }
 
 /// Explains pixel (x, y) of the problem's image, with the problem's render settings: refused,
-/// before anything is traced, where its samples could hold more than
-/// [`crate::problem::validate::MAX_EXPLAINED_RAYS`] rays.
+/// before anything is traced, where its samples could hold more than 2^13 rays in all
+/// (`problem::validate::MAX_EXPLAINED_RAYS`).
 pub fn explain_pixel<R: Real>(
     problem: &Problem<R>,
     camera: &Camera<R>,
