@@ -567,10 +567,7 @@ fn an_output_that_cannot_be_written_stops_before_anything_is_and_says_no_graded_
     // QA finding 8: the folders of -o, --summary and --by-student are checked before anything
     // is written, so a bad --summary leaves no report behind; and after a write that fails,
     // no "graded N rows" line reads as success.
-    let dir = exercises();
-    let work = tempfile::tempdir().unwrap();
-    let input = work.path().join("in.csv");
-    std::fs::write(&input, submissions()).unwrap();
+    let (dir, work, input) = a_class_run();
     let run = |args: &[&str]| {
         let out = phong()
             .current_dir(work.path())
@@ -638,6 +635,15 @@ fn an_output_that_cannot_be_written_stops_before_anything_is_and_says_no_graded_
     );
 }
 
+/// A run's exercises, its working folder and the class's submissions in it (`in.csv`).
+fn a_class_run() -> (tempfile::TempDir, tempfile::TempDir, std::path::PathBuf) {
+    let dir = exercises();
+    let work = tempfile::tempdir().unwrap();
+    let input = work.path().join("in.csv");
+    std::fs::write(&input, submissions()).unwrap();
+    (dir, work, input)
+}
+
 /// Files of a folder whose names start with `.phong-` (temporary files left behind).
 fn temporary_files(dir: &Path) -> Vec<String> {
     std::fs::read_dir(dir)
@@ -654,10 +660,7 @@ fn temporary_files(dir: &Path) -> Vec<String> {
 /// temporary file is left, and no "graded" line is said.
 #[test]
 fn an_output_that_fails_leaves_every_other_output_as_it_was() {
-    let dir = exercises();
-    let work = tempfile::tempdir().unwrap();
-    let input = work.path().join("in.csv");
-    std::fs::write(&input, submissions()).unwrap();
+    let (dir, work, input) = a_class_run();
     std::fs::create_dir(work.path().join("taken")).unwrap();
     let flags = [
         ("-o", "r.csv"),
@@ -700,10 +703,7 @@ fn an_output_that_fails_leaves_every_other_output_as_it_was() {
 #[cfg(target_os = "linux")]
 #[test]
 fn a_device_that_fails_keeps_the_files_of_the_run_as_they_were() {
-    let dir = exercises();
-    let work = tempfile::tempdir().unwrap();
-    let input = work.path().join("in.csv");
-    std::fs::write(&input, submissions()).unwrap();
+    let (dir, work, input) = a_class_run();
     let report = work.path().join("r.csv");
     std::fs::write(&report, "OLD\n").unwrap();
     let out = phong()
@@ -728,10 +728,7 @@ fn a_device_that_fails_keeps_the_files_of_the_run_as_they_were() {
 /// exercises' folder, a student named "4.2") is refused, the exercise kept.
 #[test]
 fn a_gradescope_folder_is_all_or_nothing_and_never_replaces_an_exercise() {
-    let dir = exercises();
-    let work = tempfile::tempdir().unwrap();
-    let input = work.path().join("in.csv");
-    std::fs::write(&input, submissions()).unwrap();
+    let (dir, work, input) = a_class_run();
     std::fs::create_dir(work.path().join("taken")).unwrap();
     let folder = work.path().join("gs").join("out");
     let out = phong()
