@@ -224,6 +224,13 @@ crate::messages! {
              behind the ray's origin: the sign of {given} is reversed",
             "a interseção do raio invertido (O − tD, t > 0), que ao longo de D está em \
              t = {along}, atrás da origem do raio: o sinal de {given} está trocado";
+        /// A positive t given in the reading of the hit behind the origin, which is the ray
+        /// reversed: its t is along −D, where the line's t along D is −t.
+        ReversedRayReading { given: Num, along: Num } =>
+            "in that reading the ray is reversed (O − tD): it meets the surface at t = {given} \
+             along −D, which is t = {along} along D",
+            "nessa leitura o raio é invertido (O − tD): ele encontra a superfície em \
+             t = {given} ao longo de −D, que é t = {along} ao longo de D";
     }
 }
 

@@ -808,17 +808,12 @@ impl StepsExpected {
             .readings
             .iter()
             .map(|r| {
-                (
-                    r.code,
-                    r.code.likely_intended(),
-                    Source {
-                        quantities: quantities(
-                            problem,
-                            r.intersection.as_ref(),
-                            Some(&r.evaluation),
-                        ),
-                    },
-                )
+                let mut quantities =
+                    quantities(problem, r.intersection.as_ref(), Some(&r.evaluation));
+                if r.code == ReadingCode::LineBehindOrigin {
+                    reverse_t(&mut quantities);
+                }
+                (r.code, r.code.likely_intended(), Source { quantities })
             })
             .collect();
         let slips = slips::single_solutions(problem)
@@ -965,6 +960,15 @@ pub struct StepsJudged {
     pub first_wrong: Option<usize>,
     /// Exit 0: every step right, or right in the likely intended reading without `--strict`.
     pub accepted: bool,
+}
+
+/// The reading of the line's hit behind the ray's origin is the ray reversed (O − tD), whose
+/// hit is in front of it: the reading's t is that ray's, −t of the line's t along D (which the
+/// problem as written has). P and the rest are the same point's either way.
+fn reverse_t(quantities: &mut [Quantity]) {
+    for q in quantities.iter_mut().filter(|q| q.name.name == "t") {
+        q.value = q.value.negated();
+    }
 }
 
 /// Judges the steps against a solved problem; a step that names a quantity this problem does
@@ -1165,6 +1169,17 @@ pub fn step_message(s: &JudgedStep, lang: Lang) -> String {
             parts.push(p);
             if let Some(c) = s.reading {
                 parts.push(messages::step_reading(c, lang));
+                if let (ReadingCode::LineBehindOrigin, "t", Value::Scalar(t)) =
+                    (c, s.given.name.name, s.given.value)
+                {
+                    parts.push(
+                        messages::Feedback::ReversedRayReading {
+                            given: crate::text::Num(t),
+                            along: crate::text::Num(-t),
+                        }
+                        .text(lang),
+                    );
+                }
             }
         }
     }

@@ -315,20 +315,40 @@ fn two_generated_ambient_lights_are_named_apart() {
 
 // Issue 28, item 4. 4.3's ray, O = (8, 4, 6), D = (0.8, 0, −0.6), meets the plane
 // x + y + z = 0 where (O + tD)·(1, 1, 1) = 18 + 0.2 t = 0: t = −90, behind the origin. The
-// ray reversed, O − tD, meets it at t = +90. A student who gives t = 90 took that reversed
-// ray's hit: the message says so and that the sign is reversed, never "t < 0" of a positive t.
+// ray reversed, O − tD, meets it at t = +90. That reversed ray is the likely intended reading
+// (the answer (0.524, 0.027, 0) is its colour): a student who gives t = 90 took its hit, which
+// is right in that reading, as the point P = (−64, 4, 60) is; the message says t = 90 is along
+// −D (−90 along D), and never "t < 0" of a positive t. `--strict` refuses it, as any reading.
 #[test]
-fn a_positive_t_of_the_reversed_ray_is_told_its_sign_is_reversed() {
+fn a_positive_t_of_the_reversed_ray_is_the_intended_readings() {
     let (code, out, _) = run(&["check", "exercises/4.3.json", "--step", "t=90"]);
-    assert_eq!(code, 1, "{out}");
+    assert_eq!(code, 0, "{out}");
     assert!(
         out.contains(
-            "it is what this slip gives: the hit of the ray reversed (O − tD, t > 0), which \
-             along D is at t = -90, behind the ray's origin: the sign of 90 is reversed"
+            "t          = 90  wrong as written, right in the likely intended reading (O + tD \
+             on the surface): the problem as written gives -90 (the sign differs); yours is \
+             the value of the likely intended reading \"the line's hit behind the ray's \
+             origin\"; in that reading the ray is reversed (O − tD): it meets the surface at \
+             t = 90 along −D, which is t = -90 along D\n"
         ),
         "{out}"
     );
     assert!(!out.contains("t < 0"), "{out}");
+    let (code, pt, _) = run(&[
+        "check",
+        "exercises/4.3.json",
+        "--step",
+        "t=90",
+        "--lang",
+        "pt",
+    ]);
+    assert_eq!(code, 0, "{pt}");
+    assert!(
+        pt.contains("em t = 90 ao longo de −D, que é t = -90 ao longo de D"),
+        "{pt}"
+    );
+    let (code, out, _) = run(&["check", "exercises/4.3.json", "--step", "t=90", "--strict"]);
+    assert_eq!(code, 1, "{out}");
     let (_, json, _) = run(&[
         "check",
         "exercises/4.3.json",
@@ -338,7 +358,19 @@ fn a_positive_t_of_the_reversed_ray_is_told_its_sign_is_reversed() {
         "json",
     ]);
     assert!(!json.contains("t < 0"), "{json}");
-    assert!(json.contains("the sign of 90 is reversed"), "{json}");
+    let doc: serde_json::Value = serde_json::from_str(&json).unwrap();
+    let step = &doc["steps"]["steps"][0];
+    assert_eq!(step["verdict"], "reading", "{json}");
+    assert_eq!(step["reading"], "line_behind_origin", "{json}");
+}
+
+// A negative t other than the line's is still a slip's where one gives it; 4.3's t = −90 is the
+// problem as written (the line's t along D): right.
+#[test]
+fn the_lines_own_t_is_right_as_written() {
+    let (code, out, _) = run(&["check", "exercises/4.3.json", "--step", "t=-90"]);
+    assert_eq!(code, 0, "{out}");
+    assert!(out.contains("t          = -90  right (O + tD on the surface)\n"), "{out}");
 }
 
 // Black where the ray hits nothing (4.3, as above) is the background: the answer is "none".
