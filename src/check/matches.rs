@@ -107,7 +107,8 @@ pub(crate) fn matches(v: &Verdict, tolerance: f64, layout: Layout) -> Vec<Match<
     if let Some(reading) = &v.reading {
         items.push(Match::Reading { reading, likely });
     }
-    if likely {
+    // (Under `--strict` the expected line is the problem as written's already.)
+    if likely && (layout == Layout::Sentence || v.compared_reading.is_some()) {
         if let Some(written) = &v.written {
             items.push(Match::AsWritten(written));
         }

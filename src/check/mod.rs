@@ -365,8 +365,13 @@ pub(crate) fn judge(expected: &Expected, answer: &Answer, tolerance: f64, strict
             if r.likely_intended {
                 v.kind = VerdictKind::Reading;
                 v.accepted = !strict;
-                v.comparison = Some(c);
-                v.compared_reading = Some(r.code);
+                // Under `--strict` only the problem as written is right: the answer stays
+                // compared with it (or with nothing, where it has no colour), not with the
+                // reading it matches.
+                if !strict {
+                    v.comparison = Some(c);
+                    v.compared_reading = Some(r.code);
+                }
                 return v;
             }
         }
