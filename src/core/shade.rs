@@ -655,6 +655,33 @@ struct ScalarSide<'a, R: Real, Vis, Rec, F> {
     literal_diffuse: V3<R>,
     literal_specular: V3<R>,
     literal_defined: bool,
+    /// Σ of the literal terms' sizes (|term| per channel) and their number: the scale of the
+    /// literal total's rounding error ([`zero_within_rounding`]).
+    literal_size: V3<R>,
+    literal_terms: u32,
+}
+
+/// The literal total of Eq. 4.16 with each channel that is zero within its rounding error
+/// made 0. Its terms have both signs (an ungated diffuse or specular term is negative), so
+/// where they cancel, as in (0.1 + 0.56 + 0.2 − 0.7 − 0.16) = 0, the computed sum is noise
+/// (−2.8·10⁻¹⁷ in f64) that a report would print as a value. A sum of n terms is off by at
+/// most γ_{n−1}·Σ|tᵢ| (Higham, *Accuracy and Stability of Numerical Algorithms*, §4.2), and
+/// each term carries the rounding of its own few products and of the vectors it came from:
+/// 16 + n units of roundoff of Σ|tᵢ| bounds both for the products of Eq. 4.1–4.10. A channel
+/// within that of zero has no digit the report could show; where nothing is gated every term
+/// is ≥ 0, Σ|tᵢ| is the total itself, and no channel changes (the two totals stay equal). An
+/// infinite term leaves its channel as computed (the solver refuses it).
+fn zero_within_rounding<R: Real>(total: V3<R>, size: V3<R>, terms: u32) -> V3<R> {
+    let units = R::from_f64(16.0 + f64::from(terms)) * R::EPSILON;
+    let [t, s] = [total.to_array(), size.to_array()];
+    let channel = |i: usize| {
+        if s[i].is_finite() && t[i].abs() <= units * s[i] {
+            R::ZERO
+        } else {
+            t[i]
+        }
+    };
+    V3::<R>::new(channel(0), channel(1), channel(2))
 }
 
 impl<R: Real, Vis: Visibility<R>, Rec: Recorder<R>, F: Formulas> LaneSide<R>
@@ -694,6 +721,8 @@ impl<R: Real, Vis: Visibility<R>, Rec: Recorder<R>, F: Formulas> LaneSide<R>
         };
         if let Some(d) = diffuse_literal {
             self.literal_diffuse += d;
+            self.literal_size += d.abs();
+            self.literal_terms += 1;
         }
         let f = self.formulas;
         let specular = match (self.m.o_s, at.v, t.specular) {
@@ -733,7 +762,11 @@ impl<R: Real, Vis: Visibility<R>, Rec: Recorder<R>, F: Formulas> LaneSide<R>
         };
         if Rec::DETAIL && self.m.o_s.is_some() && at.v.is_some() {
             match specular.literal {
-                Some(t) => self.literal_specular += t,
+                Some(t) => {
+                    self.literal_specular += t;
+                    self.literal_size += t.abs();
+                    self.literal_terms += 1;
+                }
                 None => self.literal_defined = false,
             }
         }
@@ -769,6 +802,8 @@ pub(crate) fn shade_with<R: Real, Rec: Recorder<R>, Vis: Visibility<R>, F: Formu
         literal_diffuse: V3::<R>::ZERO,
         literal_specular: V3::<R>::ZERO,
         literal_defined: true,
+        literal_size: V3::<R>::ZERO,
+        literal_terms: 0,
     };
     let point = LanePoint::<R> {
         p: at.p,
@@ -782,8 +817,13 @@ pub(crate) fn shade_with<R: Real, Rec: Recorder<R>, Vis: Visibility<R>, F: Formu
         diffuse: s.diffuse,
         specular: s.specular,
         color: s.color,
-        literal: (Rec::DETAIL && side.literal_defined)
-            .then(|| a + side.literal_diffuse + side.literal_specular),
+        literal: (Rec::DETAIL && side.literal_defined).then(|| {
+            zero_within_rounding::<R>(
+                a + side.literal_diffuse + side.literal_specular,
+                a.abs() + side.literal_size,
+                side.literal_terms + 1,
+            )
+        }),
     }
 }
 

@@ -859,3 +859,33 @@ fn f32_agrees_with_f64_on_every_numeric_leaf_of_every_exercise() {
         problems.join("\n")
     );
 }
+
+// several-lights.json: the literal (ungated) red channel of Eq. 4.16 is, by hand, the ambient
+// 0.5·0.2 = 0.1; the key light at (0, 3, 4), L = (0, −3, −4)/5, cos θ = 0.8, diffuse 0.7·0.8 =
+// 0.56, R = (0, −0.6, 0.8), V = (0, 3, −4)/5, cos φ = 1, specular 0.2; the blue and green lights
+// add no red; the light under the floor at (0, 0, −1), L = (0, 0, 1), cos θ = −1, diffuse
+// 0.7·(−1) = −0.7, R = (0, 0, −1), cos φ = −0.8, specular 0.2·(−0.8) = −0.16. Red: 0.1 + 0.56 +
+// 0.2 − 0.7 − 0.16 = 0 exactly; green 0.64 + 0.3 + 0.8 + 0.24 − 0.8 − 0.24 = 0.94, blue 0.48 +
+// 0.4 + 0.24 + 0.2 − 0.6 − 0.32 = 0.4. The sum's rounding (−2.8·10⁻¹⁷ in f64) is not a value:
+// the JSON says 0 and the text prints no such number, in both precisions.
+#[test]
+fn a_literal_channel_that_cancels_is_zero_not_rounding_noise() {
+    for precision in [Precision::F64, Precision::F32] {
+        let doc = solve_json(&exercise("several-lights.json"), precision).expect("it solves");
+        let literal = vec3(&doc, "/solution/color/literal");
+        assert_eq!(literal[0], 0.0, "{precision:?}: {literal:?}");
+        assert!((literal[1] - 0.94).abs() < 1e-6, "{precision:?}: {literal:?}");
+        assert!((literal[2] - 0.4).abs() < 1e-6, "{precision:?}: {literal:?}");
+    }
+    let out = crate::support::phong_std()
+        .args(["solve", "exercises/several-lights.json"])
+        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .output()
+        .expect("phong runs");
+    let text = String::from_utf8(out.stdout).expect("UTF-8");
+    assert!(
+        text.contains("Eq. 4.16 taken literally (no gating): (0, 0.94, 0.4)"),
+        "{text}"
+    );
+    assert!(!text.contains("e-1"), "{text}");
+}
