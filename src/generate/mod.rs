@@ -759,7 +759,11 @@ fn statement(p: &ProblemOut, t: Tongue) -> String {
             }
             continue;
         }
+        // A black ambient light (each channel drawn 0) lights nothing: said as what it is.
+        let black = l.color.iter().all(|x| x.0 == 0.0);
         s.push(match (l.kind, en) {
+            ("ambient", true) if black => format!("The ambient light is black, I_a = {c}."),
+            ("ambient", false) if black => format!("A luz ambiente é preta, I_a = {c}."),
             ("ambient", true) => format!("An ambient light I_a = {c} lights the scene."),
             ("ambient", false) => format!("Uma luz ambiente I_a = {c} ilumina a cena."),
             ("point", true) => {

@@ -323,6 +323,42 @@ fn the_statements_give_the_data_and_the_seed_is_metadata() {
     }
 }
 
+/// An ambient light drawn black, I_a = (0, 0, 0), lights nothing: no statement says it "lights
+/// the scene" (spot seed 2's did); it is said to be black, in both languages, and its value is
+/// still given.
+#[test]
+fn a_black_ambient_light_is_said_to_be_black() {
+    let mut black = 0;
+    for kind in KINDS {
+        let out = support::phong()
+            .args(["new", "--kind", kind, "--count", "30", "--seed", "1", "--lang", "pt"])
+            .output()
+            .unwrap();
+        assert_eq!(out.status.code(), Some(0));
+        let docs: Value = serde_json::from_slice(&out.stdout).unwrap();
+        for p in docs.as_array().unwrap() {
+            let (en, pt) = (
+                p["question"].as_str().unwrap(),
+                p["question_pt"].as_str().unwrap(),
+            );
+            assert!(!en.contains("(0, 0, 0) lights the scene"), "{en}");
+            assert!(!pt.contains("(0, 0, 0) ilumina a cena"), "{pt}");
+            let ambient: Vec<&Value> = p["lights"]
+                .as_array()
+                .unwrap()
+                .iter()
+                .filter(|l| l["type"] == "ambient")
+                .collect();
+            if ambient.len() == 1 && v3(&ambient[0]["color"]) == [0.0; 3] {
+                black += 1;
+                assert!(en.contains("The ambient light is black, I_a = (0, 0, 0)."), "{en}");
+                assert!(pt.contains("A luz ambiente é preta, I_a = (0, 0, 0)."), "{pt}");
+            }
+        }
+    }
+    assert!(black > 0, "30 problems of each kind draw a black ambient light");
+}
+
 /// A problem of several lights names each light that is not ambient with its own symbols
 /// (C_l1 and P_l1, C_l2 and P_l2 or D_l2), and its two point lights stand apart: seed 5's
 /// two point lights were both at P_l = (5.4, 0.44, −1.92), in a statement that named both C_l
