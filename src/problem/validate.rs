@@ -26,6 +26,7 @@ use crate::core::{
     Cone, Falloff, Light, LightKind, LightSet, Material, Real, Transmission, Vector, V3,
 };
 use crate::geometry::{Plane, Ray, Shape, Sphere, Triangle};
+use crate::text::Num;
 
 /// Validates a parsed problem in precision `R`; mesh files are looked up from the working
 /// folder (see [`validate_in`]).
@@ -802,8 +803,26 @@ fn surface<R: Real>(
             let v = required(s.vertices.as_deref(), base, "vertices", what)?;
             let vertices = f("vertices");
             let mut p = [V3::<R>::ZERO; 3];
+            // Within the bound the ray–triangle test can multiply: past it a ray could miss the
+            // triangle without a word, and its edges overflow (it would read as degenerate).
+            let max = crate::geometry::triangle::max_coordinate::<R>();
             for (k, corner) in v.iter().enumerate() {
                 p[k] = vector::<R>(*corner, vertices.index(k))?;
+                if let Some(j) = corner.iter().position(|x| x.abs() > max) {
+                    let (value, max) = (show(corner[j]), Num(max));
+                    return Err(Invalid::of(
+                        vertices.index(k).index(j),
+                        if R::NAME == "f32" {
+                            SurfaceFault::CornerTooLargeF32 { value, max }
+                        } else {
+                            SurfaceFault::CornerTooLarge {
+                                value,
+                                max,
+                                precision: R::NAME,
+                            }
+                        },
+                    ));
+                }
             }
             let t = Triangle { p, normals: None };
             if t.normal().is_none() {

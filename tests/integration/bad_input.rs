@@ -1495,3 +1495,82 @@ fn a_very_long_unknown_name_is_echoed_shortened() {
         assert!(doc["error"]["message"].as_str().unwrap_or("").len() < 1_000);
     }
 }
+
+// ---------------------------------------------------------------------------------------------
+// Coordinates too large for the precision, a sphere too small for it, a policy of another type
+// ---------------------------------------------------------------------------------------------
+
+/// The triangle with corners (−x, −x, 0), (x, −x, 0) and (0, x, 0): it holds the point (0, 0, 0)
+/// where the base ray problem's ray meets the plane z = 0.
+fn triangle(x: f64) -> Value {
+    json!({ "type": "triangle", "vertices": [[-x, -x, 0], [x, -x, 0], [0, x, 0]],
+            "material": "M" })
+}
+
+/// A triangle whose coordinates are too large for the ray–triangle test of the precision is
+/// refused as too large, naming the coordinate and the bound that works: at ±1e308 its edges
+/// overflowed and it was refused as "on one line"; at ±1e300 it was accepted, and the ray that
+/// meets it at (0, 0, 0) missed it (the test's products overflowed), without a word.
+#[test]
+fn a_triangle_too_large_for_the_precision_is_refused_naming_the_bound_that_works() {
+    for x in [1e308, 1e300, 2e100] {
+        let problem = with(ray_problem(), "/surfaces/0", triangle(x));
+        let bad = rejected_text(
+            &pretty(&problem),
+            &["f64"],
+            Expect {
+                field: Some("surfaces[0].vertices[0][0]"),
+                says: &["too large for a triangle", "within ±1e100"],
+            },
+        );
+        assert!(!bad.stderr.contains("one line"), "{}", bad.stderr);
+        assert!(!bad.stderr.contains("--precision f64"), "{}", bad.stderr);
+    }
+    // In f32 the bound is 1e12, and f64 is a way out: the same triangle solves there.
+    let problem = with(ray_problem(), "/surfaces/0", triangle(1e13));
+    let bad = rejected_text(
+        &pretty(&problem),
+        &["f32"],
+        Expect {
+            field: Some("surfaces[0].vertices[0][0]"),
+            says: &[
+                "too large for a triangle",
+                "within ±1e12",
+                "--precision f64",
+            ],
+        },
+    );
+    let pt = phong(&[
+        "solve",
+        utf8(&bad.path),
+        "--precision",
+        "f32",
+        "--lang",
+        "pt",
+    ]);
+    assert!(
+        pt.stderr
+            .contains("grande demais para um vértice de triângulo em f32")
+            && pt.stderr.contains("dentro de ±1e12"),
+        "{}",
+        pt.stderr
+    );
+    // At the bound, the ray from the bound itself meets the triangle (at t = 1e100 in f64,
+    // 1e12 in f32): the bound is one that works, not only one that is refused past.
+    for (precision, x) in [("f64", 1e100), ("f32", 1e12)] {
+        let problem = with(ray_problem(), "/surfaces/0", triangle(x));
+        let problem = with(problem, "/ray/origin", json!([0, 0, x]));
+        let problem = with(problem, "/lights/1/position", json!([0, 0, x / 2.0]));
+        check_solves(&pretty(&problem), precision);
+        let dir = TempDir::new().expect("a temporary folder");
+        let path = dir.path().join("at-the-bound.json");
+        fs::write(&path, pretty(&problem)).expect("written");
+        let run = phong(&["solve", utf8(&path), "--precision", precision]);
+        assert!(
+            run.code == Some(0) && !run.stdout.contains("meets no surface"),
+            "{precision}: {}{}",
+            run.stdout,
+            run.stderr
+        );
+    }
+}

@@ -848,3 +848,35 @@ fn an_output_naming_a_stream_is_written_into_it_in_order() {
     assert_eq!(lines[4], "4.1,1,1,0,0,0,", "{both}");
     assert_eq!(lines.len(), 5, "{both}");
 }
+
+/// An OBJ corner too large for the ray–triangle test of the precision is refused as too large,
+/// with the bound that works: at ±1e308 the face was said to be degenerate (its edges
+/// overflowed), at ±1e300 the mesh was rendered and every ray missed it.
+#[test]
+fn an_obj_corner_too_large_for_the_precision_is_refused_with_the_bound() {
+    let dir = TempDir::new().unwrap();
+    let scene = mesh_scene(&dir, "m.obj");
+    let face = |x: &str| format!("v -{x} -{x} 0\nv {x} -{x} 0\nv 0 {x} 0\nf 1 2 3\n");
+    for x in ["1e308", "1e300"] {
+        write(&dir, "m.obj", &face(x));
+        let e = refused(
+            &mut render(&dir, &scene),
+            &[
+                "surfaces[0].file",
+                "vertex 1",
+                "too large for a triangle in f64",
+                "within ±1e100",
+            ],
+        );
+        assert!(
+            !e.contains("degenerate") && !e.contains("--precision"),
+            "{e}"
+        );
+    }
+    write(&dir, "m.obj", &face("1e13"));
+    refused(
+        render(&dir, &scene).args(["--precision", "f32"]),
+        &["vertex 1", "within ±1e12", "--precision f64"],
+    );
+    render(&dir, &scene).assert().success();
+}
