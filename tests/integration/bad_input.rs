@@ -1574,3 +1574,37 @@ fn a_triangle_too_large_for_the_precision_is_refused_naming_the_bound_that_works
         );
     }
 }
+/// A sphere whose hit point rounding cannot tell from its centre: the fix is what would help in
+/// the precision in force. In f64 (the default) there is no "--precision f64" to use; a larger
+/// radius, or the sphere and the ray nearer the origin, is what helps.
+#[test]
+fn a_sphere_too_small_for_its_coordinates_gets_the_fix_of_the_precision_in_force() {
+    let sphere = json!({ "type": "sphere", "center": [0, 0, 1], "radius": 1e-20,
+                         "material": "M" });
+    let problem = with(ray_problem(), "/surfaces/0", sphere);
+    let text = pretty(&problem);
+    let f64 = rejected_text(
+        &text,
+        &["f64"],
+        Expect {
+            field: Some("surfaces[0]"),
+            says: &["from the sphere's centre in f64", "larger radius"],
+        },
+    );
+    assert!(!f64.stderr.contains("--precision"), "{}", f64.stderr);
+    let pt = phong(&["solve", utf8(&f64.path), "--lang", "pt"]);
+    assert!(
+        pt.stderr.contains("raio maior") && !pt.stderr.contains("--precision"),
+        "{}",
+        pt.stderr
+    );
+    let f32 = rejected_text(
+        &text,
+        &["f32"],
+        Expect {
+            field: Some("surfaces[0]"),
+            says: &["from the sphere's centre in f32", "--precision f64"],
+        },
+    );
+    drop(f32);
+}
