@@ -1608,3 +1608,82 @@ fn a_sphere_too_small_for_its_coordinates_gets_the_fix_of_the_precision_in_force
     );
     drop(f32);
 }
+/// A course policy that is not a JSON object (an array, a number, a string, null, a boolean) is
+/// said to be one, naming the file, in both languages: never by the name of a Rust type of
+/// phong's own ("expected struct PolicyFile with 9 elements"). The same for its "tolerance".
+#[test]
+fn a_course_policy_that_is_not_an_object_is_said_so_in_the_users_words() {
+    let dir = TempDir::new().expect("a temporary folder");
+    let folder = dir.path().join("ex");
+    fs::create_dir(&folder).expect("created");
+    let problem = folder.join("4.1.json");
+    fs::write(&problem, pretty(&point_problem())).expect("written");
+    let beside = folder.join("course-policy.json");
+    let given = dir.path().join("policy.json");
+    for (text, en, pt) in [
+        ("[]", "an array [ … ]", "uma lista [ … ]"),
+        ("[{\"4.1\": 2}]", "an array [ … ]", "uma lista [ … ]"),
+        ("  3\n", "a number", "um número"),
+        ("\"policy\"", "a string", "um texto"),
+        ("null", "null", "null"),
+        ("true", "a boolean", "um booleano"),
+    ] {
+        for (file, flag) in [(&given, true), (&beside, false)] {
+            fs::write(file, text).expect("written");
+            let mut args = vec![
+                "check".to_owned(),
+                problem.display().to_string(),
+                "--answer".to_owned(),
+                "0 0 0".to_owned(),
+            ];
+            if flag {
+                args.extend(["--policy".to_owned(), file.display().to_string()]);
+            }
+            for (lang, kind, says) in [
+                ("en", en, "a course policy is one JSON object { … }"),
+                ("pt", pt, "uma política do curso é um objeto JSON { … }"),
+            ] {
+                let out = crate::support::phong()
+                    .args(&args)
+                    .args(["--lang", lang])
+                    .output()
+                    .expect("phong runs");
+                let err = String::from_utf8_lossy(&out.stderr);
+                assert_eq!(out.status.code(), Some(BAD_INPUT), "{text}: {err}");
+                assert!(err.contains(&file.display().to_string()), "{text}: {err}");
+                assert!(err.contains(says) && err.contains(kind), "{text}: {err}");
+                assert!(
+                    !err.contains("PolicyFile") && !err.contains("struct"),
+                    "{text}: {err}"
+                );
+            }
+            fs::remove_file(file).expect("removed");
+        }
+    }
+    // Nor does a field of the policy of the wrong type; and the tolerances, an object, are not
+    // read from an array in order (`[0.5, 3]` was a tolerance of 0.5 on the 1 scale).
+    for (text, lang) in [
+        (r#"{"tolerance": 3}"#, "en"),
+        (r#"{"tolerance": 3}"#, "pt"),
+        (r#"{"tolerance": [0.5, 3]}"#, "en"),
+    ] {
+        fs::write(&given, text).expect("written");
+        let says = match lang {
+            "en" => "expected the tolerances: an object {\"1\": 0.005, \"255\": 1}",
+            _ => "esperadas as tolerâncias: um objeto {\"1\": 0.005, \"255\": 1}",
+        };
+        let run = phong(&[
+            "check",
+            utf8(&problem),
+            "--answer",
+            "0 0 0",
+            "--policy",
+            utf8(&given),
+            "--lang",
+            lang,
+        ]);
+        assert_eq!(run.code, Some(BAD_INPUT), "{text}: {}", run.stderr);
+        assert!(run.stderr.contains(says), "{text}: {}", run.stderr);
+        assert!(!run.stderr.contains("TolerancesFile"), "{}", run.stderr);
+    }
+}
