@@ -880,3 +880,57 @@ fn an_obj_corner_too_large_for_the_precision_is_refused_with_the_bound() {
     );
     render(&dir, &scene).assert().success();
 }
+/// A file that cannot be created where the user asked (`/proc` and `/sys` refuse any new file,
+/// root's too) is said of the path given, never of the temporary file written first
+/// (`at path "/proc/.phong-Ab12Cd.tmp"`, a name the user never gave), and in the user's
+/// language.
+#[cfg(target_os = "linux")]
+#[test]
+fn an_output_that_cannot_be_created_is_named_as_given_not_by_its_temporary_file() {
+    let dir = TempDir::new().unwrap();
+    let scene = scene_file(&dir, &small_scene());
+    let subs = write(&dir, "subs.csv", "ana,4.1,0.5 0.7 0.3\n");
+    for folder in ["/proc", "/sys"] {
+        if !Path::new(folder).is_dir() {
+            continue;
+        }
+        for (name, args) in [
+            ("x.txt", vec![exercise("4.1.json").display().to_string()]),
+            ("x.png", vec![scene.display().to_string()]),
+            (
+                "r.csv",
+                vec![
+                    subs.display().to_string(),
+                    "--exercises".to_owned(),
+                    root().join("exercises").display().to_string(),
+                ],
+            ),
+        ] {
+            let command = match name {
+                "x.txt" => "solve",
+                "x.png" => "render",
+                _ => "grade",
+            };
+            let out = format!("{folder}/{name}");
+            for (lang, says) in [
+                ("en", format!("cannot write {out}: ")),
+                ("pt", format!("não é possível escrever {out}: ")),
+            ] {
+                let err = refused(
+                    phong()
+                        .arg(command)
+                        .args(&args)
+                        .args(["-o", &out, "--lang", lang]),
+                    &[&says],
+                );
+                assert!(
+                    !err.contains(".phong-") && !err.contains("at path"),
+                    "{command} -o {out}: {err}"
+                );
+                if lang == "pt" {
+                    assert!(err.contains("do sistema)"), "{command} -o {out}: {err}");
+                }
+            }
+        }
+    }
+}
