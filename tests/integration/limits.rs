@@ -934,3 +934,84 @@ fn an_output_that_cannot_be_created_is_named_as_given_not_by_its_temporary_file(
         }
     }
 }
+/// `phong check`, `phong policy` and `phong serve` read a course policy as `grade` and `moodle`
+/// do: it is an input of theirs, and an output naming it (the folder's `course-policy.json` or
+/// the file of `--policy`) is refused before anything is written. `check -o
+/// ex/course-policy.json` replaced the policy with the check's report.
+#[test]
+fn an_output_may_not_replace_the_course_policy_the_run_reads() {
+    let dir = TempDir::new().unwrap();
+    let ex = dir.path().join("ex");
+    std::fs::create_dir(&ex).unwrap();
+    std::fs::copy(exercise("4.1.json"), ex.join("4.1.json")).unwrap();
+    let policy = "{\"reading_credit\": 0.25, \"comment\": \"the course's own\"}\n";
+    let beside = ex.join("course-policy.json");
+    std::fs::write(&beside, policy).unwrap();
+    let given = write(&dir, "policy.json", policy);
+    let subs = write(&dir, "subs.csv", "ana,4.1,0.5 0.7 0.3\n");
+    let check = |policy_flag: Option<&Path>, out: &Path| {
+        let mut cmd = phong();
+        cmd.arg("check")
+            .arg(ex.join("4.1.json"))
+            .args(["--answer", "0.5 0.7 0.3"]);
+        if let Some(p) = policy_flag {
+            cmd.arg("--policy").arg(p);
+        }
+        cmd.arg("-o").arg(out);
+        cmd
+    };
+    refused(&mut check(None, &beside), &["--output", "is the input"]);
+    refused(
+        &mut check(Some(&given), &given),
+        &["--output", "is the input"],
+    );
+    let policy_cmd = |policy_flag: Option<&Path>, out: &Path| {
+        let mut cmd = phong();
+        cmd.arg("policy").arg(&ex);
+        if let Some(p) = policy_flag {
+            cmd.arg("--policy").arg(p);
+        }
+        cmd.arg("-o").arg(out);
+        refused(&mut cmd, &["--output", "is the input"]);
+    };
+    policy_cmd(None, &beside);
+    policy_cmd(Some(&given), &given);
+    // grade and moodle refused it already: held to it.
+    refused(
+        phong()
+            .arg("grade")
+            .arg(&subs)
+            .arg("--exercises")
+            .arg(&ex)
+            .arg("-o")
+            .arg(&beside),
+        &["--output", "is the input"],
+    );
+    refused(
+        phong()
+            .arg("moodle")
+            .arg(ex.join("4.1.json"))
+            .arg("-o")
+            .arg(&beside),
+        &["--output", "is the input"],
+    );
+    // serve appends its answers to --log-answers (and renames it when full): refused before it
+    // listens (a server let through would run until the timeout).
+    #[cfg(feature = "serve")]
+    for (policy_flag, log) in [(None, &beside), (Some(&given), &given)] {
+        let mut cmd = phong();
+        cmd.arg("serve")
+            .arg("--exercises")
+            .arg(&ex)
+            .args(["--addr", "127.0.0.1:0"]);
+        if let Some(p) = policy_flag {
+            cmd.arg("--policy").arg(p);
+        }
+        cmd.arg("--log-answers")
+            .arg(log)
+            .timeout(std::time::Duration::from_secs(20));
+        refused(&mut cmd, &["--log-answers", "is the input"]);
+    }
+    assert_eq!(std::fs::read_to_string(&beside).unwrap(), policy);
+    assert_eq!(std::fs::read_to_string(&given).unwrap(), policy);
+}
