@@ -697,7 +697,18 @@ pub(crate) struct SceneFile<R: Real> {
 /// Reads a scene: a problem file with a camera and surfaces (what the tracer needs), and the
 /// mesh files it names.
 pub(crate) fn load_scene<R: Real>(path: &Path) -> Result<SceneFile<R>, ProblemError> {
-    let (file, problem) = load::<R>(path)?;
+    load_scene_for::<R>(path, validate::Work::Image)
+}
+
+/// [`load_scene`], for `work`: with [`validate::Work::Pixel`] (one pixel explained) the
+/// image's own bounds (its primary rays, one sample's tree) are left to the pixel's.
+pub(crate) fn load_scene_for<R: Real>(
+    path: &Path,
+    work: validate::Work,
+) -> Result<SceneFile<R>, ProblemError> {
+    let file = parse_file(path)?;
+    let problem =
+        validate::validate_for::<R>(&file, path.parent(), work).map_err(|e| e.at(path))?;
     let meshes = mesh_files(&file, path);
     let Some(camera) = problem.camera else {
         return Err(Invalid::of("camera", SourceFault::NoCamera).at(path));

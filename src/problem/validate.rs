@@ -40,6 +40,28 @@ pub fn validate_in<R: Real>(
     file: &ProblemFile,
     base: Option<&Path>,
 ) -> Result<Problem<R>, Invalid> {
+    validate_for::<R>(file, base, Work::Image)
+}
+
+/// What a scene is read for, which decides the bounds its render settings are held to.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum Work {
+    /// The whole image (and every other use): its primary rays, width × height × samples,
+    /// within [`MAX_PIXEL_SAMPLES`], and one sample's tree within [`MAX_TREE_RAYS`].
+    Image,
+    /// One pixel explained (`--explain-pixel`): nothing of the image is traced or held, so
+    /// neither bound of the image applies; the caller holds the pixel to its own,
+    /// [`check_explanation`] (its samples' trees within [`MAX_EXPLAINED_RAYS`], far below a
+    /// tree's bound), with the settings in force.
+    Pixel,
+}
+
+/// [`validate_in`], for `work`.
+pub(crate) fn validate_for<R: Real>(
+    file: &ProblemFile,
+    base: Option<&Path>,
+    work: Work,
+) -> Result<Problem<R>, Invalid> {
     let Lights {
         lights,
         light_info,
@@ -161,7 +183,7 @@ pub fn validate_in<R: Real>(
 
     let camera = file.camera.as_ref().map(camera::<R>).transpose()?;
     let render = render_settings::<R>(file.render.as_ref())?;
-    if let Some(c) = &camera {
+    if let (Some(c), Work::Image) = (&camera, work) {
         check_work(c.width, c.height, render.samples).map_err(|e| e.at("render.samples"))?;
     }
     let problem = Problem {
@@ -182,7 +204,7 @@ pub fn validate_in<R: Real>(
         render,
         warnings: super::warnings::warnings(file),
     };
-    if problem.camera.is_some() {
+    if problem.camera.is_some() && work == Work::Image {
         let s = &problem.render;
         check_tree(&problem, s.max_level, s.min_weight.to_f64())
             .map_err(|e| e.at("render.max_level"))?;

@@ -1015,3 +1015,77 @@ fn an_output_may_not_replace_the_course_policy_the_run_reads() {
     assert_eq!(std::fs::read_to_string(&beside).unwrap(), policy);
     assert_eq!(std::fs::read_to_string(&given).unwrap(), policy);
 }
+/// `--explain-pixel` traces one pixel's rays and nothing else: the image's own bounds (its
+/// primary rays within 2^30, its buffer within memory) are not the pixel's, which is bounded by
+/// its own (2^13 rays in all its samples, and inside the image). A 16384² image at 8 samples
+/// (2^31 primary rays) was refused for the whole image's work; at one sample, under a 1 GiB
+/// address space, for the 1.6 GB image it never makes.
+#[test]
+fn an_explained_pixel_is_held_to_its_own_bounds_not_the_images() {
+    let dir = TempDir::new().unwrap();
+    let mut s = small_scene();
+    s["camera"]["width"] = json!(16384);
+    s["camera"]["height"] = json!(16384);
+    s["render"] = json!({ "samples": 8 });
+    let big = scene_file(&dir, &s);
+    // The image itself stays refused.
+    refused(&mut render(&dir, &big), &["render.samples", "primary rays"]);
+    let explain = |scene: &Path, args: &[&str]| {
+        let mut cmd = phong();
+        cmd.arg("render")
+            .arg(scene)
+            .args(["--explain-pixel", "8192,8192", "--format", "json"])
+            .args(args);
+        cmd
+    };
+    for precision in ["f64", "f32"] {
+        let out = explain(&big, &["--precision", precision]).output().unwrap();
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(0), "{precision}: {err}");
+        let doc: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+        assert_eq!(
+            doc["samples"].as_array().map(Vec::len),
+            Some(8),
+            "{precision}"
+        );
+        // In f32, the same pixel in f64 beside it: the scene read again in f64 for the pixel.
+        assert_eq!(
+            doc["versus_f64"].is_object(),
+            precision == "f32",
+            "{precision}"
+        );
+    }
+    // --samples over the file's: 64 samples of a one-ray tree fit the 8192 rays an explanation
+    // may hold, though 16384² × 64 primary rays are far past a render's.
+    explain(&big, &["--samples", "64"]).assert().success();
+    // The pixel must still be inside the image (the bound on its rays:
+    // an_explained_pixel_that_could_hold_too_many_rays_is_refused_before_anything_is_written).
+    refused(
+        phong()
+            .arg("render")
+            .arg(&big)
+            .args(["--explain-pixel", "16384,0"]),
+        &["--explain-pixel", "outside the 16384×16384 image"],
+    );
+    // Nothing is allocated by the image's size: one sample's pixel under a 1 GiB address space.
+    #[cfg(target_os = "linux")]
+    {
+        s["render"] = json!({ "samples": 1 });
+        let one = write(&dir, "one.json", &s.to_string());
+        let out = support::sh()
+            .arg("-c")
+            .arg("ulimit -v 1048576; exec \"$0\" \"$@\"")
+            .arg(support::phong_path())
+            .arg("render")
+            .arg(&one)
+            .args(["--explain-pixel", "8192,8192", "--threads", "1"])
+            .output()
+            .unwrap();
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(0), "{err}");
+        assert!(
+            String::from_utf8_lossy(&out.stdout).contains("8192"),
+            "{err}"
+        );
+    }
+}
