@@ -114,6 +114,7 @@ walked! {
     faults crate::solve::faults::SolveFault;
     sentences crate::solve::faults::Overflowing;
     sentences crate::solve::faults::Smaller;
+    sentences crate::solve::faults::Resolve;
     faults crate::tracer::faults::TracerFault;
     sentences crate::report::messages::F32Cost;
     sentences crate::report::messages::GateName;

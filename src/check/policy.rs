@@ -213,6 +213,11 @@ impl Policy {
         if text.trim().is_empty() {
             return Ok(Policy::default());
         }
+        // Not an object: said so, rather than as serde reads an array into a struct's fields
+        // in order ("invalid length 0, expected struct PolicyFile with 9 elements").
+        if let Some((kind, _, _)) = crate::problem::top_level(text) {
+            return Err(PolicyError::NotAnObject { kind });
+        }
         let file: PolicyFile = serde_json::from_str(text).map_err(|e| PolicyError::NotAPolicy {
             error: crate::problem::JsonError::of(&e),
         })?;
@@ -336,6 +341,8 @@ struct PolicyFile {
     default_points: Option<f64>,
     reading_credit: Option<f64>,
     strict: Option<bool>,
+    /// An object and nothing else: an array read in order was the tolerances on each scale.
+    #[serde(default, deserialize_with = "crate::problem::format::optional_object")]
     tolerance: Option<TolerancesFile>,
     eight_bit: Option<EightBit>,
     no_hit: Option<Vec<String>>,
@@ -353,6 +360,10 @@ struct TolerancesFile {
     unit: Option<f64>,
     #[serde(rename = "255")]
     bits8: Option<f64>,
+}
+
+impl crate::problem::format::Described for TolerancesFile {
+    const WHAT: crate::problem::syntax::Expected = crate::problem::syntax::Expected::Tolerances;
 }
 
 crate::messages! {
@@ -392,6 +403,16 @@ crate::messages! {
              as [\"none\", \"nenhuma\"]",
             "no_hit: a lista de palavras que respondem \"nenhuma interseção\" está vazia: dê ao \
              menos uma, como [\"none\", \"nenhuma\"]";
+        /// A policy whose JSON is not an object: an array, a number, a string, a boolean,
+        /// null.
+        NotAnObject { kind: crate::problem::syntax::JsonKind } =>
+            "the file is {kind}, and a course policy is one JSON object {{ … }}, such as \
+             {{\"tolerance\": {{\"1\": 0.005, \"255\": 1}}, \"reading_credit\": 0.5, \
+             \"points\": {{\"4.1\": 1}}}} (every field optional; `phong policy` prints one)",
+            "o arquivo é {kind}, e uma política do curso é um objeto JSON {{ … }}, como \
+             {{\"tolerance\": {{\"1\": 0.005, \"255\": 1}}, \"reading_credit\": 0.5, \
+             \"points\": {{\"4.1\": 1}}}} (todos os campos opcionais; `phong policy` imprime \
+             uma)";
         /// A text that is not a policy's JSON (`error`: the JSON parser's words).
         NotAPolicy { error: crate::problem::JsonError } =>
             "{error} (a course policy is an object such as {{\"tolerance\": {{\"1\": 0.005, \
@@ -487,6 +508,7 @@ impl Duplicates {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::problem::syntax::JsonKind;
     use crate::text::{Lang, Message};
 
     #[test]
@@ -624,6 +646,48 @@ mod tests {
                 points: "1e308".into(),
                 max: 1_000_000
             }
+        );
+    }
+
+    #[test]
+    fn a_policy_that_is_not_an_object_is_said_so_in_both_languages() {
+        for (text, kind) in [
+            ("[]", JsonKind::Array),
+            ("\n [{\"4.1\": 2}]", JsonKind::Array),
+            ("3", JsonKind::Number),
+            ("-1", JsonKind::Number),
+            ("\"points\"", JsonKind::Text),
+            ("null", JsonKind::Null),
+            ("false", JsonKind::Boolean),
+        ] {
+            let e = Policy::read_json(text).unwrap_err();
+            assert_eq!(e, PolicyError::NotAnObject { kind }, "{text}");
+        }
+        let e = Policy::read_json("[]").unwrap_err();
+        assert!(
+            e.to_string()
+                .starts_with("the file is an array [ … ], and a course policy is one JSON object"),
+            "{e}"
+        );
+        assert!(
+            e.text(Lang::Pt)
+                .starts_with("o arquivo é uma lista [ … ], e uma política do curso é um objeto"),
+            "{}",
+            e.text(Lang::Pt)
+        );
+        // Its tolerances are an object too: not read from an array in order, nor named by a
+        // type of phong's own.
+        for text in [r#"{"tolerance": [0.5, 3]}"#, r#"{"tolerance": 3}"#] {
+            let e = Policy::read_json(text).unwrap_err().to_string();
+            assert!(
+                e.contains("expected the tolerances: an object {\"1\": 0.005, \"255\": 1}")
+                    && !e.contains("TolerancesFile"),
+                "{e}"
+            );
+        }
+        assert_eq!(
+            Policy::read_json(r#"{"tolerance": null}"#).unwrap(),
+            Policy::default()
         );
     }
 

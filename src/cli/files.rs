@@ -437,17 +437,15 @@ fn stage(
         Some(d) if !d.as_os_str().is_empty() => d,
         _ => Path::new("."),
     };
-    let mut builder = tempfile::Builder::new();
-    builder.prefix(".phong-").suffix(".tmp");
-    #[cfg(unix)]
-    if existing.is_none() {
-        use std::os::unix::fs::PermissionsExt;
-        // Passed to open(2), which takes the umask away.
-        builder.permissions(std::fs::Permissions::from_mode(0o666));
-    }
-    let mut tmp = builder
-        .tempfile_in(dir)
-        .map_err(|e| not_in_folder(dir, e))?;
+    // The temporary file is opened here (`make_in`), not by tempfile's `tempfile_in`, whose
+    // error is the system's wrapped with the temporary file's random name (`… at path
+    // "/sys/.phong-Ab12Cd.tmp"`, a name the user never gave) and without its error number (so
+    // it could not be said in Portuguese). Here it is the system's error as it came.
+    let mut tmp = tempfile::Builder::new()
+        .prefix(".phong-")
+        .suffix(".tmp")
+        .make_in(dir, |path| create_new(path, existing.is_none()))
+        .map_err(|e| folder_problem(dir).unwrap_or(e))?;
     let pending = Pending::new(tmp.path());
     {
         let mut out = std::io::BufWriter::new(tmp.as_file_mut());
@@ -465,22 +463,21 @@ fn stage(
     })
 }
 
-/// Why the temporary file cannot be made in `dir`, said of the folder the user named: a
-/// missing folder with its fix, in English and in Portuguese; another error as the system
-/// says it, without the temporary file's random name (which tempfile's error holds, and which
-/// the user never gave).
-fn not_in_folder(dir: &Path, e: std::io::Error) -> std::io::Error {
-    folder_problem(dir).unwrap_or_else(|| {
-        let inner = e
-            .get_ref()
-            .and_then(|i| i.source())
-            .and_then(|s| s.downcast_ref::<std::io::Error>())
-            .map(ToString::to_string);
-        match inner {
-            Some(text) => std::io::Error::new(e.kind(), text),
-            None => e,
-        }
-    })
+/// Creates the temporary file `path`, new (it fails if anything has that name: tempfile then
+/// tries another), for reading and writing, as tempfile would: with 0666 less the umask when it
+/// is to be a new file (`new`; open(2) takes the umask away), else 0600 until the permissions
+/// of the file it replaces are set on it.
+fn create_new(path: &Path, new: bool) -> std::io::Result<std::fs::File> {
+    let mut options = std::fs::OpenOptions::new();
+    options.read(true).write(true).create_new(true);
+    #[cfg(unix)]
+    {
+        use std::os::unix::fs::OpenOptionsExt;
+        options.mode(if new { 0o666 } else { 0o600 });
+    }
+    #[cfg(not(unix))]
+    let _ = new;
+    options.open(path)
 }
 
 /// Why no file can be written in `dir`, when it is missing or is not a folder: the folder the
@@ -585,6 +582,41 @@ mod tests {
         assert!(!tmp.exists());
         drop(pending);
         assert!(PENDING.lock().unwrap().iter().all(|p| p != &tmp));
+    }
+
+    /// A folder where no file can be made (`/proc` refuses every new file, root's too): the
+    /// error is the system's, as it came (its number kept, to be said in Portuguese), without
+    /// the temporary file's name, and no temporary file is left.
+    #[cfg(target_os = "linux")]
+    #[test]
+    fn a_file_that_cannot_be_made_is_the_systems_error_without_the_temporary_name() {
+        let e = write_target_with(Path::new("/proc/phong-x.txt"), &mut |w| w.write_all(b"x"))
+            .unwrap_err();
+        assert!(e.raw_os_error().is_some(), "{e:?}");
+        assert!(!e.to_string().contains(".phong-"), "{e}");
+        assert!(!e.to_string().contains("at path"), "{e}");
+    }
+
+    #[cfg(unix)]
+    #[test]
+    fn a_new_file_is_made_with_the_umasks_mode_and_a_replaced_one_keeps_its_own() {
+        use std::os::unix::fs::PermissionsExt;
+        let dir = tempfile::tempdir().unwrap();
+        let new = dir.path().join("new.txt");
+        write_target_with(&new, &mut |w| w.write_all(b"new")).unwrap();
+        assert_eq!(std::fs::read(&new).unwrap(), b"new");
+        let mode = std::fs::metadata(&new).unwrap().permissions().mode() & 0o777;
+        // 0666 less some umask: readable and writable by its owner, executable by no one.
+        assert_eq!(mode & 0o600, 0o600, "{mode:o}");
+        assert_eq!(mode & 0o111, 0, "{mode:o}");
+        std::fs::set_permissions(&new, std::fs::Permissions::from_mode(0o640)).unwrap();
+        write_target_with(&new, &mut |w| w.write_all(b"again")).unwrap();
+        assert_eq!(std::fs::read(&new).unwrap(), b"again");
+        let mode = std::fs::metadata(&new).unwrap().permissions().mode() & 0o777;
+        assert_eq!(mode, 0o640);
+        // Nothing left beside it.
+        let names: Vec<_> = std::fs::read_dir(dir.path()).unwrap().collect();
+        assert_eq!(names.len(), 1);
     }
 
     #[test]

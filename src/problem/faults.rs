@@ -9,7 +9,7 @@ use std::path::PathBuf;
 
 use super::error::Invalid;
 use super::format::{LightType, SurfaceType};
-use crate::text::{Lang, Message};
+use crate::text::{Lang, Message, Num};
 use crate::{faults, messages};
 
 faults! {
@@ -312,6 +312,24 @@ faults! {
              tem área nem normal";
             fix "give three corners that are not on one line",
                 "dê três vértices que não estejam numa reta";
+        /// A triangle's coordinate beyond what the ray–triangle test can multiply in f64
+        /// (`geometry::triangle::max_coordinate`).
+        CornerTooLarge { value: String, max: Num, precision: &'static str } =>
+            "{value} is too large for a triangle's corner in {precision}: the ray–triangle test \
+             multiplies up to three coordinates, which would overflow",
+            "{value} é grande demais para um vértice de triângulo em {precision}: o teste de \
+             interseção raio–triângulo multiplica até três coordenadas, o que estouraria";
+            fix "give coordinates within ±{max} (scale the scene down)",
+                "dê coordenadas dentro de ±{max} (reduza a escala da cena)";
+        /// The same in f32, where f64 is a way out.
+        CornerTooLargeF32 { value: String, max: Num } =>
+            "{value} is too large for a triangle's corner in f32: the ray–triangle test \
+             multiplies up to three coordinates, which would overflow",
+            "{value} é grande demais para um vértice de triângulo em f32: o teste de interseção \
+             raio–triângulo multiplica até três coordenadas, o que estouraria";
+            fix "give coordinates within ±{max} (scale the scene down), or use --precision f64",
+                "dê coordenadas dentro de ±{max} (reduza a escala da cena), ou use --precision \
+                 f64";
     }
 }
 

@@ -412,8 +412,9 @@ pub enum MaterialRef {
 // structs of the format are read through `Object`, which takes a JSON object and nothing else,
 // and says which object was expected.
 
-/// What an object of the format is, for the error when something else is found.
-trait Described {
+/// What an object of the format is, for the error when something else is found (also the
+/// course policy's objects, check/policy.rs).
+pub(crate) trait Described {
     const WHAT: Expected;
 }
 
@@ -467,7 +468,8 @@ impl<'de, T: Deserialize<'de> + Described> Deserialize<'de> for Object<T> {
     }
 }
 
-fn optional_object<'de, D, T>(d: D) -> Result<Option<T>, D::Error>
+/// An optional field read through [`Object`]: a JSON object, or `null`, and nothing else.
+pub(crate) fn optional_object<'de, D, T>(d: D) -> Result<Option<T>, D::Error>
 where
     D: Deserializer<'de>,
     T: Deserialize<'de> + Described,

@@ -10,7 +10,7 @@ use std::path::Path;
 use crate::core::vector::normalize;
 use crate::core::{Real, Vector, V3};
 use crate::geometry::Triangle;
-use crate::text::Echo;
+use crate::text::{Echo, Num};
 
 pub use super::mesh_faults::{MeshError, MeshFault};
 use super::mesh_faults::{ObjError, Object, OrF64};
@@ -309,6 +309,16 @@ pub fn load_obj<R: Real>(path: &Path) -> Result<Vec<Triangle<R>>, MeshError> {
                     or_f64: or_f64::<R>(),
                 }));
             }
+            // Within the bound the ray–triangle test can multiply (see `max_coordinate`).
+            let max = crate::geometry::triangle::max_coordinate::<R>();
+            if xyz.iter().any(|x| x.abs() > max) {
+                return Err(MeshError::of(MeshFault::CornerTooLarge {
+                    index: i as usize + 1,
+                    precision: R::NAME.to_owned(),
+                    max: Num(max),
+                    or_f64: or_f64::<R>(),
+                }));
+            }
             Ok(v)
         };
         for face in model.mesh.indices.chunks_exact(3) {
@@ -424,6 +434,33 @@ mod tests {
             tiny.fix(Lang::En).contains("--precision f64"),
             "{}",
             tiny.fix(Lang::En)
+        );
+    }
+
+    #[test]
+    fn a_corner_past_the_largest_coordinate_is_refused_as_too_large_not_as_degenerate() {
+        let dir = tempfile::tempdir().unwrap();
+        let path = dir.path().join("m.obj");
+        let face = |x: &str| format!("v -{x} -{x} 0\nv {x} -{x} 0\nv 0 {x} 0\nf 1 2 3\n");
+        // ±1e308: the edges overflow, and the face was refused as degenerate.
+        std::fs::write(&path, face("1e308")).unwrap();
+        let e = load_obj::<f64>(&path).unwrap_err();
+        assert!(
+            e.message()
+                .contains("vertex 1 is too large for a triangle in f64"),
+            "{}",
+            e.message()
+        );
+        assert_eq!(
+            e.fix(Lang::En),
+            "give coordinates within ±1e100 (scale the mesh down)"
+        );
+        std::fs::write(&path, face("1e13")).unwrap();
+        assert!(load_obj::<f64>(&path).is_ok());
+        let e = load_obj::<f32>(&path).unwrap_err();
+        assert_eq!(
+            e.fix(Lang::Pt),
+            "dê coordenadas dentro de ±1e12 (reduza a escala da malha) (ou use --precision f64)"
         );
     }
 

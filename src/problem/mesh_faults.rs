@@ -6,7 +6,7 @@ use std::path::PathBuf;
 
 use super::reading::{Cause, Limit, ReadFix};
 use crate::faults;
-use crate::text::{Echo, Fault, Lang, Show};
+use crate::text::{Echo, Fault, Lang, Num, Show};
 
 /// " (or use --precision f64)" after a fix, in precision f32 only (where f64 is a way out).
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
@@ -189,6 +189,15 @@ faults! {
             "vertex {index} is not finite in {precision}",
             "o vértice {index} não é finito em {precision}";
             fix "give finite coordinates{or_f64}", "dê coordenadas finitas{or_f64}";
+        /// A corner beyond what the ray–triangle test can multiply in the precision
+        /// (`geometry::triangle::max_coordinate`).
+        CornerTooLarge { index: usize, precision: String, max: Num, or_f64: OrF64 } =>
+            "vertex {index} is too large for a triangle in {precision}: the ray–triangle test \
+             multiplies up to three coordinates, which would overflow",
+            "o vértice {index} é grande demais para um triângulo em {precision}: o teste de \
+             interseção raio–triângulo multiplica até três coordenadas, o que estouraria";
+            fix "give coordinates within ±{max} (scale the mesh down){or_f64}",
+                "dê coordenadas dentro de ±{max} (reduza a escala da malha){or_f64}";
         /// A triangle without area.
         Degenerate { k: usize, object: Object, precision: String } =>
             "the face's triangle {k}{object} is degenerate in {precision}: its corners lie on one \

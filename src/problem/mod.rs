@@ -244,9 +244,26 @@ fn parse_tracked(path: &Path, source: &str) -> Result<ProblemFile, ProblemError>
 /// A document that is not an object: serde would read a top-level array as the fields in order
 /// and complain about its first element (`[0]: invalid type: map, expected a string`).
 fn not_an_object(path: &Path, text: &str) -> Result<(), ProblemError> {
-    let Some(at) = text.find(|c| !matches!(c, ' ' | '\t' | '\n' | '\r')) else {
-        return Ok(());
-    };
+    match top_level(text) {
+        Some((kind, line, column)) => Err(syntax(
+            path,
+            line,
+            column,
+            None,
+            Parse::NotAnObject { kind },
+            SyntaxFix::OneObject,
+        )),
+        None => Ok(()),
+    }
+}
+
+/// What a JSON document is when its value is not an object, with the line and column (from 1)
+/// where that value starts: a problem file or a course policy must be one object, and serde
+/// would read an array as a struct's fields in order (and name the struct in its error).
+/// `None` for an object, blanks only, or what is not JSON at all (the parser says what it
+/// finds).
+pub(crate) fn top_level(text: &str) -> Option<(JsonKind, usize, usize)> {
+    let at = text.find(|c| !matches!(c, ' ' | '\t' | '\n' | '\r'))?;
     let rest = &text[at..];
     let kind = match rest.as_bytes()[0] {
         b'[' => JsonKind::Array,
@@ -254,19 +271,11 @@ fn not_an_object(path: &Path, text: &str) -> Result<(), ProblemError> {
         b'-' | b'0'..=b'9' => JsonKind::Number,
         _ if rest.starts_with("true") || rest.starts_with("false") => JsonKind::Boolean,
         _ if rest.starts_with("null") => JsonKind::Null,
-        // `{`, or not JSON at all: the parser says what it finds.
-        _ => return Ok(()),
+        _ => return None,
     };
     let before = &text[..at];
     let line_start = before.rfind('\n').map_or(0, |i| i + 1);
-    Err(syntax(
-        path,
-        1 + before.matches('\n').count(),
-        1 + at - line_start,
-        None,
-        Parse::NotAnObject { kind },
-        SyntaxFix::OneObject,
-    ))
+    Some((kind, 1 + before.matches('\n').count(), 1 + at - line_start))
 }
 
 /// The field where the parser stopped, as `lights[1].falloff`; empty at the top level. (The
@@ -688,7 +697,18 @@ pub(crate) struct SceneFile<R: Real> {
 /// Reads a scene: a problem file with a camera and surfaces (what the tracer needs), and the
 /// mesh files it names.
 pub(crate) fn load_scene<R: Real>(path: &Path) -> Result<SceneFile<R>, ProblemError> {
-    let (file, problem) = load::<R>(path)?;
+    load_scene_for::<R>(path, validate::Work::Image)
+}
+
+/// [`load_scene`], for `work`: with [`validate::Work::Pixel`] (one pixel explained) the
+/// image's own bounds (its primary rays, one sample's tree) are left to the pixel's.
+pub(crate) fn load_scene_for<R: Real>(
+    path: &Path,
+    work: validate::Work,
+) -> Result<SceneFile<R>, ProblemError> {
+    let file = parse_file(path)?;
+    let problem =
+        validate::validate_for::<R>(&file, path.parent(), work).map_err(|e| e.at(path))?;
     let meshes = mesh_files(&file, path);
     let Some(camera) = problem.camera else {
         return Err(Invalid::of("camera", SourceFault::NoCamera).at(path));

@@ -164,12 +164,16 @@ messages! {
         MaterialRef =>
             "the name of a material in \"materials\", or a material object",
             "o nome de um material em \"materials\", ou um objeto de material";
+        /// A course policy's `tolerance` (check/policy.rs).
+        Tolerances =>
+            "the tolerances: an object {{\"1\": 0.005, \"255\": 1}}",
+            "as tolerâncias: um objeto {{\"1\": 0.005, \"255\": 1}}";
     }
 }
 
 impl Expected {
     /// The expectations without fields, to read serde's words back.
-    fn fixed() -> [Expected; 22] {
+    fn fixed() -> [Expected; 23] {
         use Expected::*;
         [
             F64,
@@ -194,6 +198,7 @@ impl Expected {
             AnswerColour,
             Answer,
             MaterialRef,
+            Tolerances,
         ]
     }
 
@@ -234,7 +239,7 @@ impl Expected {
             | Expected::Reflectivity
             | Expected::AnswerColour
             | Expected::Answer => "esperada",
-            Expected::Render => "esperadas",
+            Expected::Render | Expected::Tolerances => "esperadas",
             Expected::NamedMaterials => "esperados",
             Expected::F64
             | Expected::U32

@@ -26,6 +26,7 @@ use crate::core::{
     Cone, Falloff, Light, LightKind, LightSet, Material, Real, Transmission, Vector, V3,
 };
 use crate::geometry::{Plane, Ray, Shape, Sphere, Triangle};
+use crate::text::Num;
 
 /// Validates a parsed problem in precision `R`; mesh files are looked up from the working
 /// folder (see [`validate_in`]).
@@ -38,6 +39,28 @@ pub fn validate<R: Real>(file: &ProblemFile) -> Result<Problem<R>, Invalid> {
 pub fn validate_in<R: Real>(
     file: &ProblemFile,
     base: Option<&Path>,
+) -> Result<Problem<R>, Invalid> {
+    validate_for::<R>(file, base, Work::Image)
+}
+
+/// What a scene is read for, which decides the bounds its render settings are held to.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum Work {
+    /// The whole image (and every other use): its primary rays, width × height × samples,
+    /// within [`MAX_PIXEL_SAMPLES`], and one sample's tree within [`MAX_TREE_RAYS`].
+    Image,
+    /// One pixel explained (`--explain-pixel`): nothing of the image is traced or held, so
+    /// neither bound of the image applies; the caller holds the pixel to its own,
+    /// [`check_explanation`] (its samples' trees within [`MAX_EXPLAINED_RAYS`], far below a
+    /// tree's bound), with the settings in force.
+    Pixel,
+}
+
+/// [`validate_in`], for `work`.
+pub(crate) fn validate_for<R: Real>(
+    file: &ProblemFile,
+    base: Option<&Path>,
+    work: Work,
 ) -> Result<Problem<R>, Invalid> {
     let Lights {
         lights,
@@ -160,7 +183,7 @@ pub fn validate_in<R: Real>(
 
     let camera = file.camera.as_ref().map(camera::<R>).transpose()?;
     let render = render_settings::<R>(file.render.as_ref())?;
-    if let Some(c) = &camera {
+    if let (Some(c), Work::Image) = (&camera, work) {
         check_work(c.width, c.height, render.samples).map_err(|e| e.at("render.samples"))?;
     }
     let problem = Problem {
@@ -181,7 +204,7 @@ pub fn validate_in<R: Real>(
         render,
         warnings: super::warnings::warnings(file),
     };
-    if problem.camera.is_some() {
+    if problem.camera.is_some() && work == Work::Image {
         let s = &problem.render;
         check_tree(&problem, s.max_level, s.min_weight.to_f64())
             .map_err(|e| e.at("render.max_level"))?;
@@ -802,8 +825,26 @@ fn surface<R: Real>(
             let v = required(s.vertices.as_deref(), base, "vertices", what)?;
             let vertices = f("vertices");
             let mut p = [V3::<R>::ZERO; 3];
+            // Within the bound the ray–triangle test can multiply: past it a ray could miss the
+            // triangle without a word, and its edges overflow (it would read as degenerate).
+            let max = crate::geometry::triangle::max_coordinate::<R>();
             for (k, corner) in v.iter().enumerate() {
                 p[k] = vector::<R>(*corner, vertices.index(k))?;
+                if let Some(j) = corner.iter().position(|x| x.abs() > max) {
+                    let (value, max) = (show(corner[j]), Num(max));
+                    return Err(Invalid::of(
+                        vertices.index(k).index(j),
+                        if R::NAME == "f32" {
+                            SurfaceFault::CornerTooLargeF32 { value, max }
+                        } else {
+                            SurfaceFault::CornerTooLarge {
+                                value,
+                                max,
+                                precision: R::NAME,
+                            }
+                        },
+                    ));
+                }
             }
             let t = Triangle { p, normals: None };
             if t.normal().is_none() {

@@ -16,15 +16,14 @@ faults! {
                  --explain-pixel X,Y), or add a \"ray\" to solve one ray",
                 "renderize-a com `phong render FILE -o image.png` (e explique um pixel com \
                  --explain-pixel X,Y), ou acrescente um \"ray\" para resolver um raio";
-        /// A sphere's hit point the precision cannot tell from its centre.
-        HitAtCentre { precision: &'static str } =>
+        /// A sphere's hit point the precision cannot tell from its centre; `fix`: what would
+        /// help in that precision.
+        HitAtCentre { precision: &'static str, fix: Resolve } =>
             "the hit point cannot be told from the sphere's centre in {precision}: the radius is \
              below the rounding of the coordinates",
             "o ponto de interseção não se distingue do centro da esfera em {precision}: o raio da \
              esfera é menor que o arredondamento das coordenadas";
-            fix "use --precision f64, a larger radius, or coordinates nearer the origin",
-                "use --precision f64, um raio de esfera maior, ou coordenadas mais próximas da \
-                 origem";
+            fix "{fix}", "{fix}";
         /// The viewer at the point shaded.
         ViewerAtPoint =>
             "the viewer is exactly at the point being shaded, so V is undefined",
@@ -88,6 +87,30 @@ impl Default for Overflowing {
 }
 
 messages! {
+    /// What would let the precision tell a sphere's hit point from its centre. The rounding is
+    /// relative to the coordinates (of the centre, the ray's origin and the point), so scaling
+    /// the whole scene changes nothing: a larger radius, or the scene moved nearer the origin,
+    /// does; in f32, f64 first.
+    #[derive(Default)]
+    pub enum Resolve {
+        /// In f32: f64 first.
+        #[default]
+        Precision =>
+            "use --precision f64, a larger radius, or coordinates nearer the origin",
+            "use --precision f64, um raio de esfera maior, ou coordenadas mais próximas da \
+             origem";
+        /// In f64, the most precise there is: the radius, or where the scene is.
+        Radius =>
+            "give the sphere a larger radius, or move the scene nearer the origin (the sphere \
+             and the ray's origin nearer (0, 0, 0)): the rounding grows with the coordinates, so \
+             scaling the whole scene would not help",
+            "dê à esfera um raio maior, ou desloque a cena para perto da origem (a esfera e a \
+             origem do raio mais perto de (0, 0, 0)): o arredondamento cresce com as \
+             coordenadas, e mudar a escala de toda a cena não ajudaria";
+    }
+}
+
+messages! {
     /// What would bring an overflowing result back: f64, or smaller numbers.
     #[derive(Default)]
     pub enum Smaller {
@@ -107,6 +130,24 @@ messages! {
 mod tests {
     use super::*;
     use crate::text::{Fault, Lang};
+
+    #[test]
+    fn a_hit_at_the_centre_suggests_f64_only_in_f32() {
+        let f32 = SolveFault::HitAtCentre {
+            precision: "f32",
+            fix: Resolve::Precision,
+        };
+        assert!(f32.fix(Lang::En).starts_with("use --precision f64"));
+        let f64 = SolveFault::HitAtCentre {
+            precision: "f64",
+            fix: Resolve::Radius,
+        };
+        assert!(!f64.fix(Lang::En).contains("--precision"));
+        assert!(f64
+            .fix(Lang::En)
+            .starts_with("give the sphere a larger radius"));
+        assert!(f64.fix(Lang::Pt).starts_with("dê à esfera um raio maior"));
+    }
 
     #[test]
     fn an_overflowing_light_names_it_in_both_languages() {

@@ -21,7 +21,7 @@ use crate::core::{
 use crate::geometry::{Aggregate, Ray, Shape, SmoothNormal, SurfaceHit};
 use crate::problem::validate::{light_label, show};
 use crate::problem::{GivenVector, Invalid, NamedMaterial, Problem, SurfaceSource, Target};
-use faults::{Overflowing, Smaller, SolveFault};
+use faults::{Overflowing, Resolve, Smaller, SolveFault};
 
 pub use file::{solve_file, solve_source};
 pub use findings::{ConeEdge, Finding, FindingData, GateDecision};
@@ -615,7 +615,14 @@ pub(crate) fn solve_ray_with<R: Real, F: Formulas>(
     let unresolved = |i: usize| {
         Invalid::of(
             format!("surfaces[{}]", surfaces[i].source.index),
-            SolveFault::HitAtCentre { precision: R::NAME },
+            SolveFault::HitAtCentre {
+                precision: R::NAME,
+                fix: if R::NAME == "f32" {
+                    Resolve::Precision
+                } else {
+                    Resolve::Radius
+                },
+            },
         )
     };
     let mut starts_on_surface = false;

@@ -287,3 +287,37 @@ fn a_near_miss_names_the_reading_in_portuguese() {
     );
     assert_eq!(tail, "de diferença por canal (tolerância ±0.005)");
 }
+
+#[test]
+fn a_course_policy_that_is_not_an_object_is_said_in_portuguese() {
+    let dir = tempfile::tempdir().unwrap();
+    let policy = dir.path().join("politica.json");
+    std::fs::write(&policy, "[]").unwrap();
+    let policy = policy.display().to_string();
+    let (code, stderr) = run(
+        &[
+            "check",
+            &exercise("4.1.json"),
+            "--answer",
+            "0.5 0.7 0.3",
+            "--policy",
+            &policy,
+        ],
+        "pt_BR.UTF-8",
+    );
+    assert_eq!(code, 2, "{stderr}");
+    assert!(
+        stderr.starts_with(&format!(
+            "erro: --policy {policy}: o arquivo é uma lista [ … ], e uma política do curso é um \
+             objeto JSON {{ … }}"
+        )),
+        "{stderr}"
+    );
+    // `phong policy` in the example is a command, as written; the file's name is the user's.
+    assert_portuguese(
+        &stderr
+            .replace(&policy, " ")
+            .replace("`phong policy`", " ")
+            .replace("phong policy", " "),
+    );
+}

@@ -445,6 +445,12 @@ fn a_mesh_that_cannot_be_used_is_refused_wholly_in_portuguese() {
             Some("v 0 0 0\nv 1 0 0\nv 2 0 0\nf 1 2 3\n".to_owned()),
             "linha 4: o triângulo 0 da face é degenerado em f64".to_owned(),
         ),
+        // ±1e300: past what the ray–triangle test can multiply.
+        (
+            "huge",
+            Some("v -1e300 -1e300 0\nv 1e300 -1e300 0\nv 0 1e300 0\nf 1 2 3\n".to_owned()),
+            "o vértice 1 é grande demais para um triângulo em f64".to_owned(),
+        ),
         (
             "empty",
             Some("v 0 0 0\n".to_owned()),

@@ -177,6 +177,36 @@ fn a_falloff_that_overflows_f32_is_said_in_portuguese() {
 }
 
 #[test]
+fn a_sphere_too_small_for_its_coordinates_is_said_in_portuguese_with_the_fix_of_f64() {
+    // A radius of 1e-20 at z = 1, met from z = 5: the hit point rounds to the centre.
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::write(
+        dir.path().join("tiny.json"),
+        r#"{
+  "materials": {"M": {"ambient": [0.5, 0.4, 0.6]}},
+  "lights": [{"type": "ambient", "color": [1, 1, 1]}],
+  "ray": {"origin": [0, 0, 5], "direction": [0, 0, -1]},
+  "surfaces": [{"type": "sphere", "center": [0, 0, 1], "radius": 1e-20, "material": "M"}]
+}"#,
+    )
+    .unwrap();
+    let pt = refused_in(dir.path(), &["solve", "tiny.json", "--lang", "pt"]);
+    assert!(
+        pt.starts_with(
+            "erro: tiny.json: surfaces[0]: o ponto de interseção não se distingue do centro da \
+             esfera em f64"
+        ) && pt.contains("Correção: dê à esfera um raio maior, ou desloque a cena")
+            && !pt.contains("--precision"),
+        "{pt}"
+    );
+    assert_eq!(
+        english_in(&pt, &["tiny.json"]),
+        Vec::<String>::new(),
+        "{pt}"
+    );
+}
+
+#[test]
 fn a_pixel_whose_reflection_overflows_is_refused_in_portuguese() {
     // The classic scene with the mirror's reflectivity 9.5e299 and the floor's ambient O_a =
     // 3.4e38: the mirror's reflection adds O_r·C_r ≈ 9.5e299 · 0.2 · 3.4e38 ≈ 6e337 > f64.

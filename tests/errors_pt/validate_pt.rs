@@ -311,6 +311,22 @@ fn cases() -> Vec<(
             ],
         ),
         (
+            "a triangle too large for the ray–triangle test",
+            {
+                let mut s = scene(matte(), json!({}), (4, 3));
+                s["surfaces"][0] = json!({ "type": "triangle",
+                    "vertices": [[-1e300, -1e300, 0], [1e300, -1e300, 0], [0, 1e300, 0]],
+                    "material": matte() });
+                s
+            },
+            render,
+            vec![
+                "surfaces[0].vertices[0][0]: -1e300 é grande demais para um vértice de \
+                 triângulo em f64",
+                "Correção: dê coordenadas dentro de ±1e100 (reduza a escala da cena)",
+            ],
+        ),
+        (
             "a field of view of 0",
             {
                 let mut s = scene(matte(), json!({}), (4, 3));

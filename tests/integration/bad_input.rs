@@ -1495,3 +1495,195 @@ fn a_very_long_unknown_name_is_echoed_shortened() {
         assert!(doc["error"]["message"].as_str().unwrap_or("").len() < 1_000);
     }
 }
+
+// ---------------------------------------------------------------------------------------------
+// Coordinates too large for the precision, a sphere too small for it, a policy of another type
+// ---------------------------------------------------------------------------------------------
+
+/// The triangle with corners (−x, −x, 0), (x, −x, 0) and (0, x, 0): it holds the point (0, 0, 0)
+/// where the base ray problem's ray meets the plane z = 0.
+fn triangle(x: f64) -> Value {
+    json!({ "type": "triangle", "vertices": [[-x, -x, 0], [x, -x, 0], [0, x, 0]],
+            "material": "M" })
+}
+
+/// A triangle whose coordinates are too large for the ray–triangle test of the precision is
+/// refused as too large, naming the coordinate and the bound that works: at ±1e308 its edges
+/// overflowed and it was refused as "on one line"; at ±1e300 it was accepted, and the ray that
+/// meets it at (0, 0, 0) missed it (the test's products overflowed), without a word.
+#[test]
+fn a_triangle_too_large_for_the_precision_is_refused_naming_the_bound_that_works() {
+    for x in [1e308, 1e300, 2e100] {
+        let problem = with(ray_problem(), "/surfaces/0", triangle(x));
+        let bad = rejected_text(
+            &pretty(&problem),
+            &["f64"],
+            Expect {
+                field: Some("surfaces[0].vertices[0][0]"),
+                says: &["too large for a triangle", "within ±1e100"],
+            },
+        );
+        assert!(!bad.stderr.contains("one line"), "{}", bad.stderr);
+        assert!(!bad.stderr.contains("--precision f64"), "{}", bad.stderr);
+    }
+    // In f32 the bound is 1e12, and f64 is a way out: the same triangle solves there.
+    let problem = with(ray_problem(), "/surfaces/0", triangle(1e13));
+    let bad = rejected_text(
+        &pretty(&problem),
+        &["f32"],
+        Expect {
+            field: Some("surfaces[0].vertices[0][0]"),
+            says: &[
+                "too large for a triangle",
+                "within ±1e12",
+                "--precision f64",
+            ],
+        },
+    );
+    let pt = phong(&[
+        "solve",
+        utf8(&bad.path),
+        "--precision",
+        "f32",
+        "--lang",
+        "pt",
+    ]);
+    assert!(
+        pt.stderr
+            .contains("grande demais para um vértice de triângulo em f32")
+            && pt.stderr.contains("dentro de ±1e12"),
+        "{}",
+        pt.stderr
+    );
+    // At the bound, the ray from the bound itself meets the triangle (at t = 1e100 in f64,
+    // 1e12 in f32): the bound is one that works, not only one that is refused past.
+    for (precision, x) in [("f64", 1e100), ("f32", 1e12)] {
+        let problem = with(ray_problem(), "/surfaces/0", triangle(x));
+        let problem = with(problem, "/ray/origin", json!([0, 0, x]));
+        let problem = with(problem, "/lights/1/position", json!([0, 0, x / 2.0]));
+        check_solves(&pretty(&problem), precision);
+        let dir = TempDir::new().expect("a temporary folder");
+        let path = dir.path().join("at-the-bound.json");
+        fs::write(&path, pretty(&problem)).expect("written");
+        let run = phong(&["solve", utf8(&path), "--precision", precision]);
+        assert!(
+            run.code == Some(0) && !run.stdout.contains("meets no surface"),
+            "{precision}: {}{}",
+            run.stdout,
+            run.stderr
+        );
+    }
+}
+/// A sphere whose hit point rounding cannot tell from its centre: the fix is what would help in
+/// the precision in force. In f64 (the default) there is no "--precision f64" to use; a larger
+/// radius, or the sphere and the ray nearer the origin, is what helps.
+#[test]
+fn a_sphere_too_small_for_its_coordinates_gets_the_fix_of_the_precision_in_force() {
+    let sphere = json!({ "type": "sphere", "center": [0, 0, 1], "radius": 1e-20,
+                         "material": "M" });
+    let problem = with(ray_problem(), "/surfaces/0", sphere);
+    let text = pretty(&problem);
+    let f64 = rejected_text(
+        &text,
+        &["f64"],
+        Expect {
+            field: Some("surfaces[0]"),
+            says: &["from the sphere's centre in f64", "larger radius"],
+        },
+    );
+    assert!(!f64.stderr.contains("--precision"), "{}", f64.stderr);
+    let pt = phong(&["solve", utf8(&f64.path), "--lang", "pt"]);
+    assert!(
+        pt.stderr.contains("raio maior") && !pt.stderr.contains("--precision"),
+        "{}",
+        pt.stderr
+    );
+    let f32 = rejected_text(
+        &text,
+        &["f32"],
+        Expect {
+            field: Some("surfaces[0]"),
+            says: &["from the sphere's centre in f32", "--precision f64"],
+        },
+    );
+    drop(f32);
+}
+/// A course policy that is not a JSON object (an array, a number, a string, null, a boolean) is
+/// said to be one, naming the file, in both languages: never by the name of a Rust type of
+/// phong's own ("expected struct PolicyFile with 9 elements"). The same for its "tolerance".
+#[test]
+fn a_course_policy_that_is_not_an_object_is_said_so_in_the_users_words() {
+    let dir = TempDir::new().expect("a temporary folder");
+    let folder = dir.path().join("ex");
+    fs::create_dir(&folder).expect("created");
+    let problem = folder.join("4.1.json");
+    fs::write(&problem, pretty(&point_problem())).expect("written");
+    let beside = folder.join("course-policy.json");
+    let given = dir.path().join("policy.json");
+    for (text, en, pt) in [
+        ("[]", "an array [ … ]", "uma lista [ … ]"),
+        ("[{\"4.1\": 2}]", "an array [ … ]", "uma lista [ … ]"),
+        ("  3\n", "a number", "um número"),
+        ("\"policy\"", "a string", "um texto"),
+        ("null", "null", "null"),
+        ("true", "a boolean", "um booleano"),
+    ] {
+        for (file, flag) in [(&given, true), (&beside, false)] {
+            fs::write(file, text).expect("written");
+            let mut args = vec![
+                "check".to_owned(),
+                problem.display().to_string(),
+                "--answer".to_owned(),
+                "0 0 0".to_owned(),
+            ];
+            if flag {
+                args.extend(["--policy".to_owned(), file.display().to_string()]);
+            }
+            for (lang, kind, says) in [
+                ("en", en, "a course policy is one JSON object { … }"),
+                ("pt", pt, "uma política do curso é um objeto JSON { … }"),
+            ] {
+                let out = crate::support::phong()
+                    .args(&args)
+                    .args(["--lang", lang])
+                    .output()
+                    .expect("phong runs");
+                let err = String::from_utf8_lossy(&out.stderr);
+                assert_eq!(out.status.code(), Some(BAD_INPUT), "{text}: {err}");
+                assert!(err.contains(&file.display().to_string()), "{text}: {err}");
+                assert!(err.contains(says) && err.contains(kind), "{text}: {err}");
+                assert!(
+                    !err.contains("PolicyFile") && !err.contains("struct"),
+                    "{text}: {err}"
+                );
+            }
+            fs::remove_file(file).expect("removed");
+        }
+    }
+    // Nor does a field of the policy of the wrong type; and the tolerances, an object, are not
+    // read from an array in order (`[0.5, 3]` was a tolerance of 0.5 on the 1 scale).
+    for (text, lang) in [
+        (r#"{"tolerance": 3}"#, "en"),
+        (r#"{"tolerance": 3}"#, "pt"),
+        (r#"{"tolerance": [0.5, 3]}"#, "en"),
+    ] {
+        fs::write(&given, text).expect("written");
+        let says = match lang {
+            "en" => "expected the tolerances: an object {\"1\": 0.005, \"255\": 1}",
+            _ => "esperadas as tolerâncias: um objeto {\"1\": 0.005, \"255\": 1}",
+        };
+        let run = phong(&[
+            "check",
+            utf8(&problem),
+            "--answer",
+            "0 0 0",
+            "--policy",
+            utf8(&given),
+            "--lang",
+            lang,
+        ]);
+        assert_eq!(run.code, Some(BAD_INPUT), "{text}: {}", run.stderr);
+        assert!(run.stderr.contains(says), "{text}: {}", run.stderr);
+        assert!(!run.stderr.contains("TolerancesFile"), "{}", run.stderr);
+    }
+}

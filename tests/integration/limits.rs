@@ -848,3 +848,244 @@ fn an_output_naming_a_stream_is_written_into_it_in_order() {
     assert_eq!(lines[4], "4.1,1,1,0,0,0,", "{both}");
     assert_eq!(lines.len(), 5, "{both}");
 }
+
+/// An OBJ corner too large for the ray–triangle test of the precision is refused as too large,
+/// with the bound that works: at ±1e308 the face was said to be degenerate (its edges
+/// overflowed), at ±1e300 the mesh was rendered and every ray missed it.
+#[test]
+fn an_obj_corner_too_large_for_the_precision_is_refused_with_the_bound() {
+    let dir = TempDir::new().unwrap();
+    let scene = mesh_scene(&dir, "m.obj");
+    let face = |x: &str| format!("v -{x} -{x} 0\nv {x} -{x} 0\nv 0 {x} 0\nf 1 2 3\n");
+    for x in ["1e308", "1e300"] {
+        write(&dir, "m.obj", &face(x));
+        let e = refused(
+            &mut render(&dir, &scene),
+            &[
+                "surfaces[0].file",
+                "vertex 1",
+                "too large for a triangle in f64",
+                "within ±1e100",
+            ],
+        );
+        assert!(
+            !e.contains("degenerate") && !e.contains("--precision"),
+            "{e}"
+        );
+    }
+    write(&dir, "m.obj", &face("1e13"));
+    refused(
+        render(&dir, &scene).args(["--precision", "f32"]),
+        &["vertex 1", "within ±1e12", "--precision f64"],
+    );
+    render(&dir, &scene).assert().success();
+}
+/// A file that cannot be created where the user asked (`/proc` and `/sys` refuse any new file,
+/// root's too) is said of the path given, never of the temporary file written first
+/// (`at path "/proc/.phong-Ab12Cd.tmp"`, a name the user never gave), and in the user's
+/// language.
+#[cfg(target_os = "linux")]
+#[test]
+fn an_output_that_cannot_be_created_is_named_as_given_not_by_its_temporary_file() {
+    let dir = TempDir::new().unwrap();
+    let scene = scene_file(&dir, &small_scene());
+    let subs = write(&dir, "subs.csv", "ana,4.1,0.5 0.7 0.3\n");
+    for folder in ["/proc", "/sys"] {
+        if !Path::new(folder).is_dir() {
+            continue;
+        }
+        for (name, args) in [
+            ("x.txt", vec![exercise("4.1.json").display().to_string()]),
+            ("x.png", vec![scene.display().to_string()]),
+            (
+                "r.csv",
+                vec![
+                    subs.display().to_string(),
+                    "--exercises".to_owned(),
+                    root().join("exercises").display().to_string(),
+                ],
+            ),
+        ] {
+            let command = match name {
+                "x.txt" => "solve",
+                "x.png" => "render",
+                _ => "grade",
+            };
+            let out = format!("{folder}/{name}");
+            for (lang, says) in [
+                ("en", format!("cannot write {out}: ")),
+                ("pt", format!("não é possível escrever {out}: ")),
+            ] {
+                let err = refused(
+                    phong()
+                        .arg(command)
+                        .args(&args)
+                        .args(["-o", &out, "--lang", lang]),
+                    &[&says],
+                );
+                assert!(
+                    !err.contains(".phong-") && !err.contains("at path"),
+                    "{command} -o {out}: {err}"
+                );
+                if lang == "pt" {
+                    assert!(err.contains("do sistema)"), "{command} -o {out}: {err}");
+                }
+            }
+        }
+    }
+}
+/// `phong check`, `phong policy` and `phong serve` read a course policy as `grade` and `moodle`
+/// do: it is an input of theirs, and an output naming it (the folder's `course-policy.json` or
+/// the file of `--policy`) is refused before anything is written. `check -o
+/// ex/course-policy.json` replaced the policy with the check's report.
+#[test]
+fn an_output_may_not_replace_the_course_policy_the_run_reads() {
+    let dir = TempDir::new().unwrap();
+    let ex = dir.path().join("ex");
+    std::fs::create_dir(&ex).unwrap();
+    std::fs::copy(exercise("4.1.json"), ex.join("4.1.json")).unwrap();
+    let policy = "{\"reading_credit\": 0.25, \"comment\": \"the course's own\"}\n";
+    let beside = ex.join("course-policy.json");
+    std::fs::write(&beside, policy).unwrap();
+    let given = write(&dir, "policy.json", policy);
+    let subs = write(&dir, "subs.csv", "ana,4.1,0.5 0.7 0.3\n");
+    let check = |policy_flag: Option<&Path>, out: &Path| {
+        let mut cmd = phong();
+        cmd.arg("check")
+            .arg(ex.join("4.1.json"))
+            .args(["--answer", "0.5 0.7 0.3"]);
+        if let Some(p) = policy_flag {
+            cmd.arg("--policy").arg(p);
+        }
+        cmd.arg("-o").arg(out);
+        cmd
+    };
+    refused(&mut check(None, &beside), &["--output", "is the input"]);
+    refused(
+        &mut check(Some(&given), &given),
+        &["--output", "is the input"],
+    );
+    let policy_cmd = |policy_flag: Option<&Path>, out: &Path| {
+        let mut cmd = phong();
+        cmd.arg("policy").arg(&ex);
+        if let Some(p) = policy_flag {
+            cmd.arg("--policy").arg(p);
+        }
+        cmd.arg("-o").arg(out);
+        refused(&mut cmd, &["--output", "is the input"]);
+    };
+    policy_cmd(None, &beside);
+    policy_cmd(Some(&given), &given);
+    // grade and moodle refused it already: held to it.
+    refused(
+        phong()
+            .arg("grade")
+            .arg(&subs)
+            .arg("--exercises")
+            .arg(&ex)
+            .arg("-o")
+            .arg(&beside),
+        &["--output", "is the input"],
+    );
+    refused(
+        phong()
+            .arg("moodle")
+            .arg(ex.join("4.1.json"))
+            .arg("-o")
+            .arg(&beside),
+        &["--output", "is the input"],
+    );
+    // serve appends its answers to --log-answers (and renames it when full): refused before it
+    // listens (a server let through would run until the timeout).
+    #[cfg(feature = "serve")]
+    for (policy_flag, log) in [(None, &beside), (Some(&given), &given)] {
+        let mut cmd = phong();
+        cmd.arg("serve")
+            .arg("--exercises")
+            .arg(&ex)
+            .args(["--addr", "127.0.0.1:0"]);
+        if let Some(p) = policy_flag {
+            cmd.arg("--policy").arg(p);
+        }
+        cmd.arg("--log-answers")
+            .arg(log)
+            .timeout(std::time::Duration::from_secs(20));
+        refused(&mut cmd, &["--log-answers", "is the input"]);
+    }
+    assert_eq!(std::fs::read_to_string(&beside).unwrap(), policy);
+    assert_eq!(std::fs::read_to_string(&given).unwrap(), policy);
+}
+/// `--explain-pixel` traces one pixel's rays and nothing else: the image's own bounds (its
+/// primary rays within 2^30, its buffer within memory) are not the pixel's, which is bounded by
+/// its own (2^13 rays in all its samples, and inside the image). A 16384² image at 8 samples
+/// (2^31 primary rays) was refused for the whole image's work; at one sample, under a 1 GiB
+/// address space, for the 1.6 GB image it never makes.
+#[test]
+fn an_explained_pixel_is_held_to_its_own_bounds_not_the_images() {
+    let dir = TempDir::new().unwrap();
+    let mut s = small_scene();
+    s["camera"]["width"] = json!(16384);
+    s["camera"]["height"] = json!(16384);
+    s["render"] = json!({ "samples": 8 });
+    let big = scene_file(&dir, &s);
+    // The image itself stays refused.
+    refused(&mut render(&dir, &big), &["render.samples", "primary rays"]);
+    let explain = |scene: &Path, args: &[&str]| {
+        let mut cmd = phong();
+        cmd.arg("render")
+            .arg(scene)
+            .args(["--explain-pixel", "8192,8192", "--format", "json"])
+            .args(args);
+        cmd
+    };
+    for precision in ["f64", "f32"] {
+        let out = explain(&big, &["--precision", precision]).output().unwrap();
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(0), "{precision}: {err}");
+        let doc: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+        assert_eq!(
+            doc["samples"].as_array().map(Vec::len),
+            Some(8),
+            "{precision}"
+        );
+        // In f32, the same pixel in f64 beside it: the scene read again in f64 for the pixel.
+        assert_eq!(
+            doc["versus_f64"].is_object(),
+            precision == "f32",
+            "{precision}"
+        );
+    }
+    // --samples over the file's: 64 samples of a one-ray tree fit the 8192 rays an explanation
+    // may hold, though 16384² × 64 primary rays are far past a render's.
+    explain(&big, &["--samples", "64"]).assert().success();
+    // The pixel must still be inside the image (the bound on its rays:
+    // an_explained_pixel_that_could_hold_too_many_rays_is_refused_before_anything_is_written).
+    refused(
+        phong()
+            .arg("render")
+            .arg(&big)
+            .args(["--explain-pixel", "16384,0"]),
+        &["--explain-pixel", "outside the 16384×16384 image"],
+    );
+    // Nothing is allocated by the image's size: one sample's pixel under a 1 GiB address space.
+    #[cfg(target_os = "linux")]
+    {
+        s["render"] = json!({ "samples": 1 });
+        let one = write(&dir, "one.json", &s.to_string());
+        let out = support::sh()
+            .arg("-c")
+            .arg("ulimit -v 1048576; exec \"$0\" \"$@\"")
+            .arg(support::phong_path())
+            .arg("render")
+            .arg(&one)
+            .args(["--explain-pixel", "8192,8192", "--threads", "1"])
+            .output()
+            .unwrap();
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(0), "{err}");
+        assert!(
+            String::from_utf8_lossy(&out.stdout).contains("8192"),
+            "{err}"
+        );
+    }
+}

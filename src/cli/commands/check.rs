@@ -11,7 +11,19 @@ use crate::problem;
 use crate::text::{FixOf, Said, WhatOf};
 
 pub(crate) fn run(args: &CheckArgs) -> Result<Exit, CliError> {
-    let inputs: Vec<&std::path::Path> = args.files.iter().map(|p| p.as_path()).collect();
+    // The course policy each file is judged by is read too: `-o ex/course-policy.json` would
+    // replace it with the report.
+    let policies: Vec<std::path::PathBuf> = args
+        .files
+        .iter()
+        .filter_map(|p| super::policy_file(args.policy.policy.as_deref(), folder_of(p)))
+        .collect();
+    let inputs: Vec<&std::path::Path> = args
+        .files
+        .iter()
+        .chain(&policies)
+        .map(|p| p.as_path())
+        .collect();
     output::distinct(&inputs, &[("--output", args.output.as_deref())])?;
     if args.answer.is_some() && args.files.len() > 1 {
         return Err(CliError::conflict(CliFault::AnswerOneFile {
@@ -61,19 +73,24 @@ pub(crate) fn run(args: &CheckArgs) -> Result<Exit, CliError> {
 /// The course policy `path` is judged by (`--policy`, else the one beside it), with the flags
 /// over it.
 fn policy_of(args: &CheckArgs, path: &std::path::Path) -> Result<check::policy::Policy, CliError> {
-    let folder = path.parent().map(|p| {
-        if p.as_os_str().is_empty() {
-            std::path::Path::new(".")
-        } else {
-            p
-        }
-    });
-    let mut policy = super::course_policy(args.policy.policy.as_deref(), folder)?;
+    let mut policy = super::course_policy(args.policy.policy.as_deref(), folder_of(path))?;
     if args.tolerance.is_some() {
         policy.tolerance_forced = args.tolerance;
     }
     policy.strict |= args.strict;
     Ok(policy)
+}
+
+/// The folder of the file `path`, whose `course-policy.json` it is judged by (`.` for a name
+/// without a folder).
+fn folder_of(path: &std::path::Path) -> Option<&std::path::Path> {
+    path.parent().map(|p| {
+        if p.as_os_str().is_empty() {
+            std::path::Path::new(".")
+        } else {
+            p
+        }
+    })
 }
 
 /// A check's exit: 0 accepted, 1 refused, 2 not checked.

@@ -29,7 +29,7 @@ pub(crate) fn course_policy(
     folder: Option<&std::path::Path>,
 ) -> Result<crate::check::policy::Policy, CliError> {
     use crate::check::policy::Policy;
-    let (path, named) = match (flag, folder.and_then(Policy::file_in)) {
+    let (path, named) = match (flag, policy_file(flag, folder)) {
         (Some(file), _) => (file.to_owned(), format!("--policy {}", file.display())),
         (None, Some(path)) => {
             let named = path.display().to_string();
@@ -47,6 +47,19 @@ pub(crate) fn course_policy(
         };
         CliError::usage(named, fault)
     })
+}
+
+/// The file [`course_policy`] reads, without reading it: the file of `--policy`, else the
+/// `course-policy.json` of `folder` when there is one; `None` for the defaults. An input of
+/// the run, which no output may replace ([`crate::cli::output::distinct`]).
+pub(crate) fn policy_file(
+    flag: Option<&std::path::Path>,
+    folder: Option<&std::path::Path>,
+) -> Option<std::path::PathBuf> {
+    match flag {
+        Some(file) => Some(file.to_owned()),
+        None => folder.and_then(crate::check::policy::Policy::file_in),
+    }
 }
 
 /// The command line's tracer settings, to put over a scene's.

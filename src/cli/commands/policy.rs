@@ -22,6 +22,12 @@ pub(crate) fn run(args: &PolicyCmdArgs) -> Result<Exit, CliError> {
             fault: CliFault::ExercisesNotAFolder,
         });
     }
+    // The policy read is an input: `-o DIR/course-policy.json` would replace it.
+    let read = super::policy_file(args.policy.policy.as_deref(), Some(&folder));
+    output::distinct(
+        &read.iter().map(|p| p.as_path()).collect::<Vec<_>>(),
+        &[("--output", args.output.as_deref())],
+    )?;
     let policy = super::course_policy(args.policy.policy.as_deref(), Some(&folder))?;
     let text = crate::report::json::pretty(&policy.to_json());
     output::emit(args.output.as_deref(), &text)?;

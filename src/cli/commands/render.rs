@@ -32,7 +32,7 @@ fn render<R: Real>(args: &RenderArgs) -> Result<Exit, CliError> {
         mut problem,
         camera,
         meshes,
-    } = problem::load_scene::<R>(path)?;
+    } = problem::load_scene_for::<R>(path, work(args))?;
     let loaded = started.elapsed();
     // The meshes the scene names are inputs too: no output may replace one.
     let meshes: Vec<&Path> = meshes.iter().map(|p| p.as_path()).collect();
@@ -41,11 +41,14 @@ fn render<R: Real>(args: &RenderArgs) -> Result<Exit, CliError> {
         .render
         .with(&super::overrides(&args.settings))
         .map_err(CliError::setting)?;
-    check_work(&problem, &camera)?;
     if args.explain_pixel.is_some() {
-        // Before the scene is built: an explanation too large to hold is refused at once.
+        // Before the scene is built: an explanation too large to hold is refused at once. The
+        // pixel's rays are all that is traced, and nothing is held by the image's size: the
+        // image's bounds (its primary rays, its memory) are not the pixel's.
         crate::problem::validate::check_explanation(&problem)
             .map_err(|e| CliError::setting(e.at("explain_pixel")))?;
+    } else {
+        check_work(&problem, &camera)?;
     }
     // With --explain-pixel, --output names the explanation's file, whatever its extension;
     // otherwise the image's, whose format it (or --image-format) says. Checked before the build.
@@ -152,6 +155,15 @@ fn check_work<R: Real>(problem: &Problem<R>, camera: &Camera<R>) -> Result<(), C
     super::memory(bytes, "--output")
 }
 
+/// What the scene is read for: one pixel (`--explain-pixel`), held to the pixel's bounds only,
+/// or the whole image.
+fn work(args: &RenderArgs) -> crate::problem::validate::Work {
+    match args.explain_pixel {
+        Some(_) => crate::problem::validate::Work::Pixel,
+        None => crate::problem::validate::Work::Image,
+    }
+}
+
 /// `--explain-pixel X,Y`: the pixel's rays, each hit solved as `phong solve` solves a ray.
 fn explain_pixel<R: Real>(
     args: &RenderArgs,
@@ -220,7 +232,7 @@ fn pixel_in_f64(
         mut problem,
         camera,
         ..
-    } = problem::load_scene::<f64>(&args.scene).ok()?;
+    } = problem::load_scene_for::<f64>(&args.scene, work(args)).ok()?;
     problem.render = problem
         .render
         .with(&super::overrides(&args.settings))

@@ -18,6 +18,16 @@ pub(crate) fn run(args: &ServeArgs) -> Result<Exit, CliError> {
         ..Default::default()
     };
     let policy = super::course_policy(args.policy.as_deref(), args.exercises.as_deref())?;
+    // The answers are appended to --log-answers (and it is renamed when full): never the
+    // course policy the server judges by.
+    crate::cli::output::distinct(
+        &policy
+            .source
+            .iter()
+            .map(|p| p.as_path())
+            .collect::<Vec<_>>(),
+        &[("--log-answers", args.log_answers.as_deref())],
+    )?;
     let config = Config {
         addr: args.addr,
         policy: std::sync::Arc::new(policy),
