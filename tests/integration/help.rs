@@ -1,6 +1,8 @@
 //! The help of every command (`phong --help`, `phong CMD -h`, `phong help CMD`), pinned as
-//! snapshots (`snapshots/help-*.snap`): the English is clap's layout of the help texts, the
-//! same bytes whatever the way it is asked for.
+//! snapshots (`snapshots/help-en@*.snap`, `snapshots/help-pt@*.snap`), in English (clap's own
+//! layout and words, the bytes phong printed before its help could be Portuguese) and in
+//! Portuguese (under a Portuguese locale, or with `--lang pt`), where clap's own words are
+//! Portuguese too.
 
 use crate::support;
 
@@ -33,7 +35,11 @@ fn settings() -> insta::Settings {
 
 /// What `phong ARGS` prints on standard output, under the locale `LANG=lang`; it must succeed.
 fn help(lang: &str, args: &[&str]) -> String {
-    let out = support::phong().env("LANG", lang).args(args).output().unwrap();
+    let out = support::phong()
+        .env("LANG", lang)
+        .args(args)
+        .output()
+        .unwrap();
     assert!(out.status.success(), "phong {args:?}: {out:?}");
     assert!(out.stderr.is_empty(), "phong {args:?}: {out:?}");
     String::from_utf8(out.stdout).unwrap()
@@ -66,5 +72,84 @@ fn pinned(name: &str, lang: &str) {
 fn every_help_in_english() {
     pinned("en", "C");
     // A locale of another language is English too.
-    assert_eq!(help("es_ES.UTF-8", &["check", "-h"]), help("C", &["check", "-h"]));
+    assert_eq!(
+        help("es_ES.UTF-8", &["check", "-h"]),
+        help("C", &["check", "-h"])
+    );
+}
+
+#[test]
+fn every_help_in_portuguese() {
+    pinned("pt", "pt_BR.UTF-8");
+    // `--lang pt` anywhere on the line chooses Portuguese too, as for usage errors.
+    let pt = help("pt_BR.UTF-8", &["check", "--help"]);
+    assert_eq!(help("C", &["check", "--help", "--lang", "pt"]), pt);
+    assert_eq!(help("C", &["check", "--lang=pt", "--help"]), pt);
+    assert_eq!(
+        help("C", &["--help", "--lang", "pt"]),
+        help("pt_BR.UTF-8", &["--help"])
+    );
+    // … and `--lang en` English under a Portuguese locale.
+    assert_eq!(
+        help("pt_BR.UTF-8", &["check", "-h", "--lang", "en"]),
+        help("C", &["check", "-h"])
+    );
+}
+
+#[test]
+fn the_portuguese_help_says_clap_words_in_portuguese() {
+    let top = help("pt_BR.UTF-8", &["--help"]);
+    for said in [
+        "Resolve e explica passo a passo os exercícios de iluminação do Capítulo 4",
+        "\nUso: phong <COMANDO>\n",
+        "\nComandos:\n",
+        "\nOpções:\n",
+        "  check       Confere uma resposta (ou o gabarito de cada arquivo)",
+        "Mostra esta mensagem ou a ajuda do(s) subcomando(s) dado(s)",
+        "  -h, --help     Mostra a ajuda\n",
+        "  -V, --version  Mostra a versão\n",
+    ] {
+        assert!(top.contains(said), "{said:?} not in:\n{top}");
+    }
+    let short = help("pt_BR.UTF-8", &["check", "-h"]);
+    let long = help("pt_BR.UTF-8", &["check", "--help"]);
+    for text in [&short, &long] {
+        for said in [
+            "\nUso: phong check [OPTIONS] <FILE>...\n",
+            "\nArgumentos:\n  <FILE>...",
+            "\nOpções:\n",
+            "Sem --answer, confere-se o gabarito de cada arquivo",
+            "A maior diferença aceita por canal, na escala da resposta [padrão: a do gabarito",
+        ] {
+            assert!(text.contains(said), "{said:?} not in:\n{text}");
+        }
+    }
+    // The positional arguments come first, as in English.
+    assert!(long.find("Argumentos:") < long.find("Opções:"));
+    assert!(short.contains(
+        "markdown para notas [padrão: text] [valores possíveis: text, json, html, markdown]"
+    ));
+    assert!(short.contains("Mostra a ajuda (veja mais com '--help')"));
+    assert!(long.contains("Mostra a ajuda (veja um resumo com '-h')"));
+    assert!(long.contains(
+        "Valores possíveis:\n          - text:     Texto para pessoas\n          - json:     \
+         JSON para scripts"
+    ));
+    assert!(long.contains("\n          [padrão: text]\n"));
+    for english in [
+        "Usage:",
+        "Arguments:",
+        "Options:",
+        "Commands:",
+        "Print help",
+        "Print version",
+        "[default:",
+        "[possible values:",
+        "Possible values:",
+        "Check an answer",
+    ] {
+        for text in [&top, &short, &long] {
+            assert!(!text.contains(english), "{english:?} in:\n{text}");
+        }
+    }
 }
