@@ -77,6 +77,14 @@ walked! {
     sentences crate::cli::faults::CliText;
     sentences crate::cli::usage::UsageText;
     sentences crate::cli::usage::ClapReason;
+    sentences crate::cli::help::CommonHelp;
+    sentences crate::cli::help::ClapWords;
+    sentences crate::cli::help::answers::AnswersHelp;
+    sentences crate::cli::help::documents::DocumentsHelp;
+    sentences crate::cli::help::trace::TraceHelp;
+    #[cfg(feature = "serve")]
+    sentences crate::cli::help::serve::ServeHelp;
+    sentences crate::cli::help::values::ValueHelp;
     faults crate::tradeoff::sweep::SweepFault;
     sentences crate::tradeoff::messages::MetricName;
     sentences crate::tradeoff::messages::SettingName;

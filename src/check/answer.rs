@@ -11,14 +11,18 @@ use crate::text::number::{not_a_number, NotANumber};
 pub use crate::text::number::{number, shorten};
 use crate::text::{Echo, In, Lang, Num, Show};
 
-/// The scale an answer is written on.
+/// The scale an answer is written on: `Unit` (`--scale 1`) or `Bits8` (`--scale 255`), by
+/// the factor of [`Scale::factor`].
+///
+/// The variants carry no doc comment: clap would show it, in English only, as the help of the
+/// value; the command line says what each value means in both languages
+/// (`src/cli/help/values.rs`).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize, clap::ValueEnum)]
+#[allow(missing_docs)]
 pub enum Scale {
-    /// Components on [0, 1] (unclamped colours may exceed 1 or be negative).
     #[value(name = "1")]
     #[serde(rename = "1")]
     Unit,
-    /// 8-bit integers 0–255 (the clamped colour times 255).
     #[value(name = "255")]
     #[serde(rename = "255")]
     Bits8,

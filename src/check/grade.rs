@@ -58,15 +58,18 @@ pub struct Options {
     pub questions: Vec<String>,
 }
 
-/// What the submissions file is.
+/// What the submissions file is (`grade --input`): `Auto` (detected from its header), `Csv`
+/// or `Moodle`.
+///
+/// The variants carry no doc comment: clap would show it, in English only, as the help of the
+/// value; the command line says what each value means in both languages
+/// (`src/cli/help/values.rs`).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, clap::ValueEnum)]
+#[allow(missing_docs)]
 pub enum Input {
-    /// Moodle's Responses export when its header has a "Response 1" column, else the plain CSV.
     #[default]
     Auto,
-    /// The plain CSV: student, exercise, answer.
     Csv,
-    /// Moodle's quiz Responses report downloaded as CSV (README, "Grading").
     Moodle,
 }
 

@@ -471,7 +471,13 @@ pub fn credit(c: f64) -> Result<f64, PolicyError> {
     }
 }
 
-/// Which of a student's answers to one exercise counts when there are several.
+/// Which of a student's answers to one exercise counts when there are several (`grade
+/// --duplicates`, the policy's `"duplicates"`): `First`, `Last` (the default) or `Best`
+/// (the most points).
+///
+/// The variants carry no doc comment: clap would show it, in English only, as the help of the
+/// value; the command line says what each value means in both languages
+/// (`src/cli/help/values.rs`).
 #[derive(
     Clone,
     Copy,
@@ -484,13 +490,11 @@ pub fn credit(c: f64) -> Result<f64, PolicyError> {
     serde::Deserialize,
 )]
 #[serde(rename_all = "lowercase")]
+#[allow(missing_docs)]
 pub enum Duplicates {
-    /// The first in the file.
     First,
-    /// The last in the file (a later answer replaces an earlier one): the default.
     #[default]
     Last,
-    /// The one with the most points (the first of those on a tie).
     Best,
 }
 

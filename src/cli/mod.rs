@@ -1,7 +1,7 @@
 //! The `phong` command line, as ripgrep's `main` and cargo's `commands/` are laid out: parse the
-//! arguments (`args`, `parse`), run the command (`commands`, one file each), and map how
-//! it ended to an exit code (`exit`: 0 solved or right, 1 a checked answer is wrong, 2 bad
-//! input or usage) once. An error that stops a command (`error`) is printed here, once; output
+//! arguments (`args`, `parse`; their help in the user's language, `help`), run the command
+//! (`commands`, one file each), and map how it ended to an exit code (`exit`: 0 solved or
+//! right, 1 a checked answer is wrong, 2 bad input or usage) once. An error that stops a command (`error`) is printed here, once; output
 //! goes to standard output or a file written atomically (`output`).
 
 pub(crate) mod args;
@@ -11,6 +11,7 @@ pub(crate) mod error;
 pub(crate) mod exit;
 pub(crate) mod faults;
 mod files;
+pub(crate) mod help;
 pub mod memory;
 mod output;
 pub(crate) mod parse;
@@ -18,7 +19,7 @@ pub(crate) mod usage;
 
 use std::process::ExitCode;
 
-use clap::Parser;
+use clap::FromArgMatches;
 
 pub(crate) use args::Cli;
 pub(crate) use exit::Exit;
@@ -29,7 +30,14 @@ use args::Command;
 pub fn main() -> ExitCode {
     memory::prepare(crate::text::Lang::from_locale());
     let args: Vec<std::ffi::OsString> = std::env::args_os().collect();
-    match Cli::try_parse_from(&args) {
+    // The help is said in the language usage errors are said in (`--lang`, else the locale).
+    let mut command = help::command(usage::lang_of(&args));
+    let parsed = command
+        .try_get_matches_from_mut(&args)
+        .and_then(|mut matches| {
+            Cli::from_arg_matches_mut(&mut matches).map_err(|e| e.format(&mut command))
+        });
+    match parsed {
         Ok(cli) => {
             memory::prepare(cli.command.lang());
             // `phong serve` writes no output file, and stops on SIGINT and SIGTERM itself: it

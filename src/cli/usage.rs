@@ -1,7 +1,8 @@
 //! clap's usage errors (an unknown flag, a value refused, a missing argument) said in
 //! Portuguese: each rebuilt from clap's error context ([`clap::error::ContextKind`]: the
 //! argument, the value, the valid values, the suggestion) as a [`UsageText`], never by rewriting
-//! clap's rendered English. English is clap's own output, untouched, as are help and version.
+//! clap's rendered English. English is clap's own output, untouched, as is the version. The
+//! help is said in the same language ([`lang_of`]), by [`super::help`].
 
 use std::ffi::OsString;
 use std::fmt;

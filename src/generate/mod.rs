@@ -16,29 +16,20 @@ use rand_chacha::rand_core::{RngCore, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 use serde::Serialize;
 
-/// The kinds of problem `phong new` writes.
+/// The kinds of problem `phong new` writes (`--kind`).
+///
+/// The variants carry no doc comment: clap would show it, in English only, as the help of the
+/// value; the command line says what each value means in both languages
+/// (`src/cli/help/values.rs`).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
 pub enum Kind {
-    /// Ambient light only, like exercise 4.1.
     Ambient,
-    /// A point light, a point with its normal, and a viewer, like exercise 4.2.
     Point,
-    /// A ray meeting a plane (in front of its origin), like exercise 4.3.
     RayPlane,
-    /// A directional light (the sun: no position, no falloff), a point, its normal and a viewer.
     Directional,
-    /// A spot light (Eq. 4.4) whose cone holds the point, or does not: the angle ψ between the
-    /// cone's axis and the point is at least 5° from the edge γ, never within rounding of it.
     Spot,
-    /// Several lights (two point lights, or a point and a directional light, and an ambient
-    /// light) at one point: the terms add up (Eq. 4.16).
     Several,
-    /// A ray meeting a sphere (the nearest of its two hits, in front of the ray's origin).
     Sphere,
-    /// A ray meeting a plane whose material reflects (O_r) and transmits (O_t, η), with the
-    /// render settings' maximum level and minimum weight: the local colour, then the reflected
-    /// ray R_V (Eq. 4.17) and the transmitted ray (Snell's law), each with its level and
-    /// weight, and whether it is traced (Section 4.4).
     Secondary,
 }
 

@@ -8,17 +8,19 @@ use super::explain::Explanation;
 use super::messages::{pick, Phrase};
 use crate::text::lang::Lang;
 
-/// Which part of a problem set to write.
+/// Which part of a problem set to write (`solve --part`): what each writes is said by
+/// [`Contents::statements`], [`Contents::solutions`] and [`Contents::key`].
+///
+/// The variants carry no doc comment: clap would show it, in English only, as the help of the
+/// value; the command line says what each value means in both languages
+/// (`src/cli/help/values.rs`).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash, clap::ValueEnum)]
+#[allow(missing_docs)]
 pub enum Contents {
-    /// The statements and their data only: the student's handout.
     Statement,
-    /// The worked solutions, step by step.
     #[default]
     Solution,
-    /// The answer key: one table with every exercise's answer.
     Key,
-    /// The statements, then the solutions, then the answer key.
     All,
 }
 

@@ -1,14 +1,18 @@
 //! The language of explanations and verdicts: English, or Portuguese (the chapter's own language,
 //! with its terms: luz ambiente, reflexão difusa, reflexão especular, decaimento, …).
 
-/// A language every user-facing phrase exists in.
+/// A language every user-facing phrase exists in: English (`En`, `--lang en`) or Portuguese
+/// (`Pt`, `--lang pt`).
+///
+/// The variants carry no doc comment: clap would show it, in English only, as the help of the
+/// value; the command line says what each value means in both languages
+/// (`src/cli/help/values.rs`).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash, clap::ValueEnum, serde::Serialize)]
 #[serde(rename_all = "snake_case")]
+#[allow(missing_docs)]
 pub enum Lang {
-    /// English.
     #[default]
     En,
-    /// Portuguese (português), as in the course notes.
     Pt,
 }
 

@@ -54,15 +54,17 @@ impl Errors {
     }
 }
 
-/// The error a budget and the Pareto front are judged by.
+/// The error a budget and the Pareto front are judged by (`--metric`), each computed by
+/// [`errors`].
+///
+/// The variants carry no doc comment: clap would show it, in English only, as the help of the
+/// value; the command line says what each value means in both languages
+/// (`src/cli/help/values.rs`).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, clap::ValueEnum)]
 #[serde(rename_all = "snake_case")]
 pub enum Metric {
-    /// The largest error of any channel of any pixel (0–1 scale).
     MaxAbs,
-    /// The root mean square error over every channel (0–1 scale).
     Rmse,
-    /// The share of pixels whose 8-bit colour differs (0–1).
     PixelsDiffer,
 }
 

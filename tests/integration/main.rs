@@ -29,6 +29,7 @@ mod grade;
 mod grade_csv;
 mod grade_platforms;
 mod hand_calculations;
+mod help;
 mod latex_compiles;
 mod limits;
 mod moodle;

@@ -42,14 +42,19 @@ pub trait Writer {
     fn finish(self: Box<Self>) -> String;
 }
 
-/// Declares the formats: `Variant => module::Writer,`, its doc the help of its `--format` value
-/// (the value is the variant's name in lower case).
+/// Declares the formats: `Variant => module::Writer,` (the `--format` value is the variant's
+/// name in lower case).
 macro_rules! formats {
-    ($($(#[$doc:meta])* $variant:ident => $module:ident::$writer:ident,)*) => {
-        /// An output format of `phong check` (`--format`).
+    ($($variant:ident => $module:ident::$writer:ident,)*) => {
+        /// An output format of `phong check` (`--format`), each written by its [`Writer`].
+        ///
+        /// The variants carry no doc comment: clap would show it, in English only, as the help
+        /// of the value; the command line says what each value means in both languages
+        /// (`src/cli/help/values.rs`).
         #[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+        #[allow(missing_docs)]
         pub enum Format {
-            $($(#[$doc])* $variant,)*
+            $($variant,)*
         }
 
         impl Format {
@@ -64,12 +69,8 @@ macro_rules! formats {
 }
 
 formats! {
-    /// Text for people.
     Text => text::TextWriter,
-    /// JSON for scripts (stable field names, format_version).
     Json => json::JsonWriter,
-    /// A page for a browser: the colours as swatches, the slips linked to the solution's steps.
     Html => html::HtmlWriter,
-    /// Markdown for notes and course pages.
     Markdown => markdown::MarkdownWriter,
 }

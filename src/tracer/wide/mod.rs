@@ -42,13 +42,17 @@ use crate::problem::Problem;
 /// Samples traced together: a strip of a row (one sample per pixel: 64 pixels).
 pub const BLOCK: usize = 64;
 
-/// Which tracer renders an image: the same image either way.
+/// Which tracer renders an image: the same image either way. `Scalar` is `Tracer::trace`, one
+/// ray at a time; `Wide` is this module's, the default.
+///
+/// The variants carry no doc comment: clap would show it, in English only, as the help of the
+/// value; the command line says what each value means in both languages
+/// (`src/cli/help/values.rs`).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, clap::ValueEnum, serde::Serialize)]
 #[serde(rename_all = "lowercase")]
+#[allow(missing_docs)]
 pub enum Engine {
-    /// One ray at a time: each path traced to its end before the next.
     Scalar,
-    /// Packets of rays in SIMD lanes, a queue of rays per bounce; the default.
     #[default]
     Wide,
 }
