@@ -80,7 +80,7 @@ mod tests {
     fn clamping_keeps_what_is_in_range() {
         let c = clamp01::<f64>(glam::DVec3::new(-1.0, 0.25, 2.0));
         assert_eq!(c, glam::DVec3::new(0.0, 0.25, 1.0));
-        let nan = clamp01::<f32>(glam::Vec3::new(f32::NAN, 1.0, 0.0));
-        assert_eq!(nan, glam::Vec3::new(0.0, 1.0, 0.0));
+        let nan = clamp01::<f32>(glam::Vec3A::new(f32::NAN, 1.0, 0.0));
+        assert_eq!(nan, glam::Vec3A::new(0.0, 1.0, 0.0));
     }
 }

@@ -569,7 +569,7 @@ macro_rules! impl_lane_vec_scalar {
     };
 }
 
-impl_lane_vec_scalar!(glam::Vec3, f32);
+impl_lane_vec_scalar!(glam::Vec3A, f32);
 impl_lane_vec_scalar!(glam::DVec3, f64);
 
 macro_rules! impl_lanes_wide {

@@ -340,7 +340,14 @@ macro_rules! impl_real {
     };
 }
 
-impl_real!(f32, glam::Vec3, wide::f32x8, "f32");
+// f32's vector is glam's `Vec3A`: three floats in one 128-bit SIMD register (SSE2 on x86-64,
+// NEON on aarch64, a plain struct elsewhere), so a ray's own vector arithmetic (its hit point,
+// normal, reflection, the path's step) is one instruction where `Vec3` takes three; each
+// operation computes what `Vec3`'s does in the same order (a dot product (x·x + y·y) + z·z,
+// a cross product component by component), so the results are the same bits (the image
+// tests; docs/benchmarks.md, "f32's vectors in one register"). f64 has no such type: a
+// `DVec3` is three scalars.
+impl_real!(f32, glam::Vec3A, wide::f32x8, "f32");
 impl_real!(f64, glam::DVec3, super::lanes::F64Lanes, "f64");
 
 /// Shorthand for the vector type of a precision.

@@ -135,7 +135,7 @@ pub(crate) fn is_unit_length<R: Real>(length: R) -> bool {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use glam::{DVec3, Vec3};
+    use glam::{DVec3, Vec3A};
 
     fn check_f64(scale: f64) {
         let n = normalize::<f64>(DVec3::new(3.0, 0.0, 4.0) * scale).unwrap();
@@ -153,8 +153,8 @@ mod tests {
     #[test]
     fn normalize_survives_tiny_and_huge_vectors_in_f32() {
         for s in [1e-30f32, 1e-6, 1.0, 1e6, 1e30] {
-            let n = normalize::<f32>(Vec3::new(3.0, 0.0, 4.0) * s).unwrap();
-            assert!((n.unit - Vec3::new(0.6, 0.0, 0.8)).abs().max_element() < 1e-6);
+            let n = normalize::<f32>(Vec3A::new(3.0, 0.0, 4.0) * s).unwrap();
+            assert!((n.unit - Vec3A::new(0.6, 0.0, 0.8)).abs().max_element() < 1e-6);
         }
     }
 
