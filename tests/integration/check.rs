@@ -182,14 +182,29 @@ fn the_likely_intended_reading_of_4_2_is_accepted_unless_strict() {
     // misses by its own values: the reports never show the reading's colour as "expected"
     // with every channel "within".
     assert_eq!(json["expected"]["source"], "solution", "{json}");
-    assert_eq!(json["expected"]["color"], serde_json::json!([0.0, 0.0, 0.0]));
+    assert_eq!(
+        json["expected"]["color"],
+        serde_json::json!([0.0, 0.0, 0.0])
+    );
     assert_eq!(json["difference"], serde_json::json!([0.3, 0.36, 0.32]));
     let (_, md, _) = check(
         "4.2.json",
-        &["--answer", "0.3 0.36 0.32", "--strict", "--format", "markdown"],
+        &[
+            "--answer",
+            "0.3 0.36 0.32",
+            "--strict",
+            "--format",
+            "markdown",
+        ],
     );
-    assert!(md.contains("- Expected: (0, 0, 0) `#000000` (the problem as written"), "{md}");
-    assert!(md.contains("| R | 0.3 | 0 | +0.3 | outside the tolerance |"), "{md}");
+    assert!(
+        md.contains("- Expected: (0, 0, 0) `#000000` (the problem as written"),
+        "{md}"
+    );
+    assert!(
+        md.contains("| R | 0.3 | 0 | +0.3 | outside the tolerance |"),
+        "{md}"
+    );
     assert!(!md.contains("within the tolerance"), "{md}");
     assert!(!md.contains("- as written:"), "{md}");
     // The problem as written is right too.

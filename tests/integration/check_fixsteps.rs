@@ -370,7 +370,10 @@ fn a_positive_t_of_the_reversed_ray_is_the_intended_readings() {
 fn the_lines_own_t_is_right_as_written() {
     let (code, out, _) = run(&["check", "exercises/4.3.json", "--step", "t=-90"]);
     assert_eq!(code, 0, "{out}");
-    assert!(out.contains("t          = -90  right (O + tD on the surface)\n"), "{out}");
+    assert!(
+        out.contains("t          = -90  right (O + tD on the surface)\n"),
+        "{out}"
+    );
 }
 
 // Black where the ray hits nothing (4.3, as above) is the background: the answer is "none".

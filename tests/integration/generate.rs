@@ -331,7 +331,9 @@ fn a_black_ambient_light_is_said_to_be_black() {
     let mut black = 0;
     for kind in KINDS {
         let out = support::phong()
-            .args(["new", "--kind", kind, "--count", "30", "--seed", "1", "--lang", "pt"])
+            .args([
+                "new", "--kind", kind, "--count", "30", "--seed", "1", "--lang", "pt",
+            ])
             .output()
             .unwrap();
         assert_eq!(out.status.code(), Some(0));
@@ -351,12 +353,21 @@ fn a_black_ambient_light_is_said_to_be_black() {
                 .collect();
             if ambient.len() == 1 && v3(&ambient[0]["color"]) == [0.0; 3] {
                 black += 1;
-                assert!(en.contains("The ambient light is black, I_a = (0, 0, 0)."), "{en}");
-                assert!(pt.contains("A luz ambiente é preta, I_a = (0, 0, 0)."), "{pt}");
+                assert!(
+                    en.contains("The ambient light is black, I_a = (0, 0, 0)."),
+                    "{en}"
+                );
+                assert!(
+                    pt.contains("A luz ambiente é preta, I_a = (0, 0, 0)."),
+                    "{pt}"
+                );
             }
         }
     }
-    assert!(black > 0, "30 problems of each kind draw a black ambient light");
+    assert!(
+        black > 0,
+        "30 problems of each kind draw a black ambient light"
+    );
 }
 
 /// A problem of several lights names each light that is not ambient with its own symbols

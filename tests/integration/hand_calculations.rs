@@ -874,8 +874,14 @@ fn a_literal_channel_that_cancels_is_zero_not_rounding_noise() {
         let doc = solve_json(&exercise("several-lights.json"), precision).expect("it solves");
         let literal = vec3(&doc, "/solution/color/literal");
         assert_eq!(literal[0], 0.0, "{precision:?}: {literal:?}");
-        assert!((literal[1] - 0.94).abs() < 1e-6, "{precision:?}: {literal:?}");
-        assert!((literal[2] - 0.4).abs() < 1e-6, "{precision:?}: {literal:?}");
+        assert!(
+            (literal[1] - 0.94).abs() < 1e-6,
+            "{precision:?}: {literal:?}"
+        );
+        assert!(
+            (literal[2] - 0.4).abs() < 1e-6,
+            "{precision:?}: {literal:?}"
+        );
     }
     let out = crate::support::phong_std()
         .args(["solve", "exercises/several-lights.json"])
