@@ -360,7 +360,9 @@ impl std::fmt::Display for BadStep {
 
 impl std::error::Error for BadStep {}
 
-fn known_names() -> String {
+/// Every step's name, in the solution's order, as `--step` reads them ("t, P, N, …"): the
+/// error on an unknown name and `--step`'s help list them from here.
+pub(crate) fn step_names() -> String {
     NAMES.iter().map(|n| n.name).collect::<Vec<_>>().join(", ")
 }
 
@@ -382,7 +384,7 @@ pub fn parse_named(name_text: &str, value_text: &str) -> Result<GivenStep, BadSt
     let name = lookup(base).ok_or_else(|| {
         bad(StepFault::UnknownName {
             name: base.to_owned(),
-            names: known_names(),
+            names: step_names(),
         })
     })?;
     if light.is_some() && !name.per_light {

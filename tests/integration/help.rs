@@ -153,3 +153,35 @@ fn the_portuguese_help_says_clap_words_in_portuguese() {
         }
     }
 }
+
+/// `check --step`'s help names every step the check reads: the names an unknown step's error
+/// lists (the secondary rays' `r_v`, `reflection_weight`, … among them, which the help left out
+/// when it kept a list of its own), in both languages.
+#[test]
+fn the_step_help_names_every_step_the_check_reads() {
+    let err = support::phong()
+        .args(["check", "exercises/4.1.json", "--step", "nonsense=1"])
+        .output()
+        .unwrap();
+    let err = String::from_utf8(err.stderr).unwrap();
+    let list = err
+        .split("use one of ")
+        .nth(1)
+        .and_then(|rest| rest.split(" (").next())
+        .unwrap_or_else(|| panic!("no list of names in: {err}"));
+    let names: Vec<&str> = list.split(", ").collect();
+    assert!(names.contains(&"transmission_traced"), "{names:?}");
+    for lang in ["en", "pt"] {
+        let out = support::phong()
+            .args(["check", "--help", "--lang", lang])
+            .output()
+            .unwrap();
+        let help = String::from_utf8(out.stdout).unwrap();
+        let listed = help
+            .split(if lang == "en" { "Names: " } else { "Nomes: " })
+            .nth(1)
+            .and_then(|rest| rest.split(". ").next())
+            .unwrap_or_else(|| panic!("no names in the help:\n{help}"));
+        assert_eq!(listed.split(", ").collect::<Vec<_>>(), names, "{lang}");
+    }
+}

@@ -50,17 +50,12 @@ crate::messages! {
             "A política do curso (JSON: tolerâncias, o crédito da leitura, respostas de 8 bits, \
              as palavras para \"no hit\", pontos; docs/course-policy.md) [padrão: \
              course-policy.json na pasta dos exercícios, senão os padrões]";
-        /// `check --step`.
-        CheckStep =>
+        /// `check --step`; `names`: every step's name, as the check reads them.
+        CheckStep { names: String } =>
             "Check an intermediate step, NAME=VALUE (repeatable): cos_theta=0.98995, \
-             R=0.6,0,0.8, cos_theta\\[1\\]=0.5 for lights\\[1\\]. Names: t, P, N, V, I_a, \
-             ambient, L, d, falloff_factor, cos_psi, spot_factor, I_l, n_dot_l, cos_theta, \
-             diffuse, R, cos_phi, cos_phi_pow, specular, total_diffuse, total_specular, I. Only \
-             with one FILE",
+             R=0.6,0,0.8, cos_theta[1]=0.5 for lights[1]. Names: {names}. Only with one FILE",
             "Confere um passo intermediário, NAME=VALUE (pode se repetir): cos_theta=0.98995, \
-             R=0.6,0,0.8, cos_theta[1]=0.5 para lights[1]. Nomes: t, P, N, V, I_a, ambient, L, \
-             d, falloff_factor, cos_psi, spot_factor, I_l, n_dot_l, cos_theta, diffuse, R, \
-             cos_phi, cos_phi_pow, specular, total_diffuse, total_specular, I. Só com um FILE";
+             R=0.6,0,0.8, cos_theta[1]=0.5 para lights[1]. Nomes: {names}. Só com um FILE";
         /// `check --steps`.
         CheckSteps =>
             "Check the steps in a JSON file: {{\"cos_theta\": 0.98995, \"R\": [0.6, 0, 0.8]}}. \
@@ -246,7 +241,9 @@ pub(super) fn of(command: &str, part: Part<'_>) -> Option<Texts> {
         ("check", Arg("answer")) => Texts::new(H::CheckAnswer),
         ("check", Arg("scale")) => Texts::new(H::CheckScale),
         ("check", Arg("tolerance")) => Texts::new(H::CheckTolerance),
-        ("check", Arg("step")) => Texts::new(H::CheckStep),
+        ("check", Arg("step")) => Texts::new(H::CheckStep {
+            names: crate::check::steps::step_names(),
+        }),
         ("check", Arg("steps")) => Texts::new(H::CheckSteps),
         ("check", Arg("slips")) => Texts::new(H::CheckSlips),
         ("check", Arg("format")) => Texts::new(H::CheckFormat),

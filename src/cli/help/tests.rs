@@ -85,7 +85,15 @@ fn every_text_is_shown() {
     let mut english: Vec<(String, String)> = Vec::new();
     let mut add = |name: String, text: String| english.push((name, text));
     CommonHelp::iter().for_each(|m| add(format!("{m:?}"), m.text(Lang::En)));
-    answers::AnswersHelp::iter().for_each(|m| add(format!("{m:?}"), m.text(Lang::En)));
+    // (A text with a value is shown with the value the help gives it.)
+    answers::AnswersHelp::iter()
+        .map(|m| match m {
+            answers::AnswersHelp::CheckStep { .. } => answers::AnswersHelp::CheckStep {
+                names: crate::check::steps::step_names(),
+            },
+            m => m,
+        })
+        .for_each(|m| add(format!("{m:?}"), m.text(Lang::En)));
     documents::DocumentsHelp::iter().for_each(|m| add(format!("{m:?}"), m.text(Lang::En)));
     trace::TraceHelp::iter().for_each(|m| add(format!("{m:?}"), m.text(Lang::En)));
     #[cfg(feature = "serve")]
