@@ -13,12 +13,20 @@ crate::faults! {
     /// A flag's value, or flags given together, that the command refuses; and the output files'
     /// own faults.
     pub(crate) enum CliFault {
-        /// The largest allocation of a render that the system cannot give.
+        /// The largest allocation of a sweep (`phong tradeoff`, whose `--size` sets the image)
+        /// that the system cannot give.
         OutOfMemory { size: String } =>
             "out of memory: this needs about {size}",
             "memória insuficiente: isto precisa de cerca de {size}";
             fix "give a smaller image (--size, or the camera's width and height)",
                 "dê uma imagem menor (--size, ou a largura e a altura da câmera)";
+        /// The image of a render (`phong render`, whose image is the camera's) that the system
+        /// cannot give.
+        ImageOutOfMemory { size: String } =>
+            "out of memory: this needs about {size}",
+            "memória insuficiente: isto precisa de cerca de {size}";
+            fix "give a smaller image (the camera's \"width\" and \"height\" in the scene file)",
+                "dê uma imagem menor (\"width\" e \"height\" da câmera no arquivo da cena)";
         /// An allocation the system refused, anywhere in a run (`cli::memory`): `size` the
         /// amount asked for.
         MemoryRefused { size: String } =>

@@ -4,7 +4,7 @@ use super::render::Image;
 
 /// The image file formats `phong render` writes.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
-// Doc comments on the variants would become help text of `--format`: plain comments instead.
+// Doc comments on the variants would become help text of `--image-format`: plain comments instead.
 #[allow(missing_docs)]
 pub enum ImageFormat {
     // PNG, 8-bit RGB.

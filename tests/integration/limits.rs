@@ -1015,6 +1015,41 @@ fn an_output_may_not_replace_the_course_policy_the_run_reads() {
     assert_eq!(std::fs::read_to_string(&beside).unwrap(), policy);
     assert_eq!(std::fs::read_to_string(&given).unwrap(), policy);
 }
+/// A render whose image the system cannot give (16384² pixels, 6 bytes each: 1.6 GB, under a
+/// 1 GiB address space) is refused with exit 2, and its fix names what sets a render's image, the
+/// camera's "width" and "height": `render` has no `--size` (only `tradeoff` has), though the fix
+/// said to give a smaller one.
+#[cfg(target_os = "linux")]
+#[test]
+fn a_render_out_of_memory_names_the_cameras_size_not_a_flag_it_lacks() {
+    let dir = TempDir::new().unwrap();
+    let mut s = small_scene();
+    s["camera"]["width"] = json!(16384);
+    s["camera"]["height"] = json!(16384);
+    s["render"] = json!({ "samples": 1 });
+    let big = scene_file(&dir, &s);
+    let out = support::sh()
+        .arg("-c")
+        .arg("ulimit -v 1048576; exec \"$0\" \"$@\"")
+        .arg(support::phong_path())
+        .arg("render")
+        .arg(&big)
+        .arg("-o")
+        .arg(dir.path().join("big.png"))
+        .args(["--threads", "1"])
+        .output()
+        .unwrap();
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{err}");
+    assert!(err.contains("out of memory: this needs about 1.6 GB"), "{err}");
+    assert!(
+        err.contains("give a smaller image (the camera's \"width\" and \"height\""),
+        "{err}"
+    );
+    assert!(!err.contains("--size"), "{err}");
+    assert!(!dir.path().join("big.png").exists());
+}
+
 /// `--explain-pixel` traces one pixel's rays and nothing else: the image's own bounds (its
 /// primary rays within 2^30, its buffer within memory) are not the pixel's, which is bounded by
 /// its own (2^13 rays in all its samples, and inside the image). A 16384² image at 8 samples

@@ -75,16 +75,15 @@ fn overrides(s: &TraceSettings) -> RenderOverrides {
 /// Refuses, with an "out of memory: this needs about N GB" error named by `flag`, work whose
 /// largest allocation (`bytes`) the system cannot give: tried once with `try_reserve`, so that
 /// the allocation that follows would not abort the program.
-fn memory(bytes: usize, flag: &'static str) -> Result<(), CliError> {
+/// `fault` says it, given the size needed.
+fn memory(
+    bytes: usize,
+    flag: &'static str,
+    fault: fn(String) -> CliFault,
+) -> Result<(), CliError> {
     let mut probe: Vec<u8> = Vec::new();
-    crate::text::memory::handled(|| probe.try_reserve_exact(bytes)).map_err(|_| {
-        CliError::usage(
-            flag,
-            CliFault::OutOfMemory {
-                size: super::faults::memory_size(bytes),
-            },
-        )
-    })
+    crate::text::memory::handled(|| probe.try_reserve_exact(bytes))
+        .map_err(|_| CliError::usage(flag, fault(super::faults::memory_size(bytes))))
 }
 
 /// The worker threads: `threads`, or one per core.

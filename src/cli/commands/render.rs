@@ -152,7 +152,7 @@ fn check_work<R: Real>(problem: &Problem<R>, camera: &Camera<R>) -> Result<(), C
     let bytes = (camera.width as usize)
         .saturating_mul(camera.height as usize)
         .saturating_mul(3 * 2);
-    super::memory(bytes, "--output")
+    super::memory(bytes, "--output", |size| CliFault::ImageOutOfMemory { size })
 }
 
 /// What the scene is read for: one pixel (`--explain-pixel`), held to the pixel's bounds only,

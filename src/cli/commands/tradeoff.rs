@@ -111,6 +111,7 @@ pub(crate) fn run(args: &TradeoffArgs) -> Result<Exit, CliError> {
             .saturating_mul(h as usize)
             .saturating_mul(3 * 8 * 2),
         "--size",
+        |size| CliFault::OutOfMemory { size },
     )?;
     let pool = super::thread_pool(args.threads)?;
     let total = 1 + sweep.settings().len() as u64 * u64::from(sweep.runs);
