@@ -42,11 +42,10 @@ crate::messages! {
         LogAnswersMax =>
             "The most kB (1,000 bytes) the answers' log holds: before a line would pass it, \
              PATH is renamed PATH.1 (replacing the older one) and a new PATH begun, so the two \
-             hold at most twice this. Default 65536 (64 MiB)",
+             hold at most twice this",
             "O máximo de kB (1.000 bytes) que o registro das respostas guarda: antes que uma \
              linha o ultrapasse, PATH é renomeado para PATH.1 (substituindo o mais antigo) e um \
-             novo PATH é começado, então os dois guardam no máximo o dobro disso. Padrão 65536 \
-             (64 MiB)";
+             novo PATH é começado, então os dois guardam no máximo o dobro disso";
         /// `serve --max-concurrent`.
         MaxConcurrent =>
             "The most requests handled at once; more are refused with 503 at once",
