@@ -54,6 +54,11 @@ pub(crate) enum Work {
     /// [`check_explanation`] (its samples' trees within [`MAX_EXPLAINED_RAYS`], far below a
     /// tree's bound), with the settings in force.
     Pixel,
+    /// The whole image rendered with the command line's settings over the file's
+    /// (`phong render`): the caller holds the image to both bounds with the settings in force
+    /// ([`check_work`], [`check_tree`]), so the file's own settings (its 8 samples, where
+    /// `--samples 1` is given) do not refuse it first.
+    Rendered,
 }
 
 /// [`validate_in`], for `work`.

@@ -1015,6 +1015,46 @@ fn an_output_may_not_replace_the_course_policy_the_run_reads() {
     assert_eq!(std::fs::read_to_string(&beside).unwrap(), policy);
     assert_eq!(std::fs::read_to_string(&given).unwrap(), policy);
 }
+/// `phong render`'s flags are over the file's settings before the image is held to its bounds:
+/// a file of maximum level 60 and minimum weight 0 over a material that reflects and transmits
+/// (2^60 − 1 rays in one sample's tree, past the 2^20 a tree may hold) renders with
+/// `--max-level 3` (at most 2^3 − 1 = 7 rays); it was refused for the file's 60. A bound passed
+/// is said of what set it: the file's field, or the flag.
+#[test]
+fn a_renders_flags_are_over_the_files_settings_before_its_bounds() {
+    let dir = TempDir::new().unwrap();
+    let mut s = small_scene();
+    s["surfaces"][0]["material"] = json!({
+        "ambient": [0.5, 0.5, 0.5], "reflectivity": [0.5, 0.5, 0.5],
+        "transmissivity": [0.5, 0.5, 0.5], "ior": 1.5
+    });
+    s["render"] = json!({ "max_level": 60, "min_weight": 0 });
+    let deep = scene_file(&dir, &s);
+    let out = dir.path().join("deep.png");
+    refused(
+        phong().arg("render").arg(&deep).arg("-o").arg(&out),
+        &["render.max_level: maximum level 60"],
+    );
+    phong()
+        .arg("render")
+        .arg(&deep)
+        .arg("-o")
+        .arg(&out)
+        .args(["--max-level", "3"])
+        .assert()
+        .success();
+    assert!(out.exists());
+    refused(
+        phong()
+            .arg("render")
+            .arg(&deep)
+            .arg("-o")
+            .arg(dir.path().join("deeper.png"))
+            .args(["--max-level", "40"]),
+        &["--max-level: maximum level 40"],
+    );
+}
+
 /// A render whose image the system cannot give (16384² pixels, 6 bytes each: 1.6 GB, under a
 /// 1 GiB address space) is refused with exit 2, and its fix names what sets a render's image, the
 /// camera's "width" and "height": `render` has no `--size` (only `tradeoff` has), though the fix
@@ -1041,7 +1081,10 @@ fn a_render_out_of_memory_names_the_cameras_size_not_a_flag_it_lacks() {
         .unwrap();
     let err = String::from_utf8_lossy(&out.stderr);
     assert_eq!(out.status.code(), Some(2), "{err}");
-    assert!(err.contains("out of memory: this needs about 1.6 GB"), "{err}");
+    assert!(
+        err.contains("out of memory: this needs about 1.6 GB"),
+        "{err}"
+    );
     assert!(
         err.contains("give a smaller image (the camera's \"width\" and \"height\""),
         "{err}"

@@ -76,11 +76,7 @@ fn overrides(s: &TraceSettings) -> RenderOverrides {
 /// largest allocation (`bytes`) the system cannot give: tried once with `try_reserve`, so that
 /// the allocation that follows would not abort the program.
 /// `fault` says it, given the size needed.
-fn memory(
-    bytes: usize,
-    flag: &'static str,
-    fault: fn(String) -> CliFault,
-) -> Result<(), CliError> {
+fn memory(bytes: usize, flag: &'static str, fault: fn(String) -> CliFault) -> Result<(), CliError> {
     let mut probe: Vec<u8> = Vec::new();
     crate::text::memory::handled(|| probe.try_reserve_exact(bytes))
         .map_err(|_| CliError::usage(flag, fault(super::faults::memory_size(bytes))))

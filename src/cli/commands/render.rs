@@ -11,6 +11,7 @@ use crate::cli::exit::Exit;
 use crate::cli::faults::CliFault;
 use crate::cli::output;
 use crate::core::{Precision, Real};
+use crate::problem::faults::SettingFault;
 use crate::problem::{self, Camera, Problem};
 use crate::report;
 use crate::text::lang::Lang;
@@ -48,7 +49,7 @@ fn render<R: Real>(args: &RenderArgs) -> Result<Exit, CliError> {
         crate::problem::validate::check_explanation(&problem)
             .map_err(|e| CliError::setting(e.at("explain_pixel")))?;
     } else {
-        check_work(&problem, &camera)?;
+        check_work(args, &problem, &camera)?;
     }
     // With --explain-pixel, --output names the explanation's file, whatever its extension;
     // otherwise the image's, whose format it (or --image-format) says. Checked before the build.
@@ -143,24 +144,45 @@ fn stats_line<R: Real>(
 /// The render's primary rays within [`crate::problem::model::MAX_PIXEL_SAMPLES`], each sample's
 /// ray tree within [`crate::problem::validate::MAX_TREE_RAYS`], and its image (and the rows
 /// gathered before it) within memory: refused with exit 2 rather than aborting.
-fn check_work<R: Real>(problem: &Problem<R>, camera: &Camera<R>) -> Result<(), CliError> {
+///
+/// A bound passed is said of the flag that set the setting, or, where the file's own setting is
+/// in force, of the file's field (`render.samples`, `render.max_level`), as reading it would.
+fn check_work<R: Real>(
+    args: &RenderArgs,
+    problem: &Problem<R>,
+    camera: &Camera<R>,
+) -> Result<(), CliError> {
+    let given = &args.settings;
+    let said = |flag: Option<&str>, field: &str, e: SettingFault| match flag {
+        Some(flag) => CliError::setting(e.at(flag)),
+        None => CliError::Problem(e.at(field).at(&args.scene)),
+    };
     crate::problem::validate::check_work(camera.width, camera.height, problem.render.samples)
-        .map_err(|e| CliError::setting(e.at("samples")))?;
+        .map_err(|e| said(given.samples.map(|_| "samples"), "render.samples", e))?;
     let s = &problem.render;
-    crate::problem::validate::check_tree(problem, s.max_level, s.min_weight.to_f64())
-        .map_err(|e| CliError::setting(e.at("max_level")))?;
+    crate::problem::validate::check_tree(problem, s.max_level, s.min_weight.to_f64()).map_err(
+        |e| {
+            let flag =
+                (given.max_level.map(|_| "max_level")).or(given.min_weight.map(|_| "min_weight"));
+            said(flag, "render.max_level", e)
+        },
+    )?;
     let bytes = (camera.width as usize)
         .saturating_mul(camera.height as usize)
         .saturating_mul(3 * 2);
-    super::memory(bytes, "--output", |size| CliFault::ImageOutOfMemory { size })
+    super::memory(bytes, "--output", |size| CliFault::ImageOutOfMemory {
+        size,
+    })
 }
 
 /// What the scene is read for: one pixel (`--explain-pixel`), held to the pixel's bounds only,
-/// or the whole image.
+/// or the whole image, held to the image's bounds by [`check_work`] with the flags' settings
+/// over the file's.
 fn work(args: &RenderArgs) -> crate::problem::validate::Work {
     match args.explain_pixel {
         Some(_) => crate::problem::validate::Work::Pixel,
-        None => crate::problem::validate::Work::Image,
+        // `check_work` holds the image to its bounds once the flags are over the file's.
+        None => crate::problem::validate::Work::Rendered,
     }
 }
 
