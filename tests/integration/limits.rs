@@ -1015,6 +1015,28 @@ fn an_output_may_not_replace_the_course_policy_the_run_reads() {
     assert_eq!(std::fs::read_to_string(&beside).unwrap(), policy);
     assert_eq!(std::fs::read_to_string(&given).unwrap(), policy);
 }
+/// `phong check --steps FILE -o FILE` would replace the steps it reads with its report: refused
+/// as any output naming an input, the file left as it was.
+#[test]
+fn a_check_output_may_not_replace_its_steps_file() {
+    let dir = TempDir::new().unwrap();
+    let steps = write(&dir, "steps.json", "{\"cos_theta\": 0.98995}\n");
+    refused(
+        phong()
+            .arg("check")
+            .arg(exercise("4.2.json"))
+            .arg("--steps")
+            .arg(&steps)
+            .arg("-o")
+            .arg(&steps),
+        &["--output", "is the input"],
+    );
+    assert_eq!(
+        std::fs::read_to_string(&steps).unwrap(),
+        "{\"cos_theta\": 0.98995}\n"
+    );
+}
+
 /// `phong render`'s flags are over the file's settings before the image is held to its bounds:
 /// a file of maximum level 60 and minimum weight 0 over a material that reflects and transmits
 /// (2^60 − 1 rays in one sample's tree, past the 2^20 a tree may hold) renders with

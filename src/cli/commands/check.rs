@@ -18,10 +18,13 @@ pub(crate) fn run(args: &CheckArgs) -> Result<Exit, CliError> {
         .iter()
         .filter_map(|p| super::policy_file(args.policy.policy.as_deref(), folder_of(p)))
         .collect();
+    // So is the file of `--steps` (`-` is standard input, which no file names).
+    let steps_file = args.steps.iter().filter(|p| p.as_os_str() != "-");
     let inputs: Vec<&std::path::Path> = args
         .files
         .iter()
         .chain(&policies)
+        .chain(steps_file)
         .map(|p| p.as_path())
         .collect();
     output::distinct(&inputs, &[("--output", args.output.as_deref())])?;
