@@ -30,6 +30,24 @@ fn small_scene() -> serde_json::Value {
     })
 }
 
+/// The small scene with the largest image a camera may have, 16384² pixels (1.6 GB of image).
+fn huge_scene() -> serde_json::Value {
+    let mut s = small_scene();
+    s["camera"]["width"] = json!(16384);
+    s["camera"]["height"] = json!(16384);
+    s
+}
+
+/// phong under a 1 GiB address space (`ulimit -v`), less than a huge scene's image needs.
+#[cfg(target_os = "linux")]
+fn phong_in_1_gib() -> Std {
+    let mut cmd = support::sh();
+    cmd.arg("-c")
+        .arg("ulimit -v 1048576; exec \"$0\" \"$@\"")
+        .arg(support::phong_path());
+    cmd
+}
+
 fn write(dir: &TempDir, name: &str, text: &str) -> PathBuf {
     let p = dir.path().join(name);
     std::fs::write(&p, text).unwrap();
@@ -294,9 +312,7 @@ fn a_huge_level_in_the_file_is_refused_naming_the_field() {
 #[test]
 fn renders_and_sweeps_beyond_the_work_budget_are_refused_before_any_work() {
     let dir = TempDir::new().unwrap();
-    let mut s = small_scene();
-    s["camera"]["width"] = json!(16384);
-    s["camera"]["height"] = json!(16384);
+    let mut s = huge_scene();
     let big = scene_file(&dir, &s);
     let out = dir.path().join("x.png");
     // 16384² at 4096 samples: 1.1e12 primary rays, days of work.
@@ -1085,15 +1101,10 @@ fn a_renders_flags_are_over_the_files_settings_before_its_bounds() {
 #[test]
 fn a_render_out_of_memory_names_the_cameras_size_not_a_flag_it_lacks() {
     let dir = TempDir::new().unwrap();
-    let mut s = small_scene();
-    s["camera"]["width"] = json!(16384);
-    s["camera"]["height"] = json!(16384);
+    let mut s = huge_scene();
     s["render"] = json!({ "samples": 1 });
     let big = scene_file(&dir, &s);
-    let out = support::sh()
-        .arg("-c")
-        .arg("ulimit -v 1048576; exec \"$0\" \"$@\"")
-        .arg(support::phong_path())
+    let out = phong_in_1_gib()
         .arg("render")
         .arg(&big)
         .arg("-o")
@@ -1123,9 +1134,7 @@ fn a_render_out_of_memory_names_the_cameras_size_not_a_flag_it_lacks() {
 #[test]
 fn an_explained_pixel_is_held_to_its_own_bounds_not_the_images() {
     let dir = TempDir::new().unwrap();
-    let mut s = small_scene();
-    s["camera"]["width"] = json!(16384);
-    s["camera"]["height"] = json!(16384);
+    let mut s = huge_scene();
     s["render"] = json!({ "samples": 8 });
     let big = scene_file(&dir, &s);
     // The image itself stays refused.
@@ -1172,10 +1181,7 @@ fn an_explained_pixel_is_held_to_its_own_bounds_not_the_images() {
     {
         s["render"] = json!({ "samples": 1 });
         let one = write(&dir, "one.json", &s.to_string());
-        let out = support::sh()
-            .arg("-c")
-            .arg("ulimit -v 1048576; exec \"$0\" \"$@\"")
-            .arg(support::phong_path())
+        let out = phong_in_1_gib()
             .arg("render")
             .arg(&one)
             .args(["--explain-pixel", "8192,8192", "--threads", "1"])
