@@ -750,25 +750,36 @@ fn the_schema_and_the_validator_agree_at_the_bounds_of_the_image_and_the_render(
     }
 }
 
+/// A class in `dir`: an exercises folder `ex` holding exercise 4.1, and one student's answer
+/// to it, `subs.csv`.
+fn a_class(dir: &TempDir) -> (PathBuf, PathBuf) {
+    let ex = dir.path().join("ex");
+    std::fs::create_dir(&ex).unwrap();
+    std::fs::copy(exercise("4.1.json"), ex.join("4.1.json")).unwrap();
+    (ex, write(dir, "subs.csv", "ana,4.1,0.5 0.7 0.3\n"))
+}
+
+/// `phong grade SUBS --exercises EX -o OUT`, refused as an output naming an input.
+fn grade_into_an_input(subs: &Path, ex: &Path, out: &Path) {
+    refused(
+        phong()
+            .arg("grade")
+            .arg(subs)
+            .arg("--exercises")
+            .arg(ex)
+            .arg("-o")
+            .arg(out),
+        &["--output", "is the input"],
+    );
+}
+
 #[test]
 fn a_grade_output_may_not_replace_an_exercise_it_grades_against() {
     // `phong grade … --exercises ex -o ex/4.1.json` would replace the exercise with the report.
     let dir = TempDir::new().unwrap();
-    let ex = dir.path().join("ex");
-    std::fs::create_dir(&ex).unwrap();
+    let (ex, subs) = a_class(&dir);
     let original = std::fs::read_to_string(exercise("4.1.json")).unwrap();
-    std::fs::write(ex.join("4.1.json"), &original).unwrap();
-    let subs = write(&dir, "subs.csv", "ana,4.1,0.5 0.7 0.3\n");
-    refused(
-        phong()
-            .arg("grade")
-            .arg(&subs)
-            .arg("--exercises")
-            .arg(&ex)
-            .arg("-o")
-            .arg(ex.join("4.1.json")),
-        &["--output", "is the input"],
-    );
+    grade_into_an_input(&subs, &ex, &ex.join("4.1.json"));
     assert_eq!(
         std::fs::read_to_string(ex.join("4.1.json")).unwrap(),
         original
@@ -957,14 +968,11 @@ fn an_output_that_cannot_be_created_is_named_as_given_not_by_its_temporary_file(
 #[test]
 fn an_output_may_not_replace_the_course_policy_the_run_reads() {
     let dir = TempDir::new().unwrap();
-    let ex = dir.path().join("ex");
-    std::fs::create_dir(&ex).unwrap();
-    std::fs::copy(exercise("4.1.json"), ex.join("4.1.json")).unwrap();
+    let (ex, subs) = a_class(&dir);
     let policy = "{\"reading_credit\": 0.25, \"comment\": \"the course's own\"}\n";
     let beside = ex.join("course-policy.json");
     std::fs::write(&beside, policy).unwrap();
     let given = write(&dir, "policy.json", policy);
-    let subs = write(&dir, "subs.csv", "ana,4.1,0.5 0.7 0.3\n");
     let check = |policy_flag: Option<&Path>, out: &Path| {
         let mut cmd = phong();
         cmd.arg("check")
@@ -993,16 +1001,7 @@ fn an_output_may_not_replace_the_course_policy_the_run_reads() {
     policy_cmd(None, &beside);
     policy_cmd(Some(&given), &given);
     // grade and moodle refused it already: held to it.
-    refused(
-        phong()
-            .arg("grade")
-            .arg(&subs)
-            .arg("--exercises")
-            .arg(&ex)
-            .arg("-o")
-            .arg(&beside),
-        &["--output", "is the input"],
-    );
+    grade_into_an_input(&subs, &ex, &beside);
     refused(
         phong()
             .arg("moodle")
