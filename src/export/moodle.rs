@@ -359,23 +359,28 @@ fn channel(
     alts.extend(slips.into_iter().map(|(_, a)| a));
     // The course reads three whole numbers 0–255 written without a scale as 8-bit values: the
     // right answer's and the reading's numbers on the 255 scale, after every 0–1 alternative
-    // (a number a 0–1 alternative takes is judged on the 0–1 scale first).
+    // (a number a 0–1 alternative takes is judged on the 0–1 scale first), each held above 1
+    // ([`above_one`]).
     if grading.eight_bit {
         let t8 = entry.tolerance_bits8;
         let right8 = value(&expected.solution?)[c] * 255.0;
-        alts.push(Alt {
-            fraction: "=".into(),
-            answer: number(right8),
-            tolerance: Some(t8),
-            feedback: vec![w.right_8bit.to_owned()],
-        });
+        let right_alt = above_one(right8, t8);
+        if let Some((answer, tolerance)) = right_alt {
+            alts.push(Alt {
+                fraction: "=".into(),
+                answer: number(answer),
+                tolerance: Some(tolerance),
+                feedback: vec![w.right_8bit.to_owned()],
+            });
+        }
         if let Some(r) = expected.readings.iter().find(|r| r.likely_intended) {
             let v = value(&r.target)[c] * 255.0;
-            if v.is_finite() && (v - right8).abs() > t8 * (1.0 + 1e-9) {
+            let shadowed = right_alt.is_some() && (v - right8).abs() <= t8 * (1.0 + 1e-9);
+            if let Some((answer, tolerance)) = above_one(v, t8).filter(|_| !shadowed) {
                 alts.push(Alt {
                     fraction: grading.reading.clone(),
-                    answer: number(v),
-                    tolerance: Some(t8),
+                    answer: number(answer),
+                    tolerance: Some(tolerance),
                     feedback: vec![format!(
                         "{} ({}; {}).",
                         w.reading,
@@ -393,6 +398,30 @@ fn channel(
         feedback: vec![w.other.to_owned()],
     });
     Some(part(grading.weight(entry.points, 3), "NUMERICAL", &alts))
+}
+
+/// The smallest number an 8-bit alternative takes: below the smallest whole number above 1.
+const EIGHT_BIT_FLOOR: f64 = 1.5;
+
+/// An 8-bit alternative for `v8` (a value on the 255 scale, tolerance `t8`) as (answer,
+/// tolerance), taking only numbers above 1: a part is graded alone, and `phong check` reads an
+/// answer as 8-bit values only when one of its whole numbers is above 1
+/// ([`crate::check::policy::looks_8bit`]), so a number up to 1 is on the 0–1 scale. An interval
+/// reaching down to 1 would take a 0–1 number that every 0–1 alternative missed: 4.2's black
+/// key, 0 ± 1 on the 255 scale, took 0.7 as right. The interval's lower end is raised to
+/// [`EIGHT_BIT_FLOOR`]; `None` when no whole number above 1 is within the tolerance.
+fn above_one(v8: f64, t8: f64) -> Option<(f64, f64)> {
+    let (low, high) = (v8 - t8, v8 + t8);
+    if !v8.is_finite() || high < 2.0 {
+        None
+    } else if low >= EIGHT_BIT_FLOOR {
+        Some((v8, t8))
+    } else {
+        Some((
+            (EIGHT_BIT_FLOOR + high) / 2.0,
+            (high - EIGHT_BIT_FLOOR) / 2.0,
+        ))
+    }
 }
 
 /// A Cloze sub-question.

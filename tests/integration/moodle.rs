@@ -497,17 +497,32 @@ fn alternative_colour(subs: &[Sub], fraction: f64, fallback: [f64; 3]) -> [f64; 
     })
 }
 
-/// Each channel's alternative at `fraction` on the 255 scale (tolerance 1), rounded to the
-/// whole number a student would type (within 0.5 of it, so within the tolerance); `None` when
-/// a channel has none.
-fn alternative_8bit(subs: &[Sub], fraction: f64) -> Option<[f64; 3]> {
-    let mut out = [0.0; 3];
-    for (c, o) in out.iter_mut().enumerate() {
-        let a = subs[c]
+/// Whether an alternative is on the 255 scale (its English feedback says so).
+fn is_8bit(a: &Alt) -> bool {
+    a.feedback.contains("8-bit")
+}
+
+/// The whole numbers a student types for the colour at `fraction` on the 255 scale: in each
+/// channel with an alternative there, its number rounded (the alternative takes whole numbers
+/// above 1 only, so its middle is within 0.5 of one it takes); in a channel where `colour` (0–1)
+/// is below 1 on the 255 scale (no whole number above 1 within 1 of it, so no alternative: a
+/// part graded alone reads such a number on the 0–1 scale), that value rounded. `None` when a
+/// channel has neither, or none has an alternative.
+fn alternative_8bit(subs: &[Sub], fraction: f64, colour: [f64; 3]) -> Option<[f64; 3]> {
+    let found = [0, 1, 2].map(|c| {
+        subs[c]
             .alts
             .iter()
-            .find(|a| a.fraction == fraction && a.tolerance == Some(1.0))?;
-        *o = a.answer.parse::<f64>().unwrap().round();
+            .find(|a| a.fraction == fraction && is_8bit(a))
+            .map(|a| a.answer.parse::<f64>().unwrap().round())
+    });
+    if found.iter().all(Option::is_none) {
+        return None;
+    }
+    let mut out = [0.0; 3];
+    for c in 0..3 {
+        let dark = colour[c] * 255.0 < 1.0;
+        out[c] = found[c].or(dark.then(|| (colour[c] * 255.0).round()))?;
     }
     Some(out)
 }
@@ -578,8 +593,9 @@ fn every_answer_option_round_trips_through_phong_check() {
             }
         }
         // The same on the 255 scale: the whole numbers a student types, read as 8-bit values.
-        for (fraction, verdict) in [(100.0, "right"), (50.0, "reading")] {
-            if let Some(colour) = alternative_8bit(subs, fraction) {
+        let reading = alternative_colour(subs, 50.0, right);
+        for (fraction, verdict, fill) in [(100.0, "right", right), (50.0, "reading", reading)] {
+            if let Some(colour) = alternative_8bit(subs, fraction, fill) {
                 let v = check(file, colour);
                 assert_eq!(v["verdict"], verdict, "{}: {colour:?}", file.display());
                 // Three whole numbers are read as 8-bit values when one is above 1 (else they
@@ -588,7 +604,6 @@ fn every_answer_option_round_trips_through_phong_check() {
                 assert_eq!(v["answer"]["read_as_8bit"], as_8bit, "{}", file.display());
             }
         }
-        let reading = alternative_colour(subs, 50.0, right);
         // Each slip's sentence, as the feedback says it.
         let mut sentences: Vec<String> = Vec::new();
         for sub in subs {
@@ -823,19 +838,27 @@ fn no_two_alternatives_of_a_part_lie_within_its_tolerance() {
             for sub in subs.iter().filter(|s| s.kind == "NUMERICAL") {
                 parts += 1;
                 // The 0–1 scale's alternatives (the right answer's tolerance), then the 255
-                // scale's (tolerance 1, after them all): apart within each scale. A number a
-                // 0–1 alternative takes is judged on the 0–1 scale first, as `phong check` reads
-                // three numbers that are not all whole on the 0–1 scale.
+                // scale's (after them all): apart within each scale. A number a 0–1 alternative
+                // takes is judged on the 0–1 scale first, as `phong check` reads three numbers
+                // that are not all whole on the 0–1 scale.
                 let all = numbers(sub);
                 let tolerance = all[0].1;
-                let (alts, bits8): (Vec<_>, Vec<_>) =
-                    all.iter().partition(|&&(_, t, _)| t == tolerance);
-                assert!(bits8.iter().all(|&&(_, t, _)| t == 1.0), "{kind}");
-                let first8 = all.iter().position(|&(_, t, _)| t != tolerance);
+                let (bits8, alts): (Vec<_>, Vec<_>) =
+                    all.iter().partition(|&&(_, _, f)| f.contains("8-bit"));
+                let first8 = all.iter().position(|&(_, _, f)| f.contains("8-bit"));
                 assert!(first8.is_none_or(|f| f == alts.len()), "{kind}: 8-bit last");
-                for (j, &&(a, _, fa)) in bits8.iter().enumerate() {
-                    for &&(b, _, fb) in &bits8[j + 1..] {
-                        assert!((a - b).abs() > 1.0, "{kind} seed {}: {fa} / {fb}", i + 1);
+                for (j, &&(a, ta, fa)) in bits8.iter().enumerate() {
+                    // Within 1 of the value, and above 1 only: a part is graded alone, and
+                    // `phong check` reads a number up to 1 on the 0–1 scale (three whole
+                    // numbers are 8-bit values only when one is above 1). A part whose 8-bit
+                    // alternative reached down to 1 gave full marks to any 0–1 number every
+                    // 0–1 alternative missed.
+                    assert!(ta <= 1.0, "{kind} seed {}: {fa}", i + 1);
+                    assert!(a - ta > 1.0, "{kind} seed {}: {a} ± {ta} ({fa})", i + 1);
+                    // Reachable: not inside an earlier one's interval.
+                    for &&(b, tb, fb) in &bits8[j + 1..] {
+                        let inside = a - ta <= b - tb && b + tb <= a + ta;
+                        assert!(!inside, "{kind} seed {}: {fa} / {fb}", i + 1);
                     }
                 }
                 for (j, &&(a, ta, fa)) in alts.iter().enumerate() {
@@ -1083,7 +1106,7 @@ mod one_verdict {
         }
     }
 
-    /// Issue 28, "one verdict everywhere": each answer of a table of 28 (right answers written
+    /// Issue 28, "one verdict everywhere": each answer of a table of 30 (right answers written
     /// every way, on the 0–1 and 255 scales and as `#RRGGBB`; the likely intended readings, on
     /// both scales; slips; "no hit" in words of both languages; text that is no answer) goes
     /// through `phong check`, a `phong grade` row, `/api/check` of `phong serve` and the Moodle
@@ -1110,7 +1133,7 @@ mod one_verdict {
     fn one_answer_gets_one_verdict_and_one_credit_from_check_grade_serve_and_moodle() {
         const Q: f64 = 0.25;
         // (exercise, answer, verdict, credit; the quiz's credit where Moodle's differs).
-        let table: [(&str, &str, &str, f64, Option<f64>); 28] = [
+        let table: [(&str, &str, &str, f64, Option<f64>); 30] = [
             ("4.1", "0.5 0.7 0.3", "right", 1.0, None),
             ("4.1", "(0.5, 0.7, 0.3)", "right", 1.0, None),
             ("4.1", "0,5 0,7 0,3", "right", 1.0, None),
@@ -1128,6 +1151,10 @@ mod one_verdict {
             ("4.2", "76 92 81", "reading", Q, None),
             ("4.2", "0.245 0.28 0.21", "wrong", 0.0, None),
             ("4.2", "0.5 0.4 0.6", "wrong", 0.0, None),
+            // Read on the 0–1 scale (no number above 1): wrong, in the quiz too, where each
+            // part's 8-bit alternative for the black key (0 ± 1) once took them as right.
+            ("4.2", "0.7 0.7 0.7", "wrong", 0.0, None),
+            ("4.2", "1 1 1", "wrong", 0.0, None),
             ("4.2", "none", "wrong", 0.0, None),
             ("4.3", "nenhuma", "right", 1.0, None),
             ("4.3", "none", "right", 1.0, None),
