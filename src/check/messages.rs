@@ -747,7 +747,7 @@ pub(crate) fn not_counted(row: usize, line: u64, rule: &str, lang: Lang) -> Stri
         ),
         Lang::Pt => format!(
             "Não conta: o mesmo aluno respondeu de novo a este exercício, e conta a resposta da \
-             linha {line} (row {row}; --duplicates {rule}). "
+             linha {line} (coluna row do relatório: {row}; --duplicates {rule}). "
         ),
     }
 }

@@ -671,6 +671,11 @@ fn junit_keeps_every_row_under_its_student() {
         "{ana}"
     );
     assert!(ana.contains("skipped=\"1\""), "{ana}");
+    // Why it is skipped, in Portuguese: the counting answer's line and its `row` in the report.
+    assert!(
+        ana.contains("conta a resposta da linha 3 (coluna row do relatório: 2; --duplicates last)"),
+        "{ana}"
+    );
     let carla = suite(&xml, "carla");
     assert_eq!(carla.matches("<testcase ").count(), 4, "{carla}");
     assert!(carla.contains("errors=\"3\""), "{carla}");
