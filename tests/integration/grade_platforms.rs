@@ -747,6 +747,16 @@ fn gradescope_keeps_every_row_under_its_student() {
         .as_str()
         .unwrap()
         .starts_with("Não conta: a linha não tem aluno."));
+    // A right answer that a later one replaces: worth nothing, but passed, not a red test for
+    // an answer that was right (grading.md: `status` passed when accepted).
+    let replaced = write_temp("student,exercise,answer\nana,4.1,0.5 0.7 0.3\nana,4.1,0 0 0\n");
+    let out = grade(replaced.path(), &["--format", "gradescope"]);
+    let doc: Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert_valid(&schema, &doc);
+    assert_eq!(doc["tests"][3]["name"], "Exercise 4.1 (line 2)");
+    assert_eq!(doc["tests"][3]["score"], 0.0);
+    assert_eq!(doc["tests"][3]["status"], "passed", "{doc:#}");
+    assert_eq!(doc["tests"][0]["status"], "failed", "{doc:#}");
     // One student's file: the row without a student is among her tests, worth nothing.
     let one = write_temp("student,exercise,answer\nana,4.1,0.5 0.7 0.3\n,4.2,0 0 0\n");
     let out = grade(one.path(), &["--format", "gradescope"]);
