@@ -176,6 +176,12 @@ crate::faults! {
             "not a folder", "não é uma pasta";
             fix "give the folder that holds the exercise files (exercise 4.2 is DIR/4.2.json)",
                 "dê a pasta que tem os arquivos dos exercícios (o exercício 4.2 é DIR/4.2.json)";
+        /// `phong new -o DIR`'s folder a file that is there.
+        ProblemsNotAFolder =>
+            "is a file, not a folder", "é um arquivo, não uma pasta";
+            fix "give a folder for the problems' files (it is made if missing), or - to print \
+                 them", "dê uma pasta para os arquivos dos problemas (criada se faltar), ou - \
+                 para mostrá-los";
         /// The plot cannot be drawn: a bug.
         PlotFailed { error: String } =>
             "the plot could not be drawn: {error}", "o gráfico não pôde ser desenhado: {error}";
@@ -247,8 +253,10 @@ crate::messages! {
             "não é possível escrever na saída padrão: {error}";
         /// A folder for the output files that cannot be created.
         CannotCreateFolder { path: PathBuf, error: SystemError } =>
-            "{path}: cannot create the folder: {error}",
-            "{path}: não é possível criar a pasta: {error}";
+            "{path}: cannot create the folder: {error}. Fix: give a folder in a place you can \
+             write to",
+            "{path}: não é possível criar a pasta: {error}. Correção: dê uma pasta num lugar \
+             onde você pode escrever";
         /// The worker threads refused.
         Threads { error: String } =>
             "--threads: cannot start the worker threads: {error}. Fix: give fewer --threads",

@@ -410,3 +410,69 @@ fn without_a_folder_the_problems_are_printed_as_one_json_document() {
     let docs: Value = serde_json::from_slice(&out.stdout).unwrap();
     assert_eq!(docs.as_array().unwrap().len(), 3);
 }
+
+/// `-o -` is standard output, as for every command: the same document as without `-o`, and
+/// no folder named `-`.
+#[test]
+fn dash_prints_the_problems_and_makes_no_folder() {
+    let dir = tempfile::tempdir().unwrap();
+    let run = |extra: &[&str]| {
+        support::phong()
+            .current_dir(dir.path())
+            .args(["new", "--kind", "point", "--count", "2", "--seed", "4"])
+            .args(extra)
+            .output()
+            .unwrap()
+    };
+    let (plain, dash) = (run(&[]), run(&["-o", "-"]));
+    assert_eq!(dash.status.code(), Some(0));
+    assert!(!plain.stdout.is_empty());
+    assert_eq!(dash.stdout, plain.stdout);
+    assert!(!dir.path().join("-").exists());
+}
+
+/// A folder for the problems that is a file, or that cannot be made: said, with what would
+/// fix it, in both languages; exit 2 and nothing written.
+#[test]
+fn an_output_folder_that_cannot_be_one_is_said_with_its_fix() {
+    let dir = tempfile::tempdir().unwrap();
+    let file = dir.path().join("afile");
+    std::fs::write(&file, "kept").unwrap();
+    for (lang, says, fix) in [
+        (
+            "en",
+            "is a file, not a folder",
+            "Fix: give a folder for the problems' files",
+        ),
+        (
+            "pt",
+            "é um arquivo, não uma pasta",
+            "Correção: dê uma pasta para os arquivos",
+        ),
+    ] {
+        let out = support::phong()
+            .args(["new", "--kind", "point", "--lang", lang, "-o"])
+            .arg(format!("{}/", file.display()))
+            .output()
+            .unwrap();
+        let err = String::from_utf8(out.stderr).unwrap();
+        assert_eq!(out.status.code(), Some(2), "{err}");
+        assert!(
+            err.contains("afile") && err.contains(says) && err.contains(fix),
+            "{err}"
+        );
+        assert_eq!(std::fs::read_to_string(&file).unwrap(), "kept");
+    }
+    // A folder inside that file cannot be made: the system's reason, then the fix.
+    let out = support::phong()
+        .args(["new", "--kind", "point", "--lang", "pt", "-o"])
+        .arg(file.join("sub"))
+        .output()
+        .unwrap();
+    let err = String::from_utf8(out.stderr).unwrap();
+    assert_eq!(out.status.code(), Some(2), "{err}");
+    assert!(
+        err.contains("não é possível criar a pasta") && err.contains("Correção: dê uma pasta"),
+        "{err}"
+    );
+}

@@ -4,6 +4,7 @@
 use crate::cli::args::NewArgs;
 use crate::cli::error::{self, CliError};
 use crate::cli::exit::Exit;
+use crate::cli::faults::CliFault;
 use crate::cli::output;
 use crate::generate;
 
@@ -14,10 +15,21 @@ pub(crate) fn run(args: &NewArgs) -> Result<Exit, CliError> {
         args.seed,
         args.lang == crate::text::lang::Lang::Pt,
     );
-    let Some(dir) = &args.output else {
+    // `-o -` is standard output, as for every command.
+    let Some(dir) = args.output.as_ref().filter(|d| !output::is_dash(d)) else {
         output::emit(None, &generate::text_of_all(&problems))?;
         return Ok(Exit::Success);
     };
+    // `afile/` names the file `afile` (its trailing `/` is left out here, where the system
+    // would say only that it is not a directory).
+    let bare: std::path::PathBuf = dir.components().collect();
+    if std::fs::metadata(&bare).is_ok_and(|m| !m.is_dir()) {
+        return Err(CliError::NotAFolder {
+            path: dir.clone(),
+            flag: "-o",
+            fault: CliFault::ProblemsNotAFolder,
+        });
+    }
     std::fs::create_dir_all(dir).map_err(|source| CliError::CreateFolder {
         path: dir.clone(),
         source,

@@ -87,10 +87,10 @@ crate::messages! {
              arquivos, byte a byte";
         /// `new --output`.
         NewOutput =>
-            "Write each problem to DIR/KIND-SEED-I.json (atomically); without it, print them \
-             (one JSON document, or an array for several)",
-            "Escreve cada problema em DIR/KIND-SEED-I.json (atomicamente); sem esta opção, \
-             mostra-os (um documento JSON, ou um array para vários)";
+            "Write each problem to DIR/KIND-SEED-I.json (atomically); without it, or with -, \
+             print them (one JSON document, or an array for several)",
+            "Escreve cada problema em DIR/KIND-SEED-I.json (atomicamente); sem esta opção, ou \
+             com -, mostra-os (um documento JSON, ou um array para vários)";
         /// `new --lang`.
         NewLang =>
             "With pt, each problem has its title and question in Portuguese too (`title_pt`, \
