@@ -294,8 +294,10 @@ mod tests {
                     path: PathBuf::from("out"),
                     source: std::io::Error::from_raw_os_error(13),
                 },
-                "out: cannot create the folder: Permission denied (os error 13)",
-                "out: não é possível criar a pasta: permissão negada (erro 13 do sistema)",
+                "out: cannot create the folder: Permission denied (os error 13). Fix: give a \
+                 folder in a place you can write to",
+                "out: não é possível criar a pasta: permissão negada (erro 13 do sistema). \
+                 Correção: dê uma pasta num lugar onde você pode escrever",
             ),
         ];
         for (e, en, pt) in cases {

@@ -801,8 +801,8 @@ fn command_line_errors_are_said_in_portuguese() {
         (
             vec!["new", "--kind", "ambient", "-o", &file],
             format!(
-                "erro: {file}: não é possível criar a pasta: o arquivo já existe (erro 17 do \
-                 sistema)"
+                "erro: {file}: -o: é um arquivo, não uma pasta. Correção: dê uma pasta para os \
+                 arquivos dos problemas (criada se faltar), ou - para mostrá-los"
             ),
         ),
         // `tradeoff` and `export-pov` have no --lang: the locale decides.
