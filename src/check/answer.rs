@@ -198,7 +198,9 @@ pub fn parse_with<S: AsRef<str>>(
 ) -> Result<Answer, BadAnswer> {
     let t = text.trim();
     if t.is_empty() {
-        return Err(bad(AnswerFault::Empty { forms: Forms }));
+        return Err(bad(AnswerFault::Empty {
+            forms: Forms::of(no_hit),
+        }));
     }
     if is_no_hit_in(t, no_hit) {
         return Ok(Answer::no_hit(scale));
@@ -227,7 +229,7 @@ pub fn parse_with<S: AsRef<str>>(
     let inner = strip_brackets(unlabelled);
     // "R = 0.5, G = 0.7, B = 0.3", "r=0,5; g=0,7; b=0,3": each channel named.
     if let Some(channels) = channels(inner) {
-        let values = channels_values(channels, &shown)?;
+        let values = channels_values(channels, &shown, no_hit)?;
         check_scale(values, scale, &shown)?;
         return Ok(Answer {
             values: Some(values),
@@ -239,7 +241,7 @@ pub fn parse_with<S: AsRef<str>>(
             shown: shown.clone(),
             hint: Hint(not_a_number(inner)),
             read: Read(numbers_read(inner)),
-            forms: Forms,
+            forms: Forms::of(no_hit),
         })
     })?;
     let mut values = [0.0; 3];
@@ -250,7 +252,7 @@ pub fn parse_with<S: AsRef<str>>(
                 token: Echo::new(tok, 40),
                 shown: shown.clone(),
                 why: Why(not_a_number(&tok.replace(',', "."))),
-                forms: Forms,
+                forms: Forms::of(no_hit),
             })
         })?;
     }
@@ -439,7 +441,11 @@ fn channels(t: &str) -> Option<Vec<(char, &str)>> {
 
 /// The colour of an answer that names its channels, or what is wrong with it: a value that is
 /// not a number, a channel named twice, a channel missing (saying what was read).
-fn channels_values(channels: Vec<(char, &str)>, shown: &Echo) -> Result<[f64; 3], BadAnswer> {
+fn channels_values<S: AsRef<str>>(
+    channels: Vec<(char, &str)>,
+    shown: &Echo,
+    no_hit: &[S],
+) -> Result<[f64; 3], BadAnswer> {
     let mut read = Channels::default();
     for (c, value) in channels {
         let x = token_number(value).ok_or_else(|| {
@@ -447,7 +453,7 @@ fn channels_values(channels: Vec<(char, &str)>, shown: &Echo) -> Result<[f64; 3]
                 token: Echo::new(value, 40),
                 shown: shown.clone(),
                 why: Why(not_a_number(&value.replace(',', "."))),
-                forms: Forms,
+                forms: Forms::of(no_hit),
             })
         })?;
         let k = match c {
@@ -470,7 +476,7 @@ fn channels_values(channels: Vec<(char, &str)>, shown: &Echo) -> Result<[f64; 3]
         Err(bad(AnswerFault::ChannelMissing {
             shown: shown.clone(),
             read,
-            forms: Forms,
+            forms: Forms::of(no_hit),
         }))
     }
 }
@@ -604,24 +610,61 @@ crate::faults! {
     }
 }
 
-/// The forms an answer may take, as the fix of an answer that cannot be read says them.
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
-pub struct Forms;
+/// The word for "the ray hits nothing" said in `lang`: the language's own ("none", "nenhuma")
+/// where `words` (the course's no-hit words, [`crate::check::policy::Policy::no_hit`]) take it,
+/// else the course's first word; the language's own when `words` is empty.
+pub(crate) fn no_hit_word<S: AsRef<str>>(lang: Lang, words: &[S]) -> String {
+    let own = match lang {
+        Lang::En => "none",
+        Lang::Pt => "nenhuma",
+    };
+    match words.first() {
+        Some(first) if !is_no_hit_in(own, words) => first.as_ref().to_owned(),
+        _ => own.to_owned(),
+    }
+}
+
+/// The forms an answer may take, as the fix of an answer that cannot be read says them, with
+/// the course's word for "no hit" in each language ([`no_hit_word`]).
+#[derive(Clone, Debug, PartialEq)]
+pub struct Forms {
+    none: [String; 2],
+}
+
+impl Forms {
+    /// The forms under the course's no-hit `words`.
+    pub(crate) fn of<S: AsRef<str>>(words: &[S]) -> Forms {
+        Forms {
+            none: [Lang::En, Lang::Pt].map(|lang| no_hit_word(lang, words)),
+        }
+    }
+}
+
+impl Default for Forms {
+    /// The forms under the default words.
+    fn default() -> Forms {
+        Forms::of(&NO_HIT_WORDS)
+    }
+}
 
 impl Show for Forms {
     fn show(&self, lang: Lang, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        f.write_str(match lang {
-            Lang::En => {
+        match lang {
+            Lang::En => write!(
+                f,
                 "write three numbers such as \"0.52 0.03 0\", \"(0.52, 0.03, 0)\" or \
                  \"[0.52; 0.03; 0]\", three integers 0–255 with --scale 255, \"#RRGGBB\", or \
-                 \"none\" when the ray hits nothing"
-            }
-            Lang::Pt => {
+                 \"{}\" when the ray hits nothing",
+                self.none[0]
+            ),
+            Lang::Pt => write!(
+                f,
                 "escreva três números como \"0.52 0.03 0\", \"(0.52, 0.03, 0)\" ou \
                  \"[0.52; 0.03; 0]\", três inteiros 0–255 com --scale 255, \"#RRGGBB\", ou \
-                 \"nenhuma\" quando o raio não atinge nada"
-            }
-        })
+                 \"{}\" quando o raio não atinge nada",
+                self.none[1]
+            ),
+        }
     }
 }
 

@@ -117,18 +117,7 @@ impl Grading {
             },
             eight_bit: policy.eight_bit == crate::check::policy::EightBit::Read,
             per_point: 1.0,
-            none: {
-                let word = words(lang).none;
-                if crate::check::answer::is_no_hit_in(word, &policy.no_hit) {
-                    word.to_owned()
-                } else {
-                    policy
-                        .no_hit
-                        .first()
-                        .cloned()
-                        .unwrap_or_else(|| word.into())
-                }
-            },
+            none: crate::check::answer::no_hit_word(lang, &policy.no_hit),
         })
     }
 }
@@ -180,7 +169,6 @@ fn words(lang: Lang) -> Words {
             other: "Wrong: compare with the worked solution.",
             no_hit_question: "Choose the colour of the point the ray meets, or \u{201c}{none}\u{201d} if it meets nothing:",
             no_hit_right: "Right: as written, the ray meets nothing.",
-            none: "none",
             solution: "Worked solution",
         },
         Lang::Pt => Words {
@@ -193,7 +181,6 @@ fn words(lang: Lang) -> Words {
             other: "Incorreto: compare com a solução comentada.",
             no_hit_question: "Escolha a cor do ponto atingido pelo raio, ou \u{201c}{none}\u{201d} se ele não atinge nada:",
             no_hit_right: "Correto: como enunciado, o raio não atinge nada.",
-            none: "nenhuma",
             solution: "Solução comentada",
         },
     }
@@ -209,7 +196,6 @@ struct Words {
     other: &'static str,
     no_hit_question: &'static str,
     no_hit_right: &'static str,
-    none: &'static str,
     solution: &'static str,
 }
 

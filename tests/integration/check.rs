@@ -236,6 +236,38 @@ fn an_unreadable_answer_exits_2_naming_the_option_and_the_forms() {
     assert!(err.contains("0–255"), "{err}");
 }
 
+/// The forms an unreadable answer's fix names give the course's word for "no hit": under a
+/// policy whose only word is "vazio", the fix says "vazio", never "none" or "nenhuma", which
+/// that course refuses.
+#[test]
+fn an_unreadable_answer_names_the_courses_no_hit_word() {
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::copy("exercises/4.3.json", dir.path().join("4.3.json")).unwrap();
+    std::fs::write(
+        dir.path().join("course-policy.json"),
+        r#"{"no_hit": ["vazio"]}"#,
+    )
+    .unwrap();
+    for (lang, answer) in [("en", "none"), ("pt", "nenhuma"), ("pt", "0.5 0.7")] {
+        let out = phong()
+            .args(["check", "--answer", answer, "--lang", lang])
+            .arg(dir.path().join("4.3.json"))
+            .output()
+            .unwrap();
+        let err = String::from_utf8(out.stderr).unwrap();
+        assert_eq!(out.status.code(), Some(2), "{err}");
+        assert!(err.contains("\"vazio\""), "{lang} {answer}: {err}");
+        assert!(!err.contains("\"none\" when"), "{err}");
+        assert!(!err.contains("\"nenhuma\" quando"), "{err}");
+    }
+    // Under the default words, each language's own.
+    let (_, _, err) = check("4.3.json", &["--answer", "abc", "--lang", "pt"]);
+    assert!(
+        err.contains("\"nenhuma\" quando o raio não atinge nada"),
+        "{err}"
+    );
+}
+
 #[test]
 fn bad_usage_exits_2() {
     phong()
