@@ -228,6 +228,18 @@ crate::faults! {
                  one of them",
                 "resolva-os em pastas separadas (um phong solve … -o DIR/ para cada), ou \
                  renomeie um deles";
+        /// `grade --format gradescope -o FILE` of submissions from several students.
+        GradescopeStudents { count: usize, first: crate::text::Echo, second: crate::text::Echo } =>
+            "the submissions are from {count} students (\"{first}\", \"{second}\", …), and a \
+             Gradescope results.json is one submission's",
+            "as respostas são de {count} alunos (\"{first}\", \"{second}\", …), e um \
+             results.json do Gradescope é de uma só entrega";
+            fix "give -o DIR/ for a results.json per student, or leave out -o for one object \
+                 keyed by student; if they are one student, write the name the same way on every \
+                 row",
+                "dê -o PASTA/ para um results.json por aluno, ou tire -o para um objeto com uma \
+                 chave por aluno; se são um só aluno, escreva o nome do mesmo jeito em toda \
+                 linha";
         /// `SOURCE_DATE_EPOCH` that is not a time a workbook can say it was made.
         SourceDateEpoch { value: crate::text::Echo } =>
             "\"{value}\" is not a whole number of seconds since 1970-01-01 00:00 UTC (up to the \

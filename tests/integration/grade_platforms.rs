@@ -844,3 +844,55 @@ fn exercises_are_in_natural_order_in_totals_summary_and_exports() {
     let at = |name: &str| xml.find(&format!("name=\"{name}\"")).unwrap();
     assert!(at("4.2") < at("4.9") && at("4.9") < at("4.10"), "{xml}");
 }
+
+/// A results.json is one submission's: `-o FILE` of several students' answers (here one
+/// student's name written two ways, as a typo in a student's own CSV gives) is refused with
+/// exit 2, naming both and the fix, and nothing is written; standard output still gives the
+/// object keyed by student, and `-o DIR/` a file each.
+#[test]
+fn gradescope_to_one_file_refuses_several_students() {
+    let input =
+        write_temp("aluno;exercício;resposta\nana.silva;4.1;0,5 0,7 0,3\nAna.Silva;4.2;0 0 0\n");
+    let dir = tempfile::tempdir().unwrap();
+    let results = dir.path().join("results.json");
+    let to = results.to_str().unwrap();
+    for (lang, says, fix) in [
+        (
+            "en",
+            "from 2 students",
+            "give -o DIR/ for a results.json per student",
+        ),
+        (
+            "pt",
+            "de 2 alunos",
+            "dê -o PASTA/ para um results.json por aluno",
+        ),
+    ] {
+        let out = grade(
+            input.path(),
+            &["--format", "gradescope", "--lang", lang, "-o", to],
+        );
+        let err = String::from_utf8(out.stderr).unwrap();
+        assert_eq!(out.status.code(), Some(2), "{err}");
+        assert!(
+            err.contains("--output") && err.contains(says) && err.contains(fix),
+            "{err}"
+        );
+        assert!(
+            err.contains("\"ana.silva\"") && err.contains("\"Ana.Silva\""),
+            "{err}"
+        );
+        assert!(!results.exists());
+    }
+    let out = grade(input.path(), &["--format", "gradescope"]);
+    assert_eq!(out.status.code(), Some(0));
+    let all: Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert_eq!(all.as_object().unwrap().len(), 2);
+    let folder = format!("{}/", dir.path().join("each").display());
+    let out = grade(input.path(), &["--format", "gradescope", "-o", &folder]);
+    assert_eq!(out.status.code(), Some(0));
+    assert_eq!(
+        std::fs::read_dir(dir.path().join("each")).unwrap().count(),
+        2
+    );
+}

@@ -199,8 +199,9 @@ fn workbook_created() -> Result<i64, CliError> {
         })
 }
 
-/// Gradescope's results.json: to `-o FILE` or standard output (one student: the file itself;
-/// several: an object keyed by student), or, with `-o DIR/` (a folder, or a path ending in
+/// Gradescope's results.json: to `-o FILE` (one student's, the file itself: several are
+/// refused) or standard output (one student: the file itself; several: an object keyed by
+/// student), or, with `-o DIR/` (a folder, or a path ending in
 /// `/`), one `DIR/STUDENT.json` per student (and `DIR/_no_student_.json`, `_sem_aluno_.json`
 /// in Portuguese, for the rows without a student). A student's file that would replace an input
 /// (`-o` the exercises' folder, a student named "4.2") is refused, as `-o` itself would be.
@@ -217,6 +218,20 @@ fn gradescope(
                 .ends_with(std::path::MAIN_SEPARATOR)
     });
     let Some(dir) = to_folder else {
+        // A results.json is one submission's: a file of several students' (an object keyed by
+        // student) would fail Gradescope's autograder, so only standard output gets one.
+        let file = args.output.as_deref().filter(|o| !output::is_dash(o));
+        if file.is_some() && graded.students() > 1 {
+            use check::export::Class;
+            return Err(CliError::usage(
+                "--output",
+                CliFault::GradescopeStudents {
+                    count: graded.students(),
+                    first: crate::text::Echo::new(graded.name(0), 40),
+                    second: crate::text::Echo::new(graded.name(1), 40),
+                },
+            ));
+        }
         return batch.add(args.output.as_deref(), &mut |w| {
             check::export::gradescope::write_class(graded, args.lang, w)
         });
