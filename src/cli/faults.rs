@@ -124,6 +124,16 @@ crate::faults! {
              pontos, e o Moodle avalia uma resposta só por uma de suas frações ({allowed})";
             fix "give the course policy a reading_credit Moodle has, such as 0.5",
                 "dê à política do curso um reading_credit que o Moodle tenha, como 0.5";
+        /// Points a Moodle quiz's whole weights cannot hold.
+        MoodlePoints { problem: String, points: crate::text::Num } =>
+            "points: {problem} is worth {points} points, finer than a thousandth of a point, and \
+             a Moodle quiz weighs its questions in whole numbers",
+            "points: {problem} vale {points} pontos, mais fino que um milésimo de ponto, e um \
+             questionário do Moodle pesa suas questões em números inteiros";
+            fix "give the course policy's points in thousandths of a point at most (0.333 rather \
+                 than 0.3333)",
+                "dê os pontos da política do curso em milésimos de ponto no máximo (0.333 em vez \
+                 de 0.3333)";
         /// `--points` refused.
         Points { why: Said } =>
             "{why}", "{why}";

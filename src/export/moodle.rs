@@ -129,17 +129,20 @@ impl Grading {
     /// question's `<defaultgrade>` is not read): a colour question has three parts and a no-hit
     /// question one, so a colour part weighs the points and the no-hit part three times them,
     /// each question's mark being three times its points. Points with decimals are scaled by 10,
-    /// 100 or 1,000 for every question alike (to a thousandth of a point at most).
-    pub(crate) fn weigh(&mut self, entries: &[&Entry]) {
-        let whole = |k: f64| {
-            entries
-                .iter()
-                .all(|e| (e.points * k - (e.points * k).round()).abs() < 1e-9)
-        };
+    /// 100 or 1,000 for every question alike (to a thousandth of a point at most): `Err` with an
+    /// entry whose points are finer (0.3333, 0.0001), which whole weights would round (0.0001
+    /// to 0, a weight Moodle reads as 1).
+    pub(crate) fn weigh<'e>(&mut self, entries: &[&'e Entry]) -> Result<(), &'e Entry> {
+        let whole = |e: &Entry, k: f64| (e.points * k - (e.points * k).round()).abs() < 1e-9;
+        let finest = POINT_STEPS[POINT_STEPS.len() - 1];
+        if let Some(e) = entries.iter().find(|e| !whole(e, finest)) {
+            return Err(e);
+        }
         self.per_point = POINT_STEPS
             .into_iter()
-            .find(|&k| whole(k))
-            .unwrap_or(1000.0);
+            .find(|&k| entries.iter().all(|e| whole(e, k)))
+            .unwrap_or(finest);
+        Ok(())
     }
 
     /// The weight of each of a question's `parts` parts (3: a colour; 1: no hit) for `points`.

@@ -1255,3 +1255,56 @@ mod one_verdict {
         }
     }
 }
+
+/// Points finer than a thousandth of a point: the quiz's whole weights would round them (0.0001
+/// to 0, which Moodle reads as 1; 0.3333 to 333 beside 1,000 for a point), so they are refused,
+/// exit 2, naming the policy, the problem and the points, and nothing is written; a thousandth
+/// is kept exactly: 0.333 weighs 333 per part beside 1,000 for 1 point.
+#[test]
+fn points_finer_than_a_thousandth_are_refused_for_the_quiz() {
+    let dir = tempfile::tempdir().unwrap();
+    for id in ["4.1", "4.2"] {
+        let name = format!("{id}.json");
+        std::fs::copy(root().join("exercises").join(&name), dir.path().join(&name)).unwrap();
+    }
+    let policy = dir.path().join("course-policy.json");
+    let quiz = dir.path().join("quiz.xml");
+    for (points, lang, says) in [
+        (
+            "0.0001",
+            "en",
+            "4.2.json is worth 0.0001 points, finer than a thousandth of a point",
+        ),
+        (
+            "0.3333",
+            "pt",
+            "4.2.json vale 0.3333 pontos, mais fino que um milésimo de ponto",
+        ),
+    ] {
+        std::fs::write(&policy, format!(r#"{{"points": {{"4.2": {points}}}}}"#)).unwrap();
+        let out = phong()
+            .args(["moodle", "--lang", lang, "-o"])
+            .arg(&quiz)
+            .arg(dir.path().join("4.1.json"))
+            .arg(dir.path().join("4.2.json"))
+            .output()
+            .unwrap();
+        let err = String::from_utf8(out.stderr).unwrap();
+        assert_eq!(out.status.code(), Some(2), "{err}");
+        assert!(
+            err.contains("course-policy.json") && err.contains(says),
+            "{err}"
+        );
+        assert!(!quiz.exists());
+    }
+    std::fs::write(&policy, r#"{"points": {"4.2": 0.333}}"#).unwrap();
+    let xml = moodle(
+        &[dir.path().join("4.1.json"), dir.path().join("4.2.json")],
+        "en",
+        None,
+    );
+    let questions = validate(&xml).unwrap();
+    let weights = |q: &Vec<Sub>| q.iter().map(|s| s.weight).collect::<Vec<_>>();
+    assert_eq!(weights(&questions[0]), [1000, 1000, 1000]);
+    assert_eq!(weights(&questions[1]), [333, 333, 333]);
+}

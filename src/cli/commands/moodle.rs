@@ -73,7 +73,20 @@ pub(crate) fn run(args: &MoodleArgs) -> Result<Exit, CliError> {
         sets.push(read.set);
         places.push(read.places);
     }
-    grading.weigh(&sets.iter().flat_map(|s| &s.entries).collect::<Vec<_>>());
+    grading
+        .weigh(&sets.iter().flat_map(|s| &s.entries).collect::<Vec<_>>())
+        .map_err(|e| {
+            CliError::usage(
+                policy
+                    .source
+                    .as_ref()
+                    .map_or_else(|| "--policy".to_owned(), |p| p.display().to_string()),
+                CliFault::MoodlePoints {
+                    problem: e.label.clone(),
+                    points: crate::text::Num(e.points),
+                },
+            )
+        })?;
     let text = quiz(&sets, &args.category, &grading, args.lang).map_err(|unasked| {
         errors.extend(unasked.into_iter().map(|(i, k, e)| (i, places[i][k], e)));
     });
