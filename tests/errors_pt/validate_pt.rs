@@ -327,6 +327,34 @@ fn cases() -> Vec<(
             ],
         ),
         (
+            "a camera too far for the intersection tests",
+            {
+                let mut s = scene(matte(), json!({}), (4, 3));
+                s["camera"]["eye"] = json!([0, 0, 1e200]);
+                s
+            },
+            render,
+            vec![
+                "camera.eye[2]: 1e200 é grande demais para o olho da câmera em f64: os testes \
+                 de interseção multiplicam coordenadas",
+                "Correção: dê coordenadas dentro de ±1e100 (reduza a escala da cena)",
+            ],
+        ),
+        (
+            "a sphere too large for the ray–sphere test",
+            {
+                let mut s = scene(matte(), json!({}), (4, 3));
+                s["surfaces"][0] = json!({ "type": "sphere", "center": [0, 0, 0],
+                    "radius": 1e200, "material": matte() });
+                s
+            },
+            render,
+            vec![
+                "surfaces[0].radius: 1e200 é grande demais para o raio de uma esfera em f64",
+                "Correção: dê um raio de até 1e100 (reduza a escala da cena)",
+            ],
+        ),
+        (
             "a field of view of 0",
             {
                 let mut s = scene(matte(), json!({}), (4, 3));

@@ -1574,6 +1574,178 @@ fn a_triangle_too_large_for_the_precision_is_refused_naming_the_bound_that_works
         );
     }
 }
+/// A sphere of centre (0, 0, z) and radius r for the base ray problem.
+fn sphere(z: f64, r: f64) -> Value {
+    json!({ "type": "sphere", "center": [0, 0, z], "radius": r, "material": "M" })
+}
+
+/// A ray's origin, a sphere's centre and radius and a plane's point past the bound the
+/// intersection tests can multiply are refused, naming the coordinate and the bound that works,
+/// as a triangle's corner is. Before, each was taken: the ray from (0, 0, 5) straight down the
+/// axis of a sphere of radius 1e199 centred 1e200 below missed it (its discriminant
+/// (r − 0)(r + 0) = 1e398 overflowed), and a ray from 1e200 missed a triangle around the
+/// origin, each without a word ("the ray's line meets no surface").
+#[test]
+fn a_far_point_or_a_huge_sphere_is_refused_naming_the_bound_that_works() {
+    let within = "within ±1e100";
+    let cases = [
+        (
+            with(ray_problem(), "/ray/origin", json!([0, 0, 1e200])),
+            "ray.origin[2]",
+            "1e200 is too large for the ray's origin in f64",
+            within,
+        ),
+        (
+            with(ray_problem(), "/surfaces/0", sphere(-1e200, 1e199)),
+            "surfaces[0].radius",
+            "1e199 is too large for a sphere's radius in f64",
+            "a radius of at most 1e100",
+        ),
+        (
+            with(ray_problem(), "/surfaces/0", sphere(-1e200, 1.0)),
+            "surfaces[0].center[2]",
+            "-1e200 is too large for a sphere's centre in f64",
+            within,
+        ),
+        (
+            with(ray_problem(), "/surfaces/0/point", json!([0, 0, -1e200])),
+            "surfaces[0].point[2]",
+            "-1e200 is too large for a plane's point in f64",
+            within,
+        ),
+        (
+            with(
+                with(ray_problem(), "/ray/origin", json!([0, 0, 1e200])),
+                "/surfaces/0",
+                triangle(1.0),
+            ),
+            "ray.origin[2]",
+            "1e200 is too large for the ray's origin in f64",
+            within,
+        ),
+    ];
+    for (problem, field, says, bound) in &cases {
+        let bad = rejected_text(
+            &pretty(problem),
+            &["f64"],
+            Expect {
+                field: Some(field),
+                says: &[says, bound],
+            },
+        );
+        assert!(!bad.stderr.contains("--precision f64"), "{}", bad.stderr);
+    }
+    // In f32 the bound is 1e12, and f64 is a way out: the same problem solves there.
+    let problem = with(ray_problem(), "/ray/origin", json!([0, 0, 1e13]));
+    let bad = rejected_text(
+        &pretty(&problem),
+        &["f32"],
+        Expect {
+            field: Some("ray.origin[2]"),
+            says: &[
+                "too large for the ray's origin in f32",
+                "within ±1e12",
+                "--precision f64",
+            ],
+        },
+    );
+    check_solves(&pretty(&problem), "f64");
+    let pt = phong(&[
+        "solve",
+        utf8(&bad.path),
+        "--precision",
+        "f32",
+        "--lang",
+        "pt",
+    ]);
+    assert!(
+        pt.stderr
+            .contains("grande demais para a origem do raio em f32")
+            && pt.stderr.contains("dentro de ±1e12"),
+        "{}",
+        pt.stderr
+    );
+    let problem = with(ray_problem(), "/surfaces/0", sphere(-1e13, 1e13));
+    rejected_text(
+        &pretty(&problem),
+        &["f32"],
+        Expect {
+            field: Some("surfaces[0].radius"),
+            says: &["too large for a sphere's radius in f32", "at most 1e12"],
+        },
+    );
+    // At the bound the tests hold: the ray from (0, 0, B) down the axis meets the sphere of
+    // radius B centred at (0, 0, −B) at its top, the origin, at t = B.
+    for (precision, b) in [("f64", 1e100), ("f32", 1e12)] {
+        let problem = with(ray_problem(), "/ray/origin", json!([0, 0, b]));
+        let problem = with(problem, "/surfaces/0", sphere(-b, b));
+        let problem = with(problem, "/lights/1/position", json!([0, 0, b / 2.0]));
+        check_solves(&pretty(&problem), precision);
+        let dir = TempDir::new().expect("a temporary folder");
+        let path = dir.path().join("at-the-bound.json");
+        fs::write(&path, pretty(&problem)).expect("written");
+        let run = phong(&[
+            "solve",
+            utf8(&path),
+            "--precision",
+            precision,
+            "--format",
+            "json",
+        ]);
+        let doc: Value = serde_json::from_str(&run.stdout).expect("a JSON document");
+        let hit = &doc["intersection"];
+        let t = hit["t"].as_f64().unwrap_or(f64::NAN);
+        let z = hit["point"][2].as_f64().unwrap_or(f64::NAN);
+        assert!(
+            hit["hit"] == json!(true) && (t / b - 1.0).abs() < 1e-6 && z.abs() <= b * 1e-6,
+            "{precision}: {hit}"
+        );
+    }
+}
+
+/// A camera whose eye is past the bound is refused before anything is traced, naming the
+/// coordinate (and look_at as well): before, the eye at 1e200 looking at a sphere that fills
+/// the view rendered the background alone (every ray's discriminant overflowed).
+#[test]
+fn a_camera_too_far_away_is_refused_and_no_image_is_written() {
+    let dir = TempDir::new().expect("a temporary folder");
+    for (at, value, field, says) in [
+        (
+            "eye",
+            json!([0, 0, 1e200]),
+            "camera.eye[2]",
+            "1e200 is too large for the camera's eye in f64",
+        ),
+        (
+            "look_at",
+            json!([-1e101, 0, 0]),
+            "camera.look_at[0]",
+            "-1e101 is too large for the point the camera looks at in f64",
+        ),
+    ] {
+        let mut scene = json!({
+            "materials": { "M": material() },
+            "lights": [{ "type": "ambient", "color": [1, 1, 1] }],
+            "surfaces": [sphere(0.0, 1e99)],
+            "camera": { "eye": [0, 0, 1e100], "look_at": [0, 0, 0], "fov": 40,
+                        "width": 4, "height": 4 }
+        });
+        scene["camera"][at] = value;
+        let path = dir.path().join("far.json");
+        fs::write(&path, pretty(&scene)).expect("written");
+        let image = dir.path().join("far.png");
+        let run = phong(&["render", utf8(&path), "-o", utf8(&image)]);
+        assert_eq!(run.code, Some(BAD_INPUT), "{}", run.stderr);
+        assert!(
+            run.stderr.contains(&format!("far.json: {field}: {says}"))
+                && run.stderr.contains("within ±1e100"),
+            "{}",
+            run.stderr
+        );
+        assert!(!image.exists(), "an image was written");
+    }
+}
+
 /// A sphere whose hit point rounding cannot tell from its centre: the fix is what would help in
 /// the precision in force. In f64 (the default) there is no "--precision f64" to use; a larger
 /// radius, or the sphere and the ray nearer the origin, is what helps.
