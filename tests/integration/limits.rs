@@ -1030,6 +1030,40 @@ fn an_output_may_not_replace_the_course_policy_the_run_reads() {
     assert_eq!(std::fs::read_to_string(&beside).unwrap(), policy);
     assert_eq!(std::fs::read_to_string(&given).unwrap(), policy);
 }
+/// `phong serve --exercises EX --log-answers EX/4.1.json` appended each checked answer to the
+/// exercise it serves (the next start refused the file: "trailing characters"): an exercise
+/// file is an input of the server as its course policy is, refused before it listens, in
+/// English and Portuguese, the file left as it was.
+#[cfg(feature = "serve")]
+#[test]
+fn serve_may_not_log_answers_into_an_exercise_file() {
+    let dir = TempDir::new().unwrap();
+    let (ex, _) = a_class(&dir);
+    let exercise = ex.join("4.1.json");
+    let before = std::fs::read_to_string(&exercise).unwrap();
+    let serve = |log: &Path, lang: &str| {
+        let mut cmd = phong();
+        cmd.arg("serve")
+            .arg("--exercises")
+            .arg(&ex)
+            .args(["--addr", "127.0.0.1:0", "--log-answers"])
+            .arg(log)
+            .env("LANG", lang)
+            .timeout(std::time::Duration::from_secs(20));
+        cmd
+    };
+    let en = refused(
+        &mut serve(&exercise, "C"),
+        &["--log-answers", "is the input"],
+    );
+    assert!(en.contains("4.1.json"), "{en}");
+    refused(
+        &mut serve(&exercise, "pt_BR.UTF-8"),
+        &["--log-answers", "é a entrada", "4.1.json"],
+    );
+    assert_eq!(std::fs::read_to_string(&exercise).unwrap(), before);
+}
+
 /// `phong check --steps FILE -o FILE` would replace the steps it reads with its report: refused
 /// as any output naming an input, the file left as it was.
 #[test]
