@@ -695,13 +695,10 @@ pub(crate) struct SceneFile<R: Real> {
 }
 
 /// Reads a scene: a problem file with a camera and surfaces (what the tracer needs), and the
-/// mesh files it names.
-pub(crate) fn load_scene<R: Real>(path: &Path) -> Result<SceneFile<R>, ProblemError> {
-    load_scene_for::<R>(path, validate::Work::Image)
-}
-
-/// [`load_scene`], for `work`: with [`validate::Work::Pixel`] (one pixel explained) the
-/// image's own bounds (its primary rays, one sample's tree) are left to the pixel's.
+/// mesh files it names, for `work`: with [`validate::Work::Image`] held to the image's bounds
+/// with the file's own settings; with [`validate::Work::Pixel`] (one pixel explained) the
+/// image's own bounds (its primary rays, one sample's tree) are left to the pixel's; with
+/// [`validate::Work::Rendered`] to the command, which sets its own over the file's.
 pub(crate) fn load_scene_for<R: Real>(
     path: &Path,
     work: validate::Work,

@@ -55,10 +55,12 @@ pub(crate) enum Work {
     /// [`check_explanation`] (its samples' trees within [`MAX_EXPLAINED_RAYS`], far below a
     /// tree's bound), with the settings in force.
     Pixel,
-    /// The whole image rendered with the command line's settings over the file's
-    /// (`phong render`): the caller holds the image to both bounds with the settings in force
-    /// ([`check_work`], [`check_tree`]), so the file's own settings (its 8 samples, where
-    /// `--samples 1` is given) do not refuse it first.
+    /// The whole image rendered with the command's settings over the file's (`phong render`'s
+    /// flags; `phong tradeoff`'s sweep, which sets the level, weight and samples of every
+    /// render, and `--size`): the caller holds the image to both bounds with the settings in
+    /// force ([`check_work`], [`check_tree`]), so the file's own settings (its 8 samples,
+    /// where `--samples 1` is given; its maximum level 60, which a sweep never traces) do not
+    /// refuse it first.
     Rendered,
 }
 
