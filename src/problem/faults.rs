@@ -9,7 +9,7 @@ use std::path::PathBuf;
 
 use super::error::Invalid;
 use super::format::{LightType, SurfaceType};
-use crate::text::{Lang, Message, Num};
+use crate::text::{Lang, Message, Num, Said};
 use crate::{faults, messages};
 
 faults! {
@@ -517,6 +517,15 @@ faults! {
             "{vector} is the zero vector (in {precision}), which has no direction",
             "{vector} é o vetor nulo (em {precision}), que não tem direção";
             fix "give a non-zero vector", "dê um vetor não nulo";
+        /// A number the file writes with a digit other than 0 that is below the smallest f64
+        /// above 0, so that serde_json read it as 0 (`1e-330`): what the error its 0 gave says
+        /// (`what`, `fix`), after why (`problem::written`).
+        ReadAsZero { written: String, what: Said, fix: Said } =>
+            "{written} is too small to represent (the smallest number above 0 is about \
+             4.9e-324), so it is read as 0: {what}",
+            "{written} é pequeno demais para ser representado (o menor número acima de 0 é \
+             cerca de 4.9e-324), e é lido como 0: {what}";
+            fix "{fix}", "{fix}";
         /// A coordinate of a point the intersection tests take beyond what they can multiply
         /// in f64 (`geometry::max_coordinate`).
         CoordinateTooLarge { value: String, of: PointOf, max: Num, precision: &'static str } =>

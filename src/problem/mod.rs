@@ -17,6 +17,7 @@ pub(crate) mod syntax;
 pub use syntax::JsonError;
 pub mod validate;
 pub(crate) mod warnings;
+pub(crate) mod written;
 
 use std::path::{Path, PathBuf};
 
@@ -634,22 +635,57 @@ impl<'a> Source<'a> {
 
     /// Reads, parses and validates the problem in precision `R`.
     pub fn load<R: Real>(&self) -> Result<(ProblemFile, Problem<R>), ProblemError> {
+        // Standard input is read once: its text is kept for an error's numbers as the file
+        // writes them ([`Source::validate_text`]); a file is read again for them, only then.
+        if matches!(*self, Source::File(p) if p.as_os_str() == "-") {
+            let text = self.text()?;
+            let file = self.parse_text(&text)?;
+            let problem = self.validate_text::<R>(&file, &text)?;
+            return Ok((file, problem));
+        }
         let file = self.parse()?;
         let problem = self.validate::<R>(&file)?;
         Ok((file, problem))
     }
 
     /// Validates the parsed problem in precision `R`: a file's meshes are read from beside it;
-    /// text that names a mesh is refused.
+    /// text that names a mesh is refused. An error about a number the file writes but f64
+    /// reads as 0 is said of what the file writes (`problem::written`): the text is the
+    /// source's own, or the file read again (only then); standard input, read once, cannot be
+    /// read again: use [`Source::validate_text`] with the text read.
     pub fn validate<R: Real>(&self, file: &ProblemFile) -> Result<Problem<R>, ProblemError> {
-        let name = self.name();
+        self.validated::<R>(file).map_err(|e| {
+            let e = match *self {
+                Source::Text { text, .. } => written::as_written(e, text),
+                Source::File(path) if path.as_os_str() != "-" => match read_text(path) {
+                    Ok(text) => written::as_written(e, &text),
+                    Err(_) => e,
+                },
+                Source::File(_) => e,
+            };
+            e.at(self.name())
+        })
+    }
+
+    /// [`Source::validate`] of a problem parsed from `text` ([`Source::text`]), which an error
+    /// is said of.
+    pub fn validate_text<R: Real>(
+        &self,
+        file: &ProblemFile,
+        text: &str,
+    ) -> Result<Problem<R>, ProblemError> {
+        self.validated::<R>(file)
+            .map_err(|e| written::as_written(e, text).at(self.name()))
+    }
+
+    /// The problem validated, or validation's error as it is.
+    fn validated<R: Real>(&self, file: &ProblemFile) -> Result<Problem<R>, Invalid> {
         match *self {
             Source::File(path) => validate::validate_in::<R>(file, path.parent()),
             Source::Text { .. } => {
                 no_mesh(file).and_then(|()| validate::validate_in::<R>(file, None))
             }
         }
-        .map_err(|e| e.at(name))
     }
 }
 
@@ -704,8 +740,15 @@ pub(crate) fn load_scene_for<R: Real>(
     work: validate::Work,
 ) -> Result<SceneFile<R>, ProblemError> {
     let file = parse_file(path)?;
-    let problem =
-        validate::validate_for::<R>(&file, path.parent(), work).map_err(|e| e.at(path))?;
+    let problem = validate::validate_for::<R>(&file, path.parent(), work).map_err(|e| {
+        // A number the file writes but f64 reads as 0, said as written: the file is read
+        // again, only on this path ([`written::as_written`]).
+        match read_text(path) {
+            Ok(text) => written::as_written(e, &text),
+            Err(_) => e,
+        }
+        .at(path)
+    })?;
     let meshes = mesh_files(&file, path);
     let Some(camera) = problem.camera else {
         return Err(Invalid::of("camera", SourceFault::NoCamera).at(path));

@@ -1746,6 +1746,78 @@ fn a_camera_too_far_away_is_refused_and_no_image_is_written() {
     }
 }
 
+/// A number below the smallest f64 above 0 (about 4.9e-324) is read as 0: an error about it
+/// said "0 is not a radius" where the file writes 1e-330. It says what the file writes, why it
+/// was read as 0, and the fix of the error its 0 gave, in both precisions and formats, for a
+/// file and for standard input; a vector that reads as the zero vector names its element.
+#[test]
+fn a_number_read_as_zero_is_quoted_as_written() {
+    let radius = with(ray_problem(), "/surfaces/0", sphere(-5.0, 1.0));
+    let text = pretty(&radius).replace("\"radius\": 1.0", "\"radius\": 1e-330");
+    assert!(text.contains("1e-330"), "{text}");
+    let bad = rejected_text(
+        &text,
+        &["f64", "f32"],
+        Expect {
+            field: Some("surfaces[0].radius"),
+            says: &[
+                "surfaces[0].radius: 1e-330 is too small to represent",
+                "so it is read as 0: 0 is not a radius",
+                "Fix: give the sphere a radius > 0",
+            ],
+        },
+    );
+    let dash = crate::support::phong()
+        .args(["solve", "-"])
+        .write_stdin(text.clone())
+        .output()
+        .expect("phong runs");
+    let stderr = String::from_utf8_lossy(&dash.stderr);
+    assert_eq!(dash.status.code(), Some(BAD_INPUT), "{stderr}");
+    assert!(
+        stderr.contains("-: surfaces[0].radius: 1e-330 is too small to represent"),
+        "{stderr}"
+    );
+    let pt = phong(&["solve", utf8(&bad.path), "--lang", "pt"]);
+    assert!(
+        pt.stderr.contains(
+            "surfaces[0].radius: 1e-330 é pequeno demais para ser representado (o menor número \
+             acima de 0 é cerca de 4.9e-324), e é lido como 0: 0 não é um raio. Correção: dê à \
+             esfera um raio > 0"
+        ),
+        "{}",
+        pt.stderr
+    );
+    let direction = pretty(&ray_problem()).replace(
+        "\"direction\": [\n      0,\n      0,\n      -1\n    ]",
+        "\"direction\": [0, -1e-400, 0]",
+    );
+    assert!(direction.contains("-1e-400"), "{direction}");
+    rejected_text(
+        &direction,
+        &["f64"],
+        Expect {
+            field: Some("ray.direction[1]"),
+            says: &[
+                "-1e-400 is too small to represent",
+                "the ray's direction is the zero vector",
+                "give a non-zero vector",
+            ],
+        },
+    );
+    // A number written as 0 is said as before.
+    let zero = pretty(&radius).replace("\"radius\": 1.0", "\"radius\": 0.0e-400");
+    let bad = rejected_text(
+        &zero,
+        &["f64"],
+        Expect {
+            field: Some("surfaces[0].radius"),
+            says: &["0 is not a radius"],
+        },
+    );
+    assert!(!bad.stderr.contains("too small"), "{}", bad.stderr);
+}
+
 /// A sphere whose hit point rounding cannot tell from its centre: the fix is what would help in
 /// the precision in force. In f64 (the default) there is no "--precision f64" to use; a larger
 /// radius, or the sphere and the ray nearer the origin, is what helps.

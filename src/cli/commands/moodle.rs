@@ -154,7 +154,7 @@ fn read_entries(
         let at = Path::new(&label);
         let problem = problem::parse_str(at, &source).and_then(|file| {
             let problem = problem::validate::validate_in::<f64>(&file, path.parent())
-                .map_err(|e| e.at(at))?;
+                .map_err(|e| problem::written::as_written(e, &source).at(at))?;
             Ok((file, problem))
         });
         let (file, problem) = match problem {
