@@ -282,7 +282,7 @@ pub(crate) fn top_level(text: &str) -> Option<(JsonKind, usize, usize)> {
 /// The field where the parser stopped, as `lights[1].falloff`; empty at the top level. (The
 /// path's own Display writes "." for the top level and "?" for a position it does not know,
 /// and a field may itself be named "a.?".)
-fn field_path(path: &serde_path_to_error::Path) -> String {
+pub(crate) fn field_path(path: &serde_path_to_error::Path) -> String {
     use serde_path_to_error::Segment;
     let mut out = String::new();
     for segment in path {

@@ -1852,6 +1852,82 @@ fn a_sphere_too_small_for_its_coordinates_gets_the_fix_of_the_precision_in_force
     );
     drop(f32);
 }
+/// A course policy's field of the wrong type is named by its path, as a problem file's is:
+/// `--policy p.json: strict: invalid type: …`, where the error said only "invalid type: …
+/// at line 1 column 12", and `{"duplicates": 3}` only "expected value at line 1 column 16".
+/// The same through `check --policy`, `grade` and `policy` (the file beside the exercises), in
+/// both languages.
+#[test]
+fn a_course_policy_field_of_the_wrong_type_is_named_by_its_path() {
+    let dir = TempDir::new().expect("a temporary folder");
+    let folder = dir.path().join("ex");
+    fs::create_dir(&folder).expect("created");
+    let problem = folder.join("4.1.json");
+    fs::write(&problem, pretty(&point_problem())).expect("written");
+    let given = dir.path().join("policy.json");
+    for (text, says) in [
+        (
+            r#"{"strict": 1}"#,
+            "strict: invalid type: integer `1`, expected a boolean at line 1 column 12",
+        ),
+        (
+            r#"{"reading_credit": true}"#,
+            "reading_credit: invalid type: boolean `true`, expected f64",
+        ),
+        (
+            r#"{"tolerance": {"1": 0.01, "255": "one"}}"#,
+            "tolerance.255: invalid type: string \"one\", expected f64",
+        ),
+        (
+            r#"{"points": {"4.1": "two"}}"#,
+            "points.4.1: invalid type: string \"two\", expected f64",
+        ),
+        (
+            r#"{"no_hit": ["none", 3]}"#,
+            "no_hit[1]: invalid type: integer `3`, expected a string",
+        ),
+        (
+            r#"{"duplicates": 3}"#,
+            "duplicates: expected value at line 1 column 16",
+        ),
+    ] {
+        fs::write(&given, text).expect("written");
+        let run = phong(&[
+            "check",
+            utf8(&problem),
+            "--answer",
+            "0 0 0",
+            "--policy",
+            utf8(&given),
+        ]);
+        assert_eq!(run.code, Some(BAD_INPUT), "{text}: {}", run.stderr);
+        let named = format!("--policy {}: {says}", given.display());
+        assert!(run.stderr.contains(&named), "{text}: {}", run.stderr);
+    }
+    // The file beside the exercises, through grade and policy; in Portuguese too.
+    let beside = folder.join("course-policy.json");
+    fs::write(&beside, r#"{"strict": 1}"#).expect("written");
+    let subs = dir.path().join("subs.csv");
+    fs::write(&subs, "ana,4.1,0 0 0\n").expect("written");
+    for (args, lang, says) in [
+        (
+            vec!["grade", utf8(&subs), "--exercises", utf8(&folder)],
+            "en",
+            "strict: invalid type: integer `1`, expected a boolean",
+        ),
+        (
+            vec!["policy", utf8(&folder)],
+            "pt",
+            "strict: tipo inválido: inteiro `1`, esperado um booleano na linha 1, coluna 12",
+        ),
+    ] {
+        let run = phong(&[&args[..], &["--lang", lang]].concat());
+        assert_eq!(run.code, Some(BAD_INPUT), "{args:?}: {}", run.stderr);
+        let named = format!("{}: {says}", beside.display());
+        assert!(run.stderr.contains(&named), "{args:?}: {}", run.stderr);
+    }
+}
+
 /// A course policy that is not a JSON object (an array, a number, a string, null, a boolean) is
 /// said to be one, naming the file, in both languages: never by the name of a Rust type of
 /// phong's own ("expected struct PolicyFile with 9 elements"). The same for its "tolerance".
