@@ -71,6 +71,7 @@ walked! {
     faults crate::problem::faults::ColourFault;
     faults crate::problem::faults::NumberFault;
     sentences crate::problem::faults::DirectionOf;
+    sentences crate::problem::faults::PointOf;
     sentences crate::cli::parse::Whole;
     sentences crate::cli::parse::BadValue;
     faults crate::cli::faults::CliFault;

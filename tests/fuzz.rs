@@ -2360,18 +2360,57 @@ fn a_rejected_file_leaves_no_output_file() {
     binary_rejects(&ws).expect("rejected cleanly");
 }
 
+/// `text` with its camera's eye (and look-at point) at the extreme coordinates `eye`
+/// (`look_at`), which validation now refuses (beyond `±1e100`, where the intersection tests
+/// could overflow: `tests/integration/bad_input.rs`): the file is refused naming the eye, and the
+/// problem loaded with the camera of `text` is given them directly, so that the tracer's own
+/// robustness at the ends of f64 is still tested.
+fn with_far_camera(
+    ws: &Workspace,
+    text: &str,
+    eye: [f64; 3],
+    look_at: Option<[f64; 3]>,
+) -> problem::Problem<f64> {
+    use phong::core::V3;
+    fs::write(&ws.case, text).expect("written");
+    let (_, mut problem) = problem::load::<f64>(&ws.case).expect("a valid scene");
+    let mut camera = problem.camera.expect("a camera");
+    camera.eye = V3::<f64>::new(eye[0], eye[1], eye[2]);
+    if let Some(l) = look_at {
+        camera.look_at = V3::<f64>::new(l[0], l[1], l[2]);
+    }
+    problem.camera = Some(camera);
+    let mut far: Value = serde_json::from_str(text).expect("JSON");
+    far["camera"]["eye"] = serde_json::json!(eye);
+    if let Some(l) = look_at {
+        far["camera"]["look_at"] = serde_json::json!(l);
+    }
+    fs::write(&ws.case, far.to_string()).expect("written");
+    match problem::load::<f64>(&ws.case) {
+        Err(e @ ProblemError::Invalid { .. }) => {
+            assert!(
+                e.field().is_some_and(|f| f.starts_with("camera.")),
+                "{eye:?}: {e}"
+            );
+            assert!(e.to_string().contains("within ±1e100"), "{e}");
+        }
+        other => panic!("the eye at {eye:?} was not refused: {other:?}"),
+    }
+    problem
+}
+
 #[test]
 fn a_camera_whose_eye_and_look_at_are_near_opposite_ends_of_f64_renders() {
     // look_at − eye overflowed in the tracer's camera (validation computed it robustly), and
-    // `phong render` panicked with "validated camera".
+    // `phong render` panicked with "validated camera". Such a camera is now refused by
+    // validation; the tracer is still given it directly.
     let ws = Workspace::new();
     let text = r#"{"lights": [{"type": "ambient", "color": [0.3, 0.3, 0.3]}],
         "materials": {"m": {"ambient": [0.5, 0.5, 0.5]}},
         "surfaces": [{"type": "sphere", "center": [0, 0, 0], "radius": 1, "material": "m"}],
-        "camera": {"eye": [-1e308, 0, 0], "look_at": [1e308, 0, 0], "fov": 45, "width": 8,
+        "camera": {"eye": [-1, 0, 0], "look_at": [1, 0, 0], "fov": 45, "width": 8,
                    "height": 6}}"#;
-    fs::write(&ws.case, text).expect("written");
-    let (_, problem) = problem::load::<f64>(&ws.case).expect("a valid scene");
+    let problem = with_far_camera(&ws, text, [-1e308, 0.0, 0.0], Some([1e308, 0.0, 0.0]));
     let camera = problem.camera.expect("a camera");
     // Looking along +x from the far left, the sphere at the centre is in front of the eye.
     let rays = tracer::CameraRays::new(&camera);
@@ -2444,17 +2483,12 @@ fn a_direction_whose_length_overflows_is_refused_not_reported_as_infinite() {
 fn a_reflection_from_a_point_seen_from_1e308_away_leaves_from_a_finite_origin() {
     // The eye at y = 1e308 above the reflective floor: the floor's error bound summed
     // |O| + |Q| + |tD| = 2e308 before scaling it by γ₇, overflowed, and the reflection ray left
-    // from (NaN, inf, NaN).
+    // from (NaN, inf, NaN). Such an eye is now refused by validation; the tracer is still
+    // given it directly.
     let ws = Workspace::new();
-    let classic = &bases()
-        .iter()
-        .find(|b| b.name == "scenes/pov-materials.json")
-        .expect("bundled")
-        .text;
-    let text = classic.replace("\"eye\": [0, 2, 7]", "\"eye\": [0, 1e308, 7]");
-    assert_ne!(&text, classic);
-    fs::write(&ws.case, text).expect("written");
-    let (_, problem) = problem::load::<f64>(&ws.case).expect("a valid scene");
+    let text = bundled("scenes/pov-materials.json");
+    assert!(text.contains("\"eye\": [0, 2, 7]"), "the eye moved");
+    let problem = with_far_camera(&ws, text, [0.0, 1e308, 7.0], None);
     let camera = problem.camera.expect("a camera");
     let scene = tracer::Scene::new(&problem);
     let e = tracer::explain_pixel(&problem, &camera, &scene, 160, 120).expect("explained");
@@ -2558,13 +2592,17 @@ fn a_floor_met_beyond_the_range_of_f64_is_not_met() {
     // the floor and meets it at a finite t where O + tD is beyond f64 (x = −inf); the explained
     // pixel's JSON printed that hit point (`"point": [null, 0.0, 6.3e307]`). A meeting point
     // that cannot be represented is no meeting point (docs/conventions.md): the ray misses.
+    // Such an eye is now refused by validation; the tracer is still given it directly.
     let ws = Workspace::new();
-    let text = bundled("scenes/classic.json")
-        .replace("\"fov\": 40", "\"fov\": 179.9999999")
-        .replace("\"eye\": [0, 2.5, 8]", "\"eye\": [1e308, 1e308, 1e308]");
-    assert_eq!(text.matches("1e308").count(), 3, "the eye was replaced");
+    let text = bundled("scenes/classic.json").replace("\"fov\": 40", "\"fov\": 179.9999999");
     assert!(text.contains("179.9999999"), "the fov was replaced");
-    let (problem, camera, scene) = tiny_scene(&ws, &text);
+    let (mut problem, _, _) = tiny_scene(&ws, &text);
+    let mut camera = with_far_camera(&ws, &text, [1e308; 3], None)
+        .camera
+        .expect("a camera");
+    (camera.width, camera.height) = (8, 6);
+    problem.camera = Some(camera);
+    let scene = tracer::Scene::new(&problem);
     for (x, y) in [(4, 3), (0, 0), (7, 5), (0, 5), (7, 0)] {
         let e = tracer::explain_pixel(&problem, &camera, &scene, x, y).expect("explained");
         let doc = reports::pixel::document("classic", &problem, &e);

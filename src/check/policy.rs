@@ -218,9 +218,20 @@ impl Policy {
         if let Some((kind, _, _)) = crate::problem::top_level(text) {
             return Err(PolicyError::NotAnObject { kind });
         }
-        let file: PolicyFile = serde_json::from_str(text).map_err(|e| PolicyError::NotAPolicy {
-            error: crate::problem::JsonError::of(&e),
-        })?;
+        // Read with the field path tracked, so that an error names the field where the parser
+        // stopped (`strict: invalid type: …`), as a problem file's does.
+        let mut de = serde_json::Deserializer::from_str(text);
+        let file: PolicyFile = serde_path_to_error::deserialize(&mut de)
+            .map_err(|e| (crate::problem::field_path(e.path()), e.into_inner()))
+            .and_then(|f| de.end().map(|()| f).map_err(|e| (String::new(), e)))
+            .map_err(|(field, e)| PolicyError::NotAPolicy {
+                at: if field.is_empty() {
+                    field
+                } else {
+                    format!("{field}: ")
+                },
+                error: crate::problem::JsonError::of(&e),
+            })?;
         let mut policy = Policy::default();
         for (name, p) in file.points {
             let p = points_of(Some(&name), p)?;
@@ -413,14 +424,16 @@ crate::messages! {
              {{\"tolerance\": {{\"1\": 0.005, \"255\": 1}}, \"reading_credit\": 0.5, \
              \"points\": {{\"4.1\": 1}}}} (todos os campos opcionais; `phong policy` imprime \
              uma)";
-        /// A text that is not a policy's JSON (`error`: the JSON parser's words).
-        NotAPolicy { error: crate::problem::JsonError } =>
-            "{error} (a course policy is an object such as {{\"tolerance\": {{\"1\": 0.005, \
-             \"255\": 1}}, \"reading_credit\": 0.5, \"points\": {{\"4.1\": 1}}}}, every field \
-             optional; `phong policy` prints one)",
-            "{error} (uma política do curso é um objeto como {{\"tolerance\": {{\"1\": 0.005, \
-             \"255\": 1}}, \"reading_credit\": 0.5, \"points\": {{\"4.1\": 1}}}}, todos os \
-             campos opcionais; `phong policy` imprime uma)";
+        /// A text that is not a policy's JSON (`error`: the JSON parser's words), at the field
+        /// where the parser stopped (`at`: `strict: `, `tolerance.1: `, with its colon; empty at
+        /// the top level).
+        NotAPolicy { at: String, error: crate::problem::JsonError } =>
+            "{at}{error} (a course policy is an object such as {{\"tolerance\": {{\"1\": \
+             0.005, \"255\": 1}}, \"reading_credit\": 0.5, \"points\": {{\"4.1\": 1}}}}, \
+             every field optional; `phong policy` prints one)",
+            "{at}{error} (uma política do curso é um objeto como {{\"tolerance\": {{\"1\": \
+             0.005, \"255\": 1}}, \"reading_credit\": 0.5, \"points\": {{\"4.1\": 1}}}}, \
+             todos os campos opcionais; `phong policy` imprime uma)";
         /// A policy file that cannot be read.
         Unreadable { error: crate::text::IoCause } =>
             "cannot read the course policy: {error}",

@@ -30,6 +30,46 @@ pub use triangle::{SmoothNormal, Triangle};
 
 use crate::core::{Real, Vector, V3};
 
+/// The largest magnitude B a coordinate of a point the intersection tests take may have in
+/// precision `R`, and a sphere's radius: 1e100 in f64, 1e12 in f32. Validation holds to it
+/// every point a ray starts from or is tested against, in a problem file and in an OBJ mesh: a
+/// ray problem's origin, the camera's eye and look-at point, a sphere's centre and radius, a
+/// plane's point, a triangle's corners. Past it a product in a test can overflow to infinity
+/// (or NaN) and a ray miss a surface without a word. Each test's need, with every coordinate
+/// (and r) within ±B, so that a difference of two points is within ±2B per coordinate and
+/// ‖O − X‖ ≤ 2√3·B:
+///
+/// - a triangle ([`Triangle`], watertight): it multiplies up to three coordinates taken
+///   relative to the ray's origin: the sheared coordinates are within ±4B, the edge functions
+///   within ±32B² and the scaled distance t·det within ±333B³ (the direction's largest
+///   component is at least 1/√3). Finite while 333B³ ≤ MAX: B ≤ (MAX/333)^(1/3), 8.1e101 in
+///   f64 and 1.0e12 in f32 (a triangle at ±1e300 was missed by a ray through its middle; at
+///   ±1e308 its edges overflowed and it was taken for one whose corners lie on one line).
+/// - a sphere ([`Sphere::intersect_line`], and the wide engine's `soa::sphere_hit_t`): with
+///   f = O − C (‖f‖ ≤ 2√3·B) and q = f − (D·f)D, the part of f across the ray (‖q‖ ≤ ‖f‖), the
+///   largest product is the discriminant (r − ‖q‖)(r + ‖q‖), or r² − ‖q‖² and f·f where the
+///   squares are in range, each at most (r + ‖f‖)² ≤ (1 + 2√3)²B² ≈ 20B²; q = −(D·f ± √disc)
+///   is then at most 8B. Finite while 20B² ≤ MAX: B ≤ √(MAX/20), 3.0e153 in f64 and 4.1e18
+///   in f32 (a sphere of radius 1e199 at 1e200 was missed by the ray through its centre: the
+///   discriminant was infinite).
+/// - a plane ([`Plane`]): N·(Q − O) over N·D multiplies no two coordinates (and halves Q and
+///   O where Q − O overflows), but its hit is the origin of the rays spawned from it, which the
+///   other tests take within the bound (a hit far along a ray that grazes the plane may still
+///   lie beyond it: the bound is on what the file gives).
+/// - the camera: look_at − eye, within ±2B.
+///
+/// The triangle's bound is the tightest, and it is the one bound for all, rounded down to a
+/// power of ten: one rule to state ("coordinates within ±1e100"), which keeps every test
+/// finite. It bounds overflow, not resolution: a sphere of radius 1 at 1e20 is within it, and
+/// still too small for f64 to resolve its normal there (the solver says so).
+pub(crate) fn max_coordinate<R: Real>() -> f64 {
+    if R::EPSILON.to_f64() > f64::EPSILON {
+        1e12
+    } else {
+        1e100
+    }
+}
+
 /// A surface of a ray problem or scene.
 #[derive(Clone, Debug, PartialEq)]
 pub enum Shape<R: Real> {

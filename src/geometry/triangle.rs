@@ -16,23 +16,6 @@ use crate::core::rounding::gamma;
 use crate::core::vector::normalize;
 use crate::core::{Real, Vector, V3};
 
-/// The largest magnitude a coordinate of a triangle's corner may have in precision `R`: 1e100 in
-/// f64, 1e12 in f32 (what validation holds a triangle's corners to, in a problem file and in
-/// an OBJ mesh). The watertight test multiplies up to three coordinates taken relative to the
-/// ray's origin: with the corners and the origin within ±B, the sheared coordinates are within
-/// ±4B, the edge functions within ±32B² and the scaled distance t·det within ±333B³ (the
-/// direction's largest component is at least 1/√3). Past (MAX/333)^(1/3), 8.1e101 in f64 and
-/// 1.0e12 in f32, a product can overflow and the ray miss the triangle without a word (a
-/// triangle at ±1e300 was missed by a ray through its middle; at ±1e308 its edges overflowed
-/// and it was taken for one whose corners lie on one line).
-pub(crate) fn max_coordinate<R: Real>() -> f64 {
-    if R::EPSILON.to_f64() > f64::EPSILON {
-        1e12
-    } else {
-        1e100
-    }
-}
-
 /// The triangle with corners p₀, p₁, p₂.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Triangle<R: Real> {
@@ -589,7 +572,7 @@ mod tests {
     }
 
     fn largest_coordinates<R: Real>() {
-        let b = max_coordinate::<R>();
+        let b = crate::geometry::max_coordinate::<R>();
         let want = b * (1.5f64 * 1.5 + 1.5 * 1.5 + 4.0).sqrt();
         let t = from_corner_to_corner::<R>(b).expect("a hit at the bound");
         assert!(close(t, want, 16.0), "{} at {b:e}: t = {t}", R::NAME);

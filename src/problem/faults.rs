@@ -9,7 +9,7 @@ use std::path::PathBuf;
 
 use super::error::Invalid;
 use super::format::{LightType, SurfaceType};
-use crate::text::{Lang, Message, Num};
+use crate::text::{Lang, Message, Num, Said};
 use crate::{faults, messages};
 
 faults! {
@@ -299,6 +299,25 @@ faults! {
             "{radius} é pequeno demais para {precision}: é arredondado para 0";
             fix "use --precision f64, or scale the problem",
                 "use --precision f64, ou mude a escala do problema";
+        /// A radius beyond what the ray–sphere test can square in f64
+        /// (`geometry::max_coordinate`).
+        RadiusTooLarge { radius: String, max: Num, precision: &'static str } =>
+            "{radius} is too large for a sphere's radius in {precision}: the ray–sphere test \
+             squares the radius plus the distance from the ray's origin, which would overflow",
+            "{radius} é grande demais para o raio de uma esfera em {precision}: o teste de \
+             interseção com a esfera eleva ao quadrado o raio somado à distância da origem do \
+             raio, o que estouraria";
+            fix "give a radius of at most {max} (scale the scene down)",
+                "dê um raio de até {max} (reduza a escala da cena)";
+        /// The same in f32, where f64 is a way out.
+        RadiusTooLargeF32 { radius: String, max: Num } =>
+            "{radius} is too large for a sphere's radius in f32: the ray–sphere test squares \
+             the radius plus the distance from the ray's origin, which would overflow",
+            "{radius} é grande demais para o raio de uma esfera em f32: o teste de interseção \
+             com a esfera eleva ao quadrado o raio somado à distância da origem do raio, o que \
+             estouraria";
+            fix "give a radius of at most {max} (scale the scene down), or use --precision f64",
+                "dê um raio de até {max} (reduza a escala da cena), ou use --precision f64";
         /// A radius ≤ 0.
         NotARadius { radius: String } =>
             "{radius} is not a radius",
@@ -313,7 +332,7 @@ faults! {
             fix "give three corners that are not on one line",
                 "dê três vértices que não estejam numa reta";
         /// A triangle's coordinate beyond what the ray–triangle test can multiply in f64
-        /// (`geometry::triangle::max_coordinate`).
+        /// (`geometry::max_coordinate`).
         CornerTooLarge { value: String, max: Num, precision: &'static str } =>
             "{value} is too large for a triangle's corner in {precision}: the ray–triangle test \
              multiplies up to three coordinates, which would overflow",
@@ -465,7 +484,8 @@ faults! {
 }
 
 faults! {
-    /// A number that is not finite in the precision, or a direction that is no direction.
+    /// A number that is not finite in the precision, a direction that is no direction, or a
+    /// coordinate beyond what the intersection tests can multiply.
     pub enum NumberFault {
         /// Not finite in f64 (or beyond f64 in any precision).
         NotFinite { value: String, precision: &'static str } =>
@@ -497,6 +517,51 @@ faults! {
             "{vector} is the zero vector (in {precision}), which has no direction",
             "{vector} é o vetor nulo (em {precision}), que não tem direção";
             fix "give a non-zero vector", "dê um vetor não nulo";
+        /// A number the file writes with a digit other than 0 that is below the smallest f64
+        /// above 0, so that serde_json read it as 0 (`1e-330`): what the error its 0 gave says
+        /// (`what`, `fix`), after why (`problem::written`).
+        ReadAsZero { written: String, what: Said, fix: Said } =>
+            "{written} is too small to represent (the smallest number above 0 is about \
+             4.9e-324), so it is read as 0: {what}",
+            "{written} é pequeno demais para ser representado (o menor número acima de 0 é \
+             cerca de 4.9e-324), e é lido como 0: {what}";
+            fix "{fix}", "{fix}";
+        /// A coordinate of a point the intersection tests take beyond what they can multiply
+        /// in f64 (`geometry::max_coordinate`).
+        CoordinateTooLarge { value: String, of: PointOf, max: Num, precision: &'static str } =>
+            "{value} is too large for {of} in {precision}: the ray–surface tests multiply \
+             coordinates taken relative to the ray's origin, which would overflow",
+            "{value} é grande demais para {of} em {precision}: os testes de interseção \
+             multiplicam coordenadas tomadas em relação à origem do raio, o que estouraria";
+            fix "give coordinates within ±{max} (scale the scene down)",
+                "dê coordenadas dentro de ±{max} (reduza a escala da cena)";
+        /// The same in f32, where f64 is a way out.
+        CoordinateTooLargeF32 { value: String, of: PointOf, max: Num } =>
+            "{value} is too large for {of} in f32: the ray–surface tests multiply coordinates \
+             taken relative to the ray's origin, which would overflow",
+            "{value} é grande demais para {of} em f32: os testes de interseção multiplicam \
+             coordenadas tomadas em relação à origem do raio, o que estouraria";
+            fix "give coordinates within ±{max} (scale the scene down), or use --precision f64",
+                "dê coordenadas dentro de ±{max} (reduza a escala da cena), ou use --precision \
+                 f64";
+    }
+}
+
+messages! {
+    /// A point the intersection tests take the coordinates of, as a message names it.
+    #[derive(Default, Copy)]
+    pub enum PointOf {
+        /// O of a ray problem's ray.
+        #[default]
+        RayOrigin => "the ray's origin", "a origem do raio";
+        /// The camera's eye E.
+        Eye => "the camera's eye", "o olho da câmera";
+        /// The point the camera looks at.
+        LookAt => "the point the camera looks at", "o ponto para onde a câmera olha";
+        /// A sphere's centre C.
+        SphereCentre => "a sphere's centre", "o centro de uma esfera";
+        /// A plane's point Q.
+        PlanePoint => "a plane's point", "o ponto de um plano";
     }
 }
 

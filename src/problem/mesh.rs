@@ -310,7 +310,7 @@ pub fn load_obj<R: Real>(path: &Path) -> Result<Vec<Triangle<R>>, MeshError> {
                 }));
             }
             // Within the bound the ray–triangle test can multiply (see `max_coordinate`).
-            let max = crate::geometry::triangle::max_coordinate::<R>();
+            let max = crate::geometry::max_coordinate::<R>();
             if xyz.iter().any(|x| x.abs() > max) {
                 return Err(MeshError::of(MeshFault::CornerTooLarge {
                     index: i as usize + 1,

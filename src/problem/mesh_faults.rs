@@ -190,7 +190,7 @@ faults! {
             "o vértice {index} não é finito em {precision}";
             fix "give finite coordinates{or_f64}", "dê coordenadas finitas{or_f64}";
         /// A corner beyond what the ray–triangle test can multiply in the precision
-        /// (`geometry::triangle::max_coordinate`).
+        /// (`geometry::max_coordinate`).
         CornerTooLarge { index: usize, precision: String, max: Num, or_f64: OrF64 } =>
             "vertex {index} is too large for a triangle in {precision}: the ray–triangle test \
              multiplies up to three coordinates, which would overflow",

@@ -17,6 +17,7 @@ pub(crate) mod syntax;
 pub use syntax::JsonError;
 pub mod validate;
 pub(crate) mod warnings;
+pub(crate) mod written;
 
 use std::path::{Path, PathBuf};
 
@@ -281,7 +282,7 @@ pub(crate) fn top_level(text: &str) -> Option<(JsonKind, usize, usize)> {
 /// The field where the parser stopped, as `lights[1].falloff`; empty at the top level. (The
 /// path's own Display writes "." for the top level and "?" for a position it does not know,
 /// and a field may itself be named "a.?".)
-fn field_path(path: &serde_path_to_error::Path) -> String {
+pub(crate) fn field_path(path: &serde_path_to_error::Path) -> String {
     use serde_path_to_error::Segment;
     let mut out = String::new();
     for segment in path {
@@ -634,22 +635,57 @@ impl<'a> Source<'a> {
 
     /// Reads, parses and validates the problem in precision `R`.
     pub fn load<R: Real>(&self) -> Result<(ProblemFile, Problem<R>), ProblemError> {
+        // Standard input is read once: its text is kept for an error's numbers as the file
+        // writes them ([`Source::validate_text`]); a file is read again for them, only then.
+        if matches!(*self, Source::File(p) if p.as_os_str() == "-") {
+            let text = self.text()?;
+            let file = self.parse_text(&text)?;
+            let problem = self.validate_text::<R>(&file, &text)?;
+            return Ok((file, problem));
+        }
         let file = self.parse()?;
         let problem = self.validate::<R>(&file)?;
         Ok((file, problem))
     }
 
     /// Validates the parsed problem in precision `R`: a file's meshes are read from beside it;
-    /// text that names a mesh is refused.
+    /// text that names a mesh is refused. An error about a number the file writes but f64
+    /// reads as 0 is said of what the file writes (`problem::written`): the text is the
+    /// source's own, or the file read again (only then); standard input, read once, cannot be
+    /// read again: use [`Source::validate_text`] with the text read.
     pub fn validate<R: Real>(&self, file: &ProblemFile) -> Result<Problem<R>, ProblemError> {
-        let name = self.name();
+        self.validated::<R>(file).map_err(|e| {
+            let e = match *self {
+                Source::Text { text, .. } => written::as_written(e, text),
+                Source::File(path) if path.as_os_str() != "-" => match read_text(path) {
+                    Ok(text) => written::as_written(e, &text),
+                    Err(_) => e,
+                },
+                Source::File(_) => e,
+            };
+            e.at(self.name())
+        })
+    }
+
+    /// [`Source::validate`] of a problem parsed from `text` ([`Source::text`]), which an error
+    /// is said of.
+    pub fn validate_text<R: Real>(
+        &self,
+        file: &ProblemFile,
+        text: &str,
+    ) -> Result<Problem<R>, ProblemError> {
+        self.validated::<R>(file)
+            .map_err(|e| written::as_written(e, text).at(self.name()))
+    }
+
+    /// The problem validated, or validation's error as it is.
+    fn validated<R: Real>(&self, file: &ProblemFile) -> Result<Problem<R>, Invalid> {
         match *self {
             Source::File(path) => validate::validate_in::<R>(file, path.parent()),
             Source::Text { .. } => {
                 no_mesh(file).and_then(|()| validate::validate_in::<R>(file, None))
             }
         }
-        .map_err(|e| e.at(name))
     }
 }
 
@@ -695,20 +731,24 @@ pub(crate) struct SceneFile<R: Real> {
 }
 
 /// Reads a scene: a problem file with a camera and surfaces (what the tracer needs), and the
-/// mesh files it names.
-pub(crate) fn load_scene<R: Real>(path: &Path) -> Result<SceneFile<R>, ProblemError> {
-    load_scene_for::<R>(path, validate::Work::Image)
-}
-
-/// [`load_scene`], for `work`: with [`validate::Work::Pixel`] (one pixel explained) the
-/// image's own bounds (its primary rays, one sample's tree) are left to the pixel's.
+/// mesh files it names, for `work`: with [`validate::Work::Image`] held to the image's bounds
+/// with the file's own settings; with [`validate::Work::Pixel`] (one pixel explained) the
+/// image's own bounds (its primary rays, one sample's tree) are left to the pixel's; with
+/// [`validate::Work::Rendered`] to the command, which sets its own over the file's.
 pub(crate) fn load_scene_for<R: Real>(
     path: &Path,
     work: validate::Work,
 ) -> Result<SceneFile<R>, ProblemError> {
     let file = parse_file(path)?;
-    let problem =
-        validate::validate_for::<R>(&file, path.parent(), work).map_err(|e| e.at(path))?;
+    let problem = validate::validate_for::<R>(&file, path.parent(), work).map_err(|e| {
+        // A number the file writes but f64 reads as 0, said as written: the file is read
+        // again, only on this path ([`written::as_written`]).
+        match read_text(path) {
+            Ok(text) => written::as_written(e, &text),
+            Err(_) => e,
+        }
+        .at(path)
+    })?;
     let meshes = mesh_files(&file, path);
     let Some(camera) = problem.camera else {
         return Err(Invalid::of("camera", SourceFault::NoCamera).at(path));

@@ -8,7 +8,8 @@ use std::sync::Arc;
 use super::error::Invalid;
 use super::faults::{
     Bytes, CameraFault, ColourFault, DirectionOf, Kind, KindFault, LightFault, LightLabel,
-    MaterialFault, NumberFault, Purpose, RayCount, SettingFault, SurfaceFault, TargetFault,
+    MaterialFault, NumberFault, PointOf, Purpose, RayCount, SettingFault, SurfaceFault,
+    TargetFault,
 };
 use super::field::Field;
 use super::format::{
@@ -54,10 +55,12 @@ pub(crate) enum Work {
     /// [`check_explanation`] (its samples' trees within [`MAX_EXPLAINED_RAYS`], far below a
     /// tree's bound), with the settings in force.
     Pixel,
-    /// The whole image rendered with the command line's settings over the file's
-    /// (`phong render`): the caller holds the image to both bounds with the settings in force
-    /// ([`check_work`], [`check_tree`]), so the file's own settings (its 8 samples, where
-    /// `--samples 1` is given) do not refuse it first.
+    /// The whole image rendered with the command's settings over the file's (`phong render`'s
+    /// flags; `phong tradeoff`'s sweep, which sets the level, weight and samples of every
+    /// render, and `--size`): the caller holds the image to both bounds with the settings in
+    /// force ([`check_work`], [`check_tree`]), so the file's own settings (its 8 samples,
+    /// where `--samples 1` is given; its maximum level 60, which a sweep never traces) do not
+    /// refuse it first.
     Rendered,
 }
 
@@ -159,7 +162,7 @@ pub(crate) fn validate_for<R: Real>(
             }
         }
         (None, Some(ray)) => {
-            let origin = vector::<R>(ray.origin, Field::Name("ray.origin"))?;
+            let origin = position::<R>(ray.origin, Field::Name("ray.origin"), PointOf::RayOrigin)?;
             let dir = direction::<R>(
                 ray.direction,
                 Field::Name("ray.direction"),
@@ -220,8 +223,8 @@ pub(crate) fn validate_for<R: Real>(
 /// The camera: E ≠ the look-at point, `up` not along the line of sight, 0 < fov < 180, and an
 /// image size the tracer accepts.
 fn camera<R: Real>(c: &CameraSpec) -> Result<Camera<R>, Invalid> {
-    let eye = vector::<R>(c.eye, Field::Name("camera.eye"))?;
-    let look_at = vector::<R>(c.look_at, Field::Name("camera.look_at"))?;
+    let eye = position::<R>(c.eye, Field::Name("camera.eye"), PointOf::Eye)?;
+    let look_at = position::<R>(c.look_at, Field::Name("camera.look_at"), PointOf::LookAt)?;
     let up = vector::<R>(c.up.unwrap_or([0.0, 1.0, 0.0]), Field::Name("camera.up"))?;
     let Some(forward) = between::<R>(eye, look_at) else {
         return Err(Invalid::of("camera.look_at", CameraFault::LooksAtEye));
@@ -792,9 +795,10 @@ fn surface<R: Real>(
             let n = required(s.normal.as_deref().copied(), base, "normal", what)?;
             let n = direction::<R>(n, f("normal"), DirectionOf::PlaneNormal)?;
             let plane = Plane {
-                point: vector::<R>(
+                point: position::<R>(
                     required(s.point.as_deref().copied(), base, "point", what)?,
                     f("point"),
+                    PointOf::PlanePoint,
                 )?,
                 normal: n.unit,
             };
@@ -820,8 +824,26 @@ fn surface<R: Real>(
                     },
                 ));
             }
+            // Within the bound the ray–sphere test can square (see `max_coordinate`).
+            let max = crate::geometry::max_coordinate::<R>();
+            if radius > max {
+                let (radius, max) = (show(radius), Num(max));
+                return Err(Invalid::of(
+                    f("radius"),
+                    if R::NAME == "f32" {
+                        SurfaceFault::RadiusTooLargeF32 { radius, max }
+                    } else {
+                        SurfaceFault::RadiusTooLarge {
+                            radius,
+                            max,
+                            precision: R::NAME,
+                        }
+                    },
+                ));
+            }
+            let center = required(s.center, base, "center", what)?;
             let sphere = Sphere {
-                center: vector::<R>(required(s.center, base, "center", what)?, f("center"))?,
+                center: position::<R>(center, f("center"), PointOf::SphereCentre)?,
                 radius: r,
             };
             (Shape::Sphere(sphere), None)
@@ -832,10 +854,10 @@ fn surface<R: Real>(
             let mut p = [V3::<R>::ZERO; 3];
             // Within the bound the ray–triangle test can multiply: past it a ray could miss the
             // triangle without a word, and its edges overflow (it would read as degenerate).
-            let max = crate::geometry::triangle::max_coordinate::<R>();
             for (k, corner) in v.iter().enumerate() {
                 p[k] = vector::<R>(*corner, vertices.index(k))?;
-                if let Some(j) = corner.iter().position(|x| x.abs() > max) {
+                if let Some(j) = beyond_bound::<R>(corner) {
+                    let max = crate::geometry::max_coordinate::<R>();
                     let (value, max) = (show(corner[j]), Num(max));
                     return Err(Invalid::of(
                         vertices.index(k).index(j),
@@ -1113,6 +1135,38 @@ fn vector<R: Real>(a: Triple, field: Field<'_>) -> Result<V3<R>, Invalid> {
     let y = number::<R>(a[1], field.index(1))?;
     let z = number::<R>(a[2], field.index(2))?;
     Ok(V3::<R>::new(x, y, z))
+}
+
+/// The first coordinate of `a` beyond what the intersection tests can multiply in `R`
+/// ([`crate::geometry::max_coordinate`]), if any.
+fn beyond_bound<R: Real>(a: &Triple) -> Option<usize> {
+    let max = crate::geometry::max_coordinate::<R>();
+    a.iter().position(|x| x.abs() > max)
+}
+
+/// A point the intersection tests take the coordinates of (`of`: a ray's origin, the camera's
+/// eye, a sphere's centre, …): finite in `R` ([`vector`]), and within the bound the tests can
+/// multiply ([`crate::geometry::max_coordinate`]), past which a ray could miss a surface
+/// without a word.
+fn position<R: Real>(a: Triple, field: Field<'_>, of: PointOf) -> Result<V3<R>, Invalid> {
+    let v = vector::<R>(a, field)?;
+    if let Some(j) = beyond_bound::<R>(&a) {
+        let (value, max) = (show(a[j]), Num(crate::geometry::max_coordinate::<R>()));
+        return Err(Invalid::of(
+            field.index(j),
+            if R::NAME == "f32" {
+                NumberFault::CoordinateTooLargeF32 { value, of, max }
+            } else {
+                NumberFault::CoordinateTooLarge {
+                    value,
+                    of,
+                    max,
+                    precision: R::NAME,
+                }
+            },
+        ));
+    }
+    Ok(v)
 }
 
 fn direction<R: Real>(

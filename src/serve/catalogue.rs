@@ -72,15 +72,10 @@ impl Catalogue {
     /// Every `*.json` problem of `dir`, sorted by name; the first that cannot be read or is
     /// invalid stops the server before it starts, naming the file, the field and the fix.
     pub(crate) fn folder(dir: &Path) -> Result<Catalogue, ProblemError> {
-        let read_dir = std::fs::read_dir(dir).map_err(|source| ProblemError::Read {
+        let paths = Catalogue::files(dir).map_err(|source| ProblemError::Read {
             path: dir.to_owned(),
             source,
         })?;
-        let mut paths: Vec<PathBuf> = read_dir
-            .filter_map(|e| e.ok().map(|e| e.path()))
-            .filter(|p| crate::problem::is_exercise_file(p) && p.is_file())
-            .collect();
-        paths.sort();
         let mut exercises = Vec::with_capacity(paths.len());
         for path in paths {
             // Parsed from the file first, for its errors (size, UTF-8, syntax, with line and
@@ -112,6 +107,18 @@ impl Catalogue {
             });
         }
         Ok(Catalogue { exercises })
+    }
+
+    /// The problem files of `dir` that [`Catalogue::folder`] reads: every `*.json` but the
+    /// course policy, sorted by name. Inputs of the server, which no file it writes may
+    /// replace (`--log-answers`).
+    pub(crate) fn files(dir: &Path) -> std::io::Result<Vec<PathBuf>> {
+        let mut paths: Vec<PathBuf> = std::fs::read_dir(dir)?
+            .filter_map(|e| e.ok().map(|e| e.path()))
+            .filter(|p| crate::problem::is_exercise_file(p) && p.is_file())
+            .collect();
+        paths.sort();
+        Ok(paths)
     }
 
     /// The exercise named `id` in a URL.

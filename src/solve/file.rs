@@ -24,7 +24,7 @@ pub fn solve_source<R: Real>(
     }
     // f32: solved in f64 too, from the same text, to say what f32 cost.
     let text = source.text()?;
-    let problem = source.validate::<R>(&source.parse_text(&text)?)?;
+    let problem = source.validate_text::<R>(&source.parse_text(&text)?, &text)?;
     let mut solution = solve(&problem).map_err(|e| e.at(source.name()))?;
     super::versus::compare(&source, &text, &problem, &mut solution);
     Ok((problem, solution))

@@ -223,6 +223,17 @@ impl<F: Fault> Message for WhatOf<F> {
     }
 }
 
+/// A fault kept behind an `Arc` (an error's shared fault) says what the fault says.
+impl<F: Fault + ?Sized> Fault for std::sync::Arc<F> {
+    fn what(&self, lang: Lang) -> String {
+        (**self).what(lang)
+    }
+
+    fn fix(&self, lang: Lang) -> String {
+        (**self).fix(lang)
+    }
+}
+
 /// What would fix it, of a fault, as a sentence of its own.
 #[derive(Debug)]
 pub struct FixOf<F>(pub F);

@@ -327,6 +327,34 @@ fn cases() -> Vec<(
             ],
         ),
         (
+            "a camera too far for the intersection tests",
+            {
+                let mut s = scene(matte(), json!({}), (4, 3));
+                s["camera"]["eye"] = json!([0, 0, 1e200]);
+                s
+            },
+            render,
+            vec![
+                "camera.eye[2]: 1e200 é grande demais para o olho da câmera em f64: os testes \
+                 de interseção multiplicam coordenadas",
+                "Correção: dê coordenadas dentro de ±1e100 (reduza a escala da cena)",
+            ],
+        ),
+        (
+            "a sphere too large for the ray–sphere test",
+            {
+                let mut s = scene(matte(), json!({}), (4, 3));
+                s["surfaces"][0] = json!({ "type": "sphere", "center": [0, 0, 0],
+                    "radius": 1e200, "material": matte() });
+                s
+            },
+            render,
+            vec![
+                "surfaces[0].radius: 1e200 é grande demais para o raio de uma esfera em f64",
+                "Correção: dê um raio de até 1e100 (reduza a escala da cena)",
+            ],
+        ),
+        (
             "a field of view of 0",
             {
                 let mut s = scene(matte(), json!({}), (4, 3));
@@ -426,4 +454,34 @@ fn validations_errors_in_english_are_as_before() {
         ),
         "{stderr}"
     );
+}
+
+/// A number below the smallest f64 above 0, read as 0, is said as the file writes it, why it
+/// was read as 0 and what its 0 gave, wholly in Portuguese (a JSON value cannot hold 1e-330:
+/// the file is written as text).
+#[test]
+fn a_number_read_as_zero_is_said_as_written_in_portuguese() {
+    let dir = tempfile::tempdir().unwrap();
+    let mut s = scene(matte(), json!({}), (4, 3));
+    s["camera"]["fov"] = json!(45.5);
+    let text = s.to_string().replace("45.5", "1e-330");
+    assert!(text.contains("1e-330"), "{text}");
+    std::fs::write(dir.path().join("bad.json"), text).unwrap();
+    let out = support::phong()
+        .current_dir(dir.path())
+        .args(["render", "bad.json", "-o", "out.png", "--lang", "pt"])
+        .output()
+        .unwrap();
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{stderr}");
+    assert!(
+        stderr.contains(
+            "camera.fov: 1e-330 é pequeno demais para ser representado (o menor número acima de \
+             0 é cerca de 4.9e-324), e é lido como 0: 0 graus não é um campo de visão. \
+             Correção: dê o campo de visão vertical em graus"
+        ),
+        "{stderr}"
+    );
+    assert!(english_in(&stderr).is_empty(), "{stderr}");
+    assert!(!dir.path().join("out.png").exists());
 }

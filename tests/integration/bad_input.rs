@@ -1574,6 +1574,250 @@ fn a_triangle_too_large_for_the_precision_is_refused_naming_the_bound_that_works
         );
     }
 }
+/// A sphere of centre (0, 0, z) and radius r for the base ray problem.
+fn sphere(z: f64, r: f64) -> Value {
+    json!({ "type": "sphere", "center": [0, 0, z], "radius": r, "material": "M" })
+}
+
+/// A ray's origin, a sphere's centre and radius and a plane's point past the bound the
+/// intersection tests can multiply are refused, naming the coordinate and the bound that works,
+/// as a triangle's corner is. Before, each was taken: the ray from (0, 0, 5) straight down the
+/// axis of a sphere of radius 1e199 centred 1e200 below missed it (its discriminant
+/// (r − 0)(r + 0) = 1e398 overflowed), and a ray from 1e200 missed a triangle around the
+/// origin, each without a word ("the ray's line meets no surface").
+#[test]
+fn a_far_point_or_a_huge_sphere_is_refused_naming_the_bound_that_works() {
+    let within = "within ±1e100";
+    let cases = [
+        (
+            with(ray_problem(), "/ray/origin", json!([0, 0, 1e200])),
+            "ray.origin[2]",
+            "1e200 is too large for the ray's origin in f64",
+            within,
+        ),
+        (
+            with(ray_problem(), "/surfaces/0", sphere(-1e200, 1e199)),
+            "surfaces[0].radius",
+            "1e199 is too large for a sphere's radius in f64",
+            "a radius of at most 1e100",
+        ),
+        (
+            with(ray_problem(), "/surfaces/0", sphere(-1e200, 1.0)),
+            "surfaces[0].center[2]",
+            "-1e200 is too large for a sphere's centre in f64",
+            within,
+        ),
+        (
+            with(ray_problem(), "/surfaces/0/point", json!([0, 0, -1e200])),
+            "surfaces[0].point[2]",
+            "-1e200 is too large for a plane's point in f64",
+            within,
+        ),
+        (
+            with(
+                with(ray_problem(), "/ray/origin", json!([0, 0, 1e200])),
+                "/surfaces/0",
+                triangle(1.0),
+            ),
+            "ray.origin[2]",
+            "1e200 is too large for the ray's origin in f64",
+            within,
+        ),
+    ];
+    for (problem, field, says, bound) in &cases {
+        let bad = rejected_text(
+            &pretty(problem),
+            &["f64"],
+            Expect {
+                field: Some(field),
+                says: &[says, bound],
+            },
+        );
+        assert!(!bad.stderr.contains("--precision f64"), "{}", bad.stderr);
+    }
+    // In f32 the bound is 1e12, and f64 is a way out: the same problem solves there.
+    let problem = with(ray_problem(), "/ray/origin", json!([0, 0, 1e13]));
+    let bad = rejected_text(
+        &pretty(&problem),
+        &["f32"],
+        Expect {
+            field: Some("ray.origin[2]"),
+            says: &[
+                "too large for the ray's origin in f32",
+                "within ±1e12",
+                "--precision f64",
+            ],
+        },
+    );
+    check_solves(&pretty(&problem), "f64");
+    let pt = phong(&[
+        "solve",
+        utf8(&bad.path),
+        "--precision",
+        "f32",
+        "--lang",
+        "pt",
+    ]);
+    assert!(
+        pt.stderr
+            .contains("grande demais para a origem do raio em f32")
+            && pt.stderr.contains("dentro de ±1e12"),
+        "{}",
+        pt.stderr
+    );
+    let problem = with(ray_problem(), "/surfaces/0", sphere(-1e13, 1e13));
+    rejected_text(
+        &pretty(&problem),
+        &["f32"],
+        Expect {
+            field: Some("surfaces[0].radius"),
+            says: &["too large for a sphere's radius in f32", "at most 1e12"],
+        },
+    );
+    // At the bound the tests hold: the ray from (0, 0, B) down the axis meets the sphere of
+    // radius B centred at (0, 0, −B) at its top, the origin, at t = B.
+    for (precision, b) in [("f64", 1e100), ("f32", 1e12)] {
+        let problem = with(ray_problem(), "/ray/origin", json!([0, 0, b]));
+        let problem = with(problem, "/surfaces/0", sphere(-b, b));
+        let problem = with(problem, "/lights/1/position", json!([0, 0, b / 2.0]));
+        check_solves(&pretty(&problem), precision);
+        let dir = TempDir::new().expect("a temporary folder");
+        let path = dir.path().join("at-the-bound.json");
+        fs::write(&path, pretty(&problem)).expect("written");
+        let run = phong(&[
+            "solve",
+            utf8(&path),
+            "--precision",
+            precision,
+            "--format",
+            "json",
+        ]);
+        let doc: Value = serde_json::from_str(&run.stdout).expect("a JSON document");
+        let hit = &doc["intersection"];
+        let t = hit["t"].as_f64().unwrap_or(f64::NAN);
+        let z = hit["point"][2].as_f64().unwrap_or(f64::NAN);
+        assert!(
+            hit["hit"] == json!(true) && (t / b - 1.0).abs() < 1e-6 && z.abs() <= b * 1e-6,
+            "{precision}: {hit}"
+        );
+    }
+}
+
+/// A camera whose eye is past the bound is refused before anything is traced, naming the
+/// coordinate (and look_at as well): before, the eye at 1e200 looking at a sphere that fills
+/// the view rendered the background alone (every ray's discriminant overflowed).
+#[test]
+fn a_camera_too_far_away_is_refused_and_no_image_is_written() {
+    let dir = TempDir::new().expect("a temporary folder");
+    for (at, value, field, says) in [
+        (
+            "eye",
+            json!([0, 0, 1e200]),
+            "camera.eye[2]",
+            "1e200 is too large for the camera's eye in f64",
+        ),
+        (
+            "look_at",
+            json!([-1e101, 0, 0]),
+            "camera.look_at[0]",
+            "-1e101 is too large for the point the camera looks at in f64",
+        ),
+    ] {
+        let mut scene = json!({
+            "materials": { "M": material() },
+            "lights": [{ "type": "ambient", "color": [1, 1, 1] }],
+            "surfaces": [sphere(0.0, 1e99)],
+            "camera": { "eye": [0, 0, 1e100], "look_at": [0, 0, 0], "fov": 40,
+                        "width": 4, "height": 4 }
+        });
+        scene["camera"][at] = value;
+        let path = dir.path().join("far.json");
+        fs::write(&path, pretty(&scene)).expect("written");
+        let image = dir.path().join("far.png");
+        let run = phong(&["render", utf8(&path), "-o", utf8(&image)]);
+        assert_eq!(run.code, Some(BAD_INPUT), "{}", run.stderr);
+        assert!(
+            run.stderr.contains(&format!("far.json: {field}: {says}"))
+                && run.stderr.contains("within ±1e100"),
+            "{}",
+            run.stderr
+        );
+        assert!(!image.exists(), "an image was written");
+    }
+}
+
+/// A number below the smallest f64 above 0 (about 4.9e-324) is read as 0: an error about it
+/// said "0 is not a radius" where the file writes 1e-330. It says what the file writes, why it
+/// was read as 0, and the fix of the error its 0 gave, in both precisions and formats, for a
+/// file and for standard input; a vector that reads as the zero vector names its element.
+#[test]
+fn a_number_read_as_zero_is_quoted_as_written() {
+    let radius = with(ray_problem(), "/surfaces/0", sphere(-5.0, 1.0));
+    let text = pretty(&radius).replace("\"radius\": 1.0", "\"radius\": 1e-330");
+    assert!(text.contains("1e-330"), "{text}");
+    let bad = rejected_text(
+        &text,
+        &["f64", "f32"],
+        Expect {
+            field: Some("surfaces[0].radius"),
+            says: &[
+                "surfaces[0].radius: 1e-330 is too small to represent",
+                "so it is read as 0: 0 is not a radius",
+                "Fix: give the sphere a radius > 0",
+            ],
+        },
+    );
+    let dash = crate::support::phong()
+        .args(["solve", "-"])
+        .write_stdin(text.clone())
+        .output()
+        .expect("phong runs");
+    let stderr = String::from_utf8_lossy(&dash.stderr);
+    assert_eq!(dash.status.code(), Some(BAD_INPUT), "{stderr}");
+    assert!(
+        stderr.contains("-: surfaces[0].radius: 1e-330 is too small to represent"),
+        "{stderr}"
+    );
+    let pt = phong(&["solve", utf8(&bad.path), "--lang", "pt"]);
+    assert!(
+        pt.stderr.contains(
+            "surfaces[0].radius: 1e-330 é pequeno demais para ser representado (o menor número \
+             acima de 0 é cerca de 4.9e-324), e é lido como 0: 0 não é um raio. Correção: dê à \
+             esfera um raio > 0"
+        ),
+        "{}",
+        pt.stderr
+    );
+    let direction = pretty(&ray_problem()).replace(
+        "\"direction\": [\n      0,\n      0,\n      -1\n    ]",
+        "\"direction\": [0, -1e-400, 0]",
+    );
+    assert!(direction.contains("-1e-400"), "{direction}");
+    rejected_text(
+        &direction,
+        &["f64"],
+        Expect {
+            field: Some("ray.direction[1]"),
+            says: &[
+                "-1e-400 is too small to represent",
+                "the ray's direction is the zero vector",
+                "give a non-zero vector",
+            ],
+        },
+    );
+    // A number written as 0 is said as before.
+    let zero = pretty(&radius).replace("\"radius\": 1.0", "\"radius\": 0.0e-400");
+    let bad = rejected_text(
+        &zero,
+        &["f64"],
+        Expect {
+            field: Some("surfaces[0].radius"),
+            says: &["0 is not a radius"],
+        },
+    );
+    assert!(!bad.stderr.contains("too small"), "{}", bad.stderr);
+}
+
 /// A sphere whose hit point rounding cannot tell from its centre: the fix is what would help in
 /// the precision in force. In f64 (the default) there is no "--precision f64" to use; a larger
 /// radius, or the sphere and the ray nearer the origin, is what helps.
@@ -1608,6 +1852,82 @@ fn a_sphere_too_small_for_its_coordinates_gets_the_fix_of_the_precision_in_force
     );
     drop(f32);
 }
+/// A course policy's field of the wrong type is named by its path, as a problem file's is:
+/// `--policy p.json: strict: invalid type: …`, where the error said only "invalid type: …
+/// at line 1 column 12", and `{"duplicates": 3}` only "expected value at line 1 column 16".
+/// The same through `check --policy`, `grade` and `policy` (the file beside the exercises), in
+/// both languages.
+#[test]
+fn a_course_policy_field_of_the_wrong_type_is_named_by_its_path() {
+    let dir = TempDir::new().expect("a temporary folder");
+    let folder = dir.path().join("ex");
+    fs::create_dir(&folder).expect("created");
+    let problem = folder.join("4.1.json");
+    fs::write(&problem, pretty(&point_problem())).expect("written");
+    let given = dir.path().join("policy.json");
+    for (text, says) in [
+        (
+            r#"{"strict": 1}"#,
+            "strict: invalid type: integer `1`, expected a boolean at line 1 column 12",
+        ),
+        (
+            r#"{"reading_credit": true}"#,
+            "reading_credit: invalid type: boolean `true`, expected f64",
+        ),
+        (
+            r#"{"tolerance": {"1": 0.01, "255": "one"}}"#,
+            "tolerance.255: invalid type: string \"one\", expected f64",
+        ),
+        (
+            r#"{"points": {"4.1": "two"}}"#,
+            "points.4.1: invalid type: string \"two\", expected f64",
+        ),
+        (
+            r#"{"no_hit": ["none", 3]}"#,
+            "no_hit[1]: invalid type: integer `3`, expected a string",
+        ),
+        (
+            r#"{"duplicates": 3}"#,
+            "duplicates: expected value at line 1 column 16",
+        ),
+    ] {
+        fs::write(&given, text).expect("written");
+        let run = phong(&[
+            "check",
+            utf8(&problem),
+            "--answer",
+            "0 0 0",
+            "--policy",
+            utf8(&given),
+        ]);
+        assert_eq!(run.code, Some(BAD_INPUT), "{text}: {}", run.stderr);
+        let named = format!("--policy {}: {says}", given.display());
+        assert!(run.stderr.contains(&named), "{text}: {}", run.stderr);
+    }
+    // The file beside the exercises, through grade and policy; in Portuguese too.
+    let beside = folder.join("course-policy.json");
+    fs::write(&beside, r#"{"strict": 1}"#).expect("written");
+    let subs = dir.path().join("subs.csv");
+    fs::write(&subs, "ana,4.1,0 0 0\n").expect("written");
+    for (args, lang, says) in [
+        (
+            vec!["grade", utf8(&subs), "--exercises", utf8(&folder)],
+            "en",
+            "strict: invalid type: integer `1`, expected a boolean",
+        ),
+        (
+            vec!["policy", utf8(&folder)],
+            "pt",
+            "strict: tipo inválido: inteiro `1`, esperado um booleano na linha 1, coluna 12",
+        ),
+    ] {
+        let run = phong(&[&args[..], &["--lang", lang]].concat());
+        assert_eq!(run.code, Some(BAD_INPUT), "{args:?}: {}", run.stderr);
+        let named = format!("{}: {says}", beside.display());
+        assert!(run.stderr.contains(&named), "{args:?}: {}", run.stderr);
+    }
+}
+
 /// A course policy that is not a JSON object (an array, a number, a string, null, a boolean) is
 /// said to be one, naming the file, in both languages: never by the name of a Rust type of
 /// phong's own ("expected struct PolicyFile with 9 elements"). The same for its "tolerance".

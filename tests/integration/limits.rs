@@ -1030,6 +1030,40 @@ fn an_output_may_not_replace_the_course_policy_the_run_reads() {
     assert_eq!(std::fs::read_to_string(&beside).unwrap(), policy);
     assert_eq!(std::fs::read_to_string(&given).unwrap(), policy);
 }
+/// `phong serve --exercises EX --log-answers EX/4.1.json` appended each checked answer to the
+/// exercise it serves (the next start refused the file: "trailing characters"): an exercise
+/// file is an input of the server as its course policy is, refused before it listens, in
+/// English and Portuguese, the file left as it was.
+#[cfg(feature = "serve")]
+#[test]
+fn serve_may_not_log_answers_into_an_exercise_file() {
+    let dir = TempDir::new().unwrap();
+    let (ex, _) = a_class(&dir);
+    let exercise = ex.join("4.1.json");
+    let before = std::fs::read_to_string(&exercise).unwrap();
+    let serve = |log: &Path, lang: &str| {
+        let mut cmd = phong();
+        cmd.arg("serve")
+            .arg("--exercises")
+            .arg(&ex)
+            .args(["--addr", "127.0.0.1:0", "--log-answers"])
+            .arg(log)
+            .env("LANG", lang)
+            .timeout(std::time::Duration::from_secs(20));
+        cmd
+    };
+    let en = refused(
+        &mut serve(&exercise, "C"),
+        &["--log-answers", "is the input"],
+    );
+    assert!(en.contains("4.1.json"), "{en}");
+    refused(
+        &mut serve(&exercise, "pt_BR.UTF-8"),
+        &["--log-answers", "é a entrada", "4.1.json"],
+    );
+    assert_eq!(std::fs::read_to_string(&exercise).unwrap(), before);
+}
+
 /// `phong check --steps FILE -o FILE` would replace the steps it reads with its report: refused
 /// as any output naming an input, the file left as it was.
 #[test]
@@ -1090,6 +1124,57 @@ fn a_renders_flags_are_over_the_files_settings_before_its_bounds() {
             .args(["--max-level", "40"]),
         &["--max-level: maximum level 40"],
     );
+}
+
+/// `phong tradeoff` sets every render's maximum level, minimum weight and samples (its sweep
+/// and its reference) and may set the image's size (`--size`): the file's own render settings
+/// are never traced, so they do not hold the scene to the image's bounds, as `render`'s flags
+/// go over them. A file of maximum level 60 and minimum weight 0 over a material that reflects
+/// and transmits (2^60 − 1 rays in one sample's tree, past 2^20) was refused at load
+/// ("render.max_level: maximum level 60") though the sweep traced levels 1 to 3, and a 16384²
+/// camera at 8 samples (2^31 primary rays, past 2^30) though `--size 8x6` at 1 sample is
+/// 48 rays. Both sweep; the sweep's own settings past a bound are refused naming their flags.
+#[test]
+fn a_tradeoff_holds_the_scene_to_its_sweeps_settings_not_the_files() {
+    let dir = TempDir::new().unwrap();
+    let mut deep = small_scene();
+    deep["surfaces"][0]["material"] = json!({
+        "ambient": [0.5, 0.5, 0.5], "reflectivity": [0.5, 0.5, 0.5],
+        "transmissivity": [0.5, 0.5, 0.5], "ior": 1.5
+    });
+    deep["render"] = json!({ "max_level": 60, "min_weight": 0 });
+    let deep = write(&dir, "deep.json", &deep.to_string());
+    let mut big = huge_scene();
+    big["render"] = json!({ "samples": 8 });
+    let big = write(&dir, "big.json", &big.to_string());
+    let tradeoff = |scene: &Path, levels: &str, reference: &str| {
+        let mut cmd = phong();
+        cmd.arg("tradeoff")
+            .arg(scene)
+            .args(["--size", "8x6", "--runs", "1", "--precisions", "f64"])
+            .args(["--levels", levels, "--min-weights", "0", "--samples", "1"])
+            .args(["--reference-level", reference, "--reference-samples", "1"])
+            .args(["--format", "csv"]);
+        cmd
+    };
+    for scene in [&deep, &big] {
+        let out = tradeoff(scene, "1,2", "3").output().unwrap();
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(0), "{scene:?}: {stderr}");
+        assert!(!String::from_utf8_lossy(&out.stdout).is_empty());
+    }
+    // The sweep's own trees are held to the bound, each said of its flag: at level 40 a tree
+    // may hold 2^40 − 1 rays.
+    let err = refused(
+        &mut tradeoff(&deep, "1,40", "3"),
+        &["levels", "maximum level 40"],
+    );
+    assert!(!err.contains("render.max_level"), "{err}");
+    let err = refused(
+        &mut tradeoff(&deep, "1,2", "40"),
+        &["--reference-level", "40"],
+    );
+    assert!(!err.contains("render.max_level"), "{err}");
 }
 
 /// A render whose image the system cannot give (16384² pixels, 6 bytes each: 1.6 GB, under a

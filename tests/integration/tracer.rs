@@ -668,7 +668,8 @@ fn render_stats_speak_the_language_of_lang() {
 #[test]
 fn no_output_replaces_a_mesh_the_scene_reads() {
     // A scene's OBJ file is an input of the run as much as the scene: `-o torus.obj` would
-    // destroy it, so each command refuses it (exit 2) before writing anything.
+    // destroy it, so each command refuses it (exit 2) before writing anything. `check` and
+    // `grade` replaced it (exit 0) until they too counted it as an input.
     let dir = TempDir::new().unwrap();
     let obj = dir.path().join("torus.obj");
     fs::copy(repo("scenes/torus.obj"), &obj).unwrap();
@@ -681,7 +682,8 @@ fn no_output_replaces_a_mesh_the_scene_reads() {
     ray.as_object_mut().unwrap().remove("camera");
     ray["ray"] = json!({"origin": [0, 1, 6], "direction": [0, 0, -1]});
     let ray_path = write(&dir, "mesh-ray.json", &ray);
-    let runs: [Vec<&str>; 4] = [
+    fs::write(dir.path().join("subs.csv"), "ana,mesh-ray,none\n").unwrap();
+    let runs: [Vec<&str>; 8] = [
         vec![
             "render",
             "mesh.json",
@@ -712,6 +714,24 @@ fn no_output_replaces_a_mesh_the_scene_reads() {
             "torus.obj",
         ],
         vec!["solve", "mesh-ray.json", "-o", "torus.obj"],
+        vec![
+            "check",
+            "mesh-ray.json",
+            "--answer",
+            "none",
+            "-o",
+            "torus.obj",
+        ],
+        vec!["check", "mesh-ray.json", "--slips", "-o", "torus.obj"],
+        vec!["moodle", "mesh-ray.json", "-o", "torus.obj"],
+        vec![
+            "grade",
+            "subs.csv",
+            "--exercises",
+            ".",
+            "--summary",
+            "torus.obj",
+        ],
     ];
     assert!(path.exists() && ray_path.exists());
     for args in runs {

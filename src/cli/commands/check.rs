@@ -20,11 +20,17 @@ pub(crate) fn run(args: &CheckArgs) -> Result<Exit, CliError> {
         .collect();
     // So is the file of `--steps` (`-` is standard input, which no file names).
     let steps_file = args.steps.iter().filter(|p| p.as_os_str() != "-");
+    // And so are the meshes a ray problem names (`-o m.obj`).
+    let meshes = match args.output {
+        Some(_) => super::named_meshes(args.files.iter().map(|p| p.as_path())),
+        None => Vec::new(),
+    };
     let inputs: Vec<&std::path::Path> = args
         .files
         .iter()
         .chain(&policies)
         .chain(steps_file)
+        .chain(&meshes)
         .map(|p| p.as_path())
         .collect();
     output::distinct(&inputs, &[("--output", args.output.as_deref())])?;

@@ -38,6 +38,21 @@ pub(crate) fn run(args: &GradeArgs) -> Result<Exit, CliError> {
         })
         .unwrap_or_default();
     inputs.extend(exercise_files.iter().map(|p| p.as_path()));
+    // So are the meshes an exercise names (a ray problem's OBJ file beside it), read for their
+    // names where there is a file to write.
+    let writes = [
+        &args.output,
+        &args.summary,
+        &args.by_student,
+        &args.class_report,
+    ]
+    .iter()
+    .any(|o| o.is_some());
+    let meshes = match writes {
+        true => super::named_meshes(exercise_files.iter().map(|p| p.as_path())),
+        false => Vec::new(),
+    };
+    inputs.extend(meshes.iter().map(|p| p.as_path()));
     output::distinct(
         &inputs,
         &[

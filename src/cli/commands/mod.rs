@@ -62,6 +62,25 @@ pub(crate) fn policy_file(
     }
 }
 
+/// The mesh files (OBJ) the problem files `files` name ([`crate::problem::mesh_files`]):
+/// inputs of the run too, which no output may replace (`phong check p.json -o m.obj`). Read
+/// here only for their names, for the commands that refuse an output before they read their
+/// problems (`solve`, `check`, `moodle`, `grade`; `render`, `export-pov` and `tradeoff` have
+/// the names from the scene they load): a file that cannot be read or parsed names none (it is
+/// reported when it is read for its work), and standard input (`-`) is read once, for the
+/// work, and names none.
+pub(crate) fn named_meshes<'a>(
+    files: impl IntoIterator<Item = &'a std::path::Path>,
+) -> Vec<std::path::PathBuf> {
+    use crate::problem::{mesh_files, Source};
+    files
+        .into_iter()
+        .filter(|p| !super::output::is_dash(p))
+        .filter_map(|p| Some(mesh_files(&Source::File(p).parse().ok()?, p)))
+        .flatten()
+        .collect()
+}
+
 /// The command line's tracer settings, to put over a scene's.
 fn overrides(s: &TraceSettings) -> RenderOverrides {
     RenderOverrides {

@@ -29,18 +29,7 @@ pub(crate) fn run(args: &MoodleArgs) -> Result<Exit, CliError> {
     // No output may replace what the run reads: a problem file, the policy, a mesh a ray
     // problem names (read here only for their names; a file that cannot be read is reported
     // below).
-    let meshes: Vec<std::path::PathBuf> = args
-        .files
-        .iter()
-        .filter(|p| !output::is_dash(p))
-        .filter_map(|p| {
-            Some(problem::mesh_files(
-                &problem::Source::File(p).parse().ok()?,
-                p,
-            ))
-        })
-        .flatten()
-        .collect();
+    let meshes = super::named_meshes(args.files.iter().map(|p| p.as_path()));
     let inputs: Vec<&Path> = args
         .files
         .iter()
@@ -178,7 +167,7 @@ fn read_entries(
         let at = Path::new(&label);
         let problem = problem::parse_str(at, &source).and_then(|file| {
             let problem = problem::validate::validate_in::<f64>(&file, path.parent())
-                .map_err(|e| e.at(at))?;
+                .map_err(|e| problem::written::as_written(e, &source).at(at))?;
             Ok((file, problem))
         });
         let (file, problem) = match problem {

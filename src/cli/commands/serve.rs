@@ -19,15 +19,19 @@ pub(crate) fn run(args: &ServeArgs) -> Result<Exit, CliError> {
     };
     let policy = super::course_policy(args.policy.as_deref(), args.exercises.as_deref())?;
     // The answers are appended to --log-answers (and it is renamed when full): never the
-    // course policy the server judges by.
-    crate::cli::output::distinct(
-        &policy
-            .source
-            .iter()
-            .map(|p| p.as_path())
-            .collect::<Vec<_>>(),
-        &[("--log-answers", args.log_answers.as_deref())],
-    )?;
+    // course policy the server judges by, nor an exercise file of --exercises (a folder that
+    // cannot be read is reported when the catalogue reads it).
+    let exercises = match (&args.log_answers, &args.exercises) {
+        (Some(_), Some(dir)) => serve::catalogue::Catalogue::files(dir).unwrap_or_default(),
+        _ => Vec::new(),
+    };
+    let inputs: Vec<&std::path::Path> = policy
+        .source
+        .iter()
+        .chain(&exercises)
+        .map(|p| p.as_path())
+        .collect();
+    crate::cli::output::distinct(&inputs, &[("--log-answers", args.log_answers.as_deref())])?;
     let config = Config {
         addr: args.addr,
         policy: std::sync::Arc::new(policy),

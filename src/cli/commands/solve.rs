@@ -11,7 +11,6 @@ use crate::cli::error::{self, CliError};
 use crate::cli::exit::Exit;
 use crate::cli::faults::CliFault;
 use crate::cli::output;
-use crate::problem::Source;
 use crate::report;
 use crate::report::document::{Contents, Document, Header};
 use crate::report::explain::Explanation;
@@ -21,21 +20,9 @@ use crate::report::layout::{self, Layout};
 pub(crate) fn run(args: &SolveArgs) -> Result<Exit, CliError> {
     let inputs: Vec<&std::path::Path> = args.files.iter().map(|p| p.as_path()).collect();
     output::distinct(&inputs, &[("--output", args.output.as_deref())])?;
-    // A ray problem may name meshes, inputs too: no output may replace one. Read here only for
-    // their names (a file that cannot be read is reported when it is solved; standard input is
-    // read once, when it is solved).
+    // A ray problem may name meshes, inputs too: no output may replace one.
     let meshes: Vec<std::path::PathBuf> = match args.output {
-        Some(_) => inputs
-            .iter()
-            .filter(|p| p.as_os_str() != "-")
-            .filter_map(|p| {
-                Some(crate::problem::mesh_files(
-                    &Source::File(p).parse().ok()?,
-                    p,
-                ))
-            })
-            .flatten()
-            .collect(),
+        Some(_) => super::named_meshes(inputs.iter().copied()),
         None => Vec::new(),
     };
     let meshes: Vec<&Path> = meshes.iter().map(|p| p.as_path()).collect();

@@ -151,9 +151,11 @@ pub(crate) fn run(args: &TradeoffArgs) -> Result<Exit, CliError> {
 }
 
 /// The scene in precision `R`, at `size` instead of the camera's when given, and the mesh files
-/// it names.
+/// it names. The file's own render settings (its maximum level, minimum weight and samples) are
+/// never traced: the sweep sets its own, and [`run`] holds the image to its bounds with those
+/// (and at `size`), so the file's are not held to them here.
 fn load<R: Real>(path: &Path, size: Option<(u32, u32)>) -> Result<SceneFile<R>, ProblemError> {
-    let mut scene = problem::load_scene::<R>(path)?;
+    let mut scene = problem::load_scene_for::<R>(path, problem::validate::Work::Rendered)?;
     if let Some((w, h)) = size {
         scene.camera.width = w;
         scene.camera.height = h;

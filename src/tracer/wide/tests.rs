@@ -62,7 +62,7 @@ fn bundled_scenes_in<R: Real>() {
     for path in scenes() {
         let Ok(problem::SceneFile {
             problem, camera, ..
-        }) = problem::load_scene::<R>(&path)
+        }) = problem::load_scene_for::<R>(&path, validate::Work::Image)
         else {
             continue; // a ray or point problem, not a scene
         };
@@ -203,7 +203,7 @@ fn mesh_scene_in<R: Real>(file: &str) {
         mut problem,
         mut camera,
         ..
-    } = problem::load_scene::<R>(&path).expect(file);
+    } = problem::load_scene_for::<R>(&path, validate::Work::Image).expect(file);
     camera.width = 53;
     camera.height = 41;
     for (samples, shadows) in [(3, true), (2, false)] {
