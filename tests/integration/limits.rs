@@ -1177,6 +1177,50 @@ fn a_tradeoff_holds_the_scene_to_its_sweeps_settings_not_the_files() {
     assert!(!err.contains("render.max_level"), "{err}");
 }
 
+/// `phong export-pov`, as `phong render`: the flags' settings over the file's, then the bounds.
+/// A scene whose file says `"max_level": 60, "min_weight": 0` with a material that reflects and
+/// transmits (a tree of 2^60 rays per sample) is exported with `--max-level 3` (7 rays), where
+/// it was refused for the file's own level; without the flag it is refused naming the file's
+/// field, and with `--max-level 40` naming the flag.
+#[test]
+fn export_pov_holds_the_scene_to_the_settings_in_force() {
+    let dir = TempDir::new().unwrap();
+    let mut deep = small_scene();
+    deep["surfaces"][0]["material"] = json!({
+        "ambient": [0.5, 0.5, 0.5], "reflectivity": [0.5, 0.5, 0.5],
+        "transmissivity": [0.5, 0.5, 0.5], "ior": 1.5
+    });
+    deep["render"] = json!({ "max_level": 60, "min_weight": 0 });
+    let deep = write(&dir, "deep.json", &deep.to_string());
+    let pov = dir.path().join("deep.pov");
+    let export = |extra: &[&str]| {
+        let mut cmd = phong();
+        cmd.arg("export-pov")
+            .arg(&deep)
+            .arg("-o")
+            .arg(&pov)
+            .args(extra);
+        cmd
+    };
+    let out = export(&["--max-level", "3"]).output().unwrap();
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let sdl = std::fs::read_to_string(&pov).unwrap();
+    assert!(sdl.contains("max_trace_level 3"), "{sdl}");
+    std::fs::remove_file(&pov).unwrap();
+    refused(&mut export(&[]), &["render.max_level", "maximum level 60"]);
+    let err = refused(
+        &mut export(&["--max-level", "40"]),
+        &["max-level", "maximum level 40"],
+    );
+    assert!(!err.contains("render.max_level"), "{err}");
+    assert!(!pov.exists());
+}
+
 /// A render whose image the system cannot give (16384² pixels, 6 bytes each: 1.6 GB, under a
 /// 1 GiB address space) is refused with exit 2, and its fix names what sets a render's image, the
 /// camera's "width" and "height": `render` has no `--size` (only `tradeoff` has), though the fix

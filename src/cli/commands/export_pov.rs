@@ -10,15 +10,22 @@ use crate::problem::{self, ProblemError};
 pub(crate) fn run(args: &ExportPovArgs) -> Result<Exit, CliError> {
     let path = &args.scene;
     output::distinct(&[path], &[("--output", args.output.as_deref())])?;
-    let (file, mut problem) = problem::load::<f64>(path)?;
+    // The scene read with the flags' settings over the file's, then held to the image's bounds
+    // with the settings in force, as `phong render` holds it (so `--max-level 3` exports a file
+    // whose own `max_level` is 60).
+    let problem::SceneFile {
+        mut problem,
+        camera,
+        meshes,
+    } = problem::load_scene_for::<f64>(path, problem::validate::Work::Rendered)?;
     // The meshes the scene names are inputs too: no output may replace one.
-    let meshes = problem::mesh_files(&file, path);
     let meshes: Vec<&std::path::Path> = meshes.iter().map(|p| p.as_path()).collect();
     output::distinct(&meshes, &[("--output", args.output.as_deref())])?;
     problem.render = problem
         .render
         .with(&super::overrides(&args.settings))
         .map_err(CliError::setting)?;
+    super::check_settings(path, &args.settings, &problem, &camera)?;
     let sdl = crate::export::pov::export(&problem).map_err(|e| ProblemError::Invalid {
         path: path.clone(),
         field: e.what,

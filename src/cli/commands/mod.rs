@@ -91,6 +91,34 @@ fn overrides(s: &TraceSettings) -> RenderOverrides {
     }
 }
 
+/// Holds a scene's image to its bounds with the settings in force (`given`'s over the file's,
+/// already put in `problem.render`): its primary rays (width × height × samples) within
+/// [`crate::problem::validate::MAX_PIXEL_SAMPLES`] and one sample's ray tree within
+/// [`crate::problem::validate::MAX_TREE_RAYS`]. A bound passed is said of the flag that set the
+/// setting, or, where the file's own setting is in force, of the file's field
+/// (`render.samples`, `render.max_level`) at `scene`, as reading it would.
+fn check_settings<R: crate::core::Real>(
+    scene: &std::path::Path,
+    given: &TraceSettings,
+    problem: &crate::problem::Problem<R>,
+    camera: &crate::problem::Camera<R>,
+) -> Result<(), CliError> {
+    use crate::problem::faults::SettingFault;
+    use crate::problem::validate::{check_tree, check_work};
+    let said = |flag: Option<&str>, field: &str, e: SettingFault| match flag {
+        Some(flag) => CliError::setting(e.at(flag)),
+        None => CliError::Problem(e.at(field).at(scene)),
+    };
+    check_work(camera.width, camera.height, problem.render.samples)
+        .map_err(|e| said(given.samples.map(|_| "samples"), "render.samples", e))?;
+    let s = &problem.render;
+    check_tree(problem, s.max_level, s.min_weight.to_f64()).map_err(|e| {
+        let flag =
+            (given.max_level.map(|_| "max_level")).or(given.min_weight.map(|_| "min_weight"));
+        said(flag, "render.max_level", e)
+    })
+}
+
 /// Refuses, with an "out of memory: this needs about N GB" error named by `flag`, work whose
 /// largest allocation (`bytes`) the system cannot give: tried once with `try_reserve`, so that
 /// the allocation that follows would not abort the program.

@@ -11,7 +11,6 @@ use crate::cli::exit::Exit;
 use crate::cli::faults::CliFault;
 use crate::cli::output;
 use crate::core::{Precision, Real};
-use crate::problem::faults::SettingFault;
 use crate::problem::{self, Camera, Problem};
 use crate::report;
 use crate::text::lang::Lang;
@@ -152,21 +151,7 @@ fn check_work<R: Real>(
     problem: &Problem<R>,
     camera: &Camera<R>,
 ) -> Result<(), CliError> {
-    let given = &args.settings;
-    let said = |flag: Option<&str>, field: &str, e: SettingFault| match flag {
-        Some(flag) => CliError::setting(e.at(flag)),
-        None => CliError::Problem(e.at(field).at(&args.scene)),
-    };
-    crate::problem::validate::check_work(camera.width, camera.height, problem.render.samples)
-        .map_err(|e| said(given.samples.map(|_| "samples"), "render.samples", e))?;
-    let s = &problem.render;
-    crate::problem::validate::check_tree(problem, s.max_level, s.min_weight.to_f64()).map_err(
-        |e| {
-            let flag =
-                (given.max_level.map(|_| "max_level")).or(given.min_weight.map(|_| "min_weight"));
-            said(flag, "render.max_level", e)
-        },
-    )?;
+    super::check_settings(&args.scene, &args.settings, problem, camera)?;
     let bytes = (camera.width as usize)
         .saturating_mul(camera.height as usize)
         .saturating_mul(3 * 2);
