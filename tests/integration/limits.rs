@@ -30,6 +30,18 @@ fn small_scene() -> serde_json::Value {
     })
 }
 
+/// The small scene whose file asks for a tree no render may trace: `"max_level": 60,
+/// "min_weight": 0` with a material that reflects and transmits (2^60 − 1 rays per sample).
+fn deep_scene() -> serde_json::Value {
+    let mut s = small_scene();
+    s["surfaces"][0]["material"] = json!({
+        "ambient": [0.5, 0.5, 0.5], "reflectivity": [0.5, 0.5, 0.5],
+        "transmissivity": [0.5, 0.5, 0.5], "ior": 1.5
+    });
+    s["render"] = json!({ "max_level": 60, "min_weight": 0 });
+    s
+}
+
 /// The small scene with the largest image a camera may have, 16384² pixels (1.6 GB of image).
 fn huge_scene() -> serde_json::Value {
     let mut s = small_scene();
@@ -1137,13 +1149,7 @@ fn a_renders_flags_are_over_the_files_settings_before_its_bounds() {
 #[test]
 fn a_tradeoff_holds_the_scene_to_its_sweeps_settings_not_the_files() {
     let dir = TempDir::new().unwrap();
-    let mut deep = small_scene();
-    deep["surfaces"][0]["material"] = json!({
-        "ambient": [0.5, 0.5, 0.5], "reflectivity": [0.5, 0.5, 0.5],
-        "transmissivity": [0.5, 0.5, 0.5], "ior": 1.5
-    });
-    deep["render"] = json!({ "max_level": 60, "min_weight": 0 });
-    let deep = write(&dir, "deep.json", &deep.to_string());
+    let deep = write(&dir, "deep.json", &deep_scene().to_string());
     let mut big = huge_scene();
     big["render"] = json!({ "samples": 8 });
     let big = write(&dir, "big.json", &big.to_string());
@@ -1185,13 +1191,7 @@ fn a_tradeoff_holds_the_scene_to_its_sweeps_settings_not_the_files() {
 #[test]
 fn export_pov_holds_the_scene_to_the_settings_in_force() {
     let dir = TempDir::new().unwrap();
-    let mut deep = small_scene();
-    deep["surfaces"][0]["material"] = json!({
-        "ambient": [0.5, 0.5, 0.5], "reflectivity": [0.5, 0.5, 0.5],
-        "transmissivity": [0.5, 0.5, 0.5], "ior": 1.5
-    });
-    deep["render"] = json!({ "max_level": 60, "min_weight": 0 });
-    let deep = write(&dir, "deep.json", &deep.to_string());
+    let deep = write(&dir, "deep.json", &deep_scene().to_string());
     let pov = dir.path().join("deep.pov");
     let export = |extra: &[&str]| {
         let mut cmd = phong();
