@@ -625,17 +625,18 @@ pub(crate) fn no_hit_word<S: AsRef<str>>(lang: Lang, words: &[S]) -> String {
 }
 
 /// The forms an answer may take, as the fix of an answer that cannot be read says them, with
-/// the course's word for "no hit" in each language ([`no_hit_word`]).
+/// the course's word for "no hit" in each language.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Forms {
-    none: [String; 2],
+    // Boxed: an answer's error stays small (its `Result` is returned on every answer read).
+    none: Box<[String; 2]>,
 }
 
 impl Forms {
     /// The forms under the course's no-hit `words`.
     pub(crate) fn of<S: AsRef<str>>(words: &[S]) -> Forms {
         Forms {
-            none: [Lang::En, Lang::Pt].map(|lang| no_hit_word(lang, words)),
+            none: Box::new([Lang::En, Lang::Pt].map(|lang| no_hit_word(lang, words))),
         }
     }
 }

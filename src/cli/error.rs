@@ -34,7 +34,8 @@ pub(crate) enum CliError {
     /// is expected.
     Value {
         flag: &'static str,
-        source: BadAnswer,
+        // Boxed: the error stays small (its `Result` is every command's).
+        source: Box<BadAnswer>,
     },
     /// Flags or arguments that do not go together, said as one sentence (`WHAT. Fix: FIX`).
     Conflict { fault: FaultBox },
@@ -43,7 +44,7 @@ pub(crate) enum CliError {
     NotAFolder {
         path: PathBuf,
         flag: &'static str,
-        fault: CliFault,
+        fault: FaultBox,
     },
     /// Output that cannot be written: to a file, or (`None`) to standard output.
     Write {
@@ -77,6 +78,15 @@ impl CliError {
     pub(crate) fn usage(flag: impl Into<String>, fault: CliFault) -> CliError {
         CliError::Usage {
             flag: flag.into(),
+            fault: std::sync::Arc::new(fault),
+        }
+    }
+
+    /// A flag (or an argument) naming `path`, which is not a folder.
+    pub(crate) fn not_a_folder(path: PathBuf, flag: &'static str, fault: CliFault) -> CliError {
+        CliError::NotAFolder {
+            path,
+            flag,
             fault: std::sync::Arc::new(fault),
         }
     }
@@ -179,7 +189,7 @@ impl std::error::Error for CliError {
             CliError::Submissions(e) => e.source(),
             #[cfg(feature = "serve")]
             CliError::Serve(e) => e.source(),
-            CliError::Value { source, .. } => Some(source),
+            CliError::Value { source, .. } => Some(source.as_ref()),
             CliError::Write { source, .. } | CliError::CreateFolder { source, .. } => Some(source),
             CliError::Threads(e) => Some(e),
             CliError::Usage { .. } | CliError::Conflict { .. } | CliError::NotAFolder { .. } => {

@@ -42,7 +42,7 @@ pub(crate) fn run(args: &CheckArgs) -> Result<Exit, CliError> {
     if let Some(t) = args.tolerance {
         check::answer::check_tolerance(t).map_err(|source| CliError::Value {
             flag: "--tolerance",
-            source,
+            source: Box::new(source),
         })?;
     }
     if args.slips {

@@ -15,15 +15,15 @@ pub(crate) fn run(args: &GradeArgs) -> Result<Exit, CliError> {
     if let Some(t) = args.tolerance {
         check::answer::check_tolerance(t).map_err(|source| CliError::Value {
             flag: "--tolerance",
-            source,
+            source: Box::new(source),
         })?;
     }
     if !args.exercises.is_dir() {
-        return Err(CliError::NotAFolder {
-            path: args.exercises.clone(),
-            flag: "--exercises",
-            fault: CliFault::ExercisesNotAFolder,
-        });
+        return Err(CliError::not_a_folder(
+            args.exercises.clone(),
+            "--exercises",
+            CliFault::ExercisesNotAFolder,
+        ));
     }
     let mut policy = super::course_policy(args.policy.policy.as_deref(), Some(&args.exercises))?;
     let policy_file = policy.source.clone();

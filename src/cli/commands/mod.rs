@@ -93,7 +93,7 @@ fn overrides(s: &TraceSettings) -> RenderOverrides {
 
 /// Holds a scene's image to its bounds with the settings in force (`given`'s over the file's,
 /// already put in `problem.render`): its primary rays (width × height × samples) within
-/// [`crate::problem::validate::MAX_PIXEL_SAMPLES`] and one sample's ray tree within
+/// [`crate::problem::model::MAX_PIXEL_SAMPLES`] and one sample's ray tree within
 /// [`crate::problem::validate::MAX_TREE_RAYS`]. A bound passed is said of the flag that set the
 /// setting, or, where the file's own setting is in force, of the file's field
 /// (`render.samples`, `render.max_level`) at `scene`, as reading it would.

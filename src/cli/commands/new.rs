@@ -24,11 +24,11 @@ pub(crate) fn run(args: &NewArgs) -> Result<Exit, CliError> {
     // would say only that it is not a directory).
     let bare: std::path::PathBuf = dir.components().collect();
     if std::fs::metadata(&bare).is_ok_and(|m| !m.is_dir()) {
-        return Err(CliError::NotAFolder {
-            path: dir.clone(),
-            flag: "-o",
-            fault: CliFault::ProblemsNotAFolder,
-        });
+        return Err(CliError::not_a_folder(
+            dir.clone(),
+            "-o",
+            CliFault::ProblemsNotAFolder,
+        ));
     }
     std::fs::create_dir_all(dir).map_err(|source| CliError::CreateFolder {
         path: dir.clone(),

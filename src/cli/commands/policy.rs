@@ -16,11 +16,11 @@ pub(crate) fn run(args: &PolicyCmdArgs) -> Result<Exit, CliError> {
     // A folder that does not exist, or a file, has no policy of its own: the defaults printed
     // for it would pass for its policy. Refused as `grade --exercises` refuses it.
     if !folder.is_dir() {
-        return Err(CliError::NotAFolder {
-            path: folder,
-            flag: "DIR",
-            fault: CliFault::ExercisesNotAFolder,
-        });
+        return Err(CliError::not_a_folder(
+            folder,
+            "DIR",
+            CliFault::ExercisesNotAFolder,
+        ));
     }
     // The policy read is an input: `-o DIR/course-policy.json` would replace it.
     let read = super::policy_file(args.policy.policy.as_deref(), Some(&folder));

@@ -140,12 +140,9 @@ fn stats_line<R: Real>(
     }
 }
 
-/// The render's primary rays within [`crate::problem::model::MAX_PIXEL_SAMPLES`], each sample's
-/// ray tree within [`crate::problem::validate::MAX_TREE_RAYS`], and its image (and the rows
-/// gathered before it) within memory: refused with exit 2 rather than aborting.
-///
-/// A bound passed is said of the flag that set the setting, or, where the file's own setting is
-/// in force, of the file's field (`render.samples`, `render.max_level`), as reading it would.
+/// The render's bounds with the settings in force ([`super::check_settings`]: its primary rays,
+/// each sample's ray tree), and its image (and the rows gathered before it) within memory:
+/// refused with exit 2 rather than aborting.
 fn check_work<R: Real>(
     args: &RenderArgs,
     problem: &Problem<R>,
