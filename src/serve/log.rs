@@ -42,6 +42,14 @@ pub(crate) const ANSWER_PREFIX: usize = 64;
 /// by their length (`steps_bytes`) and hash (`steps_hash`).
 pub(crate) const STEPS_KEPT: usize = 512;
 
+/// `PATH.1`, the older file a full log at `path` becomes: written too, so no input of the
+/// server may be it either.
+pub(crate) fn older(path: &std::path::Path) -> PathBuf {
+    let mut name = path.as_os_str().to_owned();
+    name.push(".1");
+    PathBuf::from(name)
+}
+
 /// The file of `--log-answers`, appended to one whole line at a time, and rotated to `PATH.1`
 /// before a line would make it larger than its limit.
 #[derive(Debug)]
@@ -157,13 +165,6 @@ impl AnswerLog {
             .open(path)
     }
 
-    /// `PATH.1`, the older file.
-    fn older(&self) -> PathBuf {
-        let mut name = self.path.clone().into_os_string();
-        name.push(".1");
-        PathBuf::from(name)
-    }
-
     /// Appends `entry` as one line. The line is written whole under the lock (and the file is
     /// in append mode), so lines from concurrent requests never interleave. When the line would
     /// make the file larger than its limit, the file becomes `PATH.1` (replacing the older one)
@@ -181,8 +182,8 @@ impl AnswerLog {
             Err(poisoned) => poisoned.into_inner(),
         };
         if open.size > 0 && open.size + line.len() as u64 > self.max_bytes {
-            let rotated =
-                std::fs::rename(&self.path, self.older()).and_then(|()| Self::append(&self.path));
+            let rotated = std::fs::rename(&self.path, older(&self.path))
+                .and_then(|()| Self::append(&self.path));
             match rotated {
                 Ok(file) => *open = Open { file, size: 0 },
                 Err(error) => {

@@ -1074,6 +1074,17 @@ fn serve_may_not_log_answers_into_an_exercise_file() {
         &["--log-answers", "é a entrada", "4.1.json"],
     );
     assert_eq!(std::fs::read_to_string(&exercise).unwrap(), before);
+    // A full log is renamed to PATH.1, replacing what is there: that may not be an input either
+    // (the course policy at rules.json.1 beside a log at rules.json).
+    let policy = write(&dir, "rules.json.1", "{}\n");
+    let err = refused(
+        serve(&dir.path().join("rules.json"), "C")
+            .arg("--policy")
+            .arg(&policy),
+        &["--log-answers", "is the input"],
+    );
+    assert!(err.contains("rules.json.1"), "{err}");
+    assert_eq!(std::fs::read_to_string(&policy).unwrap(), "{}\n");
 }
 
 /// `phong check --steps FILE -o FILE` would replace the steps it reads with its report: refused

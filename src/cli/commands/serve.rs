@@ -18,7 +18,7 @@ pub(crate) fn run(args: &ServeArgs) -> Result<Exit, CliError> {
         ..Default::default()
     };
     let policy = super::course_policy(args.policy.as_deref(), args.exercises.as_deref())?;
-    // The answers are appended to --log-answers (and it is renamed when full): never the
+    // The answers are appended to --log-answers (and it is renamed to PATH.1 when full): never the
     // course policy the server judges by, nor an exercise file of --exercises (a folder that
     // cannot be read is reported when the catalogue reads it).
     let exercises = match (&args.log_answers, &args.exercises) {
@@ -31,7 +31,15 @@ pub(crate) fn run(args: &ServeArgs) -> Result<Exit, CliError> {
         .chain(&exercises)
         .map(|p| p.as_path())
         .collect();
-    crate::cli::output::distinct(&inputs, &[("--log-answers", args.log_answers.as_deref())])?;
+    // The full log is renamed to PATH.1: that is written too.
+    let older = args.log_answers.as_deref().map(serve::log::older);
+    crate::cli::output::distinct(
+        &inputs,
+        &[
+            ("--log-answers", args.log_answers.as_deref()),
+            ("--log-answers", older.as_deref()),
+        ],
+    )?;
     let config = Config {
         addr: args.addr,
         policy: std::sync::Arc::new(policy),
