@@ -342,6 +342,48 @@ impl Policy {
     }
 }
 
+/// An optional word of a policy (`"duplicates": "last"`): a string read as the enum reads it,
+/// `null` as none, and anything else said with the words it may be, in serde's own terms (so
+/// that it is said in Portuguese as serde's other errors are, `problem::syntax`), where
+/// serde_json would say only "expected value" of a number. The words are the enum's
+/// command-line names, which are its serde names (a test).
+fn optional_word<'de, D, T>(d: D) -> Result<Option<T>, D::Error>
+where
+    D: serde::Deserializer<'de>,
+    T: serde::de::DeserializeOwned + clap::ValueEnum,
+{
+    use serde::de::Error;
+    use serde::Deserialize;
+    use serde_json::Value;
+    let found = match Value::deserialize(d)? {
+        Value::Null => return Ok(None),
+        Value::String(s) => {
+            return T::deserialize(Value::String(s))
+                .map(Some)
+                .map_err(D::Error::custom)
+        }
+        Value::Bool(b) => format!("boolean `{b}`"),
+        Value::Number(n) if n.is_f64() => format!("floating point `{n}`"),
+        Value::Number(n) => format!("integer `{n}`"),
+        Value::Array(_) => "sequence".to_owned(),
+        Value::Object(_) => "map".to_owned(),
+    };
+    Err(D::Error::custom(format_args!(
+        "invalid type: {found}, expected one of the words {}",
+        words::<T>()
+    )))
+}
+
+/// The words of a policy's enum: `"first", "last", "best"`.
+fn words<T: clap::ValueEnum>() -> String {
+    T::value_variants()
+        .iter()
+        .filter_map(|v| v.to_possible_value())
+        .map(|p| format!("\"{}\"", p.get_name()))
+        .collect::<Vec<_>>()
+        .join(", ")
+}
+
 /// A policy file, every field optional.
 #[derive(serde::Deserialize)]
 #[serde(deny_unknown_fields)]
@@ -355,8 +397,10 @@ struct PolicyFile {
     /// An object and nothing else: an array read in order was the tolerances on each scale.
     #[serde(default, deserialize_with = "crate::problem::format::optional_object")]
     tolerance: Option<TolerancesFile>,
+    #[serde(default, deserialize_with = "optional_word")]
     eight_bit: Option<EightBit>,
     no_hit: Option<Vec<String>>,
+    #[serde(default, deserialize_with = "optional_word")]
     duplicates: Option<Duplicates>,
     /// Free text for the instructor (JSON has no comments); not read.
     #[serde(default, rename = "comment")]
@@ -527,6 +571,21 @@ mod tests {
     use super::*;
     use crate::problem::syntax::JsonKind;
     use crate::text::{Lang, Message};
+
+    /// `optional_word` lists the command-line names as the words a field may be: each one is
+    /// the word serde reads and writes for its value.
+    #[test]
+    fn each_words_command_line_name_is_its_serde_name() {
+        fn same<T: clap::ValueEnum + serde::Serialize + serde::de::DeserializeOwned + PartialEq>() {
+            for v in T::value_variants() {
+                let name = v.to_possible_value().unwrap().get_name().to_owned();
+                assert_eq!(serde_json::to_value(v).unwrap(), serde_json::json!(name));
+                assert!(serde_json::from_value::<T>(serde_json::json!(name)).unwrap() == *v);
+            }
+        }
+        same::<Duplicates>();
+        same::<EightBit>();
+    }
 
     #[test]
     fn points_with_a_decimal_comma() {

@@ -1886,9 +1886,19 @@ fn a_course_policy_field_of_the_wrong_type_is_named_by_its_path() {
             r#"{"no_hit": ["none", 3]}"#,
             "no_hit[1]: invalid type: integer `3`, expected a string",
         ),
+        // The words it may be, where serde_json said only "expected value".
         (
             r#"{"duplicates": 3}"#,
-            "duplicates: expected value at line 1 column 16",
+            "duplicates: invalid type: integer `3`, expected one of the words \"first\", \
+             \"last\", \"best\" at line 1 column 17",
+        ),
+        (
+            r#"{"eight_bit": [1]}"#,
+            "eight_bit: invalid type: sequence, expected one of the words \"read\", \"hint\"",
+        ),
+        (
+            r#"{"duplicates": "lastest"}"#,
+            "duplicates: unknown variant `lastest`, expected one of `first`, `last`, `best`",
         ),
     ] {
         fs::write(&given, text).expect("written");
@@ -1926,6 +1936,17 @@ fn a_course_policy_field_of_the_wrong_type_is_named_by_its_path() {
         let named = format!("{}: {says}", beside.display());
         assert!(run.stderr.contains(&named), "{args:?}: {}", run.stderr);
     }
+    fs::write(&beside, r#"{"duplicates": 3}"#).expect("written");
+    let run = phong(&["policy", utf8(&folder), "--lang", "pt"]);
+    assert_eq!(run.code, Some(BAD_INPUT), "{}", run.stderr);
+    assert!(
+        run.stderr.contains(
+            "duplicates: tipo inválido: inteiro `3`, esperada uma das palavras \"first\", \
+             \"last\", \"best\""
+        ),
+        "{}",
+        run.stderr
+    );
 }
 
 /// A course policy that is not a JSON object (an array, a number, a string, null, a boolean) is
