@@ -642,7 +642,8 @@ impl Forms {
 }
 
 impl Default for Forms {
-    /// The forms under the default words.
+    /// The forms under the default words (every message is walked with its fields' defaults,
+    /// under test).
     fn default() -> Forms {
         Forms::of(&NO_HIT_WORDS)
     }

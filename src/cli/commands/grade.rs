@@ -48,9 +48,10 @@ pub(crate) fn run(args: &GradeArgs) -> Result<Exit, CliError> {
     ]
     .iter()
     .any(|o| o.is_some());
-    let meshes = match writes {
-        true => super::named_meshes(exercise_files.iter().map(|p| p.as_path())),
-        false => Vec::new(),
+    let meshes = if writes {
+        super::named_meshes(exercise_files.iter().map(|p| p.as_path()))
+    } else {
+        Vec::new()
     };
     inputs.extend(meshes.iter().map(|p| p.as_path()));
     output::distinct(

@@ -38,12 +38,16 @@ pub(crate) fn run(args: &MoodleArgs) -> Result<Exit, CliError> {
         .map(|p| p.as_path())
         .collect();
     output::distinct(&inputs, &[("--output", args.output.as_deref())])?;
+    // What the quiz's refusals of the course policy are said of: its file, or `--policy`.
+    let policy_named = || {
+        policy
+            .source
+            .as_ref()
+            .map_or_else(|| "--policy".to_owned(), |p| p.display().to_string())
+    };
     let mut grading = Grading::of(&policy, args.lang).map_err(|share| {
         CliError::usage(
-            policy
-                .source
-                .as_ref()
-                .map_or_else(|| "--policy".to_owned(), |p| p.display().to_string()),
+            policy_named(),
             CliFault::MoodleCredit {
                 credit: crate::text::Num(share),
                 allowed: crate::export::moodle::fractions(),
@@ -66,10 +70,7 @@ pub(crate) fn run(args: &MoodleArgs) -> Result<Exit, CliError> {
         .weigh(&sets.iter().flat_map(|s| &s.entries).collect::<Vec<_>>())
         .map_err(|e| {
             CliError::usage(
-                policy
-                    .source
-                    .as_ref()
-                    .map_or_else(|| "--policy".to_owned(), |p| p.display().to_string()),
+                policy_named(),
                 CliFault::MoodlePoints {
                     problem: e.label.clone(),
                     points: crate::text::Num(e.points),
